@@ -1,0 +1,61 @@
+/* trk/kalman.h - linear-Gaussian prediction and update, and the 2-D
+ * constant-velocity model (CONVENTIONS "General").
+ *
+ * State order of the CV model: [x, vx, y, vy]; measurement [x, y].
+ * All matrices row-major. nx in 1..TRK_MAX_STATE, nz in 1..TRK_MAX_MEAS.
+ */
+#ifndef TRK_KALMAN_H
+#define TRK_KALMAN_H
+
+#include "trk/types.h"
+
+#define TRK_CV2_NX 4
+#define TRK_CV2_NZ 2
+
+/* F = blkdiag([[1, T], [0, 1]] x 2). */
+void trk_cv2_transition(trk_real dt_s, trk_real f[TRK_CV2_NX * TRK_CV2_NX]);
+
+/* Q = blkdiag(q [[T^3/3, T^2/2], [T^2/2, T]] x 2), q the power spectral density
+ * of continuous white-noise acceleration (m^2/s^3). */
+void trk_cv2_process_noise(trk_real dt_s, trk_real q_m2_per_s3, trk_real q[TRK_CV2_NX * TRK_CV2_NX]);
+
+/* H = [[1,0,0,0],[0,0,1,0]]. */
+extern const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX];
+
+/* x = F x, P = F P F' + Q (symmetrised). In place.
+ * TRK_E_ARG bad dimension/pointer, TRK_E_NAN non-finite result (x, P untouched). */
+TRK_NODISCARD trk_status trk_kalman_predict(int nx, const trk_real *f, const trk_real *q,
+                                            trk_real *x, trk_real *p);
+
+/* Predicted measurement and its innovation covariance S = H P H' + R with the
+ * Cholesky factor of S, which gating and the PDA reuse. */
+struct trk_innovation {
+    int nz;
+    trk_real z_pred[TRK_MAX_MEAS];
+    trk_real s[TRK_MAX_MEAS * TRK_MAX_MEAS];       /* S */
+    trk_real s_chol[TRK_MAX_MEAS * TRK_MAX_MEAS];  /* lower L, S = L L' */
+    trk_real log_det_s;                            /* ln det S */
+};
+
+/* Fill *inn from (x, P) and the measurement model (H, R).
+ * TRK_E_NOT_SPD when S is not positive definite (inn is then not usable). */
+TRK_NODISCARD trk_status trk_kalman_innovation(int nx, int nz, const trk_real *h, const trk_real *r,
+                                               const trk_real *x, const trk_real *p,
+                                               struct trk_innovation *inn);
+
+/* Gain K = P H' S^-1 (nx x nz) from the innovation's Cholesky factor. */
+void trk_kalman_gain(int nx, int nz, const trk_real *h, const trk_real *p,
+                     const struct trk_innovation *inn, trk_real *k);
+
+/* Joseph-form covariance P_c = (I - K H) P (I - K H)' + K R K' (symmetric
+ * positive definite whenever P and R are). pc may not alias p. */
+void trk_kalman_joseph(int nx, int nz, const trk_real *h, const trk_real *r, const trk_real *k,
+                       const trk_real *p, trk_real *pc);
+
+/* Standard Kalman update with measurement z, in place (Joseph form).
+ * TRK_E_NOT_SPD when S is not positive definite, TRK_E_NAN for a non-finite
+ * z; x and P are untouched on error. */
+TRK_NODISCARD trk_status trk_kalman_update(int nx, int nz, const trk_real *h, const trk_real *r,
+                                           const trk_real *z, trk_real *x, trk_real *p);
+
+#endif /* TRK_KALMAN_H */

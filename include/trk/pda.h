@@ -1,0 +1,78 @@
+/* trk/pda.h - probabilistic data association update (PDAF, and PDAFAI when
+ * each detection carries an amplitude log-likelihood ratio).
+ *
+ * CONVENTIONS "PDA" (Bar-Shalom's standard form; Brekke eqs 21-25):
+ *   e_0 = lambda (1 - P_D P_G)                       missed detection
+ *   e_i = P_D N(nu_i; 0, S) l^a(a_i)                 detection i in the gate
+ *   beta_i = e_i / (e_0 + sum_j e_j)                 (log domain: never underflows)
+ *   x = x- + K nubar,  nubar = sum beta_i nu_i
+ *   P = beta_0 P- + (1 - beta_0) P_c + K (sum beta_i nu_i nu_i' - nubar nubar') K'
+ * P_c is the Kalman (Joseph-form) covariance. The spread term is accumulated
+ * as sum_i beta_i (dx_i - dxbar)(dx_i - dxbar)' + beta_0 dxbar dxbar' with
+ * dx_i = K nu_i: a sum of positive semi-definite terms, so P stays SPD.
+ *
+ * Clutter: parametric (lambda = clutter_density, per m^nz) or nonparametric
+ * (lambda = m_G / V_G, m_G the number of gated detections; m_G = 0 gives
+ * beta_0 = 1). Gating off ("include all"): every detection gets its e_i and
+ * e_0 still uses the configured P_G.
+ *
+ * Amplitude (PDAFAI): log_lr[i] = ln l^a(a_i) multiplies e_i; e_0 unchanged;
+ * P_D is the detection probability at the amplitude threshold. NULL = PDAF.
+ */
+#ifndef TRK_PDA_H
+#define TRK_PDA_H
+
+#include "trk/kalman.h"
+#include "trk/types.h"
+
+enum trk_clutter_mode {
+    TRK_CLUTTER_PARAMETRIC = 0,    /* lambda given */
+    TRK_CLUTTER_NONPARAMETRIC = 1  /* lambda = m_G / V_G */
+};
+
+struct trk_pda_params {
+    int nz;                         /* measurement dimension, 1..TRK_MAX_MEAS */
+    trk_real pd;                    /* detection probability, (0, 1] */
+    trk_real gate_prob;             /* P_G, (0, 1) */
+    enum trk_clutter_mode clutter;
+    trk_real clutter_density;       /* lambda per m^nz, >= 0 (parametric only) */
+    int gating;                     /* 1: only d2 <= gamma; 0: include all */
+};
+
+/* Validated parameters and the constants derived from them (init once). */
+struct trk_pda {
+    struct trk_pda_params params;
+    trk_real gamma;        /* gate threshold on d2 */
+    trk_real log_pd_norm;  /* ln P_D - (nz/2) ln 2 pi */
+    trk_real log_miss;     /* ln(1 - P_D P_G) (-inf when P_D P_G = 1) */
+    trk_real gate_const;   /* c_nz gamma^(nz/2): V_G = gate_const sqrt(det S) */
+};
+
+/* TRK_E_ARG bad pointer/nz/enum, TRK_E_NAN non-finite, TRK_E_RANGE a
+ * probability or density outside its range. *pda untouched on error. */
+TRK_NODISCARD trk_status trk_pda_init(struct trk_pda *pda, const struct trk_pda_params *params);
+
+struct trk_pda_report {
+    trk_real beta0;        /* probability that no detection is the target's */
+    int n_gated;           /* detections with d2 <= gamma */
+    trk_real gate_volume;  /* V_G of this update */
+    trk_real lambda;       /* clutter density used */
+};
+
+/* One PDA update of (x, P), given the predicted state and covariance (in) and
+ * m detections z (m x nz, row-major). Writes the posterior into x and P.
+ *   h, r       measurement matrix (nz x nx) and noise covariance (nz x nz)
+ *   log_lr     m amplitude log-likelihood ratios, or NULL (PDAF)
+ *   beta       m outputs: association probabilities (0 outside the gate);
+ *              required, also the workspace
+ *   d2         m outputs (squared Mahalanobis distances), or NULL
+ *   rep        beta_0 and counts, or NULL
+ * TRK_E_ARG bad pointer/dimension, TRK_E_CAPACITY m > TRK_MAX_DETECTIONS,
+ * TRK_E_NAN non-finite z or log_lr, TRK_E_NOT_SPD S not positive definite.
+ * On error x and P are untouched. */
+TRK_NODISCARD trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h,
+                                        const trk_real *r, trk_real *x, trk_real *p, size_t m,
+                                        const trk_real *z, const trk_real *log_lr, trk_real *beta,
+                                        trk_real *d2, struct trk_pda_report *rep);
+
+#endif

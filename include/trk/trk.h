@@ -1,0 +1,13 @@
+/* trk/trk.h - umbrella header: includes every public header of libtrk. */
+#ifndef TRK_TRK_H
+#define TRK_TRK_H
+
+#include "trk/config.h"
+#include "trk/types.h"
+#include "trk/linalg.h"
+#include "trk/special.h"
+#include "trk/kalman.h"
+#include "trk/gate.h"
+#include "trk/pda.h"
+
+#endif

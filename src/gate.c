@@ -1,0 +1,33 @@
+/* gate.c - gate threshold, volume and distance (CONVENTIONS "Gating"). */
+#include "trk/gate.h"
+
+#include "kalman_impl.h"
+#include "trk/special.h"
+
+trk_status trk_gate_gamma(int nz, trk_real gate_prob, trk_real *gamma)
+{
+    if (!gamma || nz < 1 || nz > 3) return TRK_E_ARG;
+    if (!(gate_prob > 0 && gate_prob < 1)) return TRK_E_RANGE;
+    return trk_chi2_inv(nz, gate_prob, gamma);
+}
+
+trk_real trk_gate_unit_volume(int nz)
+{
+    switch (nz) {
+    case 1: return 2;
+    case 2: return TRK_PI;
+    case 3: return TRK_REAL_C(4.0) * TRK_PI / 3;
+    default: return 0;
+    }
+}
+
+trk_real trk_gate_volume(int nz, trk_real gamma, trk_real log_det_s)
+{
+    return trk_gate_unit_volume(nz) * trk_pow(gamma, (trk_real)nz / 2) *
+           trk_exp(TRK_REAL_C(0.5) * log_det_s);
+}
+
+trk_real trk_gate_d2(int nz, const trk_real *s_chol, const trk_real *nu)
+{
+    return trk_i_mahalanobis2(nz, s_chol, nu);
+}

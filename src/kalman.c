@@ -1,0 +1,98 @@
+/* kalman.c - linear-Gaussian predict/update and the 2-D CV model
+ * (CONVENTIONS "General"; Bar-Shalom's Kalman filter, Joseph form). */
+#include "trk/kalman.h"
+
+#include "kalman_impl.h"
+
+const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX] = {1, 0, 0, 0, 0, 0, 1, 0};
+
+void trk_cv2_transition(trk_real dt_s, trk_real f[TRK_CV2_NX * TRK_CV2_NX])
+{
+    for (int i = 0; i < 16; i++) f[i] = 0;
+    f[0] = f[5] = f[10] = f[15] = 1;
+    f[1] = f[11] = dt_s;
+}
+
+void trk_cv2_process_noise(trk_real dt_s, trk_real q_m2_per_s3, trk_real q[TRK_CV2_NX * TRK_CV2_NX])
+{
+    const trk_real t = dt_s, t2 = t * t;
+    const trk_real a = q_m2_per_s3 * t2 * t / 3, b = q_m2_per_s3 * t2 / 2, c = q_m2_per_s3 * t;
+    for (int i = 0; i < 16; i++) q[i] = 0;
+    q[0] = q[10] = a;
+    q[1] = q[4] = q[11] = q[14] = b;
+    q[5] = q[15] = c;
+}
+
+static int dims_ok(int nx, int nz)
+{
+    return nx >= 1 && nx <= TRK_MAX_STATE && nz >= 1 && nz <= TRK_MAX_MEAS && nz <= nx;
+}
+
+static int all_finite(int n, const trk_real *v)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i])) return 0;
+    return 1;
+}
+
+trk_status trk_kalman_predict(int nx, const trk_real *f, const trk_real *q, trk_real *x, trk_real *p)
+{
+    trk_real xn[TRK_MAX_STATE], pn[TRK_MAX_STATE * TRK_MAX_STATE];
+    if (!dims_ok(nx, 1) || !f || !q || !x || !p) return TRK_E_ARG;
+    for (int i = 0; i < nx; i++) xn[i] = x[i];
+    for (int i = 0; i < nx * nx; i++) pn[i] = p[i];
+    trk_i_predict(nx, f, q, xn, pn);
+    if (!all_finite(nx, xn) || !all_finite(nx * nx, pn)) return TRK_E_NAN;
+    for (int i = 0; i < nx; i++) x[i] = xn[i];
+    for (int i = 0; i < nx * nx; i++) p[i] = pn[i];
+    return TRK_OK;
+}
+
+trk_status trk_kalman_innovation(int nx, int nz, const trk_real *h, const trk_real *r,
+                                 const trk_real *x, const trk_real *p, struct trk_innovation *inn)
+{
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
+    if (!dims_ok(nx, nz) || !h || !r || !x || !p || !inn) return TRK_E_ARG;
+    trk_status st = trk_i_innovation(nx, nz, h, r, x, p, pht, inn);
+    if (st != TRK_OK) return st;
+    if (!all_finite(nz, inn->z_pred)) return TRK_E_NAN;
+    return TRK_OK;
+}
+
+void trk_kalman_gain(int nx, int nz, const trk_real *h, const trk_real *p,
+                     const struct trk_innovation *inn, trk_real *k)
+{
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
+    trk_i_mat_mul_abt(nx, nx, nz, p, h, pht);
+    trk_i_gain(nx, nz, pht, inn->s_chol, k);
+}
+
+void trk_kalman_joseph(int nx, int nz, const trk_real *h, const trk_real *r, const trk_real *k,
+                       const trk_real *p, trk_real *pc)
+{
+    trk_i_joseph(nx, nz, h, r, k, p, pc);
+}
+
+trk_status trk_kalman_update(int nx, int nz, const trk_real *h, const trk_real *r,
+                             const trk_real *z, trk_real *x, trk_real *p)
+{
+    struct trk_innovation inn;
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS], k[TRK_MAX_STATE * TRK_MAX_MEAS];
+    trk_real pc[TRK_MAX_STATE * TRK_MAX_STATE], xn[TRK_MAX_STATE], nu[TRK_MAX_MEAS];
+    if (!dims_ok(nx, nz) || !h || !r || !z || !x || !p) return TRK_E_ARG;
+    if (!all_finite(nz, z)) return TRK_E_NAN;
+    trk_status st = trk_i_innovation(nx, nz, h, r, x, p, pht, &inn);
+    if (st != TRK_OK) return st;
+    trk_i_gain(nx, nz, pht, inn.s_chol, k);
+    for (int i = 0; i < nz; i++) nu[i] = z[i] - inn.z_pred[i];
+    for (int i = 0; i < nx; i++) {
+        trk_real s = x[i];
+        for (int t = 0; t < nz; t++) s += k[i * nz + t] * nu[t];
+        xn[i] = s;
+    }
+    trk_i_joseph(nx, nz, h, r, k, p, pc);
+    if (!all_finite(nx, xn) || !all_finite(nx * nx, pc)) return TRK_E_NAN;
+    for (int i = 0; i < nx; i++) x[i] = xn[i];
+    for (int i = 0; i < nx * nx; i++) p[i] = pc[i];
+    return TRK_OK;
+}

@@ -1,0 +1,88 @@
+/* linalg_impl.h (private) - inline bodies of the small-matrix kernels.
+ *
+ * The public functions of linalg.c wrap these. Hot paths (tracker, pda) call
+ * them directly with constant dimensions so the compiler unrolls the loops;
+ * one implementation serves both. */
+#ifndef TRK_LINALG_IMPL_H
+#define TRK_LINALG_IMPL_H
+
+#include "trk/types.h"
+
+static inline void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_real *b,
+                                 trk_real *c)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < m; j++) {
+            trk_real s = 0;
+            for (int t = 0; t < k; t++) s += a[i * k + t] * b[t * m + j];
+            c[i * m + j] = s;
+        }
+}
+
+static inline void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const trk_real *b,
+                                     trk_real *c)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < m; j++) {
+            trk_real s = 0;
+            for (int t = 0; t < k; t++) s += a[i * k + t] * b[j * k + t];
+            c[i * m + j] = s;
+        }
+}
+
+static inline void trk_i_symmetrize(int n, trk_real *a)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            trk_real s = TRK_REAL_C(0.5) * (a[i * n + j] + a[j * n + i]);
+            a[i * n + j] = s;
+            a[j * n + i] = s;
+        }
+}
+
+/* Cholesky-Banachiewicz. Rejects a pivot that is not > 0 or not finite
+ * (a NaN pivot fails the comparison). */
+static inline trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
+{
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; j <= i; j++) {
+            trk_real s = a[i * n + j];
+            for (int t = 0; t < j; t++) s -= l[i * n + t] * l[j * n + t];
+            if (i == j) {
+                if (!(s > 0) || !(s <= TRK_REAL_MAX)) return TRK_E_NOT_SPD;
+                l[i * n + i] = trk_sqrt(s);
+            } else {
+                l[i * n + j] = s / l[j * n + j];
+            }
+        }
+        for (int j = i + 1; j < n; j++) l[i * n + j] = 0;
+    }
+    return TRK_OK;
+}
+
+static inline void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)
+{
+    for (int i = 0; i < n; i++) {
+        trk_real s = b[i];
+        for (int t = 0; t < i; t++) s -= l[i * n + t] * y[t];
+        y[i] = s / l[i * n + i];
+    }
+}
+
+static inline void trk_i_chol_backward(int n, const trk_real *l, const trk_real *y, trk_real *x)
+{
+    for (int i = n - 1; i >= 0; i--) {
+        trk_real s = y[i];
+        for (int t = i + 1; t < n; t++) s -= l[t * n + i] * x[t];
+        x[i] = s / l[i * n + i];
+    }
+}
+
+static inline trk_real trk_i_chol_logdet(int n, const trk_real *l)
+{
+    trk_real s = 0;
+    for (int i = 0; i < n; i++) s += trk_log(l[i * n + i]);
+    return 2 * s;
+}
+
+#endif

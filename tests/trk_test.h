@@ -1,0 +1,60 @@
+/* trk_test.h - shared helpers for the cmocka tests.
+ *
+ * cmocka 1.1.5 (Debian 12) has no assert_double_equal and its
+ * assert_float_equal casts to float, so values are checked with
+ * TRK_ASSERT_NEAR(got, want, abs, rel): |got - want| <= abs + rel |want|,
+ * the rule of the reference vectors. NaN always fails. */
+#ifndef TRK_TEST_H
+#define TRK_TEST_H
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+/* cmocka.h needs the headers above first */
+#include <cmocka.h>
+
+#define TRK_ASSERT_NEAR(got, want, abs_tol, rel_tol)                                            \
+    do {                                                                                       \
+        double g_ = (double)(got), w_ = (double)(want);                                        \
+        double lim_ = (double)(abs_tol) + (double)(rel_tol)*fabs(w_);                          \
+        if (!(fabs(g_ - w_) <= lim_))                                                          \
+            fail_msg("%s = %.17g, want %.17g (|diff| %.3g > %.3g)", #got, g_, w_, fabs(g_ - w_), \
+                     lim_);                                                                    \
+    } while (0)
+
+#define TRK_ASSERT_OK(expr)                                                            \
+    do {                                                                               \
+        trk_status st_ = (expr);                                                       \
+        if (st_ != TRK_OK) fail_msg("%s returned %s", #expr, trk_status_str(st_));     \
+    } while (0)
+
+#define TRK_ASSERT_STATUS(expr, want)                                                  \
+    do {                                                                               \
+        trk_status st_ = (expr);                                                       \
+        if (st_ != (want))                                                             \
+            fail_msg("%s returned %s, want %s", #expr, trk_status_str(st_),            \
+                     trk_status_str(want));                                            \
+    } while (0)
+
+/* Tolerance scale of the build: tests state double tolerances and widen
+ * them in the float build by TRK_TEST_FLOAT_REL (documented per test). */
+#ifdef TRK_REAL_FLOAT
+#define TRK_TEST_IS_FLOAT 1
+#else
+#define TRK_TEST_IS_FLOAT 0
+#endif
+#define TRK_TOL(dbl, flt) (TRK_TEST_IS_FLOAT ? (flt) : (dbl))
+
+/* Directory of ../shared/vectors (set by `make check` via TRK_VECTORS_DIR). */
+static inline const char *trk_test_vectors_dir(void)
+{
+    const char *d = getenv("TRK_VECTORS_DIR");
+    return d ? d : "../shared/vectors";
+}
+
+#endif

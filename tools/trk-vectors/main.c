@@ -1,0 +1,201 @@
+/* trk-vectors - check the library against reference vectors (FORMAT.md).
+ *
+ *   trk-vectors [--strict] [--emit] [--report-error] [--quiet] FILE...
+ *
+ * Prints "FAIL <file> <id> <name>[<index>] got want" per failing case,
+ * "UNIMPLEMENTED <file> <id> <kind>" per case of a kind this build does not
+ * know, and finally "vectors: P passed, F failed, U unimplemented".
+ * Exit status 1 when F > 0 or P = 0, or U > 0 under --strict; 2 on usage or
+ * unreadable/malformed files (a malformed file also counts as a failure).
+ * --emit writes every case back with its out lines replaced by the computed
+ * values (17 significant digits) instead of checking.
+ * --report-error prints, per kind, the largest absolute and relative error
+ * and the largest fraction of its tolerance any value used.
+ * In a float build (TRK_REAL_FLOAT) each kind's float tolerance applies
+ * normwise (see tools/vec/vec.h and each kind's file), and a case whose answer
+ * jumps within float rounding (a detection on the gate boundary) is counted
+ * as "not resolvable in float" rather than compared. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "trk/types.h"
+#include "vec.h"
+
+static struct vec_case cs;
+static struct vec_out out;
+
+struct kind_err {
+    const char *name;
+    long n;
+    double max_abs, max_rel, max_use;
+};
+
+static char *read_file(const char *path, size_t *len)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return NULL;
+    size_t cap = 1 << 16, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        size_t got = fread(buf + n, 1, cap - n, fp);
+        n += got;
+        if (n < cap) break;
+        char *nb = realloc(buf, cap * 2);
+        if (!nb) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = nb;
+        cap *= 2;
+    }
+    if (ferror(fp)) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(fp);
+    *len = n;
+    return buf;
+}
+
+static void emit_values(const char *rec, const struct vec_entry *e, const double *pool)
+{
+    printf("%s %s", rec, e->name);
+    if (e->word[0]) printf(" %s", e->word);
+    for (size_t i = 0; i < e->n; i++) printf(" %.17g", pool[e->off + i]);
+    putchar('\n');
+}
+
+static void emit_case(const struct vec_case *c, const struct vec_out *o, int ran)
+{
+    printf("case %s %s\n", c->kind, c->id);
+    for (size_t i = 0; i < c->n_in; i++) emit_values("in", &c->in[i], c->pool);
+    for (size_t i = 0; i < c->n_out; i++) {
+        const struct vec_entry *g = ran ? vec_out_find(o, c->out[i].name) : NULL;
+        if (g && g->n == c->out[i].n) {
+            struct vec_entry e = *g;
+            emit_values("out", &e, o->pool);
+        } else {
+            printf("# not computed: %s\n", ran ? c->out[i].name : o->err);
+            emit_values("out", &c->out[i], c->pool);
+        }
+    }
+    for (size_t i = 0; i < c->n_tol; i++)
+        printf("tol %s %.17g %.17g\n", c->tol[i].name, c->tol[i].abs, c->tol[i].rel);
+    printf("end\n\n");
+}
+
+int main(int argc, char **argv)
+{
+    int strict = 0, emit = 0, report = 0, quiet = 0, nfiles = 0, bad_file = 0;
+    long passed = 0, failed = 0, unimpl = 0, unresolvable = 0;
+    static struct kind_err errs[128];
+    size_t n_errs = 0;
+
+    if (trk_config_check() != TRK_OK) {
+        fprintf(stderr, "trk-vectors: libtrk was built with other capacities or real type\n");
+        return 2;
+    }
+    for (int a = 1; a < argc; a++) {
+        if (strcmp(argv[a], "--strict") == 0) strict = 1;
+        else if (strcmp(argv[a], "--emit") == 0) emit = 1;
+        else if (strcmp(argv[a], "--report-error") == 0) report = 1;
+        else if (strcmp(argv[a], "--quiet") == 0 || strcmp(argv[a], "-q") == 0) quiet = 1;
+        else if (strcmp(argv[a], "--help") == 0 || strcmp(argv[a], "-h") == 0) {
+            printf("usage: trk-vectors [--strict] [--emit] [--report-error] [--quiet] FILE...\n"
+                   "  checks each case of each FILE against libtrk (%s build)\n"
+                   "  --strict        exit non-zero also when a case's kind is not implemented\n"
+                   "  --emit          write the cases back with computed out values instead\n"
+                   "  --report-error  per kind: max abs/rel error and max fraction of tolerance used\n"
+                   "  --quiet         only the summary line and failures\n",
+                   TRK_REAL_IS_FLOAT ? "float" : "double");
+            return 0;
+        } else if (argv[a][0] == '-') {
+            fprintf(stderr, "trk-vectors: unknown option %s (see --help)\n", argv[a]);
+            return 2;
+        } else nfiles++;
+    }
+    if (nfiles == 0) {
+        fprintf(stderr, "usage: trk-vectors [--strict] [--emit] [--report-error] FILE...\n");
+        return 2;
+    }
+    for (int a = 1; a < argc; a++) {
+        if (argv[a][0] == '-') continue;
+        size_t len;
+        char *buf = read_file(argv[a], &len);
+        if (!buf) {
+            fprintf(stderr, "trk-vectors: cannot read %s\n", argv[a]);
+            bad_file = 1;
+            failed++;
+            continue;
+        }
+        struct vec_file f;
+        vec_file_init(&f, buf, len);
+        int r;
+        while ((r = vec_next(&f, &cs)) == 1) {
+            const struct vec_kind *k = vec_kind_find(cs.kind);
+            vec_out_reset(&out);
+            if (!k) {
+                if (emit) emit_case(&cs, &out, 0);
+                else if (!quiet || strict) printf("UNIMPLEMENTED %s %s %s\n", argv[a], cs.id, cs.kind);
+                unimpl++;
+                continue;
+            }
+            int rc = k->fn(&cs, &out);
+            if (emit) {
+                emit_case(&cs, &out, rc == 0);
+                continue;
+            }
+            if (rc == VEC_FLOAT_UNRESOLVABLE && TRK_REAL_IS_FLOAT) {
+                if (!quiet) printf("FLOAT-UNRESOLVABLE %s %s %s\n", argv[a], cs.id, out.err);
+                unresolvable++;
+                continue;
+            }
+            if (rc != 0) {
+                printf("FAIL %s %s %s\n", argv[a], cs.id, out.err[0] ? out.err : "kind failed");
+                failed++;
+                continue;
+            }
+            struct vec_check chk;
+            vec_compare(&f, &cs, &out, TRK_REAL_IS_FLOAT, k->float_abs, k->float_rel, &chk);
+            if (chk.ok) passed++;
+            else {
+                printf("FAIL %s %s %s\n", argv[a], cs.id, chk.first_fail);
+                failed++;
+            }
+            size_t e;
+            for (e = 0; e < n_errs; e++)
+                if (errs[e].name == k->name) break;
+            if (e == n_errs && n_errs < sizeof errs / sizeof errs[0]) errs[n_errs++].name = k->name;
+            if (e < n_errs) {
+                errs[e].n++;
+                if (chk.max_abs_err > errs[e].max_abs) errs[e].max_abs = chk.max_abs_err;
+                if (chk.max_rel_err > errs[e].max_rel) errs[e].max_rel = chk.max_rel_err;
+                if (chk.max_tol_use > errs[e].max_use) errs[e].max_use = chk.max_tol_use;
+            }
+        }
+        if (r < 0) {
+            fprintf(stderr, "trk-vectors: %s: %s\n", argv[a], f.err);
+            printf("FAIL %s malformed: %s\n", argv[a], f.err);
+            bad_file = 1;
+            failed++;
+        }
+        free(buf);
+    }
+    if (emit) return bad_file ? 2 : 0;
+    if (report) {
+        printf("%-20s %6s %12s %12s %10s   (%s build)\n", "kind", "cases", "max_abs_err", "max_rel_err",
+               "tol_used", TRK_REAL_IS_FLOAT ? "float" : "double");
+        for (size_t e = 0; e < n_errs; e++)
+            printf("%-20s %6ld %12.3g %12.3g %10.3g\n", errs[e].name, errs[e].n, errs[e].max_abs,
+                   errs[e].max_rel, errs[e].max_use);
+    }
+    if (unresolvable)
+        printf("vectors: %ld cases not resolvable in float (answer jumps within float rounding)\n",
+               unresolvable);
+    printf("vectors: %ld passed, %ld failed, %ld unimplemented\n", passed, failed, unimpl);
+    if (bad_file) return 2;
+    if (failed > 0 || passed == 0 || (strict && unimpl > 0)) return 1;
+    return 0;
+}

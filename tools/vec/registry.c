@@ -1,0 +1,28 @@
+/* registry.c - the table of vector kinds, collected by the build from every
+ * TRK_VEC_KIND(name, float_abs, float_rel) line in tools/vec/kind_*.c. */
+#include <string.h>
+
+#include "vec.h"
+
+#define TRK_VEC_KIND_ENTRY(kname, fabs_, frel_) TRK_VEC_KIND(kname, fabs_, frel_);
+#include "vec_kinds.inc"
+#undef TRK_VEC_KIND_ENTRY
+
+static const struct vec_kind kinds[] = {
+#define TRK_VEC_KIND_ENTRY(kname, fabs_, frel_) {#kname, trk_vec_kind_##kname, fabs_, frel_},
+#include "vec_kinds.inc"
+#undef TRK_VEC_KIND_ENTRY
+    {NULL, NULL, 0, 0}};
+
+const struct vec_kind *vec_kind_find(const char *name)
+{
+    for (size_t i = 0; kinds[i].name; i++)
+        if (strcmp(kinds[i].name, name) == 0) return &kinds[i];
+    return NULL;
+}
+
+const struct vec_kind *vec_kinds(size_t *n)
+{
+    *n = sizeof kinds / sizeof kinds[0] - 1;
+    return kinds;
+}
