@@ -135,7 +135,8 @@ $(BUILD)/bin/example-%: $(BUILD)/obj/examples/%.o $(HOSTLIB) $(LIB)
 	$(CC) $(LDFLAGS_ALL) $< $(HOSTLIB) $(LIB) -lm -o $@
 
 # --- one configuration: tests + reference vectors + heap check
-VECTORS_DIR ?= ../shared/vectors
+# ../shared/vectors when the checkout sits next to it, else the copy in tests/vectors
+VECTORS_DIR ?= $(if $(wildcard ../shared/vectors/*.vec),../shared/vectors,tests/vectors)
 check: all $(TESTS)
 	@set -e; for t in $(TESTS); do echo "== $$t"; TRK_VECTORS_DIR=$(VECTORS_DIR) TRK_BUILD=$(BUILD) $$t; done
 	@if [ -d $(VECTORS_DIR) ]; then echo "== trk-vectors ($(REAL))"; $(BUILD)/bin/trk-vectors --quiet $(VECTORS_DIR)/*.vec; \

@@ -27,7 +27,7 @@ trk_real trk_gate_volume(int nz, trk_real gamma, trk_real log_det_s)
            trk_exp(TRK_REAL_C(0.5) * log_det_s);
 }
 
-trk_real trk_gate_d2(int nz, const trk_real *s_chol, const trk_real *nu)
+trk_real trk_gate_d2(const struct trk_innovation *inn, const trk_real *nu)
 {
-    return trk_i_mahalanobis2(nz, s_chol, nu);
+    return trk_i_mahalanobis2(inn->nz, inn->s_chol_inv, nu);
 }

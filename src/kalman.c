@@ -23,6 +23,15 @@ void trk_cv2_process_noise(trk_real dt_s, trk_real q_m2_per_s3, trk_real q[TRK_C
     q[5] = q[15] = c;
 }
 
+trk_status trk_cv2_predict(trk_real dt_s, trk_real q_m2_per_s3, trk_real x[TRK_CV2_NX],
+                           trk_real p[TRK_CV2_NX * TRK_CV2_NX])
+{
+    if (!x || !p) return TRK_E_ARG;
+    if (!isfinite(dt_s) || !isfinite(q_m2_per_s3)) return TRK_E_NAN;
+    trk_i_cv2_predict(dt_s, q_m2_per_s3, x, p);
+    return TRK_OK;
+}
+
 static int dims_ok(int nx, int nz)
 {
     return nx >= 1 && nx <= TRK_MAX_STATE && nz >= 1 && nz <= TRK_MAX_MEAS && nz <= nx;
@@ -41,7 +50,8 @@ trk_status trk_kalman_predict(int nx, const trk_real *f, const trk_real *q, trk_
     if (!dims_ok(nx, 1) || !f || !q || !x || !p) return TRK_E_ARG;
     for (int i = 0; i < nx; i++) xn[i] = x[i];
     for (int i = 0; i < nx * nx; i++) pn[i] = p[i];
-    trk_i_predict(nx, f, q, xn, pn);
+    if (nx == TRK_CV2_NX) trk_i_predict(TRK_CV2_NX, f, q, xn, pn); /* unrolled */
+    else trk_i_predict(nx, f, q, xn, pn);
     if (!all_finite(nx, xn) || !all_finite(nx * nx, pn)) return TRK_E_NAN;
     for (int i = 0; i < nx; i++) x[i] = xn[i];
     for (int i = 0; i < nx * nx; i++) p[i] = pn[i];
@@ -64,7 +74,7 @@ void trk_kalman_gain(int nx, int nz, const trk_real *h, const trk_real *p,
 {
     trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
     trk_i_mat_mul_abt(nx, nx, nz, p, h, pht);
-    trk_i_gain(nx, nz, pht, inn->s_chol, k);
+    trk_i_gain(nx, nz, pht, inn->s_chol_inv, k);
 }
 
 void trk_kalman_joseph(int nx, int nz, const trk_real *h, const trk_real *r, const trk_real *k,
@@ -83,7 +93,7 @@ trk_status trk_kalman_update(int nx, int nz, const trk_real *h, const trk_real *
     if (!all_finite(nz, z)) return TRK_E_NAN;
     trk_status st = trk_i_innovation(nx, nz, h, r, x, p, pht, &inn);
     if (st != TRK_OK) return st;
-    trk_i_gain(nx, nz, pht, inn.s_chol, k);
+    trk_i_gain(nx, nz, pht, inn.s_chol_inv, k);
     for (int i = 0; i < nz; i++) nu[i] = z[i] - inn.z_pred[i];
     for (int i = 0; i < nx; i++) {
         trk_real s = x[i];

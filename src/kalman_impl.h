@@ -7,7 +7,7 @@
 #include "trk/kalman.h"
 
 /* P = F P F' + Q, x = F x. */
-static inline void trk_i_predict(int nx, const trk_real *f, const trk_real *q, trk_real *x,
+TRK_INLINE void trk_i_predict(int nx, const trk_real *f, const trk_real *q, trk_real *x,
                                  trk_real *p)
 {
     trk_real fp[TRK_MAX_STATE * TRK_MAX_STATE];
@@ -20,8 +20,35 @@ static inline void trk_i_predict(int nx, const trk_real *f, const trk_real *q, t
     for (int i = 0; i < nx; i++) x[i] = xn[i];
 }
 
+/* CV model: F = blkdiag(F1, F1), F1 = [[1, T], [0, 1]]. Each 2x2 block B of P
+ * maps to F1 B F1' = [[b00 + T (b01 + b10) + T^2 b11, b01 + T b11],
+ *                     [b10 + T b11,                   b11]]
+ * and Q adds q [[T^3/3, T^2/2], [T^2/2, T]] to the diagonal blocks. */
+TRK_INLINE void trk_i_cv2_predict(trk_real t, trk_real q, trk_real *x, trk_real *p)
+{
+    const trk_real t2 = t * t;
+    const trk_real qa = q * t2 * t / 3, qb = q * t2 / 2, qc = q * t;
+    x[0] += t * x[1];
+    x[2] += t * x[3];
+    for (int bi = 0; bi < 4; bi += 2)
+        for (int bj = 0; bj < 4; bj += 2) {
+            trk_real *r0 = p + bi * 4 + bj, *r1 = r0 + 4;
+            const trk_real b00 = r0[0], b01 = r0[1], b10 = r1[0], b11 = r1[1];
+            r0[0] = b00 + t * (b01 + b10) + t2 * b11;
+            r0[1] = b01 + t * b11;
+            r1[0] = b10 + t * b11;
+            if (bi == bj) {
+                r0[0] += qa;
+                r0[1] += qb;
+                r1[0] += qb;
+                r1[1] += qc;
+            }
+        }
+    trk_i_symmetrize(4, p);
+}
+
 /* PH' (nx x nz), S = H P H' + R, its Cholesky factor and log-determinant. */
-static inline trk_status trk_i_innovation(int nx, int nz, const trk_real *h, const trk_real *r,
+TRK_INLINE trk_status trk_i_innovation(int nx, int nz, const trk_real *h, const trk_real *r,
                                           const trk_real *x, const trk_real *p, trk_real *pht,
                                           struct trk_innovation *inn)
 {
@@ -33,49 +60,66 @@ static inline trk_status trk_i_innovation(int nx, int nz, const trk_real *h, con
     inn->nz = nz;
     trk_status st = trk_i_chol(nz, inn->s, inn->s_chol);
     if (st != TRK_OK) return st;
-    inn->log_det_s = trk_i_chol_logdet(nz, inn->s_chol);
+    trk_i_tril_inverse(nz, inn->s_chol, inn->s_chol_inv);
+    trk_real sqrt_det = 1;
+    for (int i = 0; i < nz; i++) sqrt_det /= inn->s_chol_inv[i * nz + i]; /* = prod L_ii */
+    /* one log instead of nz; the product of nz <= 3 square roots of finite
+     * pivots overflows only in float for |S| above ~1e25 */
+    inn->log_det_s = (sqrt_det > 0 && sqrt_det <= TRK_REAL_MAX) ? 2 * trk_log(sqrt_det)
+                                                                : trk_i_chol_logdet(nz, inn->s_chol);
+    inn->sqrt_det_s = sqrt_det;
     return TRK_OK;
 }
 
-/* K = P H' S^-1: row i of K solves S k_i' = (PH')_i' (S symmetric). */
-static inline void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *s_chol,
+/* K = P H' S^-1 = P H' L^-T L^-1 (row i of K: L^-T L^-1 (PH')_i'). */
+TRK_INLINE void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *s_chol_inv,
                               trk_real *k)
 {
     for (int i = 0; i < nx; i++) {
         trk_real y[TRK_MAX_MEAS];
-        trk_i_chol_forward(nz, s_chol, pht + i * nz, y);
-        trk_i_chol_backward(nz, s_chol, y, k + i * nz);
+        trk_i_tril_mul(nz, s_chol_inv, pht + i * nz, y);
+        trk_i_tril_mul_t(nz, s_chol_inv, y, k + i * nz);
     }
 }
 
-/* Pc = (I - K H) P (I - K H)' + K R K'. */
-static inline void trk_i_joseph(int nx, int nz, const trk_real *h, const trk_real *r,
-                                const trk_real *k, const trk_real *p, trk_real *pc)
+/* Joseph form Pc = (I - K H) P (I - K H)' + K R K', evaluated as
+ *   A = (I - K H) P = P - K (P H')',   Pc = A - (A H' - K R) K'.
+ * A H' - K R vanishes in exact arithmetic (K S = P H'); forming it keeps the
+ * Joseph form's first-order insensitivity to errors in K at about half the
+ * cost of the three explicit products. */
+TRK_INLINE void trk_i_joseph(int nx, int nz, const trk_real *h, const trk_real *r,
+                             const trk_real *k, const trk_real *p, trk_real *pc)
 {
-    trk_real a[TRK_MAX_STATE * TRK_MAX_STATE];
-    trk_real ap[TRK_MAX_STATE * TRK_MAX_STATE];
-    trk_real kr[TRK_MAX_STATE * TRK_MAX_MEAS];
-    trk_i_mat_mul(nx, nz, nx, k, h, a);
-    for (int i = 0; i < nx * nx; i++) a[i] = -a[i];
-    for (int i = 0; i < nx; i++) a[i * nx + i] += 1;
-    trk_i_mat_mul(nx, nx, nx, a, p, ap);
-    trk_i_mat_mul_abt(nx, nx, nx, ap, a, pc);
-    trk_i_mat_mul(nx, nz, nz, k, r, kr);
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS], e[TRK_MAX_STATE * TRK_MAX_MEAS];
+    trk_i_mat_mul_abt(nx, nx, nz, p, h, pht);
+    for (int i = 0; i < nx; i++)
+        for (int j = 0; j < nx; j++) {
+            trk_real s = p[i * nx + j];
+            for (int t = 0; t < nz; t++) s -= k[i * nz + t] * pht[j * nz + t];
+            pc[i * nx + j] = s; /* A */
+        }
+    trk_i_mat_mul_abt(nx, nx, nz, pc, h, e); /* A H' */
+    for (int i = 0; i < nx; i++)
+        for (int j = 0; j < nz; j++) {
+            trk_real s = 0;
+            for (int t = 0; t < nz; t++) s += k[i * nz + t] * r[t * nz + j];
+            e[i * nz + j] -= s; /* - K R */
+        }
     for (int i = 0; i < nx; i++)
         for (int j = 0; j < nx; j++) {
             trk_real s = 0;
-            for (int t = 0; t < nz; t++) s += kr[i * nz + t] * k[j * nz + t];
-            pc[i * nx + j] += s;
+            for (int t = 0; t < nz; t++) s += e[i * nz + t] * k[j * nz + t];
+            pc[i * nx + j] -= s;
         }
     trk_i_symmetrize(nx, pc);
 }
 
-/* d2 = nu' S^-1 nu = |L^-1 nu|^2. */
-static inline trk_real trk_i_mahalanobis2(int nz, const trk_real *s_chol, const trk_real *nu)
+/* d2 = nu' S^-1 nu = |L^-1 nu|^2 (a sum of squares: never negative). */
+TRK_INLINE trk_real trk_i_mahalanobis2(int nz, const trk_real *s_chol_inv, const trk_real *nu)
 {
     trk_real y[TRK_MAX_MEAS];
     trk_real d2 = 0;
-    trk_i_chol_forward(nz, s_chol, nu, y);
+    trk_i_tril_mul(nz, s_chol_inv, nu, y);
     for (int i = 0; i < nz; i++) d2 += y[i] * y[i];
     return d2;
 }

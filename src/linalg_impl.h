@@ -6,9 +6,10 @@
 #ifndef TRK_LINALG_IMPL_H
 #define TRK_LINALG_IMPL_H
 
+#include "internal.h"
 #include "trk/types.h"
 
-static inline void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_real *b,
+TRK_INLINE void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_real *b,
                                  trk_real *c)
 {
     for (int i = 0; i < n; i++)
@@ -19,7 +20,7 @@ static inline void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const t
         }
 }
 
-static inline void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const trk_real *b,
+TRK_INLINE void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const trk_real *b,
                                      trk_real *c)
 {
     for (int i = 0; i < n; i++)
@@ -30,7 +31,7 @@ static inline void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, con
         }
 }
 
-static inline void trk_i_symmetrize(int n, trk_real *a)
+TRK_INLINE void trk_i_symmetrize(int n, trk_real *a)
 {
     for (int i = 0; i < n; i++)
         for (int j = i + 1; j < n; j++) {
@@ -42,7 +43,7 @@ static inline void trk_i_symmetrize(int n, trk_real *a)
 
 /* Cholesky-Banachiewicz. Rejects a pivot that is not > 0 or not finite
  * (a NaN pivot fails the comparison). */
-static inline trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
+TRK_INLINE trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
 {
     for (int i = 0; i < n; i++) {
         for (int j = 0; j <= i; j++) {
@@ -60,7 +61,7 @@ static inline trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
     return TRK_OK;
 }
 
-static inline void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)
+TRK_INLINE void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)
 {
     for (int i = 0; i < n; i++) {
         trk_real s = b[i];
@@ -69,7 +70,7 @@ static inline void trk_i_chol_forward(int n, const trk_real *l, const trk_real *
     }
 }
 
-static inline void trk_i_chol_backward(int n, const trk_real *l, const trk_real *y, trk_real *x)
+TRK_INLINE void trk_i_chol_backward(int n, const trk_real *l, const trk_real *y, trk_real *x)
 {
     for (int i = n - 1; i >= 0; i--) {
         trk_real s = y[i];
@@ -78,7 +79,41 @@ static inline void trk_i_chol_backward(int n, const trk_real *l, const trk_real 
     }
 }
 
-static inline trk_real trk_i_chol_logdet(int n, const trk_real *l)
+/* Inverse of a lower-triangular L (non-zero diagonal): M = L^-1, lower. */
+TRK_INLINE void trk_i_tril_inverse(int n, const trk_real *l, trk_real *m)
+{
+    for (int j = 0; j < n; j++) {
+        for (int i = 0; i < j; i++) m[i * n + j] = 0;
+        m[j * n + j] = 1 / l[j * n + j];
+        for (int i = j + 1; i < n; i++) {
+            trk_real s = 0;
+            for (int t = j; t < i; t++) s += l[i * n + t] * m[t * n + j];
+            m[i * n + j] = -s / l[i * n + i];
+        }
+    }
+}
+
+/* y = M v for a lower-triangular M. */
+TRK_INLINE void trk_i_tril_mul(int n, const trk_real *m, const trk_real *v, trk_real *y)
+{
+    for (int i = n - 1; i >= 0; i--) {
+        trk_real s = 0;
+        for (int t = 0; t <= i; t++) s += m[i * n + t] * v[t];
+        y[i] = s;
+    }
+}
+
+/* y = M' v for a lower-triangular M. */
+TRK_INLINE void trk_i_tril_mul_t(int n, const trk_real *m, const trk_real *v, trk_real *y)
+{
+    for (int i = 0; i < n; i++) {
+        trk_real s = 0;
+        for (int t = i; t < n; t++) s += m[t * n + i] * v[t];
+        y[i] = s;
+    }
+}
+
+TRK_INLINE trk_real trk_i_chol_logdet(int n, const trk_real *l)
 {
     trk_real s = 0;
     for (int i = 0; i < n; i++) s += trk_log(l[i * n + i]);

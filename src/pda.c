@@ -22,38 +22,32 @@ trk_status trk_pda_init(struct trk_pda *pda, const struct trk_pda_params *pr)
     pda->gamma = gamma;
     pda->log_pd_norm = trk_log(pr->pd) - TRK_REAL_C(0.5) * (trk_real)pr->nz * TRK_LN_2PI;
     pda->log_miss = trk_log1p(-pr->pd * pr->gate_prob);
+    pda->log_e0_param = trk_log(pr->clutter_density) + pda->log_miss;
     pda->gate_const = trk_gate_unit_volume(pr->nz) * trk_pow(gamma, (trk_real)pr->nz / 2);
     return TRK_OK;
 }
 
-trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h, const trk_real *r,
-                          trk_real *x, trk_real *p, size_t m, const trk_real *z,
-                          const trk_real *log_lr, trk_real *beta, trk_real *d2,
-                          struct trk_pda_report *rep)
+/* The update for given dimensions; called with constants for the 2-D CV
+ * model so the compiler unrolls it, and with run-time dimensions otherwise. */
+TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const int nz,
+                                    const trk_real *h, const trk_real *r, trk_real *x, trk_real *p,
+                                    size_t m, const trk_real *z, const trk_real *log_lr,
+                                    trk_real *beta, trk_real *d2, struct trk_pda_report *rep)
 {
     struct trk_innovation inn;
-    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS], k[TRK_MAX_STATE * TRK_MAX_MEAS];
-    trk_real pc[TRK_MAX_STATE * TRK_MAX_STATE];
-    if (!pda || !h || !r || !x || !p || (m > 0 && (!z || !beta))) return TRK_E_ARG;
-    const int nz = pda->params.nz;
-    if (nx < nz || nx > TRK_MAX_STATE) return TRK_E_ARG;
-    if (m > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
-    for (size_t i = 0; i < m * (size_t)nz; i++)
-        if (!isfinite(z[i])) return TRK_E_NAN;
-    if (log_lr)
-        for (size_t i = 0; i < m; i++)
-            if (!isfinite(log_lr[i])) return TRK_E_NAN;
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
+    trk_real xn[TRK_MAX_STATE], pn[TRK_MAX_STATE * TRK_MAX_STATE];
 
     trk_status st = trk_i_innovation(nx, nz, h, r, x, p, pht, &inn);
     if (st != TRK_OK) return st;
-    const trk_real vg = pda->gate_const * trk_exp(TRK_REAL_C(0.5) * inn.log_det_s);
+    const trk_real vg = trk_i_pda_gate_volume(pda, &inn);
 
     /* d2, gate, unnormalised log weights (beta[] holds ln e_i, -inf outside) */
     int n_gated = 0;
     for (size_t i = 0; i < m; i++) {
         trk_real nu[TRK_MAX_MEAS];
         for (int t = 0; t < nz; t++) nu[t] = z[i * nz + t] - inn.z_pred[t];
-        trk_real di = trk_i_mahalanobis2(nz, inn.s_chol, nu);
+        trk_real di = trk_i_mahalanobis2(nz, inn.s_chol_inv, nu);
         if (d2) d2[i] = di;
         int in = trk_gate_inside(di, pda->gamma);
         n_gated += in;
@@ -64,21 +58,24 @@ trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h, 
     const int n_hyp = pda->params.gating ? n_gated : (int)m;
     trk_real lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->params.clutter_density
                                                                    : (trk_real)n_hyp / vg;
-    trk_real beta0 = trk_i_pda_normalise(trk_log(lambda) + pda->log_miss, m, beta);
-    if (n_hyp == 0) beta0 = 1; /* nothing to associate (also nonparametric m_G = 0) */
-
-    trk_i_gain(nx, nz, pht, inn.s_chol, k);
-    trk_i_joseph(nx, nz, h, r, k, p, pc);
-    for (int i = 0; i < nx * nx; i++) pc[i] *= 1 - beta0;
-    trk_real xn[TRK_MAX_STATE], pn[TRK_MAX_STATE * TRK_MAX_STATE];
-    trk_i_pda_combine(nx, nz, x, p, pht, inn.z_pred, beta0, m, z, (size_t)nz, beta, inn.s_chol, 0, pc,
-                      xn, pn);
-    for (int i = 0; i < nx; i++)
-        if (!isfinite(xn[i])) return TRK_E_NAN;
-    for (int i = 0; i < nx * nx; i++)
-        if (!isfinite(pn[i])) return TRK_E_NAN;
-    for (int i = 0; i < nx; i++) x[i] = xn[i];
-    for (int i = 0; i < nx * nx; i++) p[i] = pn[i];
+    trk_real beta0 = 1;
+    if (n_hyp > 0) {
+        trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS], pc[TRK_MAX_STATE * TRK_MAX_STATE];
+        beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, lambda), m, beta);
+        trk_i_gain(nx, nz, pht, inn.s_chol_inv, k);
+        trk_i_joseph(nx, nz, h, r, k, p, pc);
+        for (int i = 0; i < nx * nx; i++) pc[i] *= 1 - beta0;
+        trk_i_pda_combine(nx, nz, x, p, pht, inn.z_pred, beta0, m, z, (size_t)nz, beta,
+                          inn.s_chol_inv, 0, NULL, NULL, NULL, pc, xn, pn);
+        for (int i = 0; i < nx; i++)
+            if (!isfinite(xn[i])) return TRK_E_NAN;
+        for (int i = 0; i < nx * nx; i++)
+            if (!isfinite(pn[i])) return TRK_E_NAN;
+        for (int i = 0; i < nx; i++) x[i] = xn[i];
+        for (int i = 0; i < nx * nx; i++) p[i] = pn[i];
+    } else { /* nothing to associate (also nonparametric m_G = 0): x, P = prediction */
+        for (size_t i = 0; i < m; i++) beta[i] = 0;
+    }
     if (rep) {
         rep->beta0 = beta0;
         rep->n_gated = n_gated;
@@ -86,4 +83,23 @@ trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h, 
         rep->lambda = lambda;
     }
     return TRK_OK;
+}
+
+trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h, const trk_real *r,
+                          trk_real *x, trk_real *p, size_t m, const trk_real *z,
+                          const trk_real *log_lr, trk_real *beta, trk_real *d2,
+                          struct trk_pda_report *rep)
+{
+    if (!pda || !h || !r || !x || !p || (m > 0 && (!z || !beta))) return TRK_E_ARG;
+    const int nz = pda->params.nz;
+    if (nx < nz || nx > TRK_MAX_STATE) return TRK_E_ARG;
+    if (m > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
+    for (size_t i = 0; i < m * (size_t)nz; i++)
+        if (!isfinite(z[i])) return TRK_E_NAN;
+    if (log_lr)
+        for (size_t i = 0; i < m; i++)
+            if (!isfinite(log_lr[i])) return TRK_E_NAN;
+    if (nx == TRK_CV2_NX && nz == TRK_CV2_NZ)
+        return pda_update(pda, TRK_CV2_NX, TRK_CV2_NZ, h, r, x, p, m, z, log_lr, beta, d2, rep);
+    return pda_update(pda, nx, nz, h, r, x, p, m, z, log_lr, beta, d2, rep);
 }

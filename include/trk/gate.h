@@ -23,7 +23,9 @@ trk_real trk_gate_volume(int nz, trk_real gamma, trk_real log_det_s);
 /* 1 when d2 <= gamma, else 0 (a NaN d2 is outside). */
 static inline int trk_gate_inside(trk_real d2, trk_real gamma) { return d2 <= gamma; }
 
-/* Squared Mahalanobis distance d2 of the innovation nu (nz) with S = L L'. */
-trk_real trk_gate_d2(int nz, const trk_real *s_chol, const trk_real *nu);
+struct trk_innovation;
+/* Squared Mahalanobis distance d2 = nu' S^-1 nu of the innovation nu
+ * (inn->nz values) with the innovation covariance of *inn (kalman.h). */
+trk_real trk_gate_d2(const struct trk_innovation *inn, const trk_real *nu);
 
 #endif

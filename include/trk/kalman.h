@@ -19,6 +19,14 @@ void trk_cv2_transition(trk_real dt_s, trk_real f[TRK_CV2_NX * TRK_CV2_NX]);
  * of continuous white-noise acceleration (m^2/s^3). */
 void trk_cv2_process_noise(trk_real dt_s, trk_real q_m2_per_s3, trk_real q[TRK_CV2_NX * TRK_CV2_NX]);
 
+/* CV prediction in place: x = F x, P = F P F' + Q with F and Q of dt_s and
+ * q as above, evaluated with F's block structure (~40 flops instead of the
+ * ~130 of the general product; equal to trk_kalman_predict with
+ * trk_cv2_transition/trk_cv2_process_noise to rounding). P stays exactly
+ * symmetric. TRK_E_NAN for a non-finite dt_s or q (x, P untouched). */
+TRK_NODISCARD trk_status trk_cv2_predict(trk_real dt_s, trk_real q_m2_per_s3, trk_real x[TRK_CV2_NX],
+                                         trk_real p[TRK_CV2_NX * TRK_CV2_NX]);
+
 /* H = [[1,0,0,0],[0,0,1,0]]. */
 extern const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX];
 
@@ -34,7 +42,9 @@ struct trk_innovation {
     trk_real z_pred[TRK_MAX_MEAS];
     trk_real s[TRK_MAX_MEAS * TRK_MAX_MEAS];       /* S */
     trk_real s_chol[TRK_MAX_MEAS * TRK_MAX_MEAS];  /* lower L, S = L L' */
+    trk_real s_chol_inv[TRK_MAX_MEAS * TRK_MAX_MEAS]; /* L^-1 (lower): d2 = |L^-1 nu|^2 */
     trk_real log_det_s;                            /* ln det S */
+    trk_real sqrt_det_s;                           /* sqrt(det S) (may overflow in float: use log_det_s) */
 };
 
 /* Fill *inn from (x, P) and the measurement model (H, R).

@@ -45,6 +45,7 @@ struct trk_pda {
     trk_real gamma;        /* gate threshold on d2 */
     trk_real log_pd_norm;  /* ln P_D - (nz/2) ln 2 pi */
     trk_real log_miss;     /* ln(1 - P_D P_G) (-inf when P_D P_G = 1) */
+    trk_real log_e0_param; /* ln lambda + log_miss for parametric clutter */
     trk_real gate_const;   /* c_nz gamma^(nz/2): V_G = gate_const sqrt(det S) */
 };
 

@@ -9,5 +9,8 @@
 #include "trk/kalman.h"
 #include "trk/gate.h"
 #include "trk/pda.h"
+#include "trk/confirm_mn.h"
+#include "trk/term_kn.h"
+#include "trk/tracker.h"
 
 #endif

@@ -13,7 +13,7 @@
  * thousands of metres carries a float error of ~1e-4 relative, so a detection
  * within 0.1 % of gamma may fall on either side; its beta is then 0 or not and
  * no tolerance can cover the jump. The float build reports such cases as not
- * resolvable in float (VEC_FLOAT_UNRESOLVABLE) instead of comparing them. */
+ * resolvable in float (VEC_NOT_APPLICABLE) instead of comparing them. */
 #include <stdio.h>
 #include <string.h>
 
@@ -88,7 +88,10 @@ static int step(struct vec_out *o, struct pda_setup *s, size_t m, const double *
 {
     static trk_real z[2 * TRK_MAX_DETECTIONS], lr[TRK_MAX_DETECTIONS];
     static trk_real beta[TRK_MAX_DETECTIONS], d2[TRK_MAX_DETECTIONS];
-    if (m > TRK_MAX_DETECTIONS) return vec_fail(o, "m above TRK_MAX_DETECTIONS");
+    if (m > TRK_MAX_DETECTIONS) {
+        vec_fail(o, "%zu detections above this build's TRK_MAX_DETECTIONS", m);
+        return VEC_NOT_APPLICABLE;
+    }
     to_real(zd, z, 2 * m);
     if (lrd) to_real(lrd, lr, m);
     trk_status st = trk_kalman_predict(NX, s->f, s->q, s->x, s->p);
@@ -111,7 +114,7 @@ static int step(struct vec_out *o, struct pda_setup *s, size_t m, const double *
             if (trk_fabs(d2[i] - s->pda.gamma) <= TRK_REAL_C(1e-3) * s->pda.gamma) {
                 vec_fail(o, "detection %zu within 0.1%% of the gate boundary (d2 %g, gamma %g)", i,
                          (double)d2[i], (double)s->pda.gamma);
-                return VEC_FLOAT_UNRESOLVABLE;
+                return VEC_NOT_APPLICABLE;
             }
     if (full) {
         double *g = vec_put_alloc(o, "gated", m);
@@ -153,7 +156,8 @@ TRK_VEC_KIND(pda_track, 1e-6, 2e-4)
         snprintf(name, sizeof name, "z%ld", k);
         if (vec_in_array(c, o, name, &z, &nz)) return -1;
         if (nz % 2) return vec_fail(o, "%s has an odd number of values", name);
-        if (step(o, &s, nz / 2, z, NULL, 0)) return -1;
+        int rc = step(o, &s, nz / 2, z, NULL, 0);
+        if (rc) return rc;
         snprintf(name, sizeof name, "x%ld", k);
         if (put_real(o, name, s.x, NX)) return -1;
         snprintf(name, sizeof name, "P%ld", k);

@@ -219,7 +219,7 @@ int vec_in_array(const struct vec_case *c, struct vec_out *o, const char *name, 
 int vec_in_array_n(const struct vec_case *c, struct vec_out *o, const char *name, size_t n,
                    const double **v)
 {
-    size_t got;
+    size_t got = 0;
     if (vec_in_array(c, o, name, v, &got)) return -1;
     if (got != n) return vec_fail(o, "input '%s' has %zu values, want %zu", name, got, n);
     return 0;
@@ -227,7 +227,7 @@ int vec_in_array_n(const struct vec_case *c, struct vec_out *o, const char *name
 
 int vec_in_scalar(const struct vec_case *c, struct vec_out *o, const char *name, double *v)
 {
-    const double *p;
+    const double *p = NULL;
     if (vec_in_array_n(c, o, name, 1, &p)) return -1;
     *v = p[0];
     return 0;

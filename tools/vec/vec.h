@@ -96,11 +96,14 @@ int vec_fail(struct vec_out *o, const char *fmt, ...);
 const struct vec_entry *vec_out_find(const struct vec_out *o, const char *name);
 
 /* --- kinds ---
- * A kind returns 0 (outputs computed), -1 (error: o->err says why), or, in a
- * float build only, VEC_FLOAT_UNRESOLVABLE when the case's answer changes
- * discontinuously within float rounding (e.g. a detection on the gate
- * boundary); o->err says why and the runner counts it apart. */
-#define VEC_FLOAT_UNRESOLVABLE 1
+ * A kind returns 0 (outputs computed), -1 (error: o->err says why), or
+ * VEC_NOT_APPLICABLE when this build cannot answer the case meaningfully:
+ * a float build whose answer jumps within float rounding (e.g. a detection on
+ * the gate boundary), or a case larger than this build's compile-time
+ * capacities. o->err says why; the runner counts such cases apart and prints
+ * them (they never occur in the default double build). */
+#define VEC_NOT_APPLICABLE 1
+#define VEC_FLOAT_UNRESOLVABLE VEC_NOT_APPLICABLE /* older name */
 typedef int (*vec_kind_fn)(const struct vec_case *c, struct vec_out *o);
 struct vec_kind {
     const char *name;

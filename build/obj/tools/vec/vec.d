@@ -1,2 +1,0 @@
-build/obj/tools/vec/vec.o: tools/vec/vec.c tools/vec/vec.h
-tools/vec/vec.h:

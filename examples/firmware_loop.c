@@ -1,0 +1,135 @@
+/* firmware_loop.c - how firmware uses libtrk: a static tracker, a main loop
+ * that receives one detection scan at a time and reads the confirmed tracks.
+ *
+ * The "sonar" here is a small simulation (three targets, Poisson clutter);
+ * in firmware, get_scan() would read the signal processor's detection list.
+ * Everything lives in static storage; no heap, no libtrk call allocates. */
+#include <math.h>
+#include <stdio.h>
+
+#include "trk/trk.h"
+
+#define N_TARGETS 3
+#define AREA_M 2000.0
+#define SCAN_PERIOD_S 2.0
+#define N_SCANS 60
+
+static struct trk_tracker tracker;                 /* ~40 KB, .bss */
+static struct trk_detection detections[TRK_MAX_DETECTIONS];
+
+/* --- a stand-in sonar: xorshift64* random numbers, three CV targets -------- */
+static uint64_t rng = 0x2545F4914F6CDD1Dull;
+static double urand(void)
+{
+    rng ^= rng >> 12;
+    rng ^= rng << 25;
+    rng ^= rng >> 27;
+    return (double)((rng * 0x2545F4914F6CDD1Dull) >> 11) * (1.0 / 9007199254740992.0);
+}
+static double nrand(void)
+{
+    double u = urand();
+    return sqrt(-2 * log(u > 1e-300 ? u : 1e-300)) * cos(6.283185307179586 * urand());
+}
+static unsigned poisson(double mean)
+{
+    double l = exp(-mean), p = 1;
+    unsigned k = 0;
+    while ((p *= urand()) > l) k++;
+    return k;
+}
+
+static const double target0[N_TARGETS][4] = {
+    {200, 3.0, 300, 1.0}, {1500, -2.0, 400, 2.5}, {900, 0.5, 1700, -3.0}};
+static double target[N_TARGETS][4];
+
+static size_t get_scan(int k, struct trk_scan *scan)
+{
+    size_t n = 0;
+    for (int i = 0; i < N_TARGETS; i++) {
+        target[i][0] += SCAN_PERIOD_S * target[i][1];
+        target[i][2] += SCAN_PERIOD_S * target[i][3];
+        if (urand() < 0.85 && n < TRK_MAX_DETECTIONS) {
+            detections[n].x_m = (trk_real)(target[i][0] + 3 * nrand());
+            detections[n].y_m = (trk_real)(target[i][2] + 3 * nrand());
+            detections[n].has_cov = detections[n].has_amplitude = 0;
+            n++;
+        }
+    }
+    for (unsigned c = poisson(20); c > 0 && n < TRK_MAX_DETECTIONS; c--) {
+        detections[n].x_m = (trk_real)(AREA_M * urand());
+        detections[n].y_m = (trk_real)(AREA_M * urand());
+        detections[n].has_cov = detections[n].has_amplitude = 0;
+        n++;
+    }
+    scan->time_us = (int64_t)(k * SCAN_PERIOD_S * 1e6);
+    scan->sensor_id = 0;
+    scan->n_detections = n;
+    scan->detections = detections;
+    return n;
+}
+
+int main(void)
+{
+    struct trk_tracker_params params;
+    trk_tracker_default_params(&params);
+    params.sensor[0].pd = TRK_REAL_C(0.85);
+    params.sensor[0].meas_cov_m2[0] = 9; /* 3 m standard deviation */
+    params.sensor[0].meas_cov_m2[2] = 9;
+    params.sensor[0].clutter_density_per_m2 = (trk_real)(20.0 / (AREA_M * AREA_M));
+    params.process_noise_q = TRK_REAL_C(0.01);
+    params.confirm.u.mn.m = 4; /* 4 of the first 5 scans */
+    params.confirm.u.mn.n = 5;
+    params.term.u.kn.k = 1; /* at most 1 detection in the last 6 scans */
+    params.term.u.kn.n = 6;
+    params.max_tentative_scans = 5;
+
+    if (trk_config_check() != TRK_OK) return 2; /* header/library mismatch */
+    trk_status st = trk_tracker_init(&tracker, &params);
+    if (st != TRK_OK) {
+        printf("trk_tracker_init: %s\n", trk_status_str(st));
+        return 1;
+    }
+    for (int i = 0; i < N_TARGETS; i++)
+        for (int j = 0; j < 4; j++) target[i][j] = target0[i][j];
+
+    unsigned long n_det = 0, n_started = 0, n_ended = 0;
+    for (int k = 0; k < N_SCANS; k++) { /* the firmware main loop */
+        struct trk_scan scan;
+        struct trk_scan_report rep;
+        n_det += get_scan(k, &scan);
+        st = trk_tracker_process_scan(&tracker, &scan, &rep);
+        if (st != TRK_OK) { /* a refused scan leaves the table as it was */
+            printf("scan %d refused: %s\n", k, trk_status_str(st));
+            continue;
+        }
+        n_started += rep.n_started;
+        n_ended += rep.n_terminated;
+        if ((k + 1) % 15 == 0) {
+            printf("t = %5.0f s: %2u detections, %zu live tracks; confirmed:\n", (double)scan.time_us * 1e-6,
+                   rep.n_detections, trk_tracker_live_count(&tracker));
+            for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
+                const struct trk_track *tr = trk_tracker_track(&tracker, s);
+                if (!tr || tr->status != TRK_TRACK_CONFIRMED) continue;
+                printf("  id %3u  x %8.1f y %8.1f m  v (%5.2f, %5.2f) m/s  sd %.1f m  hits %u/%u\n",
+                       (unsigned)tr->id, (double)tr->x[0], (double)tr->x[2], (double)tr->x[1],
+                       (double)tr->x[3], sqrt((double)(tr->p[0] + tr->p[10])), (unsigned)tr->n_hits,
+                       (unsigned)tr->n_scans);
+            }
+        }
+    }
+    /* score: each target should have one confirmed track within 20 m */
+    int found = 0;
+    for (int i = 0; i < N_TARGETS; i++)
+        for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
+            const struct trk_track *tr = trk_tracker_track(&tracker, s);
+            if (tr && tr->status == TRK_TRACK_CONFIRMED &&
+                hypot((double)tr->x[0] - target[i][0], (double)tr->x[2] - target[i][2]) < 20) {
+                found++;
+                break;
+            }
+        }
+    printf("%d scans, %lu detections, %lu tracks started, %lu ended; %d of %d targets held\n",
+           N_SCANS, n_det, n_started, n_ended, found, N_TARGETS);
+    return found == N_TARGETS ? 0 : 1;
+}

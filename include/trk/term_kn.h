@@ -1,0 +1,34 @@
+/* trk/term_kn.h - K-of-N track termination (CONVENTIONS "K/N termination";
+ * Blanding sec. 1, Willett II.A).
+ *
+ * count = detections in the last min(t, N) scans; terminate iff t >= N and
+ * count <= K ("K or fewer in the last N"; no decision before N scans).
+ * K = 0 is "N consecutive misses". Decisions are sticky. */
+#ifndef TRK_TERM_KN_H
+#define TRK_TERM_KN_H
+
+#include "trk/types.h"
+
+#define TRK_KN_MAX_N 64
+
+struct trk_kn_params {
+    int k; /* 0..n-1 */
+    int n; /* 1..TRK_KN_MAX_N */
+};
+
+struct trk_kn {
+    struct trk_kn_params params;
+    uint64_t history; /* bit 0 = latest scan */
+    uint32_t t;
+    int count;
+    int fire;     /* raw comparison of the latest step */
+    int decision; /* 1 terminated (sticky), 0 continue */
+};
+
+/* TRK_E_ARG NULL, TRK_E_RANGE n out of range or k outside 0..n-1. */
+TRK_NODISCARD trk_status trk_kn_init(struct trk_kn *s, const struct trk_kn_params *p);
+
+/* One scan; returns the (sticky) decision. */
+int trk_kn_step(struct trk_kn *s, int detected);
+
+#endif

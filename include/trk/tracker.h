@@ -1,0 +1,228 @@
+/* trk/tracker.h - the preallocated track table: one call runs a whole scan.
+ *
+ * struct trk_tracker is caller-owned (static storage in firmware) and holds
+ * everything, sized at compile time by config.h: TRK_MAX_TRACKS track slots
+ * and a workspace for TRK_MAX_DETECTIONS detections. No heap, no globals.
+ *
+ * Model: 2-D constant velocity, state [x, vx, y, vy] (m, m/s), Cartesian
+ * position measurements [x, y] (m). Up to TRK_MAX_SENSORS sensors, each with
+ * its own detection probability, measurement covariance and clutter density
+ * (multistatic sonar); a detection may carry its own covariance instead.
+ *
+ * One scan, trk_tracker_process_scan():
+ *   1. validate the scan (capacity, time order, sensor id); a refused scan
+ *      leaves the table untouched; free the slots of tracks terminated by the
+ *      previous scan
+ *   2. validate each detection (finite position, SPD covariance); bad ones are
+ *      counted in the report and skipped, the rest of the scan is processed
+ *   3. every live track: predict to the scan time, gate (a cheap bounding box
+ *      of the gate ellipse first, then d2 <= gamma), PDA update over every
+ *      detection in its gate (a detection may serve several tracks), then
+ *      its confirmation test (tentative) or termination test (confirmed)
+ *   4. every valid detection no track gated starts a tentative track
+ *      (single-point initiation: position from the detection, velocity from
+ *      a zero-mean prior); with no free slot it is counted, not silent
+ *   5. the report counts what happened
+ * Track ids are stable, start at 1 and are never reused within 2^32 tracks.
+ * A terminated track stays visible (status TRK_TRACK_TERMINATED) until the
+ * next scan, so a consumer sees its end; its slot is then reused.
+ */
+#ifndef TRK_TRACKER_H
+#define TRK_TRACKER_H
+
+#include "trk/confirm_mn.h"
+#include "trk/kalman.h"
+#include "trk/pda.h"
+#include "trk/term_kn.h"
+#include "trk/types.h"
+
+/* ---------------------------------------------------------------- inputs */
+
+/* One detection of a scan. Amplitude fields are used by amplitude-aided
+ * association when the sensor has an amplitude model. */
+struct trk_detection {
+    trk_real x_m, y_m;       /* position */
+    trk_real cov_m2[3];      /* own covariance [xx, xy, yy], used when has_cov */
+    trk_real amplitude;      /* linear envelope amplitude, used when has_amplitude */
+    uint8_t has_cov;         /* 0: use the sensor's covariance */
+    uint8_t has_amplitude;
+};
+
+/* One scan of one sensor. The detections are read, never written. */
+struct trk_scan {
+    int64_t time_us;                        /* scan time (microseconds, any epoch);
+                                               never decreasing. Integer time keeps
+                                               float builds free of soft double. */
+    unsigned sensor_id;                     /* 0 .. n_sensors-1 */
+    size_t n_detections;                    /* <= TRK_MAX_DETECTIONS */
+    const struct trk_detection *detections; /* may be NULL when n_detections = 0 */
+};
+
+/* ---------------------------------------------------------------- configuration */
+
+struct trk_sensor_params {
+    trk_real pd;                      /* detection probability of a target, (0, 1] */
+    trk_real meas_cov_m2[3];          /* default measurement covariance [xx, xy, yy], SPD */
+    trk_real clutter_density_per_m2;  /* lambda for parametric clutter, >= 0 */
+};
+
+enum trk_confirm_method {
+    TRK_CONFIRM_MN = 0 /* M-of-N (confirm_mn.h) */
+};
+
+struct trk_confirm_params {
+    enum trk_confirm_method method;
+    union {
+        struct trk_mn_params mn;
+    } u;
+};
+
+enum trk_term_method {
+    TRK_TERM_KN = 0 /* K-of-N (term_kn.h); K = 0 is "N consecutive misses" */
+};
+
+struct trk_term_params {
+    enum trk_term_method method;
+    union {
+        struct trk_kn_params kn;
+    } u;
+};
+
+struct trk_tracker_params {
+    unsigned n_sensors;                               /* 1 .. TRK_MAX_SENSORS */
+    struct trk_sensor_params sensor[TRK_MAX_SENSORS];
+    trk_real process_noise_q;                         /* m^2/s^3 (CONVENTIONS Q), >= 0 */
+    trk_real gate_prob;                               /* P_G, (0, 1) */
+    enum trk_clutter_mode clutter;                    /* parametric: the sensor's density */
+    trk_real init_speed_sigma_mps;                    /* velocity prior std per axis, > 0 */
+    trk_real max_dt_s;                                /* longest gap between scans, (0, 1e9];
+                                                         a larger gap is refused (TRK_E_RANGE) */
+    struct trk_confirm_params confirm;                /* tentative -> confirmed / rejected */
+    struct trk_term_params term;                      /* confirmed -> terminated */
+    uint32_t max_tentative_scans;                     /* drop a tentative track after this
+                                                         many scans (0 = no limit) */
+};
+
+/* Defaults: one sensor (pd 0.9, R = 1 m^2 I, lambda 1e-4 /m^2), q = 0.01,
+ * P_G 0.99, parametric clutter, velocity prior 5 m/s, max_dt 3600 s,
+ * confirm 3-of-5 fixed, terminate after 5 consecutive misses (K/N 0/5),
+ * no tentative limit. */
+void trk_tracker_default_params(struct trk_tracker_params *p);
+
+/* ---------------------------------------------------------------- tracks */
+
+enum trk_track_status {
+    TRK_TRACK_FREE = 0,
+    TRK_TRACK_TENTATIVE = 1,
+    TRK_TRACK_CONFIRMED = 2,
+    TRK_TRACK_TERMINATED = 3
+};
+
+/* Why a track ended (valid when status is TRK_TRACK_TERMINATED). */
+enum trk_track_end {
+    TRK_END_NONE = 0,
+    TRK_END_REJECTED,     /* tentative track failed its confirmation test */
+    TRK_END_TENTATIVE_AGE,/* tentative longer than max_tentative_scans */
+    TRK_END_TERMINATED,   /* confirmed track's termination test fired */
+    TRK_END_NUMERICAL     /* covariance lost positive definiteness */
+};
+
+struct trk_track {
+    uint32_t id;                      /* stable, > 0 */
+    uint8_t status;                   /* enum trk_track_status */
+    uint8_t end_reason;               /* enum trk_track_end */
+    int64_t time_us;                  /* time of x and P */
+    trk_real x[TRK_CV2_NX];           /* [x, vx, y, vy] */
+    trk_real p[TRK_CV2_NX * TRK_CV2_NX];
+    uint32_t n_scans;                 /* scans this track has seen (incl. its first) */
+    uint32_t n_hits;                  /* scans with at least one detection in the gate */
+    uint32_t n_misses_in_row;         /* consecutive scans without */
+    uint16_t n_gated_last;            /* detections in the gate at the last scan */
+    trk_real beta0_last;              /* P(no detection is the target's), last scan */
+    trk_real confirm_stat;            /* current statistic of the confirmation test */
+    trk_real term_stat;               /* current statistic of the termination test */
+    union {
+        struct trk_mn mn;
+    } confirm;
+    union {
+        struct trk_kn kn;
+    } term;
+};
+
+/* ---------------------------------------------------------------- report */
+
+struct trk_scan_report {
+    uint32_t n_detections;          /* in the scan */
+    uint32_t n_rejected_nonfinite;  /* NaN/inf position or covariance */
+    uint32_t n_rejected_cov;        /* own covariance not SPD */
+    uint32_t n_tracks_updated;      /* live tracks predicted and updated */
+    uint32_t n_tracks_hit;          /* ... with at least one detection gated */
+    uint32_t n_started;             /* new tentative tracks */
+    uint32_t n_confirmed;           /* tentative -> confirmed */
+    uint32_t n_terminated;          /* tracks ended this scan (any reason) */
+    uint32_t n_init_refused_full;   /* initiations refused: table full */
+    uint32_t n_numerical;           /* tracks ended for a numerical failure */
+};
+
+/* ---------------------------------------------------------------- tracker */
+
+struct trk_tracker {
+    struct trk_tracker_params params;
+    struct trk_pda pda[TRK_MAX_SENSORS];        /* per sensor: pd, gate, clutter */
+    trk_real r[TRK_MAX_SENSORS][TRK_CV2_NZ * TRK_CV2_NZ];
+    int64_t last_time_us;
+    int64_t max_dt_us;
+    int has_time;                               /* a scan has been processed */
+    uint32_t next_id;
+    uint32_t n_live;                            /* tentative + confirmed + terminated */
+    struct trk_track track[TRK_MAX_TRACKS];
+    /* per-scan workspace (contents meaningless between calls) */
+    struct {
+        trk_real x[TRK_MAX_DETECTIONS], y[TRK_MAX_DETECTIONS]; /* valid detections */
+        trk_real log_lr[TRK_MAX_DETECTIONS];                   /* amplitude ln l^a */
+        uint16_t src[TRK_MAX_DETECTIONS];                      /* index in the scan */
+        uint8_t used[TRK_MAX_DETECTIONS];                      /* gated by some track */
+        uint16_t cand[TRK_MAX_DETECTIONS];                     /* one track's gated set */
+        trk_real w[TRK_MAX_DETECTIONS];                        /* its weights */
+        trk_real z[2 * TRK_MAX_DETECTIONS];                    /* its detections */
+        trk_real s_chol_inv[4 * TRK_MAX_DETECTIONS];           /* own-covariance L^-1 */
+    } ws;
+};
+
+/* Validate params and initialise an empty table.
+ * TRK_E_ARG NULL/enum, TRK_E_NAN non-finite, TRK_E_RANGE out of range,
+ * TRK_E_NOT_SPD a sensor covariance; *t untouched on error. */
+TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_params *p);
+
+/* Process one scan (see the top of this file). report may be NULL.
+ * Whole-scan refusals (table and report untouched... report zeroed):
+ * TRK_E_ARG NULL pointers, TRK_E_CAPACITY more than TRK_MAX_DETECTIONS
+ * detections, TRK_E_TIME time before the previous scan, TRK_E_RANGE gap
+ * longer than max_dt_s, TRK_E_SENSOR unknown sensor.
+ * Per-detection and per-track problems are counted in the report; the call
+ * then still returns TRK_OK. */
+TRK_NODISCARD trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,
+                                                  struct trk_scan_report *report);
+
+/* Track in slot i (0 .. TRK_MAX_TRACKS-1), or NULL when the slot is free.
+ * Iterate over all slots to list tracks (order = slot, not id). */
+const struct trk_track *trk_tracker_track(const struct trk_tracker *t, size_t slot);
+
+/* Number of slots in use (tentative, confirmed or terminated-this-scan). */
+size_t trk_tracker_live_count(const struct trk_tracker *t);
+
+/* ---------------------------------------------------------------- helpers */
+
+/* Range/bearing of a sensor at (sensor_x_m, sensor_y_m) to a Cartesian
+ * detection. Bearing is clockwise from +y (north), x east:
+ *   x = xs + r sin(b), y = ys + r cos(b).
+ * The covariance is the first-order (Jacobian) transform of
+ * diag(sigma_range^2, sigma_bearing^2); it is accurate while
+ * r sigma_bearing^2 is small against sigma_range (a few degrees at most).
+ * TRK_E_NAN non-finite input, TRK_E_RANGE range < 0 or sigma <= 0. */
+TRK_NODISCARD trk_status trk_detection_from_polar(trk_real range_m, trk_real bearing_rad,
+                                                  trk_real sigma_range_m, trk_real sigma_bearing_rad,
+                                                  trk_real sensor_x_m, trk_real sensor_y_m,
+                                                  struct trk_detection *d);
+
+#endif

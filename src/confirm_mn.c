@@ -1,0 +1,39 @@
+/* confirm_mn.c - M-of-N confirmation (trk/confirm_mn.h). */
+#include "trk/confirm_mn.h"
+
+#include "window_impl.h"
+
+trk_status trk_mn_init(struct trk_mn *s, const struct trk_mn_params *p)
+{
+    if (!s || !p) return TRK_E_ARG;
+    if (p->mode != TRK_MN_FIXED && p->mode != TRK_MN_SLIDING) return TRK_E_ARG;
+    if (p->n < 1 || p->n > TRK_MN_MAX_N || p->m < 1 || p->m > p->n) return TRK_E_RANGE;
+    s->params = *p;
+    s->history = 0;
+    s->t = 0;
+    s->count = 0;
+    s->decision = 0;
+    return TRK_OK;
+}
+
+int trk_mn_step(struct trk_mn *s, int detected)
+{
+    const int m = s->params.m, n = s->params.n;
+    if (s->params.mode == TRK_MN_FIXED) {
+        /* count over scans 1..n only */
+        if (s->t < (uint32_t)n) {
+            s->count += detected != 0;
+            s->history = (s->history << 1) | (uint64_t)(detected != 0);
+        }
+        s->t++;
+        if (s->decision == 0 && s->t <= (uint32_t)n) {
+            if (s->count >= m) s->decision = 1;
+            else if (s->count + (n - (int)s->t) < m) s->decision = -1;
+        }
+    } else {
+        trk_i_window_push(&s->history, &s->count, s->t, n, detected);
+        s->t++;
+        if (s->decision == 0 && s->count >= m) s->decision = 1;
+    }
+    return s->decision;
+}

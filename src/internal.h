@@ -1,0 +1,24 @@
+/* internal.h (private) - helpers shared by the library's source files. */
+#ifndef TRK_INTERNAL_H
+#define TRK_INTERNAL_H
+
+#include "trk/types.h"
+
+/* A call whose status cannot be an error here because its arguments were
+ * validated earlier (e.g. parameters checked at init). SQLite's NEVER(): the
+ * status is evaluated and dropped; no abort in firmware. */
+#define TRK_CHECKED(call)                 \
+    do {                                  \
+        trk_status trk_checked_ = (call); \
+        (void)trk_checked_;               \
+    } while (0)
+
+/* Small kernels in *_impl.h are forced inline so that a caller passing
+ * constant dimensions (the 2-D CV model) gets fully unrolled code. */
+#if defined(__GNUC__) || defined(__clang__)
+#define TRK_INLINE static inline __attribute__((always_inline))
+#else
+#define TRK_INLINE static inline
+#endif
+
+#endif

@@ -1,0 +1,422 @@
+/* tracker.c - the preallocated track table and the scan (trk/tracker.h).
+ *
+ * The only module that loops over tracks. Per track it runs the shared PDA
+ * stages of pda_impl.h with the constant dimensions of the CV model, so the
+ * compiler unrolls the small matrix loops. */
+#include "trk/tracker.h"
+
+#include "pda_impl.h"
+#include "trk/gate.h"
+#include "track_tests.h"
+
+#define NX TRK_CV2_NX
+#define NZ TRK_CV2_NZ
+
+void trk_tracker_default_params(struct trk_tracker_params *p)
+{
+    struct trk_tracker_params d = {0};
+    d.n_sensors = 1;
+    d.sensor[0].pd = TRK_REAL_C(0.9);
+    d.sensor[0].meas_cov_m2[0] = 1;
+    d.sensor[0].meas_cov_m2[1] = 0;
+    d.sensor[0].meas_cov_m2[2] = 1;
+    d.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
+    d.process_noise_q = TRK_REAL_C(0.01);
+    d.gate_prob = TRK_REAL_C(0.99);
+    d.clutter = TRK_CLUTTER_PARAMETRIC;
+    d.init_speed_sigma_mps = 5;
+    d.max_dt_s = 3600;
+    d.confirm.method = TRK_CONFIRM_MN;
+    d.confirm.u.mn.m = 3;
+    d.confirm.u.mn.n = 5;
+    d.confirm.u.mn.mode = TRK_MN_FIXED;
+    d.term.method = TRK_TERM_KN;
+    d.term.u.kn.k = 0;
+    d.term.u.kn.n = 5;
+    d.max_tentative_scans = 0;
+    *p = d;
+}
+
+/* [xx, xy, yy] -> 2x2 matrix; TRK_E_NAN / TRK_E_NOT_SPD. */
+static trk_status cov2(const trk_real c[3], trk_real r[NZ * NZ])
+{
+    if (!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(c[2])) return TRK_E_NAN;
+    if (!(c[0] > 0 && c[2] > 0 && c[0] * c[2] - c[1] * c[1] > 0)) return TRK_E_NOT_SPD;
+    r[0] = c[0];
+    r[1] = r[2] = c[1];
+    r[3] = c[2];
+    return TRK_OK;
+}
+
+trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_params *p)
+{
+    struct trk_pda pda[TRK_MAX_SENSORS];
+    trk_real r[TRK_MAX_SENSORS][NZ * NZ];
+    if (!t || !p) return TRK_E_ARG;
+    if (p->n_sensors < 1 || p->n_sensors > TRK_MAX_SENSORS) return TRK_E_RANGE;
+    if (p->clutter != TRK_CLUTTER_PARAMETRIC && p->clutter != TRK_CLUTTER_NONPARAMETRIC)
+        return TRK_E_ARG;
+    if (!isfinite(p->process_noise_q) || !isfinite(p->gate_prob) ||
+        !isfinite(p->init_speed_sigma_mps) || !isfinite(p->max_dt_s))
+        return TRK_E_NAN;
+    if (!(p->process_noise_q >= 0) || !(p->init_speed_sigma_mps > 0) || !(p->max_dt_s > 0) ||
+        !(p->max_dt_s <= TRK_REAL_C(1e9)))
+        return TRK_E_RANGE;
+    for (unsigned s = 0; s < p->n_sensors; s++) {
+        const struct trk_sensor_params *sp = &p->sensor[s];
+        struct trk_pda_params pp;
+        pp.nz = NZ;
+        pp.pd = sp->pd;
+        pp.gate_prob = p->gate_prob;
+        pp.clutter = p->clutter;
+        pp.clutter_density = sp->clutter_density_per_m2;
+        pp.gating = 1;
+        trk_status st = trk_pda_init(&pda[s], &pp);
+        if (st != TRK_OK) return st;
+        st = cov2(sp->meas_cov_m2, r[s]);
+        if (st != TRK_OK) return st;
+    }
+    trk_status st = trk_i_tests_check(p);
+    if (st != TRK_OK) return st;
+
+    t->params = *p;
+    for (unsigned s = 0; s < p->n_sensors; s++) {
+        t->pda[s] = pda[s];
+        for (int i = 0; i < NZ * NZ; i++) t->r[s][i] = r[s][i];
+    }
+    t->last_time_us = 0;
+    t->max_dt_us = (int64_t)(p->max_dt_s * TRK_REAL_C(1e6));
+    t->has_time = 0;
+    t->next_id = 1;
+    t->n_live = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        t->track[i].status = TRK_TRACK_FREE;
+        t->track[i].id = 0;
+    }
+    return TRK_OK;
+}
+
+const struct trk_track *trk_tracker_track(const struct trk_tracker *t, size_t slot)
+{
+    if (!t || slot >= TRK_MAX_TRACKS || t->track[slot].status == TRK_TRACK_FREE) return NULL;
+    return &t->track[slot];
+}
+
+size_t trk_tracker_live_count(const struct trk_tracker *t) { return t ? t->n_live : 0; }
+
+/* ------------------------------------------------------------------ scan */
+
+/* TRK_OK for a usable detection, else why not (TRK_E_NAN, TRK_E_NOT_SPD). */
+static trk_status check_detection(const struct trk_detection *d)
+{
+    trk_real r[NZ * NZ];
+    if (!isfinite(d->x_m) || !isfinite(d->y_m)) return TRK_E_NAN;
+    return d->has_cov ? cov2(d->cov_m2, r) : TRK_OK;
+}
+
+/* Copy the valid detections into the workspace: shared-covariance ones
+ * first [0, *n_shared), own-covariance ones after, up to *n_valid, each
+ * group in scan order. Rejections are counted in rep. */
+static void load_detections(struct trk_tracker *t, const struct trk_scan *scan,
+                            struct trk_scan_report *rep, size_t *n_shared, size_t *n_valid)
+{
+    size_t n = 0;
+    int any_own = 0;
+    for (size_t i = 0; i < scan->n_detections; i++) {
+        const struct trk_detection *d = &scan->detections[i];
+        trk_status st = check_detection(d);
+        if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
+        else if (st != TRK_OK) rep->n_rejected_cov++;
+        else if (d->has_cov) any_own = 1;
+        else {
+            t->ws.x[n] = d->x_m;
+            t->ws.y[n] = d->y_m;
+            t->ws.src[n] = (uint16_t)i;
+            n++;
+        }
+    }
+    *n_shared = n;
+    for (size_t i = 0; any_own && i < scan->n_detections; i++) {
+        const struct trk_detection *d = &scan->detections[i];
+        if (!d->has_cov || check_detection(d) != TRK_OK) continue;
+        t->ws.x[n] = d->x_m;
+        t->ws.y[n] = d->y_m;
+        t->ws.src[n] = (uint16_t)i;
+        n++;
+    }
+    for (size_t k = 0; k < n; k++) {
+        t->ws.used[k] = 0;
+        t->ws.log_lr[k] = 0; /* positions only: l^a = 1 */
+    }
+    *n_valid = n;
+}
+
+static void end_track(struct trk_tracker *t, struct trk_track *tr, enum trk_track_end why,
+                      struct trk_scan_report *rep)
+{
+    (void)t;
+    tr->status = TRK_TRACK_TERMINATED;
+    tr->end_reason = (uint8_t)why;
+    rep->n_terminated++;
+    if (why == TRK_END_NUMERICAL) rep->n_numerical++;
+}
+
+/* Predict one track to the scan time and PDA-update it with the detections
+ * in its gate. Returns 0, or -1 on a numerical failure (track untouched). */
+static int update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+                        trk_real dt, size_t n_shared, size_t n_valid,
+                        struct trk_look *look)
+{
+    const struct trk_pda *pda = &t->pda[scan->sensor_id];
+    const trk_real *r = t->r[scan->sensor_id];
+    const trk_real gamma = pda->gamma;
+    trk_real x[NX], p[NX * NX], pht[NX * NZ];
+    struct trk_innovation inn;
+
+    for (int i = 0; i < NX; i++) x[i] = tr->x[i];
+    for (int i = 0; i < NX * NX; i++) p[i] = tr->p[i];
+    trk_i_cv2_predict(dt, t->params.process_noise_q, x, p);
+    if (trk_i_innovation(NX, NZ, trk_cv2_h, r, x, p, pht, &inn) != TRK_OK) return -1;
+
+    /* gate: bounding box of the ellipse d2 <= gamma, then the ellipse */
+    const trk_real zx = inn.z_pred[0], zy = inn.z_pred[1];
+    const trk_real wx = trk_sqrt(gamma * inn.s[0]), wy = trk_sqrt(gamma * inn.s[3]);
+    size_t n = 0;
+    for (size_t j = 0; j < n_shared; j++) {
+        trk_real nu[NZ];
+        nu[0] = t->ws.x[j] - zx;
+        nu[1] = t->ws.y[j] - zy;
+        if (trk_fabs(nu[0]) > wx || trk_fabs(nu[1]) > wy) continue;
+        trk_real d2 = trk_i_mahalanobis2(NZ, inn.s_chol_inv, nu);
+        if (!trk_gate_inside(d2, gamma)) continue;
+        t->ws.cand[n] = (uint16_t)j;
+        t->ws.w[n] = trk_i_pda_log_e(pda, inn.log_det_s, d2, t->ws.log_lr[j]);
+        t->ws.z[2 * n] = t->ws.x[j];
+        t->ws.z[2 * n + 1] = t->ws.y[j];
+        n++;
+    }
+    const size_t n_shared_gated = n;
+    for (size_t j = n_shared; j < n_valid; j++) {
+        /* own covariance: S_j = H P H' + R_j */
+        const struct trk_detection *d = &scan->detections[t->ws.src[j]];
+        trk_real s[NZ * NZ], l[NZ * NZ], li[NZ * NZ], nu[NZ];
+        s[0] = p[0] + d->cov_m2[0];
+        s[1] = s[2] = p[2] + d->cov_m2[1];
+        s[3] = p[10] + d->cov_m2[2];
+        nu[0] = t->ws.x[j] - zx;
+        nu[1] = t->ws.y[j] - zy;
+        if (trk_fabs(nu[0]) > trk_sqrt(gamma * s[0]) || trk_fabs(nu[1]) > trk_sqrt(gamma * s[3]))
+            continue;
+        if (trk_i_chol(NZ, s, l) != TRK_OK) continue; /* cannot happen: P SPD, R_j SPD */
+        trk_i_tril_inverse(NZ, l, li);
+        trk_real d2 = trk_i_mahalanobis2(NZ, li, nu);
+        if (!trk_gate_inside(d2, gamma)) continue;
+        t->ws.cand[n] = (uint16_t)j;
+        t->ws.w[n] = trk_i_pda_log_e(pda, trk_i_chol_logdet(NZ, l), d2, t->ws.log_lr[j]);
+        t->ws.z[2 * n] = t->ws.x[j];
+        t->ws.z[2 * n + 1] = t->ws.y[j];
+        for (int i = 0; i < NZ * NZ; i++) t->ws.s_chol_inv[4 * n + i] = li[i];
+        n++;
+    }
+
+    /* association probabilities (log domain) */
+    const trk_real vg = trk_i_pda_gate_volume(pda, &inn);
+    const trk_real lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC
+                                ? pda->params.clutter_density
+                                : (trk_real)n / vg;
+    trk_real beta0 = n ? trk_i_pda_normalise(trk_i_pda_log_e0(pda, lambda), n, t->ws.w) : 1;
+
+    /* pc_sum = sum_i beta_i P_c,i (Joseph form) */
+    trk_real pc_sum[NX * NX] = {0};
+    if (n > 0) {
+        trk_real b_shared = 0, k[NX * NZ], pc[NX * NX];
+        for (size_t i = 0; i < n_shared_gated; i++) b_shared += t->ws.w[i];
+        if (b_shared > 0) {
+            trk_i_gain(NX, NZ, pht, inn.s_chol_inv, k);
+            trk_i_joseph(NX, NZ, trk_cv2_h, r, k, p, pc);
+            for (int i = 0; i < NX * NX; i++) pc_sum[i] = b_shared * pc[i];
+        }
+        for (size_t i = n_shared_gated; i < n; i++) {
+            if (t->ws.w[i] == 0) continue;
+            const struct trk_detection *d = &scan->detections[t->ws.src[t->ws.cand[i]]];
+            trk_real ri[NZ * NZ];
+            ri[0] = d->cov_m2[0];
+            ri[1] = ri[2] = d->cov_m2[1];
+            ri[3] = d->cov_m2[2];
+            trk_i_gain(NX, NZ, pht, t->ws.s_chol_inv + 4 * i, k);
+            trk_i_joseph(NX, NZ, trk_cv2_h, ri, k, p, pc);
+            for (int a = 0; a < NX * NX; a++) pc_sum[a] += t->ws.w[i] * pc[a];
+        }
+    }
+    trk_real xn[NX], pn[NX * NX];
+    if (n > 0) {
+        const size_t ng = n_shared_gated;
+        trk_i_pda_combine(NX, NZ, x, p, pht, inn.z_pred, beta0, ng, t->ws.z, NZ, t->ws.w,
+                          inn.s_chol_inv, n - ng, t->ws.z + NZ * ng, t->ws.w + ng,
+                          t->ws.s_chol_inv + 4 * ng, pc_sum, xn, pn);
+    } else {
+        for (int i = 0; i < NX; i++) xn[i] = x[i];
+        for (int i = 0; i < NX * NX; i++) pn[i] = p[i];
+    }
+    for (int i = 0; i < NX; i++)
+        if (!isfinite(xn[i])) return -1;
+    for (int i = 0; i < NX * NX; i++)
+        if (!isfinite(pn[i])) return -1;
+    if (!(pn[0] > 0 && pn[5] > 0 && pn[10] > 0 && pn[15] > 0)) return -1;
+
+    for (size_t i = 0; i < n; i++) t->ws.used[t->ws.cand[i]] = 1;
+    for (int i = 0; i < NX; i++) tr->x[i] = xn[i];
+    for (int i = 0; i < NX * NX; i++) tr->p[i] = pn[i];
+    tr->time_us = scan->time_us;
+    tr->n_gated_last = (uint16_t)n;
+    tr->beta0_last = beta0;
+    look->detected = n > 0;
+    look->sensor_id = scan->sensor_id;
+    look->n_gated = (int)n;
+    look->pfa_gate = -trk_expm1(-lambda * vg);
+    look->beta0 = beta0;
+    return 0;
+}
+
+static void start_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+                        size_t j)
+{
+    const struct trk_detection *d = &scan->detections[t->ws.src[j]];
+    const trk_real *r = d->has_cov ? NULL : t->r[scan->sensor_id];
+    const trk_real vv = t->params.init_speed_sigma_mps * t->params.init_speed_sigma_mps;
+    tr->id = t->next_id;
+    t->next_id = t->next_id == UINT32_MAX ? 1 : t->next_id + 1;
+    tr->status = TRK_TRACK_TENTATIVE;
+    tr->end_reason = TRK_END_NONE;
+    tr->time_us = scan->time_us;
+    tr->x[0] = t->ws.x[j];
+    tr->x[1] = 0;
+    tr->x[2] = t->ws.y[j];
+    tr->x[3] = 0;
+    for (int i = 0; i < NX * NX; i++) tr->p[i] = 0;
+    tr->p[0] = r ? r[0] : d->cov_m2[0];
+    tr->p[2] = tr->p[8] = r ? r[1] : d->cov_m2[1];
+    tr->p[10] = r ? r[3] : d->cov_m2[2];
+    tr->p[5] = tr->p[15] = vv;
+    tr->n_scans = 1;
+    tr->n_hits = 1;
+    tr->n_misses_in_row = 0;
+    tr->n_gated_last = 1;
+    tr->beta0_last = 0;
+    tr->term_stat = 0;
+    trk_i_confirm_start(&t->params, tr);
+}
+
+trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,
+                                    struct trk_scan_report *report)
+{
+    struct trk_scan_report rep = {0};
+    if (report) *report = rep;
+    if (!t || !scan) return TRK_E_ARG;
+    if (scan->n_detections > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
+    if (scan->n_detections > 0 && !scan->detections) return TRK_E_ARG;
+    if (scan->sensor_id >= t->params.n_sensors) return TRK_E_SENSOR;
+    if (t->has_time && scan->time_us < t->last_time_us) return TRK_E_TIME;
+    if (t->has_time && scan->time_us - t->last_time_us > t->max_dt_us) return TRK_E_RANGE;
+    /* --- the scan is accepted: from here on the table changes */
+    rep.n_detections = (uint32_t)scan->n_detections;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+        if (t->track[i].status == TRK_TRACK_TERMINATED) {
+            t->track[i].status = TRK_TRACK_FREE;
+            t->n_live--;
+        }
+
+    size_t n_shared, n_valid;
+    load_detections(t, scan, &rep, &n_shared, &n_valid);
+
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        struct trk_track *tr = &t->track[i];
+        if (tr->status != TRK_TRACK_TENTATIVE && tr->status != TRK_TRACK_CONFIRMED) continue;
+        const trk_real dt = (trk_real)(scan->time_us - tr->time_us) * TRK_REAL_C(1e-6);
+        struct trk_look look;
+        rep.n_tracks_updated++;
+        if (update_track(t, tr, scan, dt, n_shared, n_valid, &look) != 0) {
+            end_track(t, tr, TRK_END_NUMERICAL, &rep);
+            continue;
+        }
+        tr->n_scans++;
+        if (look.detected) {
+            tr->n_hits++;
+            tr->n_misses_in_row = 0;
+            rep.n_tracks_hit++;
+        } else {
+            tr->n_misses_in_row++;
+        }
+        if (tr->status == TRK_TRACK_TENTATIVE) {
+            int d = trk_i_confirm_step(&t->params, tr, &look);
+            if (d > 0) {
+                tr->status = TRK_TRACK_CONFIRMED;
+                trk_i_term_start(&t->params, tr);
+                rep.n_confirmed++;
+            } else if (d < 0) {
+                end_track(t, tr, TRK_END_REJECTED, &rep);
+            } else if (t->params.max_tentative_scans && tr->n_scans > t->params.max_tentative_scans) {
+                end_track(t, tr, TRK_END_TENTATIVE_AGE, &rep);
+            }
+        } else if (trk_i_term_step(&t->params, tr, &look)) {
+            end_track(t, tr, TRK_END_TERMINATED, &rep);
+        }
+    }
+
+    /* single-point initiation from every valid detection no track gated */
+    size_t slot = 0;
+    for (size_t j = 0; j < n_valid; j++) {
+        if (t->ws.used[j]) continue;
+        while (slot < TRK_MAX_TRACKS && t->track[slot].status != TRK_TRACK_FREE) slot++;
+        if (slot == TRK_MAX_TRACKS) {
+            rep.n_init_refused_full++;
+            continue;
+        }
+        struct trk_track *tr = &t->track[slot];
+        start_track(t, tr, scan, j);
+        t->n_live++;
+        rep.n_started++;
+        struct trk_look look = {1, scan->sensor_id, 1, 0, 0};
+        /* the initiating detection is the first scan of the confirmation test */
+        int d = trk_i_confirm_step(&t->params, tr, &look);
+        if (d > 0) {
+            tr->status = TRK_TRACK_CONFIRMED;
+            trk_i_term_start(&t->params, tr);
+            rep.n_confirmed++;
+        }
+    }
+    t->last_time_us = scan->time_us;
+    t->has_time = 1;
+    if (report) *report = rep;
+    return TRK_OK;
+}
+
+/* ------------------------------------------------------------------ helpers */
+
+trk_status trk_detection_from_polar(trk_real range_m, trk_real bearing_rad, trk_real sigma_range_m,
+                                    trk_real sigma_bearing_rad, trk_real sensor_x_m,
+                                    trk_real sensor_y_m, struct trk_detection *d)
+{
+    if (!d) return TRK_E_ARG;
+    if (!isfinite(range_m) || !isfinite(bearing_rad) || !isfinite(sigma_range_m) ||
+        !isfinite(sigma_bearing_rad) || !isfinite(sensor_x_m) || !isfinite(sensor_y_m))
+        return TRK_E_NAN;
+    if (!(range_m >= 0) || !(sigma_range_m > 0) || !(sigma_bearing_rad > 0)) return TRK_E_RANGE;
+    const trk_real sb = trk_sin(bearing_rad), cb = trk_cos(bearing_rad);
+    const trk_real vr = sigma_range_m * sigma_range_m;
+    const trk_real vt = range_m * range_m * sigma_bearing_rad * sigma_bearing_rad; /* cross-range */
+    /* J = [[sb, r cb], [cb, -r sb]];  C = J diag(vr, sigma_b^2) J' */
+    d->x_m = sensor_x_m + range_m * sb;
+    d->y_m = sensor_y_m + range_m * cb;
+    d->cov_m2[0] = vr * sb * sb + vt * cb * cb;
+    d->cov_m2[1] = (vr - vt) * sb * cb;
+    d->cov_m2[2] = vr * cb * cb + vt * sb * sb;
+    d->has_cov = 1;
+    d->has_amplitude = 0;
+    d->amplitude = 0;
+    if (!(d->cov_m2[0] * d->cov_m2[2] - d->cov_m2[1] * d->cov_m2[1] > 0)) {
+        /* range 0: cross-range variance 0, covariance singular */
+        return TRK_E_RANGE;
+    }
+    return TRK_OK;
+}

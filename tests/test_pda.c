@@ -1,0 +1,172 @@
+/* test_pda.c - PDA update invariants: sum of beta = 1, symmetry and SPD of
+ * the posterior, permutation invariance, limits (no detection, certain
+ * detection = Kalman), nonparametric and include-all modes, bad input. */
+#include "trk_test.h"
+#include "trk/kalman.h"
+#include "trk/linalg.h"
+#include "trk/pda.h"
+
+static struct trk_pda make_pda(enum trk_clutter_mode mode, trk_real pd, trk_real lambda, int gating)
+{
+    struct trk_pda pda;
+    struct trk_pda_params pp = {2, pd, TRK_REAL_C(0.99), mode, lambda, gating};
+    TRK_ASSERT_OK(trk_pda_init(&pda, &pp));
+    return pda;
+}
+
+static void prior(trk_real x[4], trk_real p[16])
+{
+    const trk_real x0[4] = {100, 1, 50, -2};
+    const trk_real p0[16] = {9, 1, 0.5, 0, 1, 1, 0, 0, 0.5, 0, 16, 2, 0, 0, 2, 1};
+    for (int i = 0; i < 4; i++) x[i] = x0[i];
+    for (int i = 0; i < 16; i++) p[i] = p0[i];
+}
+
+static const trk_real R[4] = {4, 0, 0, 4};
+
+static void test_invariants(void **state)
+{
+    (void)state;
+    struct trk_pda pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.8), TRK_REAL_C(0.01), 1);
+    const trk_real z[10] = {101, 50, 97, 53, 104, 44, 100.5, 50.5, 130, 90};
+    trk_real x[4], p[16], beta[5], d2[5];
+    struct trk_pda_report rep;
+    prior(x, p);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 5, z, NULL, beta, d2, &rep));
+    double sum = rep.beta0;
+    for (int i = 0; i < 5; i++) sum += beta[i];
+    TRK_ASSERT_NEAR(sum, 1, TRK_TOL(1e-15, 1e-6), 0);
+    assert_true(beta[4] == 0); /* far outside */
+    assert_int_equal(rep.n_gated, 4);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) assert_true(p[i * 4 + j] == p[j * 4 + i]);
+    TRK_ASSERT_OK(trk_mat_check_spd(4, p, 0));
+
+    /* permuting the detections leaves the result unchanged */
+    const int perm[5] = {3, 0, 4, 2, 1};
+    trk_real zp[10], x2[4], p2[16], beta2[5];
+    for (int i = 0; i < 5; i++) {
+        zp[2 * i] = z[2 * perm[i]];
+        zp[2 * i + 1] = z[2 * perm[i] + 1];
+    }
+    prior(x2, p2);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x2, p2, 5, zp, NULL, beta2, NULL, NULL));
+    for (int i = 0; i < 5; i++) TRK_ASSERT_NEAR(beta2[i], beta[perm[i]], TRK_TOL(1e-15, 1e-6), 0);
+    for (int i = 0; i < 4; i++) TRK_ASSERT_NEAR(x2[i], x[i], TRK_TOL(1e-12, 1e-4), 0);
+    for (int i = 0; i < 16; i++) TRK_ASSERT_NEAR(p2[i], p[i], TRK_TOL(1e-12, 1e-4), 0);
+}
+
+static void test_limits(void **state)
+{
+    (void)state;
+    trk_real x[4], p[16], x0[4], p0[16], beta[1];
+    struct trk_pda_report rep;
+    /* no detections: posterior = prior, beta0 = 1 */
+    struct trk_pda pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.9), TRK_REAL_C(1e-3), 1);
+    prior(x, p);
+    prior(x0, p0);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 0, NULL, NULL, NULL, NULL, &rep));
+    TRK_ASSERT_NEAR(rep.beta0, 1, 0, 0);
+    for (int i = 0; i < 16; i++) TRK_ASSERT_NEAR(p[i], p0[i], TRK_TOL(1e-15, 1e-6), 0);
+    /* pd = 1, lambda = 0, one detection: exactly the Kalman update */
+    pda = make_pda(TRK_CLUTTER_PARAMETRIC, 1, 0, 1);
+    const trk_real z[2] = {102, 49};
+    prior(x, p);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 1, z, NULL, beta, NULL, &rep));
+    TRK_ASSERT_NEAR(rep.beta0, 0, 0, 0);
+    TRK_ASSERT_NEAR(beta[0], 1, 0, 0);
+    TRK_ASSERT_OK(trk_kalman_update(4, 2, trk_cv2_h, R, z, x0, p0));
+    for (int i = 0; i < 4; i++) TRK_ASSERT_NEAR(x[i], x0[i], TRK_TOL(1e-12, 1e-4), 0);
+    for (int i = 0; i < 16; i++) TRK_ASSERT_NEAR(p[i], p0[i], TRK_TOL(1e-12, 1e-4), 0);
+}
+
+static void test_amplitude_weights(void **state)
+{
+    (void)state;
+    /* ln l^a shifts the weight of a detection: two symmetric detections get
+     * beta ratio exp(lr1 - lr2) */
+    struct trk_pda pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.9), TRK_REAL_C(1e-3), 1);
+    const trk_real z[4] = {101, 50, 99, 50}, lr[2] = {TRK_REAL_C(1.5), TRK_REAL_C(-0.5)};
+    trk_real x[4], p[16], beta[2];
+    prior(x, p);
+    p[2] = p[8] = 0; /* symmetric in x */
+    x[0] = 100;
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 2, z, lr, beta, NULL, NULL));
+    TRK_ASSERT_NEAR(beta[0] / beta[1], exp(2.0), 0, TRK_TOL(1e-12, 1e-5));
+    /* huge log-LR never overflows */
+    const trk_real lr2[2] = {TRK_REAL_C(800.0) * (TRK_TEST_IS_FLOAT ? TRK_REAL_C(0.1) : 1), 0};
+    prior(x, p);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 2, z, lr2, beta, NULL, NULL));
+    TRK_ASSERT_NEAR(beta[0], 1, TRK_TOL(1e-15, 1e-6), 0);
+}
+
+static void test_nonparametric_and_include_all(void **state)
+{
+    (void)state;
+    trk_real x[4], p[16], beta[2];
+    struct trk_pda_report rep;
+    const trk_real zout[4] = {200, 200, -100, 0};
+    /* nonparametric with nothing in the gate: beta0 = 1 */
+    struct trk_pda pda = make_pda(TRK_CLUTTER_NONPARAMETRIC, TRK_REAL_C(0.9), 0, 1);
+    prior(x, p);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 2, zout, NULL, beta, NULL, &rep));
+    TRK_ASSERT_NEAR(rep.beta0, 1, 0, 0);
+    assert_int_equal(rep.n_gated, 0);
+    /* include all: far detections get (tiny) weight, beta0 < 1 */
+    pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.9), TRK_REAL_C(1e-30), 0);
+    const trk_real zfar[2] = {112, 50};
+    prior(x, p);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 1, zfar, NULL, beta, NULL, &rep));
+    assert_int_equal(rep.n_gated, 0);
+    assert_true(beta[0] > 0.5);
+}
+
+static void test_bad_input(void **state)
+{
+    (void)state;
+    struct trk_pda pda;
+    struct trk_pda_params pp = {2, TRK_REAL_C(0.9), TRK_REAL_C(0.99), TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(1e-3), 1};
+    pp.pd = 0;
+    TRK_ASSERT_STATUS(trk_pda_init(&pda, &pp), TRK_E_RANGE);
+    pp.pd = TRK_REAL_C(1.1);
+    TRK_ASSERT_STATUS(trk_pda_init(&pda, &pp), TRK_E_RANGE);
+    pp.pd = NAN;
+    TRK_ASSERT_STATUS(trk_pda_init(&pda, &pp), TRK_E_NAN);
+    pp.pd = TRK_REAL_C(0.9);
+    pp.clutter_density = -1;
+    TRK_ASSERT_STATUS(trk_pda_init(&pda, &pp), TRK_E_RANGE);
+    pp.clutter_density = TRK_REAL_C(1e-3);
+    pp.gate_prob = 1;
+    TRK_ASSERT_STATUS(trk_pda_init(&pda, &pp), TRK_E_RANGE);
+    pp.gate_prob = TRK_REAL_C(0.99);
+    pp.nz = 4;
+    TRK_ASSERT_STATUS(trk_pda_init(&pda, &pp), TRK_E_ARG);
+    pp.nz = 2;
+    TRK_ASSERT_OK(trk_pda_init(&pda, &pp));
+    trk_real x[4], p[16], x0[4], p0[16], beta[2];
+    const trk_real z[4] = {100, NAN, 100, 50}, lr[2] = {0, INFINITY}, zok[4] = {100, 50, 100, 50};
+    prior(x, p);
+    prior(x0, p0);
+    TRK_ASSERT_STATUS(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 2, z, NULL, beta, NULL, NULL), TRK_E_NAN);
+    TRK_ASSERT_STATUS(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 2, zok, lr, beta, NULL, NULL), TRK_E_NAN);
+    TRK_ASSERT_STATUS(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, TRK_MAX_DETECTIONS + 1, zok, NULL, beta, NULL, NULL),
+                      TRK_E_CAPACITY);
+    TRK_ASSERT_STATUS(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 2, zok, NULL, NULL, NULL, NULL), TRK_E_ARG);
+    p[0] = -50; /* S not SPD */
+    TRK_ASSERT_STATUS(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 2, zok, NULL, beta, NULL, NULL), TRK_E_NOT_SPD);
+    p[0] = p0[0];
+    for (int i = 0; i < 4; i++) assert_true(x[i] == x0[i]);
+    for (int i = 0; i < 16; i++) assert_true(p[i] == p0[i]);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_invariants),
+        cmocka_unit_test(test_limits),
+        cmocka_unit_test(test_amplitude_weights),
+        cmocka_unit_test(test_nonparametric_and_include_all),
+        cmocka_unit_test(test_bad_input),
+    };
+    return cmocka_run_group_tests_name("pda", tests, NULL, NULL);
+}

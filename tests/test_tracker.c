@@ -1,0 +1,398 @@
+/* test_tracker.c - the track table: a target is confirmed and followed,
+ * clutter does not break it, invariants hold after every scan (free + live =
+ * capacity, unique ids, every P symmetric and SPD), bad scans leave the
+ * table untouched, bad detections are counted, a full table refuses and
+ * counts, own-covariance detections, the polar helper. */
+#include "trk_test.h"
+#include "trk/linalg.h"
+#include "trk/tracker.h"
+
+static struct trk_tracker tk; /* ~40 KB: static, as in firmware */
+
+#define SEC(k) ((int64_t)(k) * 1000000)
+
+/* splitmix64: a small deterministic generator for the test scenario */
+static uint64_t rng_state;
+static double urand(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+static double nrand(void)
+{
+    double u1 = urand(), u2 = urand();
+    if (u1 < 1e-300) u1 = 1e-300;
+    return sqrt(-2 * log(u1)) * cos(6.283185307179586 * u2);
+}
+
+static void check_invariants(const struct trk_tracker *t)
+{
+    size_t live = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *a = trk_tracker_track(t, i);
+        if (!a) continue;
+        live++;
+        assert_true(a->id > 0);
+        for (size_t j = i + 1; j < TRK_MAX_TRACKS; j++) {
+            const struct trk_track *b = trk_tracker_track(t, j);
+            if (b) assert_true(a->id != b->id);
+        }
+        if (a->status == TRK_TRACK_TERMINATED && a->end_reason == TRK_END_NUMERICAL) continue;
+        for (int r = 0; r < 4; r++)
+            for (int c = 0; c < 4; c++) assert_true(a->p[r * 4 + c] == a->p[c * 4 + r]);
+        TRK_ASSERT_OK(trk_mat_check_spd(4, a->p, 0));
+    }
+    assert_int_equal(live, trk_tracker_live_count(t));
+}
+
+static void base_params(struct trk_tracker_params *p)
+{
+    trk_tracker_default_params(p);
+    p->sensor[0].pd = TRK_REAL_C(0.9);
+    p->sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
+    p->process_noise_q = TRK_REAL_C(0.05);
+}
+
+static size_t count_status(const struct trk_tracker *t, int status)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *a = trk_tracker_track(t, i);
+        if (a && a->status == status) n++;
+    }
+    return n;
+}
+
+/* One target from (0, 0) at (3, 1) m/s, 1 s scans, pd 0.9, a few clutter
+ * detections per scan in a 200 m box: the target is confirmed, followed with
+ * error well inside its covariance, and its id never changes. */
+static void test_follow_target(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection det[8];
+    double tx = 0, ty = 0;
+    uint32_t id = 0;
+    size_t n_clutter_max = TRK_MAX_DETECTIONS - 1 < 3 ? TRK_MAX_DETECTIONS - 1 : 3;
+    rng_state = 12345;
+    for (int k = 0; k < 60; k++) {
+        size_t n = 0;
+        tx = 3.0 * k;
+        ty = 1.0 * k;
+        if (k < 2 || urand() < 0.9) {
+            det[n].x_m = (trk_real)(tx + nrand());
+            det[n].y_m = (trk_real)(ty + nrand());
+            det[n].has_cov = det[n].has_amplitude = 0;
+            n++;
+        }
+        for (size_t c = 0; c < n_clutter_max; c++) {
+            det[n].x_m = (trk_real)(tx + 100 + 200 * urand());
+            det[n].y_m = (trk_real)(ty - 100 + 200 * urand());
+            det[n].has_cov = det[n].has_amplitude = 0;
+            n++;
+        }
+        struct trk_scan scan = {SEC(k), 0, n, det};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+        check_invariants(&tk);
+        assert_int_equal(rep.n_detections, n);
+    }
+    /* the confirmed track nearest the target */
+    const struct trk_track *best = NULL;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *a = trk_tracker_track(&tk, i);
+        if (a && a->status == TRK_TRACK_CONFIRMED && fabs(a->x[0] - tx) < 10 && fabs(a->x[2] - ty) < 10) best = a;
+    }
+    assert_non_null(best);
+    id = best->id;
+    TRK_ASSERT_NEAR(best->x[1], 3, 0.5, 0);
+    TRK_ASSERT_NEAR(best->x[3], 1, 0.5, 0);
+    /* position error within 4 sigma of its own covariance */
+    assert_true(fabs(best->x[0] - tx) < 4 * sqrt(best->p[0]));
+    assert_true(fabs(best->x[2] - ty) < 4 * sqrt(best->p[10]));
+    assert_true(best->n_hits >= 45);
+    (void)id;
+}
+
+/* The target disappears: its track is terminated after N misses (K/N 0/5),
+ * seen once as TERMINATED, then its slot is freed. */
+static void test_termination_and_slot_reuse(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    for (int k = 0; k < 6; k++) {
+        d.x_m = (trk_real)(2.0 * k);
+        d.y_m = 0;
+        struct trk_scan scan = {SEC(k), 0, 1, &d};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+    }
+    assert_int_equal(count_status(&tk, TRK_TRACK_CONFIRMED), 1);
+    const struct trk_track *tr = trk_tracker_track(&tk, 0);
+    uint32_t id = tr->id;
+    struct trk_scan_report rep;
+    for (int k = 6; k < 11; k++) {
+        struct trk_scan empty = {SEC(k), 0, 0, NULL};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &empty, &rep));
+        check_invariants(&tk);
+        if (k < 10) assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
+    }
+    assert_int_equal(tr->status, TRK_TRACK_TERMINATED);
+    assert_int_equal(tr->end_reason, TRK_END_TERMINATED);
+    assert_int_equal(rep.n_terminated, 1);
+    /* next scan: the slot is reused by a new track with a new id */
+    d.x_m = 500;
+    struct trk_scan scan = {SEC(11), 0, 1, &d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    assert_int_equal(rep.n_started, 1);
+    tr = trk_tracker_track(&tk, 0);
+    assert_non_null(tr);
+    assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
+    assert_true(tr->id != id);
+    assert_int_equal(trk_tracker_live_count(&tk), 1);
+}
+
+/* Bad scans are refused whole and leave the table untouched; bad detections
+ * are counted and the rest of the scan is processed. */
+static void test_bad_input(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d[4];
+    memset(d, 0, sizeof d);
+    d[0].x_m = 10;
+    d[0].y_m = 10;
+    struct trk_scan scan = {SEC(5), 0, 1, d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+    static struct trk_tracker copy;
+    memcpy(&copy, &tk, sizeof tk);
+    struct trk_scan_report rep;
+    /* time backwards */
+    scan.time_us = SEC(5) - 1;
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_TIME);
+    assert_int_equal(rep.n_detections, 0);
+    /* over capacity */
+    scan.time_us = SEC(6);
+    scan.n_detections = TRK_MAX_DETECTIONS + 1;
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_CAPACITY);
+    /* unknown sensor */
+    scan.n_detections = 1;
+    scan.sensor_id = 3;
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_SENSOR);
+    /* gap too long */
+    scan.sensor_id = 0;
+    scan.time_us = SEC(5 + 1000000);
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_RANGE);
+    /* missing detections pointer */
+    scan.time_us = SEC(6);
+    scan.detections = NULL;
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(NULL, &scan, &rep), TRK_E_ARG);
+    assert_memory_equal(&copy, &tk, offsetof(struct trk_tracker, ws));
+
+    /* bad detections counted, good ones used */
+    d[0].x_m = 10.5;
+    d[1].x_m = NAN;
+    d[1].y_m = 0;
+    d[2].x_m = 0;
+    d[2].y_m = INFINITY;
+    d[3].x_m = 300;
+    d[3].y_m = 300;
+    d[3].has_cov = 1;
+    d[3].cov_m2[0] = 1;
+    d[3].cov_m2[1] = 2; /* not SPD */
+    d[3].cov_m2[2] = 1;
+    scan.detections = d;
+    scan.n_detections = 4;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    assert_int_equal(rep.n_detections, 4);
+    assert_int_equal(rep.n_rejected_nonfinite, 2);
+    assert_int_equal(rep.n_rejected_cov, 1);
+    assert_int_equal(rep.n_tracks_hit, 1);
+    assert_int_equal(rep.n_started, 0);
+    check_invariants(&tk);
+}
+
+/* Bad parameters are refused at init, nothing half-initialised. */
+static void test_bad_params(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.n_sensors = 0;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+    base_params(&p);
+    p.sensor[0].meas_cov_m2[1] = 5;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_NOT_SPD);
+    base_params(&p);
+    p.sensor[0].pd = TRK_REAL_C(1.5);
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+    base_params(&p);
+    p.gate_prob = NAN;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_NAN);
+    base_params(&p);
+    p.confirm.u.mn.m = 6; /* M > N */
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+    base_params(&p);
+    p.term.u.kn.k = 5; /* K >= N */
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+    base_params(&p);
+    p.confirm.method = (enum trk_confirm_method)99;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_ARG);
+    base_params(&p);
+    p.init_speed_sigma_mps = 0;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+}
+
+/* A full table refuses new tracks and counts them; nothing is overwritten. */
+static void test_full_table(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    static struct trk_detection d[TRK_MAX_DETECTIONS];
+    size_t n = TRK_MAX_DETECTIONS;
+    for (size_t i = 0; i < n; i++) {
+        memset(&d[i], 0, sizeof d[i]);
+        d[i].x_m = (trk_real)(1000.0 * (double)i); /* far apart: each starts a track */
+        d[i].y_m = 0;
+    }
+    struct trk_scan scan = {0, 0, n, d};
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    size_t cap = TRK_MAX_TRACKS;
+    size_t want = n < cap ? n : cap;
+    assert_int_equal(rep.n_started, want);
+    assert_int_equal(rep.n_init_refused_full, n - want);
+    assert_int_equal(trk_tracker_live_count(&tk), want);
+    /* ids 1..want in slot order, positions from the first detections */
+    for (size_t i = 0; i < want; i++) {
+        const struct trk_track *a = trk_tracker_track(&tk, i);
+        assert_int_equal(a->id, i + 1);
+        TRK_ASSERT_NEAR(a->x[0], 1000.0 * (double)i, 0, 0);
+    }
+    check_invariants(&tk);
+}
+
+/* Own-covariance detections equal to the sensor's give the same result as
+ * shared-covariance ones (one formula serves both). */
+static void test_own_covariance(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.sensor[0].meas_cov_m2[0] = 2;
+    p.sensor[0].meas_cov_m2[1] = TRK_REAL_C(0.3);
+    p.sensor[0].meas_cov_m2[2] = 3;
+    static struct trk_tracker a, b;
+    TRK_ASSERT_OK(trk_tracker_init(&a, &p));
+    TRK_ASSERT_OK(trk_tracker_init(&b, &p));
+    struct trk_detection d[3];
+    memset(d, 0, sizeof d);
+    for (int k = 0; k < 8; k++) {
+        d[0].x_m = (trk_real)(2.0 * k + 0.3 * (k % 3));
+        d[0].y_m = (trk_real)(1.0 * k - 0.2 * (k % 2));
+        d[1].x_m = d[0].x_m + TRK_REAL_C(1.5);
+        d[1].y_m = d[0].y_m - TRK_REAL_C(1.0);
+        d[2].x_m = d[0].x_m - 2;
+        d[2].y_m = d[0].y_m + 1;
+        for (int i = 0; i < 3; i++) d[i].has_cov = 0;
+        struct trk_scan sa = {SEC(k), 0, 3, d};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&a, &sa, NULL));
+        for (int i = 0; i < 3; i++) {
+            d[i].has_cov = 1;
+            d[i].cov_m2[0] = 2;
+            d[i].cov_m2[1] = TRK_REAL_C(0.3);
+            d[i].cov_m2[2] = 3;
+        }
+        /* mixed: one shared, two own */
+        d[0].has_cov = 0;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&b, &sa, NULL));
+    }
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *ta = trk_tracker_track(&a, i), *tb = trk_tracker_track(&b, i);
+        assert_true((ta == NULL) == (tb == NULL));
+        if (!ta) continue;
+        assert_int_equal(ta->id, tb->id);
+        for (int j = 0; j < 4; j++) TRK_ASSERT_NEAR(ta->x[j], tb->x[j], TRK_TOL(1e-10, 1e-3), TRK_TOL(1e-12, 1e-5));
+        for (int j = 0; j < 16; j++) TRK_ASSERT_NEAR(ta->p[j], tb->p[j], TRK_TOL(1e-10, 1e-4), TRK_TOL(1e-12, 1e-4));
+    }
+}
+
+/* Range/bearing conversion: position and first-order covariance. */
+static void test_polar(void **state)
+{
+    (void)state;
+    struct trk_detection d;
+    /* bearing 90 deg (east): x = xs + r, y = ys; cov = diag(sr^2, (r sb)^2) */
+    TRK_ASSERT_OK(trk_detection_from_polar(1000, TRK_REAL_C(1.5707963267948966), 2, TRK_REAL_C(0.01), 10, 20, &d));
+    TRK_ASSERT_NEAR(d.x_m, 1010, 0, TRK_TOL(1e-12, 1e-6));
+    TRK_ASSERT_NEAR(d.y_m, 20, TRK_TOL(1e-9, 1e-3), 0);
+    TRK_ASSERT_NEAR(d.cov_m2[0], 4, TRK_TOL(1e-9, 1e-3), 0);
+    TRK_ASSERT_NEAR(d.cov_m2[2], 100, 0, TRK_TOL(1e-12, 1e-5));
+    TRK_ASSERT_NEAR(d.cov_m2[1], 0, TRK_TOL(1e-9, 1e-3), 0);
+    assert_int_equal(d.has_cov, 1);
+    /* 45 deg: symmetric with correlation (vr - vt)/2 */
+    TRK_ASSERT_OK(trk_detection_from_polar(100, TRK_REAL_C(0.7853981633974483), 1, TRK_REAL_C(0.02), 0, 0, &d));
+    TRK_ASSERT_NEAR(d.cov_m2[0], (1 + 4) / 2.0, 0, TRK_TOL(1e-12, 1e-5));
+    TRK_ASSERT_NEAR(d.cov_m2[1], (1 - 4) / 2.0, 0, TRK_TOL(1e-12, 1e-5));
+    TRK_ASSERT_STATUS(trk_detection_from_polar(-1, 0, 1, 1, 0, 0, &d), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_detection_from_polar(1, NAN, 1, 1, 0, 0, &d), TRK_E_NAN);
+    TRK_ASSERT_STATUS(trk_detection_from_polar(1, 0, 0, 1, 0, 0, &d), TRK_E_RANGE);
+}
+
+/* Two sensors with their own parameters feed one table in time order. */
+static void test_two_sensors(void **state)
+{
+    (void)state;
+    if (TRK_MAX_SENSORS < 2) skip();
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.n_sensors = 2;
+    p.sensor[1] = p.sensor[0];
+    p.sensor[1].pd = TRK_REAL_C(0.6);
+    p.sensor[1].meas_cov_m2[0] = 9;
+    p.sensor[1].meas_cov_m2[2] = TRK_REAL_C(0.25);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    for (int k = 0; k < 20; k++) {
+        d.x_m = (trk_real)(1.0 * k);
+        d.y_m = (trk_real)(-0.5 * k);
+        struct trk_scan s = {SEC(k) / 2, (unsigned)(k % 2), 1, &d};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
+        check_invariants(&tk);
+    }
+    assert_int_equal(count_status(&tk, TRK_TRACK_CONFIRMED), 1);
+    assert_int_equal(trk_tracker_live_count(&tk), 1);
+    const struct trk_track *t0 = trk_tracker_track(&tk, 0);
+    TRK_ASSERT_NEAR(t0->x[1], 2.0, 0.05, 0);  /* 1 m per 0.5 s */
+    TRK_ASSERT_NEAR(t0->x[3], -1.0, 0.05, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_follow_target),
+        cmocka_unit_test(test_termination_and_slot_reuse),
+        cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_bad_params),
+        cmocka_unit_test(test_full_table),
+        cmocka_unit_test(test_own_covariance),
+        cmocka_unit_test(test_polar),
+        cmocka_unit_test(test_two_sensors),
+    };
+    return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
+}

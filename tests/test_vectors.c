@@ -1,0 +1,205 @@
+/* test_vectors.c - the reference vectors of ../shared/vectors through the
+ * same parser and checker as trk-vectors, and proof that the checks can fail:
+ * a wrong value, a missing input, an unknown kind and malformed files. */
+#include "trk_test.h"
+#include "trk/types.h"
+#include "vec.h"
+
+static struct vec_case cs;
+static struct vec_out out;
+
+struct tally {
+    long passed, failed, unimpl, not_applicable;
+};
+
+/* Run every case of a text; returns -1 on a malformed text. */
+static int run_text(const char *text, size_t len, struct tally *t, int verbose)
+{
+    struct vec_file f;
+    vec_file_init(&f, text, len);
+    int r;
+    while ((r = vec_next(&f, &cs)) == 1) {
+        const struct vec_kind *k = vec_kind_find(cs.kind);
+        if (!k) {
+            t->unimpl++;
+            continue;
+        }
+        vec_out_reset(&out);
+        int rc = k->fn(&cs, &out);
+        if (rc == VEC_NOT_APPLICABLE) {
+            t->not_applicable++;
+            continue;
+        }
+        if (rc != 0) {
+            if (verbose) print_message("FAIL %s: %s\n", cs.id, out.err);
+            t->failed++;
+            continue;
+        }
+        struct vec_check chk;
+        vec_compare(&f, &cs, &out, TRK_REAL_IS_FLOAT, k->float_abs, k->float_rel, &chk);
+        if (chk.ok) t->passed++;
+        else {
+            if (verbose) print_message("FAIL %s %s\n", cs.id, chk.first_fail);
+            t->failed++;
+        }
+    }
+    return r < 0 ? -1 : 0;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return NULL;
+    fseek(fp, 0, SEEK_END);
+    long n = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    if (buf && fread(buf, 1, (size_t)n, fp) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(fp);
+    *len = (size_t)n;
+    return buf;
+}
+
+/* Every implemented kind in every shared file passes. */
+static void test_shared_vectors(void **state)
+{
+    (void)state;
+    static const char *files[] = {"pda.vec", "pdafai.vec", "amplitude.vec", "tracktests.vec", "q2.vec"};
+    struct tally t = {0, 0, 0, 0};
+    int found = 0;
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s", trk_test_vectors_dir(), files[i]);
+        size_t len;
+        char *buf = slurp(path, &len);
+        if (!buf) continue;
+        found++;
+        assert_int_equal(run_text(buf, len, &t, 1), 0);
+        free(buf);
+    }
+    if (!found) skip(); /* shared/ not present next to this checkout */
+    print_message("vectors: %ld passed, %ld failed, %ld unimplemented, %ld not applicable to this build\n",
+                  t.passed, t.failed, t.unimpl, t.not_applicable);
+    assert_int_equal(t.failed, 0);
+    assert_true(t.passed >= (TRK_MAX_DETECTIONS >= 256 ? 69 : 30));
+}
+
+static const char good_case[] =
+    "# a kn case\n"
+    "tol * 0 0\n"
+    "case kn k1\n"
+    "in k 0\n"
+    "in n 2\n"
+    "in delta 1 0 0 1\n"
+    "out count 1 1 0 1\n"
+    "out decision 0 0 1 1\n"
+    "end\n";
+
+static void test_checks_can_fail(void **state)
+{
+    (void)state;
+    struct tally t = {0, 0, 0, 0};
+    assert_int_equal(run_text(good_case, strlen(good_case), &t, 0), 0);
+    assert_int_equal(t.passed, 1);
+    assert_int_equal(t.failed, 0);
+    /* a wrong expected value fails */
+    char bad[sizeof good_case];
+    memcpy(bad, good_case, sizeof good_case);
+    char *p = strstr(bad, "out count 1 1 0 1");
+    p[16] = '2';
+    memset(&t, 0, sizeof t);
+    assert_int_equal(run_text(bad, strlen(bad), &t, 0), 0);
+    assert_int_equal(t.failed, 1);
+    assert_int_equal(t.passed, 0);
+    /* a missing input fails (not skipped) */
+    memcpy(bad, good_case, sizeof good_case);
+    p = strstr(bad, "in k 0");
+    memcpy(p, "in q 0", 6);
+    memset(&t, 0, sizeof t);
+    assert_int_equal(run_text(bad, strlen(bad), &t, 0), 0);
+    assert_int_equal(t.failed, 1);
+    /* an output the kind does not compute fails */
+    static const char extra[] = "case kn k2\nin k 0\nin n 1\nin delta 1\nout nonsense 1\nend\n";
+    memset(&t, 0, sizeof t);
+    assert_int_equal(run_text(extra, strlen(extra), &t, 0), 0);
+    assert_int_equal(t.failed, 1);
+    /* an unknown kind is counted as unimplemented */
+    static const char unk[] = "case no_such_kind x\nin a 1\nout b 2\nend\n";
+    memset(&t, 0, sizeof t);
+    assert_int_equal(run_text(unk, strlen(unk), &t, 0), 0);
+    assert_int_equal(t.unimpl, 1);
+}
+
+static void test_tolerance_rules(void **state)
+{
+    (void)state;
+    /* file-level defaults, case overrides, per-name before '*' */
+    static const char text[] = "tol * 1 2\ntol x 3 4\ncase kn a\ntol * 5 6\nin k 0\nin n 1\nin delta 1\nend\n"
+                               "case kn b\nin k 0\nin n 1\nin delta 1\nend\n";
+    struct vec_file f;
+    vec_file_init(&f, text, strlen(text));
+    double a, r;
+    assert_int_equal(vec_next(&f, &cs), 1);
+    vec_tolerance(&f, &cs, "x", &a, &r);
+    assert_true(a == 5 && r == 6); /* case '*' beats file's named entry */
+    assert_int_equal(vec_next(&f, &cs), 1);
+    vec_tolerance(&f, &cs, "x", &a, &r);
+    assert_true(a == 3 && r == 4);
+    vec_tolerance(&f, &cs, "y", &a, &r);
+    assert_true(a == 1 && r == 2);
+    assert_int_equal(vec_next(&f, &cs), 0);
+}
+
+static void test_malformed(void **state)
+{
+    (void)state;
+    static const char *bad[] = {
+        "case kn\nend\n",                   /* no id */
+        "case kn a\nin k 0\n",              /* no end */
+        "in k 0\n",                         /* outside a case */
+        "case kn a\nin k 1 x\nend\n",       /* word after numbers */
+        "case kn a\nin k inf\nend\n",       /* non-finite */
+        "case kn a\nbogus 1\nend\n",        /* unknown record */
+        "case kn a\ntol x 1\nend\n",        /* short tol */
+        "case kn a\ntol x -1 0\nend\n",     /* negative tol */
+        "end\n",
+        "case kn a\ncase kn b\nend\n",
+        "case kn aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\nend\n",
+        "case kn a\nin nnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnn 1\nend\n",
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        struct vec_file f;
+        vec_file_init(&f, bad[i], strlen(bad[i]));
+        int r;
+        while ((r = vec_next(&f, &cs)) == 1) {
+        }
+        if (r != -1) fail_msg("malformed text %zu accepted", i);
+        assert_true(f.err[0] != '\0');
+    }
+    /* an array longer than 1024 values */
+    static char big[1100 * 2 + 64];
+    strcpy(big, "case kn a\nin delta");
+    for (int i = 0; i < 1025; i++) strcat(big, " 1");
+    strcat(big, "\nend\n");
+    struct vec_file f;
+    vec_file_init(&f, big, strlen(big));
+    assert_int_equal(vec_next(&f, &cs), -1);
+    /* an embedded NUL */
+    static const char nul[] = "case kn a\nin k 0\0\nend\n";
+    vec_file_init(&f, nul, sizeof nul - 1);
+    assert_int_equal(vec_next(&f, &cs), -1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_shared_vectors),
+        cmocka_unit_test(test_checks_can_fail),
+        cmocka_unit_test(test_tolerance_rules),
+        cmocka_unit_test(test_malformed),
+    };
+    return cmocka_run_group_tests_name("vectors", tests, NULL, NULL);
+}

@@ -1,0 +1,154 @@
+/* bench_pda.c - PDA track update and whole-scan benchmarks (issue 3):
+ *   pda_update_m<m>   ns per predict + gate + PDA update of one track with m
+ *                     detections in its gate (public API: trk_cv2_predict +
+ *                     trk_pda_update)
+ *   scan_64x256       ns per trk_tracker_process_scan with 64 confirmed tracks
+ *                     and 256 detections (64 targets + 192 clutter)
+ *   sizeof_tracker    bytes of struct trk_tracker at this build's capacities */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+#include "trk/kalman.h"
+#include "trk/pda.h"
+#include "trk/tracker.h"
+
+static uint64_t rs = 42;
+static double urand(void)
+{
+    uint64_t z = (rs += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+struct pda_job {
+    struct trk_pda pda;
+    trk_real f[16], q[16], r[4];
+    trk_real x0[4], p0[16], x[4], p[16];
+    size_t m;
+    trk_real z[2 * 128], beta[128];
+};
+
+static void pda_once(void *arg)
+{
+    struct pda_job *j = arg;
+    memcpy(j->x, j->x0, sizeof j->x);
+    memcpy(j->p, j->p0, sizeof j->p);
+    trk_status st = trk_cv2_predict(1, TRK_REAL_C(0.05), j->x, j->p);
+    st |= trk_pda_update(&j->pda, 4, trk_cv2_h, j->r, j->x, j->p, j->m, j->z, NULL, j->beta, NULL, NULL);
+    bench_sink((double)j->x[0] + (double)st);
+}
+
+TRK_BENCH(pda_update)
+{
+    static struct pda_job j;
+    struct trk_pda_params pp = {2, TRK_REAL_C(0.9), TRK_REAL_C(0.99), TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(1e-3), 1};
+    if (trk_pda_init(&j.pda, &pp) != TRK_OK) return;
+    trk_cv2_transition(1, j.f);
+    trk_cv2_process_noise(1, TRK_REAL_C(0.05), j.q);
+    j.r[0] = j.r[3] = 4;
+    j.r[1] = j.r[2] = 0;
+    const trk_real x0[4] = {1000, 2, -500, 1};
+    memcpy(j.x0, x0, sizeof x0);
+    memset(j.p0, 0, sizeof j.p0);
+    j.p0[0] = j.p0[10] = 5;
+    j.p0[5] = j.p0[15] = 1;
+    j.p0[1] = j.p0[4] = j.p0[11] = j.p0[14] = TRK_REAL_C(0.5);
+    /* detections inside the gate (d2 < 4 < gamma = 9.2) around the prediction */
+    const size_t ms[] = {0, 1, 10, 100};
+    for (size_t k = 0; k < 4; k++) {
+        j.m = ms[k];
+        for (size_t i = 0; i < j.m; i++) {
+            double ang = 6.283185307179586 * urand(), rad = 2.0 * urand();
+            j.z[2 * i] = (trk_real)(1002 + rad * 3 * cos(ang));
+            j.z[2 * i + 1] = (trk_real)(-499 + rad * 3 * sin(ang));
+        }
+        char name[64];
+        snprintf(name, sizeof name, "pda_update_m%zu", j.m);
+        bench_print(name, bench_time_ns(pda_once, &j, 7), "ns");
+    }
+}
+
+/* 64 targets on a 150 m grid moving at 1-3 m/s, pd 1 for the benchmark's
+ * steady state, 192 uniform clutter detections over the area. */
+#define N_SCANS 64
+#define N_TGT 64
+#define N_DET 256
+
+struct scan_job {
+    struct trk_tracker tk;
+    struct trk_detection det[N_SCANS][N_DET];
+    struct trk_scan scan[N_SCANS];
+};
+
+TRK_BENCH(scan_64x256)
+{
+    if (TRK_MAX_TRACKS < N_TGT || TRK_MAX_DETECTIONS < N_DET) {
+        bench_print("scan_64x256_skipped_capacity", 0, "-");
+        return;
+    }
+    struct scan_job *j = calloc(1, sizeof *j);
+    if (!j) return;
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p);
+    p.sensor[0].pd = TRK_REAL_C(0.9);
+    p.sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
+    p.process_noise_q = TRK_REAL_C(0.01);
+    p.confirm.u.mn.m = 2;
+    p.confirm.u.mn.n = 3;
+    double tx[N_TGT], ty[N_TGT], vx[N_TGT], vy[N_TGT];
+    for (int i = 0; i < N_TGT; i++) {
+        tx[i] = 150.0 * (i % 8);
+        ty[i] = 150.0 * (i / 8);
+        vx[i] = 1 + 2 * urand();
+        vy[i] = 1 + 2 * urand();
+    }
+    for (int k = 0; k < N_SCANS; k++) {
+        for (int i = 0; i < N_DET; i++) {
+            struct trk_detection *d = &j->det[k][i];
+            memset(d, 0, sizeof *d);
+            if (i < N_TGT) {
+                d->x_m = (trk_real)(tx[i] + vx[i] * k + (urand() - 0.5) * 2);
+                d->y_m = (trk_real)(ty[i] + vy[i] * k + (urand() - 0.5) * 2);
+            } else {
+                d->x_m = (trk_real)(-100 + 1200 * urand() + k);
+                d->y_m = (trk_real)(-100 + 1200 * urand() + k);
+            }
+        }
+        j->scan[k].sensor_id = 0;
+        j->scan[k].n_detections = N_DET;
+        j->scan[k].detections = j->det[k];
+    }
+    double best = 1e300;
+    int n_conf = 0;
+    for (int rep = 0; rep < 5; rep++) {
+        if (trk_tracker_init(&j->tk, &p) != TRK_OK) break;
+        /* warm up: targets first (so all 64 tracks exist), then full scans */
+        for (int k = 0; k < 4; k++) {
+            j->scan[k].time_us = (int64_t)k * 1000000;
+            j->scan[k].n_detections = N_TGT;
+            if (trk_tracker_process_scan(&j->tk, &j->scan[k], NULL) != TRK_OK) break;
+            j->scan[k].n_detections = N_DET;
+        }
+        double t0 = bench_now_ns();
+        for (int k = 4; k < N_SCANS; k++) {
+            j->scan[k].time_us = (int64_t)k * 1000000;
+            if (trk_tracker_process_scan(&j->tk, &j->scan[k], NULL) != TRK_OK) break;
+        }
+        double per = (bench_now_ns() - t0) / (N_SCANS - 4);
+        if (per < best) best = per;
+        n_conf = 0;
+        for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
+            const struct trk_track *t = trk_tracker_track(&j->tk, s);
+            n_conf += t && t->status == TRK_TRACK_CONFIRMED;
+        }
+    }
+    bench_print("scan_64x256", best, "ns");
+    bench_print("scan_64x256_confirmed_tracks", n_conf, "tracks");
+    free(j);
+}
+
+TRK_BENCH(sizeof_tracker) { bench_print("sizeof_tracker", (double)sizeof(struct trk_tracker), "bytes"); }

@@ -1,0 +1,61 @@
+/* kind_window.c - vector kinds kn and mn (../shared/vectors/tracktests.vec):
+ * K/N termination and M/N confirmation, step by step. Integer outputs only,
+ * so the float build uses the same (exact) tolerances. */
+#include <string.h>
+
+#include "trk/confirm_mn.h"
+#include "trk/term_kn.h"
+#include "vec.h"
+
+static int deltas(const struct vec_case *c, struct vec_out *o, const double **d, size_t *n)
+{
+    if (vec_in_array(c, o, "delta", d, n)) return -1;
+    for (size_t i = 0; i < *n; i++)
+        if ((*d)[i] != 0 && (*d)[i] != 1) return vec_fail(o, "delta must be 0 or 1");
+    return 0;
+}
+
+TRK_VEC_KIND(kn, 0, 0)
+{
+    long k, n;
+    const double *d;
+    size_t len;
+    if (vec_in_int(c, o, "k", &k) || vec_in_int(c, o, "n", &n) || deltas(c, o, &d, &len)) return -1;
+    struct trk_kn s;
+    struct trk_kn_params p = {(int)k, (int)n};
+    trk_status st = trk_kn_init(&s, &p);
+    if (st != TRK_OK) return vec_fail(o, "trk_kn_init: %s", trk_status_str(st));
+    double *count = vec_put_alloc(o, "count", len), *fire = vec_put_alloc(o, "fire", len),
+           *dec = vec_put_alloc(o, "decision", len);
+    if (!count || !fire || !dec) return -1;
+    for (size_t t = 0; t < len; t++) {
+        dec[t] = trk_kn_step(&s, d[t] != 0);
+        count[t] = s.count;
+        fire[t] = s.fire;
+    }
+    return 0;
+}
+
+TRK_VEC_KIND(mn, 0, 0)
+{
+    long m, n;
+    const char *mode;
+    const double *d;
+    size_t len;
+    if (vec_in_int(c, o, "m", &m) || vec_in_int(c, o, "n", &n) || vec_in_word(c, o, "mode", &mode) ||
+        deltas(c, o, &d, &len))
+        return -1;
+    struct trk_mn_params p = {(int)m, (int)n, TRK_MN_FIXED};
+    if (strcmp(mode, "sliding") == 0) p.mode = TRK_MN_SLIDING;
+    else if (strcmp(mode, "fixed") != 0) return vec_fail(o, "mode must be fixed|sliding");
+    struct trk_mn s;
+    trk_status st = trk_mn_init(&s, &p);
+    if (st != TRK_OK) return vec_fail(o, "trk_mn_init: %s", trk_status_str(st));
+    double *count = vec_put_alloc(o, "count", len), *dec = vec_put_alloc(o, "decision", len);
+    if (!count || !dec) return -1;
+    for (size_t t = 0; t < len; t++) {
+        dec[t] = trk_mn_step(&s, d[t] != 0);
+        count[t] = s.count;
+    }
+    return 0;
+}
