@@ -3,23 +3,30 @@
 
 #include "window_impl.h"
 
-trk_status trk_mn_init(struct trk_mn *s, const struct trk_mn_params *p)
+trk_status trk_mn_model_init(struct trk_mn_model *m, const struct trk_mn_params *p)
 {
-    if (!s || !p) return TRK_E_ARG;
+    if (!m || !p) return TRK_E_ARG;
     if (p->mode != TRK_MN_FIXED && p->mode != TRK_MN_SLIDING) return TRK_E_ARG;
     if (p->n < 1 || p->n > TRK_MN_MAX_N || p->m < 1 || p->m > p->n) return TRK_E_RANGE;
-    s->params = *p;
+    m->m = p->m;
+    m->n = p->n;
+    m->mode = p->mode;
+    return TRK_OK;
+}
+
+void trk_mn_reset(const struct trk_mn_model *m, struct trk_mn *s)
+{
+    if (!m || !s) return;
     s->history = 0;
     s->t = 0;
     s->count = 0;
     s->decision = 0;
-    return TRK_OK;
 }
 
-int trk_mn_step(struct trk_mn *s, int detected)
+int trk_mn_step(const struct trk_mn_model *md, struct trk_mn *s, int detected)
 {
-    const int m = s->params.m, n = s->params.n;
-    if (s->params.mode == TRK_MN_FIXED) {
+    const int m = md->m, n = md->n;
+    if (md->mode == TRK_MN_FIXED) {
         /* count over scans 1..n only */
         if (s->t < (uint32_t)n) {
             s->count += detected != 0;

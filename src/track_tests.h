@@ -1,7 +1,9 @@
 /* track_tests.h (private) - the tracker's dispatch to the per-track
- * confirmation and termination tests chosen in its configuration. Adding a
- * method: a case in each function of track_tests.c, a member of the unions in
- * trk/tracker.h, and its parameter check. */
+ * confirmation and termination tests chosen in its configuration. The
+ * tracker holds each chosen test's model once (confirm_model, term_model);
+ * every track holds only its state (tr->confirm, tr->term). Adding a method:
+ * a case in each function of track_tests.c, a member of the state and model
+ * unions in trk/tracker.h, and its parameter check. */
 #ifndef TRK_TRACK_TESTS_H
 #define TRK_TRACK_TESTS_H
 
@@ -14,23 +16,37 @@ struct trk_look {
     int n_gated;
     trk_real pfa_gate;   /* P(clutter in the gate) = 1 - exp(-lambda V_G) */
     trk_real beta0;
+    /* clutter tests: nearest detection of the scan (has_nearest = 0: none) */
+    int has_nearest;
+    size_t nearest;             /* its workspace index */
+    trk_real rho_vg;            /* lambda * volume enclosed by the nearest detection */
+    int has_amp;                /* nearest detection has an amplitude */
+    trk_real a_assoc_db;        /* its amplitude (dB) */
+    size_t n_others;            /* amplitudes of the other detections (dB) */
+    const trk_real *a_others_db;
 };
 
-/* Check the methods' parameters (init a scratch state). */
-trk_status trk_i_tests_check(const struct trk_tracker_params *p);
+/* Does the confirmation method need the nearest detection (clutter tests)? */
+int trk_i_confirm_needs_nearest(const struct trk_tracker_params *p);
+
+/* Check the methods' parameters and build their shared models (so a track
+ * start never re-runs an expensive init). TRK_E_UNSUPPORTED for a clutter
+ * test when TRK_WITH_CLUTTER_TESTS is 0. */
+trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confirm_model *confirm,
+                            union trk_term_model *term);
 
 /* Start the confirmation test of a new tentative track. */
-void trk_i_confirm_start(const struct trk_tracker_params *p, struct trk_track *tr);
+void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr);
 
 /* One scan of a tentative track: +1 confirm, -1 reject, 0 pending. */
-int trk_i_confirm_step(const struct trk_tracker_params *p, struct trk_track *tr,
+int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
                        const struct trk_look *look);
 
 /* Start the termination test of a newly confirmed track. */
-void trk_i_term_start(const struct trk_tracker_params *p, struct trk_track *tr);
+void trk_i_term_start(const struct trk_tracker *t, struct trk_track *tr);
 
 /* One scan of a confirmed track: 1 terminate, 0 continue. */
-int trk_i_term_step(const struct trk_tracker_params *p, struct trk_track *tr,
+int trk_i_term_step(const struct trk_tracker *t, struct trk_track *tr,
                     const struct trk_look *look);
 
 #endif

@@ -76,10 +76,14 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
         st = cov2(sp->meas_cov_m2, r[s]);
         if (st != TRK_OK) return st;
     }
-    trk_status st = trk_i_tests_check(p);
+    union trk_confirm_model confirm_model;
+    union trk_term_model term_model;
+    trk_status st = trk_i_tests_init(p, &confirm_model, &term_model);
     if (st != TRK_OK) return st;
 
     t->params = *p;
+    t->confirm_model = confirm_model;
+    t->term_model = term_model;
     for (unsigned s = 0; s < p->n_sensors; s++) {
         t->pda[s] = pda[s];
         for (int i = 0; i < NZ * NZ; i++) t->r[s][i] = r[s][i];
@@ -106,11 +110,14 @@ size_t trk_tracker_live_count(const struct trk_tracker *t) { return t ? t->n_liv
 
 /* ------------------------------------------------------------------ scan */
 
-/* TRK_OK for a usable detection, else why not (TRK_E_NAN, TRK_E_NOT_SPD). */
+/* TRK_OK for a usable detection, else why not: TRK_E_NAN non-finite
+ * position or covariance, TRK_E_NOT_SPD covariance, TRK_E_RANGE amplitude
+ * NaN, infinite or negative. */
 static trk_status check_detection(const struct trk_detection *d)
 {
     trk_real r[NZ * NZ];
     if (!isfinite(d->x_m) || !isfinite(d->y_m)) return TRK_E_NAN;
+    if (d->has_amplitude && !(d->amplitude >= 0 && d->amplitude <= TRK_REAL_MAX)) return TRK_E_RANGE;
     return d->has_cov ? cov2(d->cov_m2, r) : TRK_OK;
 }
 
@@ -126,6 +133,7 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan,
         const struct trk_detection *d = &scan->detections[i];
         trk_status st = check_detection(d);
         if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
+        else if (st == TRK_E_RANGE) rep->n_rejected_amplitude++;
         else if (st != TRK_OK) rep->n_rejected_cov++;
         else if (d->has_cov) any_own = 1;
         else {
@@ -144,10 +152,18 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan,
         t->ws.src[n] = (uint16_t)i;
         n++;
     }
+    size_t n_amp = 0;
     for (size_t k = 0; k < n; k++) {
+        const struct trk_detection *d = &scan->detections[t->ws.src[k]];
         t->ws.used[k] = 0;
         t->ws.log_lr[k] = 0; /* positions only: l^a = 1 */
+        t->ws.amp_pos[k] = -1;
+        if (d->has_amplitude && d->amplitude > 0) { /* dB for the clutter-amplitude test */
+            t->ws.amp_db[n_amp] = TRK_REAL_C(20.0) * trk_log10(d->amplitude);
+            t->ws.amp_pos[k] = (int16_t)n_amp++;
+        }
     }
+    t->ws.n_amp = n_amp;
     *n_valid = n;
 }
 
@@ -270,12 +286,57 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
     tr->time_us = scan->time_us;
     tr->n_gated_last = (uint16_t)n;
     tr->beta0_last = beta0;
+    look->has_nearest = 0;
+    look->nearest = 0;
+    if (tr->status == TRK_TRACK_TENTATIVE && trk_i_confirm_needs_nearest(&t->params) && n_valid > 0) {
+        /* Kennedy eqs 5-9: rho V_g with V_g = c_nz D^nz sqrt|S| enclosed by
+         * the nearest detection (sensor's S; D^2 = its d2) */
+        trk_real best = TRK_REAL_MAX;
+        size_t jb = 0;
+        for (size_t j = 0; j < n_valid; j++) {
+            trk_real nu[NZ];
+            nu[0] = t->ws.x[j] - zx;
+            nu[1] = t->ws.y[j] - zy;
+            trk_real d2 = trk_i_mahalanobis2(NZ, inn.s_chol_inv, nu);
+            if (d2 < best) {
+                best = d2;
+                jb = j;
+            }
+        }
+        look->has_nearest = 1;
+        look->nearest = jb;
+        look->rho_vg = pda->params.clutter_density * TRK_PI * best * inn.sqrt_det_s;
+    }
     look->detected = n > 0;
     look->sensor_id = scan->sensor_id;
     look->n_gated = (int)n;
     look->pfa_gate = -trk_expm1(-lambda * vg);
     look->beta0 = beta0;
     return 0;
+}
+
+/* Confirmation step; for the clutter-amplitude test the nearest detection's
+ * amplitude is moved to the end of the scan's amplitude list so the others
+ * are contiguous, and moved back afterwards. */
+static int confirm_step(struct trk_tracker *t, struct trk_track *tr, struct trk_look *look)
+{
+    look->has_amp = 0;
+    look->n_others = 0;
+    look->a_others_db = t->ws.amp_db;
+    if (!look->has_nearest || t->params.confirm.method != TRK_CONFIRM_CLUTTER_AMP ||
+        t->ws.amp_pos[look->nearest] < 0)
+        return trk_i_confirm_step(t, tr, look);
+    const size_t k = (size_t)t->ws.amp_pos[look->nearest], last = t->ws.n_amp - 1;
+    trk_real tmp = t->ws.amp_db[k];
+    t->ws.amp_db[k] = t->ws.amp_db[last];
+    t->ws.amp_db[last] = tmp;
+    look->has_amp = 1;
+    look->a_assoc_db = tmp;
+    look->n_others = last;
+    int d = trk_i_confirm_step(t, tr, look);
+    t->ws.amp_db[last] = t->ws.amp_db[k];
+    t->ws.amp_db[k] = tmp;
+    return d;
 }
 
 static void start_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
@@ -304,7 +365,7 @@ static void start_track(struct trk_tracker *t, struct trk_track *tr, const struc
     tr->n_gated_last = 1;
     tr->beta0_last = 0;
     tr->term_stat = 0;
-    trk_i_confirm_start(&t->params, tr);
+    trk_i_confirm_start(t, tr);
 }
 
 trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,
@@ -348,17 +409,17 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
             tr->n_misses_in_row++;
         }
         if (tr->status == TRK_TRACK_TENTATIVE) {
-            int d = trk_i_confirm_step(&t->params, tr, &look);
+            int d = confirm_step(t, tr, &look);
             if (d > 0) {
                 tr->status = TRK_TRACK_CONFIRMED;
-                trk_i_term_start(&t->params, tr);
+                trk_i_term_start(t, tr);
                 rep.n_confirmed++;
             } else if (d < 0) {
                 end_track(t, tr, TRK_END_REJECTED, &rep);
             } else if (t->params.max_tentative_scans && tr->n_scans > t->params.max_tentative_scans) {
                 end_track(t, tr, TRK_END_TENTATIVE_AGE, &rep);
             }
-        } else if (trk_i_term_step(&t->params, tr, &look)) {
+        } else if (trk_i_term_step(t, tr, &look)) {
             end_track(t, tr, TRK_END_TERMINATED, &rep);
         }
     }
@@ -376,13 +437,18 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
         start_track(t, tr, scan, j);
         t->n_live++;
         rep.n_started++;
-        struct trk_look look = {1, scan->sensor_id, 1, 0, 0};
-        /* the initiating detection is the first scan of the confirmation test */
-        int d = trk_i_confirm_step(&t->params, tr, &look);
-        if (d > 0) {
-            tr->status = TRK_TRACK_CONFIRMED;
-            trk_i_term_start(&t->params, tr);
-            rep.n_confirmed++;
+        /* M/N counts the initiating detection as its first scan; the
+         * SPRT and the clutter tests start with the first update */
+        if (t->params.confirm.method == TRK_CONFIRM_MN) {
+            struct trk_look look = {0};
+            look.detected = 1;
+            look.sensor_id = scan->sensor_id;
+            look.n_gated = 1;
+            if (trk_i_confirm_step(t, tr, &look) > 0) {
+                tr->status = TRK_TRACK_CONFIRMED;
+                trk_i_term_start(t, tr);
+                rep.n_confirmed++;
+            }
         }
     }
     t->last_time_us = scan->time_us;

@@ -2,7 +2,8 @@
  * clutter does not break it, invariants hold after every scan (free + live =
  * capacity, unique ids, every P symmetric and SPD), bad scans leave the
  * table untouched, bad detections are counted, a full table refuses and
- * counts, own-covariance detections, the polar helper. */
+ * counts, own-covariance detections, the polar helper, every confirmation
+ * and termination method through a track's life. */
 #include "trk_test.h"
 #include "trk/linalg.h"
 #include "trk/tracker.h"
@@ -353,6 +354,127 @@ static void test_polar(void **state)
     TRK_ASSERT_STATUS(trk_detection_from_polar(1, 0, 0, 1, 0, 0, &d), TRK_E_RANGE);
 }
 
+/* Every confirmation x termination method through a track's life: the
+ * tracker builds each test's model once (confirm_model / term_model) and a
+ * track start resets the track's own state from it (Shiryaev g_0, clutter
+ * p-value 1, counts 0); the track statistic mirrors its state; a target is
+ * confirmed, then terminated once it disappears. One far clutter detection
+ * per scan gives the amplitude test its "other" peaks. */
+static void test_methods_lifecycle(void **state)
+{
+    (void)state;
+    const struct trk_hmm_sensor_params hs = {TRK_REAL_C(0.05), TRK_REAL_C(0.1), TRK_REAL_C(0.3),
+                                             TRK_REAL_C(0.95), TRK_HMM_PI0_STATIONARY};
+    const int n_confirm = TRK_WITH_CLUTTER_TESTS ? 4 : 2;
+    for (int cm = 0; cm < n_confirm; cm++)
+        for (int tm = 0; tm < 3; tm++) {
+            struct trk_tracker_params p;
+            base_params(&p);
+            p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+            p.max_tentative_scans = 6;
+            p.confirm.method = (enum trk_confirm_method)cm;
+            if (cm == TRK_CONFIRM_SPRT) {
+                memset(&p.confirm.u.sprt, 0, sizeof p.confirm.u.sprt);
+                p.confirm.u.sprt.alpha = TRK_REAL_C(0.01);
+                p.confirm.u.sprt.beta = TRK_REAL_C(0.1);
+                p.confirm.u.sprt.model = TRK_SPRT_HMM;
+                trk_hmm_params_uniform(&p.confirm.u.sprt.hmm, 1, &hs);
+            } else if (cm == TRK_CONFIRM_CLUTTER_CHI2) {
+                p.confirm.u.chi2.alpha = TRK_REAL_C(0.05);
+                p.confirm.u.chi2.kmax = 5;
+            } else if (cm == TRK_CONFIRM_CLUTTER_AMP) {
+                p.confirm.u.amp.a_min_db = 0;
+                p.confirm.u.amp.alpha = TRK_REAL_C(0.05);
+                p.confirm.u.amp.kmax = 5;
+            }
+            p.term.method = (enum trk_term_method)tm;
+            if (tm == TRK_TERM_PAGE) {
+                trk_hmm_params_uniform(&p.term.u.page.hmm, 1, &hs);
+                p.term.u.page.h = 3;
+            } else if (tm == TRK_TERM_SHIRYAEV) {
+                trk_hmm_params_uniform(&p.term.u.shiryaev.hmm, 1, &hs);
+                p.term.u.shiryaev.beta0 = TRK_REAL_C(0.01);
+                p.term.u.shiryaev.rho = TRK_REAL_C(0.01);
+                p.term.u.shiryaev.h = TRK_REAL_C(4.6);
+            }
+            TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+#if TRK_WITH_CLUTTER_TESTS
+            if (cm == TRK_CONFIRM_CLUTTER_CHI2) /* the table, built once at init */
+                TRK_ASSERT_NEAR(tk.confirm_model.chi2.threshold_tab[0],
+                                -2 * log1p(-(double)TRK_REAL_C(0.05)), 0, TRK_TOL(1e-14, 1e-6));
+#endif
+            struct trk_detection d[2];
+            memset(d, 0, sizeof d);
+            const struct trk_track *tr = NULL;
+            uint32_t id = 0;
+            int confirmed_at = -1, ended_at = -1;
+            for (int k = 0; k < 60 && ended_at < 0; k++) {
+                size_t n = 0;
+                if (k < 15) { /* the target, strong */
+                    d[n].x_m = (trk_real)(2.0 * k);
+                    d[n].y_m = 0;
+                    d[n].has_amplitude = 1;
+                    d[n].amplitude = 10; /* 20 dB */
+                    n++;
+                }
+                d[n].x_m = (trk_real)(1000 + 50 * k); /* far clutter, weak */
+                d[n].y_m = -1000;
+                d[n].has_amplitude = 1;
+                d[n].amplitude = TRK_REAL_C(1.5); /* 3.5 dB */
+                n++;
+                struct trk_scan scan = {SEC(k), 0, n, d};
+                const int was_tentative = tr && tr->status == TRK_TRACK_TENTATIVE;
+                TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+                check_invariants(&tk);
+                if (k == 0) {
+                    tr = trk_tracker_track(&tk, 0);
+                    assert_non_null(tr);
+                    id = tr->id;
+                    /* a fresh state: the clutter tests' p-value starts at 1 */
+                    assert_true(tr->confirm_stat == (cm >= TRK_CONFIRM_CLUTTER_CHI2 ? 1 : cm == TRK_CONFIRM_MN));
+                }
+                assert_int_equal(tr->id, id);
+                if (tr->status == TRK_TRACK_TENTATIVE) {
+                    switch (cm) {
+                    case TRK_CONFIRM_MN: assert_true(tr->confirm_stat == tr->confirm.mn.count); break;
+                    case TRK_CONFIRM_SPRT: assert_true(tr->confirm_stat == tr->confirm.sprt.stat); break;
+#if TRK_WITH_CLUTTER_TESTS
+                    case TRK_CONFIRM_CLUTTER_CHI2: assert_true(tr->confirm_stat == tr->confirm.chi2.p_value); break;
+                    case TRK_CONFIRM_CLUTTER_AMP: assert_true(tr->confirm_stat == tr->confirm.amp.p_value); break;
+#endif
+                    default: break;
+                    }
+                }
+                if (tr->status == TRK_TRACK_CONFIRMED && confirmed_at < 0) {
+                    assert_true(was_tentative || k == 0);
+                    confirmed_at = k;
+                    /* the termination state was just reset from the model */
+                    switch (tm) {
+                    case TRK_TERM_KN: assert_true(tr->term.kn.t == 0 && tr->term_stat == 0); break;
+                    case TRK_TERM_PAGE: assert_true(tr->term.page.t == 0 && tr->term_stat == 0); break;
+                    case TRK_TERM_SHIRYAEV:
+                        assert_true(tr->term.shiryaev.t == 0);
+                        assert_true(tr->term_stat == tk.term_model.shiryaev.g0);
+                        TRK_ASSERT_NEAR(tr->term_stat, log(0.01 / 0.99), 0, TRK_TOL(1e-14, 1e-6));
+                        break;
+                    default: break;
+                    }
+                }
+                if (tr->status == TRK_TRACK_TERMINATED) {
+                    assert_int_equal(tr->end_reason, TRK_END_TERMINATED);
+                    ended_at = k;
+                }
+            }
+            /* M/N 3-of-5 counts the initiation: confirmed at the third scan;
+             * SPRT and the density test on the first update; the amplitude
+             * test once its window holds enough scans */
+            const int confirm_by[4] = {2, 1, 1, 4};
+            assert_true(confirmed_at >= 1 && confirmed_at <= confirm_by[cm]);
+            assert_true(ended_at >= 15 + 2 && ended_at < 50); /* misses after the target left */
+            if (tm == TRK_TERM_KN) assert_int_equal(ended_at, 15 + 4); /* 0/5: the fifth miss */
+        }
+}
+
 /* Two sensors with their own parameters feed one table in time order. */
 static void test_two_sensors(void **state)
 {
@@ -393,6 +515,7 @@ int main(void)
         cmocka_unit_test(test_own_covariance),
         cmocka_unit_test(test_polar),
         cmocka_unit_test(test_two_sensors),
+        cmocka_unit_test(test_methods_lifecycle),
     };
     return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
 }

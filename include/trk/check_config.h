@@ -25,4 +25,8 @@
 #error "TRK_MAX_MEAS above 3 is not supported: gate.h has gamma and volume only for nz = 1, 2, 3"
 #endif
 
+#if TRK_WITH_CLUTTER_TESTS != 0 && TRK_WITH_CLUTTER_TESTS != 1
+#error "TRK_WITH_CLUTTER_TESTS must be 0 or 1; set -DTRK_WITH_CLUTTER_TESTS=1"
+#endif
+
 #endif

@@ -41,6 +41,18 @@
 #define TRK_MAX_MEAS 3
 #endif
 
+/* Kennedy's clutter tests (clutter_test.h) as confirmation methods of the
+ * tracker. Their per-track state carries a window of TRK_CLUTTER_KMAX updates
+ * (about 0.6 KB per track in double, 0.35 KB in float), by far the largest
+ * member of union trk_confirm_state (trk/tracker.h), which every track slot
+ * holds. 0 leaves the clutter tests' states and models out of the track
+ * table (then selecting TRK_CONFIRM_CLUTTER_CHI2 or TRK_CONFIRM_CLUTTER_AMP
+ * makes trk_tracker_init return TRK_E_UNSUPPORTED); the clutter_test module
+ * itself is always built and usable on its own. 1 (default) keeps them. */
+#ifndef TRK_WITH_CLUTTER_TESTS
+#define TRK_WITH_CLUTTER_TESTS 1
+#endif
+
 #include "trk/check_config.h"
 
 #endif /* TRK_CONFIG_H */

@@ -8,7 +8,10 @@
  *            count + (N - t) < M (the outcome is certain).
  *   sliding: count = detections in the last min(t, N) scans; +1 at the first
  *            t with count >= M; never -1 (pair it with a maximum tentative life).
- * Decisions are sticky: the first one holds, later steps repeat it. */
+ * Decisions are sticky: the first one holds, later steps repeat it.
+ *
+ * struct trk_mn_model (M, N, mode; validated once, shared by every track)
+ * and struct trk_mn (one track's window and count). */
 #ifndef TRK_CONFIRM_MN_H
 #define TRK_CONFIRM_MN_H
 
@@ -24,18 +27,29 @@ struct trk_mn_params {
     enum trk_mn_mode mode;
 };
 
+/* Shared, read-only after init. */
+struct trk_mn_model {
+    int m, n;
+    enum trk_mn_mode mode;
+};
+
+/* Per track. */
 struct trk_mn {
-    struct trk_mn_params params;
     uint64_t history;      /* bit 0 = latest scan */
     uint32_t t;            /* scans seen */
     int count;             /* current count (see above) */
     int decision;          /* +1 confirmed, -1 rejected, 0 pending */
 };
 
-/* TRK_E_ARG NULL or bad mode, TRK_E_RANGE m or n out of range. */
-TRK_NODISCARD trk_status trk_mn_init(struct trk_mn *s, const struct trk_mn_params *p);
+/* TRK_E_ARG NULL or bad mode, TRK_E_RANGE m or n out of range. *m untouched
+ * on error. */
+TRK_NODISCARD trk_status trk_mn_model_init(struct trk_mn_model *m, const struct trk_mn_params *p);
 
-/* One scan; returns the (sticky) decision. */
-int trk_mn_step(struct trk_mn *s, int detected);
+/* Start state of a new track: no scan, count 0, pending. Does nothing when
+ * m or s is NULL. */
+void trk_mn_reset(const struct trk_mn_model *m, struct trk_mn *s);
+
+/* One scan of a track reset with m; returns the (sticky) decision. */
+int trk_mn_step(const struct trk_mn_model *m, struct trk_mn *s, int detected);
 
 #endif

@@ -3,7 +3,10 @@
  *
  * count = detections in the last min(t, N) scans; terminate iff t >= N and
  * count <= K ("K or fewer in the last N"; no decision before N scans).
- * K = 0 is "N consecutive misses". Decisions are sticky. */
+ * K = 0 is "N consecutive misses". Decisions are sticky.
+ *
+ * struct trk_kn_model (K, N; validated once, shared by every track) and
+ * struct trk_kn (one track's window and count). */
 #ifndef TRK_TERM_KN_H
 #define TRK_TERM_KN_H
 
@@ -16,8 +19,13 @@ struct trk_kn_params {
     int n; /* 1..TRK_KN_MAX_N */
 };
 
+/* Shared, read-only after init. */
+struct trk_kn_model {
+    int k, n;
+};
+
+/* Per track. */
 struct trk_kn {
-    struct trk_kn_params params;
     uint64_t history; /* bit 0 = latest scan */
     uint32_t t;
     int count;
@@ -25,10 +33,14 @@ struct trk_kn {
     int decision; /* 1 terminated (sticky), 0 continue */
 };
 
-/* TRK_E_ARG NULL, TRK_E_RANGE n out of range or k outside 0..n-1. */
-TRK_NODISCARD trk_status trk_kn_init(struct trk_kn *s, const struct trk_kn_params *p);
+/* TRK_E_ARG NULL, TRK_E_RANGE n out of range or k outside 0..n-1. *m
+ * untouched on error. */
+TRK_NODISCARD trk_status trk_kn_model_init(struct trk_kn_model *m, const struct trk_kn_params *p);
 
-/* One scan; returns the (sticky) decision. */
-int trk_kn_step(struct trk_kn *s, int detected);
+/* Start state of a new track. Does nothing when m or s is NULL. */
+void trk_kn_reset(const struct trk_kn_model *m, struct trk_kn *s);
+
+/* One scan of a track reset with m; returns the (sticky) decision. */
+int trk_kn_step(const struct trk_kn_model *m, struct trk_kn *s, int detected);
 
 #endif

@@ -30,10 +30,14 @@
 #ifndef TRK_TRACKER_H
 #define TRK_TRACKER_H
 
+#include "trk/clutter_test.h"
 #include "trk/confirm_mn.h"
+#include "trk/confirm_sprt.h"
 #include "trk/kalman.h"
 #include "trk/pda.h"
 #include "trk/term_kn.h"
+#include "trk/term_page.h"
+#include "trk/term_shiryaev.h"
 #include "trk/types.h"
 
 /* ---------------------------------------------------------------- inputs */
@@ -66,26 +70,72 @@ struct trk_sensor_params {
     trk_real clutter_density_per_m2;  /* lambda for parametric clutter, >= 0 */
 };
 
+/* Confirmation of a tentative track (one method per tracker). */
 enum trk_confirm_method {
-    TRK_CONFIRM_MN = 0 /* M-of-N (confirm_mn.h) */
+    TRK_CONFIRM_MN = 0,          /* M-of-N (confirm_mn.h) */
+    TRK_CONFIRM_SPRT = 1,        /* Wald SPRT on detections (confirm_sprt.h) */
+    TRK_CONFIRM_CLUTTER_CHI2 = 2,/* Kennedy clutter-density test (clutter_test.h) */
+    TRK_CONFIRM_CLUTTER_AMP = 3  /* Kennedy clutter-amplitude test (clutter_test.h);
+                                    both need TRK_WITH_CLUTTER_TESTS (config.h) */
 };
 
 struct trk_confirm_params {
     enum trk_confirm_method method;
     union {
         struct trk_mn_params mn;
+        struct trk_sprt_params sprt;
+        struct trk_clutter_chi2_params chi2;
+        struct trk_clutter_amp_params amp;
     } u;
 };
 
+/* Termination of a confirmed track (one method per tracker). */
 enum trk_term_method {
-    TRK_TERM_KN = 0 /* K-of-N (term_kn.h); K = 0 is "N consecutive misses" */
+    TRK_TERM_KN = 0,      /* K-of-N (term_kn.h); K = 0 is "N consecutive misses" */
+    TRK_TERM_PAGE = 1,    /* Page CUSUM with the fluctuating-P_D HMM (term_page.h) */
+    TRK_TERM_SHIRYAEV = 2 /* Shiryaev rule with the same HMM (term_shiryaev.h) */
 };
 
 struct trk_term_params {
     enum trk_term_method method;
     union {
         struct trk_kn_params kn;
+        struct trk_page_params page;
+        struct trk_shiryaev_params shiryaev;
     } u;
+};
+
+/* Per-track state of the chosen tests (fixed size: the largest method; with
+ * TRK_WITH_CLUTTER_TESTS = 0 (config.h) the clutter tests are left out). The
+ * parameters and derived constants live once in the tracker (struct
+ * trk_tracker confirm_model / term_model), not per track. */
+union trk_confirm_state {
+    struct trk_mn mn;
+    struct trk_sprt sprt;
+#if TRK_WITH_CLUTTER_TESTS
+    struct trk_clutter_chi2 chi2;
+    struct trk_clutter_amp amp;
+#endif
+};
+union trk_term_state {
+    struct trk_kn kn;
+    struct trk_page page;
+    struct trk_shiryaev shiryaev;
+};
+
+/* The chosen tests' shared models (one per tracker). */
+union trk_confirm_model {
+    struct trk_mn_model mn;
+    struct trk_sprt_model sprt;
+#if TRK_WITH_CLUTTER_TESTS
+    struct trk_clutter_chi2_model chi2;
+    struct trk_clutter_amp_model amp;
+#endif
+};
+union trk_term_model {
+    struct trk_kn_model kn;
+    struct trk_page_model page;
+    struct trk_shiryaev_model shiryaev;
 };
 
 struct trk_tracker_params {
@@ -103,7 +153,19 @@ struct trk_tracker_params {
                                                          many scans (0 = no limit) */
 };
 
-/* Defaults: one sensor (pd 0.9, R = 1 m^2 I, lambda 1e-4 /m^2), q = 0.01,
+/* Tests and their inputs per scan (CONVENTIONS "Track confirmation and
+ * termination"): a scan "detects" a track when a detection is in its gate;
+ * P_FA of the gate is 1 - exp(-lambda V_G); the sensor id of the scan selects
+ * the HMM of multisensor tests. The clutter tests use the detection nearest
+ * to the prediction (smallest d2 with the sensor's S, over the whole scan):
+ * rho V_g = lambda c_nz d2^(nz/2) sqrt(det S), and its amplitude in dB
+ * (20 log10 a, a the linear envelope normalised to mean clutter power 1)
+ * against the amplitudes of the scan's other detections. A scan without a
+ * detection (or, for the amplitude test, without an amplitude on the nearest
+ * detection) leaves the clutter tests unchanged. Clutter tests never reject:
+ * pair them with max_tentative_scans.
+ *
+ * Defaults: one sensor (pd 0.9, R = 1 m^2 I, lambda 1e-4 /m^2), q = 0.01,
  * P_G 0.99, parametric clutter, velocity prior 5 m/s, max_dt 3600 s,
  * confirm 3-of-5 fixed, terminate after 5 consecutive misses (K/N 0/5),
  * no tentative limit. */
@@ -139,14 +201,12 @@ struct trk_track {
     uint32_t n_misses_in_row;         /* consecutive scans without */
     uint16_t n_gated_last;            /* detections in the gate at the last scan */
     trk_real beta0_last;              /* P(no detection is the target's), last scan */
-    trk_real confirm_stat;            /* current statistic of the confirmation test */
-    trk_real term_stat;               /* current statistic of the termination test */
-    union {
-        struct trk_mn mn;
-    } confirm;
-    union {
-        struct trk_kn kn;
-    } term;
+    trk_real confirm_stat;            /* current statistic of the confirmation test:
+                                         M/N count, SPRT log-LR, clutter-test p-value */
+    trk_real term_stat;               /* current statistic of the termination test:
+                                         K/N count, Page c_t, Shiryaev log-odds g_t */
+    union trk_confirm_state confirm;  /* see confirm_method; valid while tentative */
+    union trk_term_state term;        /* see term_method; valid once confirmed */
 };
 
 /* ---------------------------------------------------------------- report */
@@ -155,6 +215,7 @@ struct trk_scan_report {
     uint32_t n_detections;          /* in the scan */
     uint32_t n_rejected_nonfinite;  /* NaN/inf position or covariance */
     uint32_t n_rejected_cov;        /* own covariance not SPD */
+    uint32_t n_rejected_amplitude;  /* amplitude NaN, infinite or negative */
     uint32_t n_tracks_updated;      /* live tracks predicted and updated */
     uint32_t n_tracks_hit;          /* ... with at least one detection gated */
     uint32_t n_started;             /* new tentative tracks */
@@ -175,6 +236,8 @@ struct trk_tracker {
     int has_time;                               /* a scan has been processed */
     uint32_t next_id;
     uint32_t n_live;                            /* tentative + confirmed + terminated */
+    union trk_confirm_model confirm_model;      /* the tests' validated parameters and */
+    union trk_term_model term_model;            /* derived constants, shared by all tracks */
     struct trk_track track[TRK_MAX_TRACKS];
     /* per-scan workspace (contents meaningless between calls) */
     struct {
@@ -186,12 +249,19 @@ struct trk_tracker {
         trk_real w[TRK_MAX_DETECTIONS];                        /* its weights */
         trk_real z[2 * TRK_MAX_DETECTIONS];                    /* its detections */
         trk_real s_chol_inv[4 * TRK_MAX_DETECTIONS];           /* own-covariance L^-1 */
+        trk_real amp_db[TRK_MAX_DETECTIONS];                   /* amplitudes (dB) of the
+                                                                  detections that have one */
+        int16_t amp_pos[TRK_MAX_DETECTIONS];                   /* index in amp_db, -1 none */
+        size_t n_amp;
     } ws;
 };
 
-/* Validate params and initialise an empty table.
+/* Validate params, build the confirmation and termination models once (the
+ * clutter-density threshold table, HMMs, ...) and initialise an empty table.
  * TRK_E_ARG NULL/enum, TRK_E_NAN non-finite, TRK_E_RANGE out of range,
- * TRK_E_NOT_SPD a sensor covariance; *t untouched on error. */
+ * TRK_E_NOT_SPD a sensor covariance, TRK_E_SENSOR an HMM test with fewer
+ * sensors than the tracker, TRK_E_UNSUPPORTED a clutter confirmation test in
+ * a build with TRK_WITH_CLUTTER_TESTS = 0; *t untouched on error. */
 TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_params *p);
 
 /* Process one scan (see the top of this file). report may be NULL.

@@ -9,8 +9,13 @@
 #include "trk/kalman.h"
 #include "trk/gate.h"
 #include "trk/pda.h"
+#include "trk/hmm_detect.h"
 #include "trk/confirm_mn.h"
+#include "trk/confirm_sprt.h"
+#include "trk/clutter_test.h"
 #include "trk/term_kn.h"
+#include "trk/term_page.h"
+#include "trk/term_shiryaev.h"
 #include "trk/tracker.h"
 
 #endif

@@ -24,6 +24,7 @@ typedef float trk_real;
 #define trk_exp expf
 #define trk_log logf
 #define trk_log1p log1pf
+#define trk_log10 log10f
 #define trk_expm1 expm1f
 #define trk_fabs fabsf
 #define trk_pow powf
@@ -43,6 +44,7 @@ typedef double trk_real;
 #define trk_exp exp
 #define trk_log log
 #define trk_log1p log1p
+#define trk_log10 log10
 #define trk_expm1 expm1
 #define trk_fabs fabs
 #define trk_pow pow

@@ -21,15 +21,17 @@ TRK_VEC_KIND(kn, 0, 0)
     const double *d;
     size_t len;
     if (vec_in_int(c, o, "k", &k) || vec_in_int(c, o, "n", &n) || deltas(c, o, &d, &len)) return -1;
+    struct trk_kn_model m;
     struct trk_kn s;
     struct trk_kn_params p = {(int)k, (int)n};
-    trk_status st = trk_kn_init(&s, &p);
-    if (st != TRK_OK) return vec_fail(o, "trk_kn_init: %s", trk_status_str(st));
+    trk_status st = trk_kn_model_init(&m, &p);
+    if (st != TRK_OK) return vec_fail(o, "trk_kn_model_init: %s", trk_status_str(st));
+    trk_kn_reset(&m, &s);
     double *count = vec_put_alloc(o, "count", len), *fire = vec_put_alloc(o, "fire", len),
            *dec = vec_put_alloc(o, "decision", len);
     if (!count || !fire || !dec) return -1;
     for (size_t t = 0; t < len; t++) {
-        dec[t] = trk_kn_step(&s, d[t] != 0);
+        dec[t] = trk_kn_step(&m, &s, d[t] != 0);
         count[t] = s.count;
         fire[t] = s.fire;
     }
@@ -48,13 +50,15 @@ TRK_VEC_KIND(mn, 0, 0)
     struct trk_mn_params p = {(int)m, (int)n, TRK_MN_FIXED};
     if (strcmp(mode, "sliding") == 0) p.mode = TRK_MN_SLIDING;
     else if (strcmp(mode, "fixed") != 0) return vec_fail(o, "mode must be fixed|sliding");
+    struct trk_mn_model md;
     struct trk_mn s;
-    trk_status st = trk_mn_init(&s, &p);
-    if (st != TRK_OK) return vec_fail(o, "trk_mn_init: %s", trk_status_str(st));
+    trk_status st = trk_mn_model_init(&md, &p);
+    if (st != TRK_OK) return vec_fail(o, "trk_mn_model_init: %s", trk_status_str(st));
+    trk_mn_reset(&md, &s);
     double *count = vec_put_alloc(o, "count", len), *dec = vec_put_alloc(o, "decision", len);
     if (!count || !dec) return -1;
     for (size_t t = 0; t < len; t++) {
-        dec[t] = trk_mn_step(&s, d[t] != 0);
+        dec[t] = trk_mn_step(&md, &s, d[t] != 0);
         count[t] = s.count;
     }
     return 0;

@@ -18,8 +18,15 @@
 #define VEC_MAX_NAME 32      /* names are at most 31 characters */
 #define VEC_MAX_ID 64
 #define VEC_MAX_ARRAY 1024   /* values on one line */
+/* The two capacities below may be lowered with -D for a small-memory build
+ * (the QEMU firmware image of tests/qemu/, mk/qemu.mk): a case that does not
+ * fit is then a parse error ("case too large"), never silently cut. */
+#ifndef VEC_MAX_ENTRIES
 #define VEC_MAX_ENTRIES 512  /* in/out/tol lines of one case */
+#endif
+#ifndef VEC_POOL
 #define VEC_POOL (1u << 18)  /* values of one case, all lines together */
+#endif
 
 struct vec_entry {
     char name[VEC_MAX_NAME];

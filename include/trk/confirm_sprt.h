@@ -1,0 +1,81 @@
+/* trk/confirm_sprt.h - Wald sequential probability ratio test for track
+ * confirmation on binary detections (Willett II.B eqs 49-57 in sequential
+ * form; CONVENTIONS "Track confirmation and termination", SPRT).
+ *
+ * H1 target present, H0 track on clutter. Per look:
+ *   llr_t = llr_{t-1} + ln f1 - ln f0,  llr_0 = 0
+ *   fixed P_D:  hit  ln(P_D / P_FA),  miss  ln(1 - P_D) - ln(1 - P_FA)
+ *   HMM:        f1 the predictive likelihood of trk/hmm_detect.h (per sensor
+ *               Markov state), so llr_t is the log of Willett's eq 49 ratio
+ *               (eqs 53 / 55) computed recursively, O(1) per look.
+ *   ln A = ln((1 - beta) / alpha): confirm (+1) when llr >= ln A
+ *   ln B = ln(beta / (1 - alpha)): reject (-1) when llr <= ln B
+ * alpha = P(confirm | false track), beta = P(reject | true track) (Wald's
+ * approximate thresholds). The initiating detection counts only if the
+ * caller passes it as the first look (Willett conditions on it, eq 50).
+ * The decision is sticky; llr keeps accumulating after it.
+ *
+ * struct trk_sprt_model (Wald thresholds, ln P_D / ln(1 - P_D) or the HMM of
+ * every sensor; built once, shared by every track) and struct trk_sprt (one
+ * track: llr_t, the per-sensor HMM posteriors and look counts, decision). */
+#ifndef TRK_CONFIRM_SPRT_H
+#define TRK_CONFIRM_SPRT_H
+
+#include "trk/hmm_detect.h"
+#include "trk/types.h"
+
+/* Detection model of a present target (the type of trk_sprt_params.model). */
+enum trk_sprt_pd_model {
+    TRK_SPRT_FIXED_PD = 0, /* one P_D for every look */
+    TRK_SPRT_HMM = 1       /* per-sensor two-state Markov model (hmm) */
+};
+
+struct trk_sprt_params {
+    trk_real alpha;             /* (0, 1), alpha + beta < 1 */
+    trk_real beta;              /* (0, 1) */
+    enum trk_sprt_pd_model model;
+    trk_real pd;                /* TRK_SPRT_FIXED_PD: P_D in (0, 1) */
+    struct trk_hmm_params hmm;  /* TRK_SPRT_HMM: the model (ignored otherwise) */
+};
+
+/* Shared, read-only after init. */
+struct trk_sprt_model {
+    enum trk_sprt_pd_model pd_model;
+    trk_real ln_a, ln_b;        /* Wald thresholds */
+    trk_real log_pd, log_miss;  /* fixed P_D: ln P_D, ln(1 - P_D) */
+    struct trk_hmm_model hmm;   /* HMM (fixed P_D: a valid one-sensor model) */
+};
+
+/* Per track. */
+struct trk_sprt {
+    struct trk_hmm_state hmm;   /* HMM posteriors (unused with fixed P_D) */
+    trk_real stat;              /* llr_t */
+    trk_real inc;               /* increment of the latest look */
+    uint32_t t;
+    int fire;                   /* +1 llr >= ln A, -1 llr <= ln B, 0 between */
+    int decision;               /* sticky first non-zero fire */
+};
+
+/* TRK_E_ARG NULL or bad model, TRK_E_NAN non-finite parameter, TRK_E_RANGE
+ * alpha, beta (or alpha + beta >= 1), pd or a model probability out of range,
+ * TRK_E_CAPACITY too many sensors. *m untouched on error. */
+TRK_NODISCARD trk_status trk_sprt_model_init(struct trk_sprt_model *m,
+                                             const struct trk_sprt_params *p);
+
+/* Start state of a new track: llr = 0, no look, no decision. Does nothing
+ * when m or s is NULL. */
+void trk_sprt_reset(const struct trk_sprt_model *m, struct trk_sprt *s);
+
+/* One look: detected != 0 for a detection in the gate, pfa the gate's P_FA.
+ * `sensor` selects the Markov state (HMM model; ignored for fixed P_D).
+ * TRK_E_ARG NULL, TRK_E_SENSOR unknown sensor (HMM), TRK_E_NAN / TRK_E_RANGE
+ * pfa not in (0, 1); *s untouched on error. */
+TRK_NODISCARD trk_status trk_sprt_step(const struct trk_sprt_model *m, struct trk_sprt *s,
+                                       unsigned sensor, int detected, trk_real pfa);
+
+/* One step with a given log-likelihood-ratio increment ln f1 - ln f0 (e.g.
+ * with kinematic or amplitude terms). TRK_E_ARG NULL, TRK_E_NAN not finite. */
+TRK_NODISCARD trk_status trk_sprt_step_llr(const struct trk_sprt_model *m, struct trk_sprt *s,
+                                           trk_real inc);
+
+#endif

@@ -1,0 +1,244 @@
+/* test_term_page.c - Page (CUSUM) termination with the HMM detection model
+ * (Blanding eqs 5-10): recursion against closed forms and brute-force
+ * likelihoods, strict threshold, sticky decision, multisensor, bad input,
+ * one shared model for many tracks, 10^6-step runs that stay finite. */
+#include "trk_test.h"
+#include "hmm_brute.h"
+#include "trk/term_page.h"
+
+static struct trk_page_params params(unsigned ns, trk_real h)
+{
+    const struct trk_hmm_sensor_params sp = {TRK_REAL_C(0.1) / 3, TRK_REAL_C(0.1), TRK_REAL_C(0.1),
+                                             TRK_REAL_C(0.9), TRK_HMM_PI0_STATIONARY};
+    struct trk_page_params p;
+    trk_hmm_params_uniform(&p.hmm, ns, &sp);
+    p.h = h;
+    return p;
+}
+
+/* Build the shared model and start one track's state with it. */
+static void start(struct trk_page_model *m, struct trk_page *s, const struct trk_page_params *p)
+{
+    TRK_ASSERT_OK(trk_page_model_init(m, p));
+    trk_page_reset(m, s);
+}
+
+/* Fixed P_D (pd_low = pd_high): s = ln(pfa/pd) on a hit, ln((1-pfa)/(1-pd))
+ * on a miss; c = max(c + s, 0). */
+static void test_fixed_pd_closed_form(void **state)
+{
+    (void)state;
+    struct trk_page_params p = params(1, 3);
+    p.hmm.sensor[0].pd_low = p.hmm.sensor[0].pd_high = TRK_REAL_C(0.6);
+    struct trk_page_model m;
+    struct trk_page pg;
+    start(&m, &pg, &p);
+    const int d[12] = {0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0};
+    const double pd = (double)TRK_REAL_C(0.6), pfa = (double)TRK_REAL_C(0.02);
+    double c = 0;
+    int dec = 0;
+    for (int t = 0; t < 12; t++) {
+        TRK_ASSERT_OK(trk_page_step(&m, &pg, 0, d[t], TRK_REAL_C(0.02)));
+        const double s = d[t] ? log(pfa / pd) : log((1 - pfa) / (1 - pd));
+        c = c + s > 0 ? c + s : 0;
+        TRK_ASSERT_NEAR(pg.s, s, 0, TRK_TOL(1e-14, 1e-6));
+        TRK_ASSERT_NEAR(pg.stat, c, 1e-300, TRK_TOL(1e-14, 1e-6));
+        assert_int_equal(pg.fire, c > 3);
+        if (c > 3) dec = 1;
+        assert_int_equal(pg.decision, dec);
+        assert_int_equal(pg.t, t + 1);
+    }
+    assert_int_equal(dec, 1); /* 0.896 per miss: fires after four misses in a row */
+}
+
+/* Without a reset to 0, sum s = sum ln f0 - ln P(d | H1) (eq 53 by
+ * enumeration): the increments are the HMM's predictive log-ratios. */
+static void test_increments_vs_enumeration(void **state)
+{
+    (void)state;
+    struct trk_page_params p = params(1, 100);
+    struct trk_page_model m;
+    struct trk_page pg;
+    start(&m, &pg, &p);
+    const int d[16] = {1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 1, 1, 0, 1, 0};
+    double sum_s = 0, sum_f0 = 0;
+    for (int t = 0; t < 16; t++) {
+        const double pfa = 0.05 + 0.01 * t;
+        TRK_ASSERT_OK(trk_page_step(&m, &pg, 0, d[t], (trk_real)pfa));
+        sum_s += (double)pg.s;
+        sum_f0 += d[t] ? log((double)(trk_real)pfa) : log1p(-(double)(trk_real)pfa);
+    }
+    const double p_ = 0.1 / 3, q = 0.1;
+    TRK_ASSERT_NEAR(sum_s, sum_f0 - brute_log_lik(16, d, p_, q, 0.1, 0.9, p_ / (p_ + q)), 0,
+                    TRK_TOL(1e-13, 1e-5));
+}
+
+/* Strict '>' and sticky decision, with exactly representable increments. */
+static void test_strict_and_sticky(void **state)
+{
+    (void)state;
+    struct trk_page_params p = params(1, 2);
+    struct trk_page_model m;
+    struct trk_page pg;
+    start(&m, &pg, &p);
+    for (int i = 0; i < 4; i++) TRK_ASSERT_OK(trk_page_step_llr(&m, &pg, TRK_REAL_C(0.5)));
+    assert_true(pg.stat == 2); /* c == h: no firing */
+    assert_int_equal(pg.fire, 0);
+    assert_int_equal(pg.decision, 0);
+    TRK_ASSERT_OK(trk_page_step_llr(&m, &pg, TRK_REAL_C(0.25)));
+    assert_int_equal(pg.fire, 1);
+    assert_int_equal(pg.decision, 1);
+    TRK_ASSERT_OK(trk_page_step_llr(&m, &pg, -10));
+    assert_true(pg.stat == 0); /* clamped at 0, no reset after the decision */
+    assert_int_equal(pg.fire, 0);
+    assert_int_equal(pg.decision, 1); /* sticky */
+    trk_page_reset(&m, &pg);
+    assert_true(pg.stat == 0 && pg.decision == 0 && pg.t == 0);
+}
+
+/* Multisensor: two sensors interleaved give the same increments as each
+ * sensor's looks through its own single-sensor model. */
+static void test_multisensor(void **state)
+{
+    (void)state;
+#if TRK_MAX_SENSORS >= 2
+    struct trk_page_params p2 = params(2, 50), p1 = params(1, 50);
+    struct trk_page_model m2, m1;
+    struct trk_page both, a, b;
+    start(&m2, &both, &p2);
+    start(&m1, &a, &p1);
+    trk_page_reset(&m1, &b); /* a and b: two tracks sharing model m1 */
+    for (int t = 0; t < 40; t++) {
+        const unsigned sensor = (unsigned)((t * 7 + t / 3) % 2);
+        const int det = (t * 5) % 7 < 2;
+        const trk_real pfa = TRK_REAL_C(0.05) + TRK_REAL_C(0.002) * (trk_real)t;
+        TRK_ASSERT_OK(trk_page_step(&m2, &both, sensor, det, pfa));
+        struct trk_page *one = sensor ? &b : &a;
+        TRK_ASSERT_OK(trk_page_step(&m1, one, 0, det, pfa));
+        TRK_ASSERT_NEAR(both.s, one->s, 0, TRK_TOL(1e-15, 1e-6));
+    }
+#else
+    skip();
+#endif
+}
+
+static void test_bad_input(void **state)
+{
+    (void)state;
+    struct trk_page_model m, mbefore;
+    memset(&m, 0x3c, sizeof m);
+    mbefore = m;
+    struct trk_page_params p = params(1, 0);
+    TRK_ASSERT_STATUS(trk_page_model_init(&m, &p), TRK_E_RANGE); /* h = 0 */
+    p.h = -1;
+    TRK_ASSERT_STATUS(trk_page_model_init(&m, &p), TRK_E_RANGE);
+    p.h = (trk_real)NAN;
+    TRK_ASSERT_STATUS(trk_page_model_init(&m, &p), TRK_E_NAN);
+    p.h = (trk_real)INFINITY;
+    TRK_ASSERT_STATUS(trk_page_model_init(&m, &p), TRK_E_NAN);
+    p = params(1, 3);
+    p.hmm.sensor[0].pd_high = 1;
+    TRK_ASSERT_STATUS(trk_page_model_init(&m, &p), TRK_E_RANGE);
+    p = params(TRK_MAX_SENSORS + 1, 3);
+    TRK_ASSERT_STATUS(trk_page_model_init(&m, &p), TRK_E_CAPACITY);
+    TRK_ASSERT_STATUS(trk_page_model_init(NULL, &p), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_page_model_init(&m, NULL), TRK_E_ARG);
+    assert_memory_equal(&m, &mbefore, sizeof m); /* never half-initialised */
+    struct trk_page pg, before;
+    p = params(1, 3);
+    start(&m, &pg, &p);
+    TRK_ASSERT_OK(trk_page_step(&m, &pg, 0, 0, TRK_REAL_C(0.1)));
+    before = pg;
+    mbefore = m;
+    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 0, 1, 0), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 0, 1, 1), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 0, 1, (trk_real)NAN), TRK_E_NAN);
+    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 1, 1, TRK_REAL_C(0.1)), TRK_E_SENSOR);
+    TRK_ASSERT_STATUS(trk_page_step_llr(&m, &pg, (trk_real)INFINITY), TRK_E_NAN);
+    TRK_ASSERT_STATUS(trk_page_step(NULL, &pg, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_page_step(&m, NULL, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_page_step_llr(NULL, &pg, 1), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_page_step_llr(&m, NULL, 1), TRK_E_ARG);
+    trk_page_reset(NULL, &pg); /* no-op */
+    assert_memory_equal(&pg, &before, sizeof pg);
+    assert_memory_equal(&m, &mbefore, sizeof m);
+}
+
+/* Every field of two states bit for bit (not memcmp: padding). */
+static void assert_same_state(const struct trk_page *x, const struct trk_page *y)
+{
+    assert_memory_equal(x->hmm.post_high, y->hmm.post_high, sizeof x->hmm.post_high);
+    assert_memory_equal(x->hmm.n_looks, y->hmm.n_looks, sizeof x->hmm.n_looks);
+    assert_memory_equal(&x->stat, &y->stat, sizeof x->stat);
+    assert_memory_equal(&x->s, &y->s, sizeof x->s);
+    assert_int_equal(x->t, y->t);
+    assert_int_equal(x->fire, y->fire);
+    assert_int_equal(x->decision, y->decision);
+}
+
+/* One model, many tracks: states started from a shared model evolve
+ * independently, exactly as with a model of their own, and stepping never
+ * writes the model. */
+static void test_shared_model(void **state)
+{
+    (void)state;
+    struct trk_page_params p = params(TRK_MAX_SENSORS >= 2 ? 2 : 1, 4);
+    struct trk_page_model shared, own[3], copy;
+    struct trk_page s[3], r[3];
+    TRK_ASSERT_OK(trk_page_model_init(&shared, &p));
+    copy = shared;
+    for (int k = 0; k < 3; k++) {
+        start(&own[k], &r[k], &p);
+        trk_page_reset(&shared, &s[k]);
+    }
+    for (int t = 0; t < 60; t++)
+        for (int k = 0; k < 3; k++) {
+            const unsigned sensor = (unsigned)(t % p.hmm.n_sensors);
+            const int det = (t * (k + 3) + k) % 5 < 2;
+            const trk_real pfa = TRK_REAL_C(0.01) * (trk_real)(k + 1);
+            TRK_ASSERT_OK(trk_page_step(&shared, &s[k], sensor, det, pfa));
+            TRK_ASSERT_OK(trk_page_step(&own[k], &r[k], sensor, det, pfa));
+            assert_same_state(&s[k], &r[k]);
+        }
+    assert_memory_equal(&shared, &copy, sizeof shared);
+    assert_true(s[0].stat != s[1].stat); /* different histories, different states */
+}
+
+/* 10^6 looks of misses (c grows without bound under H0), of detections
+ * (c pinned at 0) and alternating sensors: always finite. */
+static void test_long_runs(void **state)
+{
+    (void)state;
+    struct trk_page_params p = params(TRK_MAX_SENSORS >= 2 ? 2 : 1, 5);
+    struct trk_page_model m;
+    struct trk_page pg;
+    TRK_ASSERT_OK(trk_page_model_init(&m, &p));
+    for (int mode = 0; mode < 3; mode++) {
+        trk_page_reset(&m, &pg);
+        for (long t = 0; t < 1000000; t++) {
+            const int det = mode == 1 || (mode == 2 && t % 3 == 0);
+            TRK_ASSERT_OK(trk_page_step(&m, &pg, (unsigned)(t % p.hmm.n_sensors), det, TRK_REAL_C(1e-6)));
+        }
+        assert_true(isfinite((double)pg.stat) && pg.stat >= 0);
+        assert_int_equal(pg.t, 1000000);
+        if (mode == 0) { /* each miss adds ln((1-1e-6)/(1-pd_mix)) >= ln(1/0.9) */
+            assert_true(pg.stat > 1e5);
+            assert_int_equal(pg.decision, 1);
+        }
+        if (mode == 1) assert_true(pg.stat == 0 && pg.decision == 0);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_fixed_pd_closed_form),
+        cmocka_unit_test(test_increments_vs_enumeration),
+        cmocka_unit_test(test_strict_and_sticky),
+        cmocka_unit_test(test_multisensor),
+        cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_shared_model),
+        cmocka_unit_test(test_long_runs),
+    };
+    return cmocka_run_group_tests_name("term_page", tests, NULL, NULL);
+}

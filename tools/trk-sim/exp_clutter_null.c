@@ -1,0 +1,261 @@
+/* exp_clutter_null.c - trk-sim clutter-null: size of Kennedy's clutter tests
+ * under their null hypothesis (Kennedy 2008 sec. 1.2-1.4): a tentative track
+ * updated by pure clutter must be confirmed at each update with probability
+ * alpha, whatever the window length K.
+ *
+ * Each scan: a Poisson(mean_peaks) number of clutter peaks, uniform in the
+ * validation region around the predicted position (a disc holding mean_peaks
+ * peaks on average; for an isotropic S = s I the Mahalanobis ordering is the
+ * Euclidean one and V_g = pi D^2 sqrt|S| = pi r^2, so rho V_g = mean_peaks *
+ * (r/R)^2 with (r/R)^2 uniform on (0, 1) for a uniform point in the disc);
+ * the track is updated with the nearest peak (eqs 4-9). Peak SNRs (dB) are
+ * a_min + (theta - a_min) Exp(1) (eq 11); the nearest peak's is a_assoc, the
+ * others' are the scan's other peaks (N_k = number of peaks - 1, varying per
+ * scan). A scan with no peak at all (probability e^-mean_peaks) is drawn
+ * again (counted). The library's trk_clutter_chi2_step / trk_clutter_amp_step
+ * run the tests; per update t the raw rejections (not the sticky decision)
+ * are counted over the runs and compared with the exact two-sided 99 %
+ * acceptance interval of Binomial(runs, alpha). The sticky decision's
+ * cumulative rate (the false-track confirmation probability by update t)
+ * is reported too: it grows past alpha because every update is a new test. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "plot.h"
+#include "progress.h"
+#include "rng.h"
+#include "sim.h"
+#include "trk/clutter_test.h"
+
+#define MAX_SCANS 1000
+#define MAX_PEAKS 4096
+
+/* Exact two-sided acceptance interval [lo, hi] of Binomial(n, p) at level
+ * 1 - 2 tail: P(X < lo) <= tail, P(X > hi) <= tail. */
+static void binom_interval(long n, double p, double tail, long *lo, long *hi)
+{
+    const double ln1 = lgamma((double)n + 1), lp = log(p), lq = log1p(-p);
+    double cdf = 0;
+    *lo = 0;
+    *hi = n;
+    int have_lo = 0;
+    for (long k = 0; k <= n; k++) {
+        const double pmf =
+            exp(ln1 - lgamma((double)k + 1) - lgamma((double)(n - k) + 1) + (double)k * lp +
+                (double)(n - k) * lq);
+        if (!have_lo && cdf + pmf > tail) { /* P(X < k) <= tail < P(X <= k) */
+            *lo = k;
+            have_lo = 1;
+        }
+        cdf += pmf;
+        if (cdf >= 1 - tail) { /* P(X > k) <= tail */
+            *hi = k;
+            return;
+        }
+    }
+}
+
+static void help(void)
+{
+    printf("trk-sim clutter-null [options]\n"
+           "  Rejection rate of Kennedy's clutter density (chi-square) and clutter amplitude (F)\n"
+           "  tests on tracks updated by pure clutter, per update t (window K = min(t, kmax)),\n"
+           "  against the exact 99%% binomial interval of alpha.\n"
+           "  --runs N         tracks (default 100000)\n"
+           "  --scans N        updates per track (default 40)\n"
+           "  --alpha A        size of both tests (default 0.01)\n"
+           "  --kmax K         window (default 25, Kennedy's)\n"
+           "  --mean-peaks M   expected clutter peaks per scan in the region (default 30)\n"
+           "  --a-min DB       detection threshold SNR (default 5)\n"
+           "  --theta DB       mean clutter SNR above threshold, theta_A (default 8)\n"
+           "  common: --seed N --out PREFIX (default clutter_null) --threads N --quiet --no-plot\n"
+           "  Writes PREFIX.csv, PREFIX.gp, PREFIX.png.\n");
+}
+
+SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate of the clutter density and amplitude tests")
+{
+    struct sim_common com;
+    sim_common_defaults(&com, "clutter_null");
+    long runs = 100000, scans = 40, kmax = 25;
+    double alpha = 0.01, mean_peaks = 30, a_min = 5, theta = 8;
+    for (int i = 1; i < argc; i++) {
+        const char *v;
+        int r;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            help();
+            return 0;
+        }
+        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
+            if (r < 0) return 2;
+            continue;
+        }
+        if ((r = sim_arg(argc, argv, &i, "--scans", &v)) != 0) {
+            if (r < 0 || sim_parse_long(v, &scans) || scans < 1 || scans > MAX_SCANS) goto bad;
+        } else if ((r = sim_arg(argc, argv, &i, "--kmax", &v)) != 0) {
+            if (r < 0 || sim_parse_long(v, &kmax) || kmax < 1 || kmax > TRK_CLUTTER_KMAX) goto bad;
+        } else if ((r = sim_arg(argc, argv, &i, "--alpha", &v)) != 0) {
+            if (r < 0 || sim_parse_double(v, &alpha) || !(alpha > 0 && alpha < 1)) goto bad;
+        } else if ((r = sim_arg(argc, argv, &i, "--mean-peaks", &v)) != 0) {
+            if (r < 0 || sim_parse_double(v, &mean_peaks) || !(mean_peaks >= 2 && mean_peaks <= 1000))
+                goto bad;
+        } else if ((r = sim_arg(argc, argv, &i, "--a-min", &v)) != 0) {
+            if (r < 0 || sim_parse_double(v, &a_min)) goto bad;
+        } else if ((r = sim_arg(argc, argv, &i, "--theta", &v)) != 0) {
+            if (r < 0 || sim_parse_double(v, &theta)) goto bad;
+        } else {
+            fprintf(stderr, "clutter-null: unknown option %s (see --help)\n", argv[i]);
+            return 2;
+        }
+        continue;
+    bad:
+        fprintf(stderr, "clutter-null: bad value for %s\n", argv[i]);
+        return 2;
+    }
+    if (com.runs > 0) runs = com.runs;
+    if (!(theta > a_min)) {
+        fprintf(stderr, "clutter-null: --theta must exceed --a-min\n");
+        return 2;
+    }
+    static struct trk_clutter_chi2_model chi_m;
+    static struct trk_clutter_amp_model amp_m;
+    const struct trk_clutter_chi2_params cp = {(trk_real)alpha, (unsigned)kmax};
+    const struct trk_clutter_amp_params ap = {(trk_real)a_min, (trk_real)alpha, (unsigned)kmax};
+    trk_status st = trk_clutter_chi2_model_init(&chi_m, &cp);
+    if (st == TRK_OK) st = trk_clutter_amp_model_init(&amp_m, &ap);
+    if (st != TRK_OK) {
+        fprintf(stderr, "clutter-null: %s\n", trk_status_str(st));
+        return 2;
+    }
+    /* counts per update: raw rejections and sticky decisions of both tests */
+    static long rej_c[MAX_SCANS], rej_a[MAX_SCANS], dec_c[MAX_SCANS], dec_a[MAX_SCANS];
+    long redrawn = 0, overflow = 0;
+    const int threads = sim_threads(&com);
+    if (!com.quiet)
+        fprintf(stderr, "clutter-null: %ld tracks x %ld updates, alpha %g, kmax %ld, %g peaks/scan, seed %llu, %d threads\n",
+            runs, scans, alpha, kmax, mean_peaks, (unsigned long long)com.seed, threads);
+    struct progress pr;
+    progress_start(&pr, "clutter-null", runs, !com.quiet);
+    const double t0 = progress_now_s();
+#pragma omp parallel
+    {
+        long lc[MAX_SCANS] = {0}, la[MAX_SCANS] = {0}, ldc[MAX_SCANS] = {0}, lda[MAX_SCANS] = {0};
+        long lred = 0, lover = 0;
+        trk_real *others = malloc(sizeof(trk_real) * MAX_PEAKS);
+        struct trk_clutter_chi2 *chi = malloc(sizeof *chi);
+        struct trk_clutter_amp *amp = malloc(sizeof *amp);
+        if (!others || !chi || !amp) abort();
+#pragma omp for schedule(dynamic, 256)
+        for (long run = 0; run < runs; run++) {
+            struct rng r;
+            rng_init(&r, com.seed, (uint64_t)run);
+            trk_clutter_chi2_reset(&chi_m, chi);
+            trk_clutter_amp_reset(&amp_m, amp);
+            for (long t = 0; t < scans; t++) {
+                unsigned long n;
+                while ((n = rng_poisson(&r, mean_peaks)) == 0) lred++;
+                if (n > MAX_PEAKS - 1) { /* not seen at sane means */
+                    n = MAX_PEAKS - 1;
+                    lover++;
+                }
+                if (n - 1 > TRK_MAX_DETECTIONS) {
+                    n = TRK_MAX_DETECTIONS + 1;
+                    lover++;
+                }
+                double dmin = 2;
+                unsigned long imin = 0;
+                for (unsigned long i = 0; i < n; i++) {
+                    const double d2 = rng_uniform(&r); /* (r/R)^2 of a uniform point */
+                    others[i] = (trk_real)(a_min + (theta - a_min) * rng_exp(&r));
+                    if (d2 < dmin) dmin = d2, imin = i;
+                }
+                const trk_real a_assoc = others[imin];
+                others[imin] = others[n - 1];
+                if (trk_clutter_chi2_step(&chi_m, chi, (trk_real)(mean_peaks * dmin)) != TRK_OK ||
+                    trk_clutter_amp_step(&amp_m, amp, a_assoc, n - 1, others) != TRK_OK)
+                    abort();
+                lc[t] += chi->reject;
+                la[t] += amp->reject;
+                ldc[t] += chi->decision;
+                lda[t] += amp->decision;
+            }
+#pragma omp critical(sim_progress)
+            progress_add(&pr, 1);
+        }
+#pragma omp critical(sim_reduce)
+        { /* integer sums: the same for any thread count */
+            for (long t = 0; t < scans; t++) {
+                rej_c[t] += lc[t];
+                rej_a[t] += la[t];
+                dec_c[t] += ldc[t];
+                dec_a[t] += lda[t];
+            }
+            redrawn += lred;
+            overflow += lover;
+        }
+        free(others);
+        free(chi);
+        free(amp);
+    }
+    progress_end(&pr);
+    const double wall = progress_now_s() - t0;
+    long lo, hi;
+    binom_interval(runs, alpha, 0.005, &lo, &hi);
+    char path[1024];
+    snprintf(path, sizeof path, "%s.csv", com.out);
+    FILE *f = plot_csv_open(path, "# clutter-null: per update t, rejections of H0 (track on clutter) over runs");
+    if (!f) return 1;
+    fprintf(f, "# runs %ld alpha %g kmax %ld mean_peaks %g a_min %g theta %g seed %llu; 99%% binomial interval [%ld, %ld]\n",
+            runs, alpha, kmax, mean_peaks, a_min, theta, (unsigned long long)com.seed, lo, hi);
+    fprintf(f, "t,K,chi2_rejects,chi2_rate,amp_rejects,amp_rate,lo_rate,hi_rate,chi2_in,amp_in,chi2_confirmed,amp_confirmed\n");
+    int out_c = 0, out_a = 0;
+    long sum_c = 0, sum_a = 0;
+    for (long t = 0; t < scans; t++) {
+        const int in_c = rej_c[t] >= lo && rej_c[t] <= hi, in_a = rej_a[t] >= lo && rej_a[t] <= hi;
+        out_c += !in_c;
+        out_a += !in_a;
+        sum_c += rej_c[t];
+        sum_a += rej_a[t];
+        fprintf(f, "%ld,%ld,%ld,%.6g,%ld,%.6g,%.6g,%.6g,%d,%d,%.6g,%.6g\n", t + 1,
+                t + 1 < kmax ? t + 1 : kmax, rej_c[t], (double)rej_c[t] / (double)runs, rej_a[t],
+                (double)rej_a[t] / (double)runs, (double)lo / (double)runs, (double)hi / (double)runs,
+                in_c, in_a, (double)dec_c[t] / (double)runs, (double)dec_a[t] / (double)runs);
+    }
+    fclose(f);
+    printf("# clutter-null: %ld tracks x %ld updates, alpha %g, kmax %ld, %.1f s wall, %d threads\n", runs,
+           scans, alpha, kmax, wall, threads);
+    printf("# exact 99%% interval of Binomial(%ld, %g): [%ld, %ld] = rate [%.5f, %.5f]\n", runs, alpha,
+           lo, hi, (double)lo / (double)runs, (double)hi / (double)runs);
+    printf("%5s %4s %10s %10s %12s %12s\n", "t", "K", "chi2 rate", "F rate", "chi2 conf<=t", "F conf<=t");
+    for (long t = 0; t < scans; t++) {
+        if (!(t < 5 || t + 1 == 10 || t + 1 == kmax || t + 1 == scans || t + 1 == kmax + 1)) continue;
+        printf("%5ld %4ld %10.5f%s %10.5f%s %12.4f %12.4f\n", t + 1, t + 1 < kmax ? t + 1 : kmax,
+               (double)rej_c[t] / (double)runs, rej_c[t] >= lo && rej_c[t] <= hi ? " " : "*",
+               (double)rej_a[t] / (double)runs, rej_a[t] >= lo && rej_a[t] <= hi ? " " : "*",
+               (double)dec_c[t] / (double)runs, (double)dec_a[t] / (double)runs);
+    }
+    printf("# mean rate over all updates: chi2 %.5f, F %.5f (alpha %g)\n",
+           (double)sum_c / (double)runs / (double)scans, (double)sum_a / (double)runs / (double)scans, alpha);
+    printf("# updates outside the 99%% interval: chi2 %d of %ld, F %d of %ld (about 1%% expected by chance)\n",
+           out_c, scans, out_a, scans);
+    if (redrawn || overflow)
+        printf("# empty scans redrawn: %ld; scans truncated to capacity: %ld\n", redrawn, overflow);
+    printf("# file: %s\n", path);
+    if (!com.no_plot) {
+        char body[8192];
+        snprintf(body, sizeof body,
+                 "set datafile separator ','\n"
+                 "set title 'Clutter tests under H0 (track on clutter): %ld tracks, alpha %g, Kmax %ld'\n"
+                 "set xlabel 'update t (window K = min(t, Kmax))'\nset ylabel 'rejection rate of H0'\n"
+                 "set grid\nset key top left\nset yrange [%g:%g]\n"
+                 "plot '%s' using 1:7 with lines dt 2 lc rgb '#888888' title '99%% binomial interval', \\\n"
+                 "     '%s' using 1:8 with lines dt 2 lc rgb '#888888' notitle, \\\n"
+                 "     '%s' using 1:4 with linespoints pt 7 lc rgb '#1f77b4' title 'density test (chi2)', \\\n"
+                 "     '%s' using 1:6 with linespoints pt 5 lc rgb '#d62728' title 'amplitude test (F)'\n",
+                 runs, alpha, kmax, 0.9 * (double)lo / (double)runs, 1.1 * (double)hi / (double)runs,
+                 path, path, path, path);
+        plot_gnuplot(com.out, body);
+    }
+    return 0;
+}
