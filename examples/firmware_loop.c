@@ -84,7 +84,7 @@ int main(void)
     params.term.u.kn.n = 6;
     params.max_tentative_scans = 5;
 
-    if (trk_config_check() != TRK_OK) return 2; /* header/library mismatch */
+    if (trk_tracker_abi_check() != TRK_OK) return 2; /* header/library mismatch */
     trk_status st = trk_tracker_init(&tracker, &params);
     if (st != TRK_OK) {
         printf("trk_tracker_init: %s\n", trk_status_str(st));

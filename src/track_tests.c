@@ -50,7 +50,7 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
 void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
 {
     const union trk_confirm_model *m = &t->confirm_model;
-    union trk_confirm_state *c = &tr->confirm;
+    union trk_confirm_state *c = &tr->test.confirm;
     tr->confirm_stat = 0;
     switch (t->params.confirm.method) {
     case TRK_CONFIRM_MN: trk_mn_reset(&m->mn, &c->mn); break;
@@ -73,7 +73,7 @@ int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
                        const struct trk_look *look)
 {
     const union trk_confirm_model *m = &t->confirm_model;
-    union trk_confirm_state *c = &tr->confirm;
+    union trk_confirm_state *c = &tr->test.confirm;
     switch (t->params.confirm.method) {
     case TRK_CONFIRM_MN:
         (void)trk_mn_step(&m->mn, &c->mn, look->detected);
@@ -107,7 +107,7 @@ int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
 void trk_i_term_start(const struct trk_tracker *t, struct trk_track *tr)
 {
     const union trk_term_model *m = &t->term_model;
-    union trk_term_state *e = &tr->term;
+    union trk_term_state *e = &tr->test.term;
     tr->term_stat = 0;
     switch (t->params.term.method) {
     case TRK_TERM_KN: trk_kn_reset(&m->kn, &e->kn); break;
@@ -124,7 +124,7 @@ int trk_i_term_step(const struct trk_tracker *t, struct trk_track *tr,
                     const struct trk_look *look)
 {
     const union trk_term_model *m = &t->term_model;
-    union trk_term_state *e = &tr->term;
+    union trk_term_state *e = &tr->test.term;
     const int pfa_ok = look->pfa_gate > 0 && look->pfa_gate < 1;
     switch (t->params.term.method) {
     case TRK_TERM_KN:

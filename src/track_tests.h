@@ -1,7 +1,7 @@
 /* track_tests.h (private) - the tracker's dispatch to the per-track
  * confirmation and termination tests chosen in its configuration. The
  * tracker holds each chosen test's model once (confirm_model, term_model);
- * every track holds only its state (tr->confirm, tr->term). Adding a method:
+ * every track holds only its state (tr->test.confirm, then tr->test.term). Adding a method:
  * a case in each function of track_tests.c, a member of the state and model
  * unions in trk/tracker.h, and its parameter check. */
 #ifndef TRK_TRACK_TESTS_H

@@ -108,6 +108,8 @@ const struct trk_track *trk_tracker_track(const struct trk_tracker *t, size_t sl
 
 size_t trk_tracker_live_count(const struct trk_tracker *t) { return t ? t->n_live : 0; }
 
+size_t trk_tracker_sizeof(void) { return sizeof(struct trk_tracker); }
+
 /* ------------------------------------------------------------------ scan */
 
 /* TRK_OK for a usable detection, else why not: TRK_E_NAN non-finite

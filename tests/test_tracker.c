@@ -229,6 +229,7 @@ static void test_bad_input(void **state)
 static void test_bad_params(void **state)
 {
     (void)state;
+    TRK_ASSERT_OK(trk_tracker_abi_check());
     struct trk_tracker_params p;
     base_params(&p);
     p.n_sensors = 0;
@@ -436,11 +437,11 @@ static void test_methods_lifecycle(void **state)
                 assert_int_equal(tr->id, id);
                 if (tr->status == TRK_TRACK_TENTATIVE) {
                     switch (cm) {
-                    case TRK_CONFIRM_MN: assert_true(tr->confirm_stat == tr->confirm.mn.count); break;
-                    case TRK_CONFIRM_SPRT: assert_true(tr->confirm_stat == tr->confirm.sprt.stat); break;
+                    case TRK_CONFIRM_MN: assert_true(tr->confirm_stat == tr->test.confirm.mn.count); break;
+                    case TRK_CONFIRM_SPRT: assert_true(tr->confirm_stat == tr->test.confirm.sprt.stat); break;
 #if TRK_WITH_CLUTTER_TESTS
-                    case TRK_CONFIRM_CLUTTER_CHI2: assert_true(tr->confirm_stat == tr->confirm.chi2.p_value); break;
-                    case TRK_CONFIRM_CLUTTER_AMP: assert_true(tr->confirm_stat == tr->confirm.amp.p_value); break;
+                    case TRK_CONFIRM_CLUTTER_CHI2: assert_true(tr->confirm_stat == tr->test.confirm.chi2.p_value); break;
+                    case TRK_CONFIRM_CLUTTER_AMP: assert_true(tr->confirm_stat == tr->test.confirm.amp.p_value); break;
 #endif
                     default: break;
                     }
@@ -450,10 +451,10 @@ static void test_methods_lifecycle(void **state)
                     confirmed_at = k;
                     /* the termination state was just reset from the model */
                     switch (tm) {
-                    case TRK_TERM_KN: assert_true(tr->term.kn.t == 0 && tr->term_stat == 0); break;
-                    case TRK_TERM_PAGE: assert_true(tr->term.page.t == 0 && tr->term_stat == 0); break;
+                    case TRK_TERM_KN: assert_true(tr->test.term.kn.t == 0 && tr->term_stat == 0); break;
+                    case TRK_TERM_PAGE: assert_true(tr->test.term.page.t == 0 && tr->term_stat == 0); break;
                     case TRK_TERM_SHIRYAEV:
-                        assert_true(tr->term.shiryaev.t == 0);
+                        assert_true(tr->test.term.shiryaev.t == 0);
                         assert_true(tr->term_stat == tk.term_model.shiryaev.g0);
                         TRK_ASSERT_NEAR(tr->term_stat, log(0.01 / 0.99), 0, TRK_TOL(1e-14, 1e-6));
                         break;

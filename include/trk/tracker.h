@@ -205,8 +205,10 @@ struct trk_track {
                                          M/N count, SPRT log-LR, clutter-test p-value */
     trk_real term_stat;               /* current statistic of the termination test:
                                          K/N count, Page c_t, Shiryaev log-odds g_t */
-    union trk_confirm_state confirm;  /* see confirm_method; valid while tentative */
-    union trk_term_state term;        /* see term_method; valid once confirmed */
+    union {                           /* a track needs one test at a time: */
+        union trk_confirm_state confirm; /* while tentative (params.confirm.method) */
+        union trk_term_state term;       /* once confirmed (params.term.method) */
+    } test;
 };
 
 /* ---------------------------------------------------------------- report */
@@ -280,6 +282,17 @@ const struct trk_track *trk_tracker_track(const struct trk_tracker *t, size_t sl
 
 /* Number of slots in use (tentative, confirmed or terminated-this-scan). */
 size_t trk_tracker_live_count(const struct trk_tracker *t);
+
+/* sizeof(struct trk_tracker) as the library was built. */
+size_t trk_tracker_sizeof(void);
+
+/* TRK_OK when the library was built with the capacities, real type and
+ * options (TRK_WITH_CLUTTER_TESTS, TRK_CLUTTER_KMAX, ...) that this
+ * translation unit sees: call it once at start-up. */
+#define trk_tracker_abi_check()                                                        \
+    ((trk_config_check() == TRK_OK && trk_tracker_sizeof() == sizeof(struct trk_tracker)) \
+         ? TRK_OK                                                                      \
+         : TRK_E_ARG)
 
 /* ---------------------------------------------------------------- helpers */
 
