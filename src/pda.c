@@ -61,7 +61,7 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
     trk_real beta0 = 1;
     if (n_hyp > 0) {
         trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS], pc[TRK_MAX_STATE * TRK_MAX_STATE];
-        beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, lambda), m, beta);
+        beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, lambda), m, beta, NULL);
         trk_i_gain(nx, nz, pht, inn.s_chol_inv, k);
         trk_i_joseph(nx, nz, h, r, k, p, pc);
         for (int i = 0; i < nx * nx; i++) pc[i] *= 1 - beta0;

@@ -29,22 +29,25 @@ TRK_INLINE trk_real trk_i_pda_log_e0(const struct trk_pda *pda, trk_real lambda)
 
 /* Normalise in the log domain: log_e0 and log_w[0..n) (in) -> beta0 and
  * w[0..n) = beta_i (out, in place). When every weight is zero (e.g. no
- * detection and lambda = 0) beta0 = 1. */
-TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w)
+ * detection and lambda = 0) beta0 = 1. If log_sum_meas is not NULL it gets
+ * ln sum_i e_i over the detections (-inf when there are none). */
+TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, trk_real *log_sum_meas)
 {
     trk_real mx = log_e0;
     for (size_t i = 0; i < n; i++)
         if (w[i] > mx) mx = w[i];
     if (!(mx > -TRK_REAL_MAX)) { /* all -inf */
         for (size_t i = 0; i < n; i++) w[i] = 0;
+        if (log_sum_meas) *log_sum_meas = -(trk_real)INFINITY;
         return 1;
     }
-    trk_real e0 = trk_exp(log_e0 - mx), sum = e0;
+    trk_real e0 = trk_exp(log_e0 - mx), sum_meas = 0;
     for (size_t i = 0; i < n; i++) {
         w[i] = trk_exp(w[i] - mx);
-        sum += w[i];
+        sum_meas += w[i];
     }
-    trk_real inv = 1 / sum;
+    if (log_sum_meas) *log_sum_meas = sum_meas > 0 ? mx + trk_log(sum_meas) : -(trk_real)INFINITY;
+    trk_real inv = 1 / (e0 + sum_meas);
     for (size_t i = 0; i < n; i++) w[i] *= inv;
     return e0 * inv;
 }

@@ -28,6 +28,7 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
     case TRK_CONFIRM_CLUTTER_CHI2:
     case TRK_CONFIRM_CLUTTER_AMP: return TRK_E_UNSUPPORTED;
 #endif
+    case TRK_CONFIRM_VISIBILITY: st = p->track_visibility ? TRK_OK : TRK_E_ARG; break;
     default: return TRK_E_ARG;
     }
     if (st != TRK_OK) return st;
@@ -35,6 +36,7 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
     case TRK_TERM_KN: st = trk_kn_model_init(&e->kn, &p->term.u.kn); break;
     case TRK_TERM_PAGE: st = trk_page_model_init(&e->page, &p->term.u.page); break;
     case TRK_TERM_SHIRYAEV: st = trk_shiryaev_model_init(&e->shiryaev, &p->term.u.shiryaev); break;
+    case TRK_TERM_VISIBILITY: st = p->track_visibility ? TRK_OK : TRK_E_ARG; break;
     default: return TRK_E_ARG;
     }
     if (st != TRK_OK) return st;
@@ -65,6 +67,7 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
         tr->confirm_stat = c->amp.p_value;
         break;
 #endif
+    case TRK_CONFIRM_VISIBILITY: tr->confirm_stat = tr->vis.pcv; break;
     default: break;
     }
 }
@@ -99,6 +102,9 @@ int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
         tr->confirm_stat = c->amp.p_value;
         return c->amp.decision;
 #endif
+    case TRK_CONFIRM_VISIBILITY: /* tr->vis was updated with this scan */
+        tr->confirm_stat = tr->vis.pcv;
+        return tr->vis.confirmed;
     default: break;
     }
     return 0;
@@ -116,6 +122,7 @@ void trk_i_term_start(const struct trk_tracker *t, struct trk_track *tr)
         trk_shiryaev_reset(&m->shiryaev, &e->shiryaev);
         tr->term_stat = e->shiryaev.stat; /* g_0 */
         break;
+    case TRK_TERM_VISIBILITY: tr->term_stat = tr->vis.pcv; break;
     default: break;
     }
 }
@@ -143,6 +150,9 @@ int trk_i_term_step(const struct trk_tracker *t, struct trk_track *tr,
                                           look->detected, look->pfa_gate));
         tr->term_stat = e->shiryaev.stat;
         return e->shiryaev.decision;
+    case TRK_TERM_VISIBILITY:
+        tr->term_stat = tr->vis.pcv;
+        return tr->vis.terminated;
     default: break;
     }
     return 0;

@@ -5,6 +5,8 @@
  * compiler unrolls the small matrix loops. */
 #include "trk/tracker.h"
 
+#include <string.h>
+
 #include "pda_impl.h"
 #include "trk/gate.h"
 #include "track_tests.h"
@@ -34,6 +36,14 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     d.term.u.kn.k = 0;
     d.term.u.kn.n = 5;
     d.max_tentative_scans = 0;
+    d.track_visibility = 1; /* Kennedy's Table 1 style IPDA parameters */
+    d.visibility.pv0 = TRK_REAL_C(0.5);
+    d.visibility.pcv0 = TRK_REAL_C(0.5);
+    d.visibility.delta_stay = TRK_REAL_C(0.99);
+    d.visibility.delta_become = TRK_REAL_C(0.01);
+    d.visibility.omega_c = TRK_REAL_C(0.75);
+    d.visibility.p_con = TRK_REAL_C(0.9);
+    d.visibility.p_term = TRK_REAL_C(0.1);
     *p = d;
 }
 
@@ -66,7 +76,15 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
         const struct trk_sensor_params *sp = &p->sensor[s];
         struct trk_pda_params pp;
         pp.nz = NZ;
-        pp.pd = sp->pd;
+        if (sp->use_amplitude != 0 && sp->use_amplitude != 1) return TRK_E_ARG;
+        if (sp->use_amplitude) {
+            /* PDAFAI: P_D at the amplitude threshold (CONVENTIONS "PDA") */
+            const trk_real t_a = trk_amplitude_threshold(&sp->amplitude);
+            if (!(t_a >= 0 && t_a <= TRK_REAL_MAX)) return TRK_E_ARG; /* not an initialised model */
+            pp.pd = trk_amplitude_pd(&sp->amplitude);
+        } else {
+            pp.pd = sp->pd;
+        }
         pp.gate_prob = p->gate_prob;
         pp.clutter = p->clutter;
         pp.clutter_density = sp->clutter_density_per_m2;
@@ -78,12 +96,19 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     }
     union trk_confirm_model confirm_model;
     union trk_term_model term_model;
+    struct trk_visibility_model vis_model;
+    if (p->track_visibility != 0 && p->track_visibility != 1) return TRK_E_ARG;
+    if (p->track_visibility) {
+        trk_status vst = trk_visibility_model_init(&vis_model, &p->visibility);
+        if (vst != TRK_OK) return vst;
+    }
     trk_status st = trk_i_tests_init(p, &confirm_model, &term_model);
     if (st != TRK_OK) return st;
 
     t->params = *p;
     t->confirm_model = confirm_model;
     t->term_model = term_model;
+    if (p->track_visibility) t->vis_model = vis_model;
     for (unsigned s = 0; s < p->n_sensors; s++) {
         t->pda[s] = pda[s];
         for (int i = 0; i < NZ * NZ; i++) t->r[s][i] = r[s][i];
@@ -146,6 +171,7 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan,
         }
     }
     *n_shared = n;
+    size_t n_shared_kept = 0;
     for (size_t i = 0; any_own && i < scan->n_detections; i++) {
         const struct trk_detection *d = &scan->detections[i];
         if (!d->has_cov || check_detection(d) != TRK_OK) continue;
@@ -155,16 +181,40 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan,
         n++;
     }
     size_t n_amp = 0;
+    const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
+    /* amplitudes in dB against the mean clutter power for the clutter test */
+    const trk_real amp_ref = sp->use_amplitude ? sp->amplitude.clutter_power : 1;
+    size_t kept = 0;
     for (size_t k = 0; k < n; k++) {
         const struct trk_detection *d = &scan->detections[t->ws.src[k]];
-        t->ws.used[k] = 0;
-        t->ws.log_lr[k] = 0; /* positions only: l^a = 1 */
-        t->ws.amp_pos[k] = -1;
-        if (d->has_amplitude && d->amplitude > 0) { /* dB for the clutter-amplitude test */
-            t->ws.amp_db[n_amp] = TRK_REAL_C(20.0) * trk_log10(d->amplitude);
-            t->ws.amp_pos[k] = (int16_t)n_amp++;
+        trk_real llr = 0; /* positions only: l^a = 1 */
+        if (sp->use_amplitude && d->has_amplitude) {
+            /* PDAFAI: ln l^a of this detection, once per scan (Brekke eqs 19-20) */
+            trk_status st = trk_amplitude_log_lr(&sp->amplitude, d->amplitude, &llr);
+            if (st == TRK_E_RANGE) { /* below the detection threshold */
+                rep->n_below_threshold++;
+                continue;
+            }
+            if (st != TRK_OK) {
+                rep->n_rejected_amplitude++;
+                continue;
+            }
         }
+        t->ws.x[kept] = t->ws.x[k];
+        t->ws.y[kept] = t->ws.y[k];
+        t->ws.src[kept] = t->ws.src[k];
+        t->ws.used[kept] = 0;
+        t->ws.log_lr[kept] = llr;
+        t->ws.amp_pos[kept] = -1;
+        if (d->has_amplitude && d->amplitude > 0) {
+            t->ws.amp_db[n_amp] = TRK_REAL_C(20.0) * trk_log10(d->amplitude) - TRK_REAL_C(10.0) * trk_log10(amp_ref);
+            t->ws.amp_pos[kept] = (int16_t)n_amp++;
+        }
+        if (k < *n_shared) n_shared_kept++;
+        kept++;
     }
+    n = kept;
+    *n_shared = n_shared_kept;
     t->ws.n_amp = n_amp;
     *n_valid = n;
 }
@@ -242,7 +292,8 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
     const trk_real lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC
                                 ? pda->params.clutter_density
                                 : (trk_real)n / vg;
-    trk_real beta0 = n ? trk_i_pda_normalise(trk_i_pda_log_e0(pda, lambda), n, t->ws.w) : 1;
+    trk_real log_sum_e = -(trk_real)INFINITY; /* ln sum_i e_i, for the visibility */
+    trk_real beta0 = n ? trk_i_pda_normalise(trk_i_pda_log_e0(pda, lambda), n, t->ws.w, &log_sum_e) : 1;
 
     /* pc_sum = sum_i beta_i P_c,i (Joseph form) */
     trk_real pc_sum[NX * NX] = {0};
@@ -281,8 +332,20 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
     for (int i = 0; i < NX * NX; i++)
         if (!isfinite(pn[i])) return -1;
     if (!(pn[0] > 0 && pn[5] > 0 && pn[10] > 0 && pn[15] > 0)) return -1;
+    struct trk_visibility vis_out = tr->vis;
+    if (t->params.track_visibility) {
+        /* Kennedy eqs 21-24: ln sum_i (g_D,i / rho) l_i = ln sum_i e_i - ln P_D - ln lambda
+         * (e_i = P_D g_D,i l_i are the PDA weights; lambda = 0: +inf, a certain detection) */
+        trk_real log_sum = log_sum_e;
+        if (n > 0) log_sum = lambda > 0 ? log_sum_e - trk_log(pda->params.pd) - trk_log(lambda) : (trk_real)INFINITY;
+        struct trk_visibility v = vis_out;
+        if (trk_visibility_update_log(&t->vis_model, &v, pda->params.pd, pda->params.gate_prob, log_sum) != TRK_OK)
+            return -1;
+        vis_out = v;
+    }
 
     for (size_t i = 0; i < n; i++) t->ws.used[t->ws.cand[i]] = 1;
+    tr->vis = vis_out;
     for (int i = 0; i < NX; i++) tr->x[i] = xn[i];
     for (int i = 0; i < NX * NX; i++) tr->p[i] = pn[i];
     tr->time_us = scan->time_us;
@@ -367,6 +430,8 @@ static void start_track(struct trk_tracker *t, struct trk_track *tr, const struc
     tr->n_gated_last = 1;
     tr->beta0_last = 0;
     tr->term_stat = 0;
+    if (t->params.track_visibility) trk_visibility_reset(&t->vis_model, &tr->vis);
+    else memset(&tr->vis, 0, sizeof tr->vis);
     trk_i_confirm_start(t, tr);
 }
 

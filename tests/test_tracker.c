@@ -505,6 +505,119 @@ static void test_two_sensors(void **state)
     TRK_ASSERT_NEAR(t0->x[3], -1.0, 0.05, 0);
 }
 
+
+/* PDAFAI inside the tracker: a sensor with a Rayleigh amplitude model. The
+ * track update equals trk_cv2_predict + trk_pda_update with the model's P_D
+ * and each detection's ln l^a; detections below the threshold and with bad
+ * amplitudes are rejected and counted. */
+static void test_amplitude_pdafai(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.sensor[0].use_amplitude = 1;
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, 15, TRK_REAL_C(1e-2)));
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const trk_real thr = trk_amplitude_threshold(&p.sensor[0].amplitude);
+    struct trk_detection d[5];
+    memset(d, 0, sizeof d);
+    d[0].has_amplitude = 1;
+    d[0].amplitude = 4 * thr;
+    struct trk_scan s0 = {SEC(0), 0, 1, d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
+    const struct trk_track *tr = trk_tracker_track(&tk, 0);
+    assert_non_null(tr);
+    trk_real x[4], pm[16];
+    memcpy(x, tr->x, sizeof x);
+    memcpy(pm, tr->p, sizeof pm);
+    /* scan 1: two detections in the gate, one strong, one weak; one below the
+     * threshold, one NaN amplitude, one negative */
+    for (int i = 0; i < 5; i++) d[i].has_amplitude = 1;
+    d[0].x_m = TRK_REAL_C(1.0);
+    d[0].y_m = TRK_REAL_C(0.5);
+    d[0].amplitude = 3 * thr;
+    d[1].x_m = TRK_REAL_C(-1.0);
+    d[1].y_m = TRK_REAL_C(-0.5);
+    d[1].amplitude = TRK_REAL_C(1.05) * thr;
+    d[2].amplitude = TRK_REAL_C(0.5) * thr;
+    d[3].amplitude = NAN;
+    d[4].amplitude = -1;
+    struct trk_scan s1 = {SEC(1), 0, 5, d};
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &rep));
+    assert_int_equal(rep.n_below_threshold, 1);
+    assert_int_equal(rep.n_rejected_amplitude, 2);
+    assert_int_equal(rep.n_started, 0);
+    /* reference: the public one-track functions */
+    struct trk_pda pda;
+    struct trk_pda_params pp = {2, trk_amplitude_pd(&p.sensor[0].amplitude), p.gate_prob,
+                                TRK_CLUTTER_PARAMETRIC, p.sensor[0].clutter_density_per_m2, 1};
+    TRK_ASSERT_OK(trk_pda_init(&pda, &pp));
+    const trk_real r[4] = {1, 0, 0, 1}, z[4] = {d[0].x_m, d[0].y_m, d[1].x_m, d[1].y_m};
+    trk_real lr[2], beta[2];
+    TRK_ASSERT_OK(trk_amplitude_log_lr(&p.sensor[0].amplitude, d[0].amplitude, &lr[0]));
+    TRK_ASSERT_OK(trk_amplitude_log_lr(&p.sensor[0].amplitude, d[1].amplitude, &lr[1]));
+    struct trk_pda_report prep;
+    TRK_ASSERT_OK(trk_cv2_predict(1, p.process_noise_q, x, pm));
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, r, x, pm, 2, z, lr, beta, NULL, &prep));
+    assert_true(beta[0] > beta[1]); /* the strong detection weighs more */
+    TRK_ASSERT_NEAR(tr->beta0_last, prep.beta0, TRK_TOL(1e-14, 1e-6), TRK_TOL(1e-12, 1e-5));
+    for (int i = 0; i < 4; i++) TRK_ASSERT_NEAR(tr->x[i], x[i], TRK_TOL(1e-12, 1e-5), TRK_TOL(1e-12, 1e-5));
+    for (int i = 0; i < 16; i++) TRK_ASSERT_NEAR(tr->p[i], pm[i], TRK_TOL(1e-12, 1e-5), TRK_TOL(1e-12, 1e-5));
+    /* an uninitialised amplitude model is refused */
+    base_params(&p);
+    p.sensor[0].use_amplitude = 1;
+    memset(&p.sensor[0].amplitude, 0, sizeof p.sensor[0].amplitude);
+    p.sensor[0].amplitude.threshold = NAN;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_ARG);
+}
+
+/* Visibility confirmation and termination: a steady target's confidence
+ * rises to p_con and confirms it; after it vanishes the confidence falls
+ * below p_term and the track ends. Existence is visible on every track. */
+static void test_visibility_methods(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
+    p.confirm.method = TRK_CONFIRM_VISIBILITY;
+    p.term.method = TRK_TERM_VISIBILITY;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    int confirmed_at = -1, ended_at = -1;
+    trk_real pcv_prev = p.visibility.pcv0;
+    for (int k = 0; k < 40; k++) {
+        d.x_m = (trk_real)(2.0 * k);
+        struct trk_scan s = {SEC(k), 0, k < 15 ? 1u : 0u, &d};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+        check_invariants(&tk);
+        const struct trk_track *tr = trk_tracker_track(&tk, 0);
+        if (!tr) break;
+        assert_true(tr->vis.pv >= 0 && tr->vis.pv <= 1 && tr->vis.pcv >= 0 && tr->vis.pcv <= 1);
+        if (k > 0 && k < 15) assert_true(tr->vis.pcv >= pcv_prev); /* detections raise it */
+        if (k >= 15 && tr->status != TRK_TRACK_TERMINATED) assert_true(tr->vis.pcv <= pcv_prev);
+        pcv_prev = tr->vis.pcv;
+        if (confirmed_at < 0 && tr->status == TRK_TRACK_CONFIRMED) {
+            confirmed_at = k;
+            assert_true(tr->vis.pcv >= p.visibility.p_con);
+        }
+        if (tr->status == TRK_TRACK_TERMINATED) {
+            ended_at = k;
+            assert_int_equal(tr->end_reason, TRK_END_TERMINATED);
+            assert_true(tr->term_stat < p.visibility.p_term);
+            break;
+        }
+    }
+    assert_true(confirmed_at > 0 && confirmed_at < 15);
+    assert_true(ended_at > 15);
+    /* the visibility methods need visibility tracking */
+    p.track_visibility = 0;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_ARG);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -517,6 +630,8 @@ int main(void)
         cmocka_unit_test(test_polar),
         cmocka_unit_test(test_two_sensors),
         cmocka_unit_test(test_methods_lifecycle),
+        cmocka_unit_test(test_amplitude_pdafai),
+        cmocka_unit_test(test_visibility_methods),
     };
     return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
 }

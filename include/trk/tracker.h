@@ -30,6 +30,7 @@
 #ifndef TRK_TRACKER_H
 #define TRK_TRACKER_H
 
+#include "trk/amplitude.h"
 #include "trk/clutter_test.h"
 #include "trk/confirm_mn.h"
 #include "trk/confirm_sprt.h"
@@ -39,6 +40,7 @@
 #include "trk/term_page.h"
 #include "trk/term_shiryaev.h"
 #include "trk/types.h"
+#include "trk/visibility.h"
 
 /* ---------------------------------------------------------------- inputs */
 
@@ -65,9 +67,21 @@ struct trk_scan {
 /* ---------------------------------------------------------------- configuration */
 
 struct trk_sensor_params {
-    trk_real pd;                      /* detection probability of a target, (0, 1] */
+    trk_real pd;                      /* detection probability of a target, (0, 1];
+                                         with an amplitude model its P_D is used */
     trk_real meas_cov_m2[3];          /* default measurement covariance [xx, xy, yy], SPD */
-    trk_real clutter_density_per_m2;  /* lambda for parametric clutter, >= 0 */
+    trk_real clutter_density_per_m2;  /* lambda for parametric clutter (and the clutter
+                                         tests' rho), >= 0 */
+    /* Amplitude-aided association (PDAFAI, Brekke eqs 19-25): when
+     * use_amplitude is 1 each detection's weight is multiplied by
+     * l^a(amplitude) of this model (trk_amplitude_init_rayleigh or
+     * trk_amplitude_init_table); P_D becomes the model's P_D at its threshold.
+     * A detection below the threshold, or with a NaN/negative amplitude, is
+     * rejected and counted; one without an amplitude is used by position only.
+     * A table-backed model points into the table's bytes: they must outlive
+     * the tracker. */
+    int use_amplitude;
+    struct trk_amplitude amplitude;
 };
 
 /* Confirmation of a tentative track (one method per tracker). */
@@ -75,8 +89,10 @@ enum trk_confirm_method {
     TRK_CONFIRM_MN = 0,          /* M-of-N (confirm_mn.h) */
     TRK_CONFIRM_SPRT = 1,        /* Wald SPRT on detections (confirm_sprt.h) */
     TRK_CONFIRM_CLUTTER_CHI2 = 2,/* Kennedy clutter-density test (clutter_test.h) */
-    TRK_CONFIRM_CLUTTER_AMP = 3  /* Kennedy clutter-amplitude test (clutter_test.h);
+    TRK_CONFIRM_CLUTTER_AMP = 3, /* Kennedy clutter-amplitude test (clutter_test.h);
                                     both need TRK_WITH_CLUTTER_TESTS (config.h) */
+    TRK_CONFIRM_VISIBILITY = 4   /* visibility confidence pcv >= p_con (visibility.h);
+                                    needs track_visibility */
 };
 
 struct trk_confirm_params {
@@ -93,7 +109,8 @@ struct trk_confirm_params {
 enum trk_term_method {
     TRK_TERM_KN = 0,      /* K-of-N (term_kn.h); K = 0 is "N consecutive misses" */
     TRK_TERM_PAGE = 1,    /* Page CUSUM with the fluctuating-P_D HMM (term_page.h) */
-    TRK_TERM_SHIRYAEV = 2 /* Shiryaev rule with the same HMM (term_shiryaev.h) */
+    TRK_TERM_SHIRYAEV = 2, /* Shiryaev rule with the same HMM (term_shiryaev.h) */
+    TRK_TERM_VISIBILITY = 3 /* visibility confidence pcv < p_term (visibility.h) */
 };
 
 struct trk_term_params {
@@ -147,6 +164,12 @@ struct trk_tracker_params {
     trk_real init_speed_sigma_mps;                    /* velocity prior std per axis, > 0 */
     trk_real max_dt_s;                                /* longest gap between scans, (0, 1e9];
                                                          a larger gap is refused (TRK_E_RANGE) */
+    /* Visibility (IPDA existence, Kennedy eqs 1-2, 21-24), updated for every
+     * track each scan with its PDA weights (amplitude included) when
+     * track_visibility is 1; required by the visibility confirmation and
+     * termination methods. */
+    int track_visibility;
+    struct trk_visibility_params visibility;
     struct trk_confirm_params confirm;                /* tentative -> confirmed / rejected */
     struct trk_term_params term;                      /* confirmed -> terminated */
     uint32_t max_tentative_scans;                     /* drop a tentative track after this
@@ -201,6 +224,7 @@ struct trk_track {
     uint32_t n_misses_in_row;         /* consecutive scans without */
     uint16_t n_gated_last;            /* detections in the gate at the last scan */
     trk_real beta0_last;              /* P(no detection is the target's), last scan */
+    struct trk_visibility vis;        /* visibility / existence (pv, pcv), when tracked */
     trk_real confirm_stat;            /* current statistic of the confirmation test:
                                          M/N count, SPRT log-LR, clutter-test p-value */
     trk_real term_stat;               /* current statistic of the termination test:
@@ -218,6 +242,7 @@ struct trk_scan_report {
     uint32_t n_rejected_nonfinite;  /* NaN/inf position or covariance */
     uint32_t n_rejected_cov;        /* own covariance not SPD */
     uint32_t n_rejected_amplitude;  /* amplitude NaN, infinite or negative */
+    uint32_t n_below_threshold;     /* amplitude below the sensor's detection threshold */
     uint32_t n_tracks_updated;      /* live tracks predicted and updated */
     uint32_t n_tracks_hit;          /* ... with at least one detection gated */
     uint32_t n_started;             /* new tentative tracks */
@@ -238,6 +263,7 @@ struct trk_tracker {
     int has_time;                               /* a scan has been processed */
     uint32_t next_id;
     uint32_t n_live;                            /* tentative + confirmed + terminated */
+    struct trk_visibility_model vis_model;
     union trk_confirm_model confirm_model;      /* the tests' validated parameters and */
     union trk_term_model term_model;            /* derived constants, shared by all tracks */
     struct trk_track track[TRK_MAX_TRACKS];

@@ -1,0 +1,36 @@
+# mk/tables.mk - amplitude tables made by trk-tablegen (issue 4).
+#
+#   make tables   the default amplitude tables into $(BUILD)/tables/:
+#                 K clutter nu = 1 and nu = 8 (Brekke's setting) and Rayleigh,
+#                 SNR 15 dB, P_FA 1e-4, 1e-3, 1e-2, 1e-1, each checked with
+#                 `trk-tablegen info` (the library's loader) after writing
+#   $(GEN)/amp_table_data.h  the C-array table of examples/amp_table_firmware.c,
+#                 generated in the build's own real width (float builds get a
+#                 float table)
+TABLES_DIR := $(BUILD)/tables
+TABLE_SNR_DB := 15
+TABLE_PFAS := 1e-4 1e-3 1e-2 1e-1
+TABLEGEN := $(BUILD)/bin/trk-tablegen
+
+# $(1) file stem, $(2) model options, $(3) pfa
+define AMP_TABLE_rule
+$(TABLES_DIR)/amp_$(1)_snr$(TABLE_SNR_DB)_pfa$(3).tbl: $(TABLEGEN)
+	@mkdir -p $$(@D)
+	@$(TABLEGEN) amp $(2) --snr-db $(TABLE_SNR_DB) --pfa $(3) -o $$@ || { rm -f $$@; exit 1; }
+	@$(TABLEGEN) info $$@ > /dev/null || { echo "$$@: rejected by trk-tablegen info"; rm -f $$@; exit 1; }
+AMP_TABLES += $(TABLES_DIR)/amp_$(1)_snr$(TABLE_SNR_DB)_pfa$(3).tbl
+endef
+AMP_TABLES :=
+$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,k1,--clutter k --nu 1,$(p))))
+$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,k8,--clutter k --nu 8,$(p))))
+$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,rayleigh,--clutter rayleigh,$(p))))
+
+.PHONY: tables
+tables: $(AMP_TABLES)
+	@echo "tables: $(words $(AMP_TABLES)) amplitude tables in $(TABLES_DIR)"
+
+$(GEN)/amp_table_data.h: $(TABLEGEN)
+	@mkdir -p $(@D)
+	$(TABLEGEN) amp --clutter k --nu 1 --snr-db 15 --pfa 1e-3 --format c --name amp_table -o $@.tmp > /dev/null
+	mv $@.tmp $@
+$(BUILD)/obj/examples/amp_table_firmware.o: $(GEN)/amp_table_data.h

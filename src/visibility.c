@@ -1,0 +1,103 @@
+/* visibility.c - IPDA target visibility of one track (trk/visibility.h;
+ * Kennedy 2008 eqs 1-2, 21-24; CONVENTIONS "Visibility (IPDA)"). */
+#include "trk/visibility.h"
+
+static int prob(trk_real p) { return p >= 0 && p <= 1; }
+
+trk_status trk_visibility_model_init(struct trk_visibility_model *m, const struct trk_visibility_params *p)
+{
+    if (!m || !p) return TRK_E_ARG;
+    if (!isfinite(p->pv0) || !isfinite(p->pcv0) || !isfinite(p->delta_stay) || !isfinite(p->delta_become) ||
+        !isfinite(p->omega_c) || !isfinite(p->p_con) || !isfinite(p->p_term))
+        return TRK_E_NAN;
+    if (!(p->pv0 > 0 && p->pv0 < 1) || !prob(p->pcv0) || !prob(p->delta_stay) || !prob(p->delta_become) ||
+        !(p->omega_c >= 0 && p->omega_c < 1) || !(p->p_con > 0 && p->p_con <= 1) ||
+        !(p->p_term >= 0 && p->p_term < p->p_con))
+        return TRK_E_RANGE;
+    m->params = *p;
+    return TRK_OK;
+}
+
+void trk_visibility_reset(const struct trk_visibility_model *m, struct trk_visibility *v)
+{
+    if (!m || !v) return;
+    v->pv_pred = m->params.pv0;
+    v->pv = m->params.pv0;
+    v->pcv = m->params.pcv0;
+    v->confirmed = 0;
+    v->terminated = 0;
+    v->scans = 0;
+}
+
+/* ln(e^a + e^b) */
+static trk_real log_add(trk_real a, trk_real b)
+{
+    if (a < b) {
+        trk_real t = a;
+        a = b;
+        b = t;
+    }
+    if (b == -(trk_real)INFINITY) return a;
+    return a + trk_log1p(trk_exp(b - a));
+}
+
+trk_status trk_visibility_update_log(const struct trk_visibility_model *m, struct trk_visibility *v,
+                                     trk_real pd, trk_real pg, trk_real log_sum)
+{
+    if (!m || !v) return TRK_E_ARG;
+    /* log_sum = +inf (a detection where the clutter density is 0) is a
+     * certain detection: Lam = inf, pv = 1 unless pv_pred = 0 */
+    if (!isfinite(pd) || !isfinite(pg) || isnan(log_sum)) return TRK_E_NAN;
+    if (!(pd > 0 && pd <= 1) || !(pg > 0 && pg <= 1)) return TRK_E_RANGE;
+    const struct trk_visibility_params *p = &m->params;
+    /* eq 1: Markov prediction */
+    const trk_real pv_pred = p->delta_stay * v->pv + p->delta_become * (1 - v->pv);
+    /* ln Lam = ln((1 - pd pg) + pd e^log_sum) */
+    const trk_real miss = 1 - pd * pg;
+    const trk_real ln_det = trk_log(pd) + log_sum;
+    const trk_real ln_lam = miss > 0 ? log_add(trk_log(miss), ln_det) : ln_det;
+    /* pv = 1 - beta_-1 = logistic(ln(pv_pred / (1 - pv_pred)) + ln Lam) (eqs 21-24) */
+    trk_real pv;
+    if (pv_pred <= 0 || ln_lam == -(trk_real)INFINITY) {
+        pv = 0;
+    } else if (pv_pred >= 1) {
+        pv = 1;
+    } else {
+        const trk_real z = trk_log(pv_pred) - trk_log1p(-pv_pred) + ln_lam;
+        pv = z >= 0 ? 1 / (1 + trk_exp(-z)) : trk_exp(z) / (1 + trk_exp(z));
+    }
+    /* eq 2: smoothed confidence; sticky decisions */
+    const trk_real pcv = (1 - p->omega_c) * pv + p->omega_c * v->pcv;
+    v->pv_pred = pv_pred;
+    v->pv = pv;
+    v->pcv = pcv;
+    if (pcv >= p->p_con) v->confirmed = 1;
+    if (pcv < p->p_term) v->terminated = 1;
+    v->scans++;
+    return TRK_OK;
+}
+
+trk_status trk_visibility_update(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pd,
+                                 trk_real pg, size_t n, const trk_real *gd, trk_real rho, const trk_real *log_la)
+{
+    if (!m || !v || (n > 0 && !gd)) return TRK_E_ARG;
+    if (n > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
+    if (!isfinite(rho)) return TRK_E_NAN;
+    if (!(rho > 0)) return TRK_E_RANGE;
+    /* log-sum-exp of ln(gd_i/rho) + ln l_i: first the maximum, then the sum */
+    const trk_real ln_rho = trk_log(rho);
+    trk_real top = -(trk_real)INFINITY;
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(gd[i]) || (log_la && !isfinite(log_la[i]))) return TRK_E_NAN;
+        if (!(gd[i] >= 0)) return TRK_E_RANGE;
+        const trk_real t = trk_log(gd[i]) - ln_rho + (log_la ? log_la[i] : 0);
+        if (t > top) top = t;
+    }
+    trk_real log_sum = top;
+    if (top > -(trk_real)INFINITY) {
+        trk_real sum = 0;
+        for (size_t i = 0; i < n; i++) sum += trk_exp(trk_log(gd[i]) - ln_rho + (log_la ? log_la[i] : 0) - top);
+        log_sum = top + trk_log(sum);
+    }
+    return trk_visibility_update_log(m, v, pd, pg, log_sum);
+}
