@@ -47,15 +47,51 @@ TRK_INLINE void trk_i_cv2_predict(trk_real t, trk_real q, trk_real *x, trk_real 
     trk_i_symmetrize(4, p);
 }
 
-/* PH' (nx x nz), S = H P H' + R, its Cholesky factor and log-determinant. */
-TRK_INLINE trk_status trk_i_innovation(int nx, int nz, const trk_real *h, const trk_real *r,
-                                          const trk_real *x, const trk_real *p, trk_real *pht,
-                                          struct trk_innovation *inn)
+/* Does H (nz x nx) only select state components (each row one 1, the rest
+ * 0)? Then idx[j] is the component row j selects and the products with H
+ * below become copies (the 2-D CV model's H picks x and y). */
+TRK_INLINE int trk_i_h_select(int nx, int nz, const trk_real *h, int *idx)
 {
-    trk_i_mat_mul_abt(nx, nx, nz, p, h, pht);
-    trk_i_mat_mul(nz, nx, 1, h, x, inn->z_pred);
-    trk_i_mat_mul(nz, nx, nz, h, pht, inn->s);
-    for (int i = 0; i < nz * nz; i++) inn->s[i] += r[i];
+    for (int j = 0; j < nz; j++) {
+        int one = -1;
+        for (int i = 0; i < nx; i++) {
+            const trk_real v = h[j * nx + i];
+            if (v == 1 && one < 0) one = i;
+            else if (v != 0) return 0;
+        }
+        if (one < 0) return 0;
+        idx[j] = one;
+    }
+    return 1;
+}
+
+/* Y (n x nz) = A (n x nx) H' with H general, or picking columns idx of A. */
+TRK_INLINE void trk_i_mul_ht(int n, int nx, int nz, const trk_real *a, const trk_real *h, const int *sel,
+                             trk_real *y)
+{
+    if (sel) {
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < nz; j++) y[i * nz + j] = a[i * nx + sel[j]];
+    } else {
+        trk_i_mat_mul_abt(n, nx, nz, a, h, y);
+    }
+}
+
+/* PH' (nx x nz), S = H P H' + R, its Cholesky factor and log-determinant. */
+TRK_INLINE trk_status trk_i_innovation_sel(int nx, int nz, const trk_real *h, const int *sel,
+                                          const trk_real *r, const trk_real *x, const trk_real *p,
+                                          trk_real *pht, struct trk_innovation *inn)
+{
+    trk_i_mul_ht(nx, nx, nz, p, h, sel, pht);
+    if (sel) {
+        for (int j = 0; j < nz; j++) inn->z_pred[j] = x[sel[j]];
+        for (int j = 0; j < nz; j++)
+            for (int k = 0; k < nz; k++) inn->s[j * nz + k] = pht[sel[j] * nz + k] + r[j * nz + k];
+    } else {
+        trk_i_mat_mul(nz, nx, 1, h, x, inn->z_pred);
+        trk_i_mat_mul(nz, nx, nz, h, pht, inn->s);
+        for (int i = 0; i < nz * nz; i++) inn->s[i] += r[i];
+    }
     trk_i_symmetrize(nz, inn->s);
     inn->nz = nz;
     trk_status st = trk_i_chol(nz, inn->s, inn->s_chol);
@@ -69,6 +105,14 @@ TRK_INLINE trk_status trk_i_innovation(int nx, int nz, const trk_real *h, const 
                                                                 : trk_i_chol_logdet(nz, inn->s_chol);
     inn->sqrt_det_s = sqrt_det;
     return TRK_OK;
+}
+
+/* The same with H general (no selection shortcut). */
+TRK_INLINE trk_status trk_i_innovation(int nx, int nz, const trk_real *h, const trk_real *r,
+                                      const trk_real *x, const trk_real *p, trk_real *pht,
+                                      struct trk_innovation *inn)
+{
+    return trk_i_innovation_sel(nx, nz, h, NULL, r, x, p, pht, inn);
 }
 
 /* K = P H' S^-1 = P H' L^-T L^-1 (row i of K: L^-T L^-1 (PH')_i'). */
@@ -86,19 +130,19 @@ TRK_INLINE void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *
  *   A = (I - K H) P = P - K (P H')',   Pc = A - (A H' - K R) K'.
  * A H' - K R vanishes in exact arithmetic (K S = P H'); forming it keeps the
  * Joseph form's first-order insensitivity to errors in K at about half the
- * cost of the three explicit products. */
-TRK_INLINE void trk_i_joseph(int nx, int nz, const trk_real *h, const trk_real *r,
-                             const trk_real *k, const trk_real *p, trk_real *pc)
+ * cost of the three explicit products. pht = P H' (given); sel as for
+ * trk_i_innovation_sel. */
+TRK_INLINE void trk_i_joseph_sel(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r,
+                                 const trk_real *k, const trk_real *p, const trk_real *pht, trk_real *pc)
 {
-    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS], e[TRK_MAX_STATE * TRK_MAX_MEAS];
-    trk_i_mat_mul_abt(nx, nx, nz, p, h, pht);
+    trk_real e[TRK_MAX_STATE * TRK_MAX_MEAS];
     for (int i = 0; i < nx; i++)
         for (int j = 0; j < nx; j++) {
             trk_real s = p[i * nx + j];
             for (int t = 0; t < nz; t++) s -= k[i * nz + t] * pht[j * nz + t];
             pc[i * nx + j] = s; /* A */
         }
-    trk_i_mat_mul_abt(nx, nx, nz, pc, h, e); /* A H' */
+    trk_i_mul_ht(nx, nx, nz, pc, h, sel, e); /* A H' */
     for (int i = 0; i < nx; i++)
         for (int j = 0; j < nz; j++) {
             trk_real s = 0;
@@ -112,6 +156,15 @@ TRK_INLINE void trk_i_joseph(int nx, int nz, const trk_real *h, const trk_real *
             pc[i * nx + j] -= s;
         }
     trk_i_symmetrize(nx, pc);
+}
+
+/* The same with H general; P H' computed here. */
+TRK_INLINE void trk_i_joseph(int nx, int nz, const trk_real *h, const trk_real *r, const trk_real *k,
+                             const trk_real *p, trk_real *pc)
+{
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
+    trk_i_mat_mul_abt(nx, nx, nz, p, h, pht);
+    trk_i_joseph_sel(nx, nz, h, NULL, r, k, p, pht, pc);
 }
 
 /* d2 = nu' S^-1 nu = |L^-1 nu|^2 (a sum of squares: never negative). */

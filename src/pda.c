@@ -38,7 +38,9 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
     trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
     trk_real xn[TRK_MAX_STATE], pn[TRK_MAX_STATE * TRK_MAX_STATE];
 
-    trk_status st = trk_i_innovation(nx, nz, h, r, x, p, pht, &inn);
+    int sel_idx[TRK_MAX_MEAS];
+    const int *sel = trk_i_h_select(nx, nz, h, sel_idx) ? sel_idx : NULL;
+    trk_status st = trk_i_innovation_sel(nx, nz, h, sel, r, x, p, pht, &inn);
     if (st != TRK_OK) return st;
     const trk_real vg = trk_i_pda_gate_volume(pda, &inn);
 
@@ -63,7 +65,7 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
         trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS], pc[TRK_MAX_STATE * TRK_MAX_STATE];
         beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, lambda), m, beta, NULL);
         trk_i_gain(nx, nz, pht, inn.s_chol_inv, k);
-        trk_i_joseph(nx, nz, h, r, k, p, pc);
+        trk_i_joseph_sel(nx, nz, h, sel, r, k, p, pht, pc);
         for (int i = 0; i < nx * nx; i++) pc[i] *= 1 - beta0;
         trk_i_pda_combine(nx, nz, x, p, pht, inn.z_pred, beta0, m, z, (size_t)nz, beta,
                           inn.s_chol_inv, 0, NULL, NULL, NULL, pc, xn, pn);

@@ -14,6 +14,9 @@
 #define NX TRK_CV2_NX
 #define NZ TRK_CV2_NZ
 
+/* the CV model's H picks x (0) and y (2) */
+static const int cv2_sel[NZ] = {0, 2};
+
 void trk_tracker_default_params(struct trk_tracker_params *p)
 {
     struct trk_tracker_params d = {0};
@@ -244,7 +247,7 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
     for (int i = 0; i < NX; i++) x[i] = tr->x[i];
     for (int i = 0; i < NX * NX; i++) p[i] = tr->p[i];
     trk_i_cv2_predict(dt, t->params.process_noise_q, x, p);
-    if (trk_i_innovation(NX, NZ, trk_cv2_h, r, x, p, pht, &inn) != TRK_OK) return -1;
+    if (trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, r, x, p, pht, &inn) != TRK_OK) return -1;
 
     /* gate: bounding box of the ellipse d2 <= gamma, then the ellipse */
     const trk_real zx = inn.z_pred[0], zy = inn.z_pred[1];
@@ -302,7 +305,7 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
         for (size_t i = 0; i < n_shared_gated; i++) b_shared += t->ws.w[i];
         if (b_shared > 0) {
             trk_i_gain(NX, NZ, pht, inn.s_chol_inv, k);
-            trk_i_joseph(NX, NZ, trk_cv2_h, r, k, p, pc);
+            trk_i_joseph_sel(NX, NZ, trk_cv2_h, cv2_sel, r, k, p, pht, pc);
             for (int i = 0; i < NX * NX; i++) pc_sum[i] = b_shared * pc[i];
         }
         for (size_t i = n_shared_gated; i < n; i++) {
@@ -313,7 +316,7 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
             ri[1] = ri[2] = d->cov_m2[1];
             ri[3] = d->cov_m2[2];
             trk_i_gain(NX, NZ, pht, t->ws.s_chol_inv + 4 * i, k);
-            trk_i_joseph(NX, NZ, trk_cv2_h, ri, k, p, pc);
+            trk_i_joseph_sel(NX, NZ, trk_cv2_h, cv2_sel, ri, k, p, pht, pc);
             for (int a = 0; a < NX * NX; a++) pc_sum[a] += t->ws.w[i] * pc[a];
         }
     }
