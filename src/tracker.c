@@ -39,6 +39,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     d.term.u.kn.k = 0;
     d.term.u.kn.n = 5;
     d.max_tentative_scans = 0;
+    d.merge_gate_d2 = 4;
     d.track_visibility = 1; /* Kennedy's Table 1 style IPDA parameters */
     d.visibility.pv0 = TRK_REAL_C(0.5);
     d.visibility.pcv0 = TRK_REAL_C(0.5);
@@ -70,8 +71,9 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     if (p->clutter != TRK_CLUTTER_PARAMETRIC && p->clutter != TRK_CLUTTER_NONPARAMETRIC)
         return TRK_E_ARG;
     if (!isfinite(p->process_noise_q) || !isfinite(p->gate_prob) ||
-        !isfinite(p->init_speed_sigma_mps) || !isfinite(p->max_dt_s))
+        !isfinite(p->init_speed_sigma_mps) || !isfinite(p->max_dt_s) || !isfinite(p->merge_gate_d2))
         return TRK_E_NAN;
+    if (!(p->merge_gate_d2 >= 0)) return TRK_E_RANGE;
     if (!(p->process_noise_q >= 0) || !(p->init_speed_sigma_mps > 0) || !(p->max_dt_s > 0) ||
         !(p->max_dt_s <= TRK_REAL_C(1e9)))
         return TRK_E_RANGE;
@@ -230,6 +232,7 @@ static void end_track(struct trk_tracker *t, struct trk_track *tr, enum trk_trac
     tr->end_reason = (uint8_t)why;
     rep->n_terminated++;
     if (why == TRK_END_NUMERICAL) rep->n_numerical++;
+    if (why == TRK_END_MERGED) rep->n_merged++;
 }
 
 /* Predict one track to the scan time and PDA-update it with the detections
@@ -383,6 +386,50 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
     return 0;
 }
 
+/* Is track a stronger than b (kept when they merge)? Confirmed over
+ * tentative, then more hits, then older (smaller id: ids only grow, except
+ * after 2^32 tracks). */
+static int stronger(const struct trk_track *a, const struct trk_track *b)
+{
+    if (a->status != b->status) return a->status == TRK_TRACK_CONFIRMED;
+    if (a->n_hits != b->n_hits) return a->n_hits > b->n_hits;
+    return a->id < b->id;
+}
+
+/* End the weaker of every pair of live tracks whose states are within
+ * merge_gate_d2: d2 = dx' (P_a + P_b)^-1 dx over [x, vx, y, vy] (the
+ * track-to-track test without the common process-noise cross-covariance,
+ * which would only make d2 larger). A cheap test on the positions first:
+ * d2 >= dx^2 / (Pa_xx + Pb_xx) for the x (and y) component alone. */
+static void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep)
+{
+    const trk_real g = t->params.merge_gate_d2;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        struct trk_track *a = &t->track[i];
+        if (a->status != TRK_TRACK_TENTATIVE && a->status != TRK_TRACK_CONFIRMED) continue;
+        for (size_t j = i + 1; j < TRK_MAX_TRACKS; j++) {
+            struct trk_track *b = &t->track[j];
+            if (b->status != TRK_TRACK_TENTATIVE && b->status != TRK_TRACK_CONFIRMED) continue;
+            const trk_real ex = a->x[0] - b->x[0], ey = a->x[2] - b->x[2];
+            if (ex * ex > g * (a->p[0] + b->p[0]) || ey * ey > g * (a->p[10] + b->p[10])) continue;
+            trk_real c[NX * NX], l[NX * NX], li[NX * NX], dx[NX], y[NX], d2 = 0;
+            for (int k = 0; k < NX * NX; k++) c[k] = a->p[k] + b->p[k];
+            for (int k = 0; k < NX; k++) dx[k] = a->x[k] - b->x[k];
+            if (trk_i_chol(NX, c, l) != TRK_OK) continue; /* cannot happen: both SPD */
+            trk_i_tril_inverse(NX, l, li);
+            trk_i_tril_mul(NX, li, dx, y);
+            for (int k = 0; k < NX; k++) d2 += y[k] * y[k];
+            if (d2 > g) continue;
+            if (stronger(a, b)) {
+                end_track(t, b, TRK_END_MERGED, rep);
+            } else {
+                end_track(t, a, TRK_END_MERGED, rep);
+                break; /* a is gone */
+            }
+        }
+    }
+}
+
 /* Confirmation step; for the clutter-amplitude test the nearest detection's
  * amplitude is moved to the end of the scan's amplitude list so the others
  * are contiguous, and moved back afterwards. */
@@ -447,6 +494,8 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     if (scan->n_detections > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
     if (scan->n_detections > 0 && !scan->detections) return TRK_E_ARG;
     if (scan->sensor_id >= t->params.n_sensors) return TRK_E_SENSOR;
+    /* |time| <= 2^62 keeps every difference of two times representable */
+    if (scan->time_us > TRK_TIME_US_MAX || scan->time_us < -TRK_TIME_US_MAX) return TRK_E_RANGE;
     if (t->has_time && scan->time_us < t->last_time_us) return TRK_E_TIME;
     if (t->has_time && scan->time_us - t->last_time_us > t->max_dt_us) return TRK_E_RANGE;
     /* --- the scan is accepted: from here on the table changes */
@@ -493,6 +542,8 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
             end_track(t, tr, TRK_END_TERMINATED, &rep);
         }
     }
+
+    if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
 
     /* single-point initiation from every valid detection no track gated */
     size_t slot = 0;

@@ -618,6 +618,58 @@ static void test_visibility_methods(void **state)
     TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_ARG);
 }
 
+/* Two tracks started on one target converge (both gate its detections) and
+ * are merged: the stronger is kept, the other ends as TRK_END_MERGED. With
+ * merging off both survive. Times beyond +-2^62 us are refused. */
+static void test_merge_duplicates(void **state)
+{
+    (void)state;
+    for (int merge = 1; merge >= 0; merge--) {
+        struct trk_tracker_params p;
+        base_params(&p);
+        p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-3);
+        p.merge_gate_d2 = merge ? 4 : 0;
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        struct trk_detection d[2];
+        memset(d, 0, sizeof d);
+        d[0].x_m = 0;
+        d[1].x_m = TRK_REAL_C(1.5); /* scan 0: two detections of one target */
+        struct trk_scan s0 = {SEC(0), 0, 2, d};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
+        assert_int_equal(trk_tracker_live_count(&tk), 2);
+        uint32_t merged = 0;
+        for (int k = 1; k < 12; k++) {
+            d[0].x_m = (trk_real)(1.0 * k);
+            struct trk_scan s = {SEC(k), 0, 1, d};
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+            check_invariants(&tk);
+            merged += rep.n_merged;
+        }
+        size_t alive = 0;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *a = trk_tracker_track(&tk, i);
+            if (!a) continue;
+            if (a->status == TRK_TRACK_TERMINATED) {
+                assert_int_equal(a->end_reason, TRK_END_MERGED);
+                continue;
+            }
+            alive++;
+            if (merge) assert_int_equal(a->id, 1); /* the older of two equals is kept */
+        }
+        assert_int_equal(alive, merge ? 1 : 2);
+        assert_int_equal(merged, merge ? 1 : 0);
+    }
+    struct trk_scan far = {TRK_TIME_US_MAX + 1, 0, 0, NULL};
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &far, NULL), TRK_E_RANGE);
+    far.time_us = -TRK_TIME_US_MAX - 1;
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &far, NULL), TRK_E_RANGE);
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.merge_gate_d2 = -1;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -632,6 +684,7 @@ int main(void)
         cmocka_unit_test(test_methods_lifecycle),
         cmocka_unit_test(test_amplitude_pdafai),
         cmocka_unit_test(test_visibility_methods),
+        cmocka_unit_test(test_merge_duplicates),
     };
     return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
 }

@@ -19,10 +19,14 @@
  *      of the gate ellipse first, then d2 <= gamma), PDA update over every
  *      detection in its gate (a detection may serve several tracks), then
  *      its confirmation test (tentative) or termination test (confirmed)
- *   4. every valid detection no track gated starts a tentative track
+ *   4. tracks that have converged onto one target (PDA tracks sharing
+ *      detections do) are merged: of two live tracks whose 4-D states are
+ *      within merge_gate_d2, the confirmed (else the one with more hits,
+ *      else the older) is kept
+ *   5. every valid detection no track gated starts a tentative track
  *      (single-point initiation: position from the detection, velocity from
  *      a zero-mean prior); with no free slot it is counted, not silent
- *   5. the report counts what happened
+ *   6. the report counts what happened
  * Track ids are stable, start at 1 and are never reused within 2^32 tracks.
  * A terminated track stays visible (status TRK_TRACK_TERMINATED) until the
  * next scan, so a consumer sees its end; its slot is then reused.
@@ -55,6 +59,10 @@ struct trk_detection {
 };
 
 /* One scan of one sensor. The detections are read, never written. */
+/* Largest |time_us| of a scan: 2^62 us (146,000 years), so that any two
+ * times subtract without overflow. */
+#define TRK_TIME_US_MAX (INT64_C(1) << 62)
+
 struct trk_scan {
     int64_t time_us;                        /* scan time (microseconds, any epoch);
                                                never decreasing. Integer time keeps
@@ -172,6 +180,11 @@ struct trk_tracker_params {
     struct trk_visibility_params visibility;
     struct trk_confirm_params confirm;                /* tentative -> confirmed / rejected */
     struct trk_term_params term;                      /* confirmed -> terminated */
+    trk_real merge_gate_d2;                           /* two live tracks with state difference
+                                                         d2 = dx' (P_i + P_j)^-1 dx <= this
+                                                         (4-D, positions and velocities) follow
+                                                         one target: the weaker one ends
+                                                         (TRK_END_MERGED). 0 = never merge */
     uint32_t max_tentative_scans;                     /* drop a tentative track after this
                                                          many scans (0 = no limit) */
 };
@@ -191,7 +204,9 @@ struct trk_tracker_params {
  * Defaults: one sensor (pd 0.9, R = 1 m^2 I, lambda 1e-4 /m^2), q = 0.01,
  * P_G 0.99, parametric clutter, velocity prior 5 m/s, max_dt 3600 s,
  * confirm 3-of-5 fixed, terminate after 5 consecutive misses (K/N 0/5),
- * no tentative limit. */
+ * no tentative limit, merge duplicates at d2 <= 4 (4-D), visibility tracked
+ * (pv0 0.5, pcv0 0.5, Delta 0.99, Delta_bar 0.01, omega 0.75, p_con 0.9,
+ * p_term 0.1). */
 void trk_tracker_default_params(struct trk_tracker_params *p);
 
 /* ---------------------------------------------------------------- tracks */
@@ -209,7 +224,8 @@ enum trk_track_end {
     TRK_END_REJECTED,     /* tentative track failed its confirmation test */
     TRK_END_TENTATIVE_AGE,/* tentative longer than max_tentative_scans */
     TRK_END_TERMINATED,   /* confirmed track's termination test fired */
-    TRK_END_NUMERICAL     /* covariance lost positive definiteness */
+    TRK_END_NUMERICAL,    /* covariance lost positive definiteness */
+    TRK_END_MERGED        /* duplicate of a stronger track (merge_gate_d2) */
 };
 
 struct trk_track {
@@ -250,6 +266,7 @@ struct trk_scan_report {
     uint32_t n_terminated;          /* tracks ended this scan (any reason) */
     uint32_t n_init_refused_full;   /* initiations refused: table full */
     uint32_t n_numerical;           /* tracks ended for a numerical failure */
+    uint32_t n_merged;              /* tracks ended as duplicates of another */
 };
 
 /* ---------------------------------------------------------------- tracker */
@@ -293,10 +310,10 @@ struct trk_tracker {
 TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_params *p);
 
 /* Process one scan (see the top of this file). report may be NULL.
- * Whole-scan refusals (table and report untouched... report zeroed):
+ * Whole-scan refusals (table untouched, report zeroed):
  * TRK_E_ARG NULL pointers, TRK_E_CAPACITY more than TRK_MAX_DETECTIONS
  * detections, TRK_E_TIME time before the previous scan, TRK_E_RANGE gap
- * longer than max_dt_s, TRK_E_SENSOR unknown sensor.
+ * longer than max_dt_s or |time_us| > 2^62, TRK_E_SENSOR unknown sensor.
  * Per-detection and per-track problems are counted in the report; the call
  * then still returns TRK_OK. */
 TRK_NODISCARD trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,

@@ -1,0 +1,124 @@
+#!/bin/sh
+# lcm_udpm_netns.sh BUILD - command-line and multicast tests of the LCM tools
+# (make test-lcm-udpm, part of make test). Nothing touches the real network.
+#
+# Always (no network):
+#   - trk-lcm-bridge refuses bad settings and tables with exit status 2 and a
+#     message, accepts --help / --print-config
+#   - SIGINT and SIGTERM stop a live bridge (memq://) cleanly: exit 0, summary
+#   - trk-sonar-sim --log and trk-lcm-bridge --replay are deterministic
+#     (same options, byte-identical files)
+# In a private network namespace (unshare -rn; skipped with the reason when
+# the machine cannot create one):
+#   - trk-sonar-sim -> udpm -> trk-lcm-bridge -> udpm -> lcm-logger: the
+#     tracks and status reach the logger, malformed messages are counted,
+#     SIGTERM stops the bridge with exit 0
+# Every program runs under timeout(1) or a watchdog: the test cannot hang.
+set -u
+BUILD=${1:-build}
+B=$BUILD/bin
+T=$(mktemp -d "${TMPDIR:-/tmp}/trk-lcm-test.XXXXXX")
+trap 'rm -rf "$T"' EXIT INT TERM
+fail() { echo "test-lcm-udpm: FAIL: $*"; exit 1; }
+ok() { echo "test-lcm-udpm: ok: $*"; }
+
+# --- refusals (exit 2, a message naming the problem)
+expect_refusal() { # pattern, args...
+    pat=$1; shift
+    timeout 20 "$B/trk-lcm-bridge" "$@" --replay /dev/null --out "$T/x.lcmlog" > "$T/o" 2> "$T/e"
+    rc=$?
+    [ $rc -eq 2 ] || fail "trk-lcm-bridge $* exited $rc, want 2"
+    grep -q -- "$pat" "$T/e" || fail "trk-lcm-bridge $*: message lacks '$pat': $(cat "$T/e")"
+}
+expect_refusal "gate_prob" --gate_prob 2
+expect_refusal "unknown setting" --no-such-setting 1
+expect_refusal "confirm.mn" --confirm.mn.m 9
+expect_refusal "term = page" --term page --hmm.p_low_high 0 --hmm.q_high_low 0
+expect_refusal "amplitude" --sensor.0.amplitude rayleigh
+expect_refusal "cannot open" --q2_table "$T/missing.tbl"
+head -c 300 /dev/urandom > "$T/junk.tbl"
+expect_refusal "TRK_E_TABLE" --sensor.0.amp_table "$T/junk.tbl"
+printf 'gate_prob = 0.9\nbogus line\n' > "$T/bad.conf"
+expect_refusal "bad.conf:2" --config "$T/bad.conf"
+timeout 20 "$B/trk-lcm-bridge" --help > "$T/help" || fail "--help exited $?"
+grep -q "replay" "$T/help" || fail "--help does not document --replay"
+printf 'gate_prob = 0.95\ntrack_channel = MY_TRACKS\n' > "$T/good.conf"
+timeout 20 "$B/trk-lcm-bridge" --config "$T/good.conf" --print-config > "$T/pc" || fail "--print-config exited $?"
+grep -q "^gate_prob = 0.95$" "$T/pc" && grep -q "^track_channel = MY_TRACKS$" "$T/pc" ||
+    fail "--print-config does not show the config file's settings"
+ok "bad settings and tables are refused with exit status 2"
+
+# --- clean stop on SIGINT / SIGTERM (live, in-process transport). The
+# signal goes to the bridge itself, not through timeout(1) (which follows it
+# with SIGCONT, racing LeakSanitizer's stop-the-world at exit in ASan builds);
+# a watchdog kills it if it does not stop.
+for sig in INT TERM; do
+    "$B/trk-lcm-bridge" --lcm-url memq:// > "$T/stop.out" 2>&1 &
+    pid=$!
+    (sleep 30; kill -KILL $pid) > /dev/null 2>&1 &
+    wd=$!
+    sleep 0.5
+    kill -$sig $pid
+    wait $pid
+    rc=$?
+    kill $wd 2> /dev/null
+    [ $rc -eq 0 ] || fail "bridge exited $rc after SIG$sig: $(cat "$T/stop.out")"
+    grep -q "stopped by SIG$sig" "$T/stop.out" && grep -q "^scans: received 0" "$T/stop.out" ||
+        fail "no summary after SIG$sig: $(cat "$T/stop.out")"
+done
+ok "SIGINT and SIGTERM stop the bridge cleanly with a summary"
+
+# --- determinism of the log path
+for i in 1 2; do
+    timeout 60 "$B/trk-sonar-sim" --log "$T/d$i.lcmlog" --scans 40 --seed 9 --bad-every 7 --quiet > /dev/null ||
+        fail "trk-sonar-sim --log exited $?"
+    timeout 60 "$B/trk-lcm-bridge" --replay "$T/d$i.lcmlog" --out "$T/t$i.lcmlog" --quiet > "$T/r$i.out" ||
+        fail "trk-lcm-bridge --replay exited $?"
+done
+cmp -s "$T/d1.lcmlog" "$T/d2.lcmlog" || fail "trk-sonar-sim --log is not deterministic"
+cmp -s "$T/t1.lcmlog" "$T/t2.lcmlog" || fail "trk-lcm-bridge --replay is not deterministic"
+grep -q "processed 40, rejected 5" "$T/r1.out" || fail "replay counts: $(cat "$T/r1.out")"
+ok "sonar-sim --log and bridge --replay are byte-identical across runs"
+
+# --- UDP multicast in a private network namespace
+if ! command -v unshare > /dev/null 2>&1 || ! command -v ip > /dev/null 2>&1; then
+    echo "test-lcm-udpm: SKIPPED multicast: unshare or ip (iproute2) not installed"
+    exit 0
+fi
+if ! msg=$(timeout 10 unshare -rn sh -c 'ip link set lo up && ip route add 224.0.0.0/4 dev lo' 2>&1); then
+    echo "test-lcm-udpm: SKIPPED multicast: cannot create a network namespace with a multicast route (unshare -rn: $msg)"
+    exit 0
+fi
+if ! command -v lcm-logger > /dev/null 2>&1; then
+    echo "test-lcm-udpm: SKIPPED multicast: lcm-logger (liblcm-bin) not installed"
+    exit 0
+fi
+export B T
+timeout 90 unshare -rn sh -c '
+    ip link set lo up && ip route add 224.0.0.0/4 dev lo || exit 3
+    export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
+    timeout 60 lcm-logger -q -f -c "TRK_TRACKS|TRK_BRIDGE_STATUS" "$T/net.lcmlog" 2> /dev/null &
+    L=$!
+    "$B/trk-lcm-bridge" --status-period-s 0.2 > "$T/bridge.out" 2> "$T/bridge.err" &
+    BR=$!
+    (sleep 60; kill -KILL $BR) > /dev/null 2>&1 &
+    WD=$!
+    sleep 1
+    timeout 60 "$B/trk-sonar-sim" --scans 30 --rate-hz 40 --bad-every 10 --seed 5 > "$T/sim.out" 2>&1
+    sleep 1
+    kill -TERM $BR; wait $BR; rc=$?
+    kill $WD 2> /dev/null
+    sleep 0.3
+    kill -INT $L; wait $L
+    exit $rc'
+rc=$?
+[ $rc -eq 0 ] || fail "multicast run: bridge exited $rc: $(cat "$T/bridge.out" "$T/bridge.err" 2>/dev/null)"
+grep -q "stopped by SIGTERM" "$T/bridge.out" || fail "no summary: $(cat "$T/bridge.out")"
+processed=$(sed -n 's/.*processed \([0-9]*\).*/\1/p' "$T/bridge.out" | head -1)
+[ "${processed:-0}" -ge 25 ] || fail "bridge processed ${processed:-0} of 30 scans: $(cat "$T/bridge.out")"
+grep -q "rejected 3 " "$T/bridge.out" || fail "the 3 malformed messages were not counted: $(cat "$T/bridge.out")"
+timeout 20 "$B/trk-lcm-bridge" --summarize "$T/net.lcmlog" > "$T/sum.out" || fail "--summarize exited $?"
+lists=$(sed -n 's/^track lists: \([0-9]*\).*/\1/p' "$T/sum.out")
+[ "${lists:-0}" -ge 25 ] || fail "lcm-logger recorded ${lists:-0} track lists: $(cat "$T/sum.out")"
+grep -q "TRK_BRIDGE_STATUS" "$T/sum.out" || fail "no status message reached lcm-logger"
+ok "udpm in a network namespace: $processed scans tracked, $lists track lists logged by lcm-logger"

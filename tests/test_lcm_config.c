@@ -1,0 +1,410 @@
+/* test_lcm_config.c - the tools' tracker configuration (tools/common/
+ * tracker_config.c) and "key = value" files (kvfile.c): defaults are the
+ * library's, every key sets its field, bad values and unknown keys are
+ * refused with the key (and file:line) in the message, the printed
+ * configuration reads back to the same, and tcfg_check refuses bad
+ * combinations, bad tables and methods the tracker does not run yet. */
+#define _POSIX_C_SOURCE 200809L /* getpid */
+#include <unistd.h>
+
+#include "trk_test.h"
+
+#include "kvfile.h"
+#include "tracker_config.h"
+
+static struct tcfg c, c2;
+static char err[1024];
+
+static int set(const char *k, const char *v) { return tcfg_set(&c, k, v, err, sizeof err); }
+
+/* A temporary file with the given contents; returns its path (static). */
+static const char *tmp_file(const char *name, const char *text, size_t len)
+{
+    static char path[256];
+    const char *dir = getenv("TMPDIR");
+    snprintf(path, sizeof path, "%s/trk_test_lcm_config_%ld_%s", dir ? dir : "/tmp", (long)getpid(),
+             name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(text, 1, len, f), len);
+    fclose(f);
+    return path;
+}
+
+static void test_defaults(void **state)
+{
+    (void)state;
+    struct trk_tracker_params d;
+    trk_tracker_default_params(&d);
+    tcfg_defaults(&c);
+    static struct trk_tracker_params pp;
+    tcfg_params(&c, &pp);
+    const struct trk_tracker_params *p = &pp;
+    assert_int_equal(p->n_sensors, d.n_sensors);
+    assert_true(p->process_noise_q == d.process_noise_q && p->gate_prob == d.gate_prob);
+    assert_true(p->max_dt_s == d.max_dt_s && p->init_speed_sigma_mps == d.init_speed_sigma_mps);
+    assert_int_equal(p->confirm.method, TRK_CONFIRM_MN);
+    assert_int_equal(p->confirm.u.mn.m, d.confirm.u.mn.m);
+    assert_int_equal(p->term.method, TRK_TERM_KN);
+    assert_int_equal(p->term.u.kn.n, d.term.u.kn.n);
+    for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) { /* every sensor like sensor 0 */
+        assert_true(p->sensor[s].pd == d.sensor[0].pd);
+        assert_true(p->sensor[s].meas_cov_m2[0] == d.sensor[0].meas_cov_m2[0]);
+    }
+    assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
+}
+
+static void test_set_keys(void **state)
+{
+    (void)state;
+    tcfg_defaults(&c);
+    assert_int_equal(set("process_noise_q", "0.25"), 0);
+    assert_int_equal(set("gate_prob", " 0.995 "), 0);
+    assert_int_equal(set("clutter", "nonparametric"), 0);
+    assert_int_equal(set("init_speed_sigma_mps", "7"), 0);
+    assert_int_equal(set("max_dt_s", "60"), 0);
+    assert_int_equal(set("max_tentative_scans", "12"), 0);
+    assert_int_equal(set("confirm.mn.m", "4"), 0);
+    assert_int_equal(set("confirm.mn.n", "6"), 0);
+    assert_int_equal(set("confirm.mn.mode", "sliding"), 0);
+    assert_int_equal(set("term.kn.k", "1"), 0);
+    assert_int_equal(set("term.kn.n", "8"), 0);
+    assert_int_equal(set("sensor.0.pd", "0.8"), 0);
+    assert_int_equal(set("sensor.0.meas_cov_m2", "4, 1, 9"), 0);
+    assert_int_equal(set("sensor.0.clutter_density_per_m2", "2e-6"), 0);
+    static struct trk_tracker_params pp;
+    tcfg_params(&c, &pp);
+    const struct trk_tracker_params *p = &pp;
+    assert_true(p->process_noise_q == TRK_REAL_C(0.25));
+    assert_true(p->gate_prob == TRK_REAL_C(0.995));
+    assert_int_equal(p->clutter, TRK_CLUTTER_NONPARAMETRIC);
+    assert_true(p->init_speed_sigma_mps == 7 && p->max_dt_s == 60);
+    assert_int_equal(p->max_tentative_scans, 12);
+    assert_int_equal(p->confirm.u.mn.m, 4);
+    assert_int_equal(p->confirm.u.mn.n, 6);
+    assert_int_equal(p->confirm.u.mn.mode, TRK_MN_SLIDING);
+    assert_int_equal(p->term.u.kn.k, 1);
+    assert_int_equal(p->term.u.kn.n, 8);
+    assert_true(p->sensor[0].pd == TRK_REAL_C(0.8));
+    assert_true(p->sensor[0].meas_cov_m2[0] == 4 && p->sensor[0].meas_cov_m2[1] == 1 &&
+                p->sensor[0].meas_cov_m2[2] == 9);
+    assert_true(p->sensor[0].clutter_density_per_m2 == TRK_REAL_C(2e-6));
+    assert_int_equal(set("sensor.0.meas_sigma_m", "3"), 0);
+    tcfg_params(&c, &pp);
+    assert_true(p->sensor[0].meas_cov_m2[0] == 9 && p->sensor[0].meas_cov_m2[1] == 0 &&
+                p->sensor[0].meas_cov_m2[2] == 9);
+    assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
+    /* pending methods' parameters are parsed into their module structs */
+    assert_int_equal(set("confirm.sprt.alpha", "0.05"), 0);
+    assert_int_equal(set("confirm.sprt.model", "hmm"), 0);
+    assert_int_equal(set("term.page.h", "6.5"), 0);
+    assert_int_equal(set("term.shiryaev.rho", "0"), 0);
+    assert_int_equal(set("hmm.pi0_high", "stationary"), 0);
+    assert_int_equal(set("hmm.pd_high", "0.95"), 0);
+    assert_int_equal(set("confirm.clutter_density.kmax", "10"), 0);
+    assert_true(c.sprt.alpha == TRK_REAL_C(0.05) && c.sprt.model == TRK_SPRT_HMM);
+    assert_true(c.page.h == TRK_REAL_C(6.5) && c.shiryaev.rho == 0);
+    assert_true(c.hmm.pi0_high == TRK_HMM_PI0_STATIONARY && c.hmm.pd_high == TRK_REAL_C(0.95));
+    assert_int_equal(c.clutter_density.kmax, 10);
+}
+
+static void test_bad_values(void **state)
+{
+    (void)state;
+    tcfg_defaults(&c);
+    static const char *const bad[][2] = {
+        {"gate_prob", "1"},          {"gate_prob", "0"},         {"gate_prob", "nan"},
+        {"gate_prob", "0.9x"},       {"gate_prob", ""},          {"process_noise_q", "-1"},
+        {"process_noise_q", "inf"},  {"sensors", "0"},           {"sensors", "99"},
+        {"clutter", "maybe"},        {"max_dt_s", "0"},          {"max_dt_s", "2e9"},
+        {"confirm", "voting"},       {"confirm.mn.m", "0"},      {"confirm.mn.n", "65"},
+        {"confirm.mn.m", "2.5"},     {"term.kn.k", "-1"},        {"sensor.0.pd", "0"},
+        {"sensor.0.pd", "1.01"},     {"sensor.0.meas_cov_m2", "1, 2, 1"},
+        {"sensor.0.meas_cov_m2", "1, 0"},                        {"sensor.0.meas_cov_m2", "1,0,1,5"},
+        {"sensor.0.meas_sigma_m", "0"},                          {"sensor.0.amplitude", "weibull"},
+        {"sensor.0.pfa", "1"},       {"sensor.0.snr_db", "200"}, {"sensor.99.pd", "0.5"},
+        {"hmm.pi0_high", "2"},       {"term.shiryaev.rho", "1"}, {"confirm.sprt.alpha", "0"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        err[0] = 0;
+        if (set(bad[i][0], bad[i][1]) != -1)
+            fail_msg("%s = '%s' accepted", bad[i][0], bad[i][1]);
+        assert_true(strlen(err) > 0);
+    }
+    /* nothing changed */
+    tcfg_defaults(&c2);
+    assert_true(c.params.gate_prob == c2.params.gate_prob && c.params.sensor[0].pd == c2.params.sensor[0].pd);
+    /* unknown keys */
+    assert_int_equal(set("gate_probability", "0.9"), 1);
+    assert_int_equal(set("sensor.0.colour", "red"), 1);
+    assert_int_equal(set("sensor.x.pd", "0.5"), 1);
+    assert_int_equal(set("sensorX", "1"), 1);
+}
+
+static void test_file(void **state)
+{
+    (void)state;
+    const char text[] = "# a tracker\n"
+                        "\n"
+                        "   gate_prob = 0.97   # P_G\n"
+                        "sensor.0.pd=0.7\n"
+                        "confirm.mn.m = 2\r\n"
+                        "confirm.mn.m = 3\n";
+    const char *path = tmp_file("ok.conf", text, sizeof text - 1);
+    tcfg_defaults(&c);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), 0);
+    assert_true(c.params.gate_prob == TRK_REAL_C(0.97));
+    assert_true(c.params.sensor[0].pd == TRK_REAL_C(0.7));
+    assert_int_equal(c.mn.m, 3); /* the last one wins */
+    remove(path);
+
+    const char bad1[] = "gate_prob = 0.9\n\nnot a setting\n";
+    path = tmp_file("bad1.conf", bad1, sizeof bad1 - 1);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":3: expected 'key = value'"));
+    remove(path);
+
+    const char bad2[] = "gate_prob = 0.9\ngate_prob = 2\n";
+    path = tmp_file("bad2.conf", bad2, sizeof bad2 - 1);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":2: gate_prob = 2: must be in (0, 1)"));
+    remove(path);
+
+    const char bad3[] = "colour = red\n";
+    path = tmp_file("bad3.conf", bad3, sizeof bad3 - 1);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":1: unknown setting 'colour'"));
+    remove(path);
+
+    static char longline[KV_MAX_LINE + 10];
+    memset(longline, 'a', sizeof longline - 2);
+    longline[sizeof longline - 2] = '\n';
+    path = tmp_file("long.conf", longline, sizeof longline - 1);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    assert_non_null(strstr(err, "longer than"));
+    remove(path);
+
+    assert_int_equal(kv_parse_file("/nonexistent/trk.conf", tcfg_set, &c, err, sizeof err), -1);
+    assert_non_null(strstr(err, "cannot open"));
+
+    /* command-line form */
+    assert_int_equal(kv_parse_assignment("term.kn.n = 9", tcfg_set, &c, err, sizeof err), 0);
+    assert_int_equal(c.kn.n, 9);
+    assert_int_equal(kv_parse_assignment("term.kn.n", tcfg_set, &c, err, sizeof err), -1);
+    assert_int_equal(kv_parse_assignment("=3", tcfg_set, &c, err, sizeof err), -1);
+}
+
+static void test_number_parsers(void **state)
+{
+    (void)state;
+    double v[3];
+    long l;
+    assert_int_equal(kv_parse_doubles("1, 2 ,3", v, 3), 0);
+    assert_true(v[0] == 1 && v[1] == 2 && v[2] == 3);
+    assert_int_equal(kv_parse_doubles("1 2 3", v, 3), 0);
+    assert_int_equal(kv_parse_doubles("1,2", v, 3), -1);
+    assert_int_equal(kv_parse_doubles("1,2,3,4", v, 3), -1);
+    assert_int_equal(kv_parse_doubles("1,nan,3", v, 3), -1);
+    assert_int_equal(kv_parse_doubles("1,,3", v, 3), -1);
+    assert_int_equal(kv_parse_doubles(",1,2,3", v, 3), -1);
+    assert_int_equal(kv_parse_doubles("1,2,3,", v, 3), -1);
+    assert_int_equal(kv_parse_doubles("-1e3,+2,.5", v, 3), 0);
+    assert_true(v[0] == -1e3 && v[1] == 2 && v[2] == 0.5);
+    assert_int_equal(kv_parse_double("1e400", v), -1);
+    assert_int_equal(kv_parse_long("12", 0, 20, &l), 0);
+    assert_int_equal(l, 12);
+    assert_int_equal(kv_parse_long("21", 0, 20, &l), -1);
+    assert_int_equal(kv_parse_long("1.5", 0, 20, &l), -1);
+}
+
+/* tcfg_write output read back gives the same configuration (same output). */
+static void test_write_read_back(void **state)
+{
+    (void)state;
+    tcfg_defaults(&c);
+    assert_int_equal(set("gate_prob", "0.987654321"), 0);
+    assert_int_equal(set("sensor.0.meas_cov_m2", "2.5, -0.1, 3.3"), 0);
+    assert_int_equal(set("term.shiryaev.h", "-3.25"), 0);
+    assert_int_equal(set("hmm.pi0_high", "0.4"), 0);
+    assert_int_equal(set("confirm", "sprt"), 0);
+    if (TRK_MAX_SENSORS >= 2) {
+        assert_int_equal(set("sensors", "2"), 0);
+        assert_int_equal(set("sensor.1.pd", "0.55"), 0);
+    }
+    static char buf1[16384], buf2[16384];
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    tcfg_write(f, &c);
+    rewind(f);
+    size_t n1 = fread(buf1, 1, sizeof buf1 - 1, f);
+    fclose(f);
+    buf1[n1] = 0;
+    const char *path = tmp_file("rt.conf", buf1, n1);
+    tcfg_defaults(&c2);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c2, err, sizeof err), 0);
+    remove(path);
+    f = tmpfile();
+    tcfg_write(f, &c2);
+    rewind(f);
+    size_t n2 = fread(buf2, 1, sizeof buf2 - 1, f);
+    fclose(f);
+    buf2[n2] = 0;
+    assert_string_equal(buf1, buf2);
+    assert_true(c2.params.gate_prob == c.params.gate_prob);
+    assert_true(c2.params.sensor[0].meas_cov_m2[1] == c.params.sensor[0].meas_cov_m2[1]);
+    assert_int_equal(c2.confirm, TRK_CONFIRM_SPRT);
+}
+
+static void expect_check_fails(const char *want)
+{
+    err[0] = 0;
+    assert_int_equal(tcfg_check(&c, err, sizeof err), -1);
+    if (!strstr(err, want)) fail_msg("message '%s' lacks '%s'", err, want);
+}
+
+static void test_check(void **state)
+{
+    (void)state;
+    tcfg_defaults(&c);
+    assert_int_equal(set("confirm.mn.m", "6"), 0); /* m > n = 5 */
+    expect_check_fails("confirm.mn");
+    tcfg_defaults(&c);
+    assert_int_equal(set("term.kn.k", "5"), 0); /* k >= n = 5 */
+    expect_check_fails("term.kn");
+    /* every method the tracker runs, with its defaults, passes; a bad
+     * combination is refused with the method named */
+    static const char *const confirms[] = {"sprt", "clutter_density", "clutter_amplitude"};
+    static const char *const terms[] = {"page", "shiryaev"};
+    for (int i = 0; i < 3; i++) {
+        tcfg_defaults(&c);
+        assert_int_equal(set("confirm", confirms[i]), 0);
+        if (TRK_WITH_CLUTTER_TESTS || i == 0) {
+            if (tcfg_check(&c, err, sizeof err) != 0) fail_msg("confirm = %s: %s", confirms[i], err);
+        } else {
+            expect_check_fails("TRK_WITH_CLUTTER_TESTS");
+        }
+    }
+    for (int i = 0; i < 2; i++) {
+        tcfg_defaults(&c);
+        assert_int_equal(set("term", terms[i]), 0);
+        if (tcfg_check(&c, err, sizeof err) != 0) fail_msg("term = %s: %s", terms[i], err);
+    }
+    tcfg_defaults(&c);
+    assert_int_equal(set("confirm", "sprt"), 0);
+    assert_int_equal(set("confirm.sprt.alpha", "0.6"), 0);
+    assert_int_equal(set("confirm.sprt.beta", "0.6"), 0); /* alpha + beta >= 1 */
+    expect_check_fails("confirm = sprt");
+    tcfg_defaults(&c);
+    assert_int_equal(set("term", "page"), 0);
+    assert_int_equal(set("hmm.p_low_high", "0"), 0);
+    assert_int_equal(set("hmm.q_high_low", "0"), 0); /* stationary prior needs p + q > 0 */
+    expect_check_fails("term = page");
+    /* the assembled parameters carry the chosen method and its settings */
+    tcfg_defaults(&c);
+    assert_int_equal(set("term", "shiryaev"), 0);
+    assert_int_equal(set("term.shiryaev.h", "3.5"), 0);
+    assert_int_equal(set("confirm", "sprt"), 0);
+    assert_int_equal(set("confirm.sprt.pd", "0.7"), 0);
+    {
+        static struct trk_tracker_params tp;
+        tcfg_params(&c, &tp);
+        assert_int_equal(tp.confirm.method, TRK_CONFIRM_SPRT);
+        assert_true(tp.confirm.u.sprt.pd == TRK_REAL_C(0.7));
+        assert_int_equal(tp.term.method, TRK_TERM_SHIRYAEV);
+        assert_true(tp.term.u.shiryaev.h == TRK_REAL_C(3.5));
+        assert_int_equal(tp.term.u.shiryaev.hmm.n_sensors, 1);
+        assert_true(tp.term.u.shiryaev.hmm.sensor[0].pd_high == c.hmm.pd_high);
+    }
+    /* a Rayleigh amplitude model is built and given to the tracker */
+    tcfg_defaults(&c);
+    assert_int_equal(set("sensor.0.amplitude", "rayleigh"), 0);
+    assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
+    {
+        struct tcfg_runtime rt;
+        struct trk_tracker_params tp;
+        assert_int_equal(tcfg_load(&c, &rt, err, sizeof err), 0);
+        tcfg_params_rt(&c, &rt, &tp);
+        assert_int_equal(tp.sensor[0].use_amplitude, 1);
+        TRK_ASSERT_NEAR(trk_amplitude_pd(&tp.sensor[0].amplitude), trk_amplitude_pd(&rt.amp[0]), 0, 0);
+        tcfg_unload(&rt);
+        tcfg_params_rt(&c, NULL, &tp);
+        assert_int_equal(tp.sensor[0].use_amplitude, 0);
+    }
+    tcfg_defaults(&c);
+    assert_int_equal(set("sensor.0.amplitude", "k"), 0);
+    expect_check_fails("needs sensor.0.amp_table");
+    /* tables: missing, garbage, wrong kind are refused before anything runs */
+    tcfg_defaults(&c);
+    assert_int_equal(set("q2_table", "/nonexistent/q2.tbl"), 0);
+    expect_check_fails("cannot open");
+    const char junk[] = "this is not a table, just text that is long enough to look like one..."
+                        "....................................................................";
+    const char *path = tmp_file("junk.tbl", junk, sizeof junk - 1);
+    tcfg_defaults(&c);
+    assert_int_equal(set("sensor.0.amp_table", path), 0);
+    expect_check_fails("TRK_E_TABLE_");
+    tcfg_defaults(&c);
+    assert_int_equal(set("q2_table", path), 0);
+    expect_check_fails("TRK_E_TABLE_");
+    remove(path);
+    path = tmp_file("empty.tbl", "", 0);
+    tcfg_defaults(&c);
+    assert_int_equal(set("q2_table", path), 0);
+    expect_check_fails("empty");
+    remove(path);
+    /* a second sensor */
+    if (TRK_MAX_SENSORS >= 2) {
+        tcfg_defaults(&c);
+        assert_int_equal(set("sensors", "2"), 0);
+        assert_int_equal(set("sensor.1.pd", "0.5"), 0);
+        assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
+    }
+}
+
+static void test_help(void **state)
+{
+    (void)state;
+    static char buf[16384];
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    tcfg_help(f);
+    rewind(f);
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    /* every key of the printed configuration is documented */
+    tcfg_defaults(&c);
+    static char conf[16384];
+    f = tmpfile();
+    tcfg_write(f, &c);
+    rewind(f);
+    n = fread(conf, 1, sizeof conf - 1, f);
+    fclose(f);
+    conf[n] = 0;
+    for (char *line = strtok(conf, "\n"); line; line = strtok(NULL, "\n")) {
+        if (line[0] == '#') continue;
+        char key[128];
+        assert_int_equal(sscanf(line, "%127[^ =]", key), 1);
+        /* "sensor.0.pd" is documented as "sensor.N.pd"; "confirm.mn.m" as "confirm.mn.m" */
+        const char *doc = key;
+        char generic[128];
+        if (strncmp(key, "sensor.", 7) == 0) {
+            snprintf(generic, sizeof generic, "sensor.N.%s", strchr(key + 7, '.') + 1);
+            doc = generic;
+        }
+        const char *last = strrchr(doc, '.');
+        if (!strstr(buf, doc) && !(last && strstr(buf, last + 1)))
+            fail_msg("key %s is not in the help", key);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_defaults),      cmocka_unit_test(test_set_keys),
+        cmocka_unit_test(test_bad_values),    cmocka_unit_test(test_file),
+        cmocka_unit_test(test_number_parsers), cmocka_unit_test(test_write_read_back),
+        cmocka_unit_test(test_check),         cmocka_unit_test(test_help),
+    };
+    return cmocka_run_group_tests_name("lcm_config", tests, NULL, NULL);
+}

@@ -1,0 +1,149 @@
+/* kvfile.c - "key = value" configuration files (kvfile.h). */
+#include "kvfile.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static char *trim(char *s)
+{
+    while (*s == ' ' || *s == '\t') s++;
+    size_t n = strlen(s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\r' || s[n - 1] == '\n'))
+        s[--n] = 0;
+    return s;
+}
+
+/* Split one line (modified in place). 0 empty/comment, 1 key+value, -1 syntax. */
+static int split_line(char *line, char **key, char **value)
+{
+    char *hash = strchr(line, '#');
+    if (hash) *hash = 0;
+    char *s = trim(line);
+    if (!*s) return 0;
+    char *eq = strchr(s, '=');
+    if (!eq) return -1;
+    *eq = 0;
+    *key = trim(s);
+    *value = trim(eq + 1);
+    return **key ? 1 : -1;
+}
+
+static int apply(kv_setter set, void *ctx, const char *key, const char *value, char *err,
+                 size_t errlen)
+{
+    char msg[512] = "";
+    int r = set(ctx, key, value, msg, sizeof msg);
+    if (r == 0) return 0;
+    if (r > 0) snprintf(err, errlen, "unknown setting '%s'", key);
+    else if (msg[0]) snprintf(err, errlen, "%s = %s: %s", key, value, msg);
+    else snprintf(err, errlen, "bad value for %s: '%s'", key, value);
+    return -1;
+}
+
+int kv_parse_file(const char *path, kv_setter set, void *ctx, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    char line[KV_MAX_LINE];
+    long lineno = 0;
+    int rc = 0;
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        size_t n = strlen(line);
+        if (n == sizeof line - 1 && line[n - 1] != '\n' && !feof(f)) {
+            snprintf(err, errlen, "%s:%ld: line longer than %d characters", path, lineno,
+                     KV_MAX_LINE - 2);
+            rc = -1;
+            break;
+        }
+        char *key, *value, msg[640];
+        int k = split_line(line, &key, &value);
+        if (k == 0) continue;
+        if (k < 0) {
+            snprintf(err, errlen, "%s:%ld: expected 'key = value'", path, lineno);
+            rc = -1;
+            break;
+        }
+        if (apply(set, ctx, key, value, msg, sizeof msg) != 0) {
+            snprintf(err, errlen, "%s:%ld: %s", path, lineno, msg);
+            rc = -1;
+            break;
+        }
+    }
+    if (rc == 0 && ferror(f)) {
+        snprintf(err, errlen, "%s: read error", path);
+        rc = -1;
+    }
+    fclose(f);
+    return rc;
+}
+
+int kv_parse_assignment(const char *kv, kv_setter set, void *ctx, char *err, size_t errlen)
+{
+    char line[KV_MAX_LINE];
+    if (strlen(kv) >= sizeof line - 1) {
+        snprintf(err, errlen, "setting too long");
+        return -1;
+    }
+    strcpy(line, kv);
+    char *eq = strchr(line, '=');
+    if (!eq) {
+        snprintf(err, errlen, "expected KEY=VALUE, got '%s'", kv);
+        return -1;
+    }
+    *eq = 0;
+    char *key = trim(line), *value = trim(eq + 1);
+    if (!*key) {
+        snprintf(err, errlen, "expected KEY=VALUE, got '%s'", kv);
+        return -1;
+    }
+    return apply(set, ctx, key, value, err, errlen);
+}
+
+int kv_parse_double(const char *s, double *v)
+{
+    char *end;
+    errno = 0;
+    double d = strtod(s, &end);
+    while (*end == ' ' || *end == '\t') end++;
+    if (errno || end == s || *end || !isfinite(d)) return -1;
+    *v = d;
+    return 0;
+}
+
+int kv_parse_long(const char *s, long lo, long hi, long *v)
+{
+    char *end;
+    errno = 0;
+    long x = strtol(s, &end, 10);
+    while (*end == ' ' || *end == '\t') end++;
+    if (errno || end == s || *end || x < lo || x > hi) return -1;
+    *v = x;
+    return 0;
+}
+
+int kv_parse_doubles(const char *s, double *v, int n)
+{
+    const char *p = s;
+    for (int i = 0; i < n; i++) {
+        /* separator before every number but the first: spaces, at most one comma */
+        while (*p == ' ' || *p == '\t') p++;
+        if (i > 0 && *p == ',') p++;
+        while (*p == ' ' || *p == '\t') p++;
+        if (*p == ',' || *p == 0) return -1;
+        char *end;
+        errno = 0;
+        double d = strtod(p, &end);
+        if (errno || end == p || !isfinite(d)) return -1;
+        v[i] = d;
+        p = end;
+    }
+    while (*p == ' ' || *p == '\t') p++;
+    return *p ? -1 : 0;
+}

@@ -1,0 +1,269 @@
+/* lcm_copy.c - LCM messages <-> the library's fixed structs (lcm_copy.h). */
+#include "lcm_copy.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The wire format is fixed by the .lcm files; keep the C side in step. */
+typedef char lcmc_check_max_det[TRK_DETECTION_SCAN_T_MAX_DETECTIONS == 256 ? 1 : -1];
+typedef char lcmc_check_max_tracks[TRK_TRACK_LIST_T_MAX_TRACKS == 64 ? 1 : -1];
+
+static const char *const REASON_NAME[LCMC_N_REASONS] = {
+    "ok", "decode", "count", "capacity", "nonfinite", "field", "sensor", "time", "gap", "other"};
+
+static const char *const REASON_TEXT[LCMC_N_REASONS] = {
+    "accepted",
+    "message does not decode as trk.detection_scan_t (wrong type, truncated or trailing bytes)",
+    "n_detections outside 0 .. MAX_DETECTIONS",
+    "n_detections above the tracker's capacity (TRK_MAX_DETECTIONS)",
+    "a used field is NaN, infinite or beyond the tracker's real range",
+    "invalid field (boolean not 0/1, negative amplitude or utime)",
+    "sensor_id is not a configured sensor",
+    "scan time before the previous accepted scan",
+    "gap since the previous accepted scan longer than max_dt_s",
+    "scan refused by the tracker",
+};
+
+const char *lcmc_reason_name(enum lcmc_reason r)
+{
+    return (unsigned)r < LCMC_N_REASONS ? REASON_NAME[r] : "unknown";
+}
+
+const char *lcmc_reason_text(enum lcmc_reason r)
+{
+    return (unsigned)r < LCMC_N_REASONS ? REASON_TEXT[r] : "unknown reason";
+}
+
+enum lcmc_reason lcmc_reason_of_status(trk_status st)
+{
+    switch (st) {
+    case TRK_OK: return LCMC_OK;
+    case TRK_E_TIME: return LCMC_TIME;
+    case TRK_E_RANGE: return LCMC_GAP;
+    case TRK_E_SENSOR: return LCMC_SENSOR;
+    case TRK_E_CAPACITY: return LCMC_CAPACITY;
+    default: return LCMC_OTHER;
+    }
+}
+
+/* Finite and within trk_real's range (converting a larger double to float
+ * would be undefined behaviour, C99 6.3.1.5). */
+static int representable(double d) { return isfinite(d) && fabs(d) <= (double)TRK_REAL_MAX; }
+
+#define DETAIL(...)                                                                  \
+    do {                                                                             \
+        if (detail && detail_len) snprintf(detail, detail_len, __VA_ARGS__);         \
+    } while (0)
+
+enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_sensors,
+                                    struct lcmc_scan *out, char *detail, size_t detail_len)
+{
+    if (detail && detail_len) detail[0] = 0;
+    if (m->n_detections < 0 || m->n_detections > TRK_DETECTION_SCAN_T_MAX_DETECTIONS) {
+        DETAIL("n_detections = %ld", (long)m->n_detections);
+        return LCMC_COUNT;
+    }
+    if ((size_t)m->n_detections > TRK_MAX_DETECTIONS) {
+        DETAIL("n_detections = %ld > TRK_MAX_DETECTIONS = %d", (long)m->n_detections,
+               TRK_MAX_DETECTIONS);
+        return LCMC_CAPACITY;
+    }
+    if (m->utime < 0) {
+        DETAIL("utime = %lld", (long long)m->utime);
+        return LCMC_FIELD;
+    }
+    if (m->sensor_id < 0 || (unsigned)m->sensor_id >= n_sensors) {
+        DETAIL("sensor_id = %ld, configured 0 .. %u", (long)m->sensor_id, n_sensors - 1);
+        return LCMC_SENSOR;
+    }
+    const size_t n = (size_t)m->n_detections;
+    /* pass 1: validate everything (out is not touched on a rejection) */
+    for (size_t i = 0; i < n; i++) {
+        const trk_detection_t *d = &m->detections[i];
+        if ((d->has_cov != 0 && d->has_cov != 1) ||
+            (d->has_amplitude != 0 && d->has_amplitude != 1)) {
+            DETAIL("detections[%zu]: boolean has_cov = %d, has_amplitude = %d", i, d->has_cov,
+                   d->has_amplitude);
+            return LCMC_FIELD;
+        }
+        if (!representable(d->x_m) || !representable(d->y_m)) {
+            DETAIL("detections[%zu]: position (%g, %g)", i, d->x_m, d->y_m);
+            return LCMC_NONFINITE;
+        }
+        for (int k = 0; d->has_cov && k < 3; k++)
+            if (!representable(d->cov_m2[k])) {
+                DETAIL("detections[%zu]: cov_m2[%d] = %g", i, k, d->cov_m2[k]);
+                return LCMC_NONFINITE;
+            }
+        if (d->has_amplitude && !representable(d->amplitude)) {
+            DETAIL("detections[%zu]: amplitude = %g", i, d->amplitude);
+            return LCMC_NONFINITE;
+        }
+        if (d->has_amplitude && d->amplitude < 0) {
+            DETAIL("detections[%zu]: amplitude = %g < 0", i, d->amplitude);
+            return LCMC_FIELD;
+        }
+    }
+    /* pass 2: copy (every conversion is now exact or rounding only) */
+    for (size_t i = 0; i < n; i++) {
+        const trk_detection_t *d = &m->detections[i];
+        struct trk_detection *o = &out->det[i];
+        o->x_m = (trk_real)d->x_m;
+        o->y_m = (trk_real)d->y_m;
+        o->has_cov = (uint8_t)d->has_cov;
+        o->has_amplitude = (uint8_t)d->has_amplitude;
+        for (int k = 0; k < 3; k++) o->cov_m2[k] = d->has_cov ? (trk_real)d->cov_m2[k] : 0;
+        o->amplitude = d->has_amplitude ? (trk_real)d->amplitude : 0;
+    }
+    out->scan.time_us = m->utime;
+    out->scan.sensor_id = (unsigned)m->sensor_id;
+    out->scan.n_detections = n;
+    out->scan.detections = out->det;
+    out->seq = m->seq;
+    return LCMC_OK;
+}
+
+enum lcmc_reason lcmc_scan_from_bytes(const void *buf, size_t len, unsigned n_sensors,
+                                      trk_detection_scan_t *work, struct lcmc_scan *out,
+                                      char *detail, size_t detail_len)
+{
+    if (detail && detail_len) detail[0] = 0;
+    /* the type's wire size is constant: anything else cannot be one */
+    if (!buf || len != LCMC_SCAN_WIRE_SIZE) {
+        DETAIL("%zu bytes, a detection_scan_t has %d", len, LCMC_SCAN_WIRE_SIZE);
+        return LCMC_DECODE;
+    }
+    int used = trk_detection_scan_t_decode(buf, 0, (int)len, work);
+    if (used < 0) {
+        DETAIL("wrong type hash");
+        return LCMC_DECODE;
+    }
+    if ((size_t)used != len) {
+        DETAIL("decoded %d of %zu bytes", used, len);
+        return LCMC_DECODE;
+    }
+    return lcmc_scan_from_msg(work, n_sensors, out, detail, detail_len);
+}
+
+enum lcmc_reason lcmc_scan_to_msg(const struct trk_scan *s, int64_t seq, trk_detection_scan_t *m)
+{
+    if (s->n_detections > TRK_DETECTION_SCAN_T_MAX_DETECTIONS) return LCMC_COUNT;
+    if (s->time_us < 0 || s->sensor_id > INT32_MAX) return LCMC_FIELD;
+    memset(m, 0, sizeof *m);
+    m->utime = s->time_us;
+    m->sensor_id = (int32_t)s->sensor_id;
+    m->seq = seq;
+    m->n_detections = (int32_t)s->n_detections;
+    for (size_t i = 0; i < s->n_detections; i++) {
+        const struct trk_detection *d = &s->detections[i];
+        trk_detection_t *o = &m->detections[i];
+        o->x_m = (double)d->x_m;
+        o->y_m = (double)d->y_m;
+        o->has_cov = d->has_cov ? 1 : 0;
+        if (d->has_cov)
+            for (int k = 0; k < 3; k++) o->cov_m2[k] = (double)d->cov_m2[k];
+        o->has_amplitude = d->has_amplitude ? 1 : 0;
+        if (d->has_amplitude) o->amplitude = (double)d->amplitude;
+    }
+    return LCMC_OK;
+}
+
+/* ------------------------------------------------------------------ tracks */
+
+static int8_t confirm_code(const struct trk_tracker_params *p)
+{
+    switch (p->confirm.method) {
+    case TRK_CONFIRM_MN: return TRK_TRACK_T_CONFIRM_MN;
+    case TRK_CONFIRM_SPRT: return TRK_TRACK_T_CONFIRM_SPRT;
+    case TRK_CONFIRM_CLUTTER_CHI2: return TRK_TRACK_T_CONFIRM_CLUTTER_DENSITY;
+    case TRK_CONFIRM_CLUTTER_AMP: return TRK_TRACK_T_CONFIRM_CLUTTER_AMPLITUDE;
+    case TRK_CONFIRM_VISIBILITY: return TRK_TRACK_T_CONFIRM_VISIBILITY;
+    }
+    return 0;
+}
+
+static int8_t term_code(const struct trk_tracker_params *p)
+{
+    switch (p->term.method) {
+    case TRK_TERM_KN: return TRK_TRACK_T_TERM_KN;
+    case TRK_TERM_PAGE: return TRK_TRACK_T_TERM_PAGE;
+    case TRK_TERM_SHIRYAEV: return TRK_TRACK_T_TERM_SHIRYAEV;
+    case TRK_TERM_VISIBILITY: return TRK_TRACK_T_TERM_VISIBILITY;
+    }
+    return 0;
+}
+
+static int32_t clamp32(uint32_t v) { return v > INT32_MAX ? INT32_MAX : (int32_t)v; }
+
+void lcmc_track_to_msg(const struct trk_tracker *t, const struct trk_track *tr, trk_track_t *m)
+{
+    memset(m, 0, sizeof *m);
+    m->id = (int64_t)tr->id;
+    m->status = (int8_t)tr->status;
+    m->end_reason = (int8_t)tr->end_reason;
+    m->utime = tr->time_us;
+    for (int i = 0; i < 4; i++) m->x[i] = (double)tr->x[i];
+    for (int i = 0; i < 16; i++) m->p[i] = (double)tr->p[i];
+    /* visibility p_v and its smoothed confidence p_cv (see track_t.lcm) */
+    m->has_existence_prob = m->has_visibility_prob = t->params.track_visibility ? 1 : 0;
+    m->visibility_prob = t->params.track_visibility ? (double)tr->vis.pv : 0;
+    m->existence_prob = t->params.track_visibility ? (double)tr->vis.pcv : 0;
+    m->confirm_method = confirm_code(&t->params);
+    m->confirm_stat = (double)tr->confirm_stat;
+    m->term_method = term_code(&t->params);
+    m->term_stat = (double)tr->term_stat;
+    m->n_updates = clamp32(tr->n_scans);
+    m->n_hits = clamp32(tr->n_hits);
+    m->n_misses_in_row = clamp32(tr->n_misses_in_row);
+    m->n_gated_last = (int32_t)tr->n_gated_last;
+    m->beta0_last = (double)tr->beta0_last;
+}
+
+/* Was (or is) the track confirmed? A terminated track ended as confirmed
+ * unless it was rejected or aged out while tentative. */
+static int is_confirmed(const struct trk_track *tr)
+{
+    if (tr->status == TRK_TRACK_CONFIRMED) return 1;
+    return tr->status == TRK_TRACK_TERMINATED && tr->end_reason != TRK_END_REJECTED &&
+           tr->end_reason != TRK_END_TENTATIVE_AGE && tr->end_reason != TRK_END_NONE;
+}
+
+void lcmc_tracks_to_msg(const struct trk_tracker *t, const struct trk_scan *scan, int64_t seq,
+                        const struct trk_scan_report *rep, trk_track_list_t *m)
+{
+    memset(m, 0, sizeof *m);
+    m->utime = scan->time_us;
+    m->sensor_id = scan->sensor_id > INT32_MAX ? INT32_MAX : (int32_t)scan->sensor_id;
+    m->seq = seq;
+    if (rep) {
+        m->n_detections = clamp32(rep->n_detections);
+        m->n_detections_rejected =
+            clamp32(rep->n_rejected_nonfinite + rep->n_rejected_cov + rep->n_rejected_amplitude);
+        m->n_started = clamp32(rep->n_started);
+        m->n_confirmed = clamp32(rep->n_confirmed);
+        m->n_terminated = clamp32(rep->n_terminated);
+        m->n_init_refused_full = clamp32(rep->n_init_refused_full);
+        m->n_below_threshold = clamp32(rep->n_below_threshold);
+        m->n_merged = clamp32(rep->n_merged);
+    }
+    const size_t live = trk_tracker_live_count(t);
+    const int all_fit = live <= TRK_TRACK_LIST_T_MAX_TRACKS;
+    int32_t n = 0, omitted = 0;
+    /* pass 0: everything (all fit) or the confirmed ones; pass 1: the rest */
+    for (int pass = 0; pass < (all_fit ? 1 : 2); pass++) {
+        for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
+            const struct trk_track *tr = trk_tracker_track(t, s);
+            if (!tr) continue;
+            if (!all_fit && is_confirmed(tr) != (pass == 0)) continue;
+            if (n == TRK_TRACK_LIST_T_MAX_TRACKS) {
+                omitted++;
+                continue;
+            }
+            lcmc_track_to_msg(t, tr, &m->tracks[n++]);
+        }
+    }
+    m->n_tracks = n;
+    m->n_omitted = omitted;
+}

@@ -1,0 +1,740 @@
+/* tracker_config.c - the tracker's configuration for the tools
+ * (tracker_config.h). */
+#include "tracker_config.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "kvfile.h"
+#include "trk/confirm_mn.h"
+#include "trk/amplitude.h"
+#include "trk/table.h"
+#include "trk/table_file.h"
+#include "trk/term_kn.h"
+
+/* ------------------------------------------------------------------ defaults */
+
+void tcfg_defaults(struct tcfg *c)
+{
+    memset(c, 0, sizeof *c);
+    trk_tracker_default_params(&c->params);
+    for (unsigned s = 1; s < TRK_MAX_SENSORS; s++) c->params.sensor[s] = c->params.sensor[0];
+    c->confirm = c->params.confirm.method;
+    c->term = c->params.term.method;
+    c->mn = c->params.confirm.u.mn;
+    c->kn = c->params.term.u.kn;
+    c->sprt.alpha = TRK_REAL_C(0.01);
+    c->sprt.beta = TRK_REAL_C(0.1);
+    c->sprt.model = TRK_SPRT_FIXED_PD;
+    c->sprt.pd = TRK_REAL_C(0.9);
+    c->clutter_density.alpha = TRK_REAL_C(0.01);
+    c->clutter_density.kmax = TRK_CLUTTER_KMAX < 25 ? TRK_CLUTTER_KMAX : 25;
+    c->clutter_amplitude.alpha = TRK_REAL_C(0.01);
+    c->clutter_amplitude.kmax = c->clutter_density.kmax;
+    c->clutter_amplitude.a_min_db = 10;
+    c->page.h = 5;
+    c->shiryaev.beta0 = TRK_REAL_C(0.01);
+    c->shiryaev.rho = TRK_REAL_C(0.01);
+    c->shiryaev.h = TRK_REAL_C(4.59511985013459); /* ln(0.99 / 0.01) */
+    c->hmm.p_low_high = TRK_REAL_C(0.1);
+    c->hmm.q_high_low = TRK_REAL_C(0.1);
+    c->hmm.pd_low = TRK_REAL_C(0.3);
+    c->hmm.pd_high = TRK_REAL_C(0.9);
+    c->hmm.pi0_high = TRK_HMM_PI0_STATIONARY;
+    for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) {
+        c->amp[s].model = TCFG_AMP_NONE;
+        c->amp[s].k_shape = 1;
+        c->amp[s].snr_db = 15;
+        c->amp[s].pfa = 1e-3;
+    }
+}
+
+void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out)
+{
+    struct trk_hmm_params hp;
+    memset(&hp, 0, sizeof hp);
+    trk_hmm_params_uniform(&hp, c->params.n_sensors, &c->hmm);
+    *out = c->params;
+    memset(&out->confirm, 0, sizeof out->confirm);
+    memset(&out->term, 0, sizeof out->term);
+    out->confirm.method = c->confirm;
+    switch (c->confirm) {
+    case TRK_CONFIRM_MN: out->confirm.u.mn = c->mn; break;
+    case TRK_CONFIRM_SPRT:
+        out->confirm.u.sprt = c->sprt;
+        out->confirm.u.sprt.hmm = hp;
+        break;
+    case TRK_CONFIRM_CLUTTER_CHI2: out->confirm.u.chi2 = c->clutter_density; break;
+    case TRK_CONFIRM_CLUTTER_AMP: out->confirm.u.amp = c->clutter_amplitude; break;
+    case TRK_CONFIRM_VISIBILITY: break; /* uses out->visibility */
+    }
+    out->term.method = c->term;
+    switch (c->term) {
+    case TRK_TERM_KN: out->term.u.kn = c->kn; break;
+    case TRK_TERM_PAGE:
+        out->term.u.page = c->page;
+        out->term.u.page.hmm = hp;
+        break;
+    case TRK_TERM_SHIRYAEV:
+        out->term.u.shiryaev = c->shiryaev;
+        out->term.u.shiryaev.hmm = hp;
+        break;
+    case TRK_TERM_VISIBILITY: break; /* uses out->visibility */
+    }
+}
+
+/* ------------------------------------------------------------------ values */
+
+/* Range of a number: lo/hi with open (1) or closed (0) ends. */
+struct range {
+    double lo, hi;
+    int lo_open, hi_open;
+};
+
+static int in_range(double v, struct range r)
+{
+    if (r.lo_open ? !(v > r.lo) : !(v >= r.lo)) return 0;
+    if (r.hi_open ? !(v < r.hi) : !(v <= r.hi)) return 0;
+    return 1;
+}
+
+static void range_text(struct range r, char *buf, size_t n)
+{
+    if (r.hi >= 1e300) snprintf(buf, n, "%s %g", r.lo_open ? ">" : ">=", r.lo);
+    else
+        snprintf(buf, n, "in %c%g, %g%c", r.lo_open ? '(' : '[', r.lo, r.hi, r.hi_open ? ')' : ']');
+}
+
+static int get_double(const char *v, struct range r, double *out, char *err, size_t n)
+{
+    double d;
+    if (kv_parse_double(v, &d) != 0) {
+        snprintf(err, n, "not a finite number");
+        return -1;
+    }
+    if (!in_range(d, r)) {
+        char t[64];
+        range_text(r, t, sizeof t);
+        snprintf(err, n, "must be %s", t);
+        return -1;
+    }
+    /* a value the float build cannot hold would turn into inf or 0 */
+    if (TRK_REAL_IS_FLOAT && d != 0 && (fabs(d) > 3.4e38 || fabs(d) < 1.2e-38)) {
+        snprintf(err, n, "outside the float range of this build");
+        return -1;
+    }
+    *out = d;
+    return 0;
+}
+
+static int get_real(const char *v, struct range r, trk_real *out, char *err, size_t n)
+{
+    double d;
+    if (get_double(v, r, &d, err, n) != 0) return -1;
+    *out = (trk_real)d;
+    return 0;
+}
+
+static int get_long(const char *v, long lo, long hi, long *out, char *err, size_t n)
+{
+    if (kv_parse_long(v, lo, hi, out) != 0) {
+        snprintf(err, n, "must be an integer in %ld .. %ld", lo, hi);
+        return -1;
+    }
+    return 0;
+}
+
+static int get_name(const char *v, const char *const *names, int *out, char *err, size_t n)
+{
+    for (int i = 0; names[i]; i++)
+        if (strcmp(v, names[i]) == 0) {
+            *out = i;
+            return 0;
+        }
+    size_t k = (size_t)snprintf(err, n, "must be one of:");
+    for (int i = 0; names[i] && k < n; i++) k += (size_t)snprintf(err + k, n - k, " %s", names[i]);
+    return -1;
+}
+
+static int get_path(const char *v, char *dst, char *err, size_t n)
+{
+    if (strlen(v) >= TCFG_PATH_MAX) {
+        snprintf(err, n, "path longer than %d characters", TCFG_PATH_MAX - 1);
+        return -1;
+    }
+    strcpy(dst, v);
+    return 0;
+}
+
+static const struct range R_PROB_OC = {0, 1, 1, 0};    /* (0, 1] */
+static const struct range R_PROB_OO = {0, 1, 1, 1};    /* (0, 1) */
+static const struct range R_PROB_CC = {0, 1, 0, 0};    /* [0, 1] */
+static const struct range R_PROB_CO = {0, 1, 0, 1};    /* [0, 1) */
+static const struct range R_POS = {0, 1e308, 1, 0};    /* > 0 */
+static const struct range R_NONNEG = {0, 1e308, 0, 0}; /* >= 0 */
+static const struct range R_ANY = {-1e308, 1e308, 0, 0};
+static const struct range R_MAXDT = {0, 1e9, 1, 0};
+
+static const char *const CLUTTER_NAMES[] = {"parametric", "nonparametric", NULL};
+static const char *const MODE_NAMES[] = {"fixed", "sliding", NULL};
+static const char *const CONFIRM_NAMES[] = {"mn", "sprt", "clutter_density", "clutter_amplitude",
+                                            "visibility", NULL};
+static const char *const TERM_NAMES[] = {"kn", "page", "shiryaev", "visibility", NULL};
+static const char *const SPRT_MODEL_NAMES[] = {"fixed_pd", "hmm", NULL};
+static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
+
+/* ------------------------------------------------------------------ set */
+
+static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v, char *err,
+                      size_t n)
+{
+    struct trk_sensor_params *sp = &c->params.sensor[s];
+    struct tcfg_amp *a = &c->amp[s];
+    if (strcmp(key, "pd") == 0) return get_real(v, R_PROB_OC, &sp->pd, err, n);
+    if (strcmp(key, "clutter_density_per_m2") == 0)
+        return get_real(v, R_NONNEG, &sp->clutter_density_per_m2, err, n);
+    if (strcmp(key, "meas_cov_m2") == 0) {
+        double m[3];
+        if (kv_parse_doubles(v, m, 3) != 0) {
+            snprintf(err, n, "expected three numbers xx, xy, yy (m^2)");
+            return -1;
+        }
+        if (!(m[0] > 0 && m[2] > 0 && m[0] * m[2] - m[1] * m[1] > 0)) {
+            snprintf(err, n, "not positive definite (need xx > 0, yy > 0, xx yy > xy^2)");
+            return -1;
+        }
+        for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = (trk_real)m[i];
+        return 0;
+    }
+    if (strcmp(key, "meas_sigma_m") == 0) {
+        double sg;
+        if (get_double(v, R_POS, &sg, err, n) != 0) return -1;
+        sp->meas_cov_m2[0] = sp->meas_cov_m2[2] = (trk_real)(sg * sg);
+        sp->meas_cov_m2[1] = 0;
+        return 0;
+    }
+    if (strcmp(key, "amplitude") == 0) return get_name(v, AMP_NAMES, &a->model, err, n);
+    if (strcmp(key, "k_shape") == 0) return get_double(v, R_POS, &a->k_shape, err, n);
+    if (strcmp(key, "snr_db") == 0) {
+        const struct range r = {-50, 80, 0, 0};
+        return get_double(v, r, &a->snr_db, err, n);
+    }
+    if (strcmp(key, "pfa") == 0) return get_double(v, R_PROB_OO, &a->pfa, err, n);
+    if (strcmp(key, "amp_table") == 0) return get_path(v, a->table, err, n);
+    return 1;
+}
+
+int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
+{
+    struct tcfg *c = ctx;
+    struct trk_tracker_params *p = &c->params;
+    long l;
+    int e;
+
+    if (strncmp(key, "sensor.", 7) == 0) {
+        char *end;
+        errno = 0;
+        unsigned long s = strtoul(key + 7, &end, 10);
+        if (end == key + 7 || *end != '.' || errno) return 1;
+        if (s >= TRK_MAX_SENSORS) {
+            snprintf(err, n, "sensor index %lu: this build has TRK_MAX_SENSORS = %d", s,
+                     TRK_MAX_SENSORS);
+            return -1;
+        }
+        return set_sensor(c, (unsigned)s, end + 1, v, err, n);
+    }
+    if (strcmp(key, "sensors") == 0) {
+        if (get_long(v, 1, TRK_MAX_SENSORS, &l, err, n) != 0) return -1;
+        p->n_sensors = (unsigned)l;
+        return 0;
+    }
+    if (strcmp(key, "process_noise_q") == 0) return get_real(v, R_NONNEG, &p->process_noise_q, err, n);
+    if (strcmp(key, "gate_prob") == 0) return get_real(v, R_PROB_OO, &p->gate_prob, err, n);
+    if (strcmp(key, "clutter") == 0) {
+        if (get_name(v, CLUTTER_NAMES, &e, err, n) != 0) return -1;
+        p->clutter = e ? TRK_CLUTTER_NONPARAMETRIC : TRK_CLUTTER_PARAMETRIC;
+        return 0;
+    }
+    if (strcmp(key, "init_speed_sigma_mps") == 0)
+        return get_real(v, R_POS, &p->init_speed_sigma_mps, err, n);
+    if (strcmp(key, "max_dt_s") == 0) return get_real(v, R_MAXDT, &p->max_dt_s, err, n);
+    if (strcmp(key, "max_tentative_scans") == 0) {
+        if (get_long(v, 0, LONG_MAX < 4294967295L ? LONG_MAX : 4294967295L, &l, err, n) != 0)
+            return -1;
+        p->max_tentative_scans = (uint32_t)l;
+        return 0;
+    }
+    if (strcmp(key, "merge_gate_d2") == 0) return get_real(v, R_NONNEG, &p->merge_gate_d2, err, n);
+    /* visibility (IPDA existence) */
+    if (strcmp(key, "visibility") == 0) {
+        if (get_long(v, 0, 1, &l, err, n) != 0) return -1;
+        p->track_visibility = (int)l;
+        return 0;
+    }
+    if (strcmp(key, "visibility.pv0") == 0) return get_real(v, R_PROB_OO, &p->visibility.pv0, err, n);
+    if (strcmp(key, "visibility.pcv0") == 0) return get_real(v, R_PROB_CC, &p->visibility.pcv0, err, n);
+    if (strcmp(key, "visibility.delta_stay") == 0)
+        return get_real(v, R_PROB_CC, &p->visibility.delta_stay, err, n);
+    if (strcmp(key, "visibility.delta_become") == 0)
+        return get_real(v, R_PROB_CC, &p->visibility.delta_become, err, n);
+    if (strcmp(key, "visibility.omega_c") == 0) return get_real(v, R_PROB_CO, &p->visibility.omega_c, err, n);
+    if (strcmp(key, "visibility.p_con") == 0) return get_real(v, R_PROB_OC, &p->visibility.p_con, err, n);
+    if (strcmp(key, "visibility.p_term") == 0) return get_real(v, R_PROB_CO, &p->visibility.p_term, err, n);
+    /* confirmation */
+    if (strcmp(key, "confirm") == 0) {
+        static const enum trk_confirm_method m[] = {TRK_CONFIRM_MN, TRK_CONFIRM_SPRT,
+                                                    TRK_CONFIRM_CLUTTER_CHI2, TRK_CONFIRM_CLUTTER_AMP,
+                                                    TRK_CONFIRM_VISIBILITY};
+        if (get_name(v, CONFIRM_NAMES, &e, err, n) != 0) return -1;
+        c->confirm = m[e];
+        return 0;
+    }
+    if (strcmp(key, "confirm.mn.m") == 0) {
+        if (get_long(v, 1, TRK_MN_MAX_N, &l, err, n) != 0) return -1;
+        c->mn.m = (int)l;
+        return 0;
+    }
+    if (strcmp(key, "confirm.mn.n") == 0) {
+        if (get_long(v, 1, TRK_MN_MAX_N, &l, err, n) != 0) return -1;
+        c->mn.n = (int)l;
+        return 0;
+    }
+    if (strcmp(key, "confirm.mn.mode") == 0) {
+        if (get_name(v, MODE_NAMES, &e, err, n) != 0) return -1;
+        c->mn.mode = e ? TRK_MN_SLIDING : TRK_MN_FIXED;
+        return 0;
+    }
+    if (strcmp(key, "confirm.sprt.alpha") == 0) return get_real(v, R_PROB_OO, &c->sprt.alpha, err, n);
+    if (strcmp(key, "confirm.sprt.beta") == 0) return get_real(v, R_PROB_OO, &c->sprt.beta, err, n);
+    if (strcmp(key, "confirm.sprt.pd") == 0) return get_real(v, R_PROB_OO, &c->sprt.pd, err, n);
+    if (strcmp(key, "confirm.sprt.model") == 0) {
+        if (get_name(v, SPRT_MODEL_NAMES, &e, err, n) != 0) return -1;
+        c->sprt.model = e ? TRK_SPRT_HMM : TRK_SPRT_FIXED_PD;
+        return 0;
+    }
+    if (strcmp(key, "confirm.clutter_density.alpha") == 0)
+        return get_real(v, R_PROB_OO, &c->clutter_density.alpha, err, n);
+    if (strcmp(key, "confirm.clutter_density.kmax") == 0) {
+        if (get_long(v, 1, TRK_CLUTTER_KMAX, &l, err, n) != 0) return -1;
+        c->clutter_density.kmax = (unsigned)l;
+        return 0;
+    }
+    if (strcmp(key, "confirm.clutter_amplitude.alpha") == 0)
+        return get_real(v, R_PROB_OO, &c->clutter_amplitude.alpha, err, n);
+    if (strcmp(key, "confirm.clutter_amplitude.kmax") == 0) {
+        if (get_long(v, 1, TRK_CLUTTER_KMAX, &l, err, n) != 0) return -1;
+        c->clutter_amplitude.kmax = (unsigned)l;
+        return 0;
+    }
+    if (strcmp(key, "confirm.clutter_amplitude.a_min_db") == 0)
+        return get_real(v, R_ANY, &c->clutter_amplitude.a_min_db, err, n);
+    /* termination */
+    if (strcmp(key, "term") == 0) {
+        static const enum trk_term_method m[] = {TRK_TERM_KN, TRK_TERM_PAGE, TRK_TERM_SHIRYAEV,
+                                                 TRK_TERM_VISIBILITY};
+        if (get_name(v, TERM_NAMES, &e, err, n) != 0) return -1;
+        c->term = m[e];
+        return 0;
+    }
+    if (strcmp(key, "term.kn.k") == 0) {
+        if (get_long(v, 0, TRK_KN_MAX_N - 1, &l, err, n) != 0) return -1;
+        c->kn.k = (int)l;
+        return 0;
+    }
+    if (strcmp(key, "term.kn.n") == 0) {
+        if (get_long(v, 1, TRK_KN_MAX_N, &l, err, n) != 0) return -1;
+        c->kn.n = (int)l;
+        return 0;
+    }
+    if (strcmp(key, "term.page.h") == 0) return get_real(v, R_POS, &c->page.h, err, n);
+    if (strcmp(key, "term.shiryaev.beta0") == 0)
+        return get_real(v, R_PROB_OO, &c->shiryaev.beta0, err, n);
+    if (strcmp(key, "term.shiryaev.rho") == 0) return get_real(v, R_PROB_CO, &c->shiryaev.rho, err, n);
+    if (strcmp(key, "term.shiryaev.h") == 0) return get_real(v, R_ANY, &c->shiryaev.h, err, n);
+    /* fluctuating-SNR detection model */
+    if (strcmp(key, "hmm.p_low_high") == 0) return get_real(v, R_PROB_CC, &c->hmm.p_low_high, err, n);
+    if (strcmp(key, "hmm.q_high_low") == 0) return get_real(v, R_PROB_CC, &c->hmm.q_high_low, err, n);
+    if (strcmp(key, "hmm.pd_low") == 0) return get_real(v, R_PROB_OO, &c->hmm.pd_low, err, n);
+    if (strcmp(key, "hmm.pd_high") == 0) return get_real(v, R_PROB_OO, &c->hmm.pd_high, err, n);
+    if (strcmp(key, "hmm.pi0_high") == 0) {
+        if (strcmp(v, "stationary") == 0) {
+            c->hmm.pi0_high = TRK_HMM_PI0_STATIONARY;
+            return 0;
+        }
+        return get_real(v, R_PROB_CC, &c->hmm.pi0_high, err, n);
+    }
+    if (strcmp(key, "q2_table") == 0) return get_path(v, c->q2_table, err, n);
+    return 1;
+}
+
+/* ------------------------------------------------------------------ check */
+
+/* Load a table file with the library's host helper (trk/table_file.h:
+ * read into an 8-byte aligned buffer, trk_table_parse: magic, version, real
+ * width of this build, layout, CRC), then check its kind and, for amplitude
+ * tables, the amplitude model's own checks. */
+static int check_table(const char *path, const char *what, const uint32_t *kinds, int n_kinds,
+                       int amp, char *err, size_t n)
+{
+    size_t len;
+    trk_status st = trk_table_file_size(path, &len);
+    if (st != TRK_OK) {
+        snprintf(err, n, "%s '%s': cannot open: %s", what, path, strerror(errno));
+        return -1;
+    }
+    if (len == 0 || len > (size_t)TRK_TABLE_MAX_REALS * 8u) {
+        snprintf(err, n, "%s '%s': %s", what, path, len ? "too large for a table" : "empty file");
+        return -1;
+    }
+    void *bytes = malloc(len); /* malloc: aligned for double, as trk_table_parse needs */
+    if (!bytes) {
+        snprintf(err, n, "%s '%s': out of memory", what, path);
+        return -1;
+    }
+    struct trk_table t;
+    st = trk_table_load_file(path, bytes, len, &t, NULL);
+    if (st != TRK_OK) {
+        free(bytes);
+        snprintf(err, n, "%s '%s': not a usable table for this build: %s", what, path,
+                 trk_status_str(st));
+        return -1;
+    }
+    int kind_ok = 0;
+    for (int i = 0; i < n_kinds; i++) kind_ok |= t.info.kind == kinds[i];
+    if (!kind_ok) {
+        free(bytes);
+        snprintf(err, n, "%s '%s': a table of kind %lu, not the kind this setting needs", what,
+                 path, (unsigned long)t.info.kind);
+        return -1;
+    }
+    if (amp) { /* the amplitude model's own checks of its table */
+        struct trk_amplitude m;
+        st = trk_amplitude_init_table(&m, &t);
+        if (st != TRK_OK) {
+            free(bytes);
+            snprintf(err, n, "%s '%s': trk_amplitude_init_table: %s", what, path,
+                     trk_status_str(st));
+            return -1;
+        }
+    }
+    free(bytes);
+    return 0;
+}
+
+/* Names of the methods, indexed by the tracker's enums. */
+static const char *confirm_name(enum trk_confirm_method m)
+{
+    switch (m) {
+    case TRK_CONFIRM_MN: return "mn";
+    case TRK_CONFIRM_SPRT: return "sprt";
+    case TRK_CONFIRM_CLUTTER_CHI2: return "clutter_density";
+    case TRK_CONFIRM_CLUTTER_AMP: return "clutter_amplitude";
+    case TRK_CONFIRM_VISIBILITY: return "visibility";
+    }
+    return "?";
+}
+
+static const char *term_name(enum trk_term_method m)
+{
+    switch (m) {
+    case TRK_TERM_KN: return "kn";
+    case TRK_TERM_PAGE: return "page";
+    case TRK_TERM_SHIRYAEV: return "shiryaev";
+    case TRK_TERM_VISIBILITY: return "visibility";
+    }
+    return "?";
+}
+
+/* trk_tracker_init on a heap tracker (it is large). */
+static trk_status try_init(const struct trk_tracker_params *p)
+{
+    struct trk_tracker *t = malloc(sizeof *t);
+    if (!t) return TRK_E_CAPACITY;
+    trk_status st = trk_tracker_init(t, p);
+    free(t);
+    return st;
+}
+
+static const char *unsupported_hint(trk_status st)
+{
+    return st == TRK_E_UNSUPPORTED ? " (not built into this libtrk: TRK_WITH_CLUTTER_TESTS = 0)"
+           : st == TRK_E_SENSOR    ? " (the HMM needs a model for every sensor)"
+                                   : "";
+}
+
+int tcfg_check(const struct tcfg *c, char *err, size_t n)
+{
+    const struct trk_tracker_params *p = &c->params;
+    struct trk_tracker_params full, base;
+    trk_status st;
+    /* 1. the tracker (the authority) with the chosen methods */
+    tcfg_params(c, &full);
+    st = try_init(&full);
+    if (st != TRK_OK) {
+        /* name the culprit: the base parameters (default tests), or the
+         * confirmation test, or the termination test */
+        if (p->n_sensors < 1 || p->n_sensors > TRK_MAX_SENSORS) {
+            snprintf(err, n, "sensors = %u: must be 1 .. %d", p->n_sensors, TRK_MAX_SENSORS);
+            return -1;
+        }
+        for (unsigned s = 0; s < p->n_sensors; s++) {
+            struct trk_pda pda;
+            struct trk_pda_params pp = {2, p->sensor[s].pd, p->gate_prob, p->clutter,
+                                        p->sensor[s].clutter_density_per_m2, 1};
+            trk_status sst = trk_pda_init(&pda, &pp);
+            if (sst != TRK_OK) {
+                snprintf(err, n, "sensor.%u (pd, clutter_density_per_m2) or gate_prob: %s", s,
+                         trk_status_str(sst));
+                return -1;
+            }
+        }
+        struct tcfg d = *c;
+        d.confirm = TRK_CONFIRM_MN;
+        d.mn.m = 1, d.mn.n = 1, d.mn.mode = TRK_MN_FIXED;
+        d.term = TRK_TERM_KN;
+        d.kn.k = 0, d.kn.n = 1;
+        tcfg_params(&d, &base);
+        trk_status bst = try_init(&base);
+        if (bst != TRK_OK) {
+            snprintf(err, n, "tracker parameters refused by trk_tracker_init: %s", trk_status_str(bst));
+            return -1;
+        }
+        d = *c;
+        d.term = TRK_TERM_KN;
+        d.kn.k = 0, d.kn.n = 1;
+        tcfg_params(&d, &base);
+        bst = try_init(&base);
+        if (bst != TRK_OK) {
+            snprintf(err, n, "confirm = %s: its parameters (confirm.%s.*%s) are refused: %s%s",
+                     confirm_name(c->confirm), confirm_name(c->confirm),
+                     c->confirm == TRK_CONFIRM_SPRT ? ", hmm.*" : "", trk_status_str(bst),
+                     unsupported_hint(bst));
+            return -1;
+        }
+        snprintf(err, n, "term = %s: its parameters (term.%s.*%s) are refused: %s%s",
+                 term_name(c->term), term_name(c->term), c->term == TRK_TERM_KN ? "" : ", hmm.*",
+                 trk_status_str(st), unsupported_hint(st));
+        return -1;
+    }
+    /* 2. table files: read and checked by the library's table parser, kind
+     *    included (a bad table refuses the start) */
+    for (unsigned s = 0; s < p->n_sensors; s++) {
+        static const uint32_t amp_kind[] = {TRK_TABLE_KIND_AMP};
+        char what[64];
+        snprintf(what, sizeof what, "sensor.%u.amp_table", s);
+        if (c->amp[s].table[0] && check_table(c->amp[s].table, what, amp_kind, 1, 1, err, n) != 0)
+            return -1;
+        if (!c->amp[s].table[0] && c->amp[s].model == TCFG_AMP_K) {
+            snprintf(err, n, "sensor.%u.amplitude = k needs sensor.%u.amp_table (trk-tablegen amp)",
+                     s, s);
+            return -1;
+        }
+        if (!c->amp[s].table[0] && c->amp[s].model == TCFG_AMP_RAYLEIGH) {
+            struct trk_amplitude m;
+            st = trk_amplitude_init_rayleigh(&m, 1, (trk_real)c->amp[s].snr_db,
+                                             (trk_real)c->amp[s].pfa);
+            if (st != TRK_OK) {
+                snprintf(err, n, "sensor.%u amplitude model (snr_db, pfa): %s", s,
+                         trk_status_str(st));
+                return -1;
+            }
+        }
+    }
+    if (c->q2_table[0]) {
+        static const uint32_t q2_kinds[] = {TRK_TABLE_KIND_Q2_PDAF, TRK_TABLE_KIND_Q2_PDAFAI};
+        if (check_table(c->q2_table, "q2_table", q2_kinds, 2, 0, err, n) != 0) return -1;
+    }
+
+    /* 3. the tracker with the amplitude models built from those tables */
+    struct tcfg_runtime rt;
+    if (tcfg_load(c, &rt, err, n) != 0) return -1;
+    struct trk_tracker_params pa;
+    tcfg_params_rt(c, &rt, &pa);
+    struct trk_tracker *tk = malloc(sizeof *tk);
+    st = tk ? trk_tracker_init(tk, &pa) : TRK_E_CAPACITY;
+    free(tk);
+    tcfg_unload(&rt);
+    if (st != TRK_OK) {
+        snprintf(err, n, "the tracker refuses the sensors' amplitude models: %s", trk_status_str(st));
+        return -1;
+    }
+    return 0;
+}
+
+int tcfg_load(const struct tcfg *c, struct tcfg_runtime *rt, char *err, size_t n)
+{
+    memset(rt, 0, sizeof *rt);
+    for (unsigned s = 0; s < c->params.n_sensors; s++) {
+        const struct tcfg_amp *a = &c->amp[s];
+        trk_status st = TRK_OK;
+        if (a->table[0]) {
+            size_t len;
+            struct trk_table t;
+            if (trk_table_file_size(a->table, &len) != TRK_OK || len == 0 ||
+                !(rt->amp_bytes[s] = malloc(len))) { /* malloc: aligned as trk_table_parse needs */
+                snprintf(err, n, "sensor.%u.amp_table '%s': cannot read", s, a->table);
+                tcfg_unload(rt);
+                return -1;
+            }
+            st = trk_table_load_file(a->table, rt->amp_bytes[s], len, &t, NULL);
+            if (st == TRK_OK) st = trk_amplitude_init_table(&rt->amp[s], &t);
+        } else if (a->model == TCFG_AMP_RAYLEIGH) {
+            st = trk_amplitude_init_rayleigh(&rt->amp[s], 1, (trk_real)a->snr_db, (trk_real)a->pfa);
+        } else if (a->model == TCFG_AMP_K) {
+            snprintf(err, n, "sensor.%u.amplitude = k needs sensor.%u.amp_table (trk-tablegen amp)", s, s);
+            tcfg_unload(rt);
+            return -1;
+        } else {
+            continue;
+        }
+        if (st != TRK_OK) {
+            snprintf(err, n, "sensor.%u amplitude model: %s", s, trk_status_str(st));
+            tcfg_unload(rt);
+            return -1;
+        }
+        rt->use_amp[s] = 1;
+    }
+    return 0;
+}
+
+void tcfg_unload(struct tcfg_runtime *rt)
+{
+    for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) free(rt->amp_bytes[s]);
+    memset(rt, 0, sizeof *rt);
+}
+
+void tcfg_params_rt(const struct tcfg *c, const struct tcfg_runtime *rt, struct trk_tracker_params *out)
+{
+    tcfg_params(c, out);
+    for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) {
+        out->sensor[s].use_amplitude = rt && rt->use_amp[s];
+        if (out->sensor[s].use_amplitude) out->sensor[s].amplitude = rt->amp[s];
+    }
+}
+
+/* ------------------------------------------------------------------ write, help */
+
+/* Shortest %g that reads back as the same value. */
+static void put_num(FILE *f, const char *key, double v)
+{
+    char buf[40];
+    for (int prec = 6; prec <= 17; prec++) {
+        snprintf(buf, sizeof buf, "%.*g", prec, v);
+        if (strtod(buf, NULL) == v) break;
+    }
+    fprintf(f, "%s = %s\n", key, buf);
+}
+
+void tcfg_write(FILE *f, const struct tcfg *c)
+{
+    const struct trk_tracker_params *p = &c->params;
+    fprintf(f, "# tracker configuration (trk tracker_config keys)\n");
+    fprintf(f, "sensors = %u\n", p->n_sensors);
+    put_num(f, "process_noise_q", (double)p->process_noise_q);
+    put_num(f, "gate_prob", (double)p->gate_prob);
+    fprintf(f, "clutter = %s\n", CLUTTER_NAMES[p->clutter == TRK_CLUTTER_NONPARAMETRIC]);
+    put_num(f, "init_speed_sigma_mps", (double)p->init_speed_sigma_mps);
+    put_num(f, "max_dt_s", (double)p->max_dt_s);
+    fprintf(f, "max_tentative_scans = %lu\n", (unsigned long)p->max_tentative_scans);
+    put_num(f, "merge_gate_d2", (double)p->merge_gate_d2);
+    fprintf(f, "visibility = %d\n", p->track_visibility);
+    put_num(f, "visibility.pv0", (double)p->visibility.pv0);
+    put_num(f, "visibility.pcv0", (double)p->visibility.pcv0);
+    put_num(f, "visibility.delta_stay", (double)p->visibility.delta_stay);
+    put_num(f, "visibility.delta_become", (double)p->visibility.delta_become);
+    put_num(f, "visibility.omega_c", (double)p->visibility.omega_c);
+    put_num(f, "visibility.p_con", (double)p->visibility.p_con);
+    put_num(f, "visibility.p_term", (double)p->visibility.p_term);
+    fprintf(f, "confirm = %s\n", confirm_name(c->confirm));
+    fprintf(f, "confirm.mn.m = %d\n", c->mn.m);
+    fprintf(f, "confirm.mn.n = %d\n", c->mn.n);
+    fprintf(f, "confirm.mn.mode = %s\n", MODE_NAMES[c->mn.mode == TRK_MN_SLIDING]);
+    put_num(f, "confirm.sprt.alpha", (double)c->sprt.alpha);
+    put_num(f, "confirm.sprt.beta", (double)c->sprt.beta);
+    fprintf(f, "confirm.sprt.model = %s\n", SPRT_MODEL_NAMES[c->sprt.model == TRK_SPRT_HMM]);
+    put_num(f, "confirm.sprt.pd", (double)c->sprt.pd);
+    put_num(f, "confirm.clutter_density.alpha", (double)c->clutter_density.alpha);
+    fprintf(f, "confirm.clutter_density.kmax = %u\n", c->clutter_density.kmax);
+    put_num(f, "confirm.clutter_amplitude.alpha", (double)c->clutter_amplitude.alpha);
+    fprintf(f, "confirm.clutter_amplitude.kmax = %u\n", c->clutter_amplitude.kmax);
+    put_num(f, "confirm.clutter_amplitude.a_min_db", (double)c->clutter_amplitude.a_min_db);
+    fprintf(f, "term = %s\n", term_name(c->term));
+    fprintf(f, "term.kn.k = %d\n", c->kn.k);
+    fprintf(f, "term.kn.n = %d\n", c->kn.n);
+    put_num(f, "term.page.h", (double)c->page.h);
+    put_num(f, "term.shiryaev.beta0", (double)c->shiryaev.beta0);
+    put_num(f, "term.shiryaev.rho", (double)c->shiryaev.rho);
+    put_num(f, "term.shiryaev.h", (double)c->shiryaev.h);
+    put_num(f, "hmm.p_low_high", (double)c->hmm.p_low_high);
+    put_num(f, "hmm.q_high_low", (double)c->hmm.q_high_low);
+    put_num(f, "hmm.pd_low", (double)c->hmm.pd_low);
+    put_num(f, "hmm.pd_high", (double)c->hmm.pd_high);
+    if (c->hmm.pi0_high == TRK_HMM_PI0_STATIONARY) fprintf(f, "hmm.pi0_high = stationary\n");
+    else put_num(f, "hmm.pi0_high", (double)c->hmm.pi0_high);
+    if (c->q2_table[0]) fprintf(f, "q2_table = %s\n", c->q2_table);
+    for (unsigned s = 0; s < p->n_sensors; s++) {
+        const struct trk_sensor_params *sp = &p->sensor[s];
+        char k[64];
+        snprintf(k, sizeof k, "sensor.%u.pd", s);
+        put_num(f, k, (double)sp->pd);
+        fprintf(f, "sensor.%u.meas_cov_m2 = %.17g, %.17g, %.17g\n", s, (double)sp->meas_cov_m2[0],
+                (double)sp->meas_cov_m2[1], (double)sp->meas_cov_m2[2]);
+        snprintf(k, sizeof k, "sensor.%u.clutter_density_per_m2", s);
+        put_num(f, k, (double)sp->clutter_density_per_m2);
+        fprintf(f, "sensor.%u.amplitude = %s\n", s, AMP_NAMES[c->amp[s].model]);
+        snprintf(k, sizeof k, "sensor.%u.k_shape", s);
+        put_num(f, k, c->amp[s].k_shape);
+        snprintf(k, sizeof k, "sensor.%u.snr_db", s);
+        put_num(f, k, c->amp[s].snr_db);
+        snprintf(k, sizeof k, "sensor.%u.pfa", s);
+        put_num(f, k, c->amp[s].pfa);
+        if (c->amp[s].table[0]) fprintf(f, "sensor.%u.amp_table = %s\n", s, c->amp[s].table);
+    }
+}
+
+void tcfg_help(FILE *f)
+{
+    fprintf(f,
+            "Tracker settings (config file 'key = value', or on the command line):\n"
+            "  sensors = N                       sensors fused, 1..%d (1)\n"
+            "  process_noise_q = Q               CV process noise density, m^2/s^3, >= 0 (0.01)\n"
+            "  gate_prob = P                     gate probability P_G, (0,1) (0.99)\n"
+            "  clutter = parametric|nonparametric  clutter density: configured (parametric) or m/V_G (nonparametric)\n"
+            "  init_speed_sigma_mps = S          velocity prior of a new track, per axis, > 0 (5)\n"
+            "  max_dt_s = S                      longest accepted gap between scans, (0,1e9] (3600)\n"
+            "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
+            "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
+            "  visibility = 0|1                  track each track's visibility / existence (1)\n"
+            "    visibility.pv0, .pcv0            at initiation (0.5, 0.5)\n"
+            "    visibility.delta_stay, .delta_become   Markov visibility model (0.99, 0.01)\n"
+            "    visibility.omega_c               confidence smoothing, [0,1) (0.75)\n"
+            "    visibility.p_con, .p_term        confirm at pcv >= p_con, end at pcv < p_term (0.9, 0.1)\n"
+            "  confirm = mn|sprt|clutter_density|clutter_amplitude|visibility   confirmation test (mn)\n"
+            "    confirm.mn.m, confirm.mn.n       M of N, 1 <= m <= n <= %d (3, 5)\n"
+            "    confirm.mn.mode = fixed|sliding  (fixed)\n"
+            "    confirm.sprt.alpha, .beta        Wald error probabilities, (0,1), sum < 1 (0.01, 0.1)\n"
+            "    confirm.sprt.model = fixed_pd|hmm, confirm.sprt.pd   (fixed_pd, 0.9)\n"
+            "    confirm.clutter_density.alpha, .kmax          (0.01, 25)\n"
+            "    confirm.clutter_amplitude.alpha, .kmax, .a_min_db   (0.01, 25, 10 dB)\n"
+            "  term = kn|page|shiryaev|visibility  termination test (kn)\n"
+            "    term.kn.k, term.kn.n             K or fewer hits in the last N, 0 <= k < n (0, 5)\n"
+            "    term.page.h                      CUSUM threshold, > 0 (5)\n"
+            "    term.shiryaev.beta0, .rho, .h    prior, change rate, log-odds threshold (0.01, 0.01, 4.595)\n"
+            "  hmm.p_low_high, hmm.q_high_low, hmm.pd_low, hmm.pd_high, hmm.pi0_high\n"
+            "                                    fluctuating-SNR model of sprt(hmm)/page/shiryaev\n"
+            "                                    (0.1, 0.1, 0.3, 0.9, stationary)\n"
+            "  q2_table = FILE                   q2 table (trk-tablegen output)\n"
+            "  sensor.N.pd = P                   detection probability, (0,1] (0.9)\n"
+            "  sensor.N.meas_cov_m2 = XX, XY, YY measurement covariance, SPD (1, 0, 1)\n"
+            "  sensor.N.meas_sigma_m = S         shorthand for meas_cov_m2 = S^2, 0, S^2\n"
+            "  sensor.N.clutter_density_per_m2 = L   clutter density, >= 0 (1e-4)\n"
+            "  sensor.N.amplitude = none|rayleigh|k  amplitude model of PDAFAI (none)\n"
+            "  sensor.N.k_shape, .snr_db, .pfa   K shape, target SNR dB, threshold P_FA (1, 15, 1e-3)\n"
+            "  sensor.N.amp_table = FILE         amplitude table (trk-tablegen output)\n"
+            "Amplitude tables and q2 tables are read and checked at start-up; a bad one\n"
+            "stops the program (exit status 2).\n",
+            TRK_MAX_SENSORS, TRK_MN_MAX_N);
+}

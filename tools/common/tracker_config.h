@@ -1,0 +1,122 @@
+/* tracker_config.h - the tracker's configuration for the tools: defaults,
+ * "key = value" settings (config file, see kvfile.h, or command line), a
+ * check that explains what is wrong, and a printer whose output is a valid
+ * config file. Shared by trk-lcm-bridge and trk-sim.
+ *
+ * Keys (tcfg_help prints them with defaults and ranges):
+ *   sensors, process_noise_q, gate_prob, clutter, init_speed_sigma_mps,
+ *   max_dt_s, max_tentative_scans, merge_gate_d2,
+ *   visibility (0|1), visibility.{pv0,pcv0,delta_stay,delta_become,omega_c,p_con,p_term},
+ *   confirm = mn | sprt | clutter_density | clutter_amplitude | visibility,
+ *     confirm.mn.{m,n,mode}, confirm.sprt.{alpha,beta,model,pd},
+ *     confirm.clutter_density.{alpha,kmax},
+ *     confirm.clutter_amplitude.{alpha,kmax,a_min_db}
+ *   term = kn | page | shiryaev | visibility,
+ *     term.kn.{k,n}, term.page.h, term.shiryaev.{beta0,rho,h}
+ *   hmm.{p_low_high,q_high_low,pd_low,pd_high,pi0_high}  (fluctuating-SNR
+ *     detection model of SPRT-hmm / Page / Shiryaev, same for every sensor)
+ *   q2_table
+ *   sensor.N.{pd,meas_cov_m2,meas_sigma_m,clutter_density_per_m2,
+ *             amplitude,k_shape,snr_db,pfa,amp_table}   N = 0 .. sensors-1
+ *
+ * Every method's parameters are kept (switching `confirm = ...` back and
+ * forth loses nothing); tcfg_params() assembles the tracker's parameters
+ * for the chosen methods (the one place to extend when the tracker gains
+ * one). tcfg_check() refuses, with a message naming the setting, anything
+ * trk_tracker_init refuses and a bad table. Amplitude tables are read by
+ * tcfg_load() into a struct tcfg_runtime that must outlive the tracker
+ * (its amplitude models point into the table bytes); tcfg_params_rt() then
+ * gives the tracker parameters with the sensors' amplitude models. */
+#ifndef TRK_TOOLS_TRACKER_CONFIG_H
+#define TRK_TOOLS_TRACKER_CONFIG_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "trk/clutter_test.h"
+#include "trk/confirm_sprt.h"
+#include "trk/hmm_detect.h"
+#include "trk/term_page.h"
+#include "trk/term_shiryaev.h"
+#include "trk/tracker.h"
+
+#define TCFG_PATH_MAX 512
+
+
+enum tcfg_amp_model { TCFG_AMP_NONE = 0, TCFG_AMP_RAYLEIGH, TCFG_AMP_K };
+
+/* Per-sensor amplitude model of amplitude-aided association (PDAFAI):
+ * thresholded Rayleigh or K-distributed clutter, Swerling I target. */
+struct tcfg_amp {
+    int model;                    /* enum tcfg_amp_model */
+    double k_shape;               /* K shape nu > 0 (model k) */
+    double snr_db;                /* expected target SNR (dB) */
+    double pfa;                   /* detection threshold's P_FA, (0, 1) */
+    char table[TCFG_PATH_MAX];    /* amplitude table file ("" = closed form / none) */
+};
+
+struct tcfg {
+    /* the tracker parameters except confirm and term (see tcfg_params) */
+    struct trk_tracker_params params;
+    /* chosen methods and every method's parameters */
+    enum trk_confirm_method confirm;
+    enum trk_term_method term;
+    struct trk_mn_params mn;
+    struct trk_sprt_params sprt;                  /* .hmm from hmm below */
+    struct trk_clutter_chi2_params clutter_density;
+    struct trk_clutter_amp_params clutter_amplitude;
+    struct trk_kn_params kn;
+    struct trk_page_params page;                  /* .hmm from hmm below */
+    struct trk_shiryaev_params shiryaev;          /* .hmm from hmm below */
+    struct trk_hmm_sensor_params hmm;             /* same for every sensor */
+    /* amplitude and q2 */
+    struct tcfg_amp amp[TRK_MAX_SENSORS];
+    char q2_table[TCFG_PATH_MAX];
+};
+
+/* Defaults: trk_tracker_default_params() for the tracker, every sensor like
+ * sensor 0, and the documented defaults of the other methods. */
+void tcfg_defaults(struct tcfg *c);
+
+/* Set one key (a kv_setter, ctx = struct tcfg *): 0 ok, 1 unknown key,
+ * -1 bad value (message in err). */
+int tcfg_set(void *ctx, const char *key, const char *value, char *err, size_t errlen);
+
+/* Whole-configuration check, in this order: the tracker accepts the
+ * parameters (trk_tracker_init); the chosen methods' own parameters are
+ * valid (their _init); every table file parses as a table of the right kind
+ * for this build (trk_table_parse; amplitude tables also
+ * trk_amplitude_init_table), a Rayleigh model's snr_db/pfa are valid
+ * (trk_amplitude_init_rayleigh), K has a table; nothing is configured that
+ * this libtrk's tracker cannot run. 0, or -1 with a message. */
+int tcfg_check(const struct tcfg *c, char *err, size_t errlen);
+
+/* The tracker parameters (what trk_tracker_init gets): params with the
+ * chosen confirmation and termination methods and their parameters (the
+ * HMM of sprt/page/shiryaev for params.n_sensors identical sensors). */
+void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out);
+
+/* What a run needs besides the parameters: the sensors' amplitude models
+ * (Rayleigh closed form, or a table read from its file and kept here). */
+struct tcfg_runtime {
+    void *amp_bytes[TRK_MAX_SENSORS];           /* table bytes (malloc), or NULL */
+    struct trk_amplitude amp[TRK_MAX_SENSORS];
+    int use_amp[TRK_MAX_SENSORS];
+};
+
+/* Load the tables and build the amplitude models of c: 0, or -1 with a
+ * message (rt then holds nothing). Free with tcfg_unload. */
+int tcfg_load(const struct tcfg *c, struct tcfg_runtime *rt, char *err, size_t errlen);
+void tcfg_unload(struct tcfg_runtime *rt);
+
+/* tcfg_params plus the sensors' amplitude models of rt (rt may be NULL:
+ * positions only). */
+void tcfg_params_rt(const struct tcfg *c, const struct tcfg_runtime *rt, struct trk_tracker_params *out);
+
+/* Write every key with its current value, in config-file syntax. */
+void tcfg_write(FILE *f, const struct tcfg *c);
+
+/* Key reference for --help: one line per key with range and default. */
+void tcfg_help(FILE *f);
+
+#endif

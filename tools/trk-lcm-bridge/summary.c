@@ -1,0 +1,197 @@
+/* summary.c - trk-lcm-bridge --summarize LOG (transport.h). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lcm_log.h"
+#include "transport.h"
+
+#define MAX_CHANNELS 32
+#define MAX_TRUTH 64
+
+struct chan_count {
+    char name[64];
+    uint64_t n;
+};
+
+static void count_channel(struct chan_count *cc, int *ncc, const char *name)
+{
+    for (int i = 0; i < *ncc; i++)
+        if (strncmp(cc[i].name, name, sizeof cc[i].name - 1) == 0) {
+            cc[i].n++;
+            return;
+        }
+    if (*ncc == MAX_CHANNELS) return;
+    snprintf(cc[*ncc].name, sizeof cc[*ncc].name, "%s", name);
+    cc[*ncc].n = 1;
+    (*ncc)++;
+}
+
+/* Per truth target: is there a confirmed track within 25 m of it? */
+static void follow(const trk_track_list_t *m, const trk_track_list_t *truth, uint64_t *ok_n,
+                   uint64_t *n)
+{
+    for (int g = 0; g < truth->n_tracks && g < MAX_TRUTH; g++) {
+        const double *tx = truth->tracks[g].x;
+        int ok = 0;
+        for (int i = 0; i < m->n_tracks && !ok; i++) {
+            const trk_track_t *t = &m->tracks[i];
+            if (t->status != TRK_TRACK_T_STATUS_CONFIRMED) continue;
+            ok = hypot(t->x[0] - tx[0], t->x[2] - tx[2]) <= 25;
+        }
+        n[g]++;
+        ok_n[g] += (uint64_t)ok;
+    }
+}
+
+static int decode_list(const struct lcmlog_event *ev, trk_track_list_t *m)
+{
+    if (!ev->data || ev->datalen > INT32_MAX) return -1;
+    int k = trk_track_list_t_decode(ev->data, 0, (int)ev->datalen, m);
+    if (k < 0 || (size_t)k != ev->datalen) return -1;
+    if (m->n_tracks < 0 || m->n_tracks > TRK_TRACK_LIST_T_MAX_TRACKS) return -1;
+    return 0;
+}
+
+int bridge_summarize(const char *path, const struct bridge_opts *o, const char *truth_channel,
+                     FILE *f)
+{
+    struct lcmlog_reader r;
+    if (lcmlog_open_read(&r, path, 1u << 20) != 0) {
+        fprintf(stderr, "trk-lcm-bridge: %s: cannot open\n", path);
+        return -1;
+    }
+    struct chan_count cc[MAX_CHANNELS];
+    int ncc = 0;
+    trk_track_list_t *m = malloc(sizeof *m), *truth = calloc(1, sizeof *truth),
+                     *last = calloc(1, sizeof *last);
+    trk_bridge_status_t status;
+    int have_status = 0, have_truth = 0, have_last = 0;
+    uint64_t n_lists = 0, max_live = 0, n_bad = 0;
+    int64_t evaluated = -1; /* utime of the last (tracks, truth) pair compared */
+    /* confirmed ids (bounded list) */
+    size_t ids_cap = 4096, n_ids = 0;
+    int64_t *ids = malloc(ids_cap * sizeof *ids);
+    /* truth following: scans where each target had a confirmed track within
+     * 3 sigma-ish (25 m) of it, over lists that match a truth list's time */
+    uint64_t follow_ok[MAX_TRUTH] = {0}, follow_n[MAX_TRUTH] = {0};
+    if (!m || !truth || !last || !ids) {
+        fprintf(stderr, "trk-lcm-bridge: out of memory\n");
+        free(m), free(truth), free(last), free(ids);
+        lcmlog_close_read(&r);
+        return -1;
+    }
+    struct lcmlog_event ev;
+    while (lcmlog_read(&r, &ev) > 0) {
+        count_channel(cc, &ncc, ev.channel);
+        if (truth_channel && truth_channel[0] && strcmp(ev.channel, truth_channel) == 0) {
+            if (decode_list(&ev, truth) == 0) {
+                have_truth = 1;
+                /* truth after the track list of the same time */
+                if (have_last && last->utime == truth->utime && evaluated != truth->utime) {
+                    follow(last, truth, follow_ok, follow_n);
+                    evaluated = truth->utime;
+                }
+            }
+            continue;
+        }
+        if (o->status_channel[0] && strcmp(ev.channel, o->status_channel) == 0) {
+            int k = ev.data && ev.datalen <= INT32_MAX
+                        ? trk_bridge_status_t_decode(ev.data, 0, (int)ev.datalen, &status)
+                        : -1;
+            if (k >= 0) have_status = 1;
+            continue;
+        }
+        if (strcmp(ev.channel, o->track_channel) != 0) continue;
+        if (decode_list(&ev, m) != 0) {
+            n_bad++;
+            continue;
+        }
+        n_lists++;
+        if ((uint64_t)m->n_tracks > max_live) max_live = (uint64_t)m->n_tracks;
+        for (int i = 0; i < m->n_tracks; i++) {
+            const trk_track_t *t = &m->tracks[i];
+            if (t->status != TRK_TRACK_T_STATUS_CONFIRMED) continue;
+            size_t j = 0;
+            while (j < n_ids && ids[j] != t->id) j++;
+            if (j == n_ids && n_ids < ids_cap) ids[n_ids++] = t->id;
+        }
+        if (have_truth && truth->utime == m->utime && evaluated != m->utime) {
+            follow(m, truth, follow_ok, follow_n);
+            evaluated = m->utime;
+        }
+        *last = *m;
+        have_last = 1;
+    }
+    fprintf(f, "log %s: %llu events", path, (unsigned long long)r.n_events);
+    if (r.n_corrupt || r.truncated)
+        fprintf(f, " (%llu corrupt records skipped%s)", (unsigned long long)r.n_corrupt,
+                r.truncated ? ", truncated at the end" : "");
+    fputc('\n', f);
+    for (int i = 0; i < ncc; i++)
+        fprintf(f, "  %-24s %llu\n", cc[i].name, (unsigned long long)cc[i].n);
+    fprintf(f, "track lists: %llu (undecodable %llu), at most %llu tracks in one list\n",
+            (unsigned long long)n_lists, (unsigned long long)n_bad, (unsigned long long)max_live);
+    fprintf(f, "confirmed track ids (%zu):", n_ids);
+    for (size_t j = 0; j < n_ids && j < 40; j++) fprintf(f, " %lld", (long long)ids[j]);
+    fprintf(f, "%s\n", n_ids > 40 ? " ..." : "");
+    if (have_last) {
+        int conf = 0, tent = 0;
+        for (int i = 0; i < last->n_tracks; i++) {
+            conf += last->tracks[i].status == TRK_TRACK_T_STATUS_CONFIRMED;
+            tent += last->tracks[i].status == TRK_TRACK_T_STATUS_TENTATIVE;
+        }
+        /* confirmed tracks on top of another confirmed track (PDA tracks
+         * sharing detections coalesce): within 5 m and 0.5 m/s */
+        int dup = 0;
+        for (int i = 0; i < last->n_tracks; i++) {
+            const trk_track_t *t = &last->tracks[i];
+            if (t->status != TRK_TRACK_T_STATUS_CONFIRMED) continue;
+            for (int k = 0; k < i; k++) {
+                const trk_track_t *u = &last->tracks[k];
+                if (u->status == TRK_TRACK_T_STATUS_CONFIRMED &&
+                    hypot(t->x[0] - u->x[0], t->x[2] - u->x[2]) < 5 &&
+                    hypot(t->x[1] - u->x[1], t->x[3] - u->x[3]) < 0.5) {
+                    dup++;
+                    break;
+                }
+            }
+        }
+        fprintf(f, "last list (utime %lld, seq %lld): %d confirmed (%d duplicating another), %d tentative\n",
+                (long long)last->utime, (long long)last->seq, conf, dup, tent);
+        for (int i = 0; i < last->n_tracks; i++) {
+            const trk_track_t *t = &last->tracks[i];
+            if (t->status != TRK_TRACK_T_STATUS_CONFIRMED) continue;
+            fprintf(f, "  track %-6lld x %9.1f m  y %9.1f m  vx %6.2f  vy %6.2f m/s  sd %.1f m  %d updates\n",
+                    (long long)t->id, t->x[0], t->x[2], t->x[1], t->x[3],
+                    sqrt(0.5 * (t->p[0] + t->p[10])), t->n_updates);
+        }
+    }
+    if (have_truth) {
+        fprintf(f, "truth (%s): %d targets; scans with a confirmed track within 25 m:\n",
+                truth_channel, truth->n_tracks);
+        for (int g = 0; g < truth->n_tracks && g < MAX_TRUTH; g++)
+            fprintf(f, "  target %d: %llu of %llu scans (%.0f %%)\n", g + 1,
+                    (unsigned long long)follow_ok[g], (unsigned long long)follow_n[g],
+                    follow_n[g] ? 100.0 * (double)follow_ok[g] / (double)follow_n[g] : 0.0);
+    }
+    if (have_status) {
+        fprintf(f,
+                "last bridge status: received %lld, processed %lld, rejected %lld (decode %lld, "
+                "count %lld, capacity %lld, nonfinite %lld, field %lld, sensor %lld, time %lld, "
+                "gap %lld, other %lld), sequence gaps %lld\n",
+                (long long)status.n_received, (long long)status.n_processed,
+                (long long)status.n_rejected, (long long)status.n_rejected_decode,
+                (long long)status.n_rejected_count, (long long)status.n_rejected_capacity,
+                (long long)status.n_rejected_nonfinite, (long long)status.n_rejected_field,
+                (long long)status.n_rejected_sensor, (long long)status.n_rejected_time,
+                (long long)status.n_rejected_gap, (long long)status.n_rejected_other,
+                (long long)status.n_seq_gaps);
+    }
+    free(m);
+    free(truth);
+    free(last);
+    free(ids);
+    lcmlog_close_read(&r);
+    return 0;
+}

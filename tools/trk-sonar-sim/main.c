@@ -1,0 +1,414 @@
+/* trk-sonar-sim - a simulated sonar: publishes a seeded scenario
+ * (tools/common/scenario.h) as trk.detection_scan_t messages over LCM, or
+ * writes them to an LCM log file, so the whole chain sonar -> trk-lcm-bridge
+ * -> consumers can run without hardware. See --help.
+ *
+ * Exit status: 0 done (also after SIGINT/SIGTERM), 1 LCM or file failure,
+ * 2 bad usage. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/time.h>
+#include <time.h>
+
+#include <lcm/lcm.h>
+
+#include "kvfile.h"
+#include "lcm_copy.h"
+#include "lcm_log.h"
+#include "scenario.h"
+
+#define MAX_TARGETS_CLI 256
+
+static volatile sig_atomic_t stop_flag = 0;
+static void on_signal(int sig)
+{
+    (void)sig;
+    stop_flag = 1;
+}
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: trk-sonar-sim [options]\n"
+            "\n"
+            "Publishes a simulated sonar's detection scans (trk.detection_scan_t) on LCM, at a\n"
+            "chosen rate, or writes them to an LCM log file. Constant-velocity targets with\n"
+            "process noise, detection probability from the amplitude model (or --pd), Poisson\n"
+            "clutter over a region, thresholded Rayleigh or K-distributed amplitudes. The\n"
+            "targets' true states go out as trk.track_list_t on the truth channel.\n"
+            "Same --seed, same scans.\n"
+            "\n"
+            "Output:\n"
+            "  --lcm-url URL          LCM provider (default: $LCM_DEFAULT_URL, else LCM's default)\n"
+            "  --log FILE             write an LCM log file instead (event time = scan time;\n"
+            "                         byte-identical for the same options)\n"
+            "  --channel CH           detection channel (TRK_DETECTIONS)\n"
+            "  --truth-channel CH     truth channel, '' = none (TRK_TRUTH)\n"
+            "  --rate-hz R            live: scans per second of wall clock (default 1/scan period;\n"
+            "                         0 = as fast as possible)\n"
+            "  --scans N              number of scans, 0 = until SIGINT (live default 0, --log 100)\n"
+            "  --start-utime US       time of the first scan (live: now; --log: 1700000000000000)\n"
+            "  --bad-every N          after every N-th scan also send one malformed message,\n"
+            "                         cycling: truncated, count too large, NaN position, time\n"
+            "                         going backwards, unknown sensor, garbage (0 = never)\n"
+            "  --quiet\n"
+            "Scenario:\n"
+            "  --seed N               (1)\n"
+            "  --sensor-id N          (0)\n"
+            "  --scan-period-s S      simulated time between scans (2)\n"
+            "  --targets N            random targets in the region (3)\n"
+            "  --target X,Y,VX,VY[,SNR_DB]  a target (m, m/s); repeat for more; replaces --targets\n"
+            "  --speed MIN,MAX        random targets' speed range, m/s (1,5)\n"
+            "  --region X0,X1,Y0,Y1   clutter region (and random targets), m (0,2000,0,2000)\n"
+            "  --clutter-density L    Poisson clutter per m^2 per scan (5e-6)\n"
+            "  --clutter-count N      exactly N clutter detections per scan instead\n"
+            "  --meas-sigma-m S       position noise per axis (3)\n"
+            "  --with-cov             detections carry their covariance (S^2 I)\n"
+            "  --q Q                  target process noise density, m^2/s^3 (0.01)\n"
+            "  --amplitude none|rayleigh|k   amplitude model (rayleigh)\n"
+            "  --pfa P                detection threshold's false-alarm probability (1e-3)\n"
+            "  --snr-db D             target SNR (15); P_D = S1(threshold) (Rayleigh: pfa^(1/(1+SNR)))\n"
+            "  --k-shape NU           K-distribution shape (1)\n"
+            "  --amp-table FILE       amplitudes from an amplitude table (trk-tablegen amp; any\n"
+            "                         model, e.g. K): the library's sampler; the table fixes pfa\n"
+            "                         and the SNR of every target\n"
+            "  --pd P                 detection probability without amplitude model (0.9)\n"
+            "  --help\n");
+}
+
+static int opt(int argc, char **argv, int *i, const char *name, const char **val)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0) return 0;
+    if (a[n] == '=') {
+        *val = a + n + 1;
+        return 1;
+    }
+    if (a[n]) return 0;
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "trk-sonar-sim: %s needs a value\n", name);
+        return -1;
+    }
+    *val = argv[++*i];
+    return 1;
+}
+
+static int64_t wall_us(void)
+{
+    struct timeval tv;
+    gettimeofday(&tv, NULL);
+    return (int64_t)tv.tv_sec * 1000000 + tv.tv_usec;
+}
+
+/* One output: LCM or log file. */
+struct sink {
+    lcm_t *lc;
+    struct lcmlog_writer w;
+    int is_log;
+    uint64_t errors;
+};
+
+static int sink_send(struct sink *k, int64_t ts, const char *ch, const void *buf, size_t len)
+{
+    int rc = k->is_log ? lcmlog_write(&k->w, ts, ch, buf, len)
+                       : lcm_publish(k->lc, ch, buf, (unsigned)len);
+    if (rc != 0) k->errors++;
+    return rc;
+}
+
+/* Encode a (possibly corrupted) scan message; returns its length. */
+static size_t encode_scan(const trk_detection_scan_t *m, uint8_t *buf, size_t cap)
+{
+    int n = trk_detection_scan_t_encode(buf, 0, (int)cap, m);
+    return n > 0 ? (size_t)n : 0;
+}
+
+/* The k-th malformed message (k cycles through the causes). */
+static size_t make_bad(unsigned k, const trk_detection_scan_t *good, trk_detection_scan_t *m,
+                       uint8_t *buf, size_t cap, struct rng *r)
+{
+    *m = *good;
+    switch (k % 6) {
+    case 0: return encode_scan(m, buf, cap) - 100; /* truncated */
+    case 1: m->n_detections = 100000; break;       /* count above the maximum */
+    case 2:                                        /* NaN position */
+        m->n_detections = m->n_detections ? m->n_detections : 1;
+        m->detections[0].x_m = NAN;
+        break;
+    case 3: m->utime = good->utime - 1000000; break; /* before the scan just sent */
+    case 4: m->sensor_id = 99; break;                /* unknown sensor */
+    default:                                         /* garbage */
+        for (size_t i = 0; i < 64; i++) buf[i] = (uint8_t)rng_u32(r);
+        return 64;
+    }
+    return encode_scan(m, buf, cap);
+}
+
+static void truth_msg(const struct scenario *sc, int64_t utime, int64_t seq, trk_track_list_t *m)
+{
+    memset(m, 0, sizeof *m);
+    m->utime = utime;
+    m->sensor_id = (int32_t)sc->p.sensor_id;
+    m->seq = seq;
+    size_t n = sc->n_tg < TRK_TRACK_LIST_T_MAX_TRACKS ? sc->n_tg : TRK_TRACK_LIST_T_MAX_TRACKS;
+    for (size_t i = 0; i < n; i++) {
+        trk_track_t *t = &m->tracks[i];
+        t->id = (int64_t)i + 1;
+        t->status = TRK_TRACK_T_STATUS_CONFIRMED;
+        t->utime = utime;
+        for (int k = 0; k < 4; k++) t->x[k] = sc->tg[i].x[k];
+    }
+    m->n_tracks = (int32_t)n;
+    m->n_omitted = (int32_t)(sc->n_tg - n);
+}
+
+int main(int argc, char **argv)
+{
+    struct scen_params p;
+    static struct scen_target_init tgt[MAX_TARGETS_CLI];
+    size_t n_tgt = 0;
+    const char *url = NULL, *log_path = NULL, *channel = "TRK_DETECTIONS",
+               *truth_channel = "TRK_TRUTH", *v;
+    double rate_hz = -1;
+    long scans = -1, bad_every = 0, l;
+    int64_t start_utime = -1;
+    int quiet = 0, have_pd = 0;
+    char err[512];
+
+    scen_defaults(&p);
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int k;
+        double d[5];
+#define OPT(name) ((k = opt(argc, argv, &i, name, &v)) != 0)
+#define BAD(msg)                                                       \
+    do {                                                               \
+        fprintf(stderr, "trk-sonar-sim: %s: %s (see --help)\n", a, msg); \
+        return 2;                                                      \
+    } while (0)
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            return 0;
+        } else if (strcmp(a, "--quiet") == 0) {
+            quiet = 1;
+        } else if (strcmp(a, "--with-cov") == 0) {
+            p.attach_cov = 1;
+        } else if (OPT("--lcm-url")) {
+            if (k < 0) return 2;
+            url = v;
+        } else if (OPT("--log")) {
+            if (k < 0) return 2;
+            log_path = v;
+        } else if (OPT("--channel")) {
+            if (k < 0 || !*v) BAD("needs a channel name");
+            channel = v;
+        } else if (OPT("--truth-channel")) {
+            if (k < 0) return 2;
+            truth_channel = v;
+        } else if (OPT("--rate-hz")) {
+            if (k < 0 || kv_parse_double(v, &rate_hz) != 0 || rate_hz < 0) BAD("needs a rate >= 0");
+        } else if (OPT("--scans")) {
+            if (k < 0 || kv_parse_long(v, 0, 2000000000L, &scans) != 0) BAD("needs a count >= 0");
+        } else if (OPT("--start-utime")) {
+            if (k < 0 || kv_parse_long(v, 0, 9000000000000000000L, &l) != 0) BAD("needs microseconds >= 0");
+            start_utime = l;
+        } else if (OPT("--bad-every")) {
+            if (k < 0 || kv_parse_long(v, 0, 2000000000L, &bad_every) != 0) BAD("needs a count >= 0");
+        } else if (OPT("--seed")) {
+            if (k < 0 || kv_parse_long(v, 0, 9000000000000000000L, &l) != 0) BAD("needs an integer >= 0");
+            p.seed = (uint64_t)l;
+        } else if (OPT("--sensor-id")) {
+            if (k < 0 || kv_parse_long(v, 0, 2147483647L, &l) != 0) BAD("needs an id >= 0");
+            p.sensor_id = (unsigned)l;
+        } else if (OPT("--scan-period-s")) {
+            if (k < 0 || kv_parse_double(v, &p.scan_period_s) != 0 || !(p.scan_period_s > 0))
+                BAD("needs seconds > 0");
+        } else if (OPT("--targets")) {
+            if (k < 0 || kv_parse_long(v, 0, 100000, &l) != 0) BAD("needs a count 0 .. 100000");
+            p.n_targets = (size_t)l;
+        } else if (OPT("--target")) {
+            if (k < 0) return 2;
+            if (n_tgt == MAX_TARGETS_CLI) BAD("too many --target");
+            d[4] = NAN;
+            if (kv_parse_doubles(v, d, 4) != 0 && kv_parse_doubles(v, d, 5) != 0)
+                BAD("needs X,Y,VX,VY[,SNR_DB]");
+            struct scen_target_init t = {d[0], d[1], d[2], d[3], d[4]};
+            tgt[n_tgt++] = t;
+        } else if (OPT("--speed")) {
+            if (k < 0 || kv_parse_doubles(v, d, 2) != 0) BAD("needs MIN,MAX");
+            p.speed_min_mps = d[0];
+            p.speed_max_mps = d[1];
+        } else if (OPT("--region")) {
+            if (k < 0 || kv_parse_doubles(v, d, 4) != 0) BAD("needs X0,X1,Y0,Y1");
+            p.x_min_m = d[0], p.x_max_m = d[1], p.y_min_m = d[2], p.y_max_m = d[3];
+        } else if (OPT("--clutter-density")) {
+            if (k < 0 || kv_parse_double(v, &p.clutter_density_per_m2) != 0) BAD("needs a density >= 0");
+        } else if (OPT("--clutter-count")) {
+            if (k < 0 || kv_parse_long(v, 0, 1000000, &p.clutter_count) != 0) BAD("needs a count >= 0");
+        } else if (OPT("--meas-sigma-m")) {
+            if (k < 0 || kv_parse_double(v, &p.meas_sigma_m) != 0) BAD("needs metres > 0");
+        } else if (OPT("--q")) {
+            if (k < 0 || kv_parse_double(v, &p.process_noise_q) != 0) BAD("needs q >= 0");
+        } else if (OPT("--amplitude")) {
+            if (k < 0 || (p.amp_kind = amp_kind_parse(v)) < 0) BAD("needs none, rayleigh or k");
+        } else if (OPT("--pfa")) {
+            if (k < 0 || kv_parse_double(v, &p.pfa) != 0) BAD("needs a probability");
+        } else if (OPT("--snr-db")) {
+            if (k < 0 || kv_parse_double(v, &p.snr_db) != 0) BAD("needs dB");
+        } else if (OPT("--amp-table")) {
+            if (k < 0) return 2;
+            p.amp_table = v;
+            p.amp_kind = AMP_TABLE;
+        } else if (OPT("--k-shape")) {
+            if (k < 0 || kv_parse_double(v, &p.k_shape) != 0) BAD("needs a shape > 0");
+        } else if (OPT("--pd")) {
+            if (k < 0 || kv_parse_double(v, &p.pd) != 0) BAD("needs a probability");
+            have_pd = 1;
+        } else {
+            fprintf(stderr, "trk-sonar-sim: unknown option %s (see --help)\n", a);
+            return 2;
+        }
+#undef OPT
+#undef BAD
+    }
+    if (have_pd && p.amp_kind != AMP_NONE) {
+        fprintf(stderr, "trk-sonar-sim: --pd needs --amplitude none (with an amplitude model "
+                        "P_D follows from --pfa and --snr-db)\n");
+        return 2;
+    }
+    if (n_tgt) {
+        p.targets = tgt;
+        p.n_targets = n_tgt;
+    }
+    if (scans < 0) scans = log_path ? 100 : 0;
+    if (log_path && scans == 0) {
+        fprintf(stderr, "trk-sonar-sim: --log needs --scans N > 0\n");
+        return 2;
+    }
+    if (rate_hz < 0) rate_hz = 1.0 / p.scan_period_s;
+    if (start_utime < 0) start_utime = log_path ? 1700000000000000LL : wall_us();
+    p.t0_us = start_utime;
+
+    struct scenario sc;
+    if (scen_init(&sc, &p, err, sizeof err) != 0) {
+        fprintf(stderr, "trk-sonar-sim: %s\n", err);
+        return 2;
+    }
+
+    struct sink sink = {0};
+    if (log_path) {
+        sink.is_log = 1;
+        if (lcmlog_open_write(&sink.w, log_path) != 0) {
+            fprintf(stderr, "trk-sonar-sim: %s: cannot create: %s\n", log_path, strerror(errno));
+            scen_free(&sc);
+            return 1;
+        }
+    } else {
+        sink.lc = lcm_create(url);
+        if (!sink.lc) {
+            fprintf(stderr, "trk-sonar-sim: cannot create LCM for '%s'\n",
+                    url ? url : getenv("LCM_DEFAULT_URL") ? getenv("LCM_DEFAULT_URL") : "LCM default");
+            scen_free(&sc);
+            return 1;
+        }
+    }
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+
+    struct trk_detection *det = calloc(TRK_DETECTION_SCAN_T_MAX_DETECTIONS, sizeof *det);
+    trk_detection_scan_t *msg = malloc(sizeof *msg), *bad = malloc(sizeof *bad);
+    trk_track_list_t *truth = malloc(sizeof *truth);
+    uint8_t *buf = malloc(65536);
+    if (!det || !msg || !bad || !truth || !buf) {
+        fprintf(stderr, "trk-sonar-sim: out of memory\n");
+        return 1;
+    }
+    struct rng bad_rng;
+    rng_init(&bad_rng, p.seed, UINT64_MAX);
+    if (!quiet) {
+        fprintf(stderr, "trk-sonar-sim: %zu targets, %s amplitudes", sc.n_tg, amp_kind_name(p.amp_kind));
+        if (p.amp_kind != AMP_NONE)
+            fprintf(stderr, " (pfa %g, threshold %.3f sqrt(P))", p.pfa, sc.amp.t);
+        if (sc.n_tg)
+            fprintf(stderr, ", target 1 P_D %.3f", sc.tg[0].pd);
+        fprintf(stderr, "; %s %s%s\n", log_path ? "writing" : "publishing on",
+                log_path ? log_path : channel, log_path ? "" : " (Ctrl-C to stop)");
+    }
+
+    struct timespec next;
+    clock_gettime(CLOCK_MONOTONIC, &next);
+    uint64_t n_sent = 0, n_bad = 0, n_det = 0, n_tdet = 0, n_drop = 0;
+    unsigned bad_kind = 0;
+    for (long k = 0; (scans == 0 || k < scans) && !stop_flag; k++) {
+        struct trk_scan scan;
+        size_t nt, nd;
+        scen_next(&sc, det, TRK_DETECTION_SCAN_T_MAX_DETECTIONS, &scan, &nt, &nd);
+        n_det += scan.n_detections;
+        n_tdet += nt;
+        n_drop += nd;
+        if (lcmc_scan_to_msg(&scan, (int64_t)k, msg) != LCMC_OK) {
+            fprintf(stderr, "trk-sonar-sim: scan %ld cannot be encoded\n", k);
+            break;
+        }
+        size_t len = encode_scan(msg, buf, 65536);
+        if (sink_send(&sink, scan.time_us, channel, buf, len) == 0) n_sent++;
+        if (truth_channel[0]) {
+            truth_msg(&sc, scan.time_us, (int64_t)k, truth);
+            int tl = trk_track_list_t_encode(buf, 0, 65536, truth);
+            if (tl > 0) sink_send(&sink, scan.time_us, truth_channel, buf, (size_t)tl);
+        }
+        if (bad_every > 0 && (k + 1) % bad_every == 0) {
+            size_t bl = make_bad(bad_kind++, msg, bad, buf, 65536, &bad_rng);
+            if (sink_send(&sink, scan.time_us, channel, buf, bl) == 0) n_bad++;
+        }
+        if (!log_path && rate_hz > 0) {
+            const double per = 1.0 / rate_hz;
+            next.tv_sec += (time_t)per;
+            next.tv_nsec += (long)((per - floor(per)) * 1e9);
+            if (next.tv_nsec >= 1000000000L) {
+                next.tv_sec++;
+                next.tv_nsec -= 1000000000L;
+            }
+            while (!stop_flag && clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL) == EINTR) {
+            }
+        }
+    }
+    int rc = 0;
+    if (log_path) {
+        if (lcmlog_close_write(&sink.w) != 0) {
+            fprintf(stderr, "trk-sonar-sim: %s: write error\n", log_path);
+            rc = 1;
+        }
+    } else {
+        lcm_destroy(sink.lc);
+    }
+    if (sink.errors) {
+        fprintf(stderr, "trk-sonar-sim: %llu send errors\n", (unsigned long long)sink.errors);
+        rc = 1;
+    }
+    printf("trk-sonar-sim: %llu scans sent (%llu detections: %llu from targets, %llu clutter; "
+           "%llu dropped over the message maximum), %llu malformed messages%s\n",
+           (unsigned long long)n_sent, (unsigned long long)n_det, (unsigned long long)n_tdet,
+           (unsigned long long)(n_det - n_tdet), (unsigned long long)n_drop,
+           (unsigned long long)n_bad, stop_flag ? " (stopped by signal)" : "");
+    if (sc.n_amp_failures)
+        printf("trk-sonar-sim: %llu amplitude draws failed (detections dropped)\n",
+               (unsigned long long)sc.n_amp_failures);
+    free(det);
+    free(msg);
+    free(bad);
+    free(truth);
+    free(buf);
+    scen_free(&sc);
+    return rc;
+}
