@@ -20,5 +20,8 @@
 #include "trk/term_page.h"
 #include "trk/term_shiryaev.h"
 #include "trk/tracker.h"
+#include "trk/q2.h"
+#include "trk/mre.h"
+#include "trk/crlb.h"
 
 #endif

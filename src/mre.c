@@ -1,0 +1,355 @@
+/* mre.c - modified Riccati equation, steady-state RMSE and TOC optimum
+ * (trk/mre.h; Brekke eqs 27, 35, Sec. V-C; CONVENTIONS "q2, MRE and CRLB"). */
+#include "trk/mre.h"
+
+#include "fixed_point_impl.h"
+#include "trk/gate.h"
+#include "trk/kalman.h"
+#include "trk/linalg.h"
+
+#define NXMAX TRK_MRE_MAX_NX
+
+static const trk_real h1[2] = {1, 0}; /* nz = 1: H = [1, 0] */
+
+static int finite_all(int n, const trk_real *v)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i])) return 0;
+    return 1;
+}
+
+trk_status trk_mre_init(struct trk_mre *m, const struct trk_mre_params *pr)
+{
+    if (!m || !pr) return TRK_E_ARG;
+    if (pr->nz != 1 && pr->nz != 2) return TRK_E_ARG;
+    if (pr->max_iter < 0) return TRK_E_ARG;
+    if (!isfinite(pr->dt_s) || !isfinite(pr->q_m2_per_s3) || !isfinite(pr->r_m2) ||
+        !isfinite(pr->gate_prob) || !isfinite(pr->clutter_density) || !isfinite(pr->rel_tol) ||
+        !isfinite(pr->max_pos_var_m2))
+        return TRK_E_NAN;
+    if (!(pr->dt_s > 0) || !(pr->q_m2_per_s3 > 0) || !(pr->r_m2 > 0)) return TRK_E_RANGE;
+    if (!(pr->clutter_density >= 0) || !(pr->rel_tol >= 0) || !(pr->max_pos_var_m2 >= 0))
+        return TRK_E_RANGE;
+    if (!pr->q2_fn) {
+        if (!isfinite(pr->q2)) return TRK_E_NAN;
+        if (!(pr->q2 > 0 && pr->q2 <= 1)) return TRK_E_RANGE;
+    }
+    trk_real gamma = pr->gate_gamma;
+    if (!isfinite(gamma)) return TRK_E_NAN;
+    if (gamma < 0) return TRK_E_RANGE;
+    if (gamma == 0) {
+        trk_status st = trk_gate_gamma(pr->nz, pr->gate_prob, &gamma);
+        if (st != TRK_OK) return st;
+    }
+
+    m->params = *pr;
+    if (m->params.max_iter == 0) m->params.max_iter = 100000;
+    if (m->params.rel_tol == 0) m->params.rel_tol = 64 * TRK_REAL_EPS;
+    m->nx = 2 * pr->nz;
+    m->gamma = gamma;
+    m->gate_const = trk_gate_unit_volume(pr->nz) * trk_pow(gamma, (trk_real)pr->nz / 2);
+    if (pr->nz == 2) {
+        trk_cv2_transition(pr->dt_s, m->f);
+        trk_cv2_process_noise(pr->dt_s, pr->q_m2_per_s3, m->q);
+    } else {
+        /* one coordinate of the CV model: the [x, vx] block */
+        const trk_real t = pr->dt_s, qq = pr->q_m2_per_s3;
+        m->f[0] = 1, m->f[1] = t, m->f[2] = 0, m->f[3] = 1;
+        m->q[0] = qq * t * t * t / 3, m->q[1] = m->q[2] = qq * t * t / 2, m->q[3] = qq * t;
+    }
+    return TRK_OK;
+}
+
+void trk_mre_initial_cov(const struct trk_mre *m, trk_real *p)
+{
+    const int nx = m->nx;
+    const trk_real r = m->params.r_m2, t = m->params.dt_s;
+    for (int i = 0; i < nx * nx; i++) p[i] = 0;
+    for (int c = 0; c < m->params.nz; c++) {
+        const int o = 2 * c;
+        p[o * nx + o] = r;
+        p[o * nx + o + 1] = p[(o + 1) * nx + o] = r / t;
+        p[(o + 1) * nx + o + 1] = 2 * r / (t * t);
+    }
+}
+
+trk_status trk_mre_step(const struct trk_mre *m, trk_real *p, struct trk_mre_step_info *info)
+{
+    trk_real pp[NXMAX * NXMAX], pc[NXMAX * NXMAX], k[NXMAX * 2];
+    trk_real x[NXMAX] = {0, 0, 0, 0}, r[4];
+    struct trk_innovation inn;
+    if (!m || !p) return TRK_E_ARG;
+    const int nx = m->nx, nz = m->params.nz;
+    const trk_real *h = nz == 2 ? trk_cv2_h : h1;
+    for (int i = 0; i < nx * nx; i++) pp[i] = p[i];
+    for (int i = 0; i < nz * nz; i++) r[i] = 0;
+    for (int i = 0; i < nz; i++) r[i * nz + i] = m->params.r_m2;
+
+    /* P- = F P F' + Q, S = H P- H' + R (Brekke eq 27) */
+    trk_status st = trk_kalman_predict(nx, m->f, m->q, x, pp);
+    if (st != TRK_OK) return st;
+    st = trk_kalman_innovation(nx, nz, h, r, x, pp, &inn);
+    if (st != TRK_OK) return st;
+    const trk_real lambda_vg =
+        m->params.clutter_density * m->gate_const * trk_exp(TRK_REAL_C(0.5) * inn.log_det_s);
+    trk_real q2 = m->params.q2;
+    if (m->params.q2_fn) {
+        st = m->params.q2_fn(m->params.q2_ctx, lambda_vg, &q2);
+        if (st != TRK_OK) return st;
+    }
+    if (!isfinite(q2)) return TRK_E_NAN;
+    if (!(q2 >= 0 && q2 <= 1)) return TRK_E_RANGE; /* q2 = 0: no information (a grid may hold it) */
+
+    /* P = P- - q2 K S K' = (1 - q2) P- + q2 Pc, Pc in Joseph form (SPD) */
+    trk_kalman_gain(nx, nz, h, pp, &inn, k);
+    trk_kalman_joseph(nx, nz, h, r, k, pp, pc);
+    for (int i = 0; i < nx * nx; i++) pc[i] = (1 - q2) * pp[i] + q2 * pc[i];
+    trk_mat_symmetrize(nx, pc);
+    if (!finite_all(nx * nx, pc)) return TRK_E_NAN;
+    for (int i = 0; i < nx * nx; i++) p[i] = pc[i];
+    if (info) {
+        for (int i = 0; i < nz * nz; i++) info->s[i] = inn.s[i];
+        info->lambda_vg = lambda_vg;
+        info->q2 = q2;
+    }
+    return TRK_OK;
+}
+
+trk_real trk_mre_rmse(int nz, const trk_real *p)
+{
+    if (!p) return (trk_real)NAN;
+    if (nz == 2) return trk_sqrt(p[0] + p[10]);
+    if (nz == 1) return trk_sqrt(p[0]);
+    return (trk_real)NAN;
+}
+
+static trk_real pos_var(int nz, const trk_real *p) { return nz == 2 ? p[0] + p[10] : p[0]; }
+
+static void fill_result(const struct trk_mre *m, const trk_real *p, const struct trk_mre_step_info *in,
+                        int it, struct trk_mre_result *res)
+{
+    res->nx = m->nx;
+    for (int i = 0; i < m->nx * m->nx; i++) res->p[i] = p[i];
+    for (int i = m->nx * m->nx; i < NXMAX * NXMAX; i++) res->p[i] = 0;
+    for (int i = 0; i < 4; i++) res->s[i] = i < m->params.nz * m->params.nz ? in->s[i] : 0;
+    res->lambda_vg = in->lambda_vg;
+    res->q2 = in->q2;
+    res->rmse_m = trk_mre_rmse(m->params.nz, p);
+    res->iterations = it;
+}
+
+trk_status trk_mre_steady_state(const struct trk_mre *m, const trk_real *p0,
+                                struct trk_mre_result *res)
+{
+    trk_real p[NXMAX * NXMAX], prev[NXMAX * NXMAX];
+    struct trk_mre_step_info info = {{0, 0, 0, 0}, 0, 0};
+    if (!m || !res) return TRK_E_ARG;
+    const int nx = m->nx, nz = m->params.nz;
+    if (p0) {
+        if (!finite_all(nx * nx, p0)) return TRK_E_NAN;
+        for (int i = 0; i < nx * nx; i++) p[i] = p0[i];
+        trk_real l[NXMAX * NXMAX];
+        if (trk_chol(nx, p, l) != TRK_OK) return TRK_E_NOT_SPD;
+    } else {
+        trk_mre_initial_cov(m, p);
+    }
+    fill_result(m, p, &info, 0, res);
+    /* Divergence: the position variance above `soft` while its growth keeps
+     * accelerating for 20 steps, or above 1e8 soft at all. soft defaults to
+     * 1e4 times the largest of the measurement variance, the one-step
+     * process-noise position variance and the initial position variance. */
+    const trk_real t = m->params.dt_s, fnz = (trk_real)nz;
+    trk_real pv_scale = fnz * m->params.r_m2;
+    const trk_real q_pos = fnz * m->params.q_m2_per_s3 * t * t * t / 3;
+    if (q_pos > pv_scale) pv_scale = q_pos;
+    if (pos_var(nz, p) > pv_scale) pv_scale = pos_var(nz, p);
+    const trk_real soft = m->params.max_pos_var_m2 > 0 ? m->params.max_pos_var_m2 : TRK_REAL_C(1e4) * pv_scale;
+    const trk_real hard = TRK_REAL_C(1e8) * soft;
+    trk_real pv_prev = pos_var(nz, p), d_prev = 0;
+    int accel = 0;
+    struct trk_i_fixed_point fp; /* stopping rule: fixed_point_impl.h */
+    trk_i_fixed_point_init(&fp);
+    for (int it = 1; it <= m->params.max_iter; it++) {
+        for (int i = 0; i < nx * nx; i++) prev[i] = p[i];
+        trk_status st = trk_mre_step(m, p, &info);
+        if (st == TRK_E_NAN) {
+            res->rmse_m = (trk_real)INFINITY;
+            return TRK_E_DIVERGED;
+        }
+        if (st != TRK_OK) return st; /* res: last good iterate */
+        fill_result(m, p, &info, it, res);
+        const trk_real pv = pos_var(nz, p), dpv = pv - pv_prev;
+        accel = (dpv > 0 && dpv >= d_prev) ? accel + 1 : 0;
+        pv_prev = pv;
+        d_prev = dpv;
+        if (!(pv <= hard) || (pv > soft && accel >= 20)) {
+            res->rmse_m = (trk_real)INFINITY;
+            return TRK_E_DIVERGED;
+        }
+        trk_real change = 0, scale = 0;
+        for (int i = 0; i < nx * nx; i++) {
+            trk_real d = trk_fabs(p[i] - prev[i]), a = trk_fabs(p[i]);
+            if (d > change) change = d;
+            if (a > scale) scale = a;
+        }
+        if (trk_i_fixed_point_done(&fp, change, scale, m->params.rel_tol)) {
+            /* S, lambda_vg and q2 of the steady state itself */
+            for (int i = 0; i < nx * nx; i++) prev[i] = p[i];
+            st = trk_mre_step(m, prev, &info);
+            if (st != TRK_OK) return st;
+            fill_result(m, p, &info, it, res);
+            return TRK_OK;
+        }
+    }
+    res->rmse_m = (trk_real)INFINITY;
+    return TRK_E_DIVERGED;
+}
+
+/* ---- TOC ---- */
+
+struct pfa_bind {
+    trk_q2_pfa_fn fn;
+    const void *ctx;
+    trk_real pfa;
+};
+
+static trk_status q2_at_pfa(const void *ctx, trk_real lambda_vg, trk_real *q2)
+{
+    const struct pfa_bind *b = ctx;
+    return b->fn(b->ctx, b->pfa, lambda_vg, q2);
+}
+
+static trk_status q2_unused(const void *ctx, trk_real lambda_vg, trk_real *q2)
+{
+    (void)ctx, (void)lambda_vg, (void)q2;
+    return TRK_E_ARG;
+}
+
+static trk_status toc_check(const struct trk_toc_params *p)
+{
+    if (!p || !p->q2_fn) return TRK_E_ARG;
+    /* the model's own parameters: refused here, not counted as divergence */
+    struct trk_mre m;
+    struct trk_mre_params mp = p->mre;
+    mp.clutter_density = 0;
+    mp.q2_fn = q2_unused;
+    trk_status st = trk_mre_init(&m, &mp);
+    if (st != TRK_OK) return st;
+    if (!isfinite(p->cells_per_m) || !isfinite(p->pfa_min) || !isfinite(p->pfa_max) ||
+        !isfinite(p->ln_pfa_tol))
+        return TRK_E_NAN;
+    if (!(p->cells_per_m > 0)) return TRK_E_RANGE;
+    if (!(p->pfa_min > 0 && p->pfa_min < p->pfa_max && p->pfa_max < 1)) return TRK_E_RANGE;
+    if (p->n_grid != 0 && (p->n_grid < 3 || p->n_grid > 100000)) return TRK_E_RANGE;
+    if (!(p->ln_pfa_tol >= 0)) return TRK_E_RANGE;
+    return TRK_OK;
+}
+
+trk_status trk_toc_rmse(const struct trk_toc_params *p, trk_real pfa, trk_real *rmse_m,
+                        struct trk_mre_result *res)
+{
+    struct trk_mre m;
+    struct trk_mre_result local;
+    if (!rmse_m) return TRK_E_ARG;
+    trk_status st = toc_check(p);
+    if (st != TRK_OK) return st;
+    if (!isfinite(pfa)) return TRK_E_NAN;
+    if (!(pfa > 0 && pfa < 1)) return TRK_E_RANGE;
+    struct pfa_bind bind = {p->q2_fn, p->q2_ctx, pfa};
+    struct trk_mre_params mp = p->mre;
+    mp.clutter_density = pfa * p->cells_per_m;
+    mp.q2 = 1;
+    mp.q2_fn = q2_at_pfa;
+    mp.q2_ctx = &bind;
+    st = trk_mre_init(&m, &mp);
+    if (st != TRK_OK) return st;
+    if (!res) res = &local;
+    st = trk_mre_steady_state(&m, NULL, res);
+    *rmse_m = st == TRK_OK ? res->rmse_m : (trk_real)INFINITY;
+    return st;
+}
+
+/* e(pfa) with "no steady state" (diverged, or off the q2 grid) as +inf. */
+struct toc_eval {
+    const struct trk_toc_params *p;
+    struct trk_toc_result *best;
+    trk_status hard;  /* first status that is neither OK, DIVERGED nor RANGE */
+};
+
+static trk_real toc_eval_at(struct toc_eval *ev, trk_real ln_pfa)
+{
+    struct trk_mre_result r;
+    trk_real e;
+    const trk_real pfa = trk_exp(ln_pfa);
+    trk_status st = trk_toc_rmse(ev->p, pfa, &e, &r);
+    ev->best->n_evals++;
+    if (st == TRK_E_DIVERGED || st == TRK_E_RANGE) {
+        ev->best->n_diverged++;
+        return (trk_real)INFINITY;
+    }
+    if (st != TRK_OK) {
+        if (ev->hard == TRK_OK) ev->hard = st;
+        return (trk_real)INFINITY;
+    }
+    if (e < ev->best->rmse_m) {
+        ev->best->rmse_m = e;
+        ev->best->pfa = pfa;
+        ev->best->lambda_vg = r.lambda_vg;
+        ev->best->q2 = r.q2;
+    }
+    return e;
+}
+
+trk_status trk_toc_optimise(const struct trk_toc_params *p, struct trk_toc_result *res)
+{
+    if (!res) return TRK_E_ARG;
+    trk_status st = toc_check(p);
+    if (st != TRK_OK) return st;
+    const int n = p->n_grid ? p->n_grid : 41;
+    const trk_real tol = p->ln_pfa_tol > 0 ? p->ln_pfa_tol : TRK_REAL_C(1e-3);
+    const trk_real lo = trk_log(p->pfa_min), hi = trk_log(p->pfa_max);
+    struct trk_toc_result r = {0, (trk_real)INFINITY, 0, 0, 0, 0};
+    struct toc_eval ev = {p, &r, TRK_OK};
+
+    /* coarse grid in ln pfa */
+    int best_i = -1;
+    trk_real best_e = (trk_real)INFINITY;
+    for (int i = 0; i < n; i++) {
+        trk_real x = lo + (hi - lo) * ((trk_real)i / (trk_real)(n - 1));
+        trk_real e = toc_eval_at(&ev, x);
+        if (ev.hard != TRK_OK) return ev.hard;
+        if (e < best_e) {
+            best_e = e;
+            best_i = i;
+        }
+    }
+    if (best_i < 0) {
+        *res = r;
+        return TRK_E_DIVERGED;
+    }
+    /* golden-section refinement on [x_{i-1}, x_{i+1}] */
+    const trk_real step = (hi - lo) / (trk_real)(n - 1);
+    trk_real a = lo + step * (trk_real)(best_i > 0 ? best_i - 1 : 0);
+    trk_real b = lo + step * (trk_real)(best_i < n - 1 ? best_i + 1 : n - 1);
+    const trk_real g = TRK_REAL_C(0.61803398874989484820);
+    trk_real c = b - g * (b - a), d = a + g * (b - a);
+    trk_real fc = toc_eval_at(&ev, c), fd = toc_eval_at(&ev, d);
+    for (int it = 0; it < 200 && b - a > tol && ev.hard == TRK_OK; it++) {
+        if (fc <= fd) {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = toc_eval_at(&ev, c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = toc_eval_at(&ev, d);
+        }
+    }
+    if (ev.hard != TRK_OK) return ev.hard;
+    *res = r;
+    return TRK_OK;
+}

@@ -1,0 +1,435 @@
+/* test_q2.c - q2 lookup (trk/q2.h): exact at nodes, linear and cubic
+ * reproduction of polynomials, interpolation error bound, ROC table, bad
+ * grids and queries; the importance sampler (tools/common/q2_is.h): limits
+ * with closed forms, a reference value, bad input, and bit-identical output
+ * for 1 and 2 threads (this test links the OpenMP object, tests/test_q2.mk);
+ * the fast exp/log and the Rayleigh closed forms it uses. */
+#include "trk_test.h"
+#include "q2_amp_rayleigh.h"
+#include "q2_fastmath.h"
+#include "q2_is.h"
+#include "trk/q2.h"
+#include "trk/special.h"
+
+/* ---- lookup ---- */
+
+/* A 2-D PDAF grid over pd x ln(lambda_vg) filled from f. */
+#define NPD 5
+#define NLV 7
+static trk_real pd_nodes[NPD] = {TRK_REAL_C(0.5), TRK_REAL_C(0.6), TRK_REAL_C(0.75), TRK_REAL_C(0.9), 1};
+static trk_real lv_nodes[NLV]; /* ln lambda_vg, filled in setup */
+static trk_real vals[NPD * NLV];
+
+static void fill_pdaf(struct trk_q2_grid *g, double (*f)(double pd, double u), int interp)
+{
+    for (int j = 0; j < NLV; j++) lv_nodes[j] = (trk_real)(log(0.01) + j * 0.7 + (j == 3 ? 0.1 : 0));
+    for (int i = 0; i < NPD; i++)
+        for (int j = 0; j < NLV; j++) vals[i * NLV + j] = (trk_real)f(pd_nodes[i], lv_nodes[j]);
+    memset(g, 0, sizeof *g);
+    g->detector = TRK_Q2_PDAF;
+    g->axis[0] = (struct trk_q2_axis){NPD, pd_nodes, 0, 0, 0, interp};
+    g->axis[1] = (struct trk_q2_axis){NLV, lv_nodes, 0, 0, 1, interp};
+    g->values = vals;
+}
+
+static double f_bilinear(double pd, double u) { return 0.3 + 0.5 * pd - 0.02 * u + 0.01 * pd * u; }
+static double f_quad(double pd, double u)
+{
+    return 0.4 + 0.2 * pd - 0.1 * pd * pd - 0.01 * u - 0.002 * u * u + 0.01 * pd * u;
+}
+static double f_smooth(double pd, double u) { return pd / (1 + exp(u)); } /* q2-like */
+
+static void test_lookup_nodes_and_polynomials(void **state)
+{
+    (void)state;
+    struct trk_q2_grid g;
+    struct trk_q2_lookup q;
+    trk_real v;
+    for (int interp = 0; interp <= 1; interp++) {
+        /* exact at every node */
+        fill_pdaf(&g, f_smooth, interp);
+        TRK_ASSERT_OK(trk_q2_lookup_init(&q, &g));
+        for (int i = 0; i < NPD; i++)
+            for (int j = 0; j < NLV; j++) {
+                TRK_ASSERT_OK(trk_q2_pdaf(&q, pd_nodes[i], (trk_real)exp((double)lv_nodes[j]), &v));
+                TRK_ASSERT_NEAR(v, vals[i * NLV + j], TRK_TOL(1e-14, 2e-6), 0);
+            }
+        /* bilinear functions are reproduced by both schemes, quadratics by the cubic one */
+        fill_pdaf(&g, interp ? f_quad : f_bilinear, interp);
+        TRK_ASSERT_OK(trk_q2_lookup_init(&q, &g));
+        for (double pd = 0.5; pd <= 1.0; pd += 0.0371)
+            for (double u = (double)lv_nodes[0]; u <= (double)lv_nodes[NLV - 1]; u += 0.113) {
+                TRK_ASSERT_OK(trk_q2_pdaf(&q, (trk_real)pd, (trk_real)exp(u), &v));
+                double want = interp ? f_quad(pd, u) : f_bilinear(pd, u);
+                TRK_ASSERT_NEAR(v, want, TRK_TOL(1e-13, 1e-5), 0);
+            }
+    }
+}
+
+/* Linear interpolation error of a smooth function within h^2/8 max|f''|
+ * per axis; the cubic scheme several times smaller. */
+static void test_lookup_error_bound(void **state)
+{
+    (void)state;
+    struct trk_q2_grid g;
+    struct trk_q2_lookup ql, qc;
+    fill_pdaf(&g, f_smooth, TRK_Q2_LINEAR);
+    TRK_ASSERT_OK(trk_q2_lookup_init(&ql, &g));
+    static trk_real vals_c[NPD * NLV];
+    memcpy(vals_c, vals, sizeof vals);
+    struct trk_q2_grid gc = g;
+    gc.axis[0].interp = gc.axis[1].interp = TRK_Q2_CUBIC;
+    gc.values = vals_c;
+    TRK_ASSERT_OK(trk_q2_lookup_init(&qc, &gc));
+    /* f = pd s(u), s = 1/(1+e^u): f_pd,pd = 0, |s''| <= 1/(6 sqrt 3) ~ 0.0962, h_u <= 0.8 */
+    const double bound = 0.8 * 0.8 / 8 * 0.0962 + 1e-6;
+    double max_l = 0, max_c = 0;
+    for (double pd = 0.5; pd <= 1.0; pd += 0.0173)
+        for (double u = (double)lv_nodes[0]; u <= (double)lv_nodes[NLV - 1]; u += 0.0137) {
+            trk_real vl, vc;
+            TRK_ASSERT_OK(trk_q2_pdaf(&ql, (trk_real)pd, (trk_real)exp(u), &vl));
+            TRK_ASSERT_OK(trk_q2_pdaf(&qc, (trk_real)pd, (trk_real)exp(u), &vc));
+            double e = fabs((double)vl - f_smooth(pd, u)), ec = fabs((double)vc - f_smooth(pd, u));
+            if (e > max_l) max_l = e;
+            if (ec > max_c) max_c = ec;
+        }
+    if (!(max_l <= bound)) fail_msg("linear error %g above bound %g", max_l, bound);
+    if (!(max_c <= 0.5 * max_l)) fail_msg("cubic error %g not below half the linear %g", max_c, max_l);
+}
+
+/* PDAFAI 3-D grid with uniform axes; the typed entry points check the kind. */
+static void test_lookup_3d_uniform(void **state)
+{
+    (void)state;
+    enum { NS = 3, NP = 4, NL = 5 };
+    static trk_real v3[NS * NP * NL];
+    for (int a = 0; a < NS; a++)
+        for (int b = 0; b < NP; b++)
+            for (int c = 0; c < NL; c++)
+                v3[(a * NP + b) * NL + c] = (trk_real)(0.2 + 0.01 * a + 0.02 * b + 0.05 * c);
+    struct trk_q2_grid g;
+    memset(&g, 0, sizeof g);
+    g.detector = TRK_Q2_PDAFAI;
+    g.axis[0] = (struct trk_q2_axis){NS, NULL, 10, 20, 0, TRK_Q2_LINEAR};            /* snr 10,15,20 */
+    g.axis[1] = (struct trk_q2_axis){NP, NULL, (trk_real)log(1e-4), (trk_real)log(1e-1), 1, TRK_Q2_LINEAR};
+    g.axis[2] = (struct trk_q2_axis){NL, NULL, (trk_real)log(0.01), (trk_real)log(100.0), 1, TRK_Q2_CUBIC};
+    g.values = v3;
+    struct trk_q2_lookup q;
+    TRK_ASSERT_OK(trk_q2_lookup_init(&q, &g));
+    trk_real v;
+    /* node (1, 2, 3): snr 15, pfa 1e-2, lambda_vg 10 */
+    TRK_ASSERT_OK(trk_q2_pdafai(&q, 15, TRK_REAL_C(1e-2), 10, &v));
+    TRK_ASSERT_NEAR(v, 0.2 + 0.01 + 0.04 + 0.15, TRK_TOL(1e-13, 1e-5), 0);
+    /* linear in every coordinate: midpoint in snr and ln pfa, lambda between nodes */
+    TRK_ASSERT_OK(trk_q2_pdafai(&q, TRK_REAL_C(12.5), (trk_real)sqrt(1e-4 * 1e-3), (trk_real)sqrt(10.0), &v));
+    TRK_ASSERT_NEAR(v, 0.2 + 0.005 + 0.01 + 0.125, TRK_TOL(1e-13, 1e-5), 0);
+    /* ends of the axes are inside */
+    TRK_ASSERT_OK(trk_q2_pdafai(&q, 20, TRK_REAL_C(1e-1), 100, &v));
+    TRK_ASSERT_NEAR(v, 0.2 + 0.02 + 0.06 + 0.2, TRK_TOL(1e-13, 1e-5), 0);
+    TRK_ASSERT_STATUS(trk_q2_pdaf(&q, TRK_REAL_C(0.9), 1, &v), TRK_E_TABLE_KIND);
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, 21, TRK_REAL_C(1e-2), 1, &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, 15, TRK_REAL_C(0.2), 1, &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, 15, TRK_REAL_C(1e-2), TRK_REAL_C(1e-3), &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, 15, TRK_REAL_C(1e-2), 0, &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, NAN, TRK_REAL_C(1e-2), 1, &v), TRK_E_NAN);
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, 15, TRK_REAL_C(1e-2), INFINITY, &v), TRK_E_NAN);
+    /* line adapter */
+    struct trk_q2_line line = {&q, {15, TRK_REAL_C(1e-2)}};
+    TRK_ASSERT_OK(trk_q2_line_eval(&line, 10, &v));
+    TRK_ASSERT_NEAR(v, 0.4, TRK_TOL(1e-13, 1e-5), 0);
+}
+
+/* A uniform axis and the same nodes given explicitly interpolate alike
+ * (the uniform cubic path is Catmull-Rom, the general one Hermite with
+ * three-point slopes: the same weights on equal spacing). */
+static void test_lookup_uniform_equals_explicit(void **state)
+{
+    (void)state;
+    enum { N = 9 };
+    static trk_real nodes[N], v[2 * N];
+    for (int j = 0; j < N; j++) {
+        nodes[j] = (trk_real)(-3.0 + 0.75 * j);
+        v[j] = (trk_real)(0.3 / (1 + exp((double)nodes[j])));
+        v[N + j] = (trk_real)(0.9 / (1 + exp((double)nodes[j])));
+    }
+    static const trk_real pd[2] = {TRK_REAL_C(0.3), TRK_REAL_C(0.9)};
+    struct trk_q2_grid gu, ge;
+    memset(&gu, 0, sizeof gu);
+    gu.detector = TRK_Q2_PDAF;
+    gu.axis[0] = (struct trk_q2_axis){2, pd, 0, 0, 0, TRK_Q2_LINEAR};
+    gu.axis[1] = (struct trk_q2_axis){N, NULL, nodes[0], nodes[N - 1], 1, TRK_Q2_CUBIC};
+    gu.values = v;
+    ge = gu;
+    ge.axis[1].nodes = nodes;
+    struct trk_q2_lookup qu, qe;
+    TRK_ASSERT_OK(trk_q2_lookup_init(&qu, &gu));
+    TRK_ASSERT_OK(trk_q2_lookup_init(&qe, &ge));
+    for (double u = -3; u <= 3; u += 0.0371) {
+        trk_real a, b;
+        TRK_ASSERT_OK(trk_q2_pdaf(&qu, TRK_REAL_C(0.5), (trk_real)exp(u), &a));
+        TRK_ASSERT_OK(trk_q2_pdaf(&qe, TRK_REAL_C(0.5), (trk_real)exp(u), &b));
+        TRK_ASSERT_NEAR(a, b, TRK_TOL(1e-14, 1e-6), 0);
+    }
+}
+
+static void test_lookup_bad_grids(void **state)
+{
+    (void)state;
+    struct trk_q2_grid g;
+    struct trk_q2_lookup q;
+    fill_pdaf(&g, f_smooth, TRK_Q2_LINEAR);
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(NULL, &g), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, NULL), TRK_E_ARG);
+    struct trk_q2_grid b = g;
+    b.detector = 7;
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &b), TRK_E_TABLE_KIND);
+    b = g;
+    b.values = NULL;
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &b), TRK_E_ARG);
+    b = g;
+    b.axis[1].count = 0;
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &b), TRK_E_ARG);
+    b = g;
+    b.axis[0].interp = 5;
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &b), TRK_E_ARG);
+    /* non-monotone axis, pd node outside (0, 1], value outside [0, 1], NaN value */
+    trk_real save = pd_nodes[2];
+    pd_nodes[2] = pd_nodes[1];
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &g), TRK_E_TABLE_CORRUPT);
+    pd_nodes[2] = save;
+    save = pd_nodes[4];
+    pd_nodes[4] = TRK_REAL_C(1.01);
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &g), TRK_E_TABLE_CORRUPT);
+    pd_nodes[4] = save;
+    save = vals[9];
+    vals[9] = TRK_REAL_C(1.5);
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &g), TRK_E_TABLE_CORRUPT);
+    vals[9] = NAN;
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &g), TRK_E_TABLE_CORRUPT);
+    vals[9] = save;
+    /* a PDAF grid refuses PDAFAI queries and out-of-range coordinates */
+    TRK_ASSERT_OK(trk_q2_lookup_init(&q, &g));
+    trk_real v = -1;
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, 15, TRK_REAL_C(0.01), 1, &v), TRK_E_TABLE_KIND);
+    TRK_ASSERT_STATUS(trk_q2_pdaf(&q, TRK_REAL_C(0.4), 1, &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_q2_pdaf(&q, TRK_REAL_C(0.9), 1e6, &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_q2_pdaf(&q, TRK_REAL_C(0.9), -1, &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_q2_pdaf(NULL, TRK_REAL_C(0.9), 1, &v), TRK_E_ARG);
+    assert_true(v == -1); /* untouched on error */
+}
+
+/* Rayleigh ROC pd = pfa^(1/(1+SNR)): ln pd linear in ln pfa, so the table is exact. */
+static void test_roc_table(void **state)
+{
+    (void)state;
+    const double snr = pow(10.0, 1.5);
+    static trk_real pfa[6], pd[6];
+    for (int i = 0; i < 6; i++) {
+        pfa[i] = (trk_real)pow(10.0, -6.0 + i);
+        pd[i] = (trk_real)pow((double)pfa[i], 1 / (1 + snr));
+    }
+    struct trk_roc_table t = {6, pfa, pd};
+    trk_real v;
+    for (double x = 1e-6; x <= 0.1; x *= 1.37) {
+        TRK_ASSERT_OK(trk_roc_table_eval(&t, (trk_real)x, &v));
+        TRK_ASSERT_NEAR(v, pow((double)(trk_real)x, 1 / (1 + snr)), 0, TRK_TOL(1e-13, 1e-5));
+    }
+    TRK_ASSERT_STATUS(trk_roc_table_eval(&t, TRK_REAL_C(0.5), &v), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(trk_roc_table_eval(&t, NAN, &v), TRK_E_NAN);
+    struct trk_roc_table bad = {1, pfa, pd};
+    TRK_ASSERT_STATUS(trk_roc_table_eval(&bad, TRK_REAL_C(1e-3), &v), TRK_E_ARG);
+    /* q2 along the ROC on a PDAF grid: pd from the table, then the grid */
+    struct trk_q2_grid g;
+    struct trk_q2_lookup q;
+    fill_pdaf(&g, f_bilinear, TRK_Q2_LINEAR);
+    TRK_ASSERT_OK(trk_q2_lookup_init(&q, &g));
+    struct trk_q2_roc qr = {&q, trk_roc_table_eval, &t, 0};
+    TRK_ASSERT_OK(trk_q2_roc_eval(&qr, TRK_REAL_C(1e-2), TRK_REAL_C(0.1), &v));
+    TRK_ASSERT_NEAR(v, f_bilinear(pow(1e-2, 1 / (1 + snr)), log(0.1)), TRK_TOL(1e-12, 1e-5), 0);
+    qr.roc = NULL;
+    TRK_ASSERT_STATUS(trk_q2_roc_eval(&qr, TRK_REAL_C(1e-2), TRK_REAL_C(0.1), &v), TRK_E_ARG);
+}
+
+/* ---- sampler ---- */
+
+static void test_fastmath(void **state)
+{
+    (void)state;
+    double worst_e = 0, worst_l = 0;
+    for (double x = -708; x <= 709; x += 0.0917) {
+        double a = q2_exp(x), b = exp(x);
+        double e = fabs(a - b) / (nextafter(b, INFINITY) - b);
+        if (e > worst_e) worst_e = e;
+    }
+    for (double x = 1e-12; x < 4; x = x * 1.0013 + 1e-15) {
+        double a = q2_log(x), b = log(x);
+        double e = fabs(a - b) / (nextafter(fabs(b), INFINITY) - fabs(b));
+        if (b != 0 && e > worst_l) worst_l = e;
+    }
+    if (!(worst_e <= 2)) fail_msg("q2_exp error %g ulp", worst_e);
+    if (!(worst_l <= 3)) fail_msg("q2_log error %g ulp", worst_l);
+    assert_true(q2_exp(-709) == 0 && q2_exp(0) == 1);
+}
+
+static void test_rayleigh_closed_forms(void **state)
+{
+    (void)state;
+    struct q2_amp_rayleigh r;
+    assert_int_equal(q2_amp_rayleigh_init(&r, 15, 1e-3), 0);
+    /* the vector's ROC value (q2.vec ai_01) */
+    TRK_ASSERT_NEAR(r.pd, 0.8091698825961493, 0, 1e-14);
+    /* sampler = l^a at the inverse-survival amplitude, for both laws */
+    const double u[4] = {0.9, 0.5, 1e-3, 1e-9};
+    double out[4];
+    for (int target = 0; target <= 1; target++) {
+        q2_amp_rayleigh_sample(&r, target, 4, u, out);
+        for (int i = 0; i < 4; i++) {
+            double a = q2_amp_rayleigh_inv_sf(&r, target, -log(u[i]));
+            TRK_ASSERT_NEAR(out[i], q2_amp_rayleigh_log_lr(&r, a), 1e-12, 1e-12);
+        }
+    }
+    /* at the threshold: l^a(t) = (pfa/pd) p1(t)/p0(t) = P/(P+d) */
+    TRK_ASSERT_NEAR(q2_amp_rayleigh_log_lr(&r, sqrt(r.t2)), -log1p(r.snr), 1e-12, 0);
+    assert_int_equal(q2_amp_rayleigh_init(&r, 15, 0), -1);
+    assert_int_equal(q2_amp_rayleigh_init(&r, NAN, 0.1), -1);
+}
+
+static struct q2_is_options opts(uint64_t samples, int threads)
+{
+    struct q2_is_options o;
+    memset(&o, 0, sizeof o);
+    o.seed = 20240611;
+    o.samples = samples;
+    o.threads = threads;
+    return o;
+}
+
+/* lambda_vg -> 0: only n = 0, b -> 0, beta_1 -> 1: q2 -> pd F_4(gamma). */
+static void test_is_limits(void **state)
+{
+    (void)state;
+    const double gamma = -2 * log1p(-0.99), F = 1 - exp(-gamma / 2) * (1 + gamma / 2);
+    struct q2_is_options o = opts(20000, 1);
+    double q2, se;
+    char err[200];
+    assert_int_equal(q2_is_cell(2, gamma, 0.8, 1e-7, NULL, &o, &q2, &se, err, sizeof err), 0);
+    TRK_ASSERT_NEAR(q2, 0.8 * F, 1e-5, 0);
+    assert_true(se < 1e-5);
+    /* nz = 1 and 3 run through the generic (libm) path: same limit */
+    for (int nz = 1; nz <= 3; nz += 2) {
+        const double g = 9.0;
+        double Fn = (double)trk_chi2_cdf(nz + 2, (trk_real)g);
+        assert_int_equal(q2_is_cell(nz, g, 0.9, 1e-7, NULL, &o, &q2, &se, err, sizeof err), 0);
+        TRK_ASSERT_NEAR(q2, 0.9 * Fn, 2e-5, 0);
+    }
+    /* b of the CONVENTIONS formula: nz = 2, pd = 1: b = 2 lambda_vg (1 - pg) / gamma */
+    TRK_ASSERT_NEAR(q2_is_b(2, gamma, 1.0, 3.0), 2 * 3.0 * 0.01 / gamma, 0, 1e-6);
+}
+
+/* A reference value (q2.vec pdaf_02: 0.50360341306552991, se 5.34e-5) with
+ * few scenes: within 4.5 of our standard errors. */
+static void test_is_reference(void **state)
+{
+    (void)state;
+    struct q2_is_options o = opts(40000, 2);
+    double q2, se;
+    char err[200];
+    assert_int_equal(q2_is_cell(2, -2 * log1p(-0.99), 0.9, 1.0, NULL, &o, &q2, &se, err, sizeof err), 0);
+    assert_true(se > 1e-4 && se < 2e-3);
+    TRK_ASSERT_NEAR(q2, 0.50360341306552991, 4.5 * sqrt(se * se + 5.34e-5 * 5.34e-5), 0);
+    /* PDAFAI, Rayleigh (q2.vec ai_01: 0.77937236522566689, se 6.21e-5) */
+    struct q2_amp_rayleigh r;
+    assert_int_equal(q2_amp_rayleigh_init(&r, 15, 1e-3), 0);
+    struct q2_amp_sampler amp = q2_amp_rayleigh_sampler(&r);
+    assert_int_equal(q2_is_cell(2, 36.0, 0, 0.5, &amp, &o, &q2, &se, err, sizeof err), 0);
+    TRK_ASSERT_NEAR(q2, 0.77937236522566689, 4.5 * sqrt(se * se + 6.21e-5 * 6.21e-5), 0);
+}
+
+/* Two lines (PDAF over 2 pd x 3 lambda; PDAFAI over 3 lambda) with 1 and 2
+ * threads, with and without a target se: identical bits. */
+static void run_lines(int threads, double target_se, double *out)
+{
+    static const double pd[6] = {0.6, 0.6, 0.6, 0.95, 0.95, 0.95};
+    static const double lv[6] = {0.05, 1.0, 6.0, 0.05, 1.0, 6.0};
+    static struct q2_amp_rayleigh r;
+    assert_int_equal(q2_amp_rayleigh_init(&r, 12, 1e-2), 0);
+    static struct q2_amp_sampler amp;
+    amp = q2_amp_rayleigh_sampler(&r);
+    struct q2_is_line lines[2];
+    memset(lines, 0, sizeof lines);
+    lines[0] = (struct q2_is_line){.nz = 2, .gamma = 9.21, .stream = 1, .n_cells = 6, .pd = pd,
+                                   .lambda_vg = lv, .q2 = out, .se = out + 6};
+    lines[1] = (struct q2_is_line){.nz = 2, .gamma = 16, .amp = &amp, .stream = 2, .n_cells = 3,
+                                   .lambda_vg = lv + 3, .q2 = out + 12, .se = out + 15};
+    struct q2_is_options o = opts(6000, threads);
+    o.target_se = target_se;
+    char err[200];
+    assert_int_equal(q2_is_run(lines, 2, &o, err, sizeof err), 0);
+    out[18] = (double)lines[0].scenes;
+    out[19] = (double)lines[1].points;
+}
+
+static void test_is_bit_identical_threads(void **state)
+{
+    (void)state;
+    double a[20], b[20];
+    for (int pass = 0; pass < 2; pass++) {
+        double tse = pass ? 0.01 : 0;
+        run_lines(1, tse, a);
+        run_lines(2, tse, b);
+        if (memcmp(a, b, sizeof a) != 0)
+            for (int i = 0; i < 20; i++)
+                if (memcmp(&a[i], &b[i], sizeof a[i]) != 0)
+                    fail_msg("target_se %g: output %d differs: %.17g (1 thread) vs %.17g (2 threads)", tse,
+                             i, a[i], b[i]);
+        /* and it is an estimate: q2 in (0, 1), se > 0 */
+        for (int i = 0; i < 9; i++) assert_true(a[i < 6 ? i : i + 6] > 0 && a[i < 6 ? i : i + 6] < 1);
+    }
+    /* q2 falls with lambda_vg and rises with pd (same samples: exact ordering) */
+    assert_true(a[0] > a[1] && a[1] > a[2] && a[3] > a[0]);
+}
+
+static void test_is_bad_input(void **state)
+{
+    (void)state;
+    double q2 = -1, se;
+    char err[200];
+    struct q2_is_options o = opts(1000, 1);
+    const double g = 9.21;
+    assert_int_equal(q2_is_cell(2, g, 0.9, NAN, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_non_null(strstr(err, "lambda_vg"));
+    assert_int_equal(q2_is_cell(2, g, 0.9, 2000, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_int_equal(q2_is_cell(2, g, 0.9, 0, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_int_equal(q2_is_cell(2, g, NAN, 1, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_int_equal(q2_is_cell(2, g, 1.5, 1, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_int_equal(q2_is_cell(2, NAN, 0.9, 1, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_int_equal(q2_is_cell(4, g, 0.9, 1, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_int_equal(q2_is_cell(2, 0.01, 0.9, 1, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_non_null(strstr(err, "gate too small"));
+    o.samples = 0;
+    assert_int_equal(q2_is_cell(2, g, 0.9, 1, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_non_null(strstr(err, "samples"));
+    o.samples = 1000;
+    o.target_se = NAN;
+    assert_int_equal(q2_is_cell(2, g, 0.9, 1, NULL, &o, &q2, &se, err, sizeof err), -1);
+    assert_true(q2 == -1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_lookup_nodes_and_polynomials),
+        cmocka_unit_test(test_lookup_error_bound),
+        cmocka_unit_test(test_lookup_3d_uniform),
+        cmocka_unit_test(test_lookup_uniform_equals_explicit),
+        cmocka_unit_test(test_lookup_bad_grids),
+        cmocka_unit_test(test_roc_table),
+        cmocka_unit_test(test_fastmath),
+        cmocka_unit_test(test_rayleigh_closed_forms),
+        cmocka_unit_test(test_is_limits),
+        cmocka_unit_test(test_is_reference),
+        cmocka_unit_test(test_is_bit_identical_threads),
+        cmocka_unit_test(test_is_bad_input),
+    };
+    return cmocka_run_group_tests_name("q2", tests, NULL, NULL);
+}
