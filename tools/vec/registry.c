@@ -26,3 +26,15 @@ const struct vec_kind *vec_kinds(size_t *n)
     *n = sizeof kinds / sizeof kinds[0] - 1;
     return kinds;
 }
+
+int vec_kind_listed(const char *list, const char *name)
+{
+    const size_t n = strlen(name);
+    for (const char *p = list; p && *p;) {
+        const char *e = strchr(p, ',');
+        const size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len == n && strncmp(p, name, n) == 0) return 1;
+        p = e ? e + 1 : NULL;
+    }
+    return 0;
+}

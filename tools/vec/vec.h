@@ -121,6 +121,9 @@ struct vec_kind {
     int trk_vec_kind_##kname(const struct vec_case *c, struct vec_out *o)
 
 const struct vec_kind *vec_kind_find(const char *name);
+
+/* Is kind `name` in the comma-separated list? */
+int vec_kind_listed(const char *list, const char *name);
 const struct vec_kind *vec_kinds(size_t *n);
 
 /* --- comparison --- */
