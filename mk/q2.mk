@@ -24,4 +24,4 @@ $(Q2_IS_OMP_OBJ): tools/common/q2_is.c
 	$(CC) $(CFLAGS_ALL) $(Q2_IS_FLAGS) -fopenmp -Itools/common -c $< -o $@
 
 $(BUILD)/obj/tools/common/q2_is.o: CFLAGS_ALL += $(Q2_IS_FLAGS)
-$(BUILD)/obj/tools/common/q2_amp_rayleigh.o: CFLAGS_ALL += $(Q2_IS_FLAGS)
+$(BUILD)/obj/tools/common/q2_amp.o: CFLAGS_ALL += $(Q2_IS_FLAGS)

@@ -48,6 +48,21 @@ static trk_real log_lr_tail(const struct trk_amplitude *m, trk_real s)
     return m->llr_limit - (m->llr_limit - last[0]) * trk_exp(-m->llr_tail_rate * (s - m->llr_hi));
 }
 
+/* Tabulated ln l^a at s = ln(a/sqrt P): cubic Hermite on a uniform grid in s,
+ * the tail relaxation beyond it. */
+static trk_real table_log_lr(const struct trk_amplitude *m, trk_real s)
+{
+    const trk_real u = (s - m->llr_lo) * m->llr_inv_h;
+    const trk_real last = (trk_real)(m->llr_n - 1);
+    if (u > last) return log_lr_tail(m, s);
+    uint32_t i = 0;
+    if (u > 0) i = (uint32_t)u;
+    if (i > m->llr_n - 2) i = m->llr_n - 2;
+    const trk_real f = u - (trk_real)i;
+    const trk_real *c = m->llr + 2 * (size_t)i;
+    return trk_table_hermite(c[0], c[2], c[1], c[3], m->llr_h, f);
+}
+
 trk_status trk_amplitude_log_lr(const struct trk_amplitude *m, trk_real a, trk_real *log_lr)
 {
     if (!m || !log_lr) return TRK_E_ARG;
@@ -59,20 +74,7 @@ trk_status trk_amplitude_log_lr(const struct trk_amplitude *m, trk_real a, trk_r
         *log_lr = v;
         return TRK_OK;
     }
-    /* cubic Hermite in s = ln(a/sqrt P) on a uniform grid */
-    const trk_real s = trk_log(a) - m->ln_sqrt_p;
-    const trk_real u = (s - m->llr_lo) * m->llr_inv_h;
-    const trk_real last = (trk_real)(m->llr_n - 1);
-    if (u > last) {
-        *log_lr = log_lr_tail(m, s);
-        return TRK_OK;
-    }
-    uint32_t i = 0;
-    if (u > 0) i = (uint32_t)u;
-    if (i > m->llr_n - 2) i = m->llr_n - 2;
-    const trk_real f = u - (trk_real)i;
-    const trk_real *c = m->llr + 2 * (size_t)i;
-    *log_lr = trk_table_hermite(c[0], c[2], c[1], c[3], m->llr_h, f);
+    *log_lr = table_log_lr(m, trk_log(a) - m->ln_sqrt_p);
     return TRK_OK;
 }
 
@@ -115,5 +117,43 @@ trk_status trk_amplitude_inv_sf(const struct trk_amplitude *m, int source, trk_r
     if (!isfinite(a2)) return TRK_E_RANGE;
     const trk_real v = trk_sqrt(a2);
     *a = v > m->threshold ? v : m->threshold; /* x = 0 gives t; rounding never below it */
+    return TRK_OK;
+}
+
+#define SAMPLE_BLOCK 32 /* reals on the stack: 256 bytes in double */
+
+trk_status trk_amplitude_sample_log_lr(const struct trk_amplitude *m, int source, size_t n, const trk_real *x,
+                                       trk_real *log_lr)
+{
+    if (!m || (source != TRK_AMP_CLUTTER && source != TRK_AMP_TARGET)) return TRK_E_ARG;
+    if (n > 0 && (!x || !log_lr)) return TRK_E_ARG;
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(x[i])) return TRK_E_NAN;
+        if (!(x[i] >= 0)) return TRK_E_RANGE;
+    }
+    if (!m->tabulated) {
+        /* ln l^a = lr0 + lr1 a^2 with a^2 = t^2 + Q x (Q = P or P + d): affine in x */
+        const trk_real q = source == TRK_AMP_TARGET ? m->clutter_power * (1 + m->snr) : m->clutter_power;
+        const trk_real c0 = m->lr0 + m->lr1 * m->t2, c1 = m->lr1 * q;
+        for (size_t i = 0; i < n; i++) log_lr[i] = c0 + c1 * x[i];
+    } else {
+        /* s = ln(a/sqrt P) = ln(u^2)/2, u^2 from the a(x) table (no square
+         * root); in blocks of three short passes (table, log, table), which
+         * overlap far better in the CPU than one long dependent chain */
+        const struct trk_amp_inv_curve *cv = &m->inv[source];
+        const trk_real ut2 = m->t2 / m->clutter_power;
+        trk_real sb[SAMPLE_BLOCK];
+        for (size_t i0 = 0; i0 < n; i0 += SAMPLE_BLOCK) {
+            const size_t nb = n - i0 < SAMPLE_BLOCK ? n - i0 : SAMPLE_BLOCK;
+            for (size_t i = 0; i < nb; i++) {
+                const trk_real u2 = inv_curve_u2(cv, x[i0 + i]);
+                sb[i] = u2 < ut2 ? ut2 : u2; /* as trk_amplitude_inv_sf: never below the threshold */
+            }
+            for (size_t i = 0; i < nb; i++) sb[i] = TRK_REAL_C(0.5) * trk_log(sb[i]);
+            for (size_t i = 0; i < nb; i++) log_lr[i0 + i] = table_log_lr(m, sb[i]);
+        }
+    }
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(log_lr[i])) return TRK_E_RANGE;
     return TRK_OK;
 }

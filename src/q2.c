@@ -2,6 +2,9 @@
  * (trk/q2.h; CONVENTIONS "q2, MRE and CRLB"). */
 #include "trk/q2.h"
 
+#include "trk/amplitude.h"
+#include "trk/special.h"
+
 /* Axis kinds of each detector, in axis order. */
 enum axis_kind { AX_PD, AX_SNR_DB, AX_PFA, AX_LAMBDA_VG };
 
@@ -70,18 +73,147 @@ trk_status trk_q2_lookup_init(struct trk_q2_lookup *q, const struct trk_q2_grid 
         if (grid->axis[i].count > (size_t)-1 / total) return TRK_E_TABLE_CORRUPT;
         total *= grid->axis[i].count;
     }
+    const size_t vs = grid->value_stride ? grid->value_stride : 1;
+    if (total > ((size_t)-1) / vs) return TRK_E_TABLE_CORRUPT;
     for (size_t j = 0; j < total; j++) {
-        trk_real v = grid->values[j];
+        trk_real v = grid->values[j * vs];
         if (!(v >= 0 && v <= 1)) return TRK_E_TABLE_CORRUPT; /* also NaN */
     }
-    q->grid = *grid;
-    q->n_axes = n_axes;
-    size_t s = 1;
+    struct trk_q2_lookup r;
+    r.grid = *grid;
+    r.grid.value_stride = vs;
+    r.n_axes = n_axes;
+    size_t s = vs;
     for (int i = n_axes - 1; i >= 0; i--) {
-        q->stride[i] = s;
+        r.stride[i] = s;
         s *= grid->axis[i].count;
     }
-    for (int i = n_axes; i < TRK_Q2_MAX_AXES; i++) q->stride[i] = 0;
+    for (int i = n_axes; i < TRK_Q2_MAX_AXES; i++) r.stride[i] = 0;
+    r.nz = 0;
+    r.gate_gamma = r.gate_prob = 0;
+    r.amp_model = 0;
+    r.nu = 0;
+    r.max_se = 0;
+    *q = r;
+    return TRK_OK;
+}
+
+/* ---- q2 tables ---- */
+
+/* A required parameter: missing (or of the other type) makes the table corrupt. */
+static trk_status need_int(const struct trk_table *t, const char *name, int64_t *v)
+{
+    trk_status st = trk_table_param_int(t, name, v);
+    return st == TRK_E_TABLE_KIND ? TRK_E_TABLE_CORRUPT : st;
+}
+
+static trk_status need_real(const struct trk_table *t, const char *name, trk_real *v)
+{
+    trk_status st = trk_table_param_real(t, name, v);
+    return st == TRK_E_TABLE_KIND ? TRK_E_TABLE_CORRUPT : st;
+}
+
+/* One table axis as a lookup axis: the expected variable (else the table is
+ * of another kind), and a spacing the lookup reads in place (log axes
+ * uniform in ln x; linear or explicit axes in x). */
+static trk_status table_axis(const struct trk_table_axis *ta, uint32_t var, int log_axis, int interp,
+                             struct trk_q2_axis *a)
+{
+    if (ta->variable != var) return TRK_E_TABLE_KIND;
+    a->count = ta->count;
+    a->interp = interp;
+    a->nodes = NULL;
+    a->log_spacing = log_axis;
+    if (log_axis) {
+        if (ta->spacing != TRK_TABLE_SPACING_LOG || !(ta->lo > 0)) return TRK_E_TABLE_CORRUPT;
+        a->u_first = trk_log(ta->lo);
+        a->u_last = trk_log(ta->hi);
+    } else if (ta->spacing == TRK_TABLE_SPACING_LINEAR) {
+        a->u_first = ta->lo;
+        a->u_last = ta->hi;
+    } else if (ta->spacing == TRK_TABLE_SPACING_EXPLICIT && ta->values) {
+        a->nodes = ta->values;
+        a->u_first = ta->lo;
+        a->u_last = ta->hi;
+    } else {
+        return TRK_E_TABLE_CORRUPT;
+    }
+    return TRK_OK;
+}
+
+trk_status trk_q2_lookup_init_table(struct trk_q2_lookup *q, const struct trk_table *t, int detector, int nz)
+{
+    if (!q || !t || !t->bytes) return TRK_E_ARG;
+    if (detector != TRK_Q2_PDAF && detector != TRK_Q2_PDAFAI) return TRK_E_ARG;
+    if (nz < 1 || nz > 3) return TRK_E_ARG;
+    const uint32_t kind = detector == TRK_Q2_PDAF ? TRK_TABLE_KIND_Q2_PDAF : TRK_TABLE_KIND_Q2_PDAFAI;
+    if (t->info.kind != kind) return TRK_E_TABLE_KIND;
+    if (t->info.kind_version != TRK_Q2_TABLE_VERSION) return TRK_E_TABLE_VERSION;
+    int64_t det, tnz, model = 0;
+    trk_real gamma, pg, nu = 0, max_se;
+    trk_status st;
+    if ((st = need_int(t, "detector", &det)) != TRK_OK || (st = need_int(t, "nz", &tnz)) != TRK_OK ||
+        (st = need_real(t, "gate_gamma", &gamma)) != TRK_OK || (st = need_real(t, "gate_prob", &pg)) != TRK_OK ||
+        (st = need_real(t, "max_se", &max_se)) != TRK_OK)
+        return st;
+    if (det != detector || tnz < 1 || tnz > 3) return TRK_E_TABLE_CORRUPT;
+    if (tnz != nz) return TRK_E_TABLE_KIND; /* a table for another measurement dimension */
+    if (!(gamma > 0) || !(pg > 0 && pg <= 1) || !(max_se >= 0 && max_se <= 1)) return TRK_E_TABLE_CORRUPT;
+    /* P_G of gamma (nz degrees of freedom) */
+    if (!(trk_fabs(trk_chi2_cdf(nz, gamma) - pg) <= TRK_REAL_C(1e-5))) return TRK_E_TABLE_CORRUPT;
+    if (detector == TRK_Q2_PDAFAI) {
+        if ((st = need_int(t, "model", &model)) != TRK_OK || (st = need_real(t, "nu", &nu)) != TRK_OK) return st;
+        if (model == TRK_AMP_RAYLEIGH) {
+            if (nu != 0) return TRK_E_TABLE_CORRUPT;
+        } else if (model == TRK_AMP_K) {
+            if (!(nu > 0)) return TRK_E_TABLE_CORRUPT;
+        } else {
+            return TRK_E_TABLE_CORRUPT;
+        }
+    }
+    struct trk_table_section sec;
+    st = trk_table_section(t, TRK_Q2_SECTION_VALUES, &sec);
+    if (st != TRK_OK) return st == TRK_E_TABLE_KIND ? TRK_E_TABLE_CORRUPT : st;
+    const uint32_t naxes = detector == TRK_Q2_PDAF ? 2u : 3u;
+    if (sec.naxes != naxes) return TRK_E_TABLE_KIND;
+    if (sec.ncomp != 2) return TRK_E_TABLE_CORRUPT;
+    int interp;
+    if (sec.interp == TRK_TABLE_INTERP_LINEAR) interp = TRK_Q2_LINEAR;
+    else if (sec.interp == TRK_TABLE_INTERP_CUBIC) interp = TRK_Q2_CUBIC;
+    else return TRK_E_TABLE_CORRUPT;
+    struct trk_q2_grid g;
+    g.detector = detector;
+    for (int i = 0; i < TRK_Q2_MAX_AXES; i++) {
+        g.axis[i].count = 0;
+        g.axis[i].nodes = NULL;
+        g.axis[i].u_first = g.axis[i].u_last = 0;
+        g.axis[i].log_spacing = 0;
+        g.axis[i].interp = TRK_Q2_LINEAR;
+    }
+    static const uint32_t vars_pdaf[2] = {TRK_TABLE_VAR_PD, TRK_TABLE_VAR_LAMBDA_VG};
+    static const uint32_t vars_ai[3] = {TRK_TABLE_VAR_SNR_DB, TRK_TABLE_VAR_PFA, TRK_TABLE_VAR_LAMBDA_VG};
+    static const int log_pdaf[2] = {0, 1}, log_ai[3] = {0, 1, 1};
+    const uint32_t *vars = detector == TRK_Q2_PDAF ? vars_pdaf : vars_ai;
+    const int *logs = detector == TRK_Q2_PDAF ? log_pdaf : log_ai;
+    for (uint32_t i = 0; i < naxes; i++) {
+        st = table_axis(&sec.axis[i], vars[i], logs[i], interp, &g.axis[i]);
+        if (st != TRK_OK) return st;
+    }
+    /* per-cell standard errors: finite (the container) and in [0, max_se] */
+    for (size_t c = 1; c < sec.count; c += 2)
+        if (!(sec.data[c] >= 0 && sec.data[c] <= max_se)) return TRK_E_TABLE_CORRUPT;
+    g.values = sec.data;
+    g.value_stride = 2;
+    struct trk_q2_lookup r;
+    st = trk_q2_lookup_init(&r, &g);
+    if (st != TRK_OK) return st;
+    r.nz = nz;
+    r.gate_gamma = gamma;
+    r.gate_prob = pg;
+    r.amp_model = (int)model;
+    r.nu = nu;
+    r.max_se = max_se;
+    *q = r;
     return TRK_OK;
 }
 

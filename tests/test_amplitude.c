@@ -453,6 +453,58 @@ static void test_kdist_closed_forms(void **state)
 }
 
 /* amplitude.vec kennedy0 and kennedy4 */
+/* trk_amplitude_sample_log_lr = trk_amplitude_log_lr(trk_amplitude_inv_sf(x))
+ * up to rounding, for Rayleigh (closed form), a K table (uniform grid) and
+ * Brekke's geometric grid; in place; bad input. */
+static void check_sample_log_lr(const struct trk_amplitude *m)
+{
+    enum { N = 100 };
+    trk_real x[N], y[N];
+    for (int i = 0; i < N; i++) x[i] = (trk_real)(i == 0 ? 0 : 0.05 * i * i / 10.0 + 1e-3 * i); /* 0 .. ~50 */
+    for (int src = 0; src < 2; src++) {
+        TRK_ASSERT_OK(trk_amplitude_sample_log_lr(m, src, N, x, y));
+        for (int i = 0; i < N; i++) {
+            trk_real a, l;
+            TRK_ASSERT_OK(trk_amplitude_inv_sf(m, src, x[i], &a));
+            TRK_ASSERT_OK(trk_amplitude_log_lr(m, a, &l));
+            TRK_ASSERT_NEAR(y[i], l, TRK_TOL(1e-11, 2e-4), TRK_TOL(1e-12, 1e-5));
+        }
+        /* in place */
+        trk_real z[N];
+        memcpy(z, x, sizeof z);
+        TRK_ASSERT_OK(trk_amplitude_sample_log_lr(m, src, N, z, z));
+        assert_memory_equal(z, y, sizeof z);
+    }
+}
+
+static void test_sample_log_lr(void **state)
+{
+    (void)state;
+    struct trk_amplitude m;
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&m, 2, 15, TRK_REAL_C(1e-3)));
+    check_sample_log_lr(&m);
+    struct amp_table_result r;
+    struct trk_table t;
+    unsigned char *b = build(TRK_AMP_K, 1, 15, 1e-2, 0, 64, 64, 0, &r);
+    load(b, r.len, &t, &m);
+    check_sample_log_lr(&m);
+    free(b);
+    b = build(TRK_AMP_K, 8, 10, 1e-1, TRK_AMP_GRID_GEOMETRIC, 64, 64, 0, &r);
+    load(b, r.len, &t, &m);
+    check_sample_log_lr(&m);
+    /* bad input: statuses, nothing written for a bad x */
+    trk_real x[3] = {1, NAN, 2}, y[3] = {-7, -7, -7};
+    TRK_ASSERT_STATUS(trk_amplitude_sample_log_lr(&m, TRK_AMP_CLUTTER, 3, x, y), TRK_E_NAN);
+    x[1] = -1;
+    TRK_ASSERT_STATUS(trk_amplitude_sample_log_lr(&m, TRK_AMP_CLUTTER, 3, x, y), TRK_E_RANGE);
+    assert_true(y[0] == -7 && y[2] == -7);
+    TRK_ASSERT_STATUS(trk_amplitude_sample_log_lr(&m, 2, 3, x, y), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_amplitude_sample_log_lr(NULL, TRK_AMP_CLUTTER, 3, x, y), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_amplitude_sample_log_lr(&m, TRK_AMP_CLUTTER, 3, NULL, y), TRK_E_ARG);
+    TRK_ASSERT_OK(trk_amplitude_sample_log_lr(&m, TRK_AMP_CLUTTER, 0, NULL, NULL));
+    free(b);
+}
+
 static void test_kennedy(void **state)
 {
     (void)state;
@@ -493,6 +545,7 @@ int main(void)
         cmocka_unit_test(test_rayleigh_and_geometric_tables),
         cmocka_unit_test(test_bad_tables),
         cmocka_unit_test(test_kennedy),
+        cmocka_unit_test(test_sample_log_lr),
         cmocka_unit_test(test_kdist_closed_forms),
     };
     return cmocka_run_group_tests_name("amplitude", tests, NULL, NULL);

@@ -3,11 +3,15 @@
  * grids and queries; the importance sampler (tools/common/q2_is.h): limits
  * with closed forms, a reference value, bad input, and bit-identical output
  * for 1 and 2 threads (this test links the OpenMP object, tests/test_q2.mk);
- * the fast exp/log and the Rayleigh closed forms it uses. */
+ * the fast exp/log and the amplitude sampler on the library's amplitude
+ * module (Rayleigh closed forms, K table lookup). */
 #include "trk_test.h"
-#include "q2_amp_rayleigh.h"
+#include "q2_amp.h"
 #include "q2_fastmath.h"
 #include "q2_is.h"
+#include "q2_table.h"
+#include "table_writer.h"
+#include "trk/amplitude.h"
 #include "trk/q2.h"
 #include "trk/special.h"
 
@@ -218,6 +222,229 @@ static void test_lookup_bad_grids(void **state)
     assert_true(v == -1); /* untouched on error */
 }
 
+/* ---- q2 tables (trk_q2_lookup_init_table) ---- */
+
+/* What to spoil in a hand-made q2 table. */
+enum spoil {
+    OK_TABLE, KIND_AMP, VERSION2, NZ3, NO_GAMMA, GATE_MISMATCH, SE_NEGATIVE, VALUE_ABOVE_1, THREE_AXES,
+    WRONG_VAR, INTERP_HERMITE_NONE, NCOMP1, LOG_PD, MAX_SE_LOW, DETECTOR_PARAM, PDAFAI_NO_MODEL
+};
+
+/* PDAF table, nz 2, gamma 9.21 (P_G 0.99), pd explicit {0.5 .. 1} x lambda_vg
+ * log 0.01 .. 10 (5 nodes), values f_smooth, se 1e-4; or PDAFAI (snr 10, 20
+ * x pfa 1e-3 .. 1e-1 (3) x lambda_vg) when pdafai. */
+static unsigned char *make_table(int pdafai, enum spoil sp, uint32_t real_size, size_t *len)
+{
+    static const double pd[5] = {0.5, 0.6, 0.75, 0.9, 1};
+    const double gamma = -2 * log1p(-0.99);
+    struct tablew *w = tablew_new(sp == KIND_AMP ? TRK_TABLE_KIND_AMP
+                                  : pdafai      ? TRK_TABLE_KIND_Q2_PDAFAI
+                                                : TRK_TABLE_KIND_Q2_PDAF,
+                                  sp == VERSION2 ? 2 : TRK_Q2_TABLE_VERSION, real_size);
+    assert_non_null(w);
+    int bad = tablew_param_int(w, "detector", sp == DETECTOR_PARAM ? 2 - pdafai : 1 + pdafai) ||
+              tablew_param_int(w, "nz", sp == NZ3 ? 3 : 2) ||
+              (sp != NO_GAMMA && tablew_param_real(w, "gate_gamma", gamma)) ||
+              tablew_param_real(w, "gate_prob", sp == GATE_MISMATCH ? 0.95 : 0.99) ||
+              tablew_param_real(w, "max_se", sp == MAX_SE_LOW ? 1e-5 : 1e-4) ||
+              (pdafai && sp != PDAFAI_NO_MODEL &&
+               (tablew_param_int(w, "model", TRK_AMP_K) || tablew_param_real(w, "nu", 2)));
+    assert_false(bad);
+    struct tablew_axis ax[3];
+    const struct tablew_axis lv = {5, TRK_TABLE_SPACING_LOG, TRK_TABLE_VAR_LAMBDA_VG, 0.01, 10, 0, NULL};
+    uint32_t naxes;
+    size_t cells;
+    if (!pdafai) {
+        ax[0] = (struct tablew_axis){5, sp == LOG_PD ? TRK_TABLE_SPACING_LOG : TRK_TABLE_SPACING_EXPLICIT,
+                                     sp == WRONG_VAR ? TRK_TABLE_VAR_PFA : TRK_TABLE_VAR_PD, 0.5, 1, 0,
+                                     sp == LOG_PD ? NULL : pd};
+        ax[1] = lv;
+        ax[2] = (struct tablew_axis){3, TRK_TABLE_SPACING_LINEAR, TRK_TABLE_VAR_SNR_DB, 0, 1, 0, NULL};
+        naxes = sp == THREE_AXES ? 3 : 2;
+        cells = 25 * (naxes == 3 ? 3 : 1);
+    } else {
+        ax[0] = (struct tablew_axis){2, TRK_TABLE_SPACING_LINEAR, TRK_TABLE_VAR_SNR_DB, 10, 20, 0, NULL};
+        ax[1] = (struct tablew_axis){3, TRK_TABLE_SPACING_LOG, TRK_TABLE_VAR_PFA, 1e-3, 0.1, 0, NULL};
+        ax[2] = lv;
+        naxes = 3;
+        cells = 30;
+    }
+    const uint32_t ncomp = sp == NCOMP1 ? 1 : 2;
+    double data[2 * 75];
+    for (size_t c = 0; c < cells; c++) {
+        const size_t j = c % 5;
+        const double x0 = pdafai ? 0.7 + 0.01 * (double)(c / 15) + 0.02 * (double)((c / 5) % 3) : pd[(c / 5) % 5];
+        const double v = f_smooth(x0, log(0.01) + (double)j * log(1000.0) / 4);
+        if (ncomp == 2) {
+            data[2 * c] = sp == VALUE_ABOVE_1 && c == 7 ? 1.2 : v;
+            data[2 * c + 1] = sp == SE_NEGATIVE && c == 3 ? -1e-5 : 1e-4;
+        } else {
+            data[c] = v;
+        }
+    }
+    assert_int_equal(tablew_section(w, TRK_Q2_SECTION_VALUES, naxes, ax, ncomp,
+                                    sp == INTERP_HERMITE_NONE ? TRK_TABLE_INTERP_NONE : TRK_TABLE_INTERP_CUBIC,
+                                    data),
+                     0);
+    unsigned char *bytes;
+    if (tablew_finish(w, &bytes, len) != 0) fail_msg("tablew: %s", tablew_error(w));
+    tablew_free(w);
+    return bytes;
+}
+
+static trk_status load_q2(int pdafai, enum spoil sp, int want_det, int want_nz, struct trk_q2_lookup *q)
+{
+    size_t len;
+    unsigned char *b = make_table(pdafai, sp, sizeof(trk_real), &len);
+    struct trk_table t;
+    trk_status st = trk_table_parse(&t, b, len);
+    if (st == TRK_OK) st = trk_q2_lookup_init_table(q, &t, want_det, want_nz);
+    free(b);
+    return st;
+}
+
+static void test_q2_table(void **state)
+{
+    (void)state;
+    size_t len;
+    unsigned char *b = make_table(0, OK_TABLE, sizeof(trk_real), &len);
+    struct trk_table t;
+    TRK_ASSERT_OK(trk_table_parse(&t, b, len));
+    struct trk_q2_lookup q;
+    TRK_ASSERT_OK(trk_q2_lookup_init_table(&q, &t, TRK_Q2_PDAF, 2));
+    assert_int_equal(q.nz, 2);
+    TRK_ASSERT_NEAR(q.gate_gamma, -2 * log1p(-0.99), 0, TRK_TOL(1e-15, 1e-6));
+    TRK_ASSERT_NEAR(q.max_se, 1e-4, 0, TRK_TOL(1e-15, 1e-6));
+    /* in place: the values are the table's bytes */
+    struct trk_table_section sec;
+    TRK_ASSERT_OK(trk_table_section(&t, TRK_Q2_SECTION_VALUES, &sec));
+    assert_ptr_equal(q.grid.values, sec.data);
+    /* the same lookup as the plain-array grid of the same nodes and values */
+    struct trk_q2_grid g;
+    fill_pdaf(&g, f_smooth, TRK_Q2_CUBIC);
+    for (int j = 0; j < NLV; j++) lv_nodes[j] = (trk_real)(log(0.01) + j * log(1000.0) / 4);
+    for (int i = 0; i < NPD; i++)
+        for (int j = 0; j < 5; j++) vals[i * 5 + j] = (trk_real)f_smooth(pd_nodes[i], lv_nodes[j]);
+    g.axis[1].count = 5;
+    struct trk_q2_lookup qa;
+    TRK_ASSERT_OK(trk_q2_lookup_init(&qa, &g));
+    for (double pdx = 0.5; pdx <= 1.0; pdx += 0.0625)
+        for (double l = 0.01; l <= 10; l *= 1.7) {
+            trk_real a, c;
+            TRK_ASSERT_OK(trk_q2_pdaf(&q, (trk_real)pdx, (trk_real)l, &a));
+            TRK_ASSERT_OK(trk_q2_pdaf(&qa, (trk_real)pdx, (trk_real)l, &c));
+            TRK_ASSERT_NEAR(a, c, TRK_TOL(1e-14, 1e-6), 0);
+        }
+    /* the container's own checks come first: truncation, a flipped bit */
+    struct trk_table t2;
+    TRK_ASSERT_STATUS(trk_table_parse(&t2, b, len - 1), TRK_E_TABLE_TRUNCATED);
+    b[len / 2] ^= 0x10;
+    TRK_ASSERT_STATUS(trk_table_parse(&t2, b, len), TRK_E_TABLE_CRC);
+    free(b);
+    /* a table of the other real width is not used in place */
+    b = make_table(0, OK_TABLE, sizeof(trk_real) == 8 ? 4 : 8, &len);
+    TRK_ASSERT_STATUS(trk_table_parse(&t2, b, len), TRK_E_TABLE_REAL);
+    free(b);
+
+    /* wrong kind or dimension: TRK_E_TABLE_KIND */
+    TRK_ASSERT_STATUS(load_q2(0, OK_TABLE, TRK_Q2_PDAFAI, 2, &q), TRK_E_TABLE_KIND); /* PDAF asked as PDAFAI */
+    TRK_ASSERT_STATUS(load_q2(1, OK_TABLE, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_KIND);   /* and the reverse */
+    TRK_ASSERT_STATUS(load_q2(0, KIND_AMP, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_KIND);   /* an amplitude table */
+    TRK_ASSERT_STATUS(load_q2(0, OK_TABLE, TRK_Q2_PDAF, 3, &q), TRK_E_TABLE_KIND);   /* another nz asked */
+    TRK_ASSERT_STATUS(load_q2(0, NZ3, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_KIND);        /* a table for nz 3 */
+    TRK_ASSERT_STATUS(load_q2(0, THREE_AXES, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_KIND); /* 3 axes for the PDAF */
+    TRK_ASSERT_STATUS(load_q2(0, WRONG_VAR, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_KIND);  /* pfa instead of pd */
+    /* version, corrupt contents */
+    TRK_ASSERT_STATUS(load_q2(0, VERSION2, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_VERSION);
+    TRK_ASSERT_STATUS(load_q2(0, NO_GAMMA, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, GATE_MISMATCH, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, SE_NEGATIVE, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, MAX_SE_LOW, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, VALUE_ABOVE_1, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, INTERP_HERMITE_NONE, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, NCOMP1, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, LOG_PD, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(0, DETECTOR_PARAM, TRK_Q2_PDAF, 2, &q), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(load_q2(1, PDAFAI_NO_MODEL, TRK_Q2_PDAFAI, 2, &q), TRK_E_TABLE_CORRUPT);
+    /* bad arguments */
+    TRK_ASSERT_STATUS(load_q2(0, OK_TABLE, 0, 2, &q), TRK_E_ARG);
+    TRK_ASSERT_STATUS(load_q2(0, OK_TABLE, TRK_Q2_PDAF, 0, &q), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_q2_lookup_init_table(&q, NULL, TRK_Q2_PDAF, 2), TRK_E_ARG);
+    /* PDAFAI: model and nu, a 3-D lookup (the table outlives the lookup) */
+    b = make_table(1, OK_TABLE, sizeof(trk_real), &len);
+    TRK_ASSERT_OK(trk_table_parse(&t, b, len));
+    TRK_ASSERT_OK(trk_q2_lookup_init_table(&q, &t, TRK_Q2_PDAFAI, 2));
+    assert_int_equal(q.amp_model, TRK_AMP_K);
+    TRK_ASSERT_NEAR(q.nu, 2, 0, 0);
+    trk_real v;
+    TRK_ASSERT_OK(trk_q2_pdafai(&q, 15, TRK_REAL_C(0.01), 1, &v));
+    assert_true(v > 0 && v < 1);
+    TRK_ASSERT_STATUS(trk_q2_pdafai(&q, 25, TRK_REAL_C(0.01), 1, &v), TRK_E_RANGE);
+    free(b);
+}
+
+/* A table from the generator (q2_table.c) loads through the library, holds
+ * the sampler's values at its nodes, and documents itself. */
+static void test_q2_table_generated(void **state)
+{
+    (void)state;
+    static const double pdn[4] = {0.6, 0.8, 0.9, 1.0};
+    struct q2_table_spec s;
+    memset(&s, 0, sizeof s);
+    s.detector = TRK_Q2_PDAF;
+    s.nz = 2;
+    s.gate_gamma = 9.21;
+    s.cubic = 1;
+    s.pd = (struct q2_table_axis){4, 0.6, 1, pdn};
+    s.lambda_vg = (struct q2_table_axis){4, 0.1, 10, NULL};
+    s.measure_interp = 1;
+    struct q2_table_run r;
+    memset(&r, 0, sizeof r);
+    r.samples = 4000;
+    r.seed = 5;
+    r.threads = 1;
+    struct q2_table_result res;
+    char err[300];
+    if (q2_table_build(&s, &r, &res, err, sizeof err)) fail_msg("%s", err);
+    assert_int_equal(res.n_cells, 16);
+    assert_true(res.interp_measured && res.interp_n == 9);
+    struct trk_table t;
+    TRK_ASSERT_OK(trk_table_parse(&t, res.bytes, res.len));
+    struct trk_q2_lookup q;
+    TRK_ASSERT_OK(trk_q2_lookup_init_table(&q, &t, TRK_Q2_PDAF, 2));
+    for (int i = 0; i < 4; i++) {
+        trk_real v;
+        const double l = 0.1 * pow(100.0, 1.0 / 3);
+        TRK_ASSERT_OK(trk_q2_pdaf(&q, (trk_real)pdn[i], (trk_real)l, &v));
+        TRK_ASSERT_NEAR(v, res.values[2 * (4 * i + 1)], TRK_TOL(1e-12, 1e-6), 0);
+    }
+    int64_t samples;
+    trk_real mse;
+    TRK_ASSERT_OK(trk_table_param_int(&t, "samples", &samples));
+    assert_int_equal(samples, 4000);
+    TRK_ASSERT_OK(trk_table_param_real(&t, "interp_err_max", &mse));
+    TRK_ASSERT_NEAR(mse, res.interp_max, 0, TRK_TOL(1e-15, 1e-6));
+    q2_table_result_free(&res);
+    /* bad specs: a clear message, nothing allocated */
+    s.lambda_vg.lo = -1;
+    assert_int_equal(q2_table_build(&s, &r, &res, err, sizeof err), -1);
+    assert_non_null(strstr(err, "lambda_vg"));
+    s.lambda_vg.lo = 0.1;
+    s.gate_gamma = NAN;
+    assert_int_equal(q2_table_build(&s, &r, &res, err, sizeof err), -1);
+    assert_non_null(strstr(err, "gamma"));
+    s.gate_gamma = 9.21;
+    r.samples = 0;
+    assert_int_equal(q2_table_build(&s, &r, &res, err, sizeof err), -1);
+    assert_non_null(strstr(err, "samples"));
+    r.samples = 4000;
+    static const double bad_pd[3] = {0.5, 1.2, 1.3};
+    s.pd = (struct q2_table_axis){3, 0.5, 1.3, bad_pd};
+    assert_int_equal(q2_table_build(&s, &r, &res, err, sizeof err), -1);
+    assert_non_null(strstr(err, "pd axis"));
+    assert_null(res.bytes);
+}
+
 /* Rayleigh ROC pd = pfa^(1/(1+SNR)): ln pd linear in ln pfa, so the table is exact. */
 static void test_roc_table(void **state)
 {
@@ -271,27 +498,63 @@ static void test_fastmath(void **state)
     assert_true(q2_exp(-709) == 0 && q2_exp(0) == 1);
 }
 
-static void test_rayleigh_closed_forms(void **state)
+/* The sampler is the library's inv_sf then log_lr at x = -ln u, for both
+ * laws; the ROC values of q2.vec (ai_01 Rayleigh, ai_03 K nu 1). */
+static void check_sampler(const struct q2_amp *a)
 {
-    (void)state;
-    struct q2_amp_rayleigh r;
-    assert_int_equal(q2_amp_rayleigh_init(&r, 15, 1e-3), 0);
-    /* the vector's ROC value (q2.vec ai_01) */
-    TRK_ASSERT_NEAR(r.pd, 0.8091698825961493, 0, 1e-14);
-    /* sampler = l^a at the inverse-survival amplitude, for both laws */
-    const double u[4] = {0.9, 0.5, 1e-3, 1e-9};
-    double out[4];
+    const double u[5] = {0.9, 0.5, 1e-3, 1e-9, 1.0};
+    double out[5];
+    struct q2_amp_sampler s = q2_amp_sampler_of(a);
+    assert_true(s.pd == a->pd);
     for (int target = 0; target <= 1; target++) {
-        q2_amp_rayleigh_sample(&r, target, 4, u, out);
-        for (int i = 0; i < 4; i++) {
-            double a = q2_amp_rayleigh_inv_sf(&r, target, -log(u[i]));
-            TRK_ASSERT_NEAR(out[i], q2_amp_rayleigh_log_lr(&r, a), 1e-12, 1e-12);
+        assert_int_equal(s.log_lr(s.ctx, target, 5, u, out), 0);
+        for (int i = 0; i < 5; i++) {
+            trk_real amp, l;
+            TRK_ASSERT_OK(trk_amplitude_inv_sf(&a->m, target ? TRK_AMP_TARGET : TRK_AMP_CLUTTER,
+                                               (trk_real)-log(u[i]), &amp));
+            TRK_ASSERT_OK(trk_amplitude_log_lr(&a->m, amp, &l));
+            TRK_ASSERT_NEAR(out[i], (double)l, TRK_TOL(1e-12, 2e-5), TRK_TOL(1e-12, 1e-6));
         }
     }
-    /* at the threshold: l^a(t) = (pfa/pd) p1(t)/p0(t) = P/(P+d) */
-    TRK_ASSERT_NEAR(q2_amp_rayleigh_log_lr(&r, sqrt(r.t2)), -log1p(r.snr), 1e-12, 0);
-    assert_int_equal(q2_amp_rayleigh_init(&r, 15, 0), -1);
-    assert_int_equal(q2_amp_rayleigh_init(&r, NAN, 0.1), -1);
+}
+
+static void test_amp_sampler(void **state)
+{
+    (void)state;
+    struct q2_amp a;
+    char err[256];
+    assert_int_equal(q2_amp_init(&a, TRK_AMP_RAYLEIGH, 0, 15, 1e-3, 0, 0, err, sizeof err), 0);
+    TRK_ASSERT_NEAR(a.pd, 0.8091698825961493, 0, TRK_TOL(1e-14, 1e-6));
+    check_sampler(&a);
+    /* at the threshold: l^a(t) = (pfa/pd) p1(t)/p0(t) = 1/(1 + SNR) (u = 1: x = 0) */
+    {
+        const double u1 = 1;
+        double l;
+        struct q2_amp_sampler s = q2_amp_sampler_of(&a);
+        assert_int_equal(s.log_lr(s.ctx, 0, 1, &u1, &l), 0);
+        TRK_ASSERT_NEAR(l, -log1p(pow(10, 1.5)), TRK_TOL(1e-12, 1e-5), 0);
+    }
+    q2_amp_free(&a);
+    /* K, nu 1, 15 dB, pfa 0.01, the table measured against the direct model */
+    assert_int_equal(q2_amp_init(&a, TRK_AMP_K, 1, 15, 0.01, 0, 1, err, sizeof err), 0);
+    assert_non_null(a.table);
+    TRK_ASSERT_NEAR(a.pd, 0.77485305481652278, 0, 1e-9);
+    if (!TRK_REAL_IS_FLOAT) {
+        assert_true(a.measured);
+        if (!(a.err_log_lr < 1e-5 && a.err_inv_sf < 1e-5))
+            fail_msg("K table errors ln l^a %g, a(x) %g", a.err_log_lr, a.err_inv_sf);
+    }
+    check_sampler(&a);
+    q2_amp_free(&a);
+    /* bad input */
+    assert_int_equal(q2_amp_init(&a, TRK_AMP_RAYLEIGH, 0, 15, 0, 0, 0, err, sizeof err), -1);
+    assert_non_null(strstr(err, "pfa"));
+    assert_int_equal(q2_amp_init(&a, TRK_AMP_RAYLEIGH, 0, NAN, 0.1, 0, 0, err, sizeof err), -1);
+    assert_int_equal(q2_amp_init(&a, TRK_AMP_K, 0, 15, 0.1, 0, 0, err, sizeof err), -1);
+    assert_non_null(strstr(err, "nu"));
+    assert_int_equal(q2_amp_init(&a, 7, 1, 15, 0.1, 0, 0, err, sizeof err), -1);
+    assert_int_equal(q2_amp_model_parse("k"), TRK_AMP_K);
+    assert_int_equal(q2_amp_model_parse("x"), 0);
 }
 
 static struct q2_is_options opts(uint64_t samples, int threads)
@@ -338,11 +601,18 @@ static void test_is_reference(void **state)
     assert_true(se > 1e-4 && se < 2e-3);
     TRK_ASSERT_NEAR(q2, 0.50360341306552991, 4.5 * sqrt(se * se + 5.34e-5 * 5.34e-5), 0);
     /* PDAFAI, Rayleigh (q2.vec ai_01: 0.77937236522566689, se 6.21e-5) */
-    struct q2_amp_rayleigh r;
-    assert_int_equal(q2_amp_rayleigh_init(&r, 15, 1e-3), 0);
-    struct q2_amp_sampler amp = q2_amp_rayleigh_sampler(&r);
+    struct q2_amp r;
+    assert_int_equal(q2_amp_init(&r, TRK_AMP_RAYLEIGH, 0, 15, 1e-3, 0, 0, err, sizeof err), 0);
+    struct q2_amp_sampler amp = q2_amp_sampler_of(&r);
     assert_int_equal(q2_is_cell(2, 36.0, 0, 0.5, &amp, &o, &q2, &se, err, sizeof err), 0);
     TRK_ASSERT_NEAR(q2, 0.77937236522566689, 4.5 * sqrt(se * se + 6.21e-5 * 6.21e-5), 0);
+    q2_amp_free(&r);
+    /* PDAFAI, K nu 1 (q2.vec ai_04: 0.59473034452134488, se 8.48e-5) */
+    assert_int_equal(q2_amp_init(&r, TRK_AMP_K, 1, 15, 0.01, 0, 0, err, sizeof err), 0);
+    amp = q2_amp_sampler_of(&r);
+    assert_int_equal(q2_is_cell(2, 36.0, 0, 4.0, &amp, &o, &q2, &se, err, sizeof err), 0);
+    TRK_ASSERT_NEAR(q2, 0.59473034452134488, 4.5 * sqrt(se * se + 8.48e-5 * 8.48e-5), 0);
+    q2_amp_free(&r);
 }
 
 /* Two lines (PDAF over 2 pd x 3 lambda; PDAFAI over 3 lambda) with 1 and 2
@@ -351,10 +621,11 @@ static void run_lines(int threads, double target_se, double *out)
 {
     static const double pd[6] = {0.6, 0.6, 0.6, 0.95, 0.95, 0.95};
     static const double lv[6] = {0.05, 1.0, 6.0, 0.05, 1.0, 6.0};
-    static struct q2_amp_rayleigh r;
-    assert_int_equal(q2_amp_rayleigh_init(&r, 12, 1e-2), 0);
+    static struct q2_amp r;
+    char e0[256];
+    assert_int_equal(q2_amp_init(&r, TRK_AMP_RAYLEIGH, 0, 12, 1e-2, 0, 0, e0, sizeof e0), 0);
     static struct q2_amp_sampler amp;
-    amp = q2_amp_rayleigh_sampler(&r);
+    amp = q2_amp_sampler_of(&r);
     struct q2_is_line lines[2];
     memset(lines, 0, sizeof lines);
     lines[0] = (struct q2_is_line){.nz = 2, .gamma = 9.21, .stream = 1, .n_cells = 6, .pd = pd,
@@ -424,8 +695,10 @@ int main(void)
         cmocka_unit_test(test_lookup_uniform_equals_explicit),
         cmocka_unit_test(test_lookup_bad_grids),
         cmocka_unit_test(test_roc_table),
+        cmocka_unit_test(test_q2_table),
+        cmocka_unit_test(test_q2_table_generated),
         cmocka_unit_test(test_fastmath),
-        cmocka_unit_test(test_rayleigh_closed_forms),
+        cmocka_unit_test(test_amp_sampler),
         cmocka_unit_test(test_is_limits),
         cmocka_unit_test(test_is_reference),
         cmocka_unit_test(test_is_bit_identical_threads),

@@ -142,6 +142,17 @@ TRK_NODISCARD trk_status trk_amplitude_log_lr(const struct trk_amplitude *m, trk
 TRK_NODISCARD trk_status trk_amplitude_inv_sf(const struct trk_amplitude *m, int source, trk_real x,
                                               trk_real *a);
 
+/* Monte Carlo of thresholded detections (e.g. the q2 estimator of the
+ * tools): log_lr[i] = ln l^a(a_i) of the amplitude a_i drawn from the law of
+ * `source` by inverse CDF at x[i] (the composition of trk_amplitude_inv_sf
+ * and trk_amplitude_log_lr, equal to it up to rounding, without forming a:
+ * Rayleigh ln l^a is affine in x; a table gives ln(a/sqrt P) = ln(u^2)/2
+ * from its a(x) curve). x and log_lr may be the same array; n may be 0. TRK_E_ARG NULL pointer (n > 0) or bad
+ * source, TRK_E_NAN an x[i] not finite, TRK_E_RANGE an x[i] < 0 (nothing
+ * written) or a result not finite (log_lr written). */
+TRK_NODISCARD trk_status trk_amplitude_sample_log_lr(const struct trk_amplitude *m, int source, size_t n,
+                                                     const trk_real *x, trk_real *log_lr);
+
 /* Kennedy's amplitude model in dB (Kennedy 2008 eqs 11, 27, 31): clutter
  * peaks above the threshold a_min are exponential with mean theta_A,
  *   f_A(a) = exp(-(a - a_min)/(theta_A - a_min)) / (theta_A - a_min),

@@ -24,17 +24,29 @@
  * The multi-dimensional value is the tensor product (2, 4 or 8 nodes linear;
  * up to 64 cubic). Both schemes return the node values exactly at nodes.
  * Truncation error (smooth q2, node spacing h in u): linear <= h^2/8 max|q2''|,
- * cubic O(h^3). Measured against the direct estimator between the nodes
- * (`trk-q2 interp-error`: PDAF, nz = 2, pg = 0.99, nodes pd 0.5..1 step 0.05
- * x lambda_vg 0.01..100 at 10 per decade, 3600 test points, common random
- * numbers so that the Monte Carlo noise cancels):
- *                 pd < 0.95            0.95 <= pd <= 1
- *   linear   max 1.2e-3 rms 2.7e-4   max 2.0e-3 rms 6.7e-4
- *   cubic    max 1.8e-4 rms 1.7e-5   max 6.7e-4 rms 1.9e-4
- * q2 bends sharply in pd near 1 (b ~ (1 - pd pg)/pd): a table should use
- * cubic interpolation and nodes 0.01 apart or closer above pd 0.9. Monte
- * Carlo noise of the nodes passes through with gain sum|w| <= 1 (linear) or
- * <= 1.25 per axis (cubic).
+ * cubic O(h^3). Monte Carlo noise of the nodes passes through with gain
+ * sum|w| <= 1 (linear) or <= 1.25 per axis (cubic).
+ * Measured with `trk-tablegen q2 --measure-interp` (q2 estimated at the centre
+ * of every grid cell with the same random numbers, compared with this
+ * lookup; part of the difference is Monte Carlo noise where the cells' se
+ * approach 1e-3, so the largest error over the centres with se <= 1e-4 is
+ * given too), on the default grids of `make tables` (se <= 1e-3 per cell):
+ *   PDAF, P_G 0.99 (30 pd x 57 lambda_vg)   cubic max 1.3e-4, rms 2.1e-5
+ *                                           linear max 2.0e-3, rms 4.1e-4
+ *   PDAF, gamma 36                          cubic max 2.8e-4, rms 4.0e-5
+ *                                           (se <= 1e-4: max 9.5e-5)
+ *                                           linear max 1.8e-3, rms 3.9e-4
+ *   PDAFAI, gamma 36, 13 snr_db x 22 pfa x 47 lambda_vg, cubic:
+ *     Rayleigh                              max 2.0e-3, rms 2.4e-4
+ *     K nu = 1                              max 2.8e-3, rms 3.4e-4
+ *     K nu = 8                              max 1.9e-3, rms 2.7e-4
+ *                                           (se <= 1e-4: max 7.8e-4)
+ *   the largest differences are at lambda_vg ~40, where the se are ~1e-3.
+ * q2 bends sharply in pd near 1 (b ~ (1 - pd pg)/pd) and in snr_db at low
+ * SNR (pd changes fast along the ROC): hence pd nodes 0.01 (0.005) apart
+ * above 0.97 and snr_db nodes 1 dB apart below 8 dB; pfa needs <= 0.63 in
+ * ln pfa (3.7 per decade), lambda_vg 6-7 per decade. A 5 dB SNR step gives
+ * 2.7e-2, 2.5 dB 4e-3, 1.25 dB 1e-3 (Rayleigh, cubic).
  *
  * Out of range: a coordinate outside [first node, last node] of its axis is
  * refused with TRK_E_RANGE (no extrapolation, no clamping). An axis with a
@@ -47,6 +59,7 @@
 #ifndef TRK_Q2_H
 #define TRK_Q2_H
 
+#include "trk/table.h"
 #include "trk/types.h"
 
 #define TRK_Q2_MAX_AXES 3
@@ -74,19 +87,31 @@ struct trk_q2_axis {
 };
 
 /* The grid: axes in the detector's order, values row-major with the last axis
- * (lambda_vg) fastest: value(i0, i1[, i2]) = values[(i0 * count1 + i1) * count2 + i2]. */
+ * (lambda_vg) fastest: cell (i0, i1[, i2]) is number c = (i0 * count1 + i1) * count2 + i2
+ * and its value is values[c * value_stride] (value_stride 0 means 1; a q2
+ * table stores (q2, se) pairs: value_stride 2). */
 struct trk_q2_grid {
     int detector;                             /* enum trk_q2_detector */
     struct trk_q2_axis axis[TRK_Q2_MAX_AXES]; /* 2 (PDAF) or 3 (PDAFAI) used */
     const trk_real *values;                   /* prod(count) values in [0, 1] */
+    size_t value_stride;                      /* 0 or 1: contiguous; k: every k-th real */
 };
 
-/* A validated grid (initialise with trk_q2_lookup_init, then read-only; one
- * lookup object may be shared by any number of readers). */
+/* A validated grid (initialise with trk_q2_lookup_init or
+ * trk_q2_lookup_init_table, then read-only; one lookup object may be shared
+ * by any number of readers). The documented fields may be read. */
 struct trk_q2_lookup {
     struct trk_q2_grid grid;
     int n_axes;
-    size_t stride[TRK_Q2_MAX_AXES];
+    size_t stride[TRK_Q2_MAX_AXES];  /* in reals, value_stride included */
+    /* what the q2 values are for: from a table's parameters
+     * (trk_q2_lookup_init_table); 0 when unknown (trk_q2_lookup_init) */
+    int nz;                          /* measurement dimension */
+    trk_real gate_gamma;             /* gate threshold on d2 */
+    trk_real gate_prob;              /* P_G = P(chi2(nz) <= gate_gamma) */
+    int amp_model;                   /* PDAFAI: enum trk_amp_model (trk/amplitude.h) */
+    trk_real nu;                     /* PDAFAI, K clutter: shape (Rayleigh: 0) */
+    trk_real max_se;                 /* largest per-cell standard error of the values */
 };
 
 /* Validate *grid and make *q a lookup over it (the arrays are referenced, not
@@ -99,6 +124,47 @@ struct trk_q2_lookup {
  * non-monotone axis, node outside the axis' domain, value outside [0, 1] or
  * not finite, total size overflow. *q untouched on error. */
 TRK_NODISCARD trk_status trk_q2_lookup_init(struct trk_q2_lookup *q, const struct trk_q2_grid *grid);
+
+/* ---- q2 tables (trk/table.h container; made by `trk-tablegen q2`) ----
+ *
+ * Q2 TABLE, kinds TRK_TABLE_KIND_Q2_PDAF and TRK_TABLE_KIND_Q2_PDAFAI, kind
+ * version TRK_Q2_TABLE_VERSION (1):
+ *   parameters (i: integer, r: real)
+ *     detector (i)      enum trk_q2_detector, agrees with the kind
+ *     nz (i)            measurement dimension 1..3
+ *     gate_gamma (r)    gate threshold gamma on d2 (> 0)
+ *     gate_prob (r)     P_G = P(chi2(nz) <= gamma), agrees with gamma to 1e-5
+ *     model (i), nu (r) PDAFAI only: enum trk_amp_model, K shape (> 0; 0 for
+ *                       Rayleigh); clutter power 1, pd = S1(t) per cell
+ *     max_se (r)        largest per-cell standard error (>= 0)
+ *     written by the generator, not needed by the lookup: samples (i),
+ *     target_se (r), seed (i), tail_mass (r), generator_version (i), and for
+ *     PDAFAI the amplitude table size and measured errors (amp_size (i),
+ *     amp_err_log_lr (r), amp_err_inv_sf (r))
+ *   one section, id TRK_Q2_SECTION_VALUES (1), ncomp 2: per cell (q2, se),
+ *     se the Monte Carlo standard error of q2; interpolation
+ *     TRK_TABLE_INTERP_LINEAR or TRK_TABLE_INTERP_CUBIC (the two schemes
+ *     above, on every axis); axes (variable: spacing)
+ *       PDAF:    pd: linear or explicit,  lambda_vg: log
+ *       PDAFAI:  snr_db: linear or explicit,  pfa: log,  lambda_vg: log
+ *     (a log axis is uniform in u = ln x, an explicit one lists x = u).
+ * The lookup is a view on the table's bytes (no copy): the table must outlive it.
+ */
+#define TRK_Q2_TABLE_VERSION 1u
+#define TRK_Q2_SECTION_VALUES 1u
+
+/* Make *q a lookup over a parsed q2 table (trk_table_parse) of the given
+ * detector and measurement dimension nz. Checks, with *q untouched on error:
+ * TRK_E_ARG NULL pointer, detector not PDAF/PDAFAI or nz outside 1..3;
+ * TRK_E_TABLE_KIND a table of another kind (e.g. an amplitude table, or a
+ * PDAFAI table asked for as PDAF), of another measurement dimension nz, or
+ * whose section has the wrong number of axes or axis variables;
+ * TRK_E_TABLE_VERSION another kind version; TRK_E_TABLE_CORRUPT a missing or
+ * inconsistent parameter, a section of the wrong shape, spacing or
+ * interpolation, a standard error < 0, and everything trk_q2_lookup_init
+ * refuses (values outside [0, 1], axes outside their domain). */
+TRK_NODISCARD trk_status trk_q2_lookup_init_table(struct trk_q2_lookup *q, const struct trk_table *t,
+                                                  int detector, int nz);
 
 /* q2 at physical coordinates x[0..n_axes) (detector's axis order).
  * TRK_E_ARG NULL, TRK_E_NAN non-finite coordinate, TRK_E_RANGE coordinate

@@ -120,6 +120,9 @@ enum trk_table_interp {
     TRK_TABLE_INTERP_LINEAR = 1,   /* (multi)linear in the axis variables */
     TRK_TABLE_INTERP_HERMITE = 2,  /* 1 axis, ncomp >= 2: cubic Hermite of comp 0
                                       with comp 1 = d comp0 / d axis variable */
+    TRK_TABLE_INTERP_CUBIC = 3,    /* tensor product of per-axis cubic Hermite with
+                                      slopes from the values (3-point differences;
+                                      Catmull-Rom on uniform axes): q2 tables, trk/q2.h */
     TRK_TABLE_INTERP_COUNT
 };
 

@@ -52,6 +52,14 @@ int q2_is_threads(int threads)
 #endif
 }
 
+void q2_is_parallel_for(size_t n, int threads, void (*fn)(void *ctx, size_t i), void *ctx)
+{
+    const int th = q2_is_threads(threads);
+    (void)th;
+    Q2_OMP(omp parallel for schedule(dynamic, 1) num_threads(th))
+    for (size_t i = 0; i < n; i++) fn(ctx, i);
+}
+
 static int fail(char *err, size_t len, const char *fmt, ...)
 {
     if (err && len) {
@@ -108,6 +116,9 @@ struct line_state {
     size_t *rel_cell;  /* cell index */
     double *rel_b;     /* b of the cell */
     double *rel_w;     /* Poisson(n; lambda of the cell) */
+    double *rel_prop;  /* proportional ratio w_n(lambda_k) / w_mode(lambda_k) */
+    double *rel_rho;   /* allocation ratio of the entry (target_se: per cell) */
+    double *cell_n;    /* target_se: the N each cell's strata are drawn at */
     double *mean, *m2; /* per (stratum, cell) accumulators */
     double *pdF;       /* per cell: pd F */
     double *se;        /* per cell: current standard error */
@@ -122,6 +133,9 @@ static void line_free(struct line_state *ls)
     free(ls->rel_cell);
     free(ls->rel_b);
     free(ls->rel_w);
+    free(ls->rel_prop);
+    free(ls->rel_rho);
+    free(ls->cell_n);
     free(ls->mean);
     free(ls->m2);
     free(ls->pdF);
@@ -202,7 +216,8 @@ static int line_setup(struct line_state *ls, struct q2_is_line *L, const struct 
     double *lwmode = malloc(nc * sizeof *lwmode);
     ls->pdF = malloc(nc * sizeof *ls->pdF);
     ls->se = calloc(nc, sizeof *ls->se);
-    if (!lo || !hi || !lwmode || !ls->pdF || !ls->se) {
+    ls->cell_n = calloc(nc, sizeof *ls->cell_n);
+    if (!lo || !hi || !lwmode || !ls->pdF || !ls->se || !ls->cell_n) {
         free(lo), free(hi), free(lwmode);
         return fail(err, errlen, "out of memory");
     }
@@ -227,9 +242,12 @@ static int line_setup(struct line_state *ls, struct q2_is_line *L, const struct 
     ls->rel_cell = malloc(nrel * sizeof *ls->rel_cell);
     ls->rel_b = malloc(nrel * sizeof *ls->rel_b);
     ls->rel_w = malloc(nrel * sizeof *ls->rel_w);
+    ls->rel_prop = malloc(nrel * sizeof *ls->rel_prop);
+    ls->rel_rho = malloc(nrel * sizeof *ls->rel_rho);
     ls->mean = calloc(nrel, sizeof *ls->mean);
     ls->m2 = calloc(nrel, sizeof *ls->m2);
-    if (!ls->st || !ls->rel_cell || !ls->rel_b || !ls->rel_w || !ls->mean || !ls->m2) {
+    if (!ls->st || !ls->rel_cell || !ls->rel_b || !ls->rel_w || !ls->rel_prop || !ls->rel_rho || !ls->mean ||
+        !ls->m2) {
         free(lo), free(hi), free(lwmode);
         line_free(ls);
         return fail(err, errlen, "out of memory");
@@ -247,6 +265,7 @@ static int line_setup(struct line_state *ls, struct q2_is_line *L, const struct 
             ls->rel_b[r] = q2_is_b(L->nz, L->gamma, pd, L->lambda_vg[k]);
             ls->rel_w[r] = exp(lw);
             double ratio = exp(lw - lwmode[k]);
+            ls->rel_prop[r] = ls->rel_rho[r] = ratio;
             if (ratio > rho) rho = ratio;
             r++;
         }
@@ -262,6 +281,22 @@ static int line_setup(struct line_state *ls, struct q2_is_line *L, const struct 
     ls->n_rel = nrel;
     free(lo), free(hi), free(lwmode);
     return 0;
+}
+
+/* target_se after the pilot: scenes of stratum t after this round, the
+ * largest demand of the cells it serves that have not reached the target
+ * (cell k asks for rel_rho N_k, N_k = cell_n[k]); none: no more scenes. */
+static uint64_t stratum_demand(const struct line_state *ls, const struct stratum *t, double target,
+                               uint64_t samples)
+{
+    uint64_t c = t->count;
+    for (size_t e = t->rel0; e < t->rel0 + t->nrel; e++) {
+        const size_t k = ls->rel_cell[e];
+        if (ls->se[k] <= target) continue;
+        const uint64_t d = alloc_count(ls->rel_rho[e], (uint64_t)ls->cell_n[k], samples);
+        if (d > c) c = d;
+    }
+    return c;
 }
 
 /* Scenes of stratum t after the round with N = nr (never fewer than drawn). */
@@ -299,7 +334,10 @@ static void neyman_update(struct line_state *ls, uint64_t samples)
             if (best[k] > 0 && t->count >= 2)
                 r = ls->rel_w[e] * sqrt(ls->m2[e] / (double)(t->count - 1)) / best[k];
             else
-                r = t->rho_prop; /* no variance seen for this cell: proportional */
+                r = ls->rel_prop[e]; /* no variance seen for this cell: proportional */
+            /* per cell: at least a tenth of its proportional share, at most 1 */
+            const double re = r > 0.1 * ls->rel_prop[e] ? r : 0.1 * ls->rel_prop[e];
+            ls->rel_rho[e] = re > 1 ? 1 : re;
             if (r > rho) rho = r;
         }
         t->rho = rho > 1 ? 1 : rho;
@@ -606,7 +644,8 @@ static void block_beta(size_t nb, double bk, const double *restrict r, const dou
 
 /* Scenes [s0, s1) of stratum t of line ls: per relevant cell, the mean and
  * M2 of beta_1 over the scenes (pm, pm2: t->nrel values). Returns the number
- * of points drawn, or -1 (target rejection failed). */
+ * of points drawn, -1 (target rejection failed) or -2 (the amplitude model
+ * refused a sample). */
 static int64_t run_item(const struct line_state *ls, const struct stratum *t, uint64_t s0,
                         uint64_t s1, philox4x32_key_t key, struct scratch *w, double *pm,
                         double *pm2)
@@ -649,7 +688,7 @@ static int64_t run_item(const struct line_state *ls, const struct stratum *t, ui
         /* clutter L_j = l^a_j exp(-rho_j^2/2), [point][scene], summed per scene */
         if (n > 0) {
             block_clutter_words(key, ub0, un, stream, nb, groups, amp != NULL, w->urad, w->uamp);
-            if (amp) amp->log_lr(amp->ctx, 0, np, w->uamp, w->lac);
+            if (amp && amp->log_lr(amp->ctx, 0, np, w->uamp, w->lac)) return -2;
             if (nz == 2) {
                 block_exp2(np, hg, amp ? w->lac : NULL, w->urad, w->e);
             } else {
@@ -660,7 +699,7 @@ static int64_t run_item(const struct line_state *ls, const struct stratum *t, ui
         block_sums(nb, n, w->e, w->c);
         /* target L_1 = l^a_1 y: inv = 1 / L_1, r = C / L_1 */
         if (amp) {
-            amp->log_lr(amp->ctx, 1, nb, w->ua, w->la1);
+            if (amp->log_lr(amp->ctx, 1, nb, w->ua, w->la1)) return -2;
             block_target_ai(nb, n > 0, w->la1, w->y, w->c, w->inv, w->r);
             for (size_t i = 0; i < nb; i++)
                 if (n > 0 && !(w->c[i] <= DBL_MAX)) { /* the clutter sum overflowed */
@@ -792,8 +831,8 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
         lines[l].n_strata = ls[l].n_strata;
     }
     /* pilot round (proportional allocation) at N/64, at least 1024; with a
-     * target se at N/1024 (at least 1024): the doubling rounds then overshoot
-     * the N a cell needs by at most 2 */
+     * target se at N/1024 (at least 1024): the later rounds, sized from the
+     * se reached, then overshoot the N a cell needs by ~10-25 % */
     const uint64_t div = opt->target_se > 0 ? 1024 : 64;
     const uint64_t n0 = opt->samples / div > 1024 ? opt->samples / div : 1024;
     for (size_t l = 0; l < n_lines && rc == 0; l++) ls[l].n_round = n0 < opt->samples ? n0 : opt->samples;
@@ -817,7 +856,10 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
             if (ls[l].done) continue;
             for (int s = 0; s < ls[l].n_strata; s++) {
                 struct stratum *t = &ls[l].st[s];
-                t->round_to = t->frozen ? t->count : stratum_count(t, ls[l].n_round, opt->samples);
+                if (opt->target_se > 0 && ls[l].neyman)
+                    t->round_to = stratum_demand(&ls[l], t, opt->target_se, opt->samples);
+                else
+                    t->round_to = t->frozen ? t->count : stratum_count(t, ls[l].n_round, opt->samples);
                 for (uint64_t a = t->count; a < t->round_to;) {
                     uint64_t b = (a / Q2_IS_CHUNK + 1) * Q2_IS_CHUNK;
                     if (b > t->round_to) b = t->round_to;
@@ -880,7 +922,7 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
                                       part + it->off + t->nrel);
                 if (it->points < 0) {
                     Q2_OMP(omp atomic write)
-                    failed = 2;
+                    failed = it->points == -2 ? 3 : 2;
                     continue;
                 }
                 Q2_OMP(omp atomic update)
@@ -912,6 +954,11 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
             rc = fail(err, errlen, "target radius rejection did not accept in %u draws", MAX_RETRY);
             break;
         }
+        if (failed == 3) {
+            rc = fail(err, errlen, "the amplitude model refused a sample (%s)",
+                      ls[0].L->amp ? ls[0].L->amp->name : "?");
+            break;
+        }
         /* merge in item order (fixed), then decide per line */
         for (size_t i = 0; i < n_items; i++) {
             const struct item *it = &items[i];
@@ -940,13 +987,15 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
             line_results(&ls[l], &max_se);
             ls[l].L->samples_mode = ls[l].n_round;
             if (opt->target_se > 0) freeze_strata(&ls[l], opt->target_se);
-            if (ls[l].n_round >= opt->samples || (opt->target_se > 0 && max_se <= opt->target_se)) {
+            if ((opt->target_se > 0 && max_se <= opt->target_se) ||
+                (!(opt->target_se > 0) && ls[l].n_round >= opt->samples)) {
                 ls[l].done = 1;
                 lines_done++;
                 for (int st = 0; st < ls[l].n_strata; st++) /* not drawn after all */
                     planned -= (ls[l].st[st].n_final - ls[l].st[st].count) * (uint64_t)(ls[l].st[st].n + 1);
                 continue;
             }
+            const int after_pilot = !ls[l].neyman;
             if (!ls[l].neyman) {
                 /* the plan changes with the allocation */
                 for (int st = 0; st < ls[l].n_strata; st++)
@@ -956,9 +1005,36 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
                     planned += ls[l].st[st].n_final * (uint64_t)(ls[l].st[st].n + 1);
                 ls[l].neyman = 1;
             }
-            if (opt->target_se > 0)
-                ls[l].n_round = 2 * ls[l].n_round < opt->samples ? 2 * ls[l].n_round : opt->samples;
-            else
+            if (opt->target_se > 0) {
+                /* next round, per cell (its strata's scenes rel_rho N_k):
+                 * after the pilot N_k = 2 N0 (the pilot's se is that of the
+                 * proportional allocation); then the N_k that its se predicts
+                 * (se ~ 1/sqrt(N)) with a 10 % margin, growing 1.25 .. 4 x;
+                 * cells at the target ask for nothing more */
+                const double t = opt->target_se;
+                double nmax = 0;
+                for (size_t k = 0; k < ls[l].L->n_cells; k++) {
+                    double *nk = &ls[l].cell_n[k];
+                    if (after_pilot) {
+                        *nk = 2 * (double)ls[l].n_round;
+                    } else if (ls[l].se[k] > t) {
+                        double grow = 1.1 * (ls[l].se[k] / t) * (ls[l].se[k] / t);
+                        grow = grow < 1.25 ? 1.25 : grow > 4 ? 4 : grow;
+                        *nk = ceil(grow * *nk);
+                    }
+                    if (*nk > (double)opt->samples) *nk = (double)opt->samples;
+                    if (ls[l].se[k] > t && *nk > nmax) nmax = *nk;
+                }
+                ls[l].n_round = (uint64_t)nmax;
+                /* nothing left to draw: every unfinished cell is at N */
+                int more = 0;
+                for (int st = 0; st < ls[l].n_strata && !more; st++)
+                    more = stratum_demand(&ls[l], &ls[l].st[st], t, opt->samples) > ls[l].st[st].count;
+                if (!more) {
+                    ls[l].done = 1;
+                    lines_done++;
+                }
+            } else
                 ls[l].n_round = opt->samples;
         }
     }

@@ -52,16 +52,18 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Pluggable amplitude law (PDAFAI). log_lr draws n thresholded amplitudes by
+/* Pluggable amplitude law (PDAFAI; tools/common/q2_amp.h builds it on the
+ * library's amplitude module). log_lr draws n thresholded amplitudes by
  * inverse transform from the uniforms u[i] in (0, 1) (x = -ln u[i] ~ Exp(1)
  * is the negative log truncated survival, CONVENTIONS "Amplitude models") --
  * target != 0: from the target law p1^a; 0: the clutter law p0^a -- and writes
- * out[i] = ln l^a(a_i). It must be a pure function of (ctx, target, u[i])
- * (called concurrently from several threads). pd is S1(t), the detection
- * probability at the threshold (the ROC value). */
+ * out[i] = ln l^a(a_i); returns 0, or -1 when the model refuses a value. It
+ * must be a pure function of (ctx, target, u[i]) (called concurrently from
+ * several threads). pd is S1(t), the detection probability at the threshold
+ * (the ROC value). */
 struct q2_amp_sampler {
     const char *name;
-    void (*log_lr)(const void *ctx, int target, size_t n, const double *u, double *out);
+    int (*log_lr)(const void *ctx, int target, size_t n, const double *u, double *out);
     const void *ctx;
     double pd;
 };
@@ -101,10 +103,13 @@ struct q2_is_progress {
 struct q2_is_options {
     uint64_t seed;
     uint64_t samples;          /* N (see the allocation above), 2 .. 2^32-1 */
-    double target_se;          /* > 0: rounds at N/1024 (>= 1024 scenes), doubling
-                                  up to N; a stratum stops once every cell it
-                                  serves has se <= target_se, a line once all its
-                                  cells have; 0: the pilot (N/64), then N */
+    double target_se;          /* > 0: a pilot round at N/1024 (>= 1024 scenes),
+                                  then 2x, then rounds sized from the largest se
+                                  (se ~ 1/sqrt(N): x1.1 the predicted N, growth
+                                  1.25 .. 4 per round) up to N; a stratum stops
+                                  once every cell it serves has se <= target_se,
+                                  a line once all its cells have; 0: the pilot
+                                  (N/64), then N */
     double tail_mass;          /* Poisson mass left out per cell; 0: 1e-12 */
     int threads;               /* <= 0: OpenMP default; 1 in the serial build */
     /* called from one thread at most every 0.25 s and once at the end */
@@ -133,5 +138,12 @@ int q2_is_threads(int threads);
 
 /* 1 when this object was compiled with OpenMP. */
 int q2_is_parallel(void);
+
+/* fn(ctx, i) for i = 0 .. n-1 on q2_is_threads(threads) threads (dynamic
+ * schedule; in order in the serial build), e.g. building the amplitude
+ * models of a table's lines. fn must be thread-safe and write only what
+ * belongs to i; its results must not depend on the order. Nested OpenMP
+ * regions inside fn run on one thread. */
+void q2_is_parallel_for(size_t n, int threads, void (*fn)(void *ctx, size_t i), void *ctx);
 
 #endif

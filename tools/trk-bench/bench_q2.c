@@ -2,13 +2,16 @@
  * MRE / CRLB library functions.
  *
  *   q2_is_*_points_per_s   target + clutter points drawn per second on ONE
- *                          thread (the numpy reference draws ~4e6/s/core)
+ *                          thread (the numpy reference draws ~4e6/s/core);
+ *                          pdaf, pdafai (Rayleigh), pdafai_k (K nu = 1)
  *   q2_is_*_scenes_per_s   scenes (one target + n clutter points) per second
  *   q2_is_parallel_eff     rate on 2 threads / (2 x rate on 1 thread)
  *   q2_is_bitident         1 when 1- and 2-thread outputs are bit-identical
- *   q2_tables_*_s          wall time of a representative default table set on
- *                          all threads at se <= 1e-3 per cell (see below)
- *   q2_lookup_*_ns, mre_*_ns, crlb_*_ns   library calls
+ *   q2_table_*_s, q2_default_tables_*   wall and CPU time of the default
+ *                          tables of `make tables` on all threads at se <= 1e-3
+ *                          per cell (see below; ~80 s CPU)
+ *   q2_lookup_*_ns         lookups on plain arrays and on a q2 table (in place)
+ *   mre_*_ns, crlb_*_ns    library calls
  * Wall-clock timings: the machine is shared, so run it on a quiet machine. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
@@ -17,8 +20,11 @@
 #include <string.h>
 
 #include "bench.h"
-#include "q2_amp_rayleigh.h"
+#include "q2_amp.h"
 #include "q2_is.h"
+#include "q2_table.h"
+#include "table_writer.h"
+#include "trk/amplitude.h"
 #include "trk/crlb.h"
 #include "trk/mre.h"
 #include "trk/q2.h"
@@ -52,19 +58,30 @@ static int run(struct q2_is_line *l, size_t n, uint64_t samples, double target_s
 }
 
 /* One cell: PDAF pd 0.9, pg 0.99, lambda_vg 3 (q2.vec pdaf_03), or PDAFAI
- * Rayleigh 15 dB, pfa 1e-3, gamma 36, lambda_vg 3 (ai_02). */
-static int cell_rate(int ai, int threads, double *pts_s, double *scenes_s, double *q2, double *pts_cpu_s)
+ * 15 dB, gamma 36, lambda_vg 3: Rayleigh at pfa 1e-3 (ai_02), K nu 1 at pfa
+ * 1e-2 (ai_04). det: 0 PDAF, 1 PDAFAI Rayleigh, 2 PDAFAI K. */
+static int cell_rate(int det, int threads, double *pts_s, double *scenes_s, double *q2, double *pts_cpu_s)
 {
-    static struct q2_amp_rayleigh r;
-    static struct q2_amp_sampler amp;
-    q2_amp_rayleigh_init(&r, 15, 1e-3);
-    amp = q2_amp_rayleigh_sampler(&r);
-    double pd = ai ? r.pd : 0.9, lv = 3, se, sec;
+    static struct q2_amp r[3];
+    static struct q2_amp_sampler amp[3];
+    static int ready;
+    char err[256];
+    if (!ready) {
+        if (q2_amp_init(&r[1], TRK_AMP_RAYLEIGH, 0, 15, 1e-3, 0, 0, err, sizeof err) ||
+            q2_amp_init(&r[2], TRK_AMP_K, 1, 15, 1e-2, 0, 0, err, sizeof err)) {
+            fprintf(stderr, "bench_q2: %s\n", err);
+            return -1;
+        }
+        amp[1] = q2_amp_sampler_of(&r[1]);
+        amp[2] = q2_amp_sampler_of(&r[2]);
+        ready = 1;
+    }
+    double pd = det ? r[det].pd : 0.9, lv = 3, se, sec;
     struct q2_is_line l;
     memset(&l, 0, sizeof l);
-    l.nz = 2, l.gamma = ai ? 36 : -2 * log1p(-0.99), l.amp = ai ? &amp : NULL;
+    l.nz = 2, l.gamma = det ? 36 : -2 * log1p(-0.99), l.amp = det ? &amp[det] : NULL;
     l.n_cells = 1, l.pd = &pd, l.lambda_vg = &lv, l.q2 = q2, l.se = &se;
-    if (run(&l, 1, ai ? 1500000 : 4000000, 0, threads, &sec)) return -1;
+    if (run(&l, 1, det ? 1500000 : 4000000, 0, threads, &sec)) return -1;
     *pts_s = (double)l.points / sec;
     *scenes_s = (double)l.scenes / sec;
     *pts_cpu_s = (double)l.points / last_cpu_s;
@@ -73,8 +90,8 @@ static int cell_rate(int ai, int threads, double *pts_s, double *scenes_s, doubl
 
 TRK_BENCH(q2_is)
 {
-    const char *name[2] = {"pdaf", "pdafai"};
-    for (int ai = 0; ai < 2; ai++) {
+    const char *name[3] = {"pdaf", "pdafai", "pdafai_k"};
+    for (int ai = 0; ai < 3; ai++) {
         double p1, s1, p2, s2, q1, q2v, c1, c2, best_p = 0, best_s = 0, best_c1 = 0, best_c2 = 0;
         for (int rep = 0; rep < 3; rep++) { /* best of 3: the machine is shared */
             if (cell_rate(ai, 1, &p1, &s1, &q1, &c1)) return;
@@ -103,47 +120,68 @@ TRK_BENCH(q2_is)
     }
 }
 
-/* A default table set at se <= 1e-3 per cell (samples up to 1e6 per stratum):
- *   PDAF   nz 2, pg 0.99: pd 0.05..1 (step 0.05, 20) x lambda_vg 1e-4..100
- *          (8 per decade, 49): one line, common random numbers
- *   PDAFAI Rayleigh, gamma 36: snr 5..25 dB (step 5, 5) x pfa 1e-6..0.5
- *          (4 per decade, 24) x the same lambda_vg: 120 lines */
-TRK_BENCH(q2_tables)
+/* The default tables of `make tables` (mk/q2tables.mk; grids q2_table.h) at
+ * se <= 1e-3 per cell on all threads: wall and CPU time, points, largest se.
+ * A long run (~80 s CPU): the machine should be quiet. */
+static int default_spec(int k, struct q2_table_spec *s)
 {
-    enum { NPD = 20, NLV = 49, NSNR = 5, NPFA = 24 };
-    static double lv[NLV], cpd[NPD * NLV], clv[NPD * NLV], q[NPD * NLV], se[NPD * NLV];
-    static double qa[NSNR * NPFA][NLV], sea[NSNR * NPFA][NLV];
-    static struct q2_amp_rayleigh r[NSNR * NPFA];
-    static struct q2_amp_sampler amp[NSNR * NPFA];
-    static struct q2_is_line lines[1 + NSNR * NPFA];
-    for (int j = 0; j < NLV; j++) lv[j] = pow(10.0, -4 + j / 8.0);
-    for (int i = 0; i < NPD; i++)
-        for (int j = 0; j < NLV; j++) cpd[i * NLV + j] = 0.05 * (i + 1), clv[i * NLV + j] = lv[j];
-    memset(lines, 0, sizeof lines);
-    lines[0] = (struct q2_is_line){.nz = 2, .gamma = -2 * log1p(-0.99), .n_cells = NPD * NLV, .pd = cpd,
-                                   .lambda_vg = clv, .q2 = q, .se = se};
-    for (int a = 0; a < NSNR; a++)
-        for (int b = 0; b < NPFA; b++) {
-            int k = a * NPFA + b;
-            double pfa = exp(log(1e-6) + (log(0.5) - log(1e-6)) * b / (NPFA - 1));
-            q2_amp_rayleigh_init(&r[k], 5 + 5 * a, pfa);
-            amp[k] = q2_amp_rayleigh_sampler(&r[k]);
-            lines[1 + k] = (struct q2_is_line){.nz = 2, .gamma = 36, .amp = &amp[k], .stream = 1,
-                                               .n_cells = NLV, .lambda_vg = lv, .q2 = qa[k], .se = sea[k]};
-        }
-    double sec, pts = 0, mx = 0;
-    if (run(lines, 1, 1000000, 1e-3, 0, &sec)) return;
-    bench_print("q2_tables_pdaf_s", sec, "s");
-    if (run(lines + 1, NSNR * NPFA, 1000000, 1e-3, 0, &sec)) return;
-    bench_print("q2_tables_pdafai_rayleigh_s", sec, "s");
-    for (int k = 0; k < 1 + NSNR * NPFA; k++) {
-        pts += (double)lines[k].points;
-        for (size_t c = 0; c < lines[k].n_cells; c++)
-            if (lines[k].se[c] > mx) mx = lines[k].se[c];
+    static double pd[Q2_TABLE_MAX_NODES], snr[Q2_TABLE_MAX_NODES];
+    memset(s, 0, sizeof *s);
+    s->nz = 2;
+    s->cubic = 1;
+    s->gate_gamma = k == 0 ? -2 * log1p(-0.99) : 36;
+    if (k < 2) {
+        s->detector = TRK_Q2_PDAF;
+        int n = q2_table_parse_list(Q2_TABLE_DEFAULT_PD, pd, (int)Q2_TABLE_MAX_NODES);
+        if (n < 2) return -1;
+        q2_table_list_axis(pd, n, &s->pd);
+        return q2_table_parse_log(Q2_TABLE_DEFAULT_LAMBDA_VG_PDAF, &s->lambda_vg);
     }
-    bench_print("q2_tables_points", pts, "points");
-    bench_print("q2_tables_max_se", mx, "");
-    bench_print("q2_tables_threads", q2_is_threads(0), "threads");
+    s->detector = TRK_Q2_PDAFAI;
+    s->amp_model = k == 2 ? TRK_AMP_RAYLEIGH : TRK_AMP_K;
+    s->nu = k == 3 ? 1 : k == 4 ? 8 : 0;
+    int n = q2_table_parse_list(Q2_TABLE_DEFAULT_SNR_DB, snr, (int)Q2_TABLE_MAX_NODES);
+    if (n < 2) return -1;
+    q2_table_list_axis(snr, n, &s->snr_db);
+    return q2_table_parse_log(Q2_TABLE_DEFAULT_PFA, &s->pfa) ||
+           q2_table_parse_log(Q2_TABLE_DEFAULT_LAMBDA_VG_PDAFAI, &s->lambda_vg);
+}
+
+TRK_BENCH(q2_default_tables)
+{
+    static const char *const name[5] = {"pdaf_pg099", "pdaf_g6", "pdafai_rayleigh_g6", "pdafai_k1_g6",
+                                        "pdafai_k8_g6"};
+    double wall = 0, cpu = 0, pts = 0, mx = 0;
+    for (int k = 0; k < 5; k++) {
+        struct q2_table_spec s;
+        if (default_spec(k, &s)) return;
+        struct q2_table_run r;
+        memset(&r, 0, sizeof r);
+        r.samples = Q2_TABLE_DEFAULT_SAMPLES;
+        r.target_se = Q2_TABLE_DEFAULT_TARGET_SE;
+        r.seed = 1;
+        struct q2_table_result res;
+        char err[300];
+        const double t0 = bench_now_ns(), c0 = cpu_s();
+        if (q2_table_build(&s, &r, &res, err, sizeof err)) {
+            fprintf(stderr, "bench_q2: %s: %s\n", name[k], err);
+            return;
+        }
+        const double dt = (bench_now_ns() - t0) * 1e-9, dc = cpu_s() - c0;
+        char b[96];
+        snprintf(b, sizeof b, "q2_table_%s_wall_s", name[k]);
+        bench_print(b, dt, "s");
+        snprintf(b, sizeof b, "q2_table_%s_cpu_s", name[k]);
+        bench_print(b, dc, "s");
+        wall += dt, cpu += dc, pts += (double)res.points;
+        if (res.max_se > mx) mx = res.max_se;
+        q2_table_result_free(&res);
+    }
+    bench_print("q2_default_tables_wall_s", wall, "s");
+    bench_print("q2_default_tables_cpu_s", cpu, "s (process CPU time, all threads)");
+    bench_print("q2_default_tables_points", pts, "points");
+    bench_print("q2_default_tables_max_se", mx, "");
+    bench_print("q2_default_tables_threads", q2_is_threads(0), "threads");
 }
 
 /* ---- library ---- */
@@ -193,12 +231,44 @@ static void lk3(void *a)
     if (trk_q2_pdafai(a, TRK_REAL_C(12.3), pfa, lv, &v) == TRK_OK) bench_sink((double)v);
 }
 
+/* The same 3-D cubic grid as a q2 table (the file format, used in place). */
+static struct trk_q2_lookup lk_tab;
+static unsigned char *tab_bytes;
+
+static int setup_table(void)
+{
+    struct tablew *w = tablew_new(TRK_TABLE_KIND_Q2_PDAFAI, TRK_Q2_TABLE_VERSION, (uint32_t)sizeof(trk_real));
+    static double data[2 * 5 * 24 * 49];
+    for (int k = 0; k < 5 * 24 * 49; k++) data[2 * k] = (double)v3[k], data[2 * k + 1] = 1e-3;
+    const struct tablew_axis ax[3] = {{5, TRK_TABLE_SPACING_LINEAR, TRK_TABLE_VAR_SNR_DB, 5, 25, 0, NULL},
+                                      {24, TRK_TABLE_SPACING_LOG, TRK_TABLE_VAR_PFA, 1e-6, 0.5, 0, NULL},
+                                      {49, TRK_TABLE_SPACING_LOG, TRK_TABLE_VAR_LAMBDA_VG, 1e-4, 100, 0, NULL}};
+    size_t len;
+    struct trk_table t;
+    if (!w || tablew_param_int(w, "detector", TRK_Q2_PDAFAI) || tablew_param_int(w, "nz", 2) ||
+        tablew_param_real(w, "gate_gamma", 36) || tablew_param_real(w, "gate_prob", -expm1(-18.0)) ||
+        tablew_param_real(w, "max_se", 1e-3) || tablew_param_int(w, "model", TRK_AMP_RAYLEIGH) ||
+        tablew_param_real(w, "nu", 0) ||
+        tablew_section(w, TRK_Q2_SECTION_VALUES, 3, ax, 2, TRK_TABLE_INTERP_CUBIC, data) ||
+        tablew_finish(w, &tab_bytes, &len) || trk_table_parse(&t, tab_bytes, len) != TRK_OK ||
+        trk_q2_lookup_init_table(&lk_tab, &t, TRK_Q2_PDAFAI, 2) != TRK_OK) {
+        fprintf(stderr, "bench_q2: q2 table\n");
+        tablew_free(w);
+        return -1;
+    }
+    tablew_free(w);
+    return 0;
+}
+
 TRK_BENCH(q2_lookup)
 {
     setup_grids();
     bench_print("q2_lookup_pdaf_linear_ns", bench_time_ns(lk2, &lk2l, 5), "ns");
     bench_print("q2_lookup_pdaf_cubic_ns", bench_time_ns(lk2, &lk2c, 5), "ns");
     bench_print("q2_lookup_pdafai_cubic_ns", bench_time_ns(lk3, &lk3c, 5), "ns");
+    if (setup_table() == 0) bench_print("q2_lookup_pdafai_cubic_table_ns", bench_time_ns(lk3, &lk_tab, 5), "ns");
+    free(tab_bytes);
+    tab_bytes = NULL;
 }
 
 /* MRE steady state, Brekke's Table I model (T 1 s, q 0.0125^2, R I/12, g 6):

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "tablegen.h"
+#include "trk/q2.h"
 #include "trk/amplitude.h"
 #include "trk/table.h"
 
@@ -56,7 +57,7 @@ static const char *var_name(uint32_t v)
 
 static const char *interp_name(uint32_t v)
 {
-    static const char *const n[] = {"none", "linear", "hermite"};
+    static const char *const n[] = {"none", "linear", "hermite", "cubic"};
     return v < sizeof n / sizeof n[0] ? n[v] : "?";
 }
 
@@ -68,6 +69,8 @@ static const char *section_name(uint32_t kind, uint32_t id)
         case TRK_AMP_SECTION_INV_SF_TARGET: return "inv_sf_target";
         default: break;
         }
+    if ((kind == TRK_TABLE_KIND_Q2_PDAF || kind == TRK_TABLE_KIND_Q2_PDAFAI) && id == TRK_Q2_SECTION_VALUES)
+        return "values (q2, se)";
     return "";
 }
 
@@ -111,6 +114,38 @@ static int check_kind(const unsigned char *b, size_t len, const struct trk_table
     if (st != TRK_OK) {
         printf("  trk_table_parse: %s\n", trk_status_str(st));
         return 1;
+    }
+    if (in->kind == TRK_TABLE_KIND_Q2_PDAF || in->kind == TRK_TABLE_KIND_Q2_PDAFAI) {
+        const int det = in->kind == TRK_TABLE_KIND_Q2_PDAF ? TRK_Q2_PDAF : TRK_Q2_PDAFAI;
+        int64_t nz = 0;
+        if (trk_table_param_int(&t, "nz", &nz) != TRK_OK) nz = 0;
+        struct trk_q2_lookup q;
+        st = trk_q2_lookup_init_table(&q, &t, det, (int)nz);
+        if (st != TRK_OK) {
+            printf("  trk_q2_lookup_init_table: %s\n", trk_status_str(st));
+            return 1;
+        }
+        /* the value at the first and last node, through the lookup */
+        trk_real lo[3], hi[3], v_lo, v_hi;
+        for (int a = 0; a < q.n_axes; a++) {
+            const struct trk_q2_axis *ax = &q.grid.axis[a];
+            trk_real u0 = ax->nodes ? ax->nodes[0] : ax->u_first;
+            trk_real u1 = ax->nodes ? ax->nodes[ax->count - 1] : ax->u_last;
+            lo[a] = ax->log_spacing ? trk_exp(u0) : u0;
+            hi[a] = ax->log_spacing ? trk_exp(u1) : u1;
+        }
+        if (trk_q2_lookup_eval(&q, lo, &v_lo) != TRK_OK || trk_q2_lookup_eval(&q, hi, &v_hi) != TRK_OK) {
+            printf("  q2 lookup does not evaluate at the grid's corners\n");
+            return 1;
+        }
+        printf("  q2 lookup (library): %s, nz %d, gamma %.10g (P_G %.10g)", det == TRK_Q2_PDAF ? "PDAF" : "PDAFAI",
+               q.nz, (double)q.gate_gamma, (double)q.gate_prob);
+        if (det == TRK_Q2_PDAFAI)
+            printf(", %s clutter", q.amp_model == TRK_AMP_K ? "K" : "Rayleigh");
+        if (det == TRK_Q2_PDAFAI && q.amp_model == TRK_AMP_K) printf(" nu %.6g", (double)q.nu);
+        printf(", max se %.3g\n    q2 at the first corner %.6f, at the last corner %.6f\n", (double)q.max_se,
+               (double)v_lo, (double)v_hi);
+        return 0;
     }
     if (in->kind != TRK_TABLE_KIND_AMP) {
         printf("  (no kind-specific check for kind %s in this tool)\n", kind_name(in->kind));

@@ -15,3 +15,7 @@ $(AMP_TABLE_OMP_OBJ): tools/common/amp_table.c
 	$(CC) $(CFLAGS_ALL) -fopenmp -Itools/common -c $< -o $@
 TOOL_DEPS_trk-tablegen += $(AMP_TABLE_OMP_OBJ)
 TOOL_LDLIBS_trk-tablegen += -fopenmp
+
+# trk-tablegen q2 runs the q2 sampler on all cores: the OpenMP build of
+# tools/common/q2_is.c (rule in mk/q2.mk) ahead of libtrk_tools.a.
+TOOL_DEPS_trk-tablegen += $(BUILD)/obj/omp/tools/common/q2_is.o

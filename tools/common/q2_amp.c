@@ -1,0 +1,132 @@
+/* q2_amp.c - the q2 sampler's amplitude law on the library's amplitude
+ * module (q2_amp.h). */
+#include "q2_amp.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "amp_table.h"
+#include "q2_fastmath.h"
+
+int q2_amp_model_parse(const char *s)
+{
+    if (!s) return 0;
+    if (strcmp(s, "rayleigh") == 0) return TRK_AMP_RAYLEIGH;
+    if (strcmp(s, "k") == 0) return TRK_AMP_K;
+    return 0;
+}
+
+const char *q2_amp_model_name(int model)
+{
+    return model == TRK_AMP_RAYLEIGH ? "rayleigh" : model == TRK_AMP_K ? "k" : "?";
+}
+
+int q2_amp_init(struct q2_amp *a, int model, double nu, double snr_db, double pfa, unsigned amp_size,
+                int measure, char *err, size_t errlen)
+{
+    memset(a, 0, sizeof *a);
+    if (!(snr_db >= -30 && snr_db <= 60)) {
+        snprintf(err, errlen, "snr_db must be in [-30, 60] (got %g)", snr_db);
+        return -1;
+    }
+    if (!(pfa > 0 && pfa < 1)) {
+        snprintf(err, errlen, "pfa must be in (0, 1) (got %g)", pfa);
+        return -1;
+    }
+    a->model = model;
+    a->snr_db = snr_db;
+    a->pfa = pfa;
+    if (model == TRK_AMP_RAYLEIGH) {
+        trk_status st = trk_amplitude_init_rayleigh(&a->m, 1, (trk_real)snr_db, (trk_real)pfa);
+        if (st != TRK_OK) {
+            snprintf(err, errlen, "Rayleigh model (snr_db %g, pfa %g): %s", snr_db, pfa, trk_status_str(st));
+            return -1;
+        }
+        a->pd = (double)trk_amplitude_pd(&a->m);
+        a->threshold = (double)trk_amplitude_threshold(&a->m);
+        return 0;
+    }
+    if (model != TRK_AMP_K) {
+        snprintf(err, errlen, "amplitude model must be rayleigh or k");
+        return -1;
+    }
+    if (!(nu > 0 && nu <= 1e6)) {
+        snprintf(err, errlen, "K shape nu must be in (0, 1e6] (got %g)", nu);
+        return -1;
+    }
+    struct amp_table_opts o;
+    memset(&o, 0, sizeof o);
+    o.model = TRK_AMP_K;
+    o.nu = nu;
+    o.snr_db = snr_db;
+    o.pfa = pfa;
+    o.grid = TRK_AMP_GRID_UNIFORM;
+    o.size = o.llr_size = amp_size ? amp_size : Q2_AMP_TABLE_SIZE;
+    o.measure = measure;
+    struct amp_table_result r;
+    char e2[256];
+    if (amp_table_build(&o, &r, e2, sizeof e2) != 0) {
+        snprintf(err, errlen, "K amplitude table (nu %g, snr_db %g, pfa %g): %s", nu, snr_db, pfa, e2);
+        return -1;
+    }
+    struct trk_table t;
+    trk_status st = trk_table_parse(&t, r.bytes, r.len);
+    if (st == TRK_OK) st = trk_amplitude_init_table(&a->m, &t);
+    if (st != TRK_OK) {
+        snprintf(err, errlen, "K amplitude table (nu %g, snr_db %g, pfa %g) refused by the library: %s", nu,
+                 snr_db, pfa, trk_status_str(st));
+        free(r.bytes);
+        return -1;
+    }
+    a->table = r.bytes;
+    a->nu = nu;
+    a->pd = r.pd;
+    a->threshold = r.threshold;
+    a->measured = r.measured;
+    a->err_log_lr = r.err_log_lr;
+    a->err_inv_sf = r.err_inv_sf;
+    return 0;
+}
+
+void q2_amp_free(struct q2_amp *a)
+{
+    free(a->table);
+    a->table = NULL;
+}
+
+/* x[i] = -ln u[i] (Exp(1) from the uniforms), vectorised. */
+Q2_CLONES
+static void neg_log(size_t n, const double *restrict u, double *restrict x)
+{
+    for (size_t i = 0; i < n; i++) x[i] = -q2_log(u[i]);
+}
+
+/* out[i] = ln l^a(a(x_i)), the amplitude drawn from the law of `source`:
+ * the library's trk_amplitude_sample_log_lr (trk_amplitude_inv_sf composed
+ * with trk_amplitude_log_lr) on the block. */
+static int sample(const void *ctx, int target, size_t n, const double *u, double *out)
+{
+    const struct q2_amp *a = ctx;
+    const int source = target ? TRK_AMP_TARGET : TRK_AMP_CLUTTER;
+    neg_log(n, u, out);
+#if TRK_REAL_IS_FLOAT
+    trk_real buf[256];
+    for (size_t i0 = 0; i0 < n; i0 += 256) {
+        const size_t m = n - i0 < 256 ? n - i0 : 256;
+        for (size_t i = 0; i < m; i++) buf[i] = (trk_real)out[i0 + i];
+        if (trk_amplitude_sample_log_lr(&a->m, source, m, buf, buf) != TRK_OK) return -1;
+        for (size_t i = 0; i < m; i++) out[i0 + i] = (double)buf[i];
+    }
+    return 0;
+#else
+    return trk_amplitude_sample_log_lr(&a->m, source, n, out, out) == TRK_OK ? 0 : -1;
+#endif
+}
+
+struct q2_amp_sampler q2_amp_sampler_of(const struct q2_amp *a)
+{
+    struct q2_amp_sampler s = {q2_amp_model_name(a->model), sample, a, a->pd};
+    return s;
+}
