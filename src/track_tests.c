@@ -104,7 +104,8 @@ int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
 #endif
     case TRK_CONFIRM_VISIBILITY: /* tr->vis was updated with this scan */
         tr->confirm_stat = tr->vis.pcv;
-        return tr->vis.confirmed;
+        if (tr->vis.confirmed) return 1;
+        return tr->vis.terminated ? -1 : 0; /* confidence fell below p_term: reject */
     default: break;
     }
     return 0;

@@ -40,6 +40,8 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     d.term.u.kn.n = 5;
     d.max_tentative_scans = 0;
     d.merge_gate_d2 = 4;
+    d.init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
+                                                              detections */
     d.track_visibility = 1; /* Kennedy's Table 1 style IPDA parameters */
     d.visibility.pv0 = TRK_REAL_C(0.5);
     d.visibility.pcv0 = TRK_REAL_C(0.5);
@@ -71,9 +73,10 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     if (p->clutter != TRK_CLUTTER_PARAMETRIC && p->clutter != TRK_CLUTTER_NONPARAMETRIC)
         return TRK_E_ARG;
     if (!isfinite(p->process_noise_q) || !isfinite(p->gate_prob) ||
-        !isfinite(p->init_speed_sigma_mps) || !isfinite(p->max_dt_s) || !isfinite(p->merge_gate_d2))
+        !isfinite(p->init_speed_sigma_mps) || !isfinite(p->max_dt_s) || !isfinite(p->merge_gate_d2) ||
+        !isfinite(p->init_exclusion_d2))
         return TRK_E_NAN;
-    if (!(p->merge_gate_d2 >= 0)) return TRK_E_RANGE;
+    if (!(p->merge_gate_d2 >= 0) || !(p->init_exclusion_d2 >= 0)) return TRK_E_RANGE;
     if (!(p->process_noise_q >= 0) || !(p->init_speed_sigma_mps > 0) || !(p->max_dt_s > 0) ||
         !(p->max_dt_s <= TRK_REAL_C(1e9)))
         return TRK_E_RANGE;
@@ -254,7 +257,12 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
 
     /* gate: bounding box of the ellipse d2 <= gamma, then the ellipse */
     const trk_real zx = inn.z_pred[0], zy = inn.z_pred[1];
-    const trk_real wx = trk_sqrt(gamma * inn.s[0]), wy = trk_sqrt(gamma * inn.s[3]);
+    /* a confirmed track also keeps detections within init_exclusion_d2 (but
+     * outside its gate) from starting new tracks */
+    const trk_real g_excl = tr->status == TRK_TRACK_CONFIRMED && t->params.init_exclusion_d2 > gamma
+                                ? t->params.init_exclusion_d2
+                                : gamma;
+    const trk_real wx = trk_sqrt(g_excl * inn.s[0]), wy = trk_sqrt(g_excl * inn.s[3]);
     size_t n = 0;
     for (size_t j = 0; j < n_shared; j++) {
         trk_real nu[NZ];
@@ -262,7 +270,10 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
         nu[1] = t->ws.y[j] - zy;
         if (trk_fabs(nu[0]) > wx || trk_fabs(nu[1]) > wy) continue;
         trk_real d2 = trk_i_mahalanobis2(NZ, inn.s_chol_inv, nu);
-        if (!trk_gate_inside(d2, gamma)) continue;
+        if (!trk_gate_inside(d2, gamma)) {
+            if (d2 <= g_excl) t->ws.used[j] = 1;
+            continue;
+        }
         t->ws.cand[n] = (uint16_t)j;
         t->ws.w[n] = trk_i_pda_log_e(pda, inn.log_det_s, d2, t->ws.log_lr[j]);
         t->ws.z[2 * n] = t->ws.x[j];
@@ -279,12 +290,15 @@ static int update_track(struct trk_tracker *t, struct trk_track *tr, const struc
         s[3] = p[10] + d->cov_m2[2];
         nu[0] = t->ws.x[j] - zx;
         nu[1] = t->ws.y[j] - zy;
-        if (trk_fabs(nu[0]) > trk_sqrt(gamma * s[0]) || trk_fabs(nu[1]) > trk_sqrt(gamma * s[3]))
+        if (trk_fabs(nu[0]) > trk_sqrt(g_excl * s[0]) || trk_fabs(nu[1]) > trk_sqrt(g_excl * s[3]))
             continue;
         if (trk_i_chol(NZ, s, l) != TRK_OK) continue; /* cannot happen: P SPD, R_j SPD */
         trk_i_tril_inverse(NZ, l, li);
         trk_real d2 = trk_i_mahalanobis2(NZ, li, nu);
-        if (!trk_gate_inside(d2, gamma)) continue;
+        if (!trk_gate_inside(d2, gamma)) {
+            if (d2 <= g_excl) t->ws.used[j] = 1;
+            continue;
+        }
         t->ws.cand[n] = (uint16_t)j;
         t->ws.w[n] = trk_i_pda_log_e(pda, trk_i_chol_logdet(NZ, l), d2, t->ws.log_lr[j]);
         t->ws.z[2 * n] = t->ws.x[j];

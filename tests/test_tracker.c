@@ -670,6 +670,56 @@ static void test_merge_duplicates(void **state)
     TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
 }
 
+/* A detection outside a confirmed track's gate but within init_exclusion_d2
+ * starts no new track; with the exclusion off it does. A tentative track
+ * whose visibility confidence falls below p_term is rejected. */
+static void test_init_exclusion_and_visibility_reject(void **state)
+{
+    (void)state;
+    for (int excl = 1; excl >= 0; excl--) {
+        struct trk_tracker_params p;
+        base_params(&p);
+        p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+        p.init_exclusion_d2 = excl ? TRK_REAL_C(400.0) : 0;
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        struct trk_detection d[2];
+        memset(d, 0, sizeof d);
+        for (int k = 0; k < 8; k++) { /* a confirmed track at rest at the origin */
+            struct trk_scan s = {SEC(k), 0, 1, d};
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
+        }
+        const struct trk_track *tr = trk_tracker_track(&tk, 0);
+        assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
+        d[1].x_m = 8; /* d2 ~ 8^2 / S_xx: outside the 0.99 gate (9.2), inside 400 */
+        struct trk_scan s = {SEC(8), 0, 2, d};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+        assert_int_equal(rep.n_tracks_hit, 1);
+        assert_int_equal(rep.n_started, excl ? 0 : 1);
+    }
+    /* visibility confirmation rejects a tentative track that keeps missing */
+    struct trk_tracker_params p;
+    base_params(&p);
+    p.confirm.method = TRK_CONFIRM_VISIBILITY;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    struct trk_scan s0 = {SEC(0), 0, 1, &d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
+    int rejected = 0;
+    for (int k = 1; k < 20 && !rejected; k++) {
+        struct trk_scan s = {SEC(k), 0, 0, NULL};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
+        const struct trk_track *tr = trk_tracker_track(&tk, 0);
+        if (tr && tr->status == TRK_TRACK_TERMINATED) {
+            assert_int_equal(tr->end_reason, TRK_END_REJECTED);
+            assert_true(tr->vis.pcv < p.visibility.p_term);
+            rejected = 1;
+        }
+    }
+    assert_true(rejected);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -685,6 +735,7 @@ int main(void)
         cmocka_unit_test(test_amplitude_pdafai),
         cmocka_unit_test(test_visibility_methods),
         cmocka_unit_test(test_merge_duplicates),
+        cmocka_unit_test(test_init_exclusion_and_visibility_reject),
     };
     return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
 }

@@ -23,7 +23,8 @@
  *      detections do) are merged: of two live tracks whose 4-D states are
  *      within merge_gate_d2, the confirmed (else the one with more hits,
  *      else the older) is kept
- *   5. every valid detection no track gated starts a tentative track
+ *   5. every valid detection no track gated (nor fell within a confirmed
+ *      track's init_exclusion_d2) starts a tentative track
  *      (single-point initiation: position from the detection, velocity from
  *      a zero-mean prior); with no free slot it is counted, not silent
  *   6. the report counts what happened
@@ -99,8 +100,9 @@ enum trk_confirm_method {
     TRK_CONFIRM_CLUTTER_CHI2 = 2,/* Kennedy clutter-density test (clutter_test.h) */
     TRK_CONFIRM_CLUTTER_AMP = 3, /* Kennedy clutter-amplitude test (clutter_test.h);
                                     both need TRK_WITH_CLUTTER_TESTS (config.h) */
-    TRK_CONFIRM_VISIBILITY = 4   /* visibility confidence pcv >= p_con (visibility.h);
-                                    needs track_visibility */
+    TRK_CONFIRM_VISIBILITY = 4   /* visibility confidence: confirm at pcv >= p_con,
+                                    reject at pcv < p_term (visibility.h); needs
+                                    track_visibility */
 };
 
 struct trk_confirm_params {
@@ -185,6 +187,11 @@ struct trk_tracker_params {
                                                          (4-D, positions and velocities) follow
                                                          one target: the weaker one ends
                                                          (TRK_END_MERGED). 0 = never merge */
+    trk_real init_exclusion_d2;                       /* a detection with d2 <= this to a
+                                                         CONFIRMED track (outside its gate)
+                                                         starts no new track: the target's
+                                                         own stray detections would make
+                                                         duplicates. <= gamma: gate only */
     uint32_t max_tentative_scans;                     /* drop a tentative track after this
                                                          many scans (0 = no limit) */
 };
@@ -204,7 +211,8 @@ struct trk_tracker_params {
  * Defaults: one sensor (pd 0.9, R = 1 m^2 I, lambda 1e-4 /m^2), q = 0.01,
  * P_G 0.99, parametric clutter, velocity prior 5 m/s, max_dt 3600 s,
  * confirm 3-of-5 fixed, terminate after 5 consecutive misses (K/N 0/5),
- * no tentative limit, merge duplicates at d2 <= 4 (4-D), visibility tracked
+ * no tentative limit, merge duplicates at d2 <= 4 (4-D), no initiation within
+ * d2 18.42 (99.99 %) of a confirmed track, visibility tracked
  * (pv0 0.5, pcv0 0.5, Delta 0.99, Delta_bar 0.01, omega 0.75, p_con 0.9,
  * p_term 0.1). */
 void trk_tracker_default_params(struct trk_tracker_params *p);

@@ -268,6 +268,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         return 0;
     }
     if (strcmp(key, "merge_gate_d2") == 0) return get_real(v, R_NONNEG, &p->merge_gate_d2, err, n);
+    if (strcmp(key, "init_exclusion_d2") == 0) return get_real(v, R_NONNEG, &p->init_exclusion_d2, err, n);
     /* visibility (IPDA existence) */
     if (strcmp(key, "visibility") == 0) {
         if (get_long(v, 0, 1, &l, err, n) != 0) return -1;
@@ -640,6 +641,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "max_dt_s", (double)p->max_dt_s);
     fprintf(f, "max_tentative_scans = %lu\n", (unsigned long)p->max_tentative_scans);
     put_num(f, "merge_gate_d2", (double)p->merge_gate_d2);
+    put_num(f, "init_exclusion_d2", (double)p->init_exclusion_d2);
     fprintf(f, "visibility = %d\n", p->track_visibility);
     put_num(f, "visibility.pv0", (double)p->visibility.pv0);
     put_num(f, "visibility.pcv0", (double)p->visibility.pcv0);
@@ -707,6 +709,7 @@ void tcfg_help(FILE *f)
             "  max_dt_s = S                      longest accepted gap between scans, (0,1e9] (3600)\n"
             "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
+            "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
             "  visibility = 0|1                  track each track's visibility / existence (1)\n"
             "    visibility.pv0, .pcv0            at initiation (0.5, 0.5)\n"
             "    visibility.delta_stay, .delta_become   Markov visibility model (0.99, 0.01)\n"

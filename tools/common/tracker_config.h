@@ -5,7 +5,7 @@
  *
  * Keys (tcfg_help prints them with defaults and ranges):
  *   sensors, process_noise_q, gate_prob, clutter, init_speed_sigma_mps,
- *   max_dt_s, max_tentative_scans, merge_gate_d2,
+ *   max_dt_s, max_tentative_scans, merge_gate_d2, init_exclusion_d2,
  *   visibility (0|1), visibility.{pv0,pcv0,delta_stay,delta_become,omega_c,p_con,p_term},
  *   confirm = mn | sprt | clutter_density | clutter_amplitude | visibility,
  *     confirm.mn.{m,n,mode}, confirm.sprt.{alpha,beta,model,pd},

@@ -1,0 +1,121 @@
+/* mc_stats.c - confidence intervals (mc_stats.h). */
+#include "mc_stats.h"
+
+#include <math.h>
+
+/* Continued fraction of I_x(a, b) (modified Lentz). */
+static double betacf(double a, double b, double x)
+{
+    const double tiny = 1e-300;
+    double c = 1, d = 1 - (a + b) * x / (a + 1);
+    if (fabs(d) < tiny) d = tiny;
+    d = 1 / d;
+    double h = d;
+    for (int m = 1; m <= 10000; m++) {
+        const double m2 = 2.0 * m;
+        double aa = m * (b - m) * x / ((a + m2 - 1) * (a + m2));
+        d = 1 + aa * d;
+        if (fabs(d) < tiny) d = tiny;
+        c = 1 + aa / c;
+        if (fabs(c) < tiny) c = tiny;
+        d = 1 / d;
+        h *= d * c;
+        aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1));
+        d = 1 + aa * d;
+        if (fabs(d) < tiny) d = tiny;
+        c = 1 + aa / c;
+        if (fabs(c) < tiny) c = tiny;
+        d = 1 / d;
+        const double del = d * c;
+        h *= del;
+        if (fabs(del - 1) < 1e-15) break;
+    }
+    return h;
+}
+
+double mc_betai(double a, double b, double x)
+{
+    if (!(x > 0)) return 0;
+    if (!(x < 1)) return 1;
+    const double lbt = lgamma(a + b) - lgamma(a) - lgamma(b) + a * log(x) + b * log1p(-x);
+    if (x < (a + 1) / (a + b + 2)) return exp(lbt) * betacf(a, b, x) / a;
+    return 1 - exp(lbt) * betacf(b, a, 1 - x) / b;
+}
+
+/* x with I_x(a, b) = p, by bisection (I is increasing in x). */
+static double betainv(double a, double b, double p)
+{
+    double lo = 0, hi = 1;
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * (hi > 1e-300 ? hi : 1e-300); i++) {
+        const double mid = 0.5 * (lo + hi);
+        if (mc_betai(a, b, mid) < p) lo = mid;
+        else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+void mc_binom_ci(long k, long n, double level, double *lo, double *hi)
+{
+    const double a = 1 - level;
+    if (n <= 0) {
+        *lo = 0;
+        *hi = 1;
+        return;
+    }
+    *lo = k <= 0 ? 0 : betainv((double)k, (double)(n - k + 1), a / 2);
+    *hi = k >= n ? 1 : betainv((double)(k + 1), (double)(n - k), 1 - a / 2);
+}
+
+/* P(X <= k) for X ~ Binomial(n, p) = I_{1-p}(n - k, k + 1). */
+static double binom_cdf(long k, long n, double p)
+{
+    if (k < 0) return 0;
+    if (k >= n) return 1;
+    return mc_betai((double)(n - k), (double)(k + 1), 1 - p);
+}
+
+void mc_binom_accept(long n, double p, double tail, long *lo, long *hi)
+{
+    /* lo: the largest k with P(X < k) = P(X <= k-1) <= tail */
+    long a = 0, b = n;
+    while (a < b) {
+        long mid = a + (b - a + 1) / 2;
+        if (binom_cdf(mid - 1, n, p) <= tail) a = mid;
+        else b = mid - 1;
+    }
+    *lo = a;
+    /* hi: the smallest k with P(X > k) = 1 - P(X <= k) <= tail */
+    a = 0, b = n;
+    while (a < b) {
+        long mid = a + (b - a) / 2;
+        if (1 - binom_cdf(mid, n, p) <= tail) b = mid;
+        else a = mid + 1;
+    }
+    *hi = a;
+}
+
+double mc_z(double level)
+{
+    /* bisection on erf: P(|Z| <= z) = erf(z / sqrt 2) */
+    double lo = 0, hi = 40;
+    for (int i = 0; i < 200; i++) {
+        const double mid = 0.5 * (lo + hi);
+        if (erf(mid / sqrt(2.0)) < level) lo = mid;
+        else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+void mc_mean_ci(const double *x, size_t n, double level, double *mean, double *lo, double *hi)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; i++) s += x[i];
+    const double m = n ? s / (double)n : NAN;
+    double v = 0;
+    for (size_t i = 0; i < n; i++) v += (x[i] - m) * (x[i] - m);
+    const double se = n > 1 ? sqrt(v / (double)(n - 1) / (double)n) : 0;
+    const double z = mc_z(level);
+    *mean = m;
+    *lo = m - z * se;
+    *hi = m + z * se;
+}
