@@ -175,9 +175,10 @@ check-bad-config:
 	  echo "check-bad-config: TRK_MAX_MEAS=4 compiled but must fail"; exit 1; fi
 	@echo "check-bad-config: an impossible configuration fails to compile, as it must"
 
-# Extra test steps registered by mk/*.mk (fuzz corpus replay, valgrind, ...).
+# Extra test steps registered by mk/*.mk and tests/*.mk with TEST_EXTRA +=
+# (fuzz corpus replay, valgrind, QEMU, ...); the rule is at the end of this
+# file, after those files are read.
 TEST_EXTRA ?=
-test-extra: $(TEST_EXTRA)
 
 bench:
 	$(MAKE) --no-print-directory BUILD=build OPT=-O2 tools
@@ -203,4 +204,5 @@ help:
 	@sed -n '1,30p' Makefile
 
 -include $(wildcard mk/*.mk)
+test-extra: $(TEST_EXTRA)
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,32 +1,115 @@
 # cross.mk - libtrk for firmware targets: make cross
-#   build/cross/<target>/libtrk.a, built with the target's compiler and flags
-#   from src/*.c only (no host helpers), then its size is printed.
-# Targets (TARGET_<name>_CC / _CFLAGS):
-#   cortex-m4f  arm-none-eabi-gcc, Cortex-M4 with single-precision FPU, trk_real = float, -Os
+#
+#   build/cross/<target>/libtrk.a, built from src/*.c only (no host helpers)
+#   with the target's compiler and flags, then checked:
+#     - no heap/stdio/abort symbol referenced (HEAP_SYMS from the Makefile)
+#     - float targets: no soft-double helper and no double libm function
+#       referenced (a float build that promotes to double runs soft-float
+#       double code on a Cortex-M4F: slow and large)
+#   Each object also leaves <obj>.su (-fstack-usage) and <obj>.ci
+#   (-fcallgraph-info=su) next to it for the stack analysis of mk/size.mk.
+#
+# Targets (TARGET_<name>_CC / _CFLAGS / _FLOAT):
+#   cortex-m4f      Cortex-M4 + FPv4-SP (single precision FPU), trk_real = float, -Os
+#   cortex-m4f-O2   same, -O2
+#   cortex-m7d      Cortex-M7 + FPv5-D16 (double precision FPU), trk_real = double, -Os
+#   cortex-m7d-O2   same, -O2
+#   riscv           RV32IMAFC, ilp32f ABI, trk_real = float, -Os, -ffreestanding;
+#                   only when riscv64-unknown-elf-gcc is installed (Debian package
+#                   gcc-riscv64-unknown-elf). That compiler ships no C library: the
+#                   library is compiled against newlib's target-independent headers
+#                   (/usr/include/newlib, package libnewlib-dev, which
+#                   libnewlib-arm-none-eabi depends on); libm, memcpy and memset are
+#                   left for the firmware's own C library to provide at link time.
+#
+#   make cross                     all targets available on this machine
+#   make cross CROSS_TARGETS=riscv one target
+#   make cross CROSS_EXTRA_CFLAGS=-DTRK_SIZE_OPT   pass extra flags (e.g. a size knob)
+#   make cross-sizeopt             the M4F -Os library with TRK_SIZE_OPT forced off and on
+#                                  (build/cross/cortex-m4f-inline, cortex-m4f-sizeopt) and
+#                                  the two sizes
 
-CROSS_TARGETS ?= cortex-m4f
+ARM_CC ?= arm-none-eabi-gcc
+RISCV_CC ?= riscv64-unknown-elf-gcc
+NEWLIB_INC ?= /usr/include/newlib
+HAVE_RISCV := $(if $(shell command -v $(RISCV_CC) 2>/dev/null),$(if $(wildcard $(NEWLIB_INC)/math.h),1))
+
+CROSS_TARGETS_ARM := cortex-m4f cortex-m4f-O2 cortex-m7d cortex-m7d-O2
+CROSS_TARGETS ?= $(CROSS_TARGETS_ARM) $(if $(HAVE_RISCV),riscv)
+CROSS_EXTRA_CFLAGS ?=
 CROSS_COMMON := -std=c99 -Wall -Wextra -Wpedantic -Werror -Wvla -Wshadow -Wstrict-prototypes \
-  -Wmissing-prototypes -Wdouble-promotion -ffunction-sections -fdata-sections -fstack-usage -Iinclude -Isrc
+  -Wmissing-prototypes -Wdouble-promotion -ffunction-sections -fdata-sections \
+  -fstack-usage -fcallgraph-info=su -g -Iinclude -Isrc
 
-TARGET_cortex-m4f_CC := arm-none-eabi-gcc
-TARGET_cortex-m4f_CFLAGS := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -DTRK_REAL_FLOAT -Os
+M4F_FLAGS := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+M7D_FLAGS := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
+
+TARGET_cortex-m4f_CC := $(ARM_CC)
+TARGET_cortex-m4f_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os
+TARGET_cortex-m4f_FLOAT := 1
+TARGET_cortex-m4f-O2_CC := $(ARM_CC)
+TARGET_cortex-m4f-O2_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -O2
+TARGET_cortex-m4f-O2_FLOAT := 1
+TARGET_cortex-m7d_CC := $(ARM_CC)
+TARGET_cortex-m7d_CFLAGS := $(M7D_FLAGS) -Os
+TARGET_cortex-m7d-O2_CC := $(ARM_CC)
+TARGET_cortex-m7d-O2_CFLAGS := $(M7D_FLAGS) -O2
+TARGET_riscv_CC := $(RISCV_CC)
+TARGET_riscv_CFLAGS := -march=rv32imafc -mabi=ilp32f -mcmodel=medlow -ffreestanding \
+  -isystem $(NEWLIB_INC) -DTRK_REAL_FLOAT -Os
+TARGET_riscv_FLOAT := 1
+# size-knob comparison (cross-sizeopt), not in the default list
+TARGET_cortex-m4f-inline_CC := $(ARM_CC)
+TARGET_cortex-m4f-inline_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_SIZE_OPT=0
+TARGET_cortex-m4f-inline_FLOAT := 1
+TARGET_cortex-m4f-sizeopt_CC := $(ARM_CC)
+TARGET_cortex-m4f-sizeopt_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_SIZE_OPT=1
+TARGET_cortex-m4f-sizeopt_FLOAT := 1
+CROSS_TARGETS_KNOWN := $(CROSS_TARGETS_ARM) riscv cortex-m4f-inline cortex-m4f-sizeopt
+
+# binutils of a target: arm-none-eabi-gcc -> arm-none-eabi-nm
+cross_tool = $(patsubst %gcc,%$(2),$(TARGET_$(1)_CC))
+
+# Soft-double helpers (ARM EABI __aeabi_dadd, __aeabi_f2d, __aeabi_i2d, ...;
+# libgcc __adddf3, __extendsfdf2, ...) and double libm functions: none may be
+# referenced by a float build.
+SOFT_DOUBLE_RE := __aeabi_(c?d[a-z0-9]+|[a-z0-9]*2d)|__[a-z]*df[0-9a-z]*
+# float -> 64-bit integer conversions: libgcc's Arm __aeabi_f2lz/__aeabi_f2ulz
+# (_fixsfdi/_fixunssfdi) compute through soft double (__aeabi_dmul, ...):
+# ~2.2 KB of double code in a Cortex-M4F image. Reported as a warning;
+# CROSS_F2LZ_FATAL=1 makes it an error (to be the default once the library
+# has no such conversion: see the README, "Firmware").
+# (RISC-V rv32 libgcc: __fixsfdi -> __fixunssfdi -> __muldf3, ...: the same.)
+INDIRECT_SOFT_DOUBLE_RE := __aeabi_f2u?lz|__fixu?n?s?sfdi
+CROSS_F2LZ_FATAL ?= 0
+DOUBLE_LIBM_RE := sqrt|exp|exp2|expm1|log|log1p|log2|log10|pow|floor|ceil|round|trunc|fmod|fabs|sin|cos|tan|asin|acos|atan|atan2|sinh|cosh|tanh|erf|erfc|lgamma|tgamma|hypot|cbrt|ldexp|frexp|modf|scalbn|nextafter|fmin|fmax|copysign
 
 define CROSS_template
 CROSS_OBJ_$(1) := $$(patsubst src/%.c,build/cross/$(1)/obj/%.o,$$(LIB_SRC))
-build/cross/$(1)/obj/%.o: src/%.c
+build/cross/$(1)/obj/%.o: src/%.c $$(wildcard include/trk/*.h src/*.h) mk/cross.mk
 	@mkdir -p $$(@D)
-	$$(TARGET_$(1)_CC) $$(CROSS_COMMON) $$(TARGET_$(1)_CFLAGS) -c $$< -o $$@
+	$$(TARGET_$(1)_CC) $$(CROSS_COMMON) $$(TARGET_$(1)_CFLAGS) $$(CROSS_EXTRA_CFLAGS) -c $$< -o $$@
 build/cross/$(1)/libtrk.a: $$(CROSS_OBJ_$(1))
-	rm -f $$@ && $$(TARGET_$(1)_CC:gcc=ar) rcs $$@ $$^
+	rm -f $$@ && $$(call cross_tool,$(1),ar) rcs $$@ $$^
 cross-$(1): build/cross/$(1)/libtrk.a
 	@echo "== $(1): $$<"
-	@$$(TARGET_$(1)_CC:gcc=size) -t $$< | tail -1 | awk '{printf "   text %s  data %s  bss %s  (bytes, whole library)\n", $$$$1, $$$$2, $$$$3}'
-	@if $$(TARGET_$(1)_CC:gcc=nm) -u $$< | grep -E '^ *U ($$(HEAP_SYMS))$$$$'; then \
+	@$$(call cross_tool,$(1),size) -t $$< | tail -1 | awk '{printf "   text %s  data %s  bss %s  (bytes, whole library)\n", $$$$1, $$$$2, $$$$3}'
+	@if $$(call cross_tool,$(1),nm) -u $$< | grep -E '^ *U ($$(HEAP_SYMS))$$$$'; then \
 	  echo "cross-$(1): libtrk references heap/stdio/abort symbols"; exit 1; fi
-	@if $$(TARGET_$(1)_CC:gcc=nm) -u $$< | grep -E '__aeabi_(d|f2d|dadd|dmul|ddiv)' >/dev/null && [ "$(1)" = cortex-m4f ]; then \
-	  echo "cross-$(1): float build pulls in soft-double helpers:"; $$(TARGET_$(1)_CC:gcc=nm) -A -u $$< | grep -E '__aeabi_(d|f2d)'; exit 1; fi
+	@if [ "$$(TARGET_$(1)_FLOAT)" = 1 ] && $$(call cross_tool,$(1),nm) -u $$< | \
+	    grep -E '^ *U (($$(SOFT_DOUBLE_RE))|($$(DOUBLE_LIBM_RE)))$$$$' >/dev/null; then \
+	  echo "cross-$(1): float build pulls in soft-double helpers or double libm functions:"; \
+	  $$(call cross_tool,$(1),nm) -A -u $$< | grep -E ' U (($$(SOFT_DOUBLE_RE))|($$(DOUBLE_LIBM_RE)))$$$$'; exit 1; fi
+	@if [ "$$(TARGET_$(1)_FLOAT)" = 1 ] && $$(call cross_tool,$(1),nm) -A -u $$< | grep -E ' U ($$(INDIRECT_SOFT_DOUBLE_RE))$$$$'; then \
+	  echo "   WARNING cross-$(1): float -> int64 conversion above pulls libgcc's soft-double code into a firmware image"; \
+	  [ "$$(CROSS_F2LZ_FATAL)" != 1 ] || exit 1; fi
+	@echo "   nm: no heap/stdio/abort symbol$$(if $$(TARGET_$(1)_FLOAT),$$(comma) no soft-double or double libm)"
 endef
-$(foreach t,$(CROSS_TARGETS),$(eval $(call CROSS_template,$(t))))
+comma := ,
+$(foreach t,$(CROSS_TARGETS_KNOWN),$(eval $(call CROSS_template,$(t))))
 
-.PHONY: cross $(addprefix cross-,$(CROSS_TARGETS))
+.PHONY: cross cross-sizeopt $(addprefix cross-,$(CROSS_TARGETS_KNOWN))
 cross: $(addprefix cross-,$(CROSS_TARGETS))
+	@$(if $(HAVE_RISCV),,echo "== riscv: skipped ($(RISCV_CC) or $(NEWLIB_INC)/math.h not found; apt-get install gcc-riscv64-unknown-elf)")
+
+cross-sizeopt: cross-cortex-m4f-inline cross-cortex-m4f-sizeopt

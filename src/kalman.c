@@ -50,8 +50,11 @@ trk_status trk_kalman_predict(int nx, const trk_real *f, const trk_real *q, trk_
     if (!dims_ok(nx, 1) || !f || !q || !x || !p) return TRK_E_ARG;
     for (int i = 0; i < nx; i++) xn[i] = x[i];
     for (int i = 0; i < nx * nx; i++) pn[i] = p[i];
-    if (nx == TRK_CV2_NX) trk_i_predict(TRK_CV2_NX, f, q, xn, pn); /* unrolled */
-    else trk_i_predict(nx, f, q, xn, pn);
+#if !TRK_SIZE_OPT
+    if (nx == TRK_CV2_NX) trk_i_predict(TRK_CV2_NX, f, q, xn, pn); /* unrolled copy (speed) */
+    else
+#endif
+        trk_i_predict(nx, f, q, xn, pn);
     if (!all_finite(nx, xn) || !all_finite(nx * nx, pn)) return TRK_E_NAN;
     for (int i = 0; i < nx; i++) x[i] = xn[i];
     for (int i = 0; i < nx * nx; i++) p[i] = pn[i];

@@ -101,7 +101,9 @@ trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h, 
     if (log_lr)
         for (size_t i = 0; i < m; i++)
             if (!isfinite(log_lr[i])) return TRK_E_NAN;
+#if !TRK_SIZE_OPT /* a copy unrolled for the CV model (speed); size builds keep one */
     if (nx == TRK_CV2_NX && nz == TRK_CV2_NZ)
         return pda_update(pda, TRK_CV2_NX, TRK_CV2_NZ, h, r, x, p, m, z, log_lr, beta, d2, rep);
+#endif
     return pda_update(pda, nx, nz, h, r, x, p, m, z, log_lr, beta, d2, rep);
 }

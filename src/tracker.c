@@ -19,38 +19,38 @@ static const int cv2_sel[NZ] = {0, 2};
 
 void trk_tracker_default_params(struct trk_tracker_params *p)
 {
-    struct trk_tracker_params d = {0};
-    d.n_sensors = 1;
-    d.sensor[0].pd = TRK_REAL_C(0.9);
-    d.sensor[0].meas_cov_m2[0] = 1;
-    d.sensor[0].meas_cov_m2[1] = 0;
-    d.sensor[0].meas_cov_m2[2] = 1;
-    d.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
-    d.process_noise_q = TRK_REAL_C(0.01);
-    d.gate_prob = TRK_REAL_C(0.99);
-    d.clutter = TRK_CLUTTER_PARAMETRIC;
-    d.init_speed_sigma_mps = 5;
-    d.max_dt_s = 3600;
-    d.confirm.method = TRK_CONFIRM_MN;
-    d.confirm.u.mn.m = 3;
-    d.confirm.u.mn.n = 5;
-    d.confirm.u.mn.mode = TRK_MN_FIXED;
-    d.term.method = TRK_TERM_KN;
-    d.term.u.kn.k = 0;
-    d.term.u.kn.n = 5;
-    d.max_tentative_scans = 0;
-    d.merge_gate_d2 = 4;
-    d.init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
+    /* filled in place: a local copy would put ~1 KB on a firmware stack */
+    memset(p, 0, sizeof *p);
+    p->n_sensors = 1;
+    p->sensor[0].pd = TRK_REAL_C(0.9);
+    p->sensor[0].meas_cov_m2[0] = 1;
+    p->sensor[0].meas_cov_m2[1] = 0;
+    p->sensor[0].meas_cov_m2[2] = 1;
+    p->sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
+    p->process_noise_q = TRK_REAL_C(0.01);
+    p->gate_prob = TRK_REAL_C(0.99);
+    p->clutter = TRK_CLUTTER_PARAMETRIC;
+    p->init_speed_sigma_mps = 5;
+    p->max_dt_s = 3600;
+    p->confirm.method = TRK_CONFIRM_MN;
+    p->confirm.u.mn.m = 3;
+    p->confirm.u.mn.n = 5;
+    p->confirm.u.mn.mode = TRK_MN_FIXED;
+    p->term.method = TRK_TERM_KN;
+    p->term.u.kn.k = 0;
+    p->term.u.kn.n = 5;
+    p->max_tentative_scans = 0;
+    p->merge_gate_d2 = 4;
+    p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
                                                               detections */
-    d.track_visibility = 1; /* Kennedy's Table 1 style IPDA parameters */
-    d.visibility.pv0 = TRK_REAL_C(0.5);
-    d.visibility.pcv0 = TRK_REAL_C(0.5);
-    d.visibility.delta_stay = TRK_REAL_C(0.99);
-    d.visibility.delta_become = TRK_REAL_C(0.01);
-    d.visibility.omega_c = TRK_REAL_C(0.75);
-    d.visibility.p_con = TRK_REAL_C(0.9);
-    d.visibility.p_term = TRK_REAL_C(0.1);
-    *p = d;
+    p->track_visibility = 1; /* Kennedy's Table 1 style IPDA parameters */
+    p->visibility.pv0 = TRK_REAL_C(0.5);
+    p->visibility.pcv0 = TRK_REAL_C(0.5);
+    p->visibility.delta_stay = TRK_REAL_C(0.99);
+    p->visibility.delta_become = TRK_REAL_C(0.01);
+    p->visibility.omega_c = TRK_REAL_C(0.75);
+    p->visibility.p_con = TRK_REAL_C(0.9);
+    p->visibility.p_term = TRK_REAL_C(0.1);
 }
 
 /* [xx, xy, yy] -> 2x2 matrix; TRK_E_NAN / TRK_E_NOT_SPD. */
@@ -122,7 +122,12 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
         for (int i = 0; i < NZ * NZ; i++) t->r[s][i] = r[s][i];
     }
     t->last_time_us = 0;
-    t->max_dt_us = (int64_t)(p->max_dt_s * TRK_REAL_C(1e6));
+    {   /* seconds (<= 1e9) to microseconds with 32-bit conversions only: a
+         * float -> int64 conversion is soft double on Cortex-M (__aeabi_f2lz) */
+        const trk_real whole = trk_floor(p->max_dt_s);
+        t->max_dt_us = (int64_t)(int32_t)whole * 1000000 +
+                       (int64_t)(int32_t)((p->max_dt_s - whole) * TRK_REAL_C(1e6));
+    }
     t->has_time = 0;
     t->next_id = 1;
     t->n_live = 0;

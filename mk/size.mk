@@ -1,0 +1,121 @@
+# size.mk - footprint report of the cross builds: make size-report
+#
+#   make size-report    builds the cross targets (mk/cross.mk) and prints
+#                       - .text/.rodata/.data/.bss per module and target
+#                       - sizeof(struct trk_tracker) at the default and a small
+#                         configuration (TRK_MAX_TRACKS=8, TRK_MAX_DETECTIONS=32,
+#                         TRK_MAX_SENSORS=2), per target
+#                       - worst-case stack depth of every public function
+#                       - what a typical firmware image links (tools/scripts/
+#                         fw_footprint.c: tracker + amplitude from a ROM table,
+#                         --gc-sections), per library (libtrk, libm, libc, libgcc)
+#                       - the goals of issue 9 (M4F .text <= 32 KB, RAM for 64
+#                         tracks x 256 detections <= 64 KB, stack <= 2 KB)
+#   make size-check     (part of make test) fails when, on cortex-m4f:
+#                       - libtrk has static data (.data/.bss: no global state)
+#                       - the worst stack of trk_tracker_process_scan exceeds
+#                         STACK_LIMIT (2048)
+#                       - sizeof(struct trk_tracker) + a scan of
+#                         TRK_MAX_DETECTIONS detections + that stack exceed
+#                         RAM_LIMIT (65536) at the default capacities
+#                       - the libtrk code a typical firmware image links
+#                         (fw_footprint.c) exceeds TEXT_LIMIT (32768)
+#                       The whole library's .text is reported, not gated: it
+#                       includes design-time analysis code (q2, MRE, CRLB, ROC
+#                       optimisation) that firmware does not link.
+#
+# Stack method (tools/scripts/stack_ci.awk, stack_elf.awk):
+#   1. every cross object is compiled with -fstack-usage -fcallgraph-info=su:
+#      gcc writes each function's own frame (.su) and the calls that survived
+#      optimisation (.ci);
+#   2. ARM targets: the whole libtrk.a is linked with newlib-nano and libm
+#      (tools/scripts/probe_main.c, probe.elf, never run); stack_elf.awk reads
+#      its disassembly (push/vpush/sub sp per function, bl/tail-call edges)
+#      and gives the worst depth of each libm/libc/libgcc function libtrk calls;
+#   3. stack_ci.awk sums own frame + deepest callee over the library's call
+#      graph, with the numbers of step 2 for external callees.
+#   Limits: recursion and calls through function pointers are flagged, not
+#   bounded; a preempting interrupt's own stack and exception frame are not
+#   included; the riscv build has no C library to link, so its figures are
+#   libtrk's own frames only. stack_elf.awk applied to libtrk's own functions
+#   gives the same numbers as step 3 (a cross-check, see the README).
+
+SIZE_SMALL_DEFS := -DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2
+STACK_LIMIT ?= 2048
+TEXT_LIMIT ?= 32768
+RAM_LIMIT ?= 65536
+SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
+TARGET_cortex-m4f_ARCH := arm
+TARGET_cortex-m4f-O2_ARCH := arm
+TARGET_cortex-m7d_ARCH := arm
+TARGET_cortex-m7d-O2_ARCH := arm
+TARGET_cortex-m4f-inline_ARCH := arm
+TARGET_cortex-m4f-sizeopt_ARCH := arm
+TARGET_riscv_ARCH := riscv
+
+define SIZE_template
+build/cross/$(1)/size-A.txt: build/cross/$(1)/libtrk.a
+	$$(call cross_tool,$(1),size) -A $$< > $$@.tmp && mv $$@.tmp $$@
+build/cross/$(1)/sizeof-default.txt: tools/scripts/sizeof_probe.c $$(wildcard include/trk/*.h) mk/size.mk
+	@mkdir -p $$(@D)
+	$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) -c $$< -o $$(@:.txt=.o)
+	$$(call cross_tool,$(1),nm) -S $$(@:.txt=.o) > $$@
+build/cross/$(1)/sizeof-small.txt: tools/scripts/sizeof_probe.c $$(wildcard include/trk/*.h) mk/size.mk
+	@mkdir -p $$(@D)
+	$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) $$(SIZE_SMALL_DEFS) -c $$< -o $$(@:.txt=.o)
+	$$(call cross_tool,$(1),nm) -S $$(@:.txt=.o) > $$@
+ifeq ($$(TARGET_$(1)_ARCH),arm)
+build/cross/$(1)/probe.elf: build/cross/$(1)/libtrk.a tools/scripts/probe_main.c
+	$$(TARGET_$(1)_CC) $$(TARGET_$(1)_CFLAGS) --specs=nano.specs --specs=nosys.specs tools/scripts/probe_main.c \
+	  -Wl,--whole-archive $$< -Wl,--no-whole-archive -lm -o $$@
+build/cross/$(1)/fw-footprint.txt: build/cross/$(1)/libtrk.a tools/scripts/fw_footprint.c tools/scripts/map_sum.awk
+	$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) -ffunction-sections --specs=nano.specs --specs=nosys.specs \
+	  -Wl,--gc-sections -Wl,-Map=build/cross/$(1)/fw-footprint.map tools/scripts/fw_footprint.c $$< -lm \
+	  -o build/cross/$(1)/fw-footprint.elf
+	awk -f tools/scripts/map_sum.awk build/cross/$(1)/fw-footprint.map > $$@
+build/cross/$(1)/stack-extern.txt: build/cross/$(1)/probe.elf tools/scripts/stack_elf.awk
+	$$(call cross_tool,$(1),objdump) -d --no-show-raw-insn $$< | awk -f tools/scripts/stack_elf.awk > $$@.tmp && mv $$@.tmp $$@
+else
+build/cross/$(1)/stack-extern.txt: build/cross/$(1)/libtrk.a
+	: > $$@
+build/cross/$(1)/fw-footprint.txt: build/cross/$(1)/libtrk.a
+	: > $$@
+endif
+build/cross/$(1)/stack.txt: build/cross/$(1)/libtrk.a build/cross/$(1)/stack-extern.txt tools/scripts/stack_ci.awk
+	awk -v EXTERN=build/cross/$(1)/stack-extern.txt -v ROOTS=public -f tools/scripts/stack_ci.awk \
+	  $$(patsubst %.o,%.ci,$$(CROSS_OBJ_$(1))) | sort > $$@.tmp && mv $$@.tmp $$@
+size-files-$(1): build/cross/$(1)/size-A.txt build/cross/$(1)/sizeof-default.txt \
+  build/cross/$(1)/sizeof-small.txt build/cross/$(1)/stack.txt build/cross/$(1)/fw-footprint.txt
+endef
+$(foreach t,$(CROSS_TARGETS_KNOWN),$(eval $(call SIZE_template,$(t))))
+
+.PHONY: size-report size-check $(addprefix size-files-,$(CROSS_TARGETS_KNOWN))
+size-report: cross
+	@$(MAKE) --no-print-directory $(addprefix size-files-,$(CROSS_TARGETS)) >/dev/null
+	@sh tools/scripts/size_report.sh build/cross $(CROSS_TARGETS)
+
+size-check: cross-cortex-m4f size-files-cortex-m4f
+	@awk '/^\.s?(data|bss)/ && $$2 > 0 { print "size-check: static data in libtrk: " $$0; bad = 1 } END { exit bad }' \
+	  build/cross/cortex-m4f/size-A.txt
+	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) ' \
+	  function hex(s,   i, v) { v = 0; s = tolower(s); for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v } \
+	  FILENAME ~ /stack.txt$$/ { split($$0, f, "\t"); if (f[1] == "trk_tracker_process_scan") { st = f[2] + 0; path = f[5] } next } \
+	  FILENAME ~ /sizeof-default/ && NF == 4 { sz[$$4] = hex($$2); next } \
+	  FILENAME ~ /fw-footprint/ && $$1 == "libtrk" { fw = $$2 + 0; next } \
+	  END { bad = 0; \
+	    if (st == "") { print "size-check: no stack figure for trk_tracker_process_scan"; exit 1 } \
+	    ram = sz["trk_sizeof_tracker"] + sz["trk_sizeof_scan_detections"] + st; \
+	    printf "size-check cortex-m4f: stack of trk_tracker_process_scan %d B (limit %d)\n", st, slim; \
+	    printf "size-check cortex-m4f: RAM for the default capacities %d B = tracker %d + scan %d + stack %d (limit %d)\n", \
+	      ram, sz["trk_sizeof_tracker"], sz["trk_sizeof_scan_detections"], st, rlim; \
+	    printf "size-check cortex-m4f: libtrk .text in a typical firmware image %d B (limit %d); no .data/.bss\n", fw, tlim; \
+	    if (st > slim) { print "size-check: FAILED stack, worst path: " path; bad = 1 } \
+	    if (ram > rlim) { print "size-check: FAILED RAM"; bad = 1 } \
+	    if (fw > tlim) { print "size-check: FAILED .text"; bad = 1 } \
+	    exit bad }' build/cross/cortex-m4f/stack.txt build/cross/cortex-m4f/sizeof-default.txt \
+	  build/cross/cortex-m4f/fw-footprint.txt
+
+# The Makefile expands test-extra's prerequisites before mk/*.mk is read,
+# so TEST_EXTRA += alone would not register the step: name it directly too.
+TEST_EXTRA += size-check
+test-extra: size-check
