@@ -34,7 +34,7 @@ expect_refusal "gate_prob" --gate_prob 2
 expect_refusal "unknown setting" --no-such-setting 1
 expect_refusal "confirm.mn" --confirm.mn.m 9
 expect_refusal "term = page" --term page --hmm.p_low_high 0 --hmm.q_high_low 0
-expect_refusal "amplitude" --sensor.0.amplitude rayleigh
+expect_refusal "amp_table" --sensor.0.amplitude k   # K clutter needs a table
 expect_refusal "cannot open" --q2_table "$T/missing.tbl"
 head -c 300 /dev/urandom > "$T/junk.tbl"
 expect_refusal "TRK_E_TABLE" --sensor.0.amp_table "$T/junk.tbl"
