@@ -27,11 +27,7 @@ static unsigned char *build(int model, double nu, double snr_db, double pfa, int
                             uint32_t llr_size, int measure, struct amp_table_result *r)
 {
     struct amp_table_opts o;
-    memset(&o, 0, sizeof o);
-    o.model = model;
-    o.nu = nu;
-    o.snr_db = snr_db;
-    o.pfa = pfa;
+    amp_table_opts_init(&o, model, nu, snr_db, pfa);
     o.grid = grid;
     o.size = size;
     o.llr_size = llr_size;

@@ -20,6 +20,7 @@
 #include <lcm/lcm.h>
 
 #include "bridge.h"
+#include "fileio.h"
 #include "lcm_log.h"
 #include "scenario.h"
 #include "transport.h"
@@ -499,15 +500,8 @@ static void write_input_log(const char *path, int with_bad)
 
 static uint8_t *read_file(const char *path, size_t *len)
 {
-    FILE *f = fopen(path, "rb");
-    assert_non_null(f);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    uint8_t *b = malloc((size_t)n + 1);
-    assert_int_equal(fread(b, 1, (size_t)n, f), (size_t)n);
-    fclose(f);
-    *len = (size_t)n;
+    uint8_t *b = fileio_read(path, len);
+    assert_non_null(b);
     return b;
 }
 

@@ -1,6 +1,7 @@
 /* test_vectors.c - the reference vectors of ../shared/vectors through the
  * same parser and checker as trk-vectors, and proof that the checks can fail:
  * a wrong value, a missing input, an unknown kind and malformed files. */
+#include "fileio.h"
 #include "trk_test.h"
 #include "trk/types.h"
 #include "vec.h"
@@ -51,23 +52,6 @@ static int run_text(const char *text, size_t len, struct tally *t, int verbose)
     return r < 0 ? -1 : 0;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return NULL;
-    fseek(fp, 0, SEEK_END);
-    long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);
-    if (buf && fread(buf, 1, (size_t)n, fp) != (size_t)n) {
-        free(buf);
-        buf = NULL;
-    }
-    fclose(fp);
-    *len = (size_t)n;
-    return buf;
-}
-
 /* Every implemented kind in every shared file passes. */
 static void test_shared_vectors(void **state)
 {
@@ -79,7 +63,7 @@ static void test_shared_vectors(void **state)
         char path[512];
         snprintf(path, sizeof path, "%s/%s", trk_test_vectors_dir(), files[i]);
         size_t len;
-        char *buf = slurp(path, &len);
+        char *buf = fileio_read(path, &len);
         if (!buf) continue;
         found++;
         assert_int_equal(run_text(buf, len, &t, 1), 0);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "table_writer.h"
+#include "trk/table.h"
 
 /* ------------------------------------------------------------------ direct */
 
@@ -371,4 +372,36 @@ out:
     free(xs[0]);
     free(xs[1]);
     return rc;
+}
+
+void amp_table_opts_init(struct amp_table_opts *o, int model, double nu, double snr_db, double pfa)
+{
+    memset(o, 0, sizeof *o);
+    o->model = model;
+    o->nu = nu;
+    o->snr_db = snr_db;
+    o->pfa = pfa;
+}
+
+int amp_table_model(const struct amp_table_opts *o, struct trk_amplitude *m, struct amp_table_result *r,
+                    char *err, size_t errlen)
+{
+    const char *name = o->model == TRK_AMP_K ? "K" : "Rayleigh";
+    char e2[256];
+    if (amp_table_build(o, r, e2, sizeof e2) != 0) {
+        snprintf(err, errlen, "%s amplitude table (nu %g, snr %g dB, pfa %g): %s", name, o->nu, o->snr_db, o->pfa,
+                 e2);
+        return -1;
+    }
+    struct trk_table t;
+    trk_status st = trk_table_parse(&t, r->bytes, r->len);
+    if (st == TRK_OK) st = trk_amplitude_init_table(m, &t);
+    if (st != TRK_OK) {
+        snprintf(err, errlen, "%s amplitude table (nu %g, snr %g dB, pfa %g) refused by the library: %s", name,
+                 o->nu, o->snr_db, o->pfa, trk_status_str(st));
+        free(r->bytes);
+        r->bytes = NULL;
+        return -1;
+    }
+    return 0;
 }

@@ -47,8 +47,19 @@ struct amp_table_result {
     double err_inv_sf;      /* max relative error of a(x) on [0, x_max], both curves */
 };
 
+/* *o for the law (model, nu, snr_db, pfa), every other option 0 (its default). */
+void amp_table_opts_init(struct amp_table_opts *o, int model, double nu, double snr_db, double pfa);
+
 /* 0, or -1 with a message in err. */
 int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, char *err, size_t errlen);
+
+/* The library's amplitude model on a table built in memory: amp_table_build
+ * per *o, then trk_table_parse and trk_amplitude_init_table into *m, which
+ * views r->bytes (free(r->bytes) after the last use of *m). The simulations'
+ * K models (q2_amp.h, single_target.h). 0, or -1 with a message in err
+ * (nothing left to free). */
+int amp_table_model(const struct amp_table_opts *o, struct trk_amplitude *m, struct amp_table_result *r,
+                    char *err, size_t errlen);
 
 /* Direct (reference) evaluation in amplitude units, the one the vector kinds
  * use: K from kdist, Rayleigh from the library closed forms. */

@@ -57,29 +57,12 @@ int q2_amp_init(struct q2_amp *a, int model, double nu, double snr_db, double pf
         return -1;
     }
     struct amp_table_opts o;
-    memset(&o, 0, sizeof o);
-    o.model = TRK_AMP_K;
-    o.nu = nu;
-    o.snr_db = snr_db;
-    o.pfa = pfa;
+    amp_table_opts_init(&o, TRK_AMP_K, nu, snr_db, pfa);
     o.grid = TRK_AMP_GRID_UNIFORM;
     o.size = o.llr_size = amp_size ? amp_size : Q2_AMP_TABLE_SIZE;
     o.measure = measure;
     struct amp_table_result r;
-    char e2[256];
-    if (amp_table_build(&o, &r, e2, sizeof e2) != 0) {
-        snprintf(err, errlen, "K amplitude table (nu %g, snr_db %g, pfa %g): %s", nu, snr_db, pfa, e2);
-        return -1;
-    }
-    struct trk_table t;
-    trk_status st = trk_table_parse(&t, r.bytes, r.len);
-    if (st == TRK_OK) st = trk_amplitude_init_table(&a->m, &t);
-    if (st != TRK_OK) {
-        snprintf(err, errlen, "K amplitude table (nu %g, snr_db %g, pfa %g) refused by the library: %s", nu,
-                 snr_db, pfa, trk_status_str(st));
-        free(r.bytes);
-        return -1;
-    }
+    if (amp_table_model(&o, &a->m, &r, err, errlen) != 0) return -1;
     a->table = r.bytes;
     a->nu = nu;
     a->pd = r.pd;

@@ -9,7 +9,6 @@
 
 #include <float.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +16,7 @@
 
 #include <Random123/philox.h>
 
+#include "errmsg.h"
 #include "q2_fastmath.h"
 #include "trk/gate.h"
 #include "trk/special.h"
@@ -58,17 +58,6 @@ void q2_is_parallel_for(size_t n, int threads, void (*fn)(void *ctx, size_t i), 
     (void)th;
     Q2_OMP(omp parallel for schedule(dynamic, 1) num_threads(th))
     for (size_t i = 0; i < n; i++) fn(ctx, i);
-}
-
-static int fail(char *err, size_t len, const char *fmt, ...)
-{
-    if (err && len) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, len, fmt, ap);
-        va_end(ap);
-    }
-    return -1;
 }
 
 static double now_s(void)
@@ -187,25 +176,25 @@ static int line_setup(struct line_state *ls, struct q2_is_line *L, const struct 
 {
     memset(ls, 0, sizeof *ls);
     ls->L = L;
-    if (L->nz < 1 || L->nz > 3) return fail(err, errlen, "nz must be 1, 2 or 3 (got %d)", L->nz);
+    if (L->nz < 1 || L->nz > 3) return errmsg_fail(err, errlen, "nz must be 1, 2 or 3 (got %d)", L->nz);
     if (!(L->gamma > 0 && L->gamma <= 1000))
-        return fail(err, errlen, "gamma must be in (0, 1000] (got %g)", L->gamma);
+        return errmsg_fail(err, errlen, "gamma must be in (0, 1000] (got %g)", L->gamma);
     if (L->n_cells < 1 || !L->lambda_vg || !L->q2)
-        return fail(err, errlen, "a line needs cells, lambda_vg and q2 arrays");
-    if (!L->pd && !L->amp) return fail(err, errlen, "a PDAF line needs pd per cell");
+        return errmsg_fail(err, errlen, "a line needs cells, lambda_vg and q2 arrays");
+    if (!L->pd && !L->amp) return errmsg_fail(err, errlen, "a PDAF line needs pd per cell");
     if (L->amp && (!L->amp->log_lr || !(L->amp->pd > 0 && L->amp->pd <= 1)))
-        return fail(err, errlen, "amplitude sampler without log_lr or with pd outside (0, 1]");
+        return errmsg_fail(err, errlen, "amplitude sampler without log_lr or with pd outside (0, 1]");
     for (size_t k = 0; k < L->n_cells; k++) {
         double pd = L->pd ? L->pd[k] : L->amp->pd, lv = L->lambda_vg[k];
-        if (!(pd > 0 && pd <= 1)) return fail(err, errlen, "pd must be in (0, 1] (got %g)", pd);
+        if (!(pd > 0 && pd <= 1)) return errmsg_fail(err, errlen, "pd must be in (0, 1] (got %g)", pd);
         if (!(lv > 0 && lv <= Q2_IS_MAX_LAMBDA_VG))
-            return fail(err, errlen, "lambda_vg must be in (0, %g] (got %g)", Q2_IS_MAX_LAMBDA_VG,
-                        lv);
+            return errmsg_fail(err, errlen, "lambda_vg must be in (0, %g] (got %g)", Q2_IS_MAX_LAMBDA_VG,
+                               lv);
     }
     ls->F = (double)trk_chi2_cdf(L->nz + 2, (trk_real)L->gamma);
     if (!(ls->F >= 1e-3))
-        return fail(err, errlen, "gate too small: F_%d(gamma = %g) = %g < 1e-3", L->nz + 2,
-                    L->gamma, ls->F);
+        return errmsg_fail(err, errlen, "gate too small: F_%d(gamma = %g) = %g < 1e-3", L->nz + 2,
+                           L->gamma, ls->F);
     ls->half_gamma = 0.5 * L->gamma;
     ls->ymin = exp(-0.5 * L->gamma);
     ls->stream = L->stream;
@@ -219,7 +208,7 @@ static int line_setup(struct line_state *ls, struct q2_is_line *L, const struct 
     ls->cell_n = calloc(nc, sizeof *ls->cell_n);
     if (!lo || !hi || !lwmode || !ls->pdF || !ls->se || !ls->cell_n) {
         free(lo), free(hi), free(lwmode);
-        return fail(err, errlen, "out of memory");
+        return errmsg_fail(err, errlen, "out of memory");
     }
     int nmax = 0;
     for (size_t k = 0; k < nc; k++) {
@@ -250,7 +239,7 @@ static int line_setup(struct line_state *ls, struct q2_is_line *L, const struct 
         !ls->m2) {
         free(lo), free(hi), free(lwmode);
         line_free(ls);
-        return fail(err, errlen, "out of memory");
+        return errmsg_fail(err, errlen, "out of memory");
     }
     size_t r = 0;
     int s = 0;
@@ -799,27 +788,27 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
               size_t errlen)
 {
     if (err && errlen) err[0] = 0;
-    if (!lines || !opt || n_lines == 0) return fail(err, errlen, "no lines");
+    if (!lines || !opt || n_lines == 0) return errmsg_fail(err, errlen, "no lines");
     if (opt->samples < 2 || opt->samples > 0xffffffffu)
-        return fail(err, errlen, "samples must be in [2, 4294967295] (got %llu)",
-                    (unsigned long long)opt->samples);
+        return errmsg_fail(err, errlen, "samples must be in [2, 4294967295] (got %llu)",
+                           (unsigned long long)opt->samples);
     if (!(opt->target_se >= 0 && opt->target_se < 1))
-        return fail(err, errlen, "target se must be in [0, 1) (got %g)", opt->target_se);
+        return errmsg_fail(err, errlen, "target se must be in [0, 1) (got %g)", opt->target_se);
     if (!(opt->tail_mass >= 0 && opt->tail_mass <= 1e-2))
-        return fail(err, errlen, "tail mass must be in [0, 0.01] (got %g)", opt->tail_mass);
+        return errmsg_fail(err, errlen, "tail mass must be in [0, 0.01] (got %g)", opt->tail_mass);
     const double tail = opt->tail_mass > 0 ? opt->tail_mass : 1e-12;
     const int threads = q2_is_threads(opt->threads);
     philox4x32_key_t key = {{(uint32_t)opt->seed, (uint32_t)(opt->seed >> 32)}};
 
     struct line_state *ls = calloc(n_lines, sizeof *ls);
-    if (!ls) return fail(err, errlen, "out of memory");
+    if (!ls) return errmsg_fail(err, errlen, "out of memory");
     int rc = 0;
     int max_n = 0;
     uint64_t planned = 0;
     for (size_t l = 0; l < n_lines && rc == 0; l++) {
         char e2[200];
         if (line_setup(&ls[l], &lines[l], opt, tail, e2, sizeof e2)) {
-            rc = fail(err, errlen, "line %zu: %s", l, e2);
+            rc = errmsg_fail(err, errlen, "line %zu: %s", l, e2);
             break;
         }
         for (int s = 0; s < ls[l].n_strata; s++) {
@@ -867,7 +856,7 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
                         cap = cap ? 2 * cap : 256;
                         struct item *ni = realloc(items, cap * sizeof *ni);
                         if (!ni) {
-                            rc = fail(err, errlen, "out of memory");
+                            rc = errmsg_fail(err, errlen, "out of memory");
                             break;
                         }
                         items = ni;
@@ -884,7 +873,7 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
         free(part);
         part = malloc((part_len ? part_len : 1) * sizeof *part);
         if (!part) {
-            rc = fail(err, errlen, "out of memory");
+            rc = errmsg_fail(err, errlen, "out of memory");
             break;
         }
         /* execution order: costliest first (longest-processing-time first keeps
@@ -893,7 +882,7 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
          * changes no bit */
         struct order *order = malloc(n_items * sizeof *order);
         if (!order) {
-            rc = fail(err, errlen, "out of memory");
+            rc = errmsg_fail(err, errlen, "out of memory");
             break;
         }
         for (size_t i = 0; i < n_items; i++) {
@@ -947,16 +936,16 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
         }
         free(order);
         if (failed == 1) {
-            rc = fail(err, errlen, "out of memory");
+            rc = errmsg_fail(err, errlen, "out of memory");
             break;
         }
         if (failed == 2) {
-            rc = fail(err, errlen, "target radius rejection did not accept in %u draws", MAX_RETRY);
+            rc = errmsg_fail(err, errlen, "target radius rejection did not accept in %u draws", MAX_RETRY);
             break;
         }
         if (failed == 3) {
-            rc = fail(err, errlen, "the amplitude model refused a sample (%s)",
-                      ls[0].L->amp ? ls[0].L->amp->name : "?");
+            rc = errmsg_fail(err, errlen, "the amplitude model refused a sample (%s)",
+                             ls[0].L->amp ? ls[0].L->amp->name : "?");
             break;
         }
         /* merge in item order (fixed), then decide per line */

@@ -3,11 +3,11 @@
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "errmsg.h"
 #include "q2_amp.h"
 #include "progress.h"
 #include "q2_is.h"
@@ -20,17 +20,6 @@
 #ifdef _OPENMP
 #include <omp.h>
 #endif
-
-static int fail(char *err, size_t n, const char *fmt, ...)
-{
-    if (err && n) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, n, fmt, ap);
-        va_end(ap);
-    }
-    return -1;
-}
 
 
 /* ---- grid syntax ---- */
@@ -169,21 +158,21 @@ static int check_axis(const struct q2_table_axis *a, const char *name, int log_a
         return -1;
     }
     if (!a->nodes) {
-        if (!isfinite(a->lo) || !isfinite(a->hi)) return fail(err, n, "%s axis: range is not finite", name);
-        if (a->n > 1 && !(a->hi > a->lo)) return fail(err, n, "%s axis: the range must increase", name);
-        if (a->n == 1 && a->hi != a->lo) return fail(err, n, "%s axis: one node needs lo = hi", name);
-        if (log_axis && !(a->lo > 0)) return fail(err, n, "%s axis: a log axis needs lo > 0", name);
+        if (!isfinite(a->lo) || !isfinite(a->hi)) return errmsg_fail(err, n, "%s axis: range is not finite", name);
+        if (a->n > 1 && !(a->hi > a->lo)) return errmsg_fail(err, n, "%s axis: the range must increase", name);
+        if (a->n == 1 && a->hi != a->lo) return errmsg_fail(err, n, "%s axis: one node needs lo = hi", name);
+        if (log_axis && !(a->lo > 0)) return errmsg_fail(err, n, "%s axis: a log axis needs lo > 0", name);
     }
     double prev = 0;
     for (size_t i = 0; i < a->n; i++) {
         const double v = q2_table_node(a, log_axis, i);
-        if (!isfinite(v)) return fail(err, n, "%s axis: node not finite", name);
+        if (!isfinite(v)) return errmsg_fail(err, n, "%s axis: node not finite", name);
         if ((open_lo ? !(v > min) : !(v >= min)) || (open_hi ? !(v < max) : !(v <= max))) {
             snprintf(err, n, "%s axis: node %.10g outside %s%g, %g%s", name, v, open_lo ? "(" : "[", min, max,
                      open_hi ? ")" : "]");
             return -1;
         }
-        if (i > 0 && !(v > prev)) return fail(err, n, "%s axis: nodes must increase strictly", name);
+        if (i > 0 && !(v > prev)) return errmsg_fail(err, n, "%s axis: nodes must increase strictly", name);
         prev = v;
     }
     return 0;
@@ -231,9 +220,9 @@ static int serialise(const struct q2_table_spec *s, const struct q2_table_run *r
         bad = table_axis(&s->pd, 0, TRK_TABLE_VAR_PD, &ax[0]) ||
               table_axis(&s->lambda_vg, 1, TRK_TABLE_VAR_LAMBDA_VG, &ax[1]);
     }
-    if (bad) return fail(err, errlen, "pfa and lambda_vg axes must be log-spaced ranges");
+    if (bad) return errmsg_fail(err, errlen, "pfa and lambda_vg axes must be log-spaced ranges");
     struct tablew *w = tablew_new(kind, TRK_Q2_TABLE_VERSION, rs);
-    if (!w) return fail(err, errlen, "out of memory");
+    if (!w) return errmsg_fail(err, errlen, "out of memory");
     bad = tablew_param_int(w, "detector", s->detector) || tablew_param_int(w, "nz", s->nz) ||
           tablew_param_real(w, "gate_gamma", s->gate_gamma) ||
           tablew_param_real(w, "gate_prob", q2_gate_prob(s->nz, s->gate_gamma)) ||
@@ -329,30 +318,30 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
 {
     memset(res, 0, sizeof *res);
     if (err && errlen) err[0] = 0;
-    if (!s || !r) return fail(err, errlen, "no spec");
+    if (!s || !r) return errmsg_fail(err, errlen, "no spec");
     const int ai = s->detector == TRK_Q2_PDAFAI;
-    if (s->detector != TRK_Q2_PDAF && !ai) return fail(err, errlen, "detector must be pdaf or pdafai");
-    if (s->nz < 1 || s->nz > 3) return fail(err, errlen, "nz must be 1, 2 or 3 (got %d)", s->nz);
+    if (s->detector != TRK_Q2_PDAF && !ai) return errmsg_fail(err, errlen, "detector must be pdaf or pdafai");
+    if (s->nz < 1 || s->nz > 3) return errmsg_fail(err, errlen, "nz must be 1, 2 or 3 (got %d)", s->nz);
     if (!(s->gate_gamma > 0 && s->gate_gamma <= 1000))
-        return fail(err, errlen, "gate gamma must be in (0, 1000] (got %g)", s->gate_gamma);
+        return errmsg_fail(err, errlen, "gate gamma must be in (0, 1000] (got %g)", s->gate_gamma);
     const uint32_t rs = s->real_size ? s->real_size : (uint32_t)sizeof(trk_real);
-    if (rs != 4 && rs != 8) return fail(err, errlen, "real width must be 4 or 8 bytes");
+    if (rs != 4 && rs != 8) return errmsg_fail(err, errlen, "real width must be 4 or 8 bytes");
     if (r->samples < 2 || r->samples > 0xffffffffu)
-        return fail(err, errlen, "samples must be in [2, 4294967295]");
+        return errmsg_fail(err, errlen, "samples must be in [2, 4294967295]");
     if (!(r->target_se >= 0 && r->target_se < 1))
-        return fail(err, errlen, "target se must be in [0, 1) (got %g)", r->target_se);
+        return errmsg_fail(err, errlen, "target se must be in [0, 1) (got %g)", r->target_se);
     /* axes: the container needs >= 2 nodes on every axis of a table */
     if (check_axis(&s->lambda_vg, "lambda_vg", 1, 0, Q2_IS_MAX_LAMBDA_VG, 1, 0, 2, err, errlen)) return -1;
-    if (s->lambda_vg.nodes) return fail(err, errlen, "the lambda_vg axis is a log-spaced range");
+    if (s->lambda_vg.nodes) return errmsg_fail(err, errlen, "the lambda_vg axis is a log-spaced range");
     if (ai) {
         if (s->amp_model != TRK_AMP_RAYLEIGH && s->amp_model != TRK_AMP_K)
-            return fail(err, errlen, "amplitude model must be rayleigh or k");
+            return errmsg_fail(err, errlen, "amplitude model must be rayleigh or k");
         if (s->amp_model == TRK_AMP_K && !(s->nu > 0 && s->nu <= 1e6))
-            return fail(err, errlen, "K shape nu must be in (0, 1e6] (got %g)", s->nu);
+            return errmsg_fail(err, errlen, "K shape nu must be in (0, 1e6] (got %g)", s->nu);
         if (check_axis(&s->snr_db, "snr_db", 0, -30, 60, 0, 0, 1, err, errlen) ||
             check_axis(&s->pfa, "pfa", 1, 0, 1, 1, 1, 2, err, errlen))
             return -1;
-        if (s->pfa.nodes) return fail(err, errlen, "the pfa axis is a log-spaced range");
+        if (s->pfa.nodes) return errmsg_fail(err, errlen, "the pfa axis is a log-spaced range");
     } else if (check_axis(&s->pd, "pd", 0, 0, 1, 1, 0, 2, err, errlen)) {
         return -1;
     }
@@ -363,7 +352,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
     /* test grid: centres of the grid cells */
     const size_t m0 = meas ? n0 - 1 : 0, m1 = ai ? (meas ? n1 - 1 : 0) : 1, mlv = meas ? nlv - 1 : 0;
     const size_t ntest = meas ? m0 * m1 * mlv : 0;
-    if (meas && (n0 < 2)) return fail(err, errlen, "the interpolation error needs >= 2 nodes per axis");
+    if (meas && (n0 < 2)) return errmsg_fail(err, errlen, "the interpolation error needs >= 2 nodes per axis");
 
     int rc = -1;
     double *lv = malloc(nlv * sizeof *lv), *lvm = malloc((nlv ? nlv : 1) * sizeof *lvm);
@@ -379,7 +368,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
     double *errs = NULL, *tse = NULL;
     char *amp_built = calloc(nmodels + 1, 1);
     if (!lv || !lvm || !q || !se || !data || !amp || !smp || !lines || !amp_built) {
-        fail(err, errlen, "out of memory");
+        errmsg_fail(err, errlen, "out of memory");
         goto out;
     }
     for (size_t j = 0; j < nlv; j++) lv[j] = q2_table_node(&s->lambda_vg, 1, j);
@@ -400,7 +389,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
         cpd = malloc((ncells + ntest) * sizeof *cpd);
         clv = malloc((ncells + ntest) * sizeof *clv);
         if (!cpd || !clv) {
-            fail(err, errlen, "out of memory");
+            errmsg_fail(err, errlen, "out of memory");
             goto out;
         }
         size_t k = 0;
@@ -421,7 +410,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
         job.msg = calloc(nmodels, sizeof *job.msg);
         if (!job.st || !job.msg) {
             free(job.st), free(job.msg);
-            fail(err, errlen, "out of memory");
+            errmsg_fail(err, errlen, "out of memory");
             goto out;
         }
         q2_is_parallel_for(nmodels, r->threads, amp_job_run, &job);
@@ -462,7 +451,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
     double sum_se = 0;
     for (size_t c = 0; c < ncells; c++) {
         if (!(q[c] >= 0 && q[c] <= 1) || !(se[c] >= 0)) {
-            fail(err, errlen, "sampler returned q2 %g outside [0, 1]", q[c]);
+            errmsg_fail(err, errlen, "sampler returned q2 %g outside [0, 1]", q[c]);
             goto out;
         }
         data[2 * c] = q[c];
@@ -477,13 +466,13 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
     if (meas) {
         struct trk_q2_lookup lk;
         if (make_lookup(s, data, ncells, &lkv, &lkn, &lk)) {
-            fail(err, errlen, "the q2 grid is refused by the library lookup");
+            errmsg_fail(err, errlen, "the q2 grid is refused by the library lookup");
             goto out;
         }
         errs = malloc(ntest * sizeof *errs);
         tse = malloc(ntest * sizeof *tse);
         if (!errs || !tse) {
-            fail(err, errlen, "out of memory");
+            errmsg_fail(err, errlen, "out of memory");
             goto out;
         }
         double e2 = 0;
@@ -502,7 +491,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
             }
             for (int d = 0; d < 3; d++) x[d] = (trk_real)xs[d];
             if (trk_q2_lookup_eval(&lk, x, &v) != TRK_OK) {
-                fail(err, errlen, "lookup at a test point failed");
+                errmsg_fail(err, errlen, "lookup at a test point failed");
                 goto out;
             }
             const double e = fabs((double)v - q[ncells + t]);

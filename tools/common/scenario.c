@@ -351,8 +351,23 @@ static struct scen_field_point *around_targets(const struct scenario *s, size_t 
     return pts;
 }
 
-static void fill(const struct scenario *s, struct trk_detection *d, double x, double y)
+/* Appends a detection at (x, y) with an amplitude of target tg (NULL:
+ * clutter) drawn from r: 1, or 0 when the draw failed (counted) or det[] is
+ * full (counted in *dropped). */
+static size_t add_detection(struct scenario *s, const struct amp_target *tg, struct rng *r, double x, double y,
+                            struct trk_detection *det, size_t max_det, size_t *n, size_t *dropped)
 {
+    double a = 0;
+    const int has_a = s->amp.kind != AMP_NONE;
+    if (has_a && amp_draw(&s->amp, tg, r, &a) != 0) {
+        s->n_amp_failures++;
+        return 0;
+    }
+    if (*n == max_det) {
+        (*dropped)++;
+        return 0;
+    }
+    struct trk_detection *d = &det[(*n)++];
     const double var = s->p.meas_sigma_m * s->p.meas_sigma_m;
     memset(d, 0, sizeof *d);
     d->x_m = (trk_real)x;
@@ -362,6 +377,9 @@ static void fill(const struct scenario *s, struct trk_detection *d, double x, do
         d->cov_m2[0] = d->cov_m2[2] = (trk_real)var;
         d->cov_m2[1] = 0;
     }
+    d->has_amplitude = (uint8_t)has_a;
+    d->amplitude = (trk_real)a;
+    return 1;
 }
 
 void scen_next(struct scenario *s, struct trk_detection *det, size_t max_det, struct trk_scan *scan,
@@ -377,21 +395,7 @@ void scen_next(struct scenario *s, struct trk_detection *det, size_t max_det, st
         if (!rng_bernoulli(&r, t->high ? t->pd : s->p.fluct_pd_low)) continue;
         if (t->end_scan > 0 && s->k >= (uint64_t)t->end_scan) continue; /* gone */
         const double x = t->x[0] + sg * rng_normal(&r), y = t->x[2] + sg * rng_normal(&r);
-        double a = 0;
-        int has_a = s->amp.kind != AMP_NONE;
-        if (has_a && amp_draw(&s->amp, &t->amp, &r, &a) != 0) {
-            s->n_amp_failures++;
-            continue;
-        }
-        if (n == max_det) {
-            dropped++;
-            continue;
-        }
-        fill(s, &det[n], x, y);
-        det[n].has_amplitude = (uint8_t)has_a;
-        det[n].amplitude = (trk_real)a;
-        n++;
-        nt++;
+        nt += add_detection(s, &t->amp, &r, x, y, det, max_det, &n, &dropped);
     }
     const double area = (s->p.x_max_m - s->p.x_min_m) * (s->p.y_max_m - s->p.y_min_m);
     size_t n_around = 0;
@@ -409,20 +413,7 @@ void scen_next(struct scenario *s, struct trk_detection *det, size_t max_det, st
             x = s->p.x_min_m + (s->p.x_max_m - s->p.x_min_m) * rng_uniform(&r);
             y = s->p.y_min_m + (s->p.y_max_m - s->p.y_min_m) * rng_uniform(&r);
         }
-        double a = 0;
-        int has_a = s->amp.kind != AMP_NONE;
-        if (has_a && amp_draw(&s->amp, NULL, &r, &a) != 0) {
-            s->n_amp_failures++;
-            continue;
-        }
-        if (n == max_det) {
-            dropped++;
-            continue;
-        }
-        fill(s, &det[n], x, y);
-        det[n].has_amplitude = (uint8_t)has_a;
-        det[n].amplitude = (trk_real)a;
-        n++;
+        add_detection(s, NULL, &r, x, y, det, max_det, &n, &dropped);
     }
     free(around);
     /* Fisher-Yates shuffle: no target-first order */

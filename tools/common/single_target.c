@@ -33,28 +33,11 @@ int st_amp_init(struct st_amp *a, int model, double nu, double snr_db, double pf
         }
     } else if (model == TRK_AMP_K) {
         struct amp_table_opts o;
-        memset(&o, 0, sizeof o);
-        o.model = TRK_AMP_K;
-        o.nu = nu;
-        o.snr_db = snr_db;
-        o.pfa = pfa;
+        amp_table_opts_init(&o, TRK_AMP_K, nu, snr_db, pfa);
         o.grid = grid ? grid : TRK_AMP_GRID_UNIFORM;
         o.size = size;
         struct amp_table_result r;
-        char e2[256];
-        if (amp_table_build(&o, &r, e2, sizeof e2) != 0) {
-            snprintf(err, errlen, "K amplitude table (nu %g, snr %g dB, pfa %g): %s", nu, snr_db, pfa, e2);
-            return -1;
-        }
-        struct trk_table t;
-        trk_status st = trk_table_parse(&t, r.bytes, r.len);
-        if (st == TRK_OK) st = trk_amplitude_init_table(&a->m, &t);
-        if (st != TRK_OK) {
-            snprintf(err, errlen, "K amplitude table (nu %g, snr %g dB, pfa %g) refused: %s", nu, snr_db,
-                     pfa, trk_status_str(st));
-            free(r.bytes);
-            return -1;
-        }
+        if (amp_table_model(&o, &a->m, &r, err, errlen) != 0) return -1;
         a->table = r.bytes;
         a->nu = nu;
     } else {

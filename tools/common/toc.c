@@ -3,13 +3,13 @@
 #include "toc.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "amp_table.h"
+#include "errmsg.h"
 #include "progress.h"
 #include "q2_table.h"
 #include "trk/amplitude.h"
@@ -23,17 +23,6 @@ struct toc {
     trk_real *vals[TOC_N_DETECTORS];
     trk_real *nodes;
 };
-
-static int fail(char *err, size_t n, const char *fmt, ...)
-{
-    if (err && n) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, n, fmt, ap);
-        va_end(ap);
-    }
-    return -1;
-}
 
 const char *toc_detector_name(int detector) { return detector == TOC_PDAF ? "PDAF" : "PDAFAI"; }
 
@@ -61,17 +50,17 @@ const struct toc_scenario *toc_scenario_of(const struct toc *t) { return &t->sc;
 
 int toc_set_cell_m2(struct toc *t, double cell_m2, char *err, size_t errlen)
 {
-    if (!(cell_m2 > 0 && isfinite(cell_m2))) return fail(err, errlen, "cell area must be > 0 (got %g)", cell_m2);
+    if (!(cell_m2 > 0 && isfinite(cell_m2))) return errmsg_fail(err, errlen, "cell area must be > 0 (got %g)", cell_m2);
     t->sc.cell_m2 = cell_m2;
     return 0;
 }
 
 int toc_pd(const struct toc *t, double pfa, double *pd, char *err, size_t errlen)
 {
-    if (!(pfa > 0 && pfa < 1)) return fail(err, errlen, "pfa %g outside (0, 1)", pfa);
+    if (!(pfa > 0 && pfa < 1)) return errmsg_fail(err, errlen, "pfa %g outside (0, 1)", pfa);
     struct amp_direct d;
     if (amp_direct_init(&d, t->sc.amp_model, t->sc.nu, 1, t->sc.snr_db, pfa) != 0 || !(d.pd > 0 && d.pd <= 1))
-        return fail(err, errlen, "no ROC value at pfa %g", pfa);
+        return errmsg_fail(err, errlen, "no ROC value at pfa %g", pfa);
     *pd = d.pd;
     return 0;
 }
@@ -133,17 +122,19 @@ static void toc_params(const struct toc *t, struct q2_ctx *c, struct trk_toc_par
 static int check_scenario(const struct toc_scenario *sc, char *err, size_t n)
 {
     if (sc->amp_model != TRK_AMP_RAYLEIGH && sc->amp_model != TRK_AMP_K)
-        return fail(err, n, "amplitude model must be Rayleigh or K");
+        return errmsg_fail(err, n, "amplitude model must be Rayleigh or K");
     if (sc->amp_model == TRK_AMP_K && !(sc->nu > 0 && sc->nu <= 1e6))
-        return fail(err, n, "K shape nu must be in (0, 1e6] (got %g)", sc->nu);
-    if (!(sc->snr_db >= -30 && sc->snr_db <= 60)) return fail(err, n, "snr_db must be in [-30, 60] (got %g)", sc->snr_db);
-    if (!(sc->cell_m2 > 0 && isfinite(sc->cell_m2))) return fail(err, n, "cell area must be > 0 (got %g)", sc->cell_m2);
+        return errmsg_fail(err, n, "K shape nu must be in (0, 1e6] (got %g)", sc->nu);
+    if (!(sc->snr_db >= -30 && sc->snr_db <= 60))
+        return errmsg_fail(err, n, "snr_db must be in [-30, 60] (got %g)", sc->snr_db);
+    if (!(sc->cell_m2 > 0 && isfinite(sc->cell_m2)))
+        return errmsg_fail(err, n, "cell area must be > 0 (got %g)", sc->cell_m2);
     if (!(sc->dt_s > 0 && isfinite(sc->dt_s)) || !(sc->q_m2_per_s3 > 0 && isfinite(sc->q_m2_per_s3)) ||
         !(sc->r_m2 > 0 && isfinite(sc->r_m2)))
-        return fail(err, n, "T, q and r must be finite and > 0");
-    if (!(sc->gate_gamma > 0 && sc->gate_gamma <= 1000)) return fail(err, n, "gate gamma must be in (0, 1000]");
+        return errmsg_fail(err, n, "T, q and r must be finite and > 0");
+    if (!(sc->gate_gamma > 0 && sc->gate_gamma <= 1000)) return errmsg_fail(err, n, "gate gamma must be in (0, 1000]");
     if (!(sc->pfa_min > 0 && sc->pfa_min < sc->pfa_max && sc->pfa_max < 1))
-        return fail(err, n, "need 0 < pfa_min < pfa_max < 1 (got %g, %g)", sc->pfa_min, sc->pfa_max);
+        return errmsg_fail(err, n, "need 0 < pfa_min < pfa_max < 1 (got %g, %g)", sc->pfa_min, sc->pfa_max);
     return 0;
 }
 
@@ -155,21 +146,21 @@ static int use_table(struct toc *t, int det, const struct trk_table *tb, char *e
     const int qd = det == TOC_PDAF ? TRK_Q2_PDAF : TRK_Q2_PDAFAI;
     trk_status st = trk_q2_lookup_init_table(&t->lk[det], tb, qd, 2);
     if (st != TRK_OK)
-        return fail(err, n, "%s q2 table refused: %s", toc_detector_name(det), trk_status_str(st));
+        return errmsg_fail(err, n, "%s q2 table refused: %s", toc_detector_name(det), trk_status_str(st));
     const struct trk_q2_lookup *q = &t->lk[det];
     if (!same((double)q->gate_gamma, t->sc.gate_gamma))
-        return fail(err, n, "%s q2 table is for gate gamma %g, the scenario has %g", toc_detector_name(det),
-                    (double)q->gate_gamma, t->sc.gate_gamma);
+        return errmsg_fail(err, n, "%s q2 table is for gate gamma %g, the scenario has %g", toc_detector_name(det),
+                           (double)q->gate_gamma, t->sc.gate_gamma);
     if (det == TOC_PDAFAI) {
         if (q->amp_model != t->sc.amp_model || (q->amp_model == TRK_AMP_K && !same((double)q->nu, t->sc.nu)))
-            return fail(err, n, "PDAFAI q2 table is for %s clutter (nu %g), the scenario has %s (nu %g)",
-                        q->amp_model == TRK_AMP_K ? "K" : "Rayleigh", (double)q->nu,
-                        t->sc.amp_model == TRK_AMP_K ? "K" : "Rayleigh", t->sc.nu);
+            return errmsg_fail(err, n, "PDAFAI q2 table is for %s clutter (nu %g), the scenario has %s (nu %g)",
+                               q->amp_model == TRK_AMP_K ? "K" : "Rayleigh", (double)q->nu,
+                               t->sc.amp_model == TRK_AMP_K ? "K" : "Rayleigh", t->sc.nu);
         const struct trk_q2_axis *a = &q->grid.axis[0];
         const double lo = a->nodes ? (double)a->nodes[0] : (double)a->u_first;
         const double hi = a->nodes ? (double)a->nodes[a->count - 1] : (double)a->u_last;
         if (!(t->sc.snr_db >= lo - 1e-9 && t->sc.snr_db <= hi + 1e-9))
-            return fail(err, n, "PDAFAI q2 table covers snr_db %g .. %g, not %g", lo, hi, t->sc.snr_db);
+            return errmsg_fail(err, n, "PDAFAI q2 table covers snr_db %g .. %g, not %g", lo, hi, t->sc.snr_db);
     }
     return 0;
 }
@@ -207,19 +198,19 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
     s.cubic = 1;
     if (q2_table_parse_log(det == TOC_PDAF ? Q2_TABLE_DEFAULT_LAMBDA_VG_PDAF : Q2_TABLE_DEFAULT_LAMBDA_VG_PDAFAI,
                            &s.lambda_vg))
-        return fail(err, n, "bad default lambda_vg grid");
+        return errmsg_fail(err, n, "bad default lambda_vg grid");
     if (src->lambda_vg_max > 0) {
         /* same density in ln lambda_vg, new top */
         const double per = (double)(s.lambda_vg.n - 1) / log(s.lambda_vg.hi / s.lambda_vg.lo);
         if (!(src->lambda_vg_max > s.lambda_vg.lo && src->lambda_vg_max <= Q2_IS_MAX_LAMBDA_VG))
-            return fail(err, n, "lambda_vg_max must be in (%g, %g]", s.lambda_vg.lo, Q2_IS_MAX_LAMBDA_VG);
+            return errmsg_fail(err, n, "lambda_vg_max must be in (%g, %g]", s.lambda_vg.lo, Q2_IS_MAX_LAMBDA_VG);
         s.lambda_vg.hi = src->lambda_vg_max;
         s.lambda_vg.n = (size_t)ceil(per * log(s.lambda_vg.hi / s.lambda_vg.lo)) + 1;
     }
     double pd_lo = 1;
     if (det == TOC_PDAF) {
         const int np = q2_table_parse_list(Q2_TABLE_DEFAULT_PD, pd_all, (int)Q2_TABLE_MAX_NODES);
-        if (np < 2) return fail(err, n, "bad default pd grid");
+        if (np < 2) return errmsg_fail(err, n, "bad default pd grid");
         for (int k = 0; k < 2; k++) {
             double pd;
             if (toc_pd(t, k ? t->sc.pfa_max : t->sc.pfa_min, &pd, err, n)) return -1;
@@ -234,7 +225,7 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
         s.snr_db.n = 1;
         s.snr_db.lo = s.snr_db.hi = t->sc.snr_db;
         struct q2_table_axis dflt;
-        if (q2_table_parse_log(Q2_TABLE_DEFAULT_PFA, &dflt)) return fail(err, n, "bad default pfa grid");
+        if (q2_table_parse_log(Q2_TABLE_DEFAULT_PFA, &dflt)) return errmsg_fail(err, n, "bad default pfa grid");
         const double step = log(dflt.hi / dflt.lo) / (double)(dflt.n - 1);
         s.pfa.lo = t->sc.pfa_min;
         s.pfa.hi = t->sc.pfa_max;
@@ -258,7 +249,7 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
     char e2[512];
     const int rc = q2_table_build(&s, &r, &res, e2, sizeof e2);
     if (pg.started) progress_end(&pg.p);
-    if (rc) return fail(err, n, "%s q2 grid: %s", toc_detector_name(det), e2);
+    if (rc) return errmsg_fail(err, n, "%s q2 grid: %s", toc_detector_name(det), e2);
     /* a lookup over a trk_real copy of the values (the PDAFAI grid has one
      * snr node: no table file, the lookup takes plain arrays) */
     const size_t nc = res.n_cells;
@@ -266,7 +257,7 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
     if (det == TOC_PDAF && s.pd.nodes) t->nodes = malloc(s.pd.n * sizeof *t->nodes);
     if (!t->vals[det] || (det == TOC_PDAF && s.pd.nodes && !t->nodes)) {
         q2_table_result_free(&res);
-        return fail(err, n, "out of memory");
+        return errmsg_fail(err, n, "out of memory");
     }
     for (size_t c = 0; c < nc; c++) t->vals[det][c] = (trk_real)res.values[2 * c];
     struct trk_q2_grid g;
@@ -290,7 +281,8 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
     }
     q2_table_result_free(&res);
     trk_status st = trk_q2_lookup_init(&t->lk[det], &g);
-    if (st != TRK_OK) return fail(err, n, "%s q2 grid refused by the lookup: %s", toc_detector_name(det), trk_status_str(st));
+    if (st != TRK_OK)
+        return errmsg_fail(err, n, "%s q2 grid refused by the lookup: %s", toc_detector_name(det), trk_status_str(st));
     return 0;
 }
 
@@ -298,14 +290,14 @@ struct toc *toc_new(const struct toc_scenario *sc, const struct toc_q2_source *s
 {
     static const struct toc_q2_source none;
     if (!sc) {
-        fail(err, errlen, "no scenario");
+        errmsg_fail(err, errlen, "no scenario");
         return NULL;
     }
     if (!src) src = &none;
     if (check_scenario(sc, err, errlen)) return NULL;
     struct toc *t = calloc(1, sizeof *t);
     if (!t) {
-        fail(err, errlen, "out of memory");
+        errmsg_fail(err, errlen, "out of memory");
         return NULL;
     }
     t->sc = *sc;
@@ -331,13 +323,13 @@ void toc_free(struct toc *t)
 
 int toc_q2(const struct toc *t, int detector, double pfa, double lambda_vg, double *q2, char *err, size_t errlen)
 {
-    if (detector != TOC_PDAF && detector != TOC_PDAFAI) return fail(err, errlen, "bad detector");
+    if (detector != TOC_PDAF && detector != TOC_PDAFAI) return errmsg_fail(err, errlen, "bad detector");
     struct q2_ctx c = {t, detector, 0, 0, 0, 0};
     trk_real v;
     trk_status st = q2_at(&c, (trk_real)pfa, (trk_real)lambda_vg, &v);
     if (st != TRK_OK)
-        return fail(err, errlen, "%s q2 at pfa %g, lambda_vg %g: %s", toc_detector_name(detector), pfa, lambda_vg,
-                    trk_status_str(st));
+        return errmsg_fail(err, errlen, "%s q2 at pfa %g, lambda_vg %g: %s", toc_detector_name(detector), pfa,
+                           lambda_vg, trk_status_str(st));
     *q2 = (double)v;
     return 0;
 }
@@ -381,7 +373,7 @@ int toc_point_at(const struct toc *t, double pfa, struct toc_point *p, char *err
             p->iterations[d] = r.iterations;
             if (st == TRK_E_DIVERGED) p->rmse_bound_m[d] = INFINITY;
         } else {
-            return fail(err, errlen, "%s MRE at pfa %g: %s", toc_detector_name(d), pfa, trk_status_str(st));
+            return errmsg_fail(err, errlen, "%s MRE at pfa %g: %s", toc_detector_name(d), pfa, trk_status_str(st));
         }
     }
     return 0;
@@ -389,7 +381,7 @@ int toc_point_at(const struct toc *t, double pfa, struct toc_point *p, char *err
 
 int toc_curve(const struct toc *t, size_t n, struct toc_point *pts, char *err, size_t errlen)
 {
-    if (n < 2) return fail(err, errlen, "a curve needs >= 2 points");
+    if (n < 2) return errmsg_fail(err, errlen, "a curve needs >= 2 points");
     const double l0 = log(t->sc.pfa_min), l1 = log(t->sc.pfa_max);
     for (size_t i = 0; i < n; i++) {
         double pfa = i == n - 1 ? t->sc.pfa_max : exp(l0 + (l1 - l0) * (double)i / (double)(n - 1));
@@ -409,7 +401,7 @@ static int off_table_near(const struct toc_point *p, int d, double rmse)
 
 int toc_optimum(const struct toc *t, int detector, struct toc_optimum *o, char *err, size_t errlen)
 {
-    if (detector != TOC_PDAF && detector != TOC_PDAFAI) return fail(err, errlen, "bad detector");
+    if (detector != TOC_PDAF && detector != TOC_PDAFAI) return errmsg_fail(err, errlen, "bad detector");
     memset(o, 0, sizeof *o);
     struct q2_ctx c = {t, detector, 0, 0, 0, 0};
     struct trk_toc_params tp;
@@ -417,9 +409,10 @@ int toc_optimum(const struct toc *t, int detector, struct toc_optimum *o, char *
     struct trk_toc_result r;
     trk_status st = trk_toc_optimise(&tp, &r);
     if (st == TRK_E_DIVERGED)
-        return fail(err, errlen, "%s: no pfa in [%g, %g] has a steady state", toc_detector_name(detector),
-                    t->sc.pfa_min, t->sc.pfa_max);
-    if (st != TRK_OK) return fail(err, errlen, "%s TOC optimum: %s", toc_detector_name(detector), trk_status_str(st));
+        return errmsg_fail(err, errlen, "%s: no pfa in [%g, %g] has a steady state", toc_detector_name(detector),
+                           t->sc.pfa_min, t->sc.pfa_max);
+    if (st != TRK_OK)
+        return errmsg_fail(err, errlen, "%s TOC optimum: %s", toc_detector_name(detector), trk_status_str(st));
     o->pfa = (double)r.pfa;
     o->rmse_m = (double)r.rmse_m;
     o->q2 = (double)r.q2;

@@ -30,11 +30,7 @@ static int build(double nu, double pfa, int grid, uint32_t n, uint32_t nllr, int
                  struct amp_table_result *r)
 {
     struct amp_table_opts o;
-    memset(&o, 0, sizeof o);
-    o.model = TRK_AMP_K;
-    o.nu = nu;
-    o.snr_db = 15;
-    o.pfa = pfa;
+    amp_table_opts_init(&o, TRK_AMP_K, nu, 15, pfa);
     o.grid = grid;
     o.size = n;
     o.llr_size = nllr;

@@ -14,17 +14,9 @@
 #include <string.h>
 
 #include "bridge.h"
+#include "cli.h"
 #include "kvfile.h"
 #include "transport.h"
-
-static volatile sig_atomic_t stop_flag = 0;
-static volatile sig_atomic_t stop_signal = 0;
-
-static void on_signal(int sig)
-{
-    stop_flag = 1;
-    stop_signal = sig;
-}
 
 static void usage(FILE *f)
 {
@@ -84,23 +76,10 @@ static int set_any(void *ctx, const char *key, const char *value, char *err, siz
     return r <= 0 ? r : tcfg_set(&s->cfg, key, value, err, n);
 }
 
-/* --name VALUE or --name=VALUE; 1 matched (*val set), -1 missing value, 0 no */
+/* --name VALUE or --name=VALUE (cli.h): 1 matched (*val set), -1 missing value, 0 no */
 static int opt(int argc, char **argv, int *i, const char *name, const char **val)
 {
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(a, name, n) != 0) return 0;
-    if (a[n] == '=') {
-        *val = a + n + 1;
-        return 1;
-    }
-    if (a[n]) return 0;
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "trk-lcm-bridge: %s needs a value\n", name);
-        return -1;
-    }
-    *val = argv[++*i];
-    return 1;
+    return cli_opt(argc, argv, i, name, val, "trk-lcm-bridge");
 }
 
 /* The bridge's own flags and the config keys they set. */
@@ -241,18 +220,13 @@ int main(int argc, char **argv)
         return 2;
     }
 
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    cli_catch_stop_signals();
 
     int rc = 0;
     const int64_t t0 = bridge_mono_us();
     if (replay_in) {
         struct replay_stats st;
-        if (bridge_replay(b, replay_in, replay_out, keep_input, &stop_flag, &st, err, sizeof err) != 0) {
+        if (bridge_replay(b, replay_in, replay_out, keep_input, &cli_stop_flag, &st, err, sizeof err) != 0) {
             fprintf(stderr, "trk-lcm-bridge: %s\n", err);
             rc = 1;
         }
@@ -264,7 +238,7 @@ int main(int argc, char **argv)
             printf(" (input: %llu corrupt records skipped%s)", (unsigned long long)st.corrupt,
                    st.truncated ? ", truncated at the end" : "");
         printf("; %.3f s, %.0f scans/s%s\n", el, el > 0 ? (double)st.scans / el : 0.0,
-               stop_flag ? " (interrupted)" : "");
+               cli_stop_flag ? " (interrupted)" : "");
     } else {
         lcm_t *lc = lcm_create(s.o.lcm_url[0] ? s.o.lcm_url : NULL);
         if (!lc) {
@@ -287,7 +261,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "trk-lcm-bridge: %s -> tracker (%d tracks, %d detections) -> %s%s%s\n",
                     s.o.detection_channel, TRK_MAX_TRACKS, TRK_MAX_DETECTIONS, s.o.track_channel,
                     s.o.status_channel[0] ? ", status on " : "", s.o.status_channel);
-        if (bridge_live_run(&l, &stop_flag, (uint64_t)max_scans, idle_exit_s) != 0) {
+        if (bridge_live_run(&l, &cli_stop_flag, (uint64_t)max_scans, idle_exit_s) != 0) {
             fprintf(stderr, "trk-lcm-bridge: LCM error while handling messages\n");
             rc = 1;
         }
@@ -295,8 +269,8 @@ int main(int argc, char **argv)
         lcm_destroy(lc);
         const double el = (double)(bridge_mono_us() - t0) * 1e-6;
         printf("trk-lcm-bridge: stopped%s after %.1f s\n",
-               stop_signal == SIGINT    ? " by SIGINT"
-               : stop_signal == SIGTERM ? " by SIGTERM"
+               cli_stop_signal == SIGINT    ? " by SIGINT"
+               : cli_stop_signal == SIGTERM ? " by SIGTERM"
                                         : "",
                el);
     }

@@ -40,8 +40,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "plot.h"
-#include "progress.h"
 #include "rng.h"
 #include "sim.h"
 #include "trk/hmm_detect.h"
@@ -178,30 +176,9 @@ static double arl_at(const double *add, const double *arl, int n, double a)
     return NAN;
 }
 
-static void help(void)
-{
-    printf("trk-sim blanding-add-arl [options]\n"
-           "  ADD (false-track life, H0) and ARL (true-track life, H1) in scan cycles of the\n"
-           "  K/N, Page and Shiryaev terminators, Blanding 2007 Table 1 (Ns = 4, T = 60 s,\n"
-           "  p = 1/30, q = 0.1, P_D 0.1/0.9, lambda 3.14e-8, R = 243.2^2, q = 1e-4, P_G 0.99,\n"
-           "  beta0 0.5, rho 0.005).\n"
-           "  --runs N         runs per hypothesis (default 10000, the paper's size)\n"
-           "  --paper          10000 runs per hypothesis (the default)\n"
-           "  --max-scans N    censor a run after N looks (default 20000 = 5000 cycles)\n"
-           "  --page-h LIST    Page thresholds (default 0.5:6:0.25); LIST = a,b,c or from:to:step\n"
-           "  --shir-h LIST    Shiryaev thresholds on the log-odds (default -1:5:0.25)\n"
-           "  --kn-n LIST      K/N window lengths in scans (default 4,6,...,64); K = N/16..N/3\n"
-           "  --beta0 B --rho R   Shiryaev prior (default 0.5, 0.005)\n"
-           "  common: --seed N --out PREFIX (default blanding) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv (every test point), PREFIX_front.csv (K/N upper envelope),\n"
-           "  PREFIX.gp and PREFIX.png (ADD vs ARL, log ARL).\n");
-}
-
 SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD vs ARL of K/N, Page, Shiryaev termination")
 {
     static struct bl_cfg c;
-    struct sim_common com;
-    sim_common_defaults(&com, "blanding");
     c.ns = 4;
     c.dt_s = 60.0 / 4;
     c.p = 0.1 / 3;
@@ -213,51 +190,33 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
     c.q_psd = 1e-4;
     c.pg = 0.99;
     c.pv0 = 1.0;
-    c.beta0 = 0.5;
-    c.rho = 0.005;
-    c.max_scans = 20000;
-    long runs = 10000;
-    c.n_page = sim_parse_list("0.5:6:0.25", c.h_page, MAX_H);
-    c.n_shir = sim_parse_list("-1:5:0.25", c.h_shir, MAX_H);
+    long runs;
     double kn_ns[64];
-    int n_kn_n = sim_parse_list("4:64:2", kn_ns, 64);
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        long l;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if (strcmp(argv[i], "--paper") == 0) {
-            runs = 10000;
-        } else if ((r = sim_arg(argc, argv, &i, "--max-scans", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &l) || l < 1 || l > 100000000) goto bad;
-            c.max_scans = l;
-        } else if ((r = sim_arg(argc, argv, &i, "--page-h", &v)) != 0) {
-            if (r < 0 || (c.n_page = sim_parse_list(v, c.h_page, MAX_H)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--shir-h", &v)) != 0) {
-            if (r < 0 || (c.n_shir = sim_parse_list(v, c.h_shir, MAX_H)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--kn-n", &v)) != 0) {
-            if (r < 0 || (n_kn_n = sim_parse_list(v, kn_ns, 64)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--beta0", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &c.beta0)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--rho", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &c.rho)) goto bad;
-        } else {
-            fprintf(stderr, "blanding-add-arl: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "blanding-add-arl: bad value for %s\n", argv[i]);
-        return 2;
-    }
-    if (com.runs > 0) runs = com.runs;
+    int n_kn_n, paper = 0; /* --paper: the default size (a --runs still wins): nothing to set */
+    const struct sim_opt opts[] = {
+        SIM_OPT_LONG("--runs", &runs, "N", "10000", SIM_GE, 1, 0, "runs per hypothesis, as in the paper"),
+        SIM_OPT_FLAG("--paper", &paper, "10000 runs per hypothesis (the default)"),
+        SIM_OPT_LONG("--max-scans", &c.max_scans, "N", "20000", SIM_IN, 1, 100000000,
+                     "censor a run after N looks (N/4 scan cycles)"),
+        SIM_OPT_LIST("--page-h", c.h_page, &c.n_page, MAX_H, "0.5:6:0.25", 0, 0, 0, "Page thresholds"),
+        SIM_OPT_LIST("--shir-h", c.h_shir, &c.n_shir, MAX_H, "-1:5:0.25", 0, 0, 0,
+                     "Shiryaev thresholds on the log-odds"),
+        SIM_OPT_LIST("--kn-n", kn_ns, &n_kn_n, 64, "4:64:2", 0, 0, 0, "K/N window lengths in scans; K = N/16..N/3"),
+        SIM_OPT_DOUBLE("--beta0", &c.beta0, "B", "0.5", 0, 0, 0, "Shiryaev prior: P(change before the first look)"),
+        SIM_OPT_DOUBLE("--rho", &c.rho, "R", "0.005", 0, 0, 0, "Shiryaev prior: per-look change probability"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "blanding-add-arl", NULL,
+        "ADD (false-track life, H0) and ARL (true-track life, H1) in scan cycles of the\n"
+        "K/N, Page and Shiryaev terminators, Blanding 2007 Table 1 (Ns = 4, T = 60 s,\n"
+        "p = 1/30, q = 0.1, P_D 0.1/0.9, lambda 3.14e-8, R = 243.2^2, q = 1e-4, P_G 0.99).",
+        opts, "blanding", NULL, 0,
+        "Writes PREFIX.csv (every test point), PREFIX_front.csv (K/N upper envelope),\n"
+        "PREFIX.gp and PREFIX.png (ADD vs ARL, log ARL).",
+        NULL, NULL};
+    struct sim_common com;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     if (c.ns > TRK_MAX_SENSORS) {
         fprintf(stderr, "blanding-add-arl: needs %d sensors, this build has TRK_MAX_SENSORS %d\n",
                 c.ns, TRK_MAX_SENSORS);
@@ -311,9 +270,8 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
             "blanding-add-arl: %ld runs per hypothesis, %d Page + %d Shiryaev thresholds, %d K/N "
             "rules, cap %ld looks, seed %llu, %d threads\n",
             runs, c.n_page, c.n_shir, c.n_kn, c.max_scans, (unsigned long long)com.seed, threads);
-    struct progress pr;
-    progress_start(&pr, "blanding-add-arl", 2 * runs, !com.quiet);
-    const double t0 = progress_now_s();
+    struct sim_progress pr;
+    sim_progress_start(&pr, &com, "blanding-add-arl", 2 * runs);
     /* index i < runs: H1 run i; i >= runs: H0 run i - runs. Stream = (hypothesis, run). */
 #pragma omp parallel for schedule(dynamic, 8)
     for (long i = 0; i < 2 * runs; i++) {
@@ -321,17 +279,15 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
         const uint64_t run = (uint64_t)(h1 ? i : i - runs);
         run_one(&c, h1, com.seed, (h1 ? 0x100000000ull : 0x200000000ull) | run,
                 res + (size_t)i * (size_t)nt);
-#pragma omp critical(sim_progress)
-        progress_add(&pr, 1);
+        sim_progress_add(&pr, 1);
     }
-    progress_end(&pr);
-    const double wall = progress_now_s() - t0;
+    const double wall = sim_progress_end(&pr);
 
     /* ---------------------------------------------------------------- results */
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    FILE *f = plot_csv_open(path, "# blanding-add-arl: ADD (H0) and ARL (H1) in scan cycles of 4 looks; "
-                                  "censored = runs not terminated within max_scans (counted at the cap)");
+    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+                           "# blanding-add-arl: ADD (H0) and ARL (H1) in scan cycles of 4 looks; "
+                           "censored = runs not terminated within max_scans (counted at the cap)");
     if (!f) return 1;
     fprintf(f, "# runs %ld seed %llu max_scans %ld beta0 %g rho %g\n", runs,
             (unsigned long long)com.seed, c.max_scans, c.beta0, c.rho);
@@ -375,8 +331,7 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
             nfr++;
         }
     }
-    snprintf(path, sizeof path, "%s_front.csv", com.out);
-    f = plot_csv_open(path, "k,n,add_cycles,arl_cycles");
+    f = sim_csv_open(&com, "_front.csv", path, sizeof path, "k,n,add_cycles,arl_cycles");
     if (!f) return 1;
     for (int a = 0; a < nfr; a++)
         fprintf(f, "%d,%d,%.6g,%.6g\n", c.kn_k[fr_j[a]], c.kn_n[fr_j[a]], fr_add[a], fr_arl[a]);
@@ -421,21 +376,17 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
            kn_vs_page);
     printf("# files: %s.csv %s_front.csv\n", com.out, com.out);
 
-    if (!com.no_plot) {
-        char body[8192];
-        snprintf(body, sizeof body,
-                 "set datafile separator ','\n"
-                 "set title 'Track termination, Blanding 2007 Table 1 (%ld runs per hypothesis)'\n"
-                 "set xlabel 'ADD: mean false-track life (scan cycles)'\n"
-                 "set ylabel 'ARL: mean true-track life (scan cycles)'\n"
-                 "set logscale y\nset grid\nset key left top\nset xrange [0:40]\n"
-                 "plot '%s.csv' using (strcol(1) eq 'kn' ? $5 : 1/0):7 with points pt 1 lc rgb '#bbbbbb' title 'K/N (all K, N)', \\\n"
-                 "     '%s_front.csv' using 3:4 with linespoints pt 7 lc rgb '#1f77b4' title 'K/N upper envelope', \\\n"
-                 "     '%s.csv' using (strcol(1) eq 'page' ? $5 : 1/0):7 with linespoints pt 5 lc rgb '#d62728' title 'Page', \\\n"
-                 "     '%s.csv' using (strcol(1) eq 'shiryaev' ? $5 : 1/0):7 with linespoints pt 9 lc rgb '#2ca02c' title 'Shiryaev (beta0 %g, rho %g)'\n",
-                 runs, com.out, com.out, com.out, com.out, c.beta0, c.rho);
-        plot_gnuplot(com.out, body);
-    }
+    sim_plotf(&com, "",
+              "set datafile separator ','\n"
+              "set title 'Track termination, Blanding 2007 Table 1 (%ld runs per hypothesis)'\n"
+              "set xlabel 'ADD: mean false-track life (scan cycles)'\n"
+              "set ylabel 'ARL: mean true-track life (scan cycles)'\n"
+              "set logscale y\nset grid\nset key left top\nset xrange [0:40]\n"
+              "plot '%s.csv' using (strcol(1) eq 'kn' ? $5 : 1/0):7 with points pt 1 lc rgb '#bbbbbb' title 'K/N (all K, N)', \\\n"
+              "     '%s_front.csv' using 3:4 with linespoints pt 7 lc rgb '#1f77b4' title 'K/N upper envelope', \\\n"
+              "     '%s.csv' using (strcol(1) eq 'page' ? $5 : 1/0):7 with linespoints pt 5 lc rgb '#d62728' title 'Page', \\\n"
+              "     '%s.csv' using (strcol(1) eq 'shiryaev' ? $5 : 1/0):7 with linespoints pt 9 lc rgb '#2ca02c' title 'Shiryaev (beta0 %g, rho %g)'\n",
+              runs, com.out, com.out, com.out, com.out, c.beta0, c.rho);
     free(res);
     return 0;
 }

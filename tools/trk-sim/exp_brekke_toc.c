@@ -23,34 +23,13 @@
 #include <string.h>
 
 #include "mc_stats.h"
-#include "plot.h"
 #include "progress.h"
 #include "sim.h"
 #include "single_target.h"
 #include "toc.h"
-#include "trk/table_file.h"
 
 #define MAXL 32
 #define NCURVE 61
-
-/* A q2 table of `make tables` (malloc'd bytes in *buf); 0 or -1. */
-static int load_q2_table(const char *dir, const char *name, struct trk_table *t, void **buf)
-{
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    size_t n;
-    trk_status st = trk_table_file_size(path, &n);
-    if (st == TRK_OK) {
-        *buf = malloc(n + 8);
-        if (!*buf) return -1;
-        st = trk_table_load_file(path, *buf, n + 8, t, NULL);
-    }
-    if (st != TRK_OK) {
-        fprintf(stderr, "brekke-toc: %s: %s\n", path, trk_status_str(st));
-        return -1;
-    }
-    return 0;
-}
 
 struct tc_out {
     unsigned char lost[2];
@@ -58,96 +37,59 @@ struct tc_out {
     int32_t scans[2];
 };
 
-static void help(void)
+static void keep(void *ctx, long it, int f, const struct st_result *res)
 {
-    printf("trk-sim brekke-toc [options]\n"
-           "  Brekke 2011 Fig. 2: steady-state position RMSE along the ROC (TOC) of the PDAF and the\n"
-           "  PDAFAI, simulated (bad tracks removed) against the MRE prediction (toc.h).\n"
-           "  --runs N          runs per point and filter (default 1000)\n"
-           "  --scans N         scans per run (default 300)\n"
-           "  --from K          first scan of the RMSE (default 101)\n"
-           "  --nu LIST         K shapes (default 1,8)\n"
-           "  --snr-db D        target SNR (default 15)\n"
-           "  --cell-m2 A       resolution cell, lambda = P_FA / A (default 1)\n"
-           "  --pfa LIST        simulated P_FA (default 1e-6,1e-5,1e-4,1e-3,1e-2,3e-2,0.1,0.2,0.3,0.5)\n"
-           "  --texture cell|scan  K texture drawn per detection (default; i.i.d. K amplitudes) or once\n"
-           "                    per scan (bursty clutter, see tools/common/single_target.h)\n"
-           "  --init twopoint|steady  initial track covariance (default twopoint)\n"
-           "  --q2-samples N    importance samples per stratum of the MRE's q2 grids (default toc.h's)\n"
-           "  --tables DIR      the MRE's q2 from the tables of `make tables` (q2_pdaf_g6.tbl,\n"
-           "                    q2_pdafai_k<nu>_g6.tbl) instead of sampling them here\n"
-           "  common: --seed N --out PREFIX (default brekke_toc) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv (simulation and MRE at the simulated P_FA), PREFIX_mre.csv (MRE curves),\n"
-           "  PREFIX_optimum.csv, PREFIX.gp, PREFIX.png.\n");
+    struct tc_out *o = (struct tc_out *)ctx + it;
+    o->lost[f] = (unsigned char)res->lost;
+    o->mse[f] = res->n_sse ? res->sse / (double)res->n_sse : NAN;
+    o->scans[f] = (int32_t)res->scans;
 }
+
+static const int texture_values[] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
+static const int init_values[] = {ST_INIT_TWOPOINT, ST_INIT_STEADY};
 
 SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMSE vs MRE, PDAF and PDAFAI")
 {
-    struct sim_common com;
-    sim_common_defaults(&com, "brekke_toc");
-    long runs = 1000, scans = 300, from = 101, q2_samples = 0;
-    double nus[MAXL] = {1, 8}, snr = 15, cell = 1;
-    double pfas[MAXL] = {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 3e-2, 0.1, 0.2, 0.3, 0.5};
-    int nnu = 2, npfa = 10, init = ST_INIT_TWOPOINT, texture = ST_TEXTURE_CELL;
+    long runs, scans, from, q2_samples = 0;
+    double nus[MAXL], snr, cell, pfas[MAXL];
+    int nnu, npfa, init, texture;
     const char *tables = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--scans", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &scans) || scans < 2 || scans > 1000000) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--from", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &from) || from < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--nu", &v)) != 0) {
-            if (r < 0 || (nnu = sim_parse_list(v, nus, MAXL)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--snr-db", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &snr)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--cell-m2", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &cell) || !(cell > 0)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--pfa", &v)) != 0) {
-            if (r < 0 || (npfa = sim_parse_list(v, pfas, MAXL)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--texture", &v)) != 0) {
-            if (r < 0) goto bad;
-            if (!strcmp(v, "cell")) texture = ST_TEXTURE_CELL;
-            else if (!strcmp(v, "scan")) texture = ST_TEXTURE_SCAN;
-            else goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--init", &v)) != 0) {
-            if (r < 0) goto bad;
-            if (!strcmp(v, "twopoint")) init = ST_INIT_TWOPOINT;
-            else if (!strcmp(v, "steady")) init = ST_INIT_STEADY;
-            else goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--tables", &v)) != 0) {
-            if (r < 0) goto bad;
-            tables = v;
-        } else if ((r = sim_arg(argc, argv, &i, "--q2-samples", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &q2_samples) || q2_samples < 1000) goto bad;
-        } else {
-            fprintf(stderr, "brekke-toc: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "brekke-toc: bad value for %s\n", argv[i]);
-        return 2;
-    }
-    if (com.runs > 0) runs = com.runs;
+    const struct sim_opt opts[] = {
+        SIM_OPT_LONG("--runs", &runs, "N", "1000", SIM_GE, 1, 0, "runs per point and filter"),
+        SIM_OPT_LONG("--scans", &scans, "N", "300", SIM_IN, 2, 1000000, "scans per run"),
+        SIM_OPT_LONG("--from", &from, "K", "101", SIM_GE, 1, 0, "first scan of the RMSE"),
+        SIM_OPT_LIST("--nu", nus, &nnu, MAXL, "1,8", 0, 0, 0, "K shapes"),
+        SIM_OPT_DOUBLE("--snr-db", &snr, "D", "15", 0, 0, 0, "target SNR"),
+        SIM_OPT_DOUBLE("--cell-m2", &cell, "A", "1", SIM_GT, 0, 0, "resolution cell, lambda = P_FA / A"),
+        SIM_OPT_LIST("--pfa", pfas, &npfa, MAXL, "1e-6,1e-5,1e-4,1e-3,1e-2,3e-2,0.1,0.2,0.3,0.5", SIM_OPEN, 0, 1,
+                     "simulated P_FA"),
+        SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
+                       "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
+                       "per scan (bursty clutter, see tools/common/single_target.h)"),
+        SIM_OPT_CHOICE("--init", &init, "twopoint|steady", init_values, "twopoint", "initial track covariance"),
+        SIM_OPT_LONG("--q2-samples", &q2_samples, "N", NULL, SIM_GE, 1000, 0,
+                     "importance samples per stratum of the MRE's q2 grids (default toc.h's)"),
+        SIM_OPT_STRING("--tables", &tables, "DIR", NULL,
+                       "the MRE's q2 from the tables of `make tables` (q2_pdaf_g6.tbl,\n"
+                       "q2_pdafai_k<nu>_g6.tbl) instead of sampling them here"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "brekke-toc", NULL,
+        "Brekke 2011 Fig. 2: steady-state position RMSE along the ROC (TOC) of the PDAF and the\n"
+        "PDAFAI, simulated (bad tracks removed) against the MRE prediction (toc.h).",
+        opts, "brekke_toc", NULL, 0,
+        "Writes PREFIX.csv (simulation and MRE at the simulated P_FA), PREFIX_mre.csv (MRE curves),\n"
+        "PREFIX_optimum.csv, PREFIX.gp, PREFIX.png.",
+        NULL, NULL};
+    struct sim_common com;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     if (from > scans) {
         fprintf(stderr, "brekke-toc: --from must be <= --scans\n");
         return 2;
     }
     double pmin = pfas[0], pmax = pfas[0];
     for (int j = 0; j < npfa; j++) {
-        if (!(pfas[j] > 0 && pfas[j] < 1)) {
-            fprintf(stderr, "brekke-toc: P_FA must be in (0, 1)\n");
-            return 2;
-        }
         pmin = fmin(pmin, pfas[j]);
         pmax = fmax(pmax, pfas[j]);
     }
@@ -173,8 +115,8 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
         if (tables) {
             char name[64];
             snprintf(name, sizeof name, "q2_pdafai_k%g_g6.tbl", nus[a]);
-            if (load_q2_table(tables, "q2_pdaf_g6.tbl", &tb[0], &tbuf[0]) ||
-                load_q2_table(tables, name, &tb[1], &tbuf[1]))
+            if (sim_load_table(cli.name, tables, "q2_pdaf_g6.tbl", &tb[0], &tbuf[0]) ||
+                sim_load_table(cli.name, tables, name, &tb[1], &tbuf[1]))
                 return 1;
             src.pdaf = &tb[0];
             src.pdafai = &tb[1];
@@ -204,69 +146,22 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     struct st_model *mod = calloc((size_t)nmod, sizeof *mod);
     struct tc_out *out = calloc((size_t)nmod * (size_t)runs, sizeof *out);
     if (!amp || !mod || !out) return 1;
-    int amp_fail = 0;
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int m = 0; m < nmod; m++) {
-        char e[256];
-        if (st_amp_init(&amp[m], TRK_AMP_K, nus[m / npfa], snr, pfas[m % npfa], 0, 0, e, sizeof e)) {
-#pragma omp critical(tc_err)
-            {
-                amp_fail = 1;
-                fprintf(stderr, "brekke-toc: %s\n", e);
-            }
-        }
-    }
-    if (amp_fail) return 1;
-    for (int m = 0; m < nmod; m++) {
-        struct st_params sp;
-        st_params_brekke(&sp);
-        sp.n_scans = scans;
-        sp.init = init;
-        sp.texture = texture;
-        sp.amp = &amp[m].m;
-        sp.lambda_per_m2 = pfas[m % npfa] / cell;
-        sp.seed = com.seed;
-        if (st_model_init(&mod[m], &sp, err, sizeof err)) {
-            fprintf(stderr, "brekke-toc: %s\n", err);
-            return 1;
-        }
-    }
+    if (sim_amp_k_grid(cli.name, amp, nus, nnu, &snr, 1, pfas, npfa, 0, 0)) return 1;
+    for (int m = 0; m < nmod; m++)
+        if (sim_brekke_model(cli.name, &mod[m], &amp[m], cell, scans, init, texture, com.seed)) return 1;
     if (!com.quiet)
         fprintf(stderr, "brekke-toc: %d nu x %d P_FA x 2 filters x %ld runs x %ld scans, seed %llu, %d threads (MRE %.1f s)\n",
                 nnu, npfa, runs, scans, (unsigned long long)com.seed, threads, mre_s);
-    struct progress pr;
-    progress_start(&pr, "brekke-toc", (long)nmod * runs, !com.quiet);
-    const double t0 = progress_now_s();
-#pragma omp parallel
-    {
-        struct st_ws ws = {NULL, 0, NULL, 0};
-        long pending = 0;
-#pragma omp for schedule(dynamic, 8)
-        for (long it = 0; it < (long)nmod * runs; it++) {
-            const long m = it / runs, run = it % runs;
-            for (int f = 0; f < 2; f++) {
-                struct st_result res;
-                st_run(&mod[m], &ws, (uint32_t)run, f, from, NULL, &res);
-                out[it].lost[f] = (unsigned char)res.lost;
-                out[it].mse[f] = res.n_sse ? res.sse / (double)res.n_sse : NAN;
-                out[it].scans[f] = (int32_t)res.scans;
-            }
-            if (++pending == 64) {
-#pragma omp critical(sim_progress)
-                progress_add(&pr, pending);
-                pending = 0;
-            }
-        }
-#pragma omp critical(sim_progress)
-        progress_add(&pr, pending);
-        st_ws_free(&ws);
+    int bad_call;
+    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, from, keep, out, &bad_call);
+    if (bad_call) {
+        fprintf(stderr, "brekke-toc: internal error (bad run call)\n");
+        return 1;
     }
-    progress_end(&pr);
-    const double wall = progress_now_s() - t0;
     /* ---- reduce in run order, print, write */
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    FILE *f = plot_csv_open(path, "# brekke-toc: Brekke 2011 Fig. 2, TOC: simulated RMSE (bad tracks removed) vs MRE");
+    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+                           "# brekke-toc: Brekke 2011 Fig. 2, TOC: simulated RMSE (bad tracks removed) vs MRE");
     if (!f) return 1;
     fprintf(f, "# Table I model (T 1 s, q 0.0125^2, R I/12, g 6), K clutter, SNR %g dB, cell %g m^2 (lambda = pfa / cell), "
                "%ld scans, RMSE over scans >= %ld of the runs not lost (two-stage rule, c1 5 m, c2 15 m), %s start, "
@@ -319,10 +214,9 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     free(v);
     fclose(f);
     char mpath[1024], opath[1024];
-    snprintf(mpath, sizeof mpath, "%s_mre.csv", com.out);
-    snprintf(opath, sizeof opath, "%s_optimum.csv", com.out);
-    FILE *fm = plot_csv_open(mpath, "nu,pfa,pd,rmse_pdaf,rmse_pdafai,q2_pdaf,q2_pdafai,lambda_vg_pdaf,lambda_vg_pdafai");
-    FILE *fo = plot_csv_open(opath, "nu,filter,pfa,pd,rmse_m,q2,lambda_vg");
+    FILE *fm = sim_csv_open(&com, "_mre.csv", mpath, sizeof mpath,
+                            "nu,pfa,pd,rmse_pdaf,rmse_pdafai,q2_pdaf,q2_pdafai,lambda_vg_pdaf,lambda_vg_pdafai");
+    FILE *fo = sim_csv_open(&com, "_optimum.csv", opath, sizeof opath, "nu,filter,pfa,pd,rmse_m,q2,lambda_vg");
     if (!fm || !fo) return 1;
     for (int a = 0; a < nnu; a++) {
         for (int i = 0; i < NCURVE; i++) {
@@ -342,26 +236,28 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
            total_scans, (double)total_scans / wall);
     printf("# files: %s, %s, %s\n", path, mpath, opath);
     if (!com.no_plot) {
-        char body[16384];
-        int n = snprintf(body, sizeof body,
-                         "set datafile separator ','\nset datafile missing 'nan'\nset logscale x\nset format x '10^{%%L}'\n"
-                         "set grid\nset key top left font ',9'\nset xlabel 'P_{FA}'\nset ylabel 'position RMSE (m)'\n"
-                         "set logscale y\nset yrange [0.15:3]\nset ytics (0.15, 0.2, 0.3, 0.5, 0.7, 1, 2, 3)\nset multiplot layout 1,%d title 'Brekke 2011 Fig. 2: TOC, SNR %g dB, "
-                         "cell %g m^2 (MRE lines, simulation points, bad tracks removed)'\n",
-                         nnu, snr, cell);
-        for (int a = 0; a < nnu && n < (int)sizeof body - 2048; a++)
-            n += snprintf(body + n, sizeof body - (size_t)n,
-                          "set title 'K clutter, nu = %g'\n"
-                          "plot '%s' index %d %s using 2:4 with lines lw 2 lc 1 title 'MRE PDAF', \\\n"
-                          "     '%s' index %d %s using 2:5 with lines lw 2 lc 2 title 'MRE PDAFAI', \\\n"
-                          "     '%s' every ::1 using ($1==%g && strcol(5) eq 'PDAF' ? $2 : NaN):9:10:11 with yerrorbars "
-                          "pt 7 lc 1 title 'sim PDAF', \\\n"
-                          "     '%s' every ::1 using ($1==%g && strcol(5) eq 'PDAFAI' ? $2 : NaN):9:10:11 with yerrorbars "
-                          "pt 5 lc 2 title 'sim PDAFAI'\n",
-                          nus[a], mpath, a, a ? "" : "every ::1", mpath, a, a ? "" : "every ::1", path, nus[a], path,
-                          nus[a]);
-        snprintf(body + n, sizeof body - (size_t)n, "unset multiplot\n");
-        plot_gnuplot(com.out, body);
+        struct sim_text b = {NULL, 0, 0, 0};
+        sim_text_add(&b,
+                     "set datafile separator ','\nset datafile missing 'nan'\nset logscale x\nset format x '10^{%%L}'\n"
+                     "set grid\nset key top left font ',9'\nset xlabel 'P_{FA}'\nset ylabel 'position RMSE (m)'\n"
+                     "set logscale y\nset yrange [0.15:3]\nset ytics (0.15, 0.2, 0.3, 0.5, 0.7, 1, 2, 3)\n"
+                     "set multiplot layout 1,%d title 'Brekke 2011 Fig. 2: TOC, SNR %g dB, "
+                     "cell %g m^2 (MRE lines, simulation points, bad tracks removed)'\n",
+                     nnu, snr, cell);
+        for (int a = 0; a < nnu; a++)
+            sim_text_add(&b,
+                         "set title 'K clutter, nu = %g'\n"
+                         "plot '%s' index %d %s using 2:4 with lines lw 2 lc 1 title 'MRE PDAF', \\\n"
+                         "     '%s' index %d %s using 2:5 with lines lw 2 lc 2 title 'MRE PDAFAI', \\\n"
+                         "     '%s' every ::1 using ($1==%g && strcol(5) eq 'PDAF' ? $2 : NaN):9:10:11 with yerrorbars "
+                         "pt 7 lc 1 title 'sim PDAF', \\\n"
+                         "     '%s' every ::1 using ($1==%g && strcol(5) eq 'PDAFAI' ? $2 : NaN):9:10:11 with "
+                         "yerrorbars pt 5 lc 2 title 'sim PDAFAI'\n",
+                         nus[a], mpath, a, a ? "" : "every ::1", mpath, a, a ? "" : "every ::1", path, nus[a], path,
+                         nus[a]);
+        sim_text_add(&b, "unset multiplot\n");
+        if (!b.failed) sim_plot(&com, "", b.s);
+        sim_text_free(&b);
     }
     for (int a = 0; a < nnu; a++) toc_free(toc[a]);
     for (int a = 0; a < 2 * nnu; a++) free(tbl_bufs[a]);

@@ -27,10 +27,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "mc_stats.h"
-#include "plot.h"
 #include "progress.h"
 #include "sim.h"
 #include "single_target.h"
@@ -58,89 +56,57 @@ struct tl_out {          /* one run, both filters */
     int32_t gated_clutter[2];
 };
 
-static void help(void)
+static void keep(void *ctx, long it, int f, const struct st_result *res)
 {
-    printf("trk-sim brekke-trackloss [options]\n"
-           "  Brekke 2011 Tables II-III: lost tracks of the PDAF and the PDAFAI in K clutter, Table I\n"
-           "  setting (T 1 s, 300 scans, q 0.0125^2, R I/12, g 6, loss c1 5 m / c2 15 m, sec. V.B).\n"
-           "  --runs N          runs per scenario and filter (default 10000, the paper's)\n"
-           "  --scans N         scans per run (default 300)\n"
-           "  --cell-m2 LIST    resolution cell areas, lambda = P_FA / cell (default 1,0.25,0.1: the\n"
-           "                    paper does not print it, CONVENTIONS asks for all three)\n"
-           "  --nu LIST         K shapes (default 1,8)\n"
-           "  --snr-db LIST     target SNRs (default 10,15)\n"
-           "  --pfa LIST        false-alarm probabilities (default 1e-4,1e-2,1e-1)\n"
-           "  --texture cell|scan  K texture drawn per detection (default; i.i.d. K amplitudes) or once\n"
-           "                    per scan (bursty clutter, see tools/common/single_target.h)\n"
-           "  --init twopoint|steady  initial track covariance (default twopoint; see the CSV header)\n"
-           "  --grid uniform|geometric  amplitude table grid (default uniform; geometric = Brekke\n"
-           "                    eqs 43-45, piecewise linear)\n"
-           "  --amp-size N      points per amplitude-table curve (default: the generator's)\n"
-           "  common: --seed N --out PREFIX (default brekke_trackloss) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv, PREFIX.gp, PREFIX.png. Prints each table beside the paper's values\n"
-           "  (per 10000 runs) with exact 95%% intervals; '*' marks a paper value outside ours.\n");
+    struct tl_out *o = (struct tl_out *)ctx + it;
+    o->lost[f] = (unsigned char)res->lost;
+    o->hard[f] = (unsigned char)res->lost_hard;
+    o->failed[f] = (unsigned char)res->failed;
+    o->trunc[f] = res->truncated > 0;
+    o->scans[f] = (int32_t)res->scans;
+    o->gated[f] = (int32_t)res->gated;
+    o->gated_clutter[f] = (int32_t)res->gated_clutter;
 }
+
+static const int texture_values[] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
+static const int init_values[] = {ST_INIT_TWOPOINT, ST_INIT_STEADY};
+static const int grid_values[] = {TRK_AMP_GRID_UNIFORM, TRK_AMP_GRID_GEOMETRIC};
 
 SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III: lost tracks, PDAF vs PDAFAI in K clutter")
 {
+    long runs, scans, amp_size = 0;
+    double cells[MAXL], nus[MAXL], snrs[MAXL], pfas[MAXL];
+    int ncell, nnu, nsnr, npfa, init, grid, texture;
+    const struct sim_opt opts[] = {
+        SIM_OPT_LONG("--runs", &runs, "N", "10000", SIM_GE, 1, 0, "runs per scenario and filter, as in the paper"),
+        SIM_OPT_LONG("--scans", &scans, "N", "300", SIM_IN, 1, 1000000, "scans per run"),
+        SIM_OPT_LIST("--cell-m2", cells, &ncell, MAXL, "1,0.25,0.1", SIM_GT, 0, 0,
+                     "resolution cell areas, lambda = P_FA / cell\n"
+                     "(the paper does not print it, CONVENTIONS asks for all three)"),
+        SIM_OPT_LIST("--nu", nus, &nnu, MAXL, "1,8", 0, 0, 0, "K shapes"),
+        SIM_OPT_LIST("--snr-db", snrs, &nsnr, MAXL, "10,15", 0, 0, 0, "target SNRs"),
+        SIM_OPT_LIST("--pfa", pfas, &npfa, MAXL, "1e-4,1e-2,1e-1", 0, 0, 0, "false-alarm probabilities"),
+        SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
+                       "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
+                       "per scan (bursty clutter, see tools/common/single_target.h)"),
+        SIM_OPT_CHOICE("--init", &init, "twopoint|steady", init_values, "twopoint",
+                       "initial track covariance (see the CSV header)"),
+        SIM_OPT_CHOICE("--grid", &grid, "uniform|geometric", grid_values, "uniform",
+                       "amplitude table grid (geometric = Brekke\neqs 43-45, piecewise linear)"),
+        SIM_OPT_LONG("--amp-size", &amp_size, "N", NULL, SIM_IN, 0, 65536,
+                     "points per amplitude-table curve (default: the generator's)"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "brekke-trackloss", NULL,
+        "Brekke 2011 Tables II-III: lost tracks of the PDAF and the PDAFAI in K clutter, Table I\n"
+        "setting (T 1 s, 300 scans, q 0.0125^2, R I/12, g 6, loss c1 5 m / c2 15 m, sec. V.B).",
+        opts, "brekke_trackloss", NULL, 0,
+        "Writes PREFIX.csv, PREFIX.gp, PREFIX.png. Prints each table beside the paper's values\n"
+        "(per 10000 runs) with exact 95% intervals; '*' marks a paper value outside ours.",
+        NULL, NULL};
     struct sim_common com;
-    sim_common_defaults(&com, "brekke_trackloss");
-    long runs = 10000, scans = 300, amp_size = 0;
-    double cells[MAXL] = {1, 0.25, 0.1}, nus[MAXL] = {1, 8}, snrs[MAXL] = {10, 15}, pfas[MAXL] = {1e-4, 1e-2, 1e-1};
-    int ncell = 3, nnu = 2, nsnr = 2, npfa = 3, init = ST_INIT_TWOPOINT, grid = TRK_AMP_GRID_UNIFORM, texture = ST_TEXTURE_CELL;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--scans", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &scans) || scans < 1 || scans > 1000000) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--cell-m2", &v)) != 0) {
-            if (r < 0 || (ncell = sim_parse_list(v, cells, MAXL)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--nu", &v)) != 0) {
-            if (r < 0 || (nnu = sim_parse_list(v, nus, MAXL)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--snr-db", &v)) != 0) {
-            if (r < 0 || (nsnr = sim_parse_list(v, snrs, MAXL)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--pfa", &v)) != 0) {
-            if (r < 0 || (npfa = sim_parse_list(v, pfas, MAXL)) < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--texture", &v)) != 0) {
-            if (r < 0) goto bad;
-            if (!strcmp(v, "cell")) texture = ST_TEXTURE_CELL;
-            else if (!strcmp(v, "scan")) texture = ST_TEXTURE_SCAN;
-            else goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--init", &v)) != 0) {
-            if (r < 0) goto bad;
-            if (!strcmp(v, "twopoint")) init = ST_INIT_TWOPOINT;
-            else if (!strcmp(v, "steady")) init = ST_INIT_STEADY;
-            else goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--grid", &v)) != 0) {
-            if (r < 0) goto bad;
-            if (!strcmp(v, "uniform")) grid = TRK_AMP_GRID_UNIFORM;
-            else if (!strcmp(v, "geometric")) grid = TRK_AMP_GRID_GEOMETRIC;
-            else goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--amp-size", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &amp_size) || amp_size < 0 || amp_size > 65536) goto bad;
-        } else {
-            fprintf(stderr, "brekke-trackloss: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "brekke-trackloss: bad value for %s\n", argv[i]);
-        return 2;
-    }
-    if (com.runs > 0) runs = com.runs;
-    for (int i = 0; i < ncell; i++)
-        if (!(cells[i] > 0)) {
-            fprintf(stderr, "brekke-trackloss: cell areas must be > 0\n");
-            return 2;
-        }
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     if (runs > 0xFFFFFFFFL) {
         fprintf(stderr, "brekke-trackloss: at most 2^32 runs\n");
         return 2;
@@ -149,26 +115,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     const int nscen = nnu * nsnr * npfa, namp = nscen;
     /* amplitude models: one K table per (nu, snr, pfa), built in parallel */
     struct st_amp *amp = calloc((size_t)namp, sizeof *amp);
-    int amp_fail = 0;
-    char amp_err[256] = "";
     if (!amp) return 1;
     const double t_tab = progress_now_s();
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int s = 0; s < namp; s++) {
-        const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, c = s % npfa;
-        char e[256];
-        if (st_amp_init(&amp[s], TRK_AMP_K, nus[a], snrs[b], pfas[c], grid, (unsigned)amp_size, e, sizeof e)) {
-#pragma omp critical(tl_err)
-            {
-                amp_fail = 1;
-                snprintf(amp_err, sizeof amp_err, "%s", e);
-            }
-        }
-    }
-    if (amp_fail) {
-        fprintf(stderr, "brekke-trackloss: %s\n", amp_err);
-        return 1;
-    }
+    if (sim_amp_k_grid(cli.name, amp, nus, nnu, snrs, nsnr, pfas, npfa, grid, (unsigned)amp_size)) return 1;
     const double tab_s = progress_now_s() - t_tab;
     /* one model per (cell, scenario) */
     const long nmod = (long)ncell * nscen;
@@ -179,72 +128,24 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         return 1;
     }
     for (int c = 0; c < ncell; c++)
-        for (int s = 0; s < nscen; s++) {
-            struct st_params sp;
-            st_params_brekke(&sp);
-            sp.n_scans = scans;
-            sp.init = init;
-        sp.texture = texture;
-            sp.amp = &amp[s].m;
-            sp.lambda_per_m2 = amp[s].pfa / cells[c];
-            sp.seed = com.seed;
-            char e[256];
-            if (st_model_init(&mod[c * nscen + s], &sp, e, sizeof e)) {
-                fprintf(stderr, "brekke-trackloss: %s\n", e);
+        for (int s = 0; s < nscen; s++)
+            if (sim_brekke_model(cli.name, &mod[c * nscen + s], &amp[s], cells[c], scans, init, texture, com.seed))
                 return 1;
-            }
-        }
     if (!com.quiet)
         fprintf(stderr,
                 "brekke-trackloss: %d cells x %d scenarios x 2 filters x %ld runs x %ld scans, seed %llu, %d threads "
                 "(amplitude tables %.1f s)\n",
                 ncell, nscen, runs, scans, (unsigned long long)com.seed, threads, tab_s);
-    struct progress pr;
-    progress_start(&pr, "brekke-trackloss", nmod * runs, !com.quiet);
-    const double t0 = progress_now_s();
-    int bad_call = 0;
-#pragma omp parallel
-    {
-        struct st_ws ws = {NULL, 0, NULL, 0};
-        long pending = 0;
-#pragma omp for schedule(dynamic, 8)
-        for (long it = 0; it < nmod * runs; it++) {
-            const long mi = it / runs, run = it % runs;
-            struct tl_out *o = &out[it];
-            for (int f = 0; f < 2; f++) {
-                struct st_result res;
-                if (st_run(&mod[mi], &ws, (uint32_t)run, f, 1, NULL, &res) != 0) {
-#pragma omp atomic write
-                    bad_call = 1;
-                }
-                o->lost[f] = (unsigned char)res.lost;
-                o->hard[f] = (unsigned char)res.lost_hard;
-                o->failed[f] = (unsigned char)res.failed;
-                o->trunc[f] = res.truncated > 0;
-                o->scans[f] = (int32_t)res.scans;
-                o->gated[f] = (int32_t)res.gated;
-                o->gated_clutter[f] = (int32_t)res.gated_clutter;
-            }
-            if (++pending == 64) {
-#pragma omp critical(sim_progress)
-                progress_add(&pr, pending);
-                pending = 0;
-            }
-        }
-#pragma omp critical(sim_progress)
-        progress_add(&pr, pending);
-        st_ws_free(&ws);
-    }
-    progress_end(&pr);
-    const double wall = progress_now_s() - t0;
+    int bad_call;
+    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, 1, keep, out, &bad_call);
     if (bad_call) {
         fprintf(stderr, "brekke-trackloss: internal error (bad run call)\n");
         return 1;
     }
     /* reduce in run order */
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    FILE *f = plot_csv_open(path, "# brekke-trackloss: Brekke 2011 Tables II-III, lost tracks per scenario and filter");
+    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+                           "# brekke-trackloss: Brekke 2011 Tables II-III, lost tracks per scenario and filter");
     if (!f) return 1;
     fprintf(f, "# Table I: T 1 s, %ld scans, q 0.0125^2 m^2/s^3, R I/12 m^2, gate g 6 (gamma 36; used %.6g), c1 5 m, c2 15 m\n",
             scans, mod[0].gamma_used);
@@ -335,8 +236,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     if (!com.no_plot) {
         /* per cell: ours (points with error bars) and the paper (open symbols), one panel per filter */
         char dat[1024];
-        snprintf(dat, sizeof dat, "%s_plot.csv", com.out);
-        FILE *g = plot_csv_open(dat, "index,label,cell_m2,pdaf,pdaf_lo,pdaf_hi,pdafai,pdafai_lo,pdafai_hi,paper_pdaf,paper_pdafai");
+        FILE *g = sim_csv_open(&com, "_plot.csv", dat, sizeof dat,
+                               "index,label,cell_m2,pdaf,pdaf_lo,pdaf_hi,pdafai,pdafai_lo,pdafai_hi,paper_pdaf,paper_pdafai");
         if (!g) return 1;
         for (int c = 0; c < ncell; c++)
             for (int s = 0; s < nscen; s++) {
@@ -350,25 +251,29 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                         p0 < 0 ? NAN : fmax(p0, 0.5), p1 < 0 ? NAN : fmax(p1, 0.5));
             }
         fclose(g);
-        char body[8192];
-        int n = snprintf(body, sizeof body,
-                         "set datafile separator ','\nset datafile missing 'nan'\nset logscale y\nset yrange [0.4:20000]\n"
-                         "set grid\nset key bottom left font ',8'\nset xtics rotate by 60 right font ',7'\n"
-                         "set xrange [-0.5:%d.5]\nset ylabel 'lost tracks per 10000 (0 drawn at 0.5)'\n"
-                         "set multiplot layout 1,2 title 'Brekke 2011 Tables II-III: lost tracks (%ld runs, 300 s)'\n",
-                         nscen - 1, runs);
+        struct sim_text t = {NULL, 0, 0, 0};
+        sim_text_add(&t,
+                     "set datafile separator ','\nset datafile missing 'nan'\nset logscale y\nset yrange [0.4:20000]\n"
+                     "set grid\nset key bottom left font ',8'\nset xtics rotate by 60 right font ',7'\n"
+                     "set xrange [-0.5:%d.5]\nset ylabel 'lost tracks per 10000 (0 drawn at 0.5)'\n"
+                     "set multiplot layout 1,2 title 'Brekke 2011 Tables II-III: lost tracks (%ld runs, 300 s)'\n",
+                     nscen - 1, runs);
         for (int fl = 0; fl < 2; fl++) {
-            n += snprintf(body + n, sizeof body - (size_t)n, "set title '%s'\nplot '%s' every ::1 using 1:%d:xtic(2) with points pt 6 ps 1.5 lc rgb 'black' title 'paper'",
-                          fl ? "PDAFAI" : "PDAF", dat, fl ? 11 : 10);
-            for (int c = 0; c < ncell && n < (int)sizeof body - 512; c++)
-                n += snprintf(body + n, sizeof body - (size_t)n,
-                              ", \\\n  '%s' every ::%d::%d using ($1+%.2f):%d:%d:%d with yerrorbars pt 7 ps 0.8 lc %d title 'ours, cell %g m^2'",
-                              dat, 1 + c * nscen, (c + 1) * nscen, 0.12 * (c - (ncell - 1) / 2.0), fl ? 7 : 4, fl ? 8 : 5,
-                              fl ? 9 : 6, c + 1, cells[c]);
-            n += snprintf(body + n, sizeof body - (size_t)n, "\n");
+            sim_text_add(&t,
+                         "set title '%s'\nplot '%s' every ::1 using 1:%d:xtic(2) with points pt 6 ps 1.5 "
+                         "lc rgb 'black' title 'paper'",
+                         fl ? "PDAFAI" : "PDAF", dat, fl ? 11 : 10);
+            for (int c = 0; c < ncell; c++)
+                sim_text_add(&t,
+                             ", \\\n  '%s' every ::%d::%d using ($1+%.2f):%d:%d:%d with yerrorbars pt 7 ps 0.8 lc %d "
+                             "title 'ours, cell %g m^2'",
+                             dat, 1 + c * nscen, (c + 1) * nscen, 0.12 * (c - (ncell - 1) / 2.0), fl ? 7 : 4,
+                             fl ? 8 : 5, fl ? 9 : 6, c + 1, cells[c]);
+            sim_text_add(&t, "\n");
         }
-        snprintf(body + n, sizeof body - (size_t)n, "unset multiplot\n");
-        plot_gnuplot(com.out, body);
+        sim_text_add(&t, "unset multiplot\n");
+        if (!t.failed) sim_plot(&com, "", t.s);
+        sim_text_free(&t);
     }
     for (int fl = 0; fl < 2; fl++) free(lostv[fl]), free(lov[fl]), free(hiv[fl]);
     for (int s = 0; s < namp; s++) st_amp_free(&amp[s]);

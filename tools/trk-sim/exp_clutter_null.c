@@ -21,10 +21,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
-#include "plot.h"
-#include "progress.h"
 #include "rng.h"
 #include "sim.h"
 #include "trk/clutter_test.h"
@@ -57,63 +54,29 @@ static void binom_interval(long n, double p, double tail, long *lo, long *hi)
     }
 }
 
-static void help(void)
-{
-    printf("trk-sim clutter-null [options]\n"
-           "  Rejection rate of Kennedy's clutter density (chi-square) and clutter amplitude (F)\n"
-           "  tests on tracks updated by pure clutter, per update t (window K = min(t, kmax)),\n"
-           "  against the exact 99%% binomial interval of alpha.\n"
-           "  --runs N         tracks (default 100000)\n"
-           "  --scans N        updates per track (default 40)\n"
-           "  --alpha A        size of both tests (default 0.01)\n"
-           "  --kmax K         window (default 25, Kennedy's)\n"
-           "  --mean-peaks M   expected clutter peaks per scan in the region (default 30)\n"
-           "  --a-min DB       detection threshold SNR (default 5)\n"
-           "  --theta DB       mean clutter SNR above threshold, theta_A (default 8)\n"
-           "  common: --seed N --out PREFIX (default clutter_null) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv, PREFIX.gp, PREFIX.png.\n");
-}
-
 SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate of the clutter density and amplitude tests")
 {
+    long runs, scans, kmax;
+    double alpha, mean_peaks, a_min, theta;
+    const struct sim_opt opts[] = {
+        SIM_OPT_LONG("--runs", &runs, "N", "100000", SIM_GE, 1, 0, "tracks"),
+        SIM_OPT_LONG("--scans", &scans, "N", "40", SIM_IN, 1, MAX_SCANS, "updates per track"),
+        SIM_OPT_DOUBLE("--alpha", &alpha, "A", "0.01", SIM_OPEN, 0, 1, "size of both tests"),
+        SIM_OPT_LONG("--kmax", &kmax, "K", "25", SIM_IN, 1, TRK_CLUTTER_KMAX, "window, as Kennedy's"),
+        SIM_OPT_DOUBLE("--mean-peaks", &mean_peaks, "M", "30", SIM_IN, 2, 1000,
+                       "expected clutter peaks per scan in the region"),
+        SIM_OPT_DOUBLE("--a-min", &a_min, "DB", "5", 0, 0, 0, "detection threshold SNR"),
+        SIM_OPT_DOUBLE("--theta", &theta, "DB", "8", 0, 0, 0, "mean clutter SNR above threshold, theta_A"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "clutter-null", NULL,
+        "Rejection rate of Kennedy's clutter density (chi-square) and clutter amplitude (F)\n"
+        "tests on tracks updated by pure clutter, per update t (window K = min(t, kmax)),\n"
+        "against the exact 99% binomial interval of alpha.",
+        opts, "clutter_null", NULL, 0, "Writes PREFIX.csv, PREFIX.gp, PREFIX.png.", NULL, NULL};
     struct sim_common com;
-    sim_common_defaults(&com, "clutter_null");
-    long runs = 100000, scans = 40, kmax = 25;
-    double alpha = 0.01, mean_peaks = 30, a_min = 5, theta = 8;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--scans", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &scans) || scans < 1 || scans > MAX_SCANS) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--kmax", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &kmax) || kmax < 1 || kmax > TRK_CLUTTER_KMAX) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--alpha", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &alpha) || !(alpha > 0 && alpha < 1)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--mean-peaks", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &mean_peaks) || !(mean_peaks >= 2 && mean_peaks <= 1000))
-                goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--a-min", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &a_min)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--theta", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &theta)) goto bad;
-        } else {
-            fprintf(stderr, "clutter-null: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "clutter-null: bad value for %s\n", argv[i]);
-        return 2;
-    }
-    if (com.runs > 0) runs = com.runs;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     if (!(theta > a_min)) {
         fprintf(stderr, "clutter-null: --theta must exceed --a-min\n");
         return 2;
@@ -135,9 +98,8 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
     if (!com.quiet)
         fprintf(stderr, "clutter-null: %ld tracks x %ld updates, alpha %g, kmax %ld, %g peaks/scan, seed %llu, %d threads\n",
             runs, scans, alpha, kmax, mean_peaks, (unsigned long long)com.seed, threads);
-    struct progress pr;
-    progress_start(&pr, "clutter-null", runs, !com.quiet);
-    const double t0 = progress_now_s();
+    struct sim_progress pr;
+    sim_progress_start(&pr, &com, "clutter-null", runs);
 #pragma omp parallel
     {
         long lc[MAX_SCANS] = {0}, la[MAX_SCANS] = {0}, ldc[MAX_SCANS] = {0}, lda[MAX_SCANS] = {0};
@@ -180,8 +142,7 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
                 ldc[t] += chi->decision;
                 lda[t] += amp->decision;
             }
-#pragma omp critical(sim_progress)
-            progress_add(&pr, 1);
+            sim_progress_add(&pr, 1);
         }
 #pragma omp critical(sim_reduce)
         { /* integer sums: the same for any thread count */
@@ -198,13 +159,12 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
         free(chi);
         free(amp);
     }
-    progress_end(&pr);
-    const double wall = progress_now_s() - t0;
+    const double wall = sim_progress_end(&pr);
     long lo, hi;
     binom_interval(runs, alpha, 0.005, &lo, &hi);
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    FILE *f = plot_csv_open(path, "# clutter-null: per update t, rejections of H0 (track on clutter) over runs");
+    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+                           "# clutter-null: per update t, rejections of H0 (track on clutter) over runs");
     if (!f) return 1;
     fprintf(f, "# runs %ld alpha %g kmax %ld mean_peaks %g a_min %g theta %g seed %llu; 99%% binomial interval [%ld, %ld]\n",
             runs, alpha, kmax, mean_peaks, a_min, theta, (unsigned long long)com.seed, lo, hi);
@@ -242,20 +202,16 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
     if (redrawn || overflow)
         printf("# empty scans redrawn: %ld; scans truncated to capacity: %ld\n", redrawn, overflow);
     printf("# file: %s\n", path);
-    if (!com.no_plot) {
-        char body[8192];
-        snprintf(body, sizeof body,
-                 "set datafile separator ','\n"
-                 "set title 'Clutter tests under H0 (track on clutter): %ld tracks, alpha %g, Kmax %ld'\n"
-                 "set xlabel 'update t (window K = min(t, Kmax))'\nset ylabel 'rejection rate of H0'\n"
-                 "set grid\nset key top left\nset yrange [%g:%g]\n"
-                 "plot '%s' using 1:7 with lines dt 2 lc rgb '#888888' title '99%% binomial interval', \\\n"
-                 "     '%s' using 1:8 with lines dt 2 lc rgb '#888888' notitle, \\\n"
-                 "     '%s' using 1:4 with linespoints pt 7 lc rgb '#1f77b4' title 'density test (chi2)', \\\n"
-                 "     '%s' using 1:6 with linespoints pt 5 lc rgb '#d62728' title 'amplitude test (F)'\n",
-                 runs, alpha, kmax, 0.9 * (double)lo / (double)runs, 1.1 * (double)hi / (double)runs,
-                 path, path, path, path);
-        plot_gnuplot(com.out, body);
-    }
+    sim_plotf(&com, "",
+              "set datafile separator ','\n"
+              "set title 'Clutter tests under H0 (track on clutter): %ld tracks, alpha %g, Kmax %ld'\n"
+              "set xlabel 'update t (window K = min(t, Kmax))'\nset ylabel 'rejection rate of H0'\n"
+              "set grid\nset key top left\nset yrange [%g:%g]\n"
+              "plot '%s' using 1:7 with lines dt 2 lc rgb '#888888' title '99%% binomial interval', \\\n"
+              "     '%s' using 1:8 with lines dt 2 lc rgb '#888888' notitle, \\\n"
+              "     '%s' using 1:4 with linespoints pt 7 lc rgb '#1f77b4' title 'density test (chi2)', \\\n"
+              "     '%s' using 1:6 with linespoints pt 5 lc rgb '#d62728' title 'amplitude test (F)'\n",
+              runs, alpha, kmax, 0.9 * (double)lo / (double)runs, 1.1 * (double)hi / (double)runs,
+              path, path, path, path);
     return 0;
 }

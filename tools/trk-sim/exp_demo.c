@@ -30,7 +30,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "plot.h"
 #include "progress.h"
 #include "scenario.h"
 #include "sim.h"
@@ -76,81 +75,57 @@ static int mkdir_p(const char *path)
     return 0;
 }
 
-static void help(void)
+/* key=value operands: tracker settings, applied after the demo's own */
+struct demo_settings {
+    const char *kv[MAX_SETTINGS];
+    int n;
+};
+
+static int take_setting(const char *arg, void *ctx)
 {
-    printf("trk-sim demo [options] [key=value ...]\n"
-           "  trk's main job end to end (`make demo`): a simulated sonar with heavy-tailed (K, nu 1)\n"
-           "  clutter through the track table (PDAFAI, confirmation by amplitude-aided visibility,\n"
-           "  Shiryaev termination);\n"
-           "  prints a summary (tracks confirmed, lost, false; RMSE against the MRE prediction) and\n"
-           "  writes CSV files and PNG plots.\n"
-           "  --tables DIR      amplitude tables of `make tables` (default build/tables); the demo\n"
-           "                    uses DIR/amp_k1_snr15_pfa1e-2.tbl\n"
-           "  --amp-table FILE  another amplitude table (its model, SNR and P_FA)\n"
-           "  --scans N         scans (default 250, one every 2 s)\n"
-           "  --clutter N       mean clutter detections per scan over the 2 km x 2 km area (default 15)\n"
-           "  --fluct           targets fade (Blanding's two-state P_D: p 0.1, q 0.02, P_D low 0.1)\n"
-           "  --assoc-m D       a track is on a target within D m (default 25)\n"
-           "  --mre-samples N   importance samples of the MRE's q2 (default: toc.h's)\n"
-           "  key=value         tracker settings (tracker_config.h keys, e.g. term=page, confirm=mn);\n"
-           "                    the demo sets confirm=visibility, max_tentative_scans=10,\n"
-           "                    init_speed_sigma_mps=3, term=shiryaev with the scenario's detection model\n"
-           "  common: --seed N (default 1) --out DIR (default demo) --quiet --no-plot\n"
-           "  Writes DIR/detections.csv, truth.csv, tracks.csv, errors.csv, summary.csv,\n"
-           "  demo_tracks.png (tracks over detections), demo_error.png (error over time).\n");
+    struct demo_settings *s = ctx;
+    if (arg[0] == '-' || !strchr(arg, '=') || s->n >= MAX_SETTINGS) return -1;
+    s->kv[s->n++] = arg;
+    return 0;
 }
 
 SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutter through the tracker, scored")
 {
-    struct sim_common com;
-    sim_common_defaults(&com, "demo");
-    const char *tables = "build/tables", *amp_table = NULL;
-    long scans = 250, mre_samples = 0;
-    double clutter_per_scan = 15, assoc_m = 25;
+    const char *tables, *amp_table = NULL;
+    long scans, mre_samples = 0;
+    double clutter_per_scan, assoc_m;
     int fluct = 0;
-    const char *settings[MAX_SETTINGS];
-    int n_set = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if (strcmp(argv[i], "--fluct") == 0) {
-            fluct = 1;
-            continue;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--tables", &v)) != 0) {
-            if (r < 0) goto bad;
-            tables = v;
-        } else if ((r = sim_arg(argc, argv, &i, "--amp-table", &v)) != 0) {
-            if (r < 0) goto bad;
-            amp_table = v;
-        } else if ((r = sim_arg(argc, argv, &i, "--scans", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &scans) || scans < 10 || scans > 100000) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--clutter", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &clutter_per_scan) || !(clutter_per_scan >= 0 && clutter_per_scan <= 200))
-                goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--assoc-m", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &assoc_m) || !(assoc_m > 0)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--mre-samples", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &mre_samples) || mre_samples < 1000) goto bad;
-        } else if (argv[i][0] != '-' && strchr(argv[i], '=') && n_set < MAX_SETTINGS) {
-            settings[n_set++] = argv[i];
-        } else {
-            fprintf(stderr, "demo: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "demo: bad value for %s\n", argv[i]);
-        return 2;
-    }
+    struct demo_settings set = {{NULL}, 0};
+    const struct sim_opt opts[] = {
+        SIM_OPT_STRING("--tables", &tables, "DIR", "build/tables",
+                       "amplitude tables of `make tables`; the demo\n"
+                       "uses DIR/amp_k1_snr15_pfa1e-2.tbl"),
+        SIM_OPT_STRING("--amp-table", &amp_table, "FILE", NULL, "another amplitude table (its model, SNR and P_FA)"),
+        SIM_OPT_LONG("--scans", &scans, "N", "250", SIM_IN, 10, 100000, "scans, one every 2 s"),
+        SIM_OPT_DOUBLE("--clutter", &clutter_per_scan, "N", "15", SIM_IN, 0, 200,
+                       "mean clutter detections per scan over the 2 km x 2 km area"),
+        SIM_OPT_FLAG("--fluct", &fluct, "targets fade (Blanding's two-state P_D: p 0.1, q 0.02, P_D low 0.1)"),
+        SIM_OPT_DOUBLE("--assoc-m", &assoc_m, "D", "25", SIM_GT, 0, 0, "a track is on a target within D m"),
+        SIM_OPT_LONG("--mre-samples", &mre_samples, "N", NULL, SIM_GE, 1000, 0,
+                     "importance samples of the MRE's q2 (default: toc.h's)"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "demo", "[options] [key=value ...]",
+        "trk's main job end to end (`make demo`): a simulated sonar with heavy-tailed (K, nu 1)\n"
+        "clutter through the track table (PDAFAI, confirmation by amplitude-aided visibility,\n"
+        "Shiryaev termination);\n"
+        "prints a summary (tracks confirmed, lost, false; RMSE against the MRE prediction) and\n"
+        "writes CSV files and PNG plots.",
+        opts, "demo", "DIR", SIM_UNUSED_RUNS | SIM_UNUSED_THREADS,
+        "key=value: tracker settings (tracker_config.h keys, e.g. term=page, confirm=mn);\n"
+        "the demo sets confirm=visibility, max_tentative_scans=10,\n"
+        "init_speed_sigma_mps=3, term=shiryaev with the scenario's detection model\n"
+        "Writes DIR/detections.csv, truth.csv, tracks.csv, errors.csv, summary.csv,\n"
+        "demo_tracks.png (tracks over detections), demo_error.png (error over time).",
+        take_setting, &set};
+    struct sim_common com;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     const double t_start = progress_now_s();
     char err[512], table_path[1024], path[1200];
     if (amp_table) snprintf(table_path, sizeof table_path, "%s", amp_table);
@@ -222,13 +197,14 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
             scen_free(&sc);
             return 1;
         }
-    for (int i = 0; i < n_set; i++) {
-        snprintf(kv, sizeof kv, "%s", settings[i]);
+    for (int i = 0; i < set.n; i++) {
+        snprintf(kv, sizeof kv, "%s", set.kv[i]);
         char *eq = strchr(kv, '=');
         *eq = 0;
         int r = tcfg_set(&cfg, kv, eq + 1, err, sizeof err);
         if (r != 0) {
-            fprintf(stderr, "demo: %s: %s\n", settings[i], r > 0 ? "unknown key (see trk-lcm-bridge --help-config)" : err);
+            fprintf(stderr, "demo: %s: %s\n", set.kv[i],
+                    r > 0 ? "unknown key (see trk-lcm-bridge --help-config)" : err);
             scen_free(&sc);
             return 2;
         }
@@ -253,12 +229,11 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         return 1;
     }
     /* ---- run */
-    snprintf(path, sizeof path, "%s/detections.csv", com.out);
-    FILE *fd = plot_csv_open(path, "scan,time_s,x_m,y_m,amplitude");
-    snprintf(path, sizeof path, "%s/truth.csv", com.out);
-    FILE *ft = plot_csv_open(path, "scan,time_s,target,x_m,y_m,vx_mps,vy_mps,present,high");
-    snprintf(path, sizeof path, "%s/tracks.csv", com.out);
-    FILE *fk = plot_csv_open(path, "scan,time_s,id,status,x_m,y_m,vx_mps,vy_mps,sd_x_m,sd_y_m,target,err_m");
+    FILE *fd = sim_csv_open(&com, "/detections.csv", path, sizeof path, "scan,time_s,x_m,y_m,amplitude");
+    FILE *ft = sim_csv_open(&com, "/truth.csv", path, sizeof path,
+                            "scan,time_s,target,x_m,y_m,vx_mps,vy_mps,present,high");
+    FILE *fk = sim_csv_open(&com, "/tracks.csv", path, sizeof path,
+                            "scan,time_s,id,status,x_m,y_m,vx_mps,vy_mps,sd_x_m,sd_y_m,target,err_m");
     if (!fd || !ft || !fk) return 1;
     static struct trk_detection det[TRK_MAX_DETECTIONS];
     struct trk_rec *rec = NULL;
@@ -408,8 +383,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     /* RMSE: true tracks on their target, from 10 scans after confirmation */
     double sse = 0;
     long nse = 0;
-    snprintf(path, sizeof path, "%s/errors.csv", com.out);
-    FILE *fe = plot_csv_open(path, "scan,time_s,id,target,err_m,in_rmse");
+    FILE *fe = sim_csv_open(&com, "/errors.csv", path, sizeof path, "scan,time_s,id,target,err_m,in_rmse");
     if (!fe) return 1;
     uint32_t prev_id = 0;
     for (size_t i = 0; i < n_er; i++) {
@@ -451,8 +425,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     }
     const double mre_s = progress_now_s() - t_mre0;
     /* ---- summary */
-    snprintf(path, sizeof path, "%s/summary.csv", com.out);
-    FILE *fs = plot_csv_open(path, "key,value");
+    FILE *fs = sim_csv_open(&com, "/summary.csv", path, sizeof path, "key,value");
     if (!fs) return 1;
     const struct trk_amplitude *am = &rt.amp[0];
     printf("\n== trk demo: %ld sonar scans (%.0f s), 2 km x 2 km, seed %llu\n", scans, (double)scans * dt,
@@ -511,38 +484,33 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
             tg_end[3] > 0 && last_end[3] >= tg_end[3] && last_end[3] < scans ? last_end[3] - tg_end[3] : -1, rmse, nse,
             mre[1], mre[0]);
     fclose(fs);
-    if (!com.no_plot) {
-        char base[1100], body[8192];
-        snprintf(base, sizeof base, "%s/demo_tracks", com.out);
-        snprintf(body, sizeof body,
-                 "set datafile separator ','\nset size ratio -1\nset grid\n"
-                 "set key bottom right opaque box font ',9'\n"
-                 "set title 'trk demo: tracks over detections (%ld scans, K clutter nu %g, %.0f per scan)'\n"
-                 "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset xrange [0:2000]\nset yrange [0:2000]\n"
-                 "plot '%s/detections.csv' every ::1 using 3:4 with dots lc rgb '#a0a0a0' title 'detections (all scans)', \\\n"
-                 "     '%s/truth.csv' every ::1 using ($8==1 ? $4 : NaN):5 with points pt 7 ps 0.9 lc rgb '#c8c8c8' "
-                 "title 'targets (truth)', \\\n"
-                 "     '%s/tracks.csv' every ::1 using ($11>=0 ? $5 : NaN):6:($3) with points pt 7 ps 0.25 lc variable "
-                 "title 'confirmed tracks on targets', \\\n"
-                 "     '%s/tracks.csv' every ::1 using ($11<0 ? $5 : NaN):6 with points pt 1 ps 0.7 lc rgb 'red' "
-                 "title 'confirmed, off target'\n",
-                 scans, (double)am->nu, clutter_per_scan, com.out, com.out, com.out, com.out);
-        plot_gnuplot(base, body);
-        snprintf(base, sizeof base, "%s/demo_error", com.out);
-        char mre_line[256] = "";
-        if (isfinite(mre[1]))
-            snprintf(mre_line, sizeof mre_line,
-                     ", \\\n     %.6g with lines lw 2 lc rgb '#d62728' title 'MRE prediction %.2f m (PDAFAI)'", mre[1],
-                     mre[1]);
-        snprintf(body, sizeof body,
-                 "set datafile separator ','\nset grid\nset key top right opaque box\n"
-                 "set title 'trk demo: position error of the tracks on targets'\n"
-                 "set xlabel 'time (s)'\nset ylabel 'position error (m)'\nset yrange [0:*]\n"
-                 "plot '%s/errors.csv' every ::1 using 2:5:($3) with points pt 7 ps 0.4 lc variable title 'track error', \\\n"
-                 "     %.6g with lines lw 2 dt 2 lc rgb 'black' title 'RMSE %.2f m (measured)'%s\n",
-                 com.out, isnan(rmse) ? 0 : rmse, isnan(rmse) ? 0 : rmse, mre_line);
-        plot_gnuplot(base, body);
-    }
+    sim_plotf(&com, "/demo_tracks",
+              "set datafile separator ','\nset size ratio -1\nset grid\n"
+              "set key bottom right opaque box font ',9'\n"
+              "set title 'trk demo: tracks over detections (%ld scans, K clutter nu %g, %.0f per scan)'\n"
+              "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset xrange [0:2000]\nset yrange [0:2000]\n"
+              "plot '%s/detections.csv' every ::1 using 3:4 with dots lc rgb '#a0a0a0' title 'detections (all scans)', "
+              "\\\n"
+              "     '%s/truth.csv' every ::1 using ($8==1 ? $4 : NaN):5 with points pt 7 ps 0.9 lc rgb '#c8c8c8' "
+              "title 'targets (truth)', \\\n"
+              "     '%s/tracks.csv' every ::1 using ($11>=0 ? $5 : NaN):6:($3) with points pt 7 ps 0.25 lc variable "
+              "title 'confirmed tracks on targets', \\\n"
+              "     '%s/tracks.csv' every ::1 using ($11<0 ? $5 : NaN):6 with points pt 1 ps 0.7 lc rgb 'red' "
+              "title 'confirmed, off target'\n",
+              scans, (double)am->nu, clutter_per_scan, com.out, com.out, com.out, com.out);
+    char mre_line[256] = "";
+    if (isfinite(mre[1]))
+        snprintf(mre_line, sizeof mre_line,
+                 ", \\\n     %.6g with lines lw 2 lc rgb '#d62728' title 'MRE prediction %.2f m (PDAFAI)'", mre[1],
+                 mre[1]);
+    sim_plotf(&com, "/demo_error",
+              "set datafile separator ','\nset grid\nset key top right opaque box\n"
+              "set title 'trk demo: position error of the tracks on targets'\n"
+              "set xlabel 'time (s)'\nset ylabel 'position error (m)'\nset yrange [0:*]\n"
+              "plot '%s/errors.csv' every ::1 using 2:5:($3) with points pt 7 ps 0.4 lc variable title 'track error', "
+              "\\\n"
+              "     %.6g with lines lw 2 dt 2 lc rgb 'black' title 'RMSE %.2f m (measured)'%s\n",
+              com.out, isnan(rmse) ? 0 : rmse, isnan(rmse) ? 0 : rmse, mre_line);
     free(major);
     free(rec);
     free(er);

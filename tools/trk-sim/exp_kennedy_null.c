@@ -21,11 +21,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "mc_stats.h"
-#include "plot.h"
-#include "progress.h"
 #include "sim.h"
 #include "single_target.h"
 
@@ -33,67 +30,34 @@ struct kn_out {
     unsigned char chi2, amp, chi2_ever, amp_ever, outside, failed;
 };
 
-static void help(void)
-{
-    printf("trk-sim kennedy-null [options]\n"
-           "  Kennedy 2008 Figs. 2-3: false tracks confirmed by the clutter density (chi2) and\n"
-           "  amplitude (F) tests with confirmation on the last scan only, per run length, against\n"
-           "  alpha x runs and its exact 95%% binomial interval.\n"
-           "  --runs N          runs per scan length (default 1000, the paper's)\n"
-           "  --max-scans N     run lengths 2 .. N (default 50)\n"
-           "  --peaks N         clutter peaks per scan (default 100; at most TRK_MAX_DETECTIONS)\n"
-           "  --alpha A         size of both tests (default 0.01)\n"
-           "  --kmax K          window (default 25)\n"
-           "  --b B             measurement noise factor, sigma = B x region size (default 0.02 = 1/50)\n"
-           "  --torus           the region wraps around: no edge effects (the density test's size is\n"
-           "                    then alpha on every length; Kennedy's bounded region loses some at\n"
-           "                    long runs, as the paper notes)\n"
-           "  common: --seed N --out PREFIX (default kennedy_null) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv, PREFIX.gp, PREFIX.png.\n");
-}
-
 SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-track confirmations on the last scan vs alpha")
 {
-    struct sim_common com;
-    sim_common_defaults(&com, "kennedy_null");
-    long runs = 1000, max_scans = 50, peaks = 100, kmax = 25;
-    double alpha = 0.01, b = 1.0 / 50;
+    long runs, max_scans, peaks, kmax;
+    double alpha, b;
     int torus = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if (strcmp(argv[i], "--torus") == 0) {
-            torus = 1;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--max-scans", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &max_scans) || max_scans < 2 || max_scans > 100000) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--peaks", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &peaks) || peaks < 2) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--alpha", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &alpha) || !(alpha > 0 && alpha < 1)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--kmax", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &kmax) || kmax < 1 || kmax > TRK_CLUTTER_KMAX) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--b", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &b) || !(b > 0 && b < 1)) goto bad;
-        } else {
-            fprintf(stderr, "kennedy-null: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "kennedy-null: bad value for %s\n", argv[i]);
-        return 2;
-    }
-    if (com.runs > 0) runs = com.runs;
+    const struct sim_opt opts[] = {
+        SIM_OPT_LONG("--runs", &runs, "N", "1000", SIM_GE, 1, 0, "runs per scan length, as in the paper"),
+        SIM_OPT_LONG("--max-scans", &max_scans, "N", "50", SIM_IN, 2, 100000, "run lengths 2 .. N"),
+        SIM_OPT_LONG("--peaks", &peaks, "N", "100", SIM_GE, 2, 0,
+                     "clutter peaks per scan (at most TRK_MAX_DETECTIONS)"),
+        SIM_OPT_DOUBLE("--alpha", &alpha, "A", "0.01", SIM_OPEN, 0, 1, "size of both tests"),
+        SIM_OPT_LONG("--kmax", &kmax, "K", "25", SIM_IN, 1, TRK_CLUTTER_KMAX, "window"),
+        SIM_OPT_DOUBLE("--b", &b, "B", "0.02", SIM_OPEN, 0, 1,
+                       "measurement noise factor, sigma = B x region size (Kennedy's 1/50)"),
+        SIM_OPT_FLAG("--torus", &torus,
+                     "the region wraps around: no edge effects (the density test's size is\n"
+                     "then alpha on every length; Kennedy's bounded region loses some at\n"
+                     "long runs, as the paper notes)"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "kennedy-null", NULL,
+        "Kennedy 2008 Figs. 2-3: false tracks confirmed by the clutter density (chi2) and\n"
+        "amplitude (F) tests with confirmation on the last scan only, per run length, against\n"
+        "alpha x runs and its exact 95% binomial interval.",
+        opts, "kennedy_null", NULL, 0, "Writes PREFIX.csv, PREFIX.gp, PREFIX.png.", NULL, NULL};
+    struct sim_common com;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     if (runs > 0xFFFFFFFFL) return 2;
     struct kn_params kp;
     kn_params_kennedy(&kp);
@@ -117,9 +81,8 @@ SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-trac
     if (!com.quiet)
         fprintf(stderr, "kennedy-null: %ld run lengths x %ld runs, %ld peaks/scan, alpha %g, seed %llu, %d threads\n",
                 nlen, runs, peaks, alpha, (unsigned long long)com.seed, threads);
-    struct progress pr;
-    progress_start(&pr, "kennedy-null", nlen * runs, !com.quiet);
-    const double t0 = progress_now_s();
+    struct sim_progress pr;
+    sim_progress_start(&pr, &com, "kennedy-null", nlen * runs);
     long scans_done = 0;
 #pragma omp parallel reduction(+ : scans_done)
     {
@@ -137,22 +100,16 @@ SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-trac
             o->outside = (unsigned char)res.outside;
             o->failed = (unsigned char)res.failed;
             scans_done += n;
-            if (++pending == 64) {
-#pragma omp critical(sim_progress)
-                progress_add(&pr, pending);
-                pending = 0;
-            }
+            sim_progress_step(&pr, &pending);
         }
-#pragma omp critical(sim_progress)
-        progress_add(&pr, pending);
+        sim_progress_add(&pr, pending);
     }
-    progress_end(&pr);
-    const double wall = progress_now_s() - t0;
+    const double wall = sim_progress_end(&pr);
     long lo, hi;
     mc_binom_accept(runs, alpha, 0.025, &lo, &hi);
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    FILE *f = plot_csv_open(path, "# kennedy-null: false-track confirmations on the last scan, Kennedy 2008 Figs. 2-3");
+    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+                           "# kennedy-null: false-track confirmations on the last scan, Kennedy 2008 Figs. 2-3");
     if (!f) return 1;
     fprintf(f, "# region 10-20 km x 100-200 km%s, %ld peaks/scan, b %g (sigma %g m, %g m), T 1 s, b' 1/1000, PDA gate P_G 0.99, "
                "a_min 5 dB, theta 10 dB, alpha %g, kmax %ld, runs %ld per length, seed %llu; exact 95%% interval of "
@@ -214,20 +171,16 @@ SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-trac
     printf("# wall %.1f s on %d threads; %ld track updates, %.3g updates/s\n", wall, threads, scans_done,
            (double)scans_done / wall);
     printf("# file: %s\n", path);
-    if (!com.no_plot) {
-        char body[8192];
-        snprintf(body, sizeof body,
-                 "set datafile separator ','\nset grid\nset key top right\n"
-                 "set title 'Kennedy 2008 Figs. 2-3: confirmed false tracks, test on the last scan (%ld runs, alpha %g)'\n"
-                 "set xlabel 'scans per run'\nset ylabel 'confirmed (false) tracks'\nset yrange [0:%g]\n"
-                 "plot '%s' every ::1 using 1:4 with lines dt 2 lc rgb '#888888' title 'exact 95%% interval', \\\n"
-                 "     '%s' every ::1 using 1:5 with lines dt 2 lc rgb '#888888' notitle, \\\n"
-                 "     '%s' every ::1 using 1:3 with lines lw 2 lc rgb 'black' title 'alpha x runs', \\\n"
-                 "     '%s' every ::1 using 1:6 with linespoints pt 7 lc rgb '#1f77b4' title 'clutter density test', \\\n"
-                 "     '%s' every ::1 using 1:7 with linespoints pt 5 lc rgb '#d62728' title 'clutter amplitude test'\n",
-                 runs, alpha, 2.2 * (double)hi, path, path, path, path, path);
-        plot_gnuplot(com.out, body);
-    }
+    sim_plotf(&com, "",
+              "set datafile separator ','\nset grid\nset key top right\n"
+              "set title 'Kennedy 2008 Figs. 2-3: confirmed false tracks, test on the last scan (%ld runs, alpha %g)'\n"
+              "set xlabel 'scans per run'\nset ylabel 'confirmed (false) tracks'\nset yrange [0:%g]\n"
+              "plot '%s' every ::1 using 1:4 with lines dt 2 lc rgb '#888888' title 'exact 95%% interval', \\\n"
+              "     '%s' every ::1 using 1:5 with lines dt 2 lc rgb '#888888' notitle, \\\n"
+              "     '%s' every ::1 using 1:3 with lines lw 2 lc rgb 'black' title 'alpha x runs', \\\n"
+              "     '%s' every ::1 using 1:6 with linespoints pt 7 lc rgb '#1f77b4' title 'clutter density test', \\\n"
+              "     '%s' every ::1 using 1:7 with linespoints pt 5 lc rgb '#d62728' title 'clutter amplitude test'\n",
+              runs, alpha, 2.2 * (double)hi, path, path, path, path, path);
     free(out);
     return 0;
 }

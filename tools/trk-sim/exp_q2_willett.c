@@ -12,45 +12,15 @@
  * J^-1. The MRE with the same q2 is shown for contrast (2-4x the CRLB). */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "plot.h"
 #include "progress.h"
 #include "q2_is.h"
 #include "sim.h"
-#include "trk/crlb.h"
 #include "trk/mre.h"
+#include "willett.h"
 
-/* Willett Table I, typed from seed 000: q2 at clutter densities lambda and
- * detection probabilities 0.7, 0.8, 0.9. */
-#define W_NL 10
-static const double w_lambda[W_NL] = {0.0001, 0.0020, 0.0040, 0.0060, 0.0080,
-                                      0.0100, 0.0120, 0.0140, 0.0160, 0.0180};
-static const double w_pd[3] = {0.7, 0.8, 0.9};
-static const double w_q2[W_NL][3] = {
-    {0.6814, 0.7700, 0.8890}, {0.6341, 0.7472, 0.8491}, {0.5722, 0.6860, 0.8144},
-    {0.5460, 0.6498, 0.7727}, {0.5257, 0.6290, 0.7457}, {0.5037, 0.6096, 0.7367},
-    {0.4679, 0.5729, 0.6938}, {0.4479, 0.5343, 0.6801}, {0.4356, 0.5330, 0.6590},
-    {0.4180, 0.5133, 0.6312},
-};
-#define W_AREA 400.0
 #define W_NCURVE 60
-
-static void help(void)
-{
-    printf("trk-sim willett-table1 [options]\n"
-           "  Willett's Table I: q2 for lambda 1e-4 .. 0.018 per unit area and P_D 0.7, 0.8, 0.9\n"
-           "  (nz = 2, R = I, a gate of area V = 400: gamma = 400/pi, P_G = 1, lambda_vg = 400 lambda)\n"
-           "  by importance sampling beside the paper's values, with standard errors, the rms relative\n"
-           "  deviation and the bias; then the steady-state CRLB with IRF (Willett eq 37; q = 1,\n"
-           "  R = I, T = 1 s) with both q2, and the MRE (Brekke eq 27) with ours for contrast.\n"
-           "  --samples N       scenes per clutter-count stratum (default 1000000)\n"
-           "  --target-se S     stop a cell at this standard error (default 0: all samples)\n"
-           "  common: --seed N --out PREFIX (default willett_table1) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv (the table), PREFIX_curve.csv, PREFIX_crlb.csv and PREFIX.png,\n"
-           "  PREFIX_crlb.png (gnuplot).\n");
-}
 
 struct prog {
     struct progress p;
@@ -70,30 +40,12 @@ static void on_progress(void *ctx, const struct q2_is_progress *pr)
     c->last = pr->points_done;
 }
 
-static int crlb_of(double q2, double *j11, double *rmse)
-{
-    struct trk_crlb_params p;
-    memset(&p, 0, sizeof p);
-    p.nz = 2, p.dt_s = 1, p.q_m2_per_s3 = 1, p.r_m2 = 1, p.q2 = (trk_real)q2;
-    struct trk_crlb c;
-    struct trk_crlb_result r;
-    trk_status st = trk_crlb_init(&c, &p);
-    if (st == TRK_OK) st = trk_crlb_steady_state(&c, NULL, &r);
-    if (st != TRK_OK) {
-        fprintf(stderr, "willett-table1: CRLB at q2 = %g: %s\n", q2, trk_status_str(st));
-        return 1;
-    }
-    *j11 = (double)r.j_inv[0];
-    *rmse = (double)r.pos_rmse_m;
-    return 0;
-}
-
 static int mre_of(double q2, double *p11)
 {
     struct trk_mre_params p;
     memset(&p, 0, sizeof p);
     p.nz = 2, p.dt_s = 1, p.q_m2_per_s3 = 1, p.r_m2 = 1, p.q2 = (trk_real)q2;
-    p.gate_gamma = (trk_real)(W_AREA / 3.14159265358979323846);
+    p.gate_gamma = (trk_real)(WILLETT_AREA / 3.14159265358979323846);
     struct trk_mre m;
     struct trk_mre_result r;
     trk_status st = trk_mre_init(&m, &p);
@@ -108,50 +60,44 @@ static int mre_of(double q2, double *p11)
 
 SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance sampling vs the paper; CRLB with q2")
 {
-    struct sim_common com;
-    sim_common_defaults(&com, "willett_table1");
-    long samples = 1000000;
+    long samples;
     double target_se = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--samples", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &samples) || samples < 2 || samples > 4294967295L) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--target-se", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &target_se) || !(target_se > 0 && target_se < 1)) goto bad;
-        } else {
-            fprintf(stderr, "willett-table1: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "willett-table1: bad value for %s (see --help)\n", argv[i]);
-        return 2;
-    }
+    const struct sim_opt opts[] = {
+        SIM_OPT_LONG("--samples", &samples, "N", "1000000", SIM_IN, 2, 4294967295.0,
+                     "scenes per clutter-count stratum"),
+        SIM_OPT_DOUBLE("--target-se", &target_se, "S", NULL, SIM_OPEN, 0, 1,
+                       "stop a cell at this standard error (default: all samples)"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "willett-table1", NULL,
+        "Willett's Table I: q2 for lambda 1e-4 .. 0.018 per unit area and P_D 0.7, 0.8, 0.9\n"
+        "(nz = 2, R = I, a gate of area V = 400: gamma = 400/pi, P_G = 1, lambda_vg = 400 lambda)\n"
+        "by importance sampling beside the paper's values, with standard errors, the rms relative\n"
+        "deviation and the bias; then the steady-state CRLB with IRF (Willett eq 37; q = 1,\n"
+        "R = I, T = 1 s) with both q2, and the MRE (Brekke eq 27) with ours for contrast.",
+        opts, "willett_table1", NULL, SIM_UNUSED_RUNS,
+        "Writes PREFIX.csv (the table), PREFIX_curve.csv, PREFIX_crlb.csv and PREFIX.png,\n"
+        "PREFIX_crlb.png (gnuplot).",
+        NULL, NULL};
+    struct sim_common com;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     const int threads = sim_threads(&com);
 
     /* one line: the table's cells and a fine lambda curve (common random numbers) */
-    enum { NT = W_NL * 3, NC = NT + W_NCURVE * 3 };
+    enum { NT = WILLETT_NL * 3, NC = NT + W_NCURVE * 3 };
     static double pd[NC], lv[NC], q[NC], se[NC], curve_l[W_NCURVE];
     size_t k = 0;
-    for (int i = 0; i < W_NL; i++)
-        for (int j = 0; j < 3; j++, k++) pd[k] = w_pd[j], lv[k] = W_AREA * w_lambda[i];
+    for (int i = 0; i < WILLETT_NL; i++)
+        for (int j = 0; j < 3; j++, k++) pd[k] = willett_pd[j], lv[k] = WILLETT_AREA * willett_lambda[i];
     for (int i = 0; i < W_NCURVE; i++) {
         curve_l[i] = 5e-5 + (0.02 - 5e-5) * i / (W_NCURVE - 1);
-        for (int j = 0; j < 3; j++, k++) pd[k] = w_pd[j], lv[k] = W_AREA * curve_l[i];
+        for (int j = 0; j < 3; j++, k++) pd[k] = willett_pd[j], lv[k] = WILLETT_AREA * curve_l[i];
     }
     struct q2_is_line line;
     memset(&line, 0, sizeof line);
     line.nz = 2;
-    line.gamma = W_AREA / 3.14159265358979323846;
+    line.gamma = WILLETT_AREA / 3.14159265358979323846;
     line.n_cells = NC;
     line.pd = pd;
     line.lambda_vg = lv;
@@ -180,8 +126,7 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
     const double dt = progress_now_s() - t0;
 
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    FILE *f = plot_csv_open(path, "lambda,pd,lambda_vg,q2_paper,q2,se,rel_dev,dev_in_se");
+    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path, "lambda,pd,lambda_vg,q2_paper,q2,se,rel_dev,dev_in_se");
     if (!f) return 1;
     printf("Willett Table I (nz 2, R = I, V = 400: gamma = 400/pi, P_G = 1, lambda_vg = 400 lambda)\n"
            "q2 by importance sampling: %llu scenes, %llu points in %.2f s on %d thread%s; seed %llu\n"
@@ -190,13 +135,14 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
            (unsigned long long)com.seed);
     printf("%-8s %5s  %8s %8s %8s %8s\n", "lambda", "P_D", "paper", "ours", "se", "rel_dev");
     double s1[4] = {0}, s2[4] = {0}, maxse = 0;
-    for (int i = 0; i < W_NL; i++)
+    for (int i = 0; i < WILLETT_NL; i++)
         for (int j = 0; j < 3; j++) {
             const size_t c = (size_t)(3 * i + j);
-            const double d = w_q2[i][j] / q[c] - 1;
-            fprintf(f, "%.4f,%.1f,%.2f,%.4f,%.6f,%.2e,%.5f,%.2f\n", w_lambda[i], w_pd[j], W_AREA * w_lambda[i],
-                    w_q2[i][j], q[c], se[c], d, (w_q2[i][j] - q[c]) / se[c]);
-            printf("%-8.4f %5.1f  %8.4f %8.4f %8.1e %+8.4f\n", w_lambda[i], w_pd[j], w_q2[i][j], q[c], se[c], d);
+            const double d = willett_q2[i][j] / q[c] - 1;
+            fprintf(f, "%.4f,%.1f,%.2f,%.4f,%.6f,%.2e,%.5f,%.2f\n", willett_lambda[i], willett_pd[j],
+                    WILLETT_AREA * willett_lambda[i], willett_q2[i][j], q[c], se[c], d, (willett_q2[i][j] - q[c]) / se[c]);
+            printf("%-8.4f %5.1f  %8.4f %8.4f %8.1e %+8.4f\n", willett_lambda[i], willett_pd[j], willett_q2[i][j], q[c],
+                   se[c], d);
             s1[j] += d, s2[j] += d * d, s1[3] += d, s2[3] += d * d;
             if (se[c] > maxse) maxse = se[c];
         }
@@ -204,13 +150,12 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
     printf("%-6s %10s %24s   (our largest se %.1e: the deviations are the paper's own Monte Carlo scatter)\n",
            "P_D", "rms dev", "mean dev (bias) +- se", maxse);
     for (int j = 0; j < 4; j++) {
-        const double n = j < 3 ? W_NL : 3 * W_NL, m = s1[j] / n, rms = sqrt(s2[j] / n);
+        const double n = j < 3 ? WILLETT_NL : 3 * WILLETT_NL, m = s1[j] / n, rms = sqrt(s2[j] / n);
         const double sd = sqrt((s2[j] - n * m * m) / (n - 1));
         printf("%-6s %9.2f%% %+13.2f%% +- %.2f%%\n", j == 0 ? "0.7" : j == 1 ? "0.8" : j == 2 ? "0.9" : "all",
                100 * rms, 100 * m, 100 * sd / sqrt(n));
     }
-    snprintf(path, sizeof path, "%s_curve.csv", com.out);
-    f = plot_csv_open(path, "lambda,q2_pd07,se_pd07,q2_pd08,se_pd08,q2_pd09,se_pd09");
+    f = sim_csv_open(&com, "_curve.csv", path, sizeof path, "lambda,q2_pd07,se_pd07,q2_pd08,se_pd08,q2_pd09,se_pd09");
     if (!f) return 1;
     for (int i = 0; i < W_NCURVE; i++) {
         const double *cq = q + NT + 3 * i, *cs = se + NT + 3 * i;
@@ -219,55 +164,54 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
     fclose(f);
 
     /* CRLB (Willett eq 37) with the paper's q2 and ours; the MRE for contrast */
-    snprintf(path, sizeof path, "%s_crlb.csv", com.out);
-    f = plot_csv_open(path, "lambda,pd,q2_paper,crlb11_paper_m2,q2,crlb11_m2,crlb_pos_rmse_m,mre11_m2");
+    f = sim_csv_open(&com, "_crlb.csv", path, sizeof path,
+                     "lambda,pd,q2_paper,crlb11_paper_m2,q2,crlb11_m2,crlb_pos_rmse_m,mre11_m2");
     if (!f) return 1;
     printf("\nCRLB with IRF (Willett eq 37), q = 1 m^2/s^3, R = I m^2, T = 1 s: (1,1) element of J^-1 (m^2);\n"
            "MRE (Brekke eq 27) P(1,1) with our q2 for contrast\n");
     printf("%-8s %4s  %8s %10s  %8s %10s %10s  %10s\n", "lambda", "P_D", "q2 paper", "CRLB11", "q2 ours", "CRLB11",
            "pos RMSE", "MRE11");
     double max_rel = 0;
-    for (int i = 0; i < W_NL; i++)
+    for (int i = 0; i < WILLETT_NL; i++)
         for (int j = 0; j < 3; j++) {
             const size_t c = (size_t)(3 * i + j);
             double jp, rp, jo, ro, mo;
-            if (crlb_of(w_q2[i][j], &jp, &rp) || crlb_of(q[c], &jo, &ro) || mre_of(q[c], &mo)) {
+            if (willett_crlb(cli.name, willett_q2[i][j], &jp, &rp) || willett_crlb(cli.name, q[c], &jo, &ro) ||
+                mre_of(q[c], &mo)) {
                 fclose(f);
                 return 1;
             }
             if (fabs(jo / jp - 1) > max_rel) max_rel = fabs(jo / jp - 1);
-            fprintf(f, "%.4f,%.1f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f\n", w_lambda[i], w_pd[j], w_q2[i][j], jp, q[c], jo, ro,
-                    mo);
-            printf("%-8.4f %4.1f  %8.4f %10.5f  %8.4f %10.5f %10.5f  %10.5f\n", w_lambda[i], w_pd[j], w_q2[i][j], jp,
-                   q[c], jo, ro, mo);
+            fprintf(f, "%.4f,%.1f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f\n", willett_lambda[i], willett_pd[j], willett_q2[i][j],
+                    jp, q[c], jo, ro, mo);
+            printf("%-8.4f %4.1f  %8.4f %10.5f  %8.4f %10.5f %10.5f  %10.5f\n", willett_lambda[i], willett_pd[j],
+                   willett_q2[i][j], jp, q[c], jo, ro, mo);
         }
     fclose(f);
     printf("largest relative CRLB difference (paper q2 vs ours): %.2f%%\n", 100 * max_rel);
     printf("files: %s.csv, %s_curve.csv, %s_crlb.csv\n", com.out, com.out, com.out);
-    if (com.no_plot) return 0;
-    char body[4096];
-    snprintf(body, sizeof body,
-             "set datafile separator ','\n"
-             "set title \"q2, Willett Table I (V = 400, R = I): paper (points) and importance sampling (lines)\"\n"
-             "set xlabel 'clutter density lambda (per unit area)'\nset ylabel 'q2'\nset key top right\nset grid\n"
-             "plot for [j=0:2] '%s_curve.csv' every ::1 using 1:(column(2+2*j)) with lines lw 2 lc j+1 "
-             "title sprintf('ours, P_D 0.%%d', j+7), \\\n"
-             "     for [j=0:2] '%s.csv' every 3::(1+j) using 1:4 with points pt 7 lc j+1 "
-             "title sprintf('paper, P_D 0.%%d', j+7)\n",
-             com.out, com.out);
-    int rc = plot_gnuplot(com.out, body) < 0;
-    char base[1024];
-    snprintf(base, sizeof base, "%s_crlb", com.out);
-    snprintf(body, sizeof body,
-             "set datafile separator ','\n"
-             "set title \"CRLB (Willett eq 37), q = 1 m^2/s^3, R = I: with the paper's q2 (points) and ours (lines)\"\n"
-             "set xlabel 'clutter density lambda (per unit area)'\nset ylabel 'CRLB, (1,1) element of J^{-1} (m^2)'\n"
-             "set key top left\nset grid\n"
-             "plot for [j=0:2] '%s_crlb.csv' every 3::(1+j) using 1:6 with linespoints lw 2 lc j+1 "
-             "title sprintf('ours, P_D 0.%%d', j+7), \\\n"
-             "     for [j=0:2] '%s_crlb.csv' every 3::(1+j) using 1:4 with points pt 7 lc j+1 "
-             "title sprintf('paper q2, P_D 0.%%d', j+7)\n",
-             com.out, com.out);
-    rc |= plot_gnuplot(base, body) < 0;
+    int rc = sim_plotf(&com, "",
+                       "set datafile separator ','\n"
+                       "set title \"q2, Willett Table I (V = 400, R = I): paper (points) and importance sampling "
+                       "(lines)\"\n"
+                       "set xlabel 'clutter density lambda (per unit area)'\nset ylabel 'q2'\nset key top right\n"
+                       "set grid\n"
+                       "plot for [j=0:2] '%s_curve.csv' every ::1 using 1:(column(2+2*j)) with lines lw 2 lc j+1 "
+                       "title sprintf('ours, P_D 0.%%d', j+7), \\\n"
+                       "     for [j=0:2] '%s.csv' every 3::(1+j) using 1:4 with points pt 7 lc j+1 "
+                       "title sprintf('paper, P_D 0.%%d', j+7)\n",
+                       com.out, com.out) < 0;
+    rc |= sim_plotf(&com, "_crlb",
+                    "set datafile separator ','\n"
+                    "set title \"CRLB (Willett eq 37), q = 1 m^2/s^3, R = I: with the paper's q2 (points) and ours "
+                    "(lines)\"\n"
+                    "set xlabel 'clutter density lambda (per unit area)'\n"
+                    "set ylabel 'CRLB, (1,1) element of J^{-1} (m^2)'\n"
+                    "set key top left\nset grid\n"
+                    "plot for [j=0:2] '%s_crlb.csv' every 3::(1+j) using 1:6 with linespoints lw 2 lc j+1 "
+                    "title sprintf('ours, P_D 0.%%d', j+7), \\\n"
+                    "     for [j=0:2] '%s_crlb.csv' every 3::(1+j) using 1:4 with points pt 7 lc j+1 "
+                    "title sprintf('paper q2, P_D 0.%%d', j+7)\n",
+                    com.out, com.out) < 0;
     return rc;
 }

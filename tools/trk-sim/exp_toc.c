@@ -12,13 +12,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "plot.h"
 #include "q2_table.h"
 #include "sim.h"
 #include "toc.h"
 #include "trk/amplitude.h"
 #include "trk/q2.h"
-#include "trk/table_file.h"
 
 #define MAX_CELLS 8
 #define N_MODELS 3
@@ -33,95 +31,43 @@ static const struct {
     {"k8", "K, nu = 8", "q2_pdafai_k8_g6.tbl", TRK_AMP_K, 8},
 };
 
-static void help(void)
-{
-    printf("trk-sim toc [options]\n"
-           "  Brekke Fig. 2: steady-state position RMSE of the MRE (Brekke eq 35) along the ROC for the\n"
-           "  PDAF and the PDAFAI, Rayleigh and K (nu = 1, 8) clutter, and the optimal P_FA of each.\n"
-           "  Brekke's Table I model: T = 1 s, q = 0.0125^2 m^2/s^3, R = I/12 m^2, gate g = 6\n"
-           "  (gamma = 36); lambda = P_FA / cell area (the cell is not printed in the paper).\n"
-           "  --snr-db D        target SNR (default 15)\n"
-           "  --cells LIST      resolution cell areas in m^2 (default 1,0.25,0.1)\n"
-           "  --pfa-min P --pfa-max P   ROC range (default 1e-6, 0.5)\n"
-           "  --points N        curve points per (model, cell), equally spaced in ln P_FA (default 121)\n"
-           "  --tables DIR      q2 tables of `make tables` (q2_pdaf_g6.tbl, q2_pdafai_<model>_g6.tbl);\n"
-           "                    default: sample the q2 grids for this SNR here (bit-identical for any\n"
-           "                    --threads)\n"
-           "  --samples N --target-se S   sampler settings (default 1e6, 1e-3 per cell)\n"
-           "  --lambda-vg-max L top of the sampled lambda_vg axes (default 100; beyond it a point is\n"
-           "                    'off_table')\n"
-           "  common: --seed N --out PREFIX (default toc) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv (curves), PREFIX_optimum.csv, PREFIX.gp and PREFIX.png.\n");
-}
-
-static int load_table(const char *dir, const char *name, struct trk_table *t, void **buf)
-{
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    size_t n;
-    trk_status st = trk_table_file_size(path, &n);
-    if (st == TRK_OK) {
-        *buf = malloc(n + 8);
-        if (!*buf) return -1;
-        st = trk_table_load_file(path, *buf, n + 8, t, NULL);
-    }
-    if (st != TRK_OK) {
-        fprintf(stderr, "toc: %s: %s\n", path, trk_status_str(st));
-        return -1;
-    }
-    return 0;
-}
-
 SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (PDAF, PDAFAI), optimal P_FA")
 {
-    struct sim_common com;
-    sim_common_defaults(&com, "toc");
-    double snr_db = 15, pfa_min = 1e-6, pfa_max = 0.5, target_se = 0, lv_max = 100;
-    double cells[MAX_CELLS] = {1, 0.25, 0.1};
-    int n_cells = 3;
-    long points = 121, samples = 0;
+    double snr_db, pfa_min, pfa_max, target_se = 0, lv_max;
+    double cells[MAX_CELLS];
+    int n_cells;
+    long points, samples = 0;
     const char *tables = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--snr-db", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &snr_db) || !(snr_db >= -30 && snr_db <= 60)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--cells", &v)) != 0) {
-            if (r < 0 || (n_cells = sim_parse_list(v, cells, MAX_CELLS)) < 1) goto bad;
-            for (int k = 0; k < n_cells; k++)
-                if (!(cells[k] > 0 && isfinite(cells[k]))) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--pfa-min", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &pfa_min) || !(pfa_min > 0 && pfa_min < 1)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--pfa-max", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &pfa_max) || !(pfa_max > 0 && pfa_max < 1)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--points", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &points) || points < 2 || points > 100000) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--tables", &v)) != 0) {
-            if (r < 0) goto bad;
-            tables = v;
-        } else if ((r = sim_arg(argc, argv, &i, "--samples", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &samples) || samples < 2 || samples > 4294967295L) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--target-se", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &target_se) || !(target_se > 0 && target_se < 1)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--lambda-vg-max", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &lv_max) || !(lv_max >= 1 && lv_max <= 1000)) goto bad;
-        } else {
-            fprintf(stderr, "toc: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "toc: bad value for %s (see --help)\n", argv[i]);
-        return 2;
-    }
+    const struct sim_opt opts[] = {
+        SIM_OPT_DOUBLE("--snr-db", &snr_db, "D", "15", SIM_IN, -30, 60, "target SNR"),
+        SIM_OPT_LIST("--cells", cells, &n_cells, MAX_CELLS, "1,0.25,0.1", SIM_OPEN, 0, INFINITY,
+                     "resolution cell areas in m^2"),
+        SIM_OPT_DOUBLE("--pfa-min", &pfa_min, "P", "1e-6", SIM_OPEN, 0, 1, "ROC range: smallest P_FA"),
+        SIM_OPT_DOUBLE("--pfa-max", &pfa_max, "P", "0.5", SIM_OPEN, 0, 1, "ROC range: largest P_FA"),
+        SIM_OPT_LONG("--points", &points, "N", "121", SIM_IN, 2, 100000,
+                     "curve points per (model, cell), equally spaced in ln P_FA"),
+        SIM_OPT_STRING("--tables", &tables, "DIR", NULL,
+                       "q2 tables of `make tables` (q2_pdaf_g6.tbl, q2_pdafai_<model>_g6.tbl);\n"
+                       "default: sample the q2 grids for this SNR here (bit-identical for any\n"
+                       "--threads)"),
+        SIM_OPT_LONG("--samples", &samples, "N", NULL, SIM_IN, 2, 4294967295.0,
+                     "sampler: scenes per clutter-count stratum (default 1e6)"),
+        SIM_OPT_DOUBLE("--target-se", &target_se, "S", NULL, SIM_OPEN, 0, 1,
+                       "sampler: stop a cell at this standard error (default 1e-3)"),
+        SIM_OPT_DOUBLE("--lambda-vg-max", &lv_max, "L", "100", SIM_IN, 1, 1000,
+                       "top of the sampled lambda_vg axes (beyond it a point is\n'off_table')"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "toc", NULL,
+        "Brekke Fig. 2: steady-state position RMSE of the MRE (Brekke eq 35) along the ROC for the\n"
+        "PDAF and the PDAFAI, Rayleigh and K (nu = 1, 8) clutter, and the optimal P_FA of each.\n"
+        "Brekke's Table I model: T = 1 s, q = 0.0125^2 m^2/s^3, R = I/12 m^2, gate g = 6\n"
+        "(gamma = 36); lambda = P_FA / cell area (the cell is not printed in the paper).",
+        opts, "toc", NULL, SIM_UNUSED_RUNS,
+        "Writes PREFIX.csv (curves), PREFIX_optimum.csv, PREFIX.gp and PREFIX.png.", NULL, NULL};
+    struct sim_common com;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
     if (!(pfa_min < pfa_max)) {
         fprintf(stderr, "toc: --pfa-min must be below --pfa-max\n");
         return 2;
@@ -146,7 +92,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
     src.quiet = com.quiet;
     src.lambda_vg_max = lv_max;
     if (tables) {
-        if (load_table(tables, "q2_pdaf_g6.tbl", &pdaf_t, &pdaf_buf)) goto out;
+        if (sim_load_table(cli.name, tables, "q2_pdaf_g6.tbl", &pdaf_t, &pdaf_buf)) goto out;
         src.pdaf = &pdaf_t;
     } else {
         /* one PDAF q2 grid (Brekke's gate) serves every model: q2 depends on
@@ -189,7 +135,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         sc.pfa_max = pfa_max;
         src.pdafai = NULL;
         if (tables) {
-            if (load_table(tables, models[m].table, &ai_t[m], &ai_buf[m])) goto out;
+            if (sim_load_table(cli.name, tables, models[m].table, &ai_t[m], &ai_buf[m])) goto out;
             src.pdafai = &ai_t[m];
         } else if (!com.quiet) {
             fprintf(stderr, "toc: sampling the PDAFAI q2 grid, %s clutter, SNR %g dB ...\n", models[m].label, snr_db);
@@ -201,13 +147,13 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         }
     }
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    f = plot_csv_open(path, "model,nu,cell_m2,pfa,pd,lambda_per_m2,rmse_pdaf_m,status_pdaf,q2_pdaf,lambda_vg_pdaf,"
-                            "rmse_pdafai_m,status_pdafai,q2_pdafai,lambda_vg_pdafai,rmse_bound_pdaf_m,"
-                            "rmse_bound_pdafai_m");
-    snprintf(path, sizeof path, "%s_optimum.csv", com.out);
-    fo = plot_csv_open(path, "model,nu,cell_m2,detector,pfa,pd,rmse_m,q2,lambda_vg,mre_solves,without_steady_state,at_range_end,"
-                                 "table_limited,pfa_rmse_1pct_lo,pfa_rmse_1pct_hi");
+    f = sim_csv_open(&com, ".csv", path, sizeof path,
+                     "model,nu,cell_m2,pfa,pd,lambda_per_m2,rmse_pdaf_m,status_pdaf,q2_pdaf,lambda_vg_pdaf,"
+                     "rmse_pdafai_m,status_pdafai,q2_pdafai,lambda_vg_pdafai,rmse_bound_pdaf_m,"
+                     "rmse_bound_pdafai_m");
+    fo = sim_csv_open(&com, "_optimum.csv", path, sizeof path,
+                      "model,nu,cell_m2,detector,pfa,pd,rmse_m,q2,lambda_vg,mre_solves,without_steady_state,at_range_end,"
+                      "table_limited,pfa_rmse_1pct_lo,pfa_rmse_1pct_hi");
     if (!f || !fo) goto out;
     printf("TOC (Brekke Fig. 2 model): SNR %g dB, T 1 s, q 0.0125^2, R I/12, gamma 36; lambda = P_FA / cell;\n"
            "q2 from %s; %d thread%s. Curves beyond a P_FA where the MRE diverges (track lost)\n"
@@ -264,41 +210,35 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
     rc = 0;
     if (!com.no_plot) {
         /* one panel per cell area: 3 models x 2 detectors, optima as points */
-        size_t cap = 16384, len = 0;
-        char *body = malloc(cap);
-        if (!body) goto out;
-        len += (size_t)snprintf(body + len, cap - len,
-                                "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
-                                "  set terminal pngcairo size %d,620 enhanced font 'sans,10'\n"
-                                "} else {\n  set terminal png size %d,620\n}\nset output '%s.png'\n",
-                                520 * n_cells, 520 * n_cells, com.out);
-        len += (size_t)snprintf(body + len, cap - len,
-                                "set datafile separator ','\nset logscale x\nset format x '10^{%%L}'\n"
-                                "set grid\nset key top right font ',8'\n"
-                                "set xlabel 'P_{FA}'\nset ylabel 'steady-state position RMSE (m)'\n"
-                                "set multiplot layout 1,%d title 'TOC (MRE), SNR %g dB, Brekke Table I model'\n",
-                                n_cells, snr_db);
-        for (int c = 0; c < n_cells && len < cap - 2048; c++) {
-            len += (size_t)snprintf(body + len, cap - len, "set title 'cell %g m^2 (lambda = P_{FA}/%g)'\nplot ",
-                                    cells[c], cells[c]);
+        struct sim_text b = {NULL, 0, 0, 0};
+        sim_text_add(&b,
+                     "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+                     "  set terminal pngcairo size %d,620 enhanced font 'sans,10'\n"
+                     "} else {\n  set terminal png size %d,620\n}\nset output '%s.png'\n",
+                     520 * n_cells, 520 * n_cells, com.out);
+        sim_text_add(&b,
+                     "set datafile separator ','\nset logscale x\nset format x '10^{%%L}'\n"
+                     "set grid\nset key top right font ',8'\n"
+                     "set xlabel 'P_{FA}'\nset ylabel 'steady-state position RMSE (m)'\n"
+                     "set multiplot layout 1,%d title 'TOC (MRE), SNR %g dB, Brekke Table I model'\n",
+                     n_cells, snr_db);
+        for (int c = 0; c < n_cells; c++) {
+            sim_text_add(&b, "set title 'cell %g m^2 (lambda = P_{FA}/%g)'\nplot ", cells[c], cells[c]);
             for (int m = 0; m < N_MODELS; m++)
                 for (int d = 0; d < TOC_N_DETECTORS; d++)
-                    len += (size_t)snprintf(
-                        body + len, cap - len,
-                        "'%s.csv' using ((strcol(1) eq '%s' && $3 == %g) ? $4 : 1/0):%d with lines lw 2 lc %d dt %d "
-                        "title '%s %s', ",
-                        com.out, models[m].name, cells[c], d ? 11 : 7, m + 1, d ? 1 : 2, toc_detector_name(d),
-                        models[m].label);
-            len += (size_t)snprintf(body + len, cap - len,
-                                    "'%s_optimum.csv' using ($3 == %g ? $5 : 1/0):7 with points pt 7 ps 1.2 lc 0 "
-                                    "title 'optimum'\n",
-                                    com.out, cells[c]);
+                    sim_text_add(&b,
+                                 "'%s.csv' using ((strcol(1) eq '%s' && $3 == %g) ? $4 : 1/0):%d with lines lw 2 "
+                                 "lc %d dt %d title '%s %s', ",
+                                 com.out, models[m].name, cells[c], d ? 11 : 7, m + 1, d ? 1 : 2,
+                                 toc_detector_name(d), models[m].label);
+            sim_text_add(&b,
+                         "'%s_optimum.csv' using ($3 == %g ? $5 : 1/0):7 with points pt 7 ps 1.2 lc 0 "
+                         "title 'optimum'\n",
+                         com.out, cells[c]);
         }
-        snprintf(body + len, cap - len, "unset multiplot\n");
-        char base[1024];
-        snprintf(base, sizeof base, "%s", com.out);
-        if (plot_gnuplot(base, body) < 0) rc = 1;
-        free(body);
+        sim_text_add(&b, "unset multiplot\n");
+        if (b.failed || sim_plot(&com, "", b.s) < 0) rc = 1;
+        sim_text_free(&b);
     }
 out:
     if (f) fclose(f);

@@ -35,42 +35,14 @@
 #include <string.h>
 
 #include "mc_stats.h"
-#include "plot.h"
 #include "progress.h"
 #include "q2_is.h"
 #include "sim.h"
 #include "single_target.h"
-#include "trk/crlb.h"
 #include "trk/mre.h"
+#include "willett.h"
 
 #define MAXP 32
-
-/* Willett Table I: lambda rows, pd columns 0.7, 0.8, 0.9 */
-static const double w_lambda[10] = {0.0001, 0.0020, 0.0040, 0.0060, 0.0080,
-                                    0.0100, 0.0120, 0.0140, 0.0160, 0.0180};
-static const double w_q2[10][3] = {{0.6814, 0.7700, 0.8890}, {0.6341, 0.7472, 0.8491}, {0.5722, 0.6860, 0.8144},
-                                   {0.5460, 0.6498, 0.7727}, {0.5257, 0.6290, 0.7457}, {0.5037, 0.6096, 0.7367},
-                                   {0.4679, 0.5729, 0.6938}, {0.4479, 0.5343, 0.6801}, {0.4356, 0.5330, 0.6590},
-                                   {0.4180, 0.5133, 0.6312}};
-
-static double paper_q2(double pd, double lambda)
-{
-    int j = fabs(pd - 0.7) < 1e-9 ? 0 : fabs(pd - 0.8) < 1e-9 ? 1 : fabs(pd - 0.9) < 1e-9 ? 2 : -1;
-    if (j < 0) return NAN;
-    for (int i = 0; i < 10; i++)
-        if (fabs(lambda - w_lambda[i]) < 1e-12) return w_q2[i][j];
-    return NAN;
-}
-
-static int crlb_rmse(double q2, double *rmse)
-{
-    struct trk_crlb_params cp = {2, 1, 1, 1, (trk_real)q2, 0, 0};
-    struct trk_crlb c;
-    struct trk_crlb_result res;
-    if (trk_crlb_init(&c, &cp) != TRK_OK || trk_crlb_steady_state(&c, NULL, &res) != TRK_OK) return -1;
-    *rmse = (double)res.pos_rmse_m;
-    return 0;
-}
 
 /* MRE of the PDAF at its gate, as the largest fixed point of q2 (see top). */
 static int mre_pdaf(double pd, double lambda, double gamma, const struct q2_is_options *qo, double *rmse,
@@ -125,77 +97,69 @@ struct wc_out {
     int32_t scans;
 };
 
-static void help(void)
+struct wc_points {
+    double pd[MAXP], lambda[MAXP];
+    int n;
+};
+
+static void keep(void *ctx, long it, int ai, const struct st_result *res)
 {
-    printf("trk-sim willett-crlb [options]\n"
-           "  PDAF position RMSE (tracks not lost) against the CRLB with the information-reduction\n"
-           "  factor q2 (Willett 2010 eq 37, Table I), and the PDAF's MRE. Model: T 1 s, q 1, R = I.\n"
-           "  --points LIST     P_D:lambda pairs (default 0.9:0.0001,0.9:0.001,0.9:0.002,0.9:0.004,\n"
-           "                    0.8:0.0001,0.8:0.002,0.7:0.0001; Table I's lambdas give the paper's q2)\n"
-           "  --runs N          runs per point (default 10000)\n"
-           "  --scans N         scans per run (default 100)\n"
-           "  --from K          first scan of the RMSE (default 21: past the transient)\n"
-           "  --gate-g G        the PDAF's gate: d2 <= G^2 (default 4: P_G 0.99966; a gate of P_G\n"
-           "                    0.99 loses more tracks to gate misses under this strong process noise)\n"
-           "  --q2-samples N    importance samples per stratum for q2 (default 400000)\n"
-           "  common: --seed N --out PREFIX (default willett_crlb) --threads N --quiet --no-plot\n"
-           "  Writes PREFIX.csv, PREFIX.gp, PREFIX.png.\n");
+    struct wc_out *o = (struct wc_out *)ctx + it;
+    (void)ai;
+    o->lost = (unsigned char)res->lost;
+    o->mse = res->n_sse ? res->sse / (double)res->n_sse : NAN;
+    o->scans = (int32_t)res->scans;
+}
+
+/* --points: P_D:lambda pairs, "0.9:0.001,0.8:0.0001" */
+static int parse_points(const char *v, void *dst)
+{
+    struct wc_points *p = dst;
+    const char *s = v;
+    p->n = 0;
+    while (*s && p->n < MAXP) {
+        char *end;
+        const double pd = strtod(s, &end);
+        if (end == s || *end != ':') return -1;
+        s = end + 1;
+        const double lambda = strtod(s, &end);
+        if (end == s || (*end && *end != ',')) return -1;
+        if (!(pd > 0 && pd <= 1) || !(lambda >= 0)) return -1;
+        p->pd[p->n] = pd;
+        p->lambda[p->n++] = lambda;
+        s = *end ? end + 1 : end;
+    }
+    return p->n == 0 || *s ? -1 : 0;
 }
 
 SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE against the CRLB with q2 (Table I)")
 {
+    long runs, scans, from, q2_samples;
+    double gate_g;
+    static struct wc_points pts;
+    const struct sim_opt opts[] = {
+        SIM_OPT_CUSTOM("--points", &pts, parse_points, "LIST",
+                       "0.9:0.0001,0.9:0.001,0.9:0.002,0.9:0.004,0.8:0.0001,0.8:0.002,0.7:0.0001",
+                       "P_D:lambda pairs\n(Table I's lambdas give the paper's q2)"),
+        SIM_OPT_LONG("--runs", &runs, "N", "10000", SIM_GE, 1, 0, "runs per point"),
+        SIM_OPT_LONG("--scans", &scans, "N", "100", SIM_IN, 2, 1000000, "scans per run"),
+        SIM_OPT_LONG("--from", &from, "K", "21", SIM_GE, 1, 0, "first scan of the RMSE (past the transient)"),
+        SIM_OPT_DOUBLE("--gate-g", &gate_g, "G", "4", SIM_GT | SIM_LE, 0, 30,
+                       "the PDAF's gate: d2 <= G^2 (4: P_G 0.99966; a gate of P_G 0.99\n"
+                       "loses more tracks to gate misses under this strong process noise)"),
+        SIM_OPT_LONG("--q2-samples", &q2_samples, "N", "400000", SIM_GE, 1000, 0,
+                     "importance samples per stratum for q2"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "willett-crlb", NULL,
+        "PDAF position RMSE (tracks not lost) against the CRLB with the information-reduction\n"
+        "factor q2 (Willett 2010 eq 37, Table I), and the PDAF's MRE. Model: T 1 s, q 1, R = I.",
+        opts, "willett_crlb", NULL, 0, "Writes PREFIX.csv, PREFIX.gp, PREFIX.png.", NULL, NULL};
     struct sim_common com;
-    sim_common_defaults(&com, "willett_crlb");
-    long runs = 10000, scans = 100, from = 21, q2_samples = 400000;
-    double gate_g = 4;
-    double pds[MAXP] = {0.9, 0.9, 0.9, 0.9, 0.8, 0.8, 0.7};
-    double lams[MAXP] = {0.0001, 0.001, 0.002, 0.004, 0.0001, 0.002, 0.0001};
-    int np = 7;
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        int r;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            help();
-            return 0;
-        }
-        if ((r = sim_common_arg(argc, argv, &i, &com)) != 0) {
-            if (r < 0) return 2;
-            continue;
-        }
-        if ((r = sim_arg(argc, argv, &i, "--scans", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &scans) || scans < 2 || scans > 1000000) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--from", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &from) || from < 1) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--gate-g", &v)) != 0) {
-            if (r < 0 || sim_parse_double(v, &gate_g) || !(gate_g > 0 && gate_g <= 30)) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--q2-samples", &v)) != 0) {
-            if (r < 0 || sim_parse_long(v, &q2_samples) || q2_samples < 1000) goto bad;
-        } else if ((r = sim_arg(argc, argv, &i, "--points", &v)) != 0) {
-            if (r < 0) goto bad;
-            np = 0;
-            const char *s = v;
-            while (*s && np < MAXP) {
-                char *end;
-                pds[np] = strtod(s, &end);
-                if (end == s || *end != ':') goto bad;
-                s = end + 1;
-                lams[np] = strtod(s, &end);
-                if (end == s || (*end && *end != ',')) goto bad;
-                if (!(pds[np] > 0 && pds[np] <= 1) || !(lams[np] >= 0)) goto bad;
-                np++;
-                s = *end ? end + 1 : end;
-            }
-            if (np == 0 || *s) goto bad;
-        } else {
-            fprintf(stderr, "willett-crlb: unknown option %s (see --help)\n", argv[i]);
-            return 2;
-        }
-        continue;
-    bad:
-        fprintf(stderr, "willett-crlb: bad value for %s\n", argv[i]);
-        return 2;
-    }
-    if (com.runs > 0) runs = com.runs;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
+    const double *pds = pts.pd, *lams = pts.lambda;
+    const int np = pts.n;
     if (from > scans) {
         fprintf(stderr, "willett-crlb: --from must be <= --scans\n");
         return 2;
@@ -205,7 +169,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     /* bounds and predictions (deterministic given the seed) */
     double q2p[MAXP], q2o[MAXP], q2o_se[MAXP], crlb_p[MAXP], crlb_o[MAXP], mre[MAXP], mre_q2[MAXP], mre_lvg[MAXP];
     double kf;
-    if (crlb_rmse(1, &kf) != 0) return 1;
+    if (willett_crlb(cli.name, 1, NULL, &kf) != 0) return 1;
     struct q2_is_options qo;
     memset(&qo, 0, sizeof qo);
     qo.seed = com.seed;
@@ -215,10 +179,10 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     const double t_b = progress_now_s();
     for (int k = 0; k < np; k++) {
         char err[256];
-        q2p[k] = paper_q2(pds[k], lams[k]);
+        q2p[k] = willett_paper_q2(pds[k], lams[k]);
         if (lams[k] > 0) {
-            if (q2_is_cell(2, 400 / 3.14159265358979323846, pds[k], 400 * lams[k], NULL, &qo, &q2o[k], &q2o_se[k],
-                           err, sizeof err) != 0) {
+            if (q2_is_cell(2, WILLETT_AREA / 3.14159265358979323846, pds[k], WILLETT_AREA * lams[k], NULL, &qo,
+                           &q2o[k], &q2o_se[k], err, sizeof err) != 0) {
                 fprintf(stderr, "willett-crlb: q2 sampler: %s\n", err);
                 return 1;
             }
@@ -227,8 +191,8 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
             q2o_se[k] = 0;
         }
         crlb_p[k] = NAN;
-        if (!isnan(q2p[k]) && crlb_rmse(q2p[k], &crlb_p[k]) != 0) return 1;
-        if (crlb_rmse(q2o[k], &crlb_o[k]) != 0) return 1;
+        if (!isnan(q2p[k]) && willett_crlb(cli.name, q2p[k], NULL, &crlb_p[k]) != 0) return 1;
+        if (willett_crlb(cli.name, q2o[k], NULL, &crlb_o[k]) != 0) return 1;
         if (mre_pdaf(pds[k], lams[k], gamma, &qo, &mre[k], &mre_q2[k], &mre_lvg[k]) != 0) return 1;
     }
     const double bound_s = progress_now_s() - t_b;
@@ -259,41 +223,12 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     if (!com.quiet)
         fprintf(stderr, "willett-crlb: %d points x %ld runs x %ld scans, seed %llu, %d threads (bounds %.1f s)\n", np,
                 runs, scans, (unsigned long long)com.seed, threads, bound_s);
-    struct progress pr;
-    progress_start(&pr, "willett-crlb", (long)np * runs, !com.quiet);
-    const double t0 = progress_now_s();
-    int bad_call = 0;
-#pragma omp parallel
-    {
-        struct st_ws ws = {NULL, 0, NULL, 0};
-        long pending = 0;
-#pragma omp for schedule(dynamic, 16)
-        for (long it = 0; it < (long)np * runs; it++) {
-            const long k = it / runs, run = it % runs;
-            struct st_result res;
-            if (st_run(&mod[k], &ws, (uint32_t)run, 0, from, NULL, &res) != 0) {
-#pragma omp atomic write
-                bad_call = 1;
-            }
-            out[it].lost = (unsigned char)res.lost;
-            out[it].mse = res.n_sse ? res.sse / (double)res.n_sse : NAN;
-            out[it].scans = (int32_t)res.scans;
-            if (++pending == 64) {
-#pragma omp critical(sim_progress)
-                progress_add(&pr, pending);
-                pending = 0;
-            }
-        }
-#pragma omp critical(sim_progress)
-        progress_add(&pr, pending);
-        st_ws_free(&ws);
-    }
-    progress_end(&pr);
-    const double wall = progress_now_s() - t0;
+    int bad_call;
+    const double wall = sim_st_runs(&com, cli.name, mod, np, runs, 1, from, keep, out, &bad_call);
     if (bad_call) return 1;
     char path[1024];
-    snprintf(path, sizeof path, "%s.csv", com.out);
-    FILE *f = plot_csv_open(path, "# willett-crlb: PDAF position RMSE (tracks not lost) vs CRLB with q2 (Willett eq 37)");
+    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+                           "# willett-crlb: PDAF position RMSE (tracks not lost) vs CRLB with q2 (Willett eq 37)");
     if (!f) return 1;
     fprintf(f, "# T 1 s, q 1 m^2/s^3, R = I m^2; PDAF gate P_G %.6g (gamma %.6g), two-point start, %ld scans, RMSE over "
                "scans >= %ld; lost: |x or y error| > 4 m for 3 scans in a row; q2 for the CRLB: V = 400 (gamma 400/pi, P_G 1, "
@@ -340,22 +275,18 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     printf("# wall %.1f s on %d threads (+ %.1f s q2 and bounds); %ld track updates, %.3g updates/s\n", wall, threads,
            bound_s, total_scans, (double)total_scans / wall);
     printf("# file: %s\n", path);
-    if (!com.no_plot) {
-        char body[8192];
-        snprintf(body, sizeof body,
-                 "set datafile separator ','\nset datafile missing 'nan'\nset grid\nset key top left\n"
-                 "set title 'Willett 2010: PDAF RMSE (tracks not lost) vs CRLB with q2 (T 1 s, q 1, R = I)'\n"
-                 "set xlabel 'clutter density lambda (1/m^2)'\nset ylabel 'steady-state position RMSE (m)'\n"
-                 "set yrange [0:*]\n"
-                 "plot for [pd in '0.7 0.8 0.9'] '%s' every ::1 using ($1==pd+0?$2:NaN):9:10:11 with yerrorbars pt 7 "
-                 "title sprintf('PDAF, P_D %%s', pd), \\\n"
-                 "     for [pd in '0.7 0.8 0.9'] '%s' every ::1 using ($1==pd+0?$2:NaN):7 with linespoints dt 2 pt 4 "
-                 "title sprintf('CRLB (our q2), P_D %%s', pd), \\\n"
-                 "     '%s' every ::1 using 2:6 with points pt 2 ps 1.5 lc rgb 'black' title 'CRLB (paper q2)', \\\n"
-                 "     '%s' every ::1 using 2:17 with points pt 8 ps 1.3 lc rgb '#888888' title 'MRE of the PDAF'\n",
-                 path, path, path, path);
-        plot_gnuplot(com.out, body);
-    }
+    sim_plotf(&com, "",
+              "set datafile separator ','\nset datafile missing 'nan'\nset grid\nset key top left\n"
+              "set title 'Willett 2010: PDAF RMSE (tracks not lost) vs CRLB with q2 (T 1 s, q 1, R = I)'\n"
+              "set xlabel 'clutter density lambda (1/m^2)'\nset ylabel 'steady-state position RMSE (m)'\n"
+              "set yrange [0:*]\n"
+              "plot for [pd in '0.7 0.8 0.9'] '%s' every ::1 using ($1==pd+0?$2:NaN):9:10:11 with yerrorbars pt 7 "
+              "title sprintf('PDAF, P_D %%s', pd), \\\n"
+              "     for [pd in '0.7 0.8 0.9'] '%s' every ::1 using ($1==pd+0?$2:NaN):7 with linespoints dt 2 pt 4 "
+              "title sprintf('CRLB (our q2), P_D %%s', pd), \\\n"
+              "     '%s' every ::1 using 2:6 with points pt 2 ps 1.5 lc rgb 'black' title 'CRLB (paper q2)', \\\n"
+              "     '%s' every ::1 using 2:17 with points pt 8 ps 1.3 lc rgb '#888888' title 'MRE of the PDAF'\n",
+              path, path, path, path);
     free(mod);
     free(out);
     return 0;

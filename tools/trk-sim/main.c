@@ -29,12 +29,12 @@ static const struct {
 
 static void usage(FILE *f)
 {
-    fprintf(f,
-            "usage: trk-sim <experiment> [options]   (trk-sim <experiment> --help for its options)\n"
-            "common options: --seed N  --runs N  --out PREFIX  --threads N  --quiet  --no-plot\n"
-            "experiments:\n");
+    fprintf(f, "usage: trk-sim <experiment> [options]   (trk-sim <experiment> --help for its options)\n"
+               "experiments:\n");
     for (int i = 0; experiments[i].name; i++)
         fprintf(f, "  %-20s %s\n", experiments[i].name, experiments[i].desc);
+    fprintf(f, "common options (where an experiment uses them):\n");
+    sim_common_usage(f);
 }
 
 int main(int argc, char **argv)

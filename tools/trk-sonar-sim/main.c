@@ -8,7 +8,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,19 +16,13 @@
 
 #include <lcm/lcm.h>
 
+#include "cli.h"
 #include "kvfile.h"
 #include "lcm_copy.h"
 #include "lcm_log.h"
 #include "scenario.h"
 
 #define MAX_TARGETS_CLI 256
-
-static volatile sig_atomic_t stop_flag = 0;
-static void on_signal(int sig)
-{
-    (void)sig;
-    stop_flag = 1;
-}
 
 static void usage(FILE *f)
 {
@@ -79,24 +72,6 @@ static void usage(FILE *f)
             "                         and the SNR of every target\n"
             "  --pd P                 detection probability without amplitude model (0.9)\n"
             "  --help\n");
-}
-
-static int opt(int argc, char **argv, int *i, const char *name, const char **val)
-{
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(a, name, n) != 0) return 0;
-    if (a[n] == '=') {
-        *val = a + n + 1;
-        return 1;
-    }
-    if (a[n]) return 0;
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "trk-sonar-sim: %s needs a value\n", name);
-        return -1;
-    }
-    *val = argv[++*i];
-    return 1;
 }
 
 static int64_t wall_us(void)
@@ -186,7 +161,7 @@ int main(int argc, char **argv)
         const char *a = argv[i];
         int k;
         double d[5];
-#define OPT(name) ((k = opt(argc, argv, &i, name, &v)) != 0)
+#define OPT(name) ((k = cli_opt(argc, argv, &i, name, &v, "trk-sonar-sim")) != 0)
 #define BAD(msg)                                                       \
     do {                                                               \
         fprintf(stderr, "trk-sonar-sim: %s: %s (see --help)\n", a, msg); \
@@ -318,12 +293,7 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    cli_catch_stop_signals();
 
     struct trk_detection *det = calloc(TRK_DETECTION_SCAN_T_MAX_DETECTIONS, sizeof *det);
     trk_detection_scan_t *msg = malloc(sizeof *msg), *bad = malloc(sizeof *bad);
@@ -349,7 +319,7 @@ int main(int argc, char **argv)
     clock_gettime(CLOCK_MONOTONIC, &next);
     uint64_t n_sent = 0, n_bad = 0, n_det = 0, n_tdet = 0, n_drop = 0;
     unsigned bad_kind = 0;
-    for (long k = 0; (scans == 0 || k < scans) && !stop_flag; k++) {
+    for (long k = 0; (scans == 0 || k < scans) && !cli_stop_flag; k++) {
         struct trk_scan scan;
         size_t nt, nd;
         scen_next(&sc, det, TRK_DETECTION_SCAN_T_MAX_DETECTIONS, &scan, &nt, &nd);
@@ -379,7 +349,7 @@ int main(int argc, char **argv)
                 next.tv_sec++;
                 next.tv_nsec -= 1000000000L;
             }
-            while (!stop_flag && clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL) == EINTR) {
+            while (!cli_stop_flag && clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL) == EINTR) {
             }
         }
     }
@@ -400,7 +370,7 @@ int main(int argc, char **argv)
            "%llu dropped over the message maximum), %llu malformed messages%s\n",
            (unsigned long long)n_sent, (unsigned long long)n_det, (unsigned long long)n_tdet,
            (unsigned long long)(n_det - n_tdet), (unsigned long long)n_drop,
-           (unsigned long long)n_bad, stop_flag ? " (stopped by signal)" : "");
+           (unsigned long long)n_bad, cli_stop_flag ? " (stopped by signal)" : "");
     if (sc.n_amp_failures)
         printf("trk-sonar-sim: %llu amplitude draws failed (detections dropped)\n",
                (unsigned long long)sc.n_amp_failures);

@@ -43,15 +43,6 @@ static void amp_usage(FILE *fp)
         TRK_REAL_IS_FLOAT ? "float" : "double");
 }
 
-static int valid_ident(const char *s)
-{
-    if (!s || !*s || !((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || *s == '_')) return 0;
-    for (; *s; s++)
-        if (!((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || (*s >= '0' && *s <= '9') || *s == '_'))
-            return 0;
-    return 1;
-}
-
 TABLEGEN_CMD(amp, "amplitude model table: --clutter rayleigh|k --nu --snr-db --pfa -o FILE")
 {
     struct amp_table_opts o;
@@ -122,7 +113,7 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter rayleigh|k --nu --snr-db --p
             bad = strcmp(v, "bin") != 0 && strcmp(v, "c") != 0;
         } else if (strcmp(a, "--name") == 0) {
             name = v;
-            bad = !valid_ident(v);
+            bad = !tablegen_valid_ident(v);
         } else {
             fprintf(stderr, "trk-tablegen amp: unknown option '%s' (see --help)\n", a);
             return 2;

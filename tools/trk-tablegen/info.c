@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fileio.h"
 #include "tablegen.h"
 #include "trk/q2.h"
 #include "trk/amplitude.h"
@@ -184,7 +185,7 @@ TABLEGEN_CMD(info, "load a table through the library, print header and parameter
         return argc == 2 ? 0 : 2;
     }
     size_t len;
-    unsigned char *b = tablegen_read_file(argv[1], &len);
+    unsigned char *b = fileio_read(argv[1], &len);
     if (!b) {
         perror(argv[1]);
         return 2;

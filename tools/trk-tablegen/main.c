@@ -52,32 +52,13 @@ int tablegen_parse_real(const char *s, double *v)
     return 0;
 }
 
-unsigned char *tablegen_read_file(const char *path, size_t *len)
+int tablegen_valid_ident(const char *s)
 {
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return NULL;
-    size_t cap = 1 << 16, n = 0;
-    unsigned char *buf = malloc(cap);
-    while (buf) {
-        n += fread(buf + n, 1, cap - n, fp);
-        if (n < cap) break;
-        unsigned char *nb = realloc(buf, cap * 2);
-        if (!nb) {
-            free(buf);
-            buf = NULL;
-            break;
-        }
-        buf = nb;
-        cap *= 2;
-    }
-    if (buf && ferror(fp)) {
-        free(buf);
-        buf = NULL;
-        errno = EIO;
-    }
-    fclose(fp);
-    *len = n;
-    return buf;
+    if (!s || !*s || !((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || *s == '_')) return 0;
+    for (; *s; s++)
+        if (!((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || (*s >= '0' && *s <= '9') || *s == '_'))
+            return 0;
+    return 1;
 }
 
 static void usage(FILE *fp)

@@ -84,15 +84,6 @@ static void q2_usage(FILE *fp)
         Q2_AMP_TABLE_SIZE, TRK_REAL_IS_FLOAT ? "float" : "double");
 }
 
-static int valid_ident(const char *s)
-{
-    if (!s || !*s || !((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || *s == '_')) return 0;
-    for (; *s; s++)
-        if (!((*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || (*s >= '0' && *s <= '9') || *s == '_'))
-            return 0;
-    return 1;
-}
-
 static int real_ok(const char *s, double *v) { return tablegen_parse_real(s, v) == 0 && isfinite(*v); }
 
 struct prog {
@@ -233,7 +224,7 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
             if (strcmp(v, "bin") != 0 && strcmp(v, "c") != 0) why = "bin or c";
         } else if (strcmp(a, "--name") == 0) {
             name = v;
-            if (!valid_ident(v)) why = "a C identifier";
+            if (!tablegen_valid_ident(v)) why = "a C identifier";
         }
         if (why) {
             fprintf(stderr, "trk-tablegen q2: bad value '%s' for %s: must be %s\n", v, a, why);

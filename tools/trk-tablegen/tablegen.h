@@ -17,7 +17,7 @@
 /* Shared helpers (main.c). */
 int tablegen_parse_uint(const char *s, unsigned long max, unsigned long *v);
 int tablegen_parse_real(const char *s, double *v);
-/* Malloc'd, 8-aligned contents of a file (NULL on error, errno set). */
-unsigned char *tablegen_read_file(const char *path, size_t *len);
+/* A C identifier (the --name of --format c)? */
+int tablegen_valid_ident(const char *s);
 
 #endif

@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fileio.h"
 #include "trk/types.h"
 #include "vec.h"
 
@@ -30,34 +31,6 @@ struct kind_err {
     long n;
     double max_abs, max_rel, max_use;
 };
-
-static char *read_file(const char *path, size_t *len)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return NULL;
-    size_t cap = 1 << 16, n = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        size_t got = fread(buf + n, 1, cap - n, fp);
-        n += got;
-        if (n < cap) break;
-        char *nb = realloc(buf, cap * 2);
-        if (!nb) {
-            free(buf);
-            buf = NULL;
-            break;
-        }
-        buf = nb;
-        cap *= 2;
-    }
-    if (ferror(fp)) {
-        free(buf);
-        buf = NULL;
-    }
-    fclose(fp);
-    *len = n;
-    return buf;
-}
 
 static void emit_values(const char *rec, const struct vec_entry *e, const double *pool)
 {
@@ -131,7 +104,7 @@ int main(int argc, char **argv)
     for (int a = 1; a < argc; a++) {
         if (argv[a][0] == '-') continue;
         size_t len;
-        char *buf = read_file(argv[a], &len);
+        char *buf = fileio_read(argv[a], &len);
         if (!buf) {
             fprintf(stderr, "trk-vectors: cannot read %s\n", argv[a]);
             bad_file = 1;
