@@ -212,7 +212,7 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
         const int np = q2_table_parse_list(Q2_TABLE_DEFAULT_PD, pd_all, (int)Q2_TABLE_MAX_NODES);
         if (np < 2) return errmsg_fail(err, n, "bad default pd grid");
         for (int k = 0; k < 2; k++) {
-            double pd;
+            double pd = 1;
             if (toc_pd(t, k ? t->sc.pfa_max : t->sc.pfa_min, &pd, err, n)) return -1;
             if (pd < pd_lo) pd_lo = pd;
         }
