@@ -196,7 +196,8 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan,
     size_t n_amp = 0;
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
     /* amplitudes in dB against the mean clutter power for the clutter test */
-    const trk_real amp_ref = sp->use_amplitude ? sp->amplitude.clutter_power : 1;
+    const trk_real amp_ref_db = TRK_REAL_C(10.0) * trk_log10(sp->use_amplitude ? sp->amplitude.clutter_power : 1);
+    const int want_db = t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP; /* only its user */
     size_t kept = 0;
     for (size_t k = 0; k < n; k++) {
         const struct trk_detection *d = &scan->detections[t->ws.src[k]];
@@ -219,8 +220,8 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan,
         t->ws.used[kept] = 0;
         t->ws.log_lr[kept] = llr;
         t->ws.amp_pos[kept] = -1;
-        if (d->has_amplitude && d->amplitude > 0) {
-            t->ws.amp_db[n_amp] = TRK_REAL_C(20.0) * trk_log10(d->amplitude) - TRK_REAL_C(10.0) * trk_log10(amp_ref);
+        if (want_db && d->has_amplitude && d->amplitude > 0) {
+            t->ws.amp_db[n_amp] = TRK_REAL_C(20.0) * trk_log10(d->amplitude) - amp_ref_db;
             t->ws.amp_pos[kept] = (int16_t)n_amp++;
         }
         if (k < *n_shared) n_shared_kept++;
