@@ -1,6 +1,7 @@
 /* crlb.c - CRLB information recursion with q2 (trk/crlb.h; Willett eq 37). */
 #include "trk/crlb.h"
 
+#include "internal.h"
 #include "fixed_point_impl.h"
 #include "trk/kalman.h"
 #include "trk/linalg.h"
@@ -43,14 +44,8 @@ trk_status trk_crlb_init(struct trk_crlb *c, const struct trk_crlb_params *pr)
     if (c->params.rel_tol == 0) c->params.rel_tol = 64 * TRK_REAL_EPS;
     const int nx = 2 * pr->nz;
     c->nx = nx;
-    if (pr->nz == 2) {
-        trk_cv2_transition(pr->dt_s, c->f);
-        trk_cv2_process_noise(pr->dt_s, pr->q_m2_per_s3, c->q);
-    } else {
-        const trk_real t = pr->dt_s, qq = pr->q_m2_per_s3;
-        c->f[0] = 1, c->f[1] = t, c->f[2] = 0, c->f[3] = 1;
-        c->q[0] = qq * t * t * t / 3, c->q[1] = c->q[2] = qq * t * t / 2, c->q[3] = qq * t;
-    }
+    /* the CV model of each coordinate (nz = 1: [x, vx]; nz = 2: [x, vx, y, vy]) */
+    TRK_CHECKED(trk_cv_model(pr->nz, pr->dt_s, pr->q_m2_per_s3, c->f, c->q));
     /* q2 H' R^-1 H: q2 / r on the position diagonal (Willett eqs 35-36) */
     for (int i = 0; i < nx * nx; i++) c->hrh[i] = 0;
     for (int k = 0; k < pr->nz; k++) c->hrh[(2 * k) * nx + 2 * k] = pr->q2 / pr->r_m2;

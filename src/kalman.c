@@ -6,21 +6,45 @@
 
 const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX] = {1, 0, 0, 0, 0, 0, 1, 0};
 
+/* F = blkdiag([[1, T], [0, 1]] x n), Q = blkdiag(q [[T^3/3, T^2/2], [T^2/2, T]] x n)
+ * (CONVENTIONS "General"); either output may be NULL. */
+static void cv_blocks(int n_axes, trk_real t, trk_real qd, trk_real *f, trk_real *q)
+{
+    const int nx = 2 * n_axes;
+    const trk_real t2 = t * t;
+    for (int i = 0; i < nx * nx; i++) {
+        if (f) f[i] = 0;
+        if (q) q[i] = 0;
+    }
+    for (int a = 0; a < n_axes; a++) {
+        const int i = 2 * a;
+        if (f) {
+            f[i * nx + i] = f[(i + 1) * nx + i + 1] = 1;
+            f[i * nx + i + 1] = t;
+        }
+        if (q) {
+            q[i * nx + i] = qd * t2 * t / 3;
+            q[i * nx + i + 1] = q[(i + 1) * nx + i] = qd * t2 / 2;
+            q[(i + 1) * nx + i + 1] = qd * t;
+        }
+    }
+}
+
 void trk_cv2_transition(trk_real dt_s, trk_real f[TRK_CV2_NX * TRK_CV2_NX])
 {
-    for (int i = 0; i < 16; i++) f[i] = 0;
-    f[0] = f[5] = f[10] = f[15] = 1;
-    f[1] = f[11] = dt_s;
+    cv_blocks(2, dt_s, 0, f, NULL);
 }
 
 void trk_cv2_process_noise(trk_real dt_s, trk_real q_m2_per_s3, trk_real q[TRK_CV2_NX * TRK_CV2_NX])
 {
-    const trk_real t = dt_s, t2 = t * t;
-    const trk_real a = q_m2_per_s3 * t2 * t / 3, b = q_m2_per_s3 * t2 / 2, c = q_m2_per_s3 * t;
-    for (int i = 0; i < 16; i++) q[i] = 0;
-    q[0] = q[10] = a;
-    q[1] = q[4] = q[11] = q[14] = b;
-    q[5] = q[15] = c;
+    cv_blocks(2, dt_s, q_m2_per_s3, NULL, q);
+}
+
+trk_status trk_cv_model(int n_axes, trk_real dt_s, trk_real q_m2_per_s3, trk_real *f, trk_real *q)
+{
+    if ((n_axes != 1 && n_axes != 2) || !f || !q) return TRK_E_ARG;
+    cv_blocks(n_axes, dt_s, q_m2_per_s3, f, q);
+    return TRK_OK;
 }
 
 trk_status trk_cv2_predict(trk_real dt_s, trk_real q_m2_per_s3, trk_real x[TRK_CV2_NX],

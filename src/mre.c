@@ -2,6 +2,7 @@
  * (trk/mre.h; Brekke eqs 27, 35, Sec. V-C; CONVENTIONS "q2, MRE and CRLB"). */
 #include "trk/mre.h"
 
+#include "internal.h"
 #include "fixed_point_impl.h"
 #include "trk/gate.h"
 #include "trk/kalman.h"
@@ -48,15 +49,8 @@ trk_status trk_mre_init(struct trk_mre *m, const struct trk_mre_params *pr)
     m->nx = 2 * pr->nz;
     m->gamma = gamma;
     m->gate_const = trk_gate_unit_volume(pr->nz) * trk_pow(gamma, (trk_real)pr->nz / 2);
-    if (pr->nz == 2) {
-        trk_cv2_transition(pr->dt_s, m->f);
-        trk_cv2_process_noise(pr->dt_s, pr->q_m2_per_s3, m->q);
-    } else {
-        /* one coordinate of the CV model: the [x, vx] block */
-        const trk_real t = pr->dt_s, qq = pr->q_m2_per_s3;
-        m->f[0] = 1, m->f[1] = t, m->f[2] = 0, m->f[3] = 1;
-        m->q[0] = qq * t * t * t / 3, m->q[1] = m->q[2] = qq * t * t / 2, m->q[3] = qq * t;
-    }
+    /* the CV model of each coordinate (nz = 1: [x, vx]; nz = 2: [x, vx, y, vy]) */
+    TRK_CHECKED(trk_cv_model(pr->nz, pr->dt_s, pr->q_m2_per_s3, m->f, m->q));
     return TRK_OK;
 }
 

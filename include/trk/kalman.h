@@ -27,6 +27,12 @@ void trk_cv2_process_noise(trk_real dt_s, trk_real q_m2_per_s3, trk_real q[TRK_C
 TRK_NODISCARD trk_status trk_cv2_predict(trk_real dt_s, trk_real q_m2_per_s3, trk_real x[TRK_CV2_NX],
                                          trk_real p[TRK_CV2_NX * TRK_CV2_NX]);
 
+/* F and Q (row-major, 2 n_axes square) of the CV model with n_axes = 1
+ * (state [x, vx]) or 2 ([x, vx, y, vy]); the same blocks as above.
+ * TRK_E_ARG for another n_axes or a NULL pointer. */
+TRK_NODISCARD trk_status trk_cv_model(int n_axes, trk_real dt_s, trk_real q_m2_per_s3, trk_real *f,
+                                      trk_real *q);
+
 /* H = [[1,0,0,0],[0,0,1,0]]. */
 extern const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX];
 
