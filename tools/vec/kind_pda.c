@@ -74,13 +74,6 @@ static int setup(const struct vec_case *c, struct vec_out *o, struct pda_setup *
     return 0;
 }
 
-static int put_real(struct vec_out *o, const char *name, const trk_real *v, size_t n)
-{
-    double *d = vec_put_alloc(o, name, n);
-    if (!d) return -1;
-    for (size_t i = 0; i < n; i++) d[i] = (double)v[i];
-    return 0;
-}
 
 /* One predict + PDA update; with full != 0 also the intermediate outputs. */
 static int step(struct vec_out *o, struct pda_setup *s, size_t m, const double *zd,
@@ -100,9 +93,9 @@ static int step(struct vec_out *o, struct pda_setup *s, size_t m, const double *
         struct trk_innovation inn;
         st = trk_kalman_innovation(NX, NZ, trk_cv2_h, s->r, s->x, s->p, &inn);
         if (st != TRK_OK) return vec_fail(o, "innovation: %s", trk_status_str(st));
-        if (put_real(o, "x_pred", s->x, NX) || put_real(o, "P_pred", s->p, NX * NX) ||
-            put_real(o, "z_pred", inn.z_pred, NZ) || put_real(o, "S", inn.s, NZ * NZ) ||
-            put_real(o, "gamma", &s->pda.gamma, 1))
+        if (vec_put_real(o, "x_pred", s->x, NX) || vec_put_real(o, "P_pred", s->p, NX * NX) ||
+            vec_put_real(o, "z_pred", inn.z_pred, NZ) || vec_put_real(o, "S", inn.s, NZ * NZ) ||
+            vec_put_real(o, "gamma", &s->pda.gamma, 1))
             return -1;
     }
     struct trk_pda_report rep;
@@ -118,10 +111,10 @@ static int step(struct vec_out *o, struct pda_setup *s, size_t m, const double *
             }
     if (full) {
         double *g = vec_put_alloc(o, "gated", m);
-        if (!g || put_real(o, "d2", d2, m)) return -1;
+        if (!g || vec_put_real(o, "d2", d2, m)) return -1;
         for (size_t i = 0; i < m; i++) g[i] = d2[i] <= s->pda.gamma;
-        if (put_real(o, "beta0", &rep.beta0, 1) || put_real(o, "beta", beta, m) ||
-            put_real(o, "x_post", s->x, NX) || put_real(o, "P_post", s->p, NX * NX))
+        if (vec_put_real(o, "beta0", &rep.beta0, 1) || vec_put_real(o, "beta", beta, m) ||
+            vec_put_real(o, "x_post", s->x, NX) || vec_put_real(o, "P_post", s->p, NX * NX))
             return -1;
     }
     return 0;
@@ -159,9 +152,9 @@ TRK_VEC_KIND(pda_track, 1e-6, 2e-4)
         int rc = step(o, &s, nz / 2, z, NULL, 0);
         if (rc) return rc;
         snprintf(name, sizeof name, "x%ld", k);
-        if (put_real(o, name, s.x, NX)) return -1;
+        if (vec_put_real(o, name, s.x, NX)) return -1;
         snprintf(name, sizeof name, "P%ld", k);
-        if (put_real(o, name, s.p, NX * NX)) return -1;
+        if (vec_put_real(o, name, s.p, NX * NX)) return -1;
     }
     return 0;
 }

@@ -122,13 +122,6 @@ TRK_VEC_KIND(q2_pdafai, 1e-6, 0)
     return rc;
 }
 
-static int put_real(struct vec_out *o, const char *name, const trk_real *v, size_t n)
-{
-    double *d = vec_put_alloc(o, name, n);
-    if (!d) return -1;
-    for (size_t i = 0; i < n; i++) d[i] = (double)v[i];
-    return 0;
-}
 
 TRK_VEC_KIND(mre_steady, 0, 1e-4)
 {
@@ -158,8 +151,8 @@ TRK_VEC_KIND(mre_steady, 0, 1e-4)
     struct trk_mre_result res;
     st = trk_mre_steady_state(&m, NULL, &res);
     if (st != TRK_OK) return vec_fail(o, "trk_mre_steady_state: %s", trk_status_str(st));
-    if (put_real(o, "P", res.p, (size_t)(res.nx * res.nx)) ||
-        put_real(o, "S", res.s, (size_t)(nz * nz)) || put_real(o, "lambda_vg", &res.lambda_vg, 1))
+    if (vec_put_real(o, "P", res.p, (size_t)(res.nx * res.nx)) ||
+        vec_put_real(o, "S", res.s, (size_t)(nz * nz)) || vec_put_real(o, "lambda_vg", &res.lambda_vg, 1))
         return -1;
     return 0;
 }
@@ -185,5 +178,5 @@ TRK_VEC_KIND(crlb_irf, 0, 1e-4)
     struct trk_crlb_result res;
     st = trk_crlb_steady_state(&cr, NULL, &res);
     if (st != TRK_OK) return vec_fail(o, "trk_crlb_steady_state: %s", trk_status_str(st));
-    return put_real(o, "J_inv", res.j_inv, (size_t)(res.nx * res.nx));
+    return vec_put_real(o, "J_inv", res.j_inv, (size_t)(res.nx * res.nx));
 }

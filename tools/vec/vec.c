@@ -289,6 +289,14 @@ int vec_put(struct vec_out *o, const char *name, const double *v, size_t n)
 
 int vec_put1(struct vec_out *o, const char *name, double v) { return vec_put(o, name, &v, 1); }
 
+int vec_put_real(struct vec_out *o, const char *name, const trk_real *v, size_t n)
+{
+    double *d = vec_put_alloc(o, name, n);
+    if (!d) return -1;
+    for (size_t i = 0; i < n; i++) d[i] = (double)v[i];
+    return 0;
+}
+
 const struct vec_entry *vec_out_find(const struct vec_out *o, const char *name)
 {
     for (size_t i = 0; i < o->n; i++)

@@ -14,6 +14,8 @@
 
 #include <stddef.h>
 
+#include "trk/types.h"
+
 #define VEC_MAX_LINE 65536
 #define VEC_MAX_NAME 32      /* names are at most 31 characters */
 #define VEC_MAX_ID 64
@@ -97,6 +99,8 @@ void vec_out_reset(struct vec_out *o);
 /* Append an output array (copied). -1 (with o->err) when full. */
 int vec_put(struct vec_out *o, const char *name, const double *v, size_t n);
 int vec_put1(struct vec_out *o, const char *name, double v);
+/* The same for library values (trk_real, widened to double). */
+int vec_put_real(struct vec_out *o, const char *name, const trk_real *v, size_t n);
 /* Reserve n values for output `name` and return them to be filled (NULL when full). */
 double *vec_put_alloc(struct vec_out *o, const char *name, size_t n);
 int vec_fail(struct vec_out *o, const char *fmt, ...);
