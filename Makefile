@@ -1,9 +1,18 @@
 # trk - target tracking library for active sonar. See README.md.
 #
 #   make                 libtrk (build/libtrk.a), libtrk_host.a, tools (build/bin/)
-#   make test            the whole test matrix (gcc + clang, ASan+UBSan, float,
-#                        small capacities, vectors, heap check, cross build)
-#   make check           tests + vectors of ONE configuration (BUILD, CC, REAL, SAN)
+#   make check           the developer loop: build, then the tests and the reference
+#                        vectors of ONE configuration (BUILD, CC, REAL, SAN), slow
+#                        Monte Carlo vector kinds left out (counted and named)
+#     make check T=tracker            one test program (T=test_tracker too; T=vectors,
+#                                     T=heap: those steps; a list works)
+#     make check T=tracker CASE='test_merge*'   one cmocka case (pattern, * and ?)
+#     make check VEC_SLOW=1           the slow vector kinds too
+#   make test            the whole matrix, configurations overlapped on 2 jobs
+#                        (gcc + clang ASan+UBSan, float, small capacities, the
+#                        default build's extra steps: QEMU, valgrind, fuzz replay,
+#                        cross builds, ...); one line per step, a summary line
+#                        per configuration and a final "test: N passed, N failed"
 #   make bench           trk-bench in double and float
 #   make demo            trk's main job (see README)
 #   make cross           libtrk for Cortex-M (build/cross/<target>/libtrk.a)
@@ -13,6 +22,8 @@
 # Configuration variables (one build directory per configuration):
 #   BUILD=build  CC=gcc|clang  REAL=double|float  SAN=0|1 (ASan+UBSan)  OPT=-O2
 #   CONFIG_DEFS='-DTRK_MAX_TRACKS=8 ...'  (capacities, see include/trk/config.h)
+#   V=1                  print the commands (default: one line per file and step)
+#   DEBUG=-g             debug-information flags
 #
 # Layout rules (nothing to edit when adding files):
 #   src/*.c           -> libtrk.a (firmware library: no heap, no stdio)
@@ -22,7 +33,13 @@
 #                        TOOL_CFLAGS_trk-NAME, TOOL_LDLIBS_trk-NAME, TOOL_DEPS_trk-NAME
 #   tests/test_*.c    -> one cmocka test program each; tests/*.mk may add rules
 #   examples/*.c      -> bin/example-NAME
-#   mk/*.mk           -> extra targets (cross, fuzz, size report, ...)
+#   mk/*.mk           -> extra targets (cross, fuzz, size report, ...); a file
+#                        registers a step of `make test` with
+#                          TEST_EXTRA += NAME
+#                          TEST_EXTRA_DEPS_NAME := what NAME needs built
+#                          NAME: $(TEST_EXTRA_DEPS_NAME) ; recipe
+#                        (the deps are built first, visibly and in parallel;
+#                        the step then runs with its output in a log)
 
 BUILD ?= build
 ifeq ($(origin CC),default)
@@ -34,6 +51,18 @@ OPT ?= -O2
 CONFIG_DEFS ?=
 PREFIX ?= /usr/local
 AR ?= ar
+V ?= 0
+# the label of this configuration in the output
+CFG ?= $(if $(filter build,$(BUILD)),default,$(notdir $(BUILD)))
+
+# --- output: one line per compiled or linked file (V=1: the commands)
+ifeq ($(V),1)
+Q :=
+say =
+else
+Q := @
+say = @printf '%-14s %-4s %s\n' '$(CFG)' '$(1)' '$(2)'
+endif
 
 WARN := -std=c99 -Wall -Wextra -Wpedantic -Werror -Wvla -Wshadow -Wstrict-prototypes
 LIBWARN := -Wmissing-prototypes -Wdouble-promotion
@@ -52,8 +81,13 @@ SANFLAGS :=
 ifeq ($(SAN),1)
 SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
-CFLAGS_ALL := $(WARN) $(OPT) -g $(DEFS) $(SANFLAGS) -Iinclude -MMD -MP
-LDFLAGS_ALL := $(SANFLAGS)
+# debug information: -g; `make test`'s sanitizer builds use -g1 (file:line in
+# sanitizer reports, ~20 % less compile time)
+DEBUG ?= -g
+CFLAGS_ALL := $(WARN) $(OPT) $(DEBUG) $(DEFS) $(SANFLAGS) -Iinclude -MMD -MP
+# Host programs link OpenMP: the table generators and the q2 sampler of
+# libtrk_tools.a are compiled once, with -fopenmp (mk/q2.mk).
+LDFLAGS_ALL := $(SANFLAGS) -fopenmp
 
 CMOCKA_CFLAGS := $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS := $(or $(shell pkg-config --libs cmocka 2>/dev/null),-lcmocka)
@@ -69,16 +103,24 @@ LIB := $(BUILD)/libtrk.a
 HOSTLIB := $(BUILD)/libtrk_host.a
 TOOLLIB := $(BUILD)/libtrk_tools.a
 GEN := $(BUILD)/gen
+RESULTS := $(BUILD)/results
 obj = $(patsubst %.c,$(BUILD)/obj/%.o,$(1))
 
 TOOLS := $(addprefix $(BUILD)/bin/,$(TOOL_DIRS))
-TESTS := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+TEST_NAMES := $(patsubst tests/%.c,%,$(TEST_SRC))
+TESTS := $(addprefix $(BUILD)/tests/,$(TEST_NAMES))
 EXAMPLES := $(patsubst examples/%.c,$(BUILD)/bin/example-%,$(EXAMPLE_SRC))
 
-.PHONY: all lib tools tests examples check test bench demo install check-heap clean help
+.PHONY: all lib tools tests examples check check-run test test-extra bench demo install check-heap \
+  clean help FORCE
 .DEFAULT_GOAL := all
+# Objects are never deleted as intermediates (a test program does not relink
+# after every build because its object vanished).
+.SECONDARY:
+FORCE:
 
 all: lib tools examples
+	@:
 lib: $(LIB) $(HOSTLIB)
 tools: $(TOOLS)
 tests: $(TESTS)
@@ -90,35 +132,39 @@ examples: $(EXAMPLES)
 # --- library objects: stricter warnings
 $(BUILD)/obj/src/%.o: src/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_ALL) $(LIBOPT) $(LIBWARN) -Isrc -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(LIBOPT) $(LIBWARN) -Isrc -c $< -o $@
 
 $(BUILD)/obj/tools/%.o: tools/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_ALL) -Itools/vec -Itools/common -I$(GEN) $(TOOL_CFLAGS_$(firstword $(subst /, ,$*))) -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) -Itools/vec -Itools/common -I$(GEN) $(TOOL_CFLAGS_$(firstword $(subst /, ,$*))) -c $< -o $@
 
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itools/vec -Itools/common -Itests -I$(GEN) -c $< -o $@
+	$(call say,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itools/vec -Itools/common -Itests -I$(GEN) -c $< -o $@
 
+# archive(name): the recipe of a static library from its object prerequisites
+define archive
+	@mkdir -p $(@D)
+	$(call say,AR,$@)
+	$(Q)rm -f $@ && $(AR) rcs $@ $(filter %.o,$^)
+endef
 $(LIB): $(call obj,$(LIB_SRC))
-	@mkdir -p $(@D)
-	rm -f $@ && $(AR) rcs $@ $^
-
+	$(archive)
 $(HOSTLIB): $(call obj,$(HOST_SRC)) | $(LIB)
-	@mkdir -p $(@D)
-	rm -f $@ && $(AR) rcs $@ $(filter %.o,$^)
-
+	$(archive)
 $(TOOLLIB): $(call obj,$(TOOLLIB_SRC))
-	@mkdir -p $(@D)
-	rm -f $@ && $(AR) rcs $@ $^
+	$(archive)
 
 # --- registries collected from marker lines (no shared file to edit)
 $(GEN)/vec_kinds.inc: $(wildcard tools/vec/kind_*.c) Makefile
 	@mkdir -p $(@D)
-	sed -n 's/^TRK_VEC_KIND(\([^)]*\)).*/TRK_VEC_KIND_ENTRY(\1)/p' $(sort $(wildcard tools/vec/kind_*.c)) > $@.tmp && mv $@.tmp $@
+	$(Q)sed -n 's/^TRK_VEC_KIND(\([^)]*\)).*/TRK_VEC_KIND_ENTRY(\1)/p' $(sort $(wildcard tools/vec/kind_*.c)) > $@.tmp && mv $@.tmp $@
 $(GEN)/bench_cases.inc: $(wildcard tools/trk-bench/bench_*.c) Makefile
 	@mkdir -p $(@D)
-	sed -n 's/^TRK_BENCH(\([a-z0-9_]*\)).*/TRK_BENCH_ENTRY(\1)/p' $(sort $(wildcard tools/trk-bench/bench_*.c)) > $@.tmp && mv $@.tmp $@
+	$(Q)sed -n 's/^TRK_BENCH(\([a-z0-9_]*\)).*/TRK_BENCH_ENTRY(\1)/p' $(sort $(wildcard tools/trk-bench/bench_*.c)) > $@.tmp && mv $@.tmp $@
 $(BUILD)/obj/tools/vec/registry.o: $(GEN)/vec_kinds.inc
 $(BUILD)/obj/tools/trk-bench/main.o: $(GEN)/bench_cases.inc
 
@@ -126,33 +172,76 @@ $(BUILD)/obj/tools/trk-bench/main.o: $(GEN)/bench_cases.inc
 define TOOL_template
 $(BUILD)/bin/$(1): $$(call obj,$$(wildcard tools/$(1)/*.c)) $$(TOOL_DEPS_$(1)) $(TOOLLIB) $(HOSTLIB) $(LIB)
 	@mkdir -p $$(@D)
-	$$(CC) $$(LDFLAGS_ALL) $$(TOOL_LDFLAGS_$(1)) $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(TOOL_LDLIBS_$(1)) -lm -o $$@
+	$$(call say,LD,$$@)
+	$$(Q)$$(CC) $$(LDFLAGS_ALL) $$(TOOL_LDFLAGS_$(1)) $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(TOOL_LDLIBS_$(1)) -lm -o $$@
 endef
 $(foreach t,$(TOOL_DIRS),$(eval $(call TOOL_template,$(t))))
 
 # --- tests and examples
+# (no line of their own: each test program's step line names it)
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TOOLLIB) $(HOSTLIB) $(LIB)
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS_ALL) $< $(TEST_EXTRA_OBJS_$*) $(TOOLLIB) $(HOSTLIB) $(LIB) $(CMOCKA_LIBS) $(TEST_LDLIBS_$*) -lm -o $@
+	$(Q)$(CC) $(LDFLAGS_ALL) $< $(TEST_EXTRA_OBJS_$*) $(TOOLLIB) $(HOSTLIB) $(LIB) $(CMOCKA_LIBS) $(TEST_LDLIBS_$*) -lm -o $@
 
 $(BUILD)/bin/example-%: $(BUILD)/obj/examples/%.o $(HOSTLIB) $(LIB)
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS_ALL) $< $(HOSTLIB) $(LIB) -lm -o $@
+	$(call say,LD,$@)
+	$(Q)$(CC) $(LDFLAGS_ALL) $< $(HOSTLIB) $(LIB) -lm -o $@
 
-# --- one configuration: tests + reference vectors + heap check
+# --- steps: every test program, the vectors, each extra check is a step.
+# tests/run_step.sh runs it with its output in $(RESULTS)/NAME.log, prints one
+# line (PASS/FAIL, what it counted, seconds; the whole log only on failure)
+# and records the result in $(RESULTS)/NAME.res; tests/summary.sh then prints
+# "CFG: N passed, N failed" and fails when any step failed. A failing step
+# does not stop the others.
+STEP = CFG='$(CFG)' sh tests/run_step.sh $(RESULTS)
+SUMMARY = sh tests/summary.sh
+
 # ../shared/vectors when the checkout sits next to it, else the copy in tests/vectors
 VECTORS_DIR ?= $(if $(wildcard ../shared/vectors/*.vec),../shared/vectors,tests/vectors)
-# The Monte Carlo kinds take ~25 s CPU under sanitizers; those builds skip them
-# (the non-sanitizer configurations of `make test` run every kind).
-comma := ,
-VECTORS_SKIP := $(if $(filter 1,$(SAN)),q2_pdaf$(comma)q2_pdafai,)
-check: all $(TESTS)
-	@set -e; for t in $(TESTS); do echo "== $$t"; TRK_VECTORS_DIR=$(VECTORS_DIR) TRK_BUILD=$(BUILD) \
-	  $(if $(VECTORS_SKIP),TRK_VECTORS_SKIP=$(VECTORS_SKIP)) $$t; done
-	@if [ -d $(VECTORS_DIR) ]; then echo "== trk-vectors ($(REAL))"; \
-	  $(BUILD)/bin/trk-vectors --quiet $(if $(VECTORS_SKIP),--skip $(VECTORS_SKIP)) $(VECTORS_DIR)/*.vec; \
-	 else echo "== trk-vectors: $(VECTORS_DIR) not found, skipped"; fi
-	@$(MAKE) --no-print-directory BUILD=$(BUILD) check-heap
+# The kinds registered VEC_SLOW (Monte Carlo q2 estimators, ~20 s in all)
+# run only where VEC_SLOW=1: `make test` sets it in one configuration.
+VEC_SLOW ?= 0
+VECTORS_FLAGS := --quiet $(if $(filter 1,$(VEC_SLOW)),,--skip-slow)
+
+# T selects steps (test_NAME, NAME, vectors, heap); CASE a cmocka case pattern.
+T ?=
+CASE ?=
+CHECK_EXTRA ?=
+ALL_CHECK_STEPS := $(TEST_NAMES) vectors heap $(CHECK_EXTRA)
+CHECK_STEPS := $(if $(T),$(filter $(T) $(addprefix test_,$(T)),$(ALL_CHECK_STEPS)),$(ALL_CHECK_STEPS))
+ifneq ($(T),)
+ifeq ($(CHECK_STEPS),)
+$(error T=$(T) names no step; steps: $(ALL_CHECK_STEPS))
+endif
+endif
+ifneq ($(CASE),)
+ifeq ($(T),)
+$(error CASE=$(CASE) needs T=<test program>, e.g. make check T=tracker CASE='$(CASE)')
+endif
+endif
+res = $(patsubst %,$(RESULTS)/%.res,$(1))
+
+$(RESULTS)/test_%.res: $(BUILD)/tests/test_% FORCE
+	@TRK_TEST_CASE='$(CASE)' $(STEP) test_$* $<
+$(RESULTS)/vectors.res: $(BUILD)/bin/trk-vectors FORCE
+	@if [ -d $(VECTORS_DIR) ]; then DETAIL_LINES=4 $(STEP) vectors $< $(VECTORS_FLAGS) $(VECTORS_DIR)/*.vec; \
+	 else echo "$(CFG) vectors: $(VECTORS_DIR) not found, skipped"; fi
+$(RESULTS)/heap.res: $(LIB) FORCE
+	@$(STEP) heap $(MAKE) --no-print-directory check-heap
+
+# check: everything of this configuration and its steps (the developer loop),
+# on CHECK_JOBS jobs unless make was given -j
+CHECK_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+.PHONY: check-steps
+check:
+	+@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(CHECK_JOBS)) all check-steps
+	@$(SUMMARY) '$(CFG)' $(call res,$(CHECK_STEPS))
+# check-run: only what the steps need (what `make test` runs per configuration)
+check-run: check-steps
+	@$(SUMMARY) '$(CFG)' $(call res,$(CHECK_STEPS))
+check-steps: $(call res,$(CHECK_STEPS))
+	@:
 
 HEAP_SYMS := malloc|calloc|realloc|free|alloca|__builtin_alloca|printf|fprintf|sprintf|snprintf|vsnprintf|puts|putchar|fputs|fopen|fwrite|fread|abort|exit|_exit|__assert_fail|__stack_chk_fail_local|stdout|stderr
 check-heap: $(LIB)
@@ -160,30 +249,38 @@ check-heap: $(LIB)
 	  echo "check-heap: libtrk references the symbols above (heap/stdio/abort)"; exit 1; fi
 	@echo "check-heap: $(LIB) references no heap, stdio or abort symbol"
 
-# --- the whole matrix (README's test command)
-TEST_CONFIGS := test-gcc test-clang test-gcc-float test-small
+# --- the whole matrix (README's test command). The configurations are
+# independent sub-makes (own build directories) run on TEST_JOBS jobs; each
+# prints its steps and its summary line, then the total.
+TEST_JOBS ?= 2
+# (the default configuration first: its steps are the longest chain)
+TEST_CONFIGS := test-default test-gcc test-clang test-gcc-float test-small
+SAN_CHECK := SAN=1 OPT=-O1 DEBUG=-g1
+.PHONY: $(TEST_CONFIGS) test-configs
+TEST_RESULT_DIRS := $(addsuffix /results,$(addprefix build/,$(filter-out test-default,$(TEST_CONFIGS))) build)
 test:
-	$(MAKE) --no-print-directory BUILD=build/test-gcc CC=gcc SAN=1 OPT=-O1 check
-	$(MAKE) --no-print-directory BUILD=build/test-clang CC=clang SAN=1 OPT=-O1 check
-	$(MAKE) --no-print-directory BUILD=build/test-gcc-float CC=gcc SAN=1 OPT=-O1 REAL=float check
-	$(MAKE) --no-print-directory BUILD=build/test-small CC=gcc OPT=-O2 \
-	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2' check
-	$(MAKE) --no-print-directory all
-	$(MAKE) --no-print-directory check-bad-config
-	$(MAKE) --no-print-directory test-extra
-	$(MAKE) --no-print-directory cross
-	@echo "make test: all configurations passed"
+	@rm -rf $(TEST_RESULT_DIRS)
+	+@rc=0; $(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(TEST_JOBS)) -k test-configs || rc=$$?; \
+	  $(SUMMARY) --make-status $$rc test $(addsuffix /*.res,$(TEST_RESULT_DIRS))
+test-configs: $(TEST_CONFIGS)
+test-gcc:
+	+@$(MAKE) --no-print-directory BUILD=build/test-gcc CC=gcc $(SAN_CHECK) CHECK_EXTRA=fuzz-replay check-run
+test-clang:
+	+@$(MAKE) --no-print-directory BUILD=build/test-clang CC=clang $(SAN_CHECK) CHECK_EXTRA=fuzz-replay check-run
+test-gcc-float:
+	+@$(MAKE) --no-print-directory BUILD=build/test-gcc-float CC=gcc $(SAN_CHECK) REAL=float check-run
+test-small:
+	+@$(MAKE) --no-print-directory BUILD=build/test-small CC=gcc OPT=-O1 DEBUG=-g1 VEC_SLOW=1 \
+	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2' check-run
+test-default:
+	+@$(MAKE) --no-print-directory BUILD=build test-extra
 
 # A deliberately impossible configuration must not compile.
+TEST_EXTRA += check-bad-config
 check-bad-config:
 	@if echo '#include "trk/trk.h"' | $(CC) -std=c99 -Iinclude -DTRK_MAX_MEAS=4 -x c -fsyntax-only - 2>/dev/null; then \
 	  echo "check-bad-config: TRK_MAX_MEAS=4 compiled but must fail"; exit 1; fi
 	@echo "check-bad-config: an impossible configuration fails to compile, as it must"
-
-# Extra test steps registered by mk/*.mk and tests/*.mk with TEST_EXTRA +=
-# (fuzz corpus replay, valgrind, QEMU, ...); the rule is at the end of this
-# file, after those files are read.
-TEST_EXTRA ?=
 
 bench:
 	$(MAKE) --no-print-directory BUILD=build OPT=-O2 tools
@@ -206,8 +303,19 @@ clean:
 	rm -rf build
 
 help:
-	@sed -n '1,30p' Makefile
+	@sed -n '1,45p' Makefile
 
 -include $(wildcard mk/*.mk)
-test-extra: $(TEST_EXTRA)
+
+# --- the extra steps of the default configuration (registered above and in
+# mk/*.mk, tests/*.mk): each one's deps are built by this make, then the step
+# runs as `make NAME` with its output in its log.
+define EXTRA_STEP_template
+$(RESULTS)/$(1).res: $$(TEST_EXTRA_DEPS_$(1)) FORCE
+	@$$(STEP) $(1) $$(MAKE) --no-print-directory $(1)
+endef
+$(foreach s,$(sort $(TEST_EXTRA) $(CHECK_EXTRA)),$(eval $(call EXTRA_STEP_template,$(s))))
+test-extra: $(call res,$(TEST_EXTRA))
+	@$(SUMMARY) '$(CFG)' $^
+
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

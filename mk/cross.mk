@@ -88,9 +88,11 @@ define CROSS_template
 CROSS_OBJ_$(1) := $$(patsubst src/%.c,build/cross/$(1)/obj/%.o,$$(LIB_SRC))
 build/cross/$(1)/obj/%.o: src/%.c $$(wildcard include/trk/*.h src/*.h) mk/cross.mk
 	@mkdir -p $$(@D)
-	$$(TARGET_$(1)_CC) $$(CROSS_COMMON) $$(TARGET_$(1)_CFLAGS) $$(CROSS_EXTRA_CFLAGS) -c $$< -o $$@
+	$$(call say,CC,$$< ($(1)))
+	$$(Q)$$(TARGET_$(1)_CC) $$(CROSS_COMMON) $$(TARGET_$(1)_CFLAGS) $$(CROSS_EXTRA_CFLAGS) -c $$< -o $$@
 build/cross/$(1)/libtrk.a: $$(CROSS_OBJ_$(1))
-	rm -f $$@ && $$(call cross_tool,$(1),ar) rcs $$@ $$^
+	$$(call say,AR,$$@)
+	$$(Q)rm -f $$@ && $$(call cross_tool,$(1),ar) rcs $$@ $$^
 cross-$(1): build/cross/$(1)/libtrk.a
 	@echo "== $(1): $$<"
 	@$$(call cross_tool,$(1),size) -t $$< | tail -1 | awk '{printf "   text %s  data %s  bss %s  (bytes, whole library)\n", $$$$1, $$$$2, $$$$3}'
@@ -113,3 +115,7 @@ cross: $(addprefix cross-,$(CROSS_TARGETS))
 	@$(if $(HAVE_RISCV),,echo "== riscv: skipped ($(RISCV_CC) or $(NEWLIB_INC)/math.h not found; apt-get install gcc-riscv64-unknown-elf)")
 
 cross-sizeopt: cross-cortex-m4f-inline cross-cortex-m4f-sizeopt
+
+# each cross target's library and symbol checks: a step of `make test`
+TEST_EXTRA += $(addprefix cross-,$(CROSS_TARGETS))
+$(foreach t,$(CROSS_TARGETS),$(eval TEST_EXTRA_DEPS_cross-$(t) := build/cross/$(t)/libtrk.a))

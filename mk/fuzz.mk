@@ -16,10 +16,10 @@
 #        finding (executions are then read from the last "#N: cov:" line)
 #   make fuzz-merge     adds the coverage-increasing inputs of build/fuzz/corpus/
 #                       to the committed tests/fuzz/corpus/ (libFuzzer -merge=1)
-#   make fuzz-replay    (part of make test) replays tests/fuzz/corpus/NAME/ with
-#                       the plain-C main tests/fuzz/replay.c, built in the
-#                       ASan+UBSan configurations of make test (gcc and clang)
-#   make fuzz-replay-one  the same in the current BUILD/CC/SAN only
+#   make fuzz-replay    replays tests/fuzz/corpus/NAME/ with the plain-C main
+#                       tests/fuzz/replay.c in the current BUILD/CC/SAN; a step
+#                       of the ASan+UBSan configurations of make test (gcc and
+#                       clang: CHECK_EXTRA=fuzz-replay)
 
 FUZZ_SECONDS ?= 60
 FUZZ_DIR := build/fuzz
@@ -35,25 +35,17 @@ define FUZZ_REPLAY_template
 $(BUILD)/fuzz-replay/replay-$(1): $(BUILD)/obj/tests/fuzz/replay.o $(BUILD)/obj/tests/fuzz/fuzz_$(1).o \
   $$(FUZZ_OBJS_$(1)) $(TOOLLIB) $(HOSTLIB) $(LIB)
 	@mkdir -p $$(@D)
-	$(CC) $(LDFLAGS_ALL) $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
+	$$(Q)$(CC) $(LDFLAGS_ALL) $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
 $(BUILD)/obj/tests/fuzz/fuzz_$(1).o: CFLAGS_ALL += $$(FUZZ_CFLAGS_$(1))
 endef
 $(foreach t,$(FUZZ_ALL),$(eval $(call FUZZ_REPLAY_template,$(t))))
 
-.PHONY: fuzz fuzz-build fuzz-merge fuzz-replay fuzz-replay-one
-fuzz-replay-one: $(addprefix $(BUILD)/fuzz-replay/replay-,$(FUZZ_ALL))
+.PHONY: fuzz fuzz-build fuzz-merge fuzz-replay
+TEST_EXTRA_DEPS_fuzz-replay := $(addprefix $(BUILD)/fuzz-replay/replay-,$(FUZZ_ALL))
+fuzz-replay: $(TEST_EXTRA_DEPS_fuzz-replay)
 	@set -e; for t in $(FUZZ_ALL); do \
 	  if [ -d tests/fuzz/corpus/$$t ]; then $(BUILD)/fuzz-replay/replay-$$t tests/fuzz/corpus/$$t; \
 	  else echo "fuzz-replay: tests/fuzz/corpus/$$t missing"; exit 1; fi; done
-
-fuzz-replay:
-	$(MAKE) --no-print-directory BUILD=build/test-gcc CC=gcc SAN=1 OPT=-O1 fuzz-replay-one
-	$(MAKE) --no-print-directory BUILD=build/test-clang CC=clang SAN=1 OPT=-O1 fuzz-replay-one
-
-# The Makefile expands test-extra's prerequisites before mk/*.mk is read,
-# so TEST_EXTRA += alone would not register the step: name it directly too.
-TEST_EXTRA += fuzz-replay
-test-extra: fuzz-replay
 
 # --- libFuzzer binaries: the whole build of build/fuzz is clang + coverage + ASan/UBSan
 FUZZ_MAKE = $(MAKE) --no-print-directory BUILD=$(FUZZ_DIR) CC=clang OPT=-O1 \
@@ -67,7 +59,7 @@ ifeq ($(BUILD),$(FUZZ_DIR))
 define FUZZ_BIN_template
 $(FUZZ_DIR)/bin/fuzz-$(1): $(FUZZ_DIR)/obj/tests/fuzz/fuzz_$(1).o $$(FUZZ_OBJS_$(1)) $(TOOLLIB) $(HOSTLIB) $(LIB)
 	@mkdir -p $$(@D)
-	$(CC) -fsanitize=fuzzer,address,undefined $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
+	$(CC) -fsanitize=fuzzer,address,undefined -fopenmp $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
 endef
 $(foreach t,$(FUZZ_ALL),$(eval $(call FUZZ_BIN_template,$(t))))
 endif

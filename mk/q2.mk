@@ -1,27 +1,21 @@
-# mk/q2.mk - the q2 importance sampler (tools/common/q2_is.c) with OpenMP.
+# mk/q2.mk - the q2 importance sampler (tools/common/q2_is.c) and the
+# amplitude table generator (tools/common/amp_table.c) with OpenMP.
 #
-# tools/common/q2_is.c is compiled twice:
-#   $(BUILD)/obj/tools/common/q2_is.o      serial, in libtrk_tools.a (generic rule;
-#                                          its OpenMP pragmas are macros that vanish)
-#   $(BUILD)/obj/omp/tools/common/q2_is.o  with -fopenmp (rule below)
-# A program that wants threads links the second object before libtrk_tools.a
-# (the archive member is then never pulled) and links with -fopenmp:
-#   tools/trk-NAME/tool.mk:  TOOL_DEPS_trk-NAME += $(BUILD)/obj/omp/tools/common/q2_is.o
-#                            TOOL_LDLIBS_trk-NAME += -fopenmp
-#   tests/NAME.mk:           $(BUILD)/tests/test_NAME: $(BUILD)/obj/omp/tools/common/q2_is.o
-#                            TEST_EXTRA_OBJS_test_NAME += $(BUILD)/obj/omp/tools/common/q2_is.o
-#                            TEST_LDLIBS_test_NAME += -fopenmp
-# Both objects give bit-identical results (q2_is.h). The sampler is compiled
-# at -O3 (vectorised inner loops; -fno-trapping-math lets the compiler turn
-# the selects of q2_fastmath.h into blends, it changes no result); FP
-# contraction is off so that no FMA changes the bits between the AVX2 and
-# baseline clones of the kernels.
-Q2_IS_OMP_OBJ := $(BUILD)/obj/omp/tools/common/q2_is.o
-Q2_IS_FLAGS := -O3 -ffp-contract=off -fno-trapping-math
-
-$(Q2_IS_OMP_OBJ): tools/common/q2_is.c
-	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_ALL) $(Q2_IS_FLAGS) -fopenmp -Itools/common -c $< -o $@
-
-$(BUILD)/obj/tools/common/q2_is.o: CFLAGS_ALL += $(Q2_IS_FLAGS)
+# Both are compiled once, with -fopenmp, into libtrk_tools.a; every host
+# program links with -fopenmp (LDFLAGS_ALL in the Makefile), so a program that
+# calls them runs on all cores (OMP_NUM_THREADS or the tools' --threads to
+# choose). Their results are bit-identical for any thread count (q2_is.h,
+# amp_table.h; checked by test_q2, q2-repro and sim-papers-repro). The
+# firmware image (mk/qemu.mk) compiles amp_table.c for the target without
+# OpenMP: its pragmas sit under #ifdef _OPENMP.
+#
+# The sampler is compiled at -O3 (vectorised inner loops; -fno-trapping-math
+# lets the compiler turn the selects of q2_fastmath.h into blends, it changes
+# no result); FP contraction is off so that no FMA changes the bits between
+# the AVX2 and baseline clones of the kernels. Sanitizer builds keep their
+# OPT (-O1): the -O3 compile of q2_is.c costs ~20 s there and checks nothing
+# more.
+Q2_IS_FLAGS := $(if $(filter 1,$(SAN)),,-O3) -ffp-contract=off -fno-trapping-math
+$(BUILD)/obj/tools/common/q2_is.o: CFLAGS_ALL += $(Q2_IS_FLAGS) -fopenmp
 $(BUILD)/obj/tools/common/q2_amp.o: CFLAGS_ALL += $(Q2_IS_FLAGS)
+$(BUILD)/obj/tools/common/amp_table.o: CFLAGS_ALL += -fopenmp

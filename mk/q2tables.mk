@@ -1,6 +1,6 @@
 # mk/q2tables.mk - the default q2 tables (`make tables`, with mk/tables.mk's
 # amplitude tables) and the thread-count reproducibility check of
-# `trk-tablegen q2` (part of `make test` via test-extra).
+# `trk-tablegen q2` (a step of `make test`).
 #
 #   make tables   also writes into $(BUILD)/tables/:
 #     q2_pdaf_pg099.tbl       PDAF, nz 2, P_G 0.99
@@ -21,6 +21,7 @@ Q2_TABLES := $(TABLES_DIR)/q2_pdaf_pg099.tbl $(TABLES_DIR)/q2_pdaf_g6.tbl \
 define Q2_TABLE_rule
 $(TABLES_DIR)/$(1).tbl: $(TABLEGEN)
 	@mkdir -p $$(@D)
+	$$(call say,GEN,$$@)
 	@$(TABLEGEN) q2 $(2) $(Q2_TABLE_FLAGS) -o $$@ || { rm -f $$@; exit 1; }
 	@$(TABLEGEN) info $$@ > /dev/null || { echo "$$@: rejected by trk-tablegen info"; rm -f $$@; exit 1; }
 endef
@@ -38,8 +39,8 @@ q2-tables: $(Q2_TABLES)
 # The same q2 table from 1 and 2 threads must be byte-identical (counter-based
 # random numbers keyed by (seed, stratum, sample); work merged in a fixed order).
 TEST_EXTRA += q2-repro
-test-extra: q2-repro
-q2-repro: $(TABLEGEN)
+TEST_EXTRA_DEPS_q2-repro := $(TABLEGEN)
+q2-repro: $(TEST_EXTRA_DEPS_q2-repro)
 	@d=$$(mktemp -d) || exit 1; st=0; \
 	for t in 1 2; do \
 	  $(TABLEGEN) q2 --detector pdaf --pd 0.5:1:0.1 --lambda-vg 0.01:20:6 --samples 20000 --target-se 2e-3 \

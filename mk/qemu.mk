@@ -5,10 +5,9 @@
 #     - libtrk exactly as make cross builds it (build/cross/<target>/libtrk.a)
 #     - the host's vector parser, checker and kinds (tools/vec/*.c), compiled
 #       for the target, with every kind_*.c picked up automatically
-#     - tools/common/*.c that build for the target (helpers of the kinds; a
-#       file that does not build is left out with a message - if a kind needs
-#       it, the link fails and says so)
-#     - every $(VECTORS_DIR)/*.vec file as C data (tests/qemu/vec2c.sh)
+#     - the firmware-capable helpers of the kinds (FW_COMMON_SRC below)
+#     - every $(VECTORS_DIR)/*.vec file as C data (tests/qemu/vec2c.sh), the
+#       cases of kinds the image does not run reduced to their case/end lines
 #     - an amplitude lookup table per K-clutter parameter set of those files,
 #       made by the host's trk-tablegen in the target's real width and linked
 #       as a const array (tests/qemu/amp_tables.sh): model-k amplitude cases
@@ -19,33 +18,44 @@
 #
 #   make qemu-test           cortex-m4f on mps2-an386 (Cortex-M4F, float), then
 #                            cortex-m7d on mps2-an500 (Cortex-M7, double FPU, double)
-#   make qemu-test-cortex-m4f
+#   make qemu-test-cortex-m4f  one of them (each is a step of `make test`)
 #   make qemu-build          the images only
 #
-# Kinds left out of the image (their cases are counted as "skipped on target"):
-#   q2_pdaf q2_pdafai  importance-sampling Monte Carlo estimators of q2
-#                      (tools/common/q2_is.c, 3e6-8e6 scenes per case, ~5 s per
-#                      file natively at -O3 with doubles): hours under emulation
-#                      on a float-only FPU; they are tool-side numerics, not
-#                      firmware code. mre_steady and crlb_irf (same file) run.
-# Memory: the parser's case buffers are lowered to VEC_POOL = 65536 values and
-# VEC_MAX_ENTRIES = 512 (tools/vec/vec.h; 2^18 on the host): ~1.3 MB, ~2 MB of
-# .bss in all, of the board's 4 MiB RAM (stack: the top 256 KiB). The largest
-# public case needs 11249 values; a larger one fails loudly ("case too large").
-# Code space (4 MiB): ~0.7 MB of vector text, 0.7 MB (float) / 1.3 MB (double)
-# of tables.
+# Kinds in the image: every kind of tools/vec/kind_*.c but those registered
+# VEC_SLOW (the importance-sampling Monte Carlo estimators of q2, q2_pdaf and
+# q2_pdafai: 3e6-8e6 scenes per case, hours under emulation on a float-only
+# FPU; tool-side numerics, not firmware code; mre_steady and crlb_irf run).
+# Only the cases of those kinds are embedded whole; a case of any other kind
+# (slow, or not implemented yet) is embedded as its `case` and `end` lines
+# alone, so the image reports it - slow ones as "skipped on target",
+# unknown ones as "unimplemented" - whatever its size (tests/qemu/vec2c.sh
+# --keep). The image's size thus depends on the implemented kinds' cases only.
+# Memory (tests/qemu/mps2.ld, as QEMU 7.2 models both boards: `info mtree`):
+# 4 MiB SSRAM1 at 0 for code and the load image of .data, 4 MiB SSRAM2/3 at
+# 0x20000000 for .data, .bss, heap and stack (top 256 KiB); the link fails with
+# a message when either does not fit. The parser's case buffers are lowered
+# to VEC_POOL = 65536 values and VEC_MAX_ENTRIES = 512 (tools/vec/vec.h; 2^18
+# on the host): ~1.3 MB of .bss. The largest public case needs 11249 values; a
+# larger one fails loudly ("case too large").
+# Helpers of the kinds from tools/common: the firmware-capable ones, named in
+# FW_COMMON_SRC (the amplitude-table writer and K-distribution quadrature that
+# kind_amplitude.c and kind_q2.c call; the rest of tools/common is host-only).
+# The image is rebuilt when VECTORS_DIR or its file list changes
+# ($(FW_DIR)/vectors.list holds both).
 
 QEMU ?= qemu-system-arm
 QEMU_TIMEOUT ?= 900
 QEMU_TARGETS ?= cortex-m4f cortex-m7d
 QEMU_MACHINE_cortex-m4f := mps2-an386
 QEMU_MACHINE_cortex-m7d := mps2-an500
-FW_SKIP_KINDS ?= q2_pdaf q2_pdafai
 FW_VEC_DEFS := -DVEC_POOL='(1u << 16)' -DVEC_MAX_ENTRIES=512
 FW_WARN := -std=c99 -Wall -Wextra -Wpedantic -Werror -Wvla -Wshadow -Wstrict-prototypes \
   -Wno-format-truncation
 FW_VEC_FILES = $(sort $(wildcard $(VECTORS_DIR)/*.vec))
 FW_KIND_SRC = $(sort $(wildcard tools/vec/kind_*.c))
+# the kinds registered VEC_SLOW: not in the image's registry
+FW_SKIP_KINDS := $(shell sed -n 's/^TRK_VEC_KIND(\([a-z0-9_]*\),.*VEC_SLOW).*/\1/p' $(sort $(wildcard tools/vec/kind_*.c)))
+FW_COMMON_SRC := tools/common/amp_table.c tools/common/kdist.c tools/common/q2_amp.c tools/common/table_writer.c
 FW_RANDOM123 ?= /usr/include/Random123
 FW_TABLEGEN = $(BUILD)/bin/trk-tablegen
 # newlib-nano + semihosting. Neither nano nor Debian's full newlib printf
@@ -57,9 +67,10 @@ define QEMU_template
 FW_DIR_$(1) := build/qemu/$(1)
 FW_CFLAGS_$(1) = $$(FW_WARN) $$(TARGET_$(1)_CFLAGS) $$(FW_VEC_DEFS) -ffunction-sections -fdata-sections -g \
   -Iinclude -Itools/vec -Itools/common -I$$(FW_DIR_$(1))/gen -isystem $$(FW_DIR_$(1))/inc \
-  -DFW_TARGET='"$(1) on $$(QEMU_MACHINE_$(1))"' -DFW_SKIP_KINDS='"$$(FW_SKIP_KINDS)"' \
+  -DFW_TARGET='"$(1) on $$(QEMU_MACHINE_$(1))"' -DFW_SKIP_KINDS='"$$(strip $$(FW_SKIP_KINDS))"' \
   -DFW_AMP_K_DIRECT=$$(if $$(TARGET_$(1)_FLOAT),0,1)
-FW_HARNESS_SRC_$(1) = tools/vec/vec.c tools/vec/registry.c $$(FW_KIND_SRC) tests/qemu/startup.c tests/qemu/main.c
+FW_HARNESS_SRC_$(1) = tools/vec/vec.c tools/vec/registry.c $$(FW_KIND_SRC) $$(FW_COMMON_SRC) tests/qemu/startup.c \
+  tests/qemu/main.c
 FW_HARNESS_OBJ_$(1) = $$(patsubst %.c,$$(FW_DIR_$(1))/obj/%.o,$$(FW_HARNESS_SRC_$(1))) $$(FW_DIR_$(1))/obj/vec_data.o \
   $$(FW_DIR_$(1))/obj/amp_tables.o
 
@@ -67,46 +78,50 @@ $$(FW_DIR_$(1))/inc/.stamp:
 	@mkdir -p $$(@D)
 	@if [ -d $$(FW_RANDOM123) ]; then ln -sfn $$(FW_RANDOM123) $$(@D)/Random123; fi
 	@touch $$@
+# the image's kind registry: every kind but the slow ones
 $$(FW_DIR_$(1))/gen/vec_kinds.inc: $$(FW_KIND_SRC) mk/qemu.mk
 	@mkdir -p $$(@D)
-	sed -n 's/^TRK_VEC_KIND(\([^)]*\)).*/TRK_VEC_KIND_ENTRY(\1)/p' $$(FW_KIND_SRC) | \
-	  awk -v skip="$$(FW_SKIP_KINDS)" 'BEGIN { n = split(skip, s, " "); for (i = 1; i <= n; i++) k[s[i]] = 1 } \
-	    { name = $$$$0; sub(/^TRK_VEC_KIND_ENTRY\(/, "", name); sub(/,.*/, "", name); if (!(name in k)) print }' > $$@.tmp
-	mv $$@.tmp $$@
-$$(FW_DIR_$(1))/vec_data.c: $$(FW_VEC_FILES) tests/qemu/vec2c.sh
+	$$(Q)sed -n '/VEC_SLOW)/d; s/^TRK_VEC_KIND(\([^)]*\)).*/TRK_VEC_KIND_ENTRY(\1)/p' $$(FW_KIND_SRC) > $$@.tmp
+	$$(Q)mv $$@.tmp $$@
+# VECTORS_DIR and its files, rewritten only when they change
+$$(FW_DIR_$(1))/vectors.list: FORCE
 	@mkdir -p $$(@D)
-	sh tests/qemu/vec2c.sh $$(FW_VEC_FILES) > $$@.tmp && mv $$@.tmp $$@
-$$(FW_DIR_$(1))/tables/amp_tables.c: $$(FW_VEC_FILES) tests/qemu/amp_tables.sh $$(FW_TABLEGEN)
+	@echo '$$(VECTORS_DIR): $$(FW_VEC_FILES)' > $$@.tmp; if cmp -s $$@.tmp $$@; then rm -f $$@.tmp; else mv $$@.tmp $$@; fi
+$$(FW_DIR_$(1))/vec_data.c: $$(FW_VEC_FILES) $$(FW_DIR_$(1))/vectors.list $$(FW_DIR_$(1))/gen/vec_kinds.inc tests/qemu/vec2c.sh
 	@mkdir -p $$(@D)
-	sh tests/qemu/amp_tables.sh $$(FW_TABLEGEN) $$(if $$(TARGET_$(1)_FLOAT),float,double) $$(@D) $$(FW_VEC_FILES) > $$@.tmp
-	mv $$@.tmp $$@
+	$$(call say,GEN,$$@)
+	$$(Q)sh tests/qemu/vec2c.sh --keep "$$$$(sed 's/^TRK_VEC_KIND_ENTRY(\([a-z0-9_]*\),.*/\1/' $$(FW_DIR_$(1))/gen/vec_kinds.inc)" \
+	  $$(FW_VEC_FILES) > $$@.tmp && mv $$@.tmp $$@
+$$(FW_DIR_$(1))/tables/amp_tables.c: $$(FW_VEC_FILES) $$(FW_DIR_$(1))/vectors.list tests/qemu/amp_tables.sh $$(FW_TABLEGEN)
+	@mkdir -p $$(@D)
+	$$(call say,GEN,$$@)
+	$$(Q)sh tests/qemu/amp_tables.sh $$(FW_TABLEGEN) $$(if $$(TARGET_$(1)_FLOAT),float,double) $$(@D) $$(FW_VEC_FILES) > $$@.tmp
+	$$(Q)mv $$@.tmp $$@
 $$(FW_DIR_$(1))/obj/amp_tables.o: $$(FW_DIR_$(1))/tables/amp_tables.c
 	@mkdir -p $$(@D)
-	$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -c $$< -o $$@
+	$$(call say,CC,$$< ($(1)))
+	$$(Q)$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -c $$< -o $$@
 $$(FW_DIR_$(1))/obj/vec_data.o: $$(FW_DIR_$(1))/vec_data.c
 	@mkdir -p $$(@D)
-	$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -Wno-overlength-strings -c $$< -o $$@
+	$$(call say,CC,$$< ($(1)))
+	$$(Q)$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -Wno-overlength-strings -c $$< -o $$@
 $$(FW_DIR_$(1))/obj/%.o: %.c $$(FW_DIR_$(1))/gen/vec_kinds.inc $$(FW_DIR_$(1))/inc/.stamp \
   $$(wildcard include/trk/*.h tools/vec/*.h tools/common/*.h) mk/qemu.mk
 	@mkdir -p $$(@D)
-	$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -c $$< -o $$@
-# helpers of the kinds: best effort (see the top of this file)
-$$(FW_DIR_$(1))/libfwcommon.a: $$(wildcard tools/common/*.c tools/common/*.h) $$(FW_DIR_$(1))/inc/.stamp mk/qemu.mk
-	@mkdir -p $$(FW_DIR_$(1))/common
-	@rm -f $$@; ok=""; for f in $$(wildcard tools/common/*.c); do \
-	  o=$$(FW_DIR_$(1))/common/$$$$(basename $$$$f .c).o; \
-	  if $$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -c $$$$f -o $$$$o 2>$$$$o.err; then ok="$$$$ok $$$$o"; \
-	  else echo "   qemu-$(1): $$$$f does not build for the target, left out: $$$$(grep -m1 error $$$$o.err)"; fi; \
-	done; $$(call cross_tool,$(1),ar) rcs $$@ $$$$ok
-$$(FW_DIR_$(1))/fw.elf: $$(FW_HARNESS_OBJ_$(1)) $$(FW_DIR_$(1))/libfwcommon.a build/cross/$(1)/libtrk.a tests/qemu/mps2.ld
-	$$(TARGET_$(1)_CC) $$(TARGET_$(1)_CFLAGS) -nostartfiles $$(FW_SPECS) \
+	$$(call say,CC,$$< ($(1)))
+	$$(Q)$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -c $$< -o $$@
+$$(FW_DIR_$(1))/fw.elf: $$(FW_HARNESS_OBJ_$(1)) build/cross/$(1)/libtrk.a tests/qemu/mps2.ld
+	$$(call say,LD,$$@)
+	$$(Q)$$(TARGET_$(1)_CC) $$(TARGET_$(1)_CFLAGS) -nostartfiles $$(FW_SPECS) \
 	  -u _printf_float -T tests/qemu/mps2.ld -Wl,--gc-sections -Wl,-Map=$$@.map \
-	  $$(FW_HARNESS_OBJ_$(1)) $$(FW_DIR_$(1))/libfwcommon.a build/cross/$(1)/libtrk.a -lm -o $$@
-	@$$(call cross_tool,$(1),size) $$@
+	  $$(FW_HARNESS_OBJ_$(1)) build/cross/$(1)/libtrk.a -lm -o $$@
+	$$(Q)$$(call cross_tool,$(1),size) $$@ > $$@.size
 qemu-build-$(1): $$(FW_DIR_$(1))/fw.elf
-qemu-test-$(1): $$(FW_DIR_$(1))/fw.elf size-files-$(1)
+TEST_EXTRA += qemu-test-$(1)
+TEST_EXTRA_DEPS_qemu-test-$(1) := $$(FW_DIR_$(1))/fw.elf size-files-$(1)
+qemu-test-$(1): $$(TEST_EXTRA_DEPS_qemu-test-$(1))
 	@command -v $$(QEMU) >/dev/null || { echo "qemu-test: $$(QEMU) not found (apt-get install qemu-system-arm)"; exit 1; }
-	@echo "== qemu-test $(1) ($$(QEMU_MACHINE_$(1))): $$<"
+	@echo "== qemu-test $(1) ($$(QEMU_MACHINE_$(1))): $$<"; cat $$<.size
 	@start=$$$$(date +%s); \
 	timeout $$(QEMU_TIMEOUT) $$(QEMU) -M $$(QEMU_MACHINE_$(1)) -nographic -semihosting -kernel $$< </dev/null \
 	  > $$(FW_DIR_$(1))/run.log 2>&1; rc=$$$$?; end=$$$$(date +%s); \
@@ -155,8 +170,4 @@ float-error-report:
 	      (x in d) ? d[x] : "-", (x in f) ? f[x] : "-", (x in q) ? q[x] : "(not on target)", (x in t) ? t[x] : "-" } }' \
 	  build/qemu/report-double.txt build/qemu/report-float.txt build/qemu/cortex-m4f/run.log
 
-# make test runs both images (about 45 s from scratch, ~5 s of it emulation)
-# The Makefile expands test-extra's prerequisites before mk/*.mk is read,
-# so TEST_EXTRA += alone would not register the step: name it directly too.
-TEST_EXTRA += qemu-test
-test-extra: qemu-test
+# make test runs both images, each as a step of its own (qemu-test-<target>)

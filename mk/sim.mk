@@ -1,11 +1,10 @@
-# mk/sim.mk - trk-sim reproducibility check (part of `make test` via test-extra):
+# mk/sim.mk - trk-sim reproducibility check (a step of `make test`):
 # the same seed must give byte-identical CSV files with 1 and 2 OpenMP threads
 # (counter-based random streams keyed by (seed, run); reductions in run order).
 .PHONY: sim-repro
 TEST_EXTRA += sim-repro
-test-extra: sim-repro
-
-sim-repro: $(BUILD)/bin/trk-sim
+TEST_EXTRA_DEPS_sim-repro := $(BUILD)/bin/trk-sim
+sim-repro: $(TEST_EXTRA_DEPS_sim-repro)
 	@d=$$(mktemp -d) || exit 1; st=0; \
 	for t in 1 2; do \
 	  $(BUILD)/bin/trk-sim blanding-add-arl --runs 150 --max-scans 4000 --seed 5 --threads $$t \

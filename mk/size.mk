@@ -55,26 +55,26 @@ TARGET_riscv_ARCH := riscv
 
 define SIZE_template
 build/cross/$(1)/size-A.txt: build/cross/$(1)/libtrk.a
-	$$(call cross_tool,$(1),size) -A $$< > $$@.tmp && mv $$@.tmp $$@
+	$$(Q)$$(call cross_tool,$(1),size) -A $$< > $$@.tmp && mv $$@.tmp $$@
 build/cross/$(1)/sizeof-default.txt: tools/scripts/sizeof_probe.c $$(wildcard include/trk/*.h) mk/size.mk
 	@mkdir -p $$(@D)
-	$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) -c $$< -o $$(@:.txt=.o)
-	$$(call cross_tool,$(1),nm) -S $$(@:.txt=.o) > $$@
+	$$(Q)$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) -c $$< -o $$(@:.txt=.o)
+	$$(Q)$$(call cross_tool,$(1),nm) -S $$(@:.txt=.o) > $$@
 build/cross/$(1)/sizeof-small.txt: tools/scripts/sizeof_probe.c $$(wildcard include/trk/*.h) mk/size.mk
 	@mkdir -p $$(@D)
-	$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) $$(SIZE_SMALL_DEFS) -c $$< -o $$(@:.txt=.o)
-	$$(call cross_tool,$(1),nm) -S $$(@:.txt=.o) > $$@
+	$$(Q)$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) $$(SIZE_SMALL_DEFS) -c $$< -o $$(@:.txt=.o)
+	$$(Q)$$(call cross_tool,$(1),nm) -S $$(@:.txt=.o) > $$@
 ifeq ($$(TARGET_$(1)_ARCH),arm)
 build/cross/$(1)/probe.elf: build/cross/$(1)/libtrk.a tools/scripts/probe_main.c
-	$$(TARGET_$(1)_CC) $$(TARGET_$(1)_CFLAGS) --specs=nano.specs --specs=nosys.specs tools/scripts/probe_main.c \
+	$$(Q)$$(TARGET_$(1)_CC) $$(TARGET_$(1)_CFLAGS) --specs=nano.specs --specs=nosys.specs tools/scripts/probe_main.c \
 	  -Wl,--whole-archive $$< -Wl,--no-whole-archive -lm -o $$@
 build/cross/$(1)/fw-footprint.txt: build/cross/$(1)/libtrk.a tools/scripts/fw_footprint.c tools/scripts/map_sum.awk
-	$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) -ffunction-sections --specs=nano.specs --specs=nosys.specs \
+	$$(Q)$$(TARGET_$(1)_CC) $$(SIZE_PROBE_FLAGS) $$(TARGET_$(1)_CFLAGS) -ffunction-sections --specs=nano.specs --specs=nosys.specs \
 	  -Wl,--gc-sections -Wl,-Map=build/cross/$(1)/fw-footprint.map tools/scripts/fw_footprint.c $$< -lm \
 	  -o build/cross/$(1)/fw-footprint.elf
-	awk -f tools/scripts/map_sum.awk build/cross/$(1)/fw-footprint.map > $$@
+	$$(Q)awk -f tools/scripts/map_sum.awk build/cross/$(1)/fw-footprint.map > $$@
 build/cross/$(1)/stack-extern.txt: build/cross/$(1)/probe.elf tools/scripts/stack_elf.awk
-	$$(call cross_tool,$(1),objdump) -d --no-show-raw-insn $$< | awk -f tools/scripts/stack_elf.awk > $$@.tmp && mv $$@.tmp $$@
+	$$(Q)$$(call cross_tool,$(1),objdump) -d --no-show-raw-insn $$< | awk -f tools/scripts/stack_elf.awk > $$@.tmp && mv $$@.tmp $$@
 else
 build/cross/$(1)/stack-extern.txt: build/cross/$(1)/libtrk.a
 	: > $$@
@@ -82,7 +82,7 @@ build/cross/$(1)/fw-footprint.txt: build/cross/$(1)/libtrk.a
 	: > $$@
 endif
 build/cross/$(1)/stack.txt: build/cross/$(1)/libtrk.a build/cross/$(1)/stack-extern.txt tools/scripts/stack_ci.awk
-	awk -v EXTERN=build/cross/$(1)/stack-extern.txt -v ROOTS=public -f tools/scripts/stack_ci.awk \
+	$$(Q)awk -v EXTERN=build/cross/$(1)/stack-extern.txt -v ROOTS=public -f tools/scripts/stack_ci.awk \
 	  $$(patsubst %.o,%.ci,$$(CROSS_OBJ_$(1))) | sort > $$@.tmp && mv $$@.tmp $$@
 size-files-$(1): build/cross/$(1)/size-A.txt build/cross/$(1)/sizeof-default.txt \
   build/cross/$(1)/sizeof-small.txt build/cross/$(1)/stack.txt build/cross/$(1)/fw-footprint.txt
@@ -94,7 +94,9 @@ size-report: cross
 	@$(MAKE) --no-print-directory $(addprefix size-files-,$(CROSS_TARGETS)) >/dev/null
 	@sh tools/scripts/size_report.sh build/cross $(CROSS_TARGETS)
 
-size-check: cross-cortex-m4f size-files-cortex-m4f
+TEST_EXTRA += size-check
+TEST_EXTRA_DEPS_size-check := build/cross/cortex-m4f/libtrk.a size-files-cortex-m4f
+size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	@awk '/^\.s?(data|bss)/ && $$2 > 0 { print "size-check: static data in libtrk: " $$0; bad = 1 } END { exit bad }' \
 	  build/cross/cortex-m4f/size-A.txt
 	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) ' \
@@ -114,8 +116,3 @@ size-check: cross-cortex-m4f size-files-cortex-m4f
 	    if (fw > tlim) { print "size-check: FAILED .text"; bad = 1 } \
 	    exit bad }' build/cross/cortex-m4f/stack.txt build/cross/cortex-m4f/sizeof-default.txt \
 	  build/cross/cortex-m4f/fw-footprint.txt
-
-# The Makefile expands test-extra's prerequisites before mk/*.mk is read,
-# so TEST_EXTRA += alone would not register the step: name it directly too.
-TEST_EXTRA += size-check
-test-extra: size-check

@@ -16,7 +16,8 @@ TABLEGEN := $(BUILD)/bin/trk-tablegen
 define AMP_TABLE_rule
 $(TABLES_DIR)/amp_$(1)_snr$(TABLE_SNR_DB)_pfa$(3).tbl: $(TABLEGEN)
 	@mkdir -p $$(@D)
-	@$(TABLEGEN) amp $(2) --snr-db $(TABLE_SNR_DB) --pfa $(3) -o $$@ || { rm -f $$@; exit 1; }
+	$$(call say,GEN,$$@)
+	@$(TABLEGEN) amp $(2) --snr-db $(TABLE_SNR_DB) --pfa $(3) -o $$@ $$(if $$(filter 1,$$(V)),,> /dev/null) || { rm -f $$@; exit 1; }
 	@$(TABLEGEN) info $$@ > /dev/null || { echo "$$@: rejected by trk-tablegen info"; rm -f $$@; exit 1; }
 AMP_TABLES += $(TABLES_DIR)/amp_$(1)_snr$(TABLE_SNR_DB)_pfa$(3).tbl
 endef
@@ -29,8 +30,11 @@ $(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,rayleigh,--clutter raylei
 tables: $(AMP_TABLES)
 	@echo "tables: $(words $(AMP_TABLES)) amplitude tables in $(TABLES_DIR)"
 
+# (rewritten only when its content changes: a relinked trk-tablegen does not
+# recompile the example)
 $(GEN)/amp_table_data.h: $(TABLEGEN)
 	@mkdir -p $(@D)
-	$(TABLEGEN) amp --clutter k --nu 1 --snr-db 15 --pfa 1e-3 --format c --name amp_table -o $@.tmp > /dev/null
-	mv $@.tmp $@
+	$(call say,GEN,$@)
+	$(Q)$(TABLEGEN) amp --clutter k --nu 1 --snr-db 15 --pfa 1e-3 --format c --name amp_table -o $@.tmp > /dev/null
+	$(Q)if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
 $(BUILD)/obj/examples/amp_table_firmware.o: $(GEN)/amp_table_data.h

@@ -1,14 +1,12 @@
 # tests/sim_papers.mk - reproducibility of trk-sim's paper experiments and demo
-# (part of `make test` via test-extra): the same seed must give byte-identical
+# (a step of `make test`): the same seed must give byte-identical
 # CSV files with 1 and 2 OpenMP threads (counter-based random streams keyed by
 # (seed, run); per-run results reduced in run order; the q2 sampler of the
 # MRE predictions merges its work in a fixed order). Small sizes: seconds.
 .PHONY: sim-papers-repro
 TEST_EXTRA += sim-papers-repro
-test-extra: sim-papers-repro
-
-SIM_REPRO_AMP := $(BUILD)/tables/amp_k1_snr15_pfa1e-2.tbl
-sim-papers-repro: $(BUILD)/bin/trk-sim $(SIM_REPRO_AMP)
+TEST_EXTRA_DEPS_sim-papers-repro := $(BUILD)/bin/trk-sim $(BUILD)/tables/amp_k1_snr15_pfa1e-2.tbl
+sim-papers-repro: $(TEST_EXTRA_DEPS_sim-papers-repro)
 	@d=$$(mktemp -d) || exit 1; st=0; s=$(BUILD)/bin/trk-sim; \
 	for t in 1 2; do \
 	  $$s brekke-trackloss --runs 40 --scans 60 --cell-m2 0.25 --nu 1 --snr-db 10 --pfa 1e-2,1e-1 \

@@ -544,5 +544,5 @@ int main(void)
         cmocka_unit_test(test_sample_log_lr),
         cmocka_unit_test(test_kdist_closed_forms),
     };
-    return cmocka_run_group_tests_name("amplitude", tests, NULL, NULL);
+    return trk_run_tests("amplitude", tests, NULL, NULL);
 }

@@ -56,5 +56,5 @@ int main(void)
         cmocka_unit_test(test_forms),
         cmocka_unit_test(test_stop_signals),
     };
-    return cmocka_run_group_tests_name("cli", tests, NULL, NULL);
+    return trk_run_tests("cli", tests, NULL, NULL);
 }

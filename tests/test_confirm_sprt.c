@@ -221,5 +221,5 @@ int main(void)
         cmocka_unit_test(test_shared_model),
         cmocka_unit_test(test_long_runs),
     };
-    return cmocka_run_group_tests_name("confirm_sprt", tests, NULL, NULL);
+    return trk_run_tests("confirm_sprt", tests, NULL, NULL);
 }

@@ -205,5 +205,5 @@ int main(void)
         cmocka_unit_test(test_crlb_below_mre),
         cmocka_unit_test(test_crlb_bad_input),
     };
-    return cmocka_run_group_tests_name("crlb", tests, NULL, NULL);
+    return trk_run_tests("crlb", tests, NULL, NULL);
 }

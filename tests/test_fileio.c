@@ -57,5 +57,5 @@ int main(void)
         cmocka_unit_test(test_sizes),
         cmocka_unit_test(test_missing),
     };
-    return cmocka_run_group_tests_name("fileio", tests, NULL, NULL);
+    return trk_run_tests("fileio", tests, NULL, NULL);
 }

@@ -89,5 +89,5 @@ int main(void)
         cmocka_unit_test(test_chi2),
         cmocka_unit_test(test_volume_and_d2),
     };
-    return cmocka_run_group_tests_name("gate", tests, NULL, NULL);
+    return trk_run_tests("gate", tests, NULL, NULL);
 }

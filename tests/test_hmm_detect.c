@@ -208,5 +208,5 @@ int main(void)
         cmocka_unit_test(test_accuracy_near_one),
         cmocka_unit_test(test_bad_params),
     };
-    return cmocka_run_group_tests_name("hmm_detect", tests, NULL, NULL);
+    return trk_run_tests("hmm_detect", tests, NULL, NULL);
 }

@@ -118,5 +118,5 @@ int main(void)
         cmocka_unit_test(test_predict_update_cv),
         cmocka_unit_test(test_bad_input),
     };
-    return cmocka_run_group_tests_name("kalman", tests, NULL, NULL);
+    return trk_run_tests("kalman", tests, NULL, NULL);
 }

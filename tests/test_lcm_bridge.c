@@ -708,5 +708,5 @@ int main(void)
         cmocka_unit_test(test_replay_damaged_log),
         cmocka_unit_test(test_log_compat_with_liblcm),
     };
-    return cmocka_run_group_tests_name("lcm_bridge", tests, setup, teardown);
+    return trk_run_tests("lcm_bridge", tests, setup, teardown);
 }

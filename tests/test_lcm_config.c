@@ -406,5 +406,5 @@ int main(void)
         cmocka_unit_test(test_number_parsers), cmocka_unit_test(test_write_read_back),
         cmocka_unit_test(test_check),         cmocka_unit_test(test_help),
     };
-    return cmocka_run_group_tests_name("lcm_config", tests, NULL, NULL);
+    return trk_run_tests("lcm_config", tests, NULL, NULL);
 }

@@ -377,5 +377,5 @@ int main(void)
         cmocka_unit_test(test_reasons),
         cmocka_unit_test(test_tracks_to_msg),
     };
-    return cmocka_run_group_tests_name("lcm_copy", tests, NULL, NULL);
+    return trk_run_tests("lcm_copy", tests, NULL, NULL);
 }

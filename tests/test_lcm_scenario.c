@@ -293,5 +293,5 @@ int main(void)
         cmocka_unit_test(test_rayleigh_amplitudes),  cmocka_unit_test(test_k_amplitudes),
         cmocka_unit_test(test_bad_params),
     };
-    return cmocka_run_group_tests_name("lcm_scenario", tests, NULL, NULL);
+    return trk_run_tests("lcm_scenario", tests, NULL, NULL);
 }

@@ -67,5 +67,5 @@ int main(void)
         cmocka_unit_test(test_chol_solve),
         cmocka_unit_test(test_not_spd),
     };
-    return cmocka_run_group_tests_name("linalg", tests, NULL, NULL);
+    return trk_run_tests("linalg", tests, NULL, NULL);
 }

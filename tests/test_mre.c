@@ -291,5 +291,5 @@ int main(void)
         cmocka_unit_test(test_toc),
         cmocka_unit_test(test_mre_bad_input),
     };
-    return cmocka_run_group_tests_name("mre", tests, NULL, NULL);
+    return trk_run_tests("mre", tests, NULL, NULL);
 }

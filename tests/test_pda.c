@@ -168,5 +168,5 @@ int main(void)
         cmocka_unit_test(test_nonparametric_and_include_all),
         cmocka_unit_test(test_bad_input),
     };
-    return cmocka_run_group_tests_name("pda", tests, NULL, NULL);
+    return trk_run_tests("pda", tests, NULL, NULL);
 }

@@ -704,5 +704,5 @@ int main(void)
         cmocka_unit_test(test_is_bit_identical_threads),
         cmocka_unit_test(test_is_bad_input),
     };
-    return cmocka_run_group_tests_name("q2", tests, NULL, NULL);
+    return trk_run_tests("q2", tests, NULL, NULL);
 }

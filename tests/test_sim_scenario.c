@@ -185,5 +185,5 @@ int main(void)
         cmocka_unit_test(test_clutter_around), cmocka_unit_test(test_end_and_fluct),
         cmocka_unit_test(test_mc_stats),
     };
-    return cmocka_run_group_tests_name("sim_scenario", tests, NULL, NULL);
+    return trk_run_tests("sim_scenario", tests, NULL, NULL);
 }

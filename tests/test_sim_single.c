@@ -241,5 +241,5 @@ int main(void)
         cmocka_unit_test(test_willett_rmse_above_crlb),
         cmocka_unit_test(test_kennedy_null_size),
     };
-    return cmocka_run_group_tests_name("sim_single", tests, NULL, NULL);
+    return trk_run_tests("sim_single", tests, NULL, NULL);
 }

@@ -143,5 +143,5 @@ int main(void)
         cmocka_unit_test(test_f_bad),
         cmocka_unit_test(test_chi2_large_x),
     };
-    return cmocka_run_group_tests_name("special_f", tests, NULL, NULL);
+    return trk_run_tests("special_f", tests, NULL, NULL);
 }

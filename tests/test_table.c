@@ -505,5 +505,5 @@ int main(void)
         cmocka_unit_test(test_writer_refuses),
         cmocka_unit_test(test_file),
     };
-    return cmocka_run_group_tests_name("table", tests, NULL, NULL);
+    return trk_run_tests("table", tests, NULL, NULL);
 }

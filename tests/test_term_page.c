@@ -240,5 +240,5 @@ int main(void)
         cmocka_unit_test(test_shared_model),
         cmocka_unit_test(test_long_runs),
     };
-    return cmocka_run_group_tests_name("term_page", tests, NULL, NULL);
+    return trk_run_tests("term_page", tests, NULL, NULL);
 }

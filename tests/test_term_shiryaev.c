@@ -154,5 +154,5 @@ int main(void)
         cmocka_unit_test(test_long_runs),
         cmocka_unit_test(test_bad_input),
     };
-    return cmocka_run_group_tests_name("term_shiryaev", tests, NULL, NULL);
+    return trk_run_tests("term_shiryaev", tests, NULL, NULL);
 }

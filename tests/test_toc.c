@@ -152,5 +152,5 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_toc_tables),
     };
-    return cmocka_run_group_tests_name("toc", tests, NULL, NULL);
+    return trk_run_tests("toc", tests, NULL, NULL);
 }

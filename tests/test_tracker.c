@@ -737,5 +737,5 @@ int main(void)
         cmocka_unit_test(test_merge_duplicates),
         cmocka_unit_test(test_init_exclusion_and_visibility_reject),
     };
-    return cmocka_run_group_tests_name("tracker", tests, NULL, NULL);
+    return trk_run_tests("tracker", tests, NULL, NULL);
 }

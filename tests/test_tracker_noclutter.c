@@ -111,5 +111,5 @@ int main(void)
         cmocka_unit_test(test_clutter_unsupported),
         cmocka_unit_test(test_other_methods_run),
     };
-    return cmocka_run_group_tests_name("tracker_noclutter", tests, NULL, NULL);
+    return trk_run_tests("tracker_noclutter", tests, NULL, NULL);
 }

@@ -6,6 +6,7 @@
 NOCLUTTER_OBJS := $(BUILD)/obj/noclutter/src/tracker.o $(BUILD)/obj/noclutter/src/track_tests.o
 $(BUILD)/obj/noclutter/src/%.o: src/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_ALL) $(LIBWARN) -DTRK_WITH_CLUTTER_TESTS=0 -Isrc -c $< -o $@
+	$(call say,CC,$< (TRK_WITH_CLUTTER_TESTS=0))
+	$(Q)$(CC) $(CFLAGS_ALL) $(LIBWARN) -DTRK_WITH_CLUTTER_TESTS=0 -Isrc -c $< -o $@
 $(BUILD)/tests/test_tracker_noclutter: $(NOCLUTTER_OBJS)
 TEST_EXTRA_OBJS_test_tracker_noclutter := $(NOCLUTTER_OBJS)

@@ -1,7 +1,8 @@
-/* test_vectors.c - the reference vectors of ../shared/vectors through the
- * same parser and checker as trk-vectors, and proof that the checks can fail:
- * a wrong value, a missing input, an unknown kind and malformed files. */
-#include "fileio.h"
+/* test_vectors.c - the parser, checker and kind registry that trk-vectors
+ * runs the reference vectors with, and proof that the checks can fail: a
+ * wrong value, a missing input, an unknown kind and malformed files. The
+ * shared vector files themselves run once per configuration, through the
+ * trk-vectors program (`make check`, step "vectors"). */
 #include "trk_test.h"
 #include "trk/types.h"
 #include "vec.h"
@@ -10,7 +11,7 @@ static struct vec_case cs;
 static struct vec_out out;
 
 struct tally {
-    long passed, failed, unimpl, not_applicable, skipped;
+    long passed, failed, unimpl, not_applicable;
 };
 
 /* Run every case of a text; returns -1 on a malformed text. */
@@ -23,11 +24,6 @@ static int run_text(const char *text, size_t len, struct tally *t, int verbose)
         const struct vec_kind *k = vec_kind_find(cs.kind);
         if (!k) {
             t->unimpl++;
-            continue;
-        }
-        const char *skip = getenv("TRK_VECTORS_SKIP"); /* set by `make check` under sanitizers */
-        if (skip && vec_kind_listed(skip, cs.kind)) {
-            t->skipped++;
             continue;
         }
         vec_out_reset(&out);
@@ -52,29 +48,27 @@ static int run_text(const char *text, size_t len, struct tally *t, int verbose)
     return r < 0 ? -1 : 0;
 }
 
-/* Every implemented kind in every shared file passes. */
-static void test_shared_vectors(void **state)
+/* The kind registry: every kind has a name, a function and a speed; the Monte
+ * Carlo q2 kinds are the slow ones (`trk-vectors --skip-slow`, `make check`),
+ * the fast ones include the library's kernels. */
+static void test_registry_speed(void **state)
 {
     (void)state;
-    static const char *files[] = {"pda.vec", "pdafai.vec", "amplitude.vec", "tracktests.vec", "q2.vec"};
-    struct tally t = {0, 0, 0, 0, 0};
-    int found = 0;
-    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-        char path[512];
-        snprintf(path, sizeof path, "%s/%s", trk_test_vectors_dir(), files[i]);
-        size_t len;
-        char *buf = fileio_read(path, &len);
-        if (!buf) continue;
-        found++;
-        assert_int_equal(run_text(buf, len, &t, 1), 0);
-        free(buf);
+    size_t n;
+    const struct vec_kind *k = vec_kinds(&n);
+    assert_true(n >= 10);
+    size_t slow = 0;
+    for (size_t i = 0; i < n; i++) {
+        assert_non_null(k[i].name);
+        assert_non_null(k[i].fn);
+        assert_true(k[i].speed == VEC_FAST || k[i].speed == VEC_SLOW);
+        slow += k[i].speed == VEC_SLOW;
     }
-    if (!found) skip(); /* shared/ not present next to this checkout */
-    print_message("vectors: %ld passed, %ld failed, %ld unimplemented, %ld not applicable to this build, "
-                  "%ld skipped (TRK_VECTORS_SKIP)\n",
-                  t.passed, t.failed, t.unimpl, t.not_applicable, t.skipped);
-    assert_int_equal(t.failed, 0);
-    assert_true(t.passed >= (TRK_MAX_DETECTIONS >= 256 ? 69 : 30));
+    assert_int_equal(slow, 2);
+    assert_int_equal(vec_kind_find("q2_pdaf")->speed, VEC_SLOW);
+    assert_int_equal(vec_kind_find("q2_pdafai")->speed, VEC_SLOW);
+    assert_int_equal(vec_kind_find("pda_update")->speed, VEC_FAST);
+    assert_int_equal(vec_kind_find("mre_steady")->speed, VEC_FAST);
 }
 
 static const char good_case[] =
@@ -91,7 +85,7 @@ static const char good_case[] =
 static void test_checks_can_fail(void **state)
 {
     (void)state;
-    struct tally t = {0, 0, 0, 0, 0};
+    struct tally t = {0, 0, 0, 0};
     assert_int_equal(run_text(good_case, strlen(good_case), &t, 0), 0);
     assert_int_equal(t.passed, 1);
     assert_int_equal(t.failed, 0);
@@ -186,10 +180,10 @@ static void test_malformed(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_shared_vectors),
+        cmocka_unit_test(test_registry_speed),
         cmocka_unit_test(test_checks_can_fail),
         cmocka_unit_test(test_tolerance_rules),
         cmocka_unit_test(test_malformed),
     };
-    return cmocka_run_group_tests_name("vectors", tests, NULL, NULL);
+    return trk_run_tests("vectors", tests, NULL, NULL);
 }

@@ -192,5 +192,5 @@ int main(void)
         cmocka_unit_test(test_decisions),
         cmocka_unit_test(test_bad_input),
     };
-    return cmocka_run_group_tests_name("visibility", tests, NULL, NULL);
+    return trk_run_tests("visibility", tests, NULL, NULL);
 }

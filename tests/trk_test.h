@@ -50,11 +50,18 @@
 #endif
 #define TRK_TOL(dbl, flt) (TRK_TEST_IS_FLOAT ? (flt) : (dbl))
 
-/* Directory of ../shared/vectors (set by `make check` via TRK_VECTORS_DIR). */
-static inline const char *trk_test_vectors_dir(void)
+/* Every test program's main ends with
+ *     return trk_run_tests("name", tests, setup, teardown);
+ * which runs the group under cmocka. With TRK_TEST_CASE set in the
+ * environment (`make check T=name CASE=pattern`), only the cases whose name
+ * matches the pattern run (cmocka_set_test_filter: `*` and `?` wildcards);
+ * the runner (tests/run_step.sh) fails the step when the pattern matches none. */
+static inline void trk_test_filter_from_env(void)
 {
-    const char *d = getenv("TRK_VECTORS_DIR");
-    return d ? d : "../shared/vectors";
+    const char *pattern = getenv("TRK_TEST_CASE");
+    if (pattern && *pattern) cmocka_set_test_filter(pattern);
 }
+#define trk_run_tests(group_name, group_tests, group_setup, group_teardown) \
+    (trk_test_filter_from_env(), cmocka_run_group_tests_name(group_name, group_tests, group_setup, group_teardown))
 
 #endif

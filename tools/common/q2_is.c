@@ -1,9 +1,9 @@
 /* q2_is.c - importance-sampling estimator of q2 (see q2_is.h for the method,
  * the random-number layout and the determinism argument).
  *
- * Built twice: serially into libtrk_tools.a, and with -fopenmp into
- * $(BUILD)/obj/omp/tools/common/q2_is.o (mk/q2.mk). OpenMP pragmas go through
- * Q2_OMP() so that the serial build sees none (no -Wunknown-pragmas). */
+ * Built once, with -fopenmp, into libtrk_tools.a (mk/q2.mk). OpenMP pragmas
+ * go through Q2_OMP() so that a build without OpenMP (the firmware image's
+ * compiler, a user's) sees none (no -Wunknown-pragmas) and runs serially. */
 #define _POSIX_C_SOURCE 199309L
 #include "q2_is.h"
 

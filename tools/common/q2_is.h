@@ -41,10 +41,8 @@
  * afterwards (never an OpenMP floating-point reduction). The result is
  * bit-identical for any thread count and schedule.
  *
- * Threads: this file compiles to a serial object in libtrk_tools.a and,
- * with -fopenmp (mk/q2.mk: $(BUILD)/obj/omp/tools/common/q2_is.o), to a
- * parallel one that tools and tests needing threads link before the archive
- * (see mk/q2.mk). Both give the same bits.
+ * Threads: libtrk_tools.a holds the OpenMP build (mk/q2.mk); compiled
+ * without -fopenmp the same source runs serially. Both give the same bits.
  */
 #ifndef TRK_Q2_IS_H
 #define TRK_Q2_IS_H

@@ -1,10 +1,11 @@
 /* trk-vectors - check the library against reference vectors (FORMAT.md).
  *
- *   trk-vectors [--strict] [--emit] [--report-error] [--quiet] FILE...
+ *   trk-vectors [--strict] [--emit] [--report-error] [--quiet] [--skip-slow] [--skip K,...] FILE...
  *
  * Prints "FAIL <file> <id> <name>[<index>] got want" per failing case,
  * "UNIMPLEMENTED <file> <id> <kind>" per case of a kind this build does not
- * know, and finally "vectors: P passed, F failed, U unimplemented".
+ * know, the names of unimplemented and skipped kinds, and finally
+ * "vectors: P passed, F failed, U unimplemented".
  * Exit status 1 when F > 0 or P = 0, or U > 0 under --strict; 2 on usage or
  * unreadable/malformed files (a malformed file also counts as a failure).
  * --emit writes every case back with its out lines replaced by the computed
@@ -59,11 +60,42 @@ static void emit_case(const struct vec_case *c, const struct vec_out *o, int ran
     printf("end\n\n");
 }
 
+/* The kinds named in the summary (unimplemented, skipped as slow): each name
+ * once, copied (a case's kind string is overwritten by the next case); past
+ * KIND_NAMES_CAP names the cases are still counted, the names cut with "...". */
+#define KIND_NAMES_CAP 32
+struct kind_names {
+    char name[KIND_NAMES_CAP][VEC_MAX_NAME];
+    size_t n;
+    int more;
+};
+
+static void note_kind(struct kind_names *k, const char *name)
+{
+    for (size_t i = 0; i < k->n; i++)
+        if (strcmp(k->name[i], name) == 0) return;
+    if (k->n == KIND_NAMES_CAP) {
+        k->more = 1;
+        return;
+    }
+    snprintf(k->name[k->n], sizeof k->name[k->n], "%s", name);
+    k->n++;
+}
+
+static void print_kinds(const char *what, long count, const struct kind_names *k)
+{
+    printf("vectors: %ld cases %s:", count, what);
+    for (size_t i = 0; i < k->n; i++) printf(" %s", k->name[i]);
+    printf("%s\n", k->more ? " ..." : "");
+}
+
 int main(int argc, char **argv)
 {
     int strict = 0, emit = 0, report = 0, quiet = 0, nfiles = 0, bad_file = 0;
     const char *skip = NULL; /* comma-separated kinds not to run */
-    long skipped = 0;
+    int skip_slow = 0;       /* --skip-slow: kinds registered VEC_SLOW */
+    long skipped = 0, skipped_slow = 0;
+    static struct kind_names unimpl_kinds, slow_kinds;
     long passed = 0, failed = 0, unimpl = 0, not_applicable = 0;
     static struct kind_err errs[128];
     size_t n_errs = 0;
@@ -77,19 +109,22 @@ int main(int argc, char **argv)
         else if (strcmp(argv[a], "--emit") == 0) emit = 1;
         else if (strcmp(argv[a], "--report-error") == 0) report = 1;
         else if (strcmp(argv[a], "--quiet") == 0 || strcmp(argv[a], "-q") == 0) quiet = 1;
+        else if (strcmp(argv[a], "--skip-slow") == 0) skip_slow = 1;
         else if (strcmp(argv[a], "--skip") == 0 && a + 1 < argc) {
             skip = argv[++a];
             argv[a] = (char *)"-"; /* not a file */
         }
         else if (strcmp(argv[a], "--help") == 0 || strcmp(argv[a], "-h") == 0) {
-            printf("usage: trk-vectors [--strict] [--emit] [--report-error] [--quiet] FILE...\n"
+            printf("usage: trk-vectors [--strict] [--emit] [--report-error] [--quiet] [--skip-slow] FILE...\n"
                    "  checks each case of each FILE against libtrk (%s build)\n"
                    "  --strict        exit non-zero also when a case's kind is not implemented\n"
                    "  --emit          write the cases back with computed out values instead\n"
                    "  --report-error  per kind: max abs/rel error and max fraction of tolerance used\n"
                    "  --quiet         only the summary line and failures\n"
-                   "  --skip K1,K2    do not run cases of these kinds (counted as skipped;\n"
-                   "                  `make check` skips the Monte Carlo q2 kinds under sanitizers)\n",
+                   "  --skip-slow     do not run cases of the kinds registered as slow (Monte Carlo,\n"
+                   "                  seconds per case; counted and named; `make check` passes it,\n"
+                   "                  `make test` runs them in one configuration)\n"
+                   "  --skip K1,K2    do not run cases of these kinds (counted as skipped)\n",
                    TRK_REAL_IS_FLOAT ? "float" : "double");
             return 0;
         } else if (argv[a][0] == '-') {
@@ -121,10 +156,16 @@ int main(int argc, char **argv)
                 skipped++;
                 continue;
             }
+            if (k && skip_slow && k->speed == VEC_SLOW) {
+                skipped_slow++;
+                note_kind(&slow_kinds, k->name);
+                continue;
+            }
             if (!k) {
                 if (emit) emit_case(&cs, &out, 0);
                 else if (!quiet || strict) printf("UNIMPLEMENTED %s %s %s\n", argv[a], cs.id, cs.kind);
                 unimpl++;
+                note_kind(&unimpl_kinds, cs.kind);
                 continue;
             }
             int rc = k->fn(&cs, &out);
@@ -180,6 +221,8 @@ int main(int argc, char **argv)
         printf("vectors: %ld cases not applicable to this build (float resolution or capacity)\n",
                not_applicable);
     if (skipped) printf("vectors: %ld cases skipped (--skip %s)\n", skipped, skip);
+    if (skipped_slow) print_kinds("of slow kinds skipped (--skip-slow)", skipped_slow, &slow_kinds);
+    if (unimpl) print_kinds("of kinds not implemented yet", unimpl, &unimpl_kinds);
     printf("vectors: %ld passed, %ld failed, %ld unimplemented\n", passed, failed, unimpl);
     if (bad_file) return 2;
     if (failed > 0 || passed == 0 || (strict && unimpl > 0)) return 1;

@@ -46,7 +46,7 @@ static int setup(const struct vec_case *c, struct vec_out *o, struct amp_direct 
     return 0;
 }
 
-TRK_VEC_KIND(amp_threshold, 0, 1e-6)
+TRK_VEC_KIND(amp_threshold, 0, 1e-6, VEC_FAST)
 {
     struct amp_direct d;
     if (setup(c, o, &d)) return -1;
@@ -54,7 +54,7 @@ TRK_VEC_KIND(amp_threshold, 0, 1e-6)
     return 0;
 }
 
-TRK_VEC_KIND(amp_loglr, 1e-5, 2e-6)
+TRK_VEC_KIND(amp_loglr, 1e-5, 2e-6, VEC_FAST)
 {
     struct amp_direct d;
     const double *a;
@@ -74,7 +74,7 @@ TRK_VEC_KIND(amp_loglr, 1e-5, 2e-6)
     return 0;
 }
 
-TRK_VEC_KIND(amp_inv_sf, 0, 1e-6)
+TRK_VEC_KIND(amp_inv_sf, 0, 1e-6, VEC_FAST)
 {
     struct amp_direct d;
     const double *x;
@@ -90,7 +90,7 @@ TRK_VEC_KIND(amp_inv_sf, 0, 1e-6)
     return 0;
 }
 
-TRK_VEC_KIND(amp_kennedy_loglr, 0, 1e-6)
+TRK_VEC_KIND(amp_kennedy_loglr, 0, 1e-6, VEC_FAST)
 {
     const double *a;
     size_t n;

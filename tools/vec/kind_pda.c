@@ -132,11 +132,11 @@ static int single(const struct vec_case *c, struct vec_out *o, int with_lr)
     return step(o, &s, (size_t)m, z, lr, 1);
 }
 
-TRK_VEC_KIND(pda_update, 1e-6, 2e-4) { return single(c, o, 0); }
+TRK_VEC_KIND(pda_update, 1e-6, 2e-4, VEC_FAST) { return single(c, o, 0); }
 
-TRK_VEC_KIND(pdafai_update, 1e-6, 2e-4) { return single(c, o, 1); }
+TRK_VEC_KIND(pdafai_update, 1e-6, 2e-4, VEC_FAST) { return single(c, o, 1); }
 
-TRK_VEC_KIND(pda_track, 1e-6, 2e-4)
+TRK_VEC_KIND(pda_track, 1e-6, 2e-4, VEC_FAST)
 {
     static struct pda_setup s;
     long n;

@@ -144,7 +144,7 @@ static int hmm_outs(struct vec_out *o, size_t n, struct hmm_outs *h)
 
 /* page_hmm: float error of c over a run between resets is below
  * ~1e-6 * sum|s|; measured max abs error 1.5e-6 (tolerance use 0.017). */
-TRK_VEC_KIND(page_hmm, 1e-6, 2e-5)
+TRK_VEC_KIND(page_hmm, 1e-6, 2e-5, VEC_FAST)
 {
     static struct hmm_case hc;
     double h;
@@ -185,7 +185,7 @@ TRK_VEC_KIND(page_hmm, 1e-6, 2e-5)
 
 /* shiryaev_hmm: g accumulates over the whole run (|g| up to a few hundred),
  * error ~ n * 6e-8 * max|g| in float; measured tolerance use 0.037. */
-TRK_VEC_KIND(shiryaev_hmm, 1e-6, 2e-5)
+TRK_VEC_KIND(shiryaev_hmm, 1e-6, 2e-5, VEC_FAST)
 {
     static struct hmm_case hc;
     double h, beta0, rho;
@@ -232,7 +232,7 @@ TRK_VEC_KIND(shiryaev_hmm, 1e-6, 2e-5)
 
 /* sprt: llr is a plain sum of ~40 float increments; measured tolerance use
  * 0.011. */
-TRK_VEC_KIND(sprt, 1e-6, 2e-5)
+TRK_VEC_KIND(sprt, 1e-6, 2e-5, VEC_FAST)
 {
     double pd, alpha, beta;
     const double *pfa, *delta;
@@ -288,7 +288,7 @@ static int p_tie(struct vec_out *o, size_t t, double p, double alpha)
 
 /* clutter_chi2: float sums of <= 25 terms and the float chi-square cdf and
  * quantile; measured tolerance use 0.055. */
-TRK_VEC_KIND(clutter_chi2, 1e-6, 2e-5)
+TRK_VEC_KIND(clutter_chi2, 1e-6, 2e-5, VEC_FAST)
 {
     double alpha;
     long kmax;
@@ -324,7 +324,7 @@ TRK_VEC_KIND(clutter_chi2, 1e-6, 2e-5)
 
 /* clutter_amp_f: float sums of dB values, the float F tail and quantile;
  * measured tolerance use 0.013. */
-TRK_VEC_KIND(clutter_amp_f, 1e-6, 2e-5)
+TRK_VEC_KIND(clutter_amp_f, 1e-6, 2e-5, VEC_FAST)
 {
     static trk_real others[TRK_MAX_DETECTIONS];
     double a_min, alpha;

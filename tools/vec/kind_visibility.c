@@ -14,7 +14,7 @@
 #include "trk/visibility.h"
 #include "vec.h"
 
-TRK_VEC_KIND(visibility, 1e-5, 0)
+TRK_VEC_KIND(visibility, 1e-5, 0, VEC_FAST)
 {
     double pv0, pcv0, dstay, dbecome, omega, pd, pg, pcon;
     const double *rho, *ng, *gd, *la;

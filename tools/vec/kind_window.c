@@ -15,7 +15,7 @@ static int deltas(const struct vec_case *c, struct vec_out *o, const double **d,
     return 0;
 }
 
-TRK_VEC_KIND(kn, 0, 0)
+TRK_VEC_KIND(kn, 0, 0, VEC_FAST)
 {
     long k, n;
     const double *d;
@@ -38,7 +38,7 @@ TRK_VEC_KIND(kn, 0, 0)
     return 0;
 }
 
-TRK_VEC_KIND(mn, 0, 0)
+TRK_VEC_KIND(mn, 0, 0, VEC_FAST)
 {
     long m, n;
     const char *mode;

@@ -1,18 +1,18 @@
 /* registry.c - the table of vector kinds, collected by the build from every
- * TRK_VEC_KIND(name, float_abs, float_rel) line in tools/vec/kind_*.c. */
+ * TRK_VEC_KIND(name, float_abs, float_rel, speed) line in tools/vec/kind_*.c. */
 #include <string.h>
 
 #include "vec.h"
 
-#define TRK_VEC_KIND_ENTRY(kname, fabs_, frel_) TRK_VEC_KIND(kname, fabs_, frel_);
+#define TRK_VEC_KIND_ENTRY(kname, fabs_, frel_, speed_) TRK_VEC_KIND(kname, fabs_, frel_, speed_);
 #include "vec_kinds.inc"
 #undef TRK_VEC_KIND_ENTRY
 
 static const struct vec_kind kinds[] = {
-#define TRK_VEC_KIND_ENTRY(kname, fabs_, frel_) {#kname, trk_vec_kind_##kname, fabs_, frel_},
+#define TRK_VEC_KIND_ENTRY(kname, fabs_, frel_, speed_) {#kname, trk_vec_kind_##kname, fabs_, frel_, speed_},
 #include "vec_kinds.inc"
 #undef TRK_VEC_KIND_ENTRY
-    {NULL, NULL, 0, 0}};
+    {NULL, NULL, 0, 0, VEC_FAST}};
 
 const struct vec_kind *vec_kind_find(const char *name)
 {

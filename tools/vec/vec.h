@@ -3,11 +3,15 @@
  * the tests and the fuzz target.
  *
  * Adding a kind: create tools/vec/kind_<family>.c and write
- *     TRK_VEC_KIND(my_kind, float_abs, float_rel) { ... }
+ *     TRK_VEC_KIND(my_kind, float_abs, float_rel, VEC_FAST) { ... }
  * The build collects every TRK_VEC_KIND line into the registry
  * (build/gen/vec_kinds.inc); nothing else to edit. float_abs/float_rel are the
  * tolerances used by the float build (normwise: |got-want| <= abs + rel*max|want|
- * over the output array), justified in the kind's file.
+ * over the output array), justified in the kind's file. The last argument is
+ * VEC_FAST, or VEC_SLOW for a kind whose cases take seconds (Monte Carlo
+ * estimators): `trk-vectors --skip-slow` leaves those out (counted and named),
+ * `make check` passes it, `make test` runs them in one configuration, and the
+ * firmware image (mk/qemu.mk) neither registers nor embeds them.
  */
 #ifndef TRK_VEC_H
 #define TRK_VEC_H
@@ -116,12 +120,14 @@ const struct vec_entry *vec_out_find(const struct vec_out *o, const char *name);
 #define VEC_NOT_APPLICABLE 1
 #define VEC_FLOAT_UNRESOLVABLE VEC_NOT_APPLICABLE /* older name */
 typedef int (*vec_kind_fn)(const struct vec_case *c, struct vec_out *o);
+enum vec_kind_speed { VEC_FAST = 0, VEC_SLOW = 1 };
 struct vec_kind {
     const char *name;
     vec_kind_fn fn;
     double float_abs, float_rel;
+    enum vec_kind_speed speed;
 };
-#define TRK_VEC_KIND(kname, fabs_, frel_) \
+#define TRK_VEC_KIND(kname, fabs_, frel_, speed_) \
     int trk_vec_kind_##kname(const struct vec_case *c, struct vec_out *o)
 
 const struct vec_kind *vec_kind_find(const char *name);
