@@ -25,12 +25,24 @@
 #   V=1                  print the commands (default: one line per file and step)
 #   DEBUG=-g             debug-information flags
 #
-# Layout rules (nothing to edit when adding files):
-#   src/*.c           -> libtrk.a (firmware library: no heap, no stdio)
-#   src/host/*.c      -> libtrk_host.a (file helpers for host programs)
-#   tools/common/*.c, tools/vec/*.c -> libtrk_tools.a (shared by tools and tests)
-#   tools/trk-NAME/*.c -> bin/trk-NAME; tools/trk-NAME/tool.mk may set
+# Layers: each a folder and an archive; a layer calls only layers below it
+# (nothing to edit when adding a file to a layer):
+#   tools/trk-NAME/*.c -> bin/trk-NAME: mains and subcommands only, no tool links
+#                        another tool's objects; tools/trk-NAME/tool.mk may set
 #                        TOOL_CFLAGS_trk-NAME, TOOL_LDLIBS_trk-NAME, TOOL_DEPS_trk-NAME
+#   tools/lcm/*.c     -> libtrk_lcm.a   LCM message types (tools/lcm/types), copy,
+#                                       log files, the bridge core          (uses cli)
+#   tools/vec/*.c     -> libtrk_vec.a   reference-vector parser, checker, kinds (gen)
+#   tools/sim/*.c     -> libtrk_sim.a   scenarios, amplitude draws, single-target
+#                                       Monte Carlo, TOC curves, rng, stats (gen, cli)
+#   tools/gen/*.c     -> libtrk_gen.a   table generation, K quadrature, the q2
+#                                       importance sampler (OpenMP)          (cli)
+#   tools/cli/*.c     -> libtrk_cli.a   option parser, key=value files, tracker
+#                                       configuration, progress, plots, errors, files
+#   src/host/*.c      -> libtrk_host.a  table files: reader and writer (host, stdio)
+#   src/perf/*.c      -> libtrk_perf.a  design-time analysis: q2 lookup, MRE, TOC,
+#                                       ROC, CRLB (not in the firmware archive)
+#   src/*.c           -> libtrk.a       the firmware library: no heap, no stdio
 #   tests/test_*.c    -> one cmocka test program each; tests/*.mk may add rules
 #   examples/*.c      -> bin/example-NAME
 #   mk/*.mk           -> extra targets (cross, fuzz, size report, ...); a file
@@ -93,15 +105,20 @@ CMOCKA_CFLAGS := $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS := $(or $(shell pkg-config --libs cmocka 2>/dev/null),-lcmocka)
 
 LIB_SRC := $(wildcard src/*.c)
+PERF_SRC := $(wildcard src/perf/*.c)
 HOST_SRC := $(wildcard src/host/*.c)
-TOOLLIB_SRC := $(wildcard tools/common/*.c tools/vec/*.c)
+TOOL_LAYERS := lcm vec sim gen cli
 TOOL_DIRS := $(patsubst tools/%/,%,$(wildcard tools/trk-*/))
 TEST_SRC := $(wildcard tests/test_*.c)
 EXAMPLE_SRC := $(wildcard examples/*.c)
 
 LIB := $(BUILD)/libtrk.a
+PERFLIB := $(BUILD)/libtrk_perf.a
 HOSTLIB := $(BUILD)/libtrk_host.a
-TOOLLIB := $(BUILD)/libtrk_tools.a
+LAYERLIB = $(BUILD)/libtrk_$(1).a
+# every layer below the tools, in link order
+TOOL_LIBS := $(foreach l,$(TOOL_LAYERS),$(call LAYERLIB,$(l))) $(HOSTLIB) $(PERFLIB) $(LIB)
+TOOL_INC := $(addprefix -Itools/,$(TOOL_LAYERS)) -Isrc/host
 GEN := $(BUILD)/gen
 RESULTS := $(BUILD)/results
 obj = $(patsubst %.c,$(BUILD)/obj/%.o,$(1))
@@ -115,13 +132,15 @@ EXAMPLES := $(patsubst examples/%.c,$(BUILD)/bin/example-%,$(EXAMPLE_SRC))
   clean help FORCE
 .DEFAULT_GOAL := all
 # Objects are never deleted as intermediates (a test program does not relink
-# after every build because its object vanished).
-.SECONDARY:
+# after every build because its object vanished). Not `.SECONDARY:` without
+# prerequisites: that makes every target intermediate, and a missing object
+# of a new source file would then not be built into an up-to-date archive.
+.PRECIOUS: $(BUILD)/obj/%.o
 FORCE:
 
 all: lib tools examples
 	@:
-lib: $(LIB) $(HOSTLIB)
+lib: $(LIB) $(PERFLIB) $(HOSTLIB)
 tools: $(TOOLS)
 tests: $(TESTS)
 examples: $(EXAMPLES)
@@ -138,12 +157,12 @@ $(BUILD)/obj/src/%.o: src/%.c
 $(BUILD)/obj/tools/%.o: tools/%.c
 	@mkdir -p $(@D)
 	$(call say,CC,$<)
-	$(Q)$(CC) $(CFLAGS_ALL) -Itools/vec -Itools/common -I$(GEN) $(TOOL_CFLAGS_$(firstword $(subst /, ,$*))) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS_ALL) $(TOOL_INC) -I$(GEN) $(TOOL_CFLAGS_$(firstword $(subst /, ,$*))) -c $< -o $@
 
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(@D)
 	$(call say,CC,$<)
-	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itools/vec -Itools/common -Itests -I$(GEN) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) $(TOOL_INC) -Itests -I$(GEN) -c $< -o $@
 
 # archive(name): the recipe of a static library from its object prerequisites
 define archive
@@ -153,10 +172,15 @@ define archive
 endef
 $(LIB): $(call obj,$(LIB_SRC))
 	$(archive)
-$(HOSTLIB): $(call obj,$(HOST_SRC)) | $(LIB)
+$(PERFLIB): $(call obj,$(PERF_SRC))
 	$(archive)
-$(TOOLLIB): $(call obj,$(TOOLLIB_SRC))
+$(HOSTLIB): $(call obj,$(HOST_SRC))
 	$(archive)
+define LAYER_template
+$(call LAYERLIB,$(1)): $$(call obj,$$(wildcard tools/$(1)/*.c))
+	$$(archive)
+endef
+$(foreach l,$(TOOL_LAYERS),$(eval $(call LAYER_template,$(l))))
 
 # --- registries collected from marker lines (no shared file to edit)
 $(GEN)/vec_kinds.inc: $(wildcard tools/vec/kind_*.c) Makefile
@@ -170,19 +194,20 @@ $(BUILD)/obj/tools/trk-bench/main.o: $(GEN)/bench_cases.inc
 
 # --- tools: bin/trk-NAME from tools/trk-NAME/*.c
 define TOOL_template
-$(BUILD)/bin/$(1): $$(call obj,$$(wildcard tools/$(1)/*.c)) $$(TOOL_DEPS_$(1)) $(TOOLLIB) $(HOSTLIB) $(LIB)
+$(BUILD)/bin/$(1): $$(call obj,$$(wildcard tools/$(1)/*.c)) $$(TOOL_DEPS_$(1)) $(TOOL_LIBS)
 	@mkdir -p $$(@D)
 	$$(call say,LD,$$@)
-	$$(Q)$$(CC) $$(LDFLAGS_ALL) $$(TOOL_LDFLAGS_$(1)) $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(TOOL_LDLIBS_$(1)) -lm -o $$@
+	$$(Q)$$(CC) $$(LDFLAGS_ALL) $$(TOOL_LDFLAGS_$(1)) $$(filter %.o,$$^) $(TOOL_LIBS) $$(TOOL_LDLIBS_$(1)) -lm -o $$@
 endef
 $(foreach t,$(TOOL_DIRS),$(eval $(call TOOL_template,$(t))))
 
 # --- tests and examples
 # (no line of their own: each test program's step line names it)
-$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TOOLLIB) $(HOSTLIB) $(LIB)
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TOOL_LIBS)
 	@mkdir -p $(@D)
-	$(Q)$(CC) $(LDFLAGS_ALL) $< $(TEST_EXTRA_OBJS_$*) $(TOOLLIB) $(HOSTLIB) $(LIB) $(CMOCKA_LIBS) $(TEST_LDLIBS_$*) -lm -o $@
+	$(Q)$(CC) $(LDFLAGS_ALL) $< $(TEST_EXTRA_OBJS_$*) $(TOOL_LIBS) $(CMOCKA_LIBS) $(TEST_LDLIBS_$*) -lm -o $@
 
+# examples are firmware-style programs: the libraries a product links
 $(BUILD)/bin/example-%: $(BUILD)/obj/examples/%.o $(HOSTLIB) $(LIB)
 	@mkdir -p $(@D)
 	$(call say,LD,$@)
@@ -227,7 +252,7 @@ $(RESULTS)/test_%.res: $(BUILD)/tests/test_% FORCE
 $(RESULTS)/vectors.res: $(BUILD)/bin/trk-vectors FORCE
 	@if [ -d $(VECTORS_DIR) ]; then DETAIL_LINES=4 $(STEP) vectors $< $(VECTORS_FLAGS) $(VECTORS_DIR)/*.vec; \
 	 else echo "$(CFG) vectors: $(VECTORS_DIR) not found, skipped"; fi
-$(RESULTS)/heap.res: $(LIB) FORCE
+$(RESULTS)/heap.res: $(LIB) $(PERFLIB) FORCE
 	@$(STEP) heap $(MAKE) --no-print-directory check-heap
 
 # check: everything of this configuration and its steps (the developer loop),
@@ -244,10 +269,10 @@ check-steps: $(call res,$(CHECK_STEPS))
 	@:
 
 HEAP_SYMS := malloc|calloc|realloc|free|alloca|__builtin_alloca|printf|fprintf|sprintf|snprintf|vsnprintf|puts|putchar|fputs|fopen|fwrite|fread|abort|exit|_exit|__assert_fail|__stack_chk_fail_local|stdout|stderr
-check-heap: $(LIB)
-	@if nm -u $(LIB) | grep -E '^ *U ($(HEAP_SYMS))$$'; then \
-	  echo "check-heap: libtrk references the symbols above (heap/stdio/abort)"; exit 1; fi
-	@echo "check-heap: $(LIB) references no heap, stdio or abort symbol"
+check-heap: $(LIB) $(PERFLIB)
+	@if nm -u $(LIB) $(PERFLIB) | grep -E '^ *U ($(HEAP_SYMS))$$'; then \
+	  echo "check-heap: libtrk or libtrk_perf references the symbols above (heap/stdio/abort)"; exit 1; fi
+	@echo "check-heap: $(LIB) and $(PERFLIB) reference no heap, stdio or abort symbol"
 
 # --- the whole matrix (README's test command). The configurations are
 # independent sub-makes (own build directories) run on TEST_JOBS jobs; each
@@ -294,7 +319,7 @@ demo: all
 install: all
 	install -d $(DESTDIR)$(PREFIX)/include/trk $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
 	install -m 644 include/trk/*.h $(DESTDIR)$(PREFIX)/include/trk/
-	install -m 644 $(LIB) $(HOSTLIB) $(DESTDIR)$(PREFIX)/lib/
+	install -m 644 $(LIB) $(PERFLIB) $(HOSTLIB) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(TOOLS) $(DESTDIR)$(PREFIX)/bin/
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@CFLAGS@|$(strip $(DEFS))|' trk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/trk.pc
 	$(INSTALL_EXTRA)

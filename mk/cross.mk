@@ -1,7 +1,9 @@
 # cross.mk - libtrk for firmware targets: make cross
 #
-#   build/cross/<target>/libtrk.a, built from src/*.c only (no host helpers)
-#   with the target's compiler and flags, then checked:
+#   build/cross/<target>/libtrk.a, built from src/*.c only (no host helpers),
+#   and build/cross/<target>/libtrk_perf.a from src/perf/*.c (design-time
+#   analysis: q2 lookup, MRE, TOC, CRLB; firmware does not link it), with the
+#   target's compiler and flags, then checked (both archives):
 #     - no heap/stdio/abort symbol referenced (HEAP_SYMS from the Makefile)
 #     - float targets: no soft-double helper and no double libm function
 #       referenced (a float build that promotes to double runs soft-float
@@ -86,23 +88,28 @@ DOUBLE_LIBM_RE := sqrt|exp|exp2|expm1|log|log1p|log2|log10|pow|floor|ceil|round|
 
 define CROSS_template
 CROSS_OBJ_$(1) := $$(patsubst src/%.c,build/cross/$(1)/obj/%.o,$$(LIB_SRC))
-build/cross/$(1)/obj/%.o: src/%.c $$(wildcard include/trk/*.h src/*.h) mk/cross.mk
+CROSS_PERF_OBJ_$(1) := $$(patsubst src/%.c,build/cross/$(1)/obj/%.o,$$(PERF_SRC))
+build/cross/$(1)/obj/%.o: src/%.c $$(wildcard include/trk/*.h src/*.h src/perf/*.h) mk/cross.mk
 	@mkdir -p $$(@D)
 	$$(call say,CC,$$< ($(1)))
 	$$(Q)$$(TARGET_$(1)_CC) $$(CROSS_COMMON) $$(TARGET_$(1)_CFLAGS) $$(CROSS_EXTRA_CFLAGS) -c $$< -o $$@
 build/cross/$(1)/libtrk.a: $$(CROSS_OBJ_$(1))
 	$$(call say,AR,$$@)
 	$$(Q)rm -f $$@ && $$(call cross_tool,$(1),ar) rcs $$@ $$^
-cross-$(1): build/cross/$(1)/libtrk.a
-	@echo "== $(1): $$<"
-	@$$(call cross_tool,$(1),size) -t $$< | tail -1 | awk '{printf "   text %s  data %s  bss %s  (bytes, whole library)\n", $$$$1, $$$$2, $$$$3}'
-	@if $$(call cross_tool,$(1),nm) -u $$< | grep -E '^ *U ($$(HEAP_SYMS))$$$$'; then \
-	  echo "cross-$(1): libtrk references heap/stdio/abort symbols"; exit 1; fi
-	@if [ "$$(TARGET_$(1)_FLOAT)" = 1 ] && $$(call cross_tool,$(1),nm) -u $$< | \
+build/cross/$(1)/libtrk_perf.a: $$(CROSS_PERF_OBJ_$(1))
+	$$(call say,AR,$$@)
+	$$(Q)rm -f $$@ && $$(call cross_tool,$(1),ar) rcs $$@ $$^
+cross-$(1): build/cross/$(1)/libtrk.a build/cross/$(1)/libtrk_perf.a
+	@echo "== $(1): $$^"
+	@$$(call cross_tool,$(1),size) -t $$< | tail -1 | awk '{printf "   libtrk.a       text %s  data %s  bss %s  (bytes, whole library)\n", $$$$1, $$$$2, $$$$3}'
+	@$$(call cross_tool,$(1),size) -t build/cross/$(1)/libtrk_perf.a | tail -1 | awk '{printf "   libtrk_perf.a  text %s  data %s  bss %s  (bytes, analysis modules)\n", $$$$1, $$$$2, $$$$3}'
+	@if $$(call cross_tool,$(1),nm) -u $$^ | grep -E '^ *U ($$(HEAP_SYMS))$$$$'; then \
+	  echo "cross-$(1): libtrk or libtrk_perf references heap/stdio/abort symbols"; exit 1; fi
+	@if [ "$$(TARGET_$(1)_FLOAT)" = 1 ] && $$(call cross_tool,$(1),nm) -u $$^ | \
 	    grep -E '^ *U (($$(SOFT_DOUBLE_RE))|($$(DOUBLE_LIBM_RE)))$$$$' >/dev/null; then \
 	  echo "cross-$(1): float build pulls in soft-double helpers or double libm functions:"; \
-	  $$(call cross_tool,$(1),nm) -A -u $$< | grep -E ' U (($$(SOFT_DOUBLE_RE))|($$(DOUBLE_LIBM_RE)))$$$$'; exit 1; fi
-	@if [ "$$(TARGET_$(1)_FLOAT)" = 1 ] && $$(call cross_tool,$(1),nm) -A -u $$< | grep -E ' U ($$(INDIRECT_SOFT_DOUBLE_RE))$$$$'; then \
+	  $$(call cross_tool,$(1),nm) -A -u $$^ | grep -E ' U (($$(SOFT_DOUBLE_RE))|($$(DOUBLE_LIBM_RE)))$$$$'; exit 1; fi
+	@if [ "$$(TARGET_$(1)_FLOAT)" = 1 ] && $$(call cross_tool,$(1),nm) -A -u $$^ | grep -E ' U ($$(INDIRECT_SOFT_DOUBLE_RE))$$$$'; then \
 	  echo "   WARNING cross-$(1): float -> int64 conversion above pulls libgcc's soft-double code into a firmware image"; \
 	  [ "$$(CROSS_F2LZ_FATAL)" != 1 ] || exit 1; fi
 	@echo "   nm: no heap/stdio/abort symbol$$(if $$(TARGET_$(1)_FLOAT),$$(comma) no soft-double or double libm)"
@@ -118,4 +125,4 @@ cross-sizeopt: cross-cortex-m4f-inline cross-cortex-m4f-sizeopt
 
 # each cross target's library and symbol checks: a step of `make test`
 TEST_EXTRA += $(addprefix cross-,$(CROSS_TARGETS))
-$(foreach t,$(CROSS_TARGETS),$(eval TEST_EXTRA_DEPS_cross-$(t) := build/cross/$(t)/libtrk.a))
+$(foreach t,$(CROSS_TARGETS),$(eval TEST_EXTRA_DEPS_cross-$(t) := build/cross/$(t)/libtrk.a build/cross/$(t)/libtrk_perf.a))

@@ -33,9 +33,9 @@ FUZZ_FLAGS ?=
 # --- replay: $(BUILD)/fuzz-replay/replay-NAME (generic object rule of the Makefile)
 define FUZZ_REPLAY_template
 $(BUILD)/fuzz-replay/replay-$(1): $(BUILD)/obj/tests/fuzz/replay.o $(BUILD)/obj/tests/fuzz/fuzz_$(1).o \
-  $$(FUZZ_OBJS_$(1)) $(TOOLLIB) $(HOSTLIB) $(LIB)
+  $$(FUZZ_OBJS_$(1)) $(TOOL_LIBS)
 	@mkdir -p $$(@D)
-	$$(Q)$(CC) $(LDFLAGS_ALL) $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
+	$$(Q)$(CC) $(LDFLAGS_ALL) $$(filter %.o,$$^) $(TOOL_LIBS) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
 $(BUILD)/obj/tests/fuzz/fuzz_$(1).o: CFLAGS_ALL += $$(FUZZ_CFLAGS_$(1))
 endef
 $(foreach t,$(FUZZ_ALL),$(eval $(call FUZZ_REPLAY_template,$(t))))
@@ -57,9 +57,9 @@ fuzz-build:
 
 ifeq ($(BUILD),$(FUZZ_DIR))
 define FUZZ_BIN_template
-$(FUZZ_DIR)/bin/fuzz-$(1): $(FUZZ_DIR)/obj/tests/fuzz/fuzz_$(1).o $$(FUZZ_OBJS_$(1)) $(TOOLLIB) $(HOSTLIB) $(LIB)
+$(FUZZ_DIR)/bin/fuzz-$(1): $(FUZZ_DIR)/obj/tests/fuzz/fuzz_$(1).o $$(FUZZ_OBJS_$(1)) $(TOOL_LIBS)
 	@mkdir -p $$(@D)
-	$(CC) -fsanitize=fuzzer,address,undefined -fopenmp $$(filter %.o,$$^) $(TOOLLIB) $(HOSTLIB) $(LIB) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
+	$(CC) -fsanitize=fuzzer,address,undefined -fopenmp $$(filter %.o,$$^) $(TOOL_LIBS) $$(FUZZ_LDLIBS_$(1)) -lm -o $$@
 endef
 $(foreach t,$(FUZZ_ALL),$(eval $(call FUZZ_BIN_template,$(t))))
 endif
@@ -92,9 +92,9 @@ fuzz-merge: fuzz-build
 
 # --- seeds of fuzz_table (written by hand when the table format changes)
 .PHONY: fuzz-table-seeds
-fuzz-table-seeds: $(BUILD)/obj/tests/fuzz/table_seeds.o $(TOOLLIB) $(HOSTLIB) $(LIB)
+fuzz-table-seeds: $(BUILD)/obj/tests/fuzz/table_seeds.o $(TOOL_LIBS)
 	@mkdir -p $(BUILD)/fuzz-replay tests/fuzz/corpus/table
-	$(CC) $(LDFLAGS_ALL) $< $(TOOLLIB) $(HOSTLIB) $(LIB) -lm -o $(BUILD)/fuzz-replay/table_seeds
+	$(CC) $(LDFLAGS_ALL) $< $(TOOL_LIBS) -lm -o $(BUILD)/fuzz-replay/table_seeds
 	$(BUILD)/fuzz-replay/table_seeds tests/fuzz/corpus/table
 	@ls -l tests/fuzz/corpus/table
 

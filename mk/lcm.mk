@@ -1,8 +1,8 @@
 # mk/lcm.mk - the LCM bridge's message types and extra targets.
 #
-#   tools/trk-lcm-bridge/lcm/*.lcm  -> $(BUILD)/gen/lcm/trk_<type>.{c,h}
+#   tools/lcm/types/*.lcm  -> $(BUILD)/gen/lcm/trk_<type>.{c,h}
 #       lcm-gen -c --c-no-pubsub (no liblcm needed by the generated code);
-#       compiled into libtrk_tools.a (with tools/common/lcm_copy.c, the
+#       compiled into libtrk_tools.a (with tools/lcm/lcm_copy.c, the
 #       validated message <-> struct copy). Programs that talk LCM
 #       (trk-lcm-bridge, trk-sonar-sim, test_lcm_*, trk-bench) link -llcm.
 #   make demo-lcm       simulated sonar -> bridge -> track log, and a summary
@@ -17,7 +17,7 @@
 #   make install        also installs the .lcm files to $(PREFIX)/share/trk/lcm
 #                       (generate bindings for other languages from them)
 
-LCM_DIR := tools/trk-lcm-bridge/lcm
+LCM_DIR := tools/lcm/types
 LCM_FILES := $(sort $(wildcard $(LCM_DIR)/*.lcm))
 LCM_GEN_DIR := $(GEN)/lcm
 LCM_TYPES := $(patsubst $(LCM_DIR)/%.lcm,trk_%,$(LCM_FILES))
@@ -48,11 +48,11 @@ $(BUILD)/obj/lcmgen/%.o: $(LCM_GEN_DIR)/%.c $(LCM_GEN_STAMP)
 	$(call say,CC,$<)
 	$(Q)$(CC) $(filter-out -Werror -Wpedantic,$(CFLAGS_ALL)) $(if $(filter 1,$(SAN)),-O0) -Wno-unused-parameter -I$(LCM_GEN_DIR) -c $< -o $@
 
-# into libtrk_tools.a (its recipe archives every prerequisite)
-$(TOOLLIB): $(LCM_GEN_OBJS)
+# into libtrk_lcm.a (its recipe archives every object prerequisite)
+$(call LAYERLIB,lcm): $(LCM_GEN_OBJS)
 
 # everything that includes a generated header waits for lcm-gen
-LCM_USERS := tools/common/lcm_copy.c $(wildcard tools/trk-lcm-bridge/*.c tools/trk-sonar-sim/*.c \
+LCM_USERS := $(wildcard tools/lcm/*.c tools/trk-lcm-bridge/*.c tools/trk-sonar-sim/*.c \
   tools/trk-bench/bench_lcm.c tests/test_lcm_*.c)
 $(call obj,$(LCM_USERS)): $(LCM_GEN_STAMP)
 

@@ -1,7 +1,7 @@
-# mk/q2.mk - the q2 importance sampler (tools/common/q2_is.c) and the
-# amplitude table generator (tools/common/amp_table.c) with OpenMP.
+# mk/q2.mk - the q2 importance sampler (tools/gen/q2_is.c) and the
+# amplitude table generator (tools/gen/amp_table.c) with OpenMP.
 #
-# Both are compiled once, with -fopenmp, into libtrk_tools.a; every host
+# Both are compiled once, with -fopenmp, into libtrk_gen.a (tools/gen); every host
 # program links with -fopenmp (LDFLAGS_ALL in the Makefile), so a program that
 # calls them runs on all cores (OMP_NUM_THREADS or the tools' --threads to
 # choose). Their results are bit-identical for any thread count (q2_is.h,
@@ -16,6 +16,6 @@
 # OPT (-O1): the -O3 compile of q2_is.c costs ~20 s there and checks nothing
 # more.
 Q2_IS_FLAGS := $(if $(filter 1,$(SAN)),,-O3) -ffp-contract=off -fno-trapping-math
-$(BUILD)/obj/tools/common/q2_is.o: CFLAGS_ALL += $(Q2_IS_FLAGS) -fopenmp
-$(BUILD)/obj/tools/common/q2_amp.o: CFLAGS_ALL += $(Q2_IS_FLAGS)
-$(BUILD)/obj/tools/common/amp_table.o: CFLAGS_ALL += -fopenmp
+$(BUILD)/obj/tools/gen/q2_is.o: CFLAGS_ALL += $(Q2_IS_FLAGS) -fopenmp
+$(BUILD)/obj/tools/gen/q2_amp.o: CFLAGS_ALL += $(Q2_IS_FLAGS)
+$(BUILD)/obj/tools/gen/amp_table.o: CFLAGS_ALL += -fopenmp

@@ -2,7 +2,8 @@
 #
 #   build/qemu/<target>/fw.elf: a bare-metal image for QEMU's mps2 boards
 #   (tests/qemu/: startup.c, mps2.ld, main.c) holding
-#     - libtrk exactly as make cross builds it (build/cross/<target>/libtrk.a)
+#     - libtrk and libtrk_perf exactly as make cross builds them
+#       (build/cross/<target>/libtrk.a, libtrk_perf.a)
 #     - the host's vector parser, checker and kinds (tools/vec/*.c), compiled
 #       for the target, with every kind_*.c picked up automatically
 #     - the firmware-capable helpers of the kinds (FW_COMMON_SRC below)
@@ -37,9 +38,11 @@
 # to VEC_POOL = 65536 values and VEC_MAX_ENTRIES = 512 (tools/vec/vec.h; 2^18
 # on the host): ~1.3 MB of .bss. The largest public case needs 11249 values; a
 # larger one fails loudly ("case too large").
-# Helpers of the kinds from tools/common: the firmware-capable ones, named in
-# FW_COMMON_SRC (the amplitude-table writer and K-distribution quadrature that
-# kind_amplitude.c and kind_q2.c call; the rest of tools/common is host-only).
+# The firmware-capable layers: src (libtrk), src/perf (libtrk_perf), tools/vec
+# (the kinds) and, from tools/gen and src/host, the model files the kinds call,
+# named in FW_COMMON_SRC (K-distribution quadrature, the in-memory amplitude
+# table, the q2 amplitude law, the table writer); the rest of those layers
+# uses the host's clock, files or threads.
 # The image is rebuilt when VECTORS_DIR or its file list changes
 # ($(FW_DIR)/vectors.list holds both).
 
@@ -55,7 +58,7 @@ FW_VEC_FILES = $(sort $(wildcard $(VECTORS_DIR)/*.vec))
 FW_KIND_SRC = $(sort $(wildcard tools/vec/kind_*.c))
 # the kinds registered VEC_SLOW: not in the image's registry
 FW_SKIP_KINDS := $(shell sed -n 's/^TRK_VEC_KIND(\([a-z0-9_]*\),.*VEC_SLOW).*/\1/p' $(sort $(wildcard tools/vec/kind_*.c)))
-FW_COMMON_SRC := tools/common/amp_table.c tools/common/kdist.c tools/common/q2_amp.c tools/common/table_writer.c
+FW_COMMON_SRC := tools/gen/amp_table.c tools/gen/kdist.c tools/gen/q2_amp.c src/host/table_writer.c
 FW_RANDOM123 ?= /usr/include/Random123
 FW_TABLEGEN = $(BUILD)/bin/trk-tablegen
 # newlib-nano + semihosting. Neither nano nor Debian's full newlib printf
@@ -66,7 +69,7 @@ FW_SPECS ?= --specs=nano.specs --specs=rdimon.specs
 define QEMU_template
 FW_DIR_$(1) := build/qemu/$(1)
 FW_CFLAGS_$(1) = $$(FW_WARN) $$(TARGET_$(1)_CFLAGS) $$(FW_VEC_DEFS) -ffunction-sections -fdata-sections -g \
-  -Iinclude -Itools/vec -Itools/common -I$$(FW_DIR_$(1))/gen -isystem $$(FW_DIR_$(1))/inc \
+  -Iinclude -Itools/vec -Itools/gen -Isrc/host -I$$(FW_DIR_$(1))/gen -isystem $$(FW_DIR_$(1))/inc \
   -DFW_TARGET='"$(1) on $$(QEMU_MACHINE_$(1))"' -DFW_SKIP_KINDS='"$$(strip $$(FW_SKIP_KINDS))"' \
   -DFW_AMP_K_DIRECT=$$(if $$(TARGET_$(1)_FLOAT),0,1)
 FW_HARNESS_SRC_$(1) = tools/vec/vec.c tools/vec/registry.c $$(FW_KIND_SRC) $$(FW_COMMON_SRC) tests/qemu/startup.c \
@@ -106,15 +109,15 @@ $$(FW_DIR_$(1))/obj/vec_data.o: $$(FW_DIR_$(1))/vec_data.c
 	$$(call say,CC,$$< ($(1)))
 	$$(Q)$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -Wno-overlength-strings -c $$< -o $$@
 $$(FW_DIR_$(1))/obj/%.o: %.c $$(FW_DIR_$(1))/gen/vec_kinds.inc $$(FW_DIR_$(1))/inc/.stamp \
-  $$(wildcard include/trk/*.h tools/vec/*.h tools/common/*.h) mk/qemu.mk
+  $$(wildcard include/trk/*.h tools/vec/*.h tools/gen/*.h src/host/*.h) mk/qemu.mk
 	@mkdir -p $$(@D)
 	$$(call say,CC,$$< ($(1)))
 	$$(Q)$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -c $$< -o $$@
-$$(FW_DIR_$(1))/fw.elf: $$(FW_HARNESS_OBJ_$(1)) build/cross/$(1)/libtrk.a tests/qemu/mps2.ld
+$$(FW_DIR_$(1))/fw.elf: $$(FW_HARNESS_OBJ_$(1)) build/cross/$(1)/libtrk_perf.a build/cross/$(1)/libtrk.a tests/qemu/mps2.ld
 	$$(call say,LD,$$@)
 	$$(Q)$$(TARGET_$(1)_CC) $$(TARGET_$(1)_CFLAGS) -nostartfiles $$(FW_SPECS) \
 	  -u _printf_float -T tests/qemu/mps2.ld -Wl,--gc-sections -Wl,-Map=$$@.map \
-	  $$(FW_HARNESS_OBJ_$(1)) build/cross/$(1)/libtrk.a -lm -o $$@
+	  $$(FW_HARNESS_OBJ_$(1)) build/cross/$(1)/libtrk_perf.a build/cross/$(1)/libtrk.a -lm -o $$@
 	$$(Q)$$(call cross_tool,$(1),size) $$@ > $$@.size
 qemu-build-$(1): $$(FW_DIR_$(1))/fw.elf
 TEST_EXTRA += qemu-test-$(1)

@@ -34,7 +34,7 @@ tables: $(AMP_TABLES)
 # recompile the example)
 $(GEN)/amp_table_data.h: $(TABLEGEN)
 	@mkdir -p $(@D)
-	$(call say,GEN,$@)
 	$(Q)$(TABLEGEN) amp --clutter k --nu 1 --snr-db 15 --pfa 1e-3 --format c --name amp_table -o $@.tmp > /dev/null
-	$(Q)if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+	$(Q)if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; \
+	  $(if $(filter 1,$(V)),:,printf '%-14s %-4s %s\n' '$(CFG)' GEN '$@'); fi
 $(BUILD)/obj/examples/amp_table_firmware.o: $(GEN)/amp_table_data.h

@@ -1,6 +1,6 @@
 /* test_amplitude.c - amplitude models (trk/amplitude.h): Rayleigh closed
  * forms against amplitude.vec values, K tables built by the generator
- * (tools/common/amp_table.c) against the direct evaluation (kdist) and the
+ * (tools/gen/amp_table.c) against the direct evaluation (kdist) and the
  * vectors, table tail and extrapolation, Rayleigh and geometric-grid tables,
  * every bad input and every kind of bad amplitude table, Kennedy's dB model.
  * Tables are built small here (the generator is fast at 64..128 points). */

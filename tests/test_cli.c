@@ -1,4 +1,4 @@
-/* test_cli.c - cli_opt (tools/common/cli.h): `--name value` and
+/* test_cli.c - cli_opt (tools/cli/cli.h): `--name value` and
  * `--name=value`, other options left alone, a missing value; and the stop
  * flag set by SIGINT/SIGTERM after cli_catch_stop_signals. */
 #define _POSIX_C_SOURCE 200809L

@@ -1,4 +1,4 @@
-/* test_fileio.c - fileio_read (tools/common/fileio.h): whole files of any
+/* test_fileio.c - fileio_read (tools/cli/fileio.h): whole files of any
  * size byte for byte with a NUL after them, empty files, and a missing file
  * (NULL, errno from fopen, length 0). */
 #define _POSIX_C_SOURCE 200809L

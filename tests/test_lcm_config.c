@@ -1,4 +1,4 @@
-/* test_lcm_config.c - the tools' tracker configuration (tools/common/
+/* test_lcm_config.c - the tools' tracker configuration (tools/cli/
  * tracker_config.c) and "key = value" files (kvfile.c): defaults are the
  * library's, every key sets its field, bad values and unknown keys are
  * refused with the key (and file:line) in the message, the printed

@@ -1,4 +1,4 @@
-/* test_lcm_copy.c - LCM message <-> library struct copy (tools/common/lcm_copy.c):
+/* test_lcm_copy.c - LCM message <-> library struct copy (tools/lcm/lcm_copy.c):
  * round trips are exact, every rejection category gives its reason and leaves
  * the output untouched (truncation at every length, trailing bytes, wrong
  * hash, counts, capacity, non-finite used fields, ignored unused fields,

@@ -1,4 +1,4 @@
-/* test_lcm_scenario.c - the simulated sonar's scenario (tools/common/
+/* test_lcm_scenario.c - the simulated sonar's scenario (tools/sim/
  * scenario.c) and amplitude draws (amp_sample.c): the same seed gives the
  * same scans, targets move as constant velocity (exactly with q = 0, with
  * velocity increments of variance q T otherwise), detections come with the

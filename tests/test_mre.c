@@ -3,6 +3,7 @@
  * divergence, the TOC optimum and bad input. */
 #include "trk_test.h"
 #include "trk/mre.h"
+#include "trk/toc.h"
 #include "trk/q2.h"
 
 /* Independent Kalman (q2 = 1) steady state of the 1-D CV model by the plain

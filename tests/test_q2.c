@@ -1,6 +1,6 @@
 /* test_q2.c - q2 lookup (trk/q2.h): exact at nodes, linear and cubic
  * reproduction of polynomials, interpolation error bound, ROC table, bad
- * grids and queries; the importance sampler (tools/common/q2_is.h): limits
+ * grids and queries; the importance sampler (tools/gen/q2_is.h): limits
  * with closed forms, a reference value, bad input, and bit-identical output
  * for 1 and 2 threads (this test links the OpenMP object, tests/test_q2.mk);
  * the fast exp/log and the amplitude sampler on the library's amplitude

@@ -1,7 +1,7 @@
 /* test_sim_scenario.c - the scenario engine's extensions for trk-sim
- * (tools/common/scenario.h): the lazily generated Poisson clutter field,
+ * (tools/sim/scenario.h): the lazily generated Poisson clutter field,
  * clutter around the targets, targets that end, two-state fluctuating
- * detection; and the confidence intervals of tools/common/mc_stats.h.
+ * detection; and the confidence intervals of tools/sim/mc_stats.h.
  * Fixed seeds; the statistical checks use bounds several standard errors
  * wide (a failure is a bug, not bad luck). */
 #include "trk_test.h"

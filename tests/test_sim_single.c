@@ -1,5 +1,5 @@
 /* test_sim_single.c - the single-target Monte Carlo runs behind trk-sim's
- * paper experiments (tools/common/single_target.h), at small sizes with
+ * paper experiments (tools/sim/single_target.h), at small sizes with
  * fixed seeds, checking statistics that must hold:
  *   - Brekke TOC: at low clutter the simulated RMSE agrees with the MRE
  *   - Brekke: the PDAFAI loses no more tracks than the PDAF on the same runs

@@ -1,4 +1,4 @@
-/* test_toc.c - TOC curves and optimum of the tools (tools/common/toc.h) on
+/* test_toc.c - TOC curves and optimum of the tools (tools/sim/toc.h) on
  * small q2 tables from the generator: statuses, the optimum against the
  * curve, the library's MRE at the optimum, tables of the wrong kind, gate or
  * model refused, bad scenarios refused. */

@@ -22,6 +22,7 @@
 #include "trk/tracker.h"
 #include "trk/q2.h"
 #include "trk/mre.h"
+#include "trk/toc.h"
 #include "trk/crlb.h"
 
 #endif

@@ -1,5 +1,5 @@
 /* fuzz_lcm_copy.c - libFuzzer target: the LCM message -> struct copy of
- * trk-lcm-bridge (tools/common/lcm_copy.c) on arbitrary bytes, then the
+ * trk-lcm-bridge (tools/lcm/lcm_copy.c) on arbitrary bytes, then the
  * tracker on every scan it accepts.
  *
  * Input: byte 0 selects the mode, the rest is the message.

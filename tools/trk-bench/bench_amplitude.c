@@ -5,7 +5,7 @@
  *                    P_FA 1e-4 .. 1e-1) at the default sizes: max |ln l^a
  *                    error| over [t, a_max] ("abs") and max relative a(x)
  *                    error over x in [0, 40] ("rel"), measured at 5 points per
- *                    table interval (tools/common/amp_table.c); the largest of
+ *                    table interval (tools/gen/amp_table.c); the largest of
  *                    the eight tables as amp_err_log_lr_max / amp_err_inv_sf_max
  *   amp_geometric_*  the paper's geometric grid (eqs 43-45, A = 0.25, last 100,
  *                    piecewise linear) at the default size, nu = 1, P_FA 1e-3

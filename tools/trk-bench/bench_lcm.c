@@ -30,7 +30,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "../trk-lcm-bridge/transport.h"
+#include "transport.h"
 #include "bench.h"
 #include "lcm_log.h"
 #include "scenario.h"

@@ -1,4 +1,4 @@
-/* bench_q2.c - q2 importance sampler (tools/common/q2_is.c) and the q2 /
+/* bench_q2.c - q2 importance sampler (tools/gen/q2_is.c) and the q2 /
  * MRE / CRLB library functions.
  *
  *   q2_is_*_points_per_s   target + clutter points drawn per second on ONE

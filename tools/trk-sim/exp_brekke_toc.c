@@ -65,7 +65,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
                      "simulated P_FA"),
         SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
                        "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
-                       "per scan (bursty clutter, see tools/common/single_target.h)"),
+                       "per scan (bursty clutter, see tools/sim/single_target.h)"),
         SIM_OPT_CHOICE("--init", &init, "twopoint|steady", init_values, "twopoint", "initial track covariance"),
         SIM_OPT_LONG("--q2-samples", &q2_samples, "N", NULL, SIM_GE, 1000, 0,
                      "importance samples per stratum of the MRE's q2 grids (default toc.h's)"),

@@ -88,7 +88,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         SIM_OPT_LIST("--pfa", pfas, &npfa, MAXL, "1e-4,1e-2,1e-1", 0, 0, 0, "false-alarm probabilities"),
         SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
                        "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
-                       "per scan (bursty clutter, see tools/common/single_target.h)"),
+                       "per scan (bursty clutter, see tools/sim/single_target.h)"),
         SIM_OPT_CHOICE("--init", &init, "twopoint|steady", init_values, "twopoint",
                        "initial track covariance (see the CSV header)"),
         SIM_OPT_CHOICE("--grid", &grid, "uniform|geometric", grid_values, "uniform",

@@ -1,5 +1,5 @@
 /* exp_demo.c - trk-sim demo: trk's main job end to end, the scenario of
- * `make demo`. A simulated sonar (tools/common/scenario.h) with K-distributed
+ * `make demo`. A simulated sonar (tools/sim/scenario.h) with K-distributed
  * (heavy-tailed, nu = 1) clutter amplitudes feeds the track table
  * (trk_tracker_process_scan, the code firmware runs) with amplitude-aided
  * association (PDAFAI: the amplitude table made by `trk-tablegen amp`),

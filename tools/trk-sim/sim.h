@@ -26,7 +26,7 @@
  *     if (parsed != SIM_RUN) return parsed;
  *
  * Results must not depend on the thread count: key each run's random stream
- * by (seed, run) (tools/common/rng.h) and reduce per-run results in run
+ * by (seed, run) (tools/sim/rng.h) and reduce per-run results in run
  * order after the parallel loop. */
 #ifndef TRK_SIM_H
 #define TRK_SIM_H

@@ -1,5 +1,5 @@
 /* trk-sonar-sim - a simulated sonar: publishes a seeded scenario
- * (tools/common/scenario.h) as trk.detection_scan_t messages over LCM, or
+ * (tools/sim/scenario.h) as trk.detection_scan_t messages over LCM, or
  * writes them to an LCM log file, so the whole chain sonar -> trk-lcm-bridge
  * -> consumers can run without hardware. See --help.
  *

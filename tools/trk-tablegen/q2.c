@@ -1,5 +1,5 @@
 /* q2.c - `trk-tablegen q2`: q2 tables by importance sampling (trk/q2.h
- * "Q2 TABLE"; tools/common/q2_table.h, q2_is.h). */
+ * "Q2 TABLE"; tools/gen/q2_table.h, q2_is.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * amp_kennedy_loglr (../shared/vectors/amplitude.vec).
  *
  * Direct evaluation, one implementation each: model k through the offline
- * high-accuracy texture integrals (tools/common/kdist.c, double precision in
+ * high-accuracy texture integrals (tools/gen/kdist.c, double precision in
  * every build), model rayleigh through the library's closed forms
  * (trk_amplitude_init_rayleigh / _log_lr / _inv_sf), amp_kennedy_loglr
  * through trk_amplitude_db_log_lr. (The table lookup that the firmware uses

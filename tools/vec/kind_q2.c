@@ -1,7 +1,7 @@
 /* kind_q2.c - vector kinds q2_pdaf, q2_pdafai, mre_steady, crlb_irf
  * (../shared/vectors/q2.vec; CONVENTIONS "q2, MRE and CRLB").
  *
- * q2_pdaf, q2_pdafai: the importance-sampling estimator of tools/common/q2_is.c
+ * q2_pdaf, q2_pdafai: the importance-sampling estimator of tools/gen/q2_is.c
  * (Monte Carlo). The file's tolerance is abs = 4 sqrt(2) se_ref, rel 0, valid
  * when our standard error is at most the reference's; the header asks for at
  * least 4e6 (PDAF) / 1.5e6 (PDAFAI) scenes per clutter count near the mode.

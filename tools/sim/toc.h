@@ -35,7 +35,7 @@
  * q2 source. Either q2 tables made by `trk-tablegen q2` (loaded by the
  * caller, e.g. with trk_table_load_file, and outliving the struct toc), or
  * NULL: the q2 grid is then computed at toc_new by the importance sampler
- * (tools/common/q2_table.h; OpenMP when the program links the OpenMP object
+ * (tools/gen/q2_table.h; OpenMP when the program links the OpenMP object
  * of mk/q2.mk) for exactly this scenario, on the default tables' node
  * densities: PDAF over (pd, lambda_vg) with pd covering the ROC over
  * [pfa_min, pfa_max], PDAFAI over (pfa, lambda_vg) at snr_db (about 1-3 s

@@ -6,7 +6,7 @@
  * clutter is Rayleigh with E[a^2 | v] = v, a Swerling I target with
  * E[a^2 | v] = v + D, D = 10^(snr_db/10):
  *   rayleigh  v = 1:                 S0(a) = exp(-a^2),  S1(a) = exp(-a^2/(1+D))
- *   k         v ~ Gamma(nu, mean 1): S0, S1 from tools/common/kdist.h
+ *   k         v ~ Gamma(nu, mean 1): S0, S1 from tools/gen/kdist.h
  * The threshold t solves S0(t) = pfa; a target is detected with P_D = S1(t).
  * A detection's amplitude is drawn by inverting its truncated survival
  * function: x ~ Exp(1), a = S^-1(S(t) e^-x) (so a >= t):

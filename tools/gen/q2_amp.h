@@ -8,7 +8,7 @@
  * clutter law), and the sampler needs ln l^a(a) = trk_amplitude_log_lr(a).
  *   Rayleigh  the library's closed forms (trk_amplitude_init_rayleigh)
  *   K         the library's table lookup (trk_amplitude_init_table) on an
- *             amplitude table made in memory by tools/common/amp_table.c at
+ *             amplitude table made in memory by tools/gen/amp_table.c at
  *             exactly this (nu, snr_db, pfa), uniform grid of `amp_size`
  *             points (default Q2_AMP_TABLE_SIZE); the table's own errors can
  *             be measured against the direct K model (kdist.h): ln l^a and

@@ -50,7 +50,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Pluggable amplitude law (PDAFAI; tools/common/q2_amp.h builds it on the
+/* Pluggable amplitude law (PDAFAI; tools/gen/q2_amp.h builds it on the
  * library's amplitude module). log_lr draws n thresholded amplitudes by
  * inverse transform from the uniforms u[i] in (0, 1) (x = -ln u[i] ~ Exp(1)
  * is the negative log truncated survival, CONVENTIONS "Amplitude models") --

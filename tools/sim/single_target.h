@@ -95,7 +95,7 @@
 /* ---------------------------------------------------------------- amplitude model */
 
 /* A Swerling I target of snr_db in Rayleigh (closed form) or K clutter of
- * shape nu (an amplitude table made in memory, tools/common/amp_table.c),
+ * shape nu (an amplitude table made in memory, tools/gen/amp_table.c),
  * clutter power 1, threshold at pfa. grid: TRK_AMP_GRID_UNIFORM (default,
  * 0) or TRK_AMP_GRID_GEOMETRIC (Brekke eqs 43-45); size: points per
  * inverse-survival curve (0: the generator's default). */

@@ -14,6 +14,7 @@
 #include "q2_table.h"
 #include "trk/amplitude.h"
 #include "trk/mre.h"
+#include "trk/toc.h"
 #include "trk/q2.h"
 
 struct toc {
