@@ -148,18 +148,28 @@ examples: $(EXAMPLES)
 -include $(wildcard tools/*/tool.mk)
 -include $(wildcard tests/*.mk)
 
+# --- the configuration of this build directory: every object depends on a
+# file holding the compiler and its flags, rewritten only when they change,
+# so reusing a BUILD directory with other CONFIG_DEFS, REAL, SAN or CC
+# rebuilds everything instead of mixing struct layouts.
+BUILD_CONFIG := $(BUILD)/config.txt
+$(BUILD_CONFIG): FORCE
+	@mkdir -p $(@D)
+	@echo '$(CC) $(CFLAGS_ALL) $(LIBOPT) $(LDFLAGS_ALL)' > $@.tmp; \
+	  if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+
 # --- library objects: stricter warnings
-$(BUILD)/obj/src/%.o: src/%.c
+$(BUILD)/obj/src/%.o: src/%.c $(BUILD_CONFIG)
 	@mkdir -p $(@D)
 	$(call say,CC,$<)
 	$(Q)$(CC) $(CFLAGS_ALL) $(LIBOPT) $(LIBWARN) -Isrc -c $< -o $@
 
-$(BUILD)/obj/tools/%.o: tools/%.c
+$(BUILD)/obj/tools/%.o: tools/%.c $(BUILD_CONFIG)
 	@mkdir -p $(@D)
 	$(call say,CC,$<)
 	$(Q)$(CC) $(CFLAGS_ALL) $(TOOL_INC) -I$(GEN) $(TOOL_CFLAGS_$(firstword $(subst /, ,$*))) -c $< -o $@
 
-$(BUILD)/obj/%.o: %.c
+$(BUILD)/obj/%.o: %.c $(BUILD_CONFIG)
 	@mkdir -p $(@D)
 	$(call say,CC,$<)
 	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) $(TOOL_INC) -Itests -I$(GEN) -c $< -o $@
@@ -296,7 +306,7 @@ test-gcc-float:
 	+@$(MAKE) --no-print-directory BUILD=build/test-gcc-float CC=gcc $(SAN_CHECK) REAL=float check-run
 test-small:
 	+@$(MAKE) --no-print-directory BUILD=build/test-small CC=gcc OPT=-O1 DEBUG=-g1 VEC_SLOW=1 \
-	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2' check-run
+	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2 -DTRK_MAX_MODELS=4' check-run
 test-default:
 	+@$(MAKE) --no-print-directory BUILD=build test-extra
 

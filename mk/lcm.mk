@@ -43,7 +43,7 @@ $(LCM_GEN_C) $(LCM_GEN_H): $(LCM_GEN_STAMP) ;
 # function and object pointers), no unused-parameter warnings. Sanitizer
 # builds compile it at -O0: gcc takes 17 s for trk_bridge_status_t.c at -O1
 # with ASan+UBSan (0.3 s at -O0), and it is instrumented all the same.
-$(BUILD)/obj/lcmgen/%.o: $(LCM_GEN_DIR)/%.c $(LCM_GEN_STAMP)
+$(BUILD)/obj/lcmgen/%.o: $(LCM_GEN_DIR)/%.c $(LCM_GEN_STAMP) $(BUILD_CONFIG)
 	@mkdir -p $(@D)
 	$(call say,CC,$<)
 	$(Q)$(CC) $(filter-out -Werror -Wpedantic,$(CFLAGS_ALL)) $(if $(filter 1,$(SAN)),-O0) -Wno-unused-parameter -I$(LCM_GEN_DIR) -c $< -o $@
@@ -67,11 +67,11 @@ demo-lcm: $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
 	@mkdir -p $(DEMO_LCM_DIR)
 	@echo "== LCM demo 1/3: simulated sonar -> $(DEMO_LCM_DIR)/detections.lcmlog"
 	@echo "   (4 targets, K-distributed clutter nu 2, 16 dB, 10 clutter detections per scan, a malformed message every 25th scan)"
-	$(BUILD)/bin/trk-sonar-sim --log $(DEMO_LCM_DIR)/detections.lcmlog --scans 150 --targets 4 --seed 7 \
-	  --amplitude k --k-shape 2 --snr-db 16 --pfa 1e-3 --clutter-density 2.5e-6 --bad-every 25
+	$(BUILD)/bin/trk-sonar-sim --out $(DEMO_LCM_DIR)/detections.lcmlog --scans 150 --targets 4 --seed 7 \
+	  --clutter-model k --k-shape 2 --snr-db 16 --pfa 1e-3 --clutter-density 2.5e-6 --bad-every 25
 	@echo "== LCM demo 2/3: trk-lcm-bridge --replay -> $(DEMO_LCM_DIR)/tracks.lcmlog"
 	$(BUILD)/bin/trk-lcm-bridge --replay $(DEMO_LCM_DIR)/detections.lcmlog --out $(DEMO_LCM_DIR)/tracks.lcmlog \
-	  --keep-input --sensor.0.pd 0.7 --sensor.0.meas_sigma_m 3 --sensor.0.clutter_density_per_m2 2.5e-6
+	  --keep-input --set sensor.0.pd=0.7 --set sensor.0.meas_sigma_m=3 --set sensor.0.clutter_density_per_m2=2.5e-6
 	@echo "== LCM demo 3/3: what the track log holds"
 	$(BUILD)/bin/trk-lcm-bridge --summarize $(DEMO_LCM_DIR)/tracks.lcmlog
 demo: demo-lcm

@@ -4,7 +4,7 @@
 # compiled again in that configuration and linked ahead of libtrk.a (which
 # then contributes everything else); the test source defines the knob itself.
 NOCLUTTER_OBJS := $(BUILD)/obj/noclutter/src/tracker.o $(BUILD)/obj/noclutter/src/track_tests.o
-$(BUILD)/obj/noclutter/src/%.o: src/%.c
+$(BUILD)/obj/noclutter/src/%.o: src/%.c $(BUILD_CONFIG)
 	@mkdir -p $(@D)
 	$(call say,CC,$< (TRK_WITH_CLUTTER_TESTS=0))
 	$(Q)$(CC) $(CFLAGS_ALL) $(LIBWARN) -DTRK_WITH_CLUTTER_TESTS=0 -Isrc -c $< -o $@

@@ -21,6 +21,7 @@
 #include "trk/term_shiryaev.h"
 #include "trk/tracker.h"
 #include "trk/jpda.h"
+#include "trk/imm.h"
 #include "trk/q2.h"
 #include "trk/mre.h"
 #include "trk/toc.h"
