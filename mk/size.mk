@@ -19,10 +19,13 @@
 #                         TRK_MAX_DETECTIONS detections + that stack exceed
 #                         RAM_LIMIT (65536) at the default capacities
 #                       - the libtrk code a typical firmware image links
-#                         (fw_footprint.c), or the whole libtrk.a's .text,
-#                         exceeds TEXT_LIMIT (32768). The design-time analysis
-#                         code (q2 lookup, MRE, TOC, ROC, CRLB) is in
-#                         libtrk_perf.a, reported apart and not gated.
+#                         (fw_footprint.c) exceeds TEXT_LIMIT (32768)
+#                       - the whole libtrk.a's .text exceeds LIB_TEXT_LIMIT
+#                         (40960): every firmware module, including the joint
+#                         association (jpda.c) and IMM (imm.c) estimators a
+#                         firmware links only when it calls them. The
+#                         design-time analysis code (q2 lookup, MRE, TOC, ROC,
+#                         CRLB) is in libtrk_perf.a, reported apart, not gated.
 #
 # Stack method (tools/scripts/stack_ci.awk, stack_elf.awk):
 #   1. every cross object is compiled with -fstack-usage -fcallgraph-info=su:
@@ -44,6 +47,7 @@ SIZE_SMALL_DEFS := -DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=
 STACK_LIMIT ?= 2048
 TEXT_LIMIT ?= 32768
 RAM_LIMIT ?= 65536
+LIB_TEXT_LIMIT ?= 40960
 SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
 TARGET_cortex-m4f_ARCH := arm
 TARGET_cortex-m4f-O2_ARCH := arm
@@ -100,7 +104,7 @@ TEST_EXTRA_DEPS_size-check := build/cross/cortex-m4f/libtrk.a size-files-cortex-
 size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	@awk '/^\.s?(data|bss)/ && $$2 > 0 { print "size-check: static data in libtrk: " $$0; bad = 1 } END { exit bad }' \
 	  build/cross/cortex-m4f/size-A.txt
-	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) ' \
+	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) -v llim=$(LIB_TEXT_LIMIT) ' \
 	  function hex(s,   i, v) { v = 0; s = tolower(s); for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v } \
 	  FILENAME ~ /stack.txt$$/ { split($$0, f, "\t"); if (f[1] == "trk_tracker_process_scan") { st = f[2] + 0; path = f[5] } next } \
 	  FILENAME ~ /sizeof-default/ && NF == 4 { sz[$$4] = hex($$2); next } \
@@ -113,10 +117,10 @@ size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	    printf "size-check cortex-m4f: RAM for the default capacities %d B = tracker %d + scan %d + stack %d (limit %d)\n", \
 	      ram, sz["trk_sizeof_tracker"], sz["trk_sizeof_scan_detections"], st, rlim; \
 	    printf "size-check cortex-m4f: libtrk .text in a typical firmware image %d B (limit %d); no .data/.bss\n", fw, tlim; \
-	    printf "size-check cortex-m4f: the whole libtrk.a .text %d B (limit %d; analysis modules in libtrk_perf.a)\n", lib, tlim; \
+	    printf "size-check cortex-m4f: the whole libtrk.a .text %d B (limit %d; analysis modules in libtrk_perf.a)\n", lib, llim; \
 	    if (st > slim) { print "size-check: FAILED stack, worst path: " path; bad = 1 } \
 	    if (ram > rlim) { print "size-check: FAILED RAM"; bad = 1 } \
 	    if (fw > tlim) { print "size-check: FAILED .text"; bad = 1 } \
-	    if (lib > tlim) { print "size-check: FAILED .text of libtrk.a"; bad = 1 } \
+	    if (lib > llim) { print "size-check: FAILED .text of libtrk.a"; bad = 1 } \
 	    exit bad }' build/cross/cortex-m4f/stack.txt build/cross/cortex-m4f/sizeof-default.txt \
 	  build/cross/cortex-m4f/fw-footprint.txt build/cross/cortex-m4f/size-A.txt
