@@ -38,13 +38,13 @@ void trk_clutter_chi2_reset(const struct trk_clutter_chi2_model *m, struct trk_c
     s->p_value = 1;
     s->threshold = 0;
     s->reject = 0;
-    s->decision = 0;
+    s->decision = TRK_DECISION_CONTINUE;
 }
 
 trk_status trk_clutter_chi2_step(const struct trk_clutter_chi2_model *m, struct trk_clutter_chi2 *s,
-                                 trk_real rho_vg)
+                                 trk_real rho_vg, enum trk_decision *decision)
 {
-    if (!m || !s) return TRK_E_ARG;
+    if (!m || !s || !decision) return TRK_E_ARG;
     if (!isfinite(rho_vg)) return TRK_E_NAN;
     if (!(rho_vg >= 0)) return TRK_E_RANGE;
     s->win[s->head] = rho_vg;
@@ -60,7 +60,8 @@ trk_status trk_clutter_chi2_step(const struct trk_clutter_chi2_model *m, struct 
     s->p_value = trk_chi2_cdf(s->dof, s->stat); /* eq 10, lower tail */
     s->threshold = m->threshold_tab[s->k - 1];
     s->reject = s->p_value <= m->alpha;
-    if (s->reject) s->decision = 1;
+    if (s->reject) s->decision = TRK_DECISION_CONFIRM; /* H0 (clutter) rejected */
+    *decision = s->decision;
     return TRK_OK;
 }
 
@@ -95,13 +96,14 @@ void trk_clutter_amp_reset(const struct trk_clutter_amp_model *m, struct trk_clu
     s->stat = 0;
     s->p_value = 1;
     s->reject = 0;
-    s->decision = 0;
+    s->decision = TRK_DECISION_CONTINUE;
 }
 
 trk_status trk_clutter_amp_step(const struct trk_clutter_amp_model *m, struct trk_clutter_amp *s,
-                                trk_real a_assoc_db, size_t n_others, const trk_real *a_others_db)
+                                trk_real a_assoc_db, size_t n_others, const trk_real *a_others_db,
+                                enum trk_decision *decision)
 {
-    if (!m || !s || (n_others > 0 && !a_others_db)) return TRK_E_ARG;
+    if (!m || !s || !decision || (n_others > 0 && !a_others_db)) return TRK_E_ARG;
     if (n_others > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
     if (!isfinite(a_assoc_db)) return TRK_E_NAN;
     if (!(a_assoc_db >= m->a_min_db)) return TRK_E_RANGE;
@@ -138,7 +140,8 @@ trk_status trk_clutter_amp_step(const struct trk_clutter_amp_model *m, struct tr
         s->p_value = trk_f_sf(s->dof1, s->dof2, s->stat); /* 1 - eq 16 */
     }
     s->reject = s->p_value <= m->alpha;
-    if (s->reject) s->decision = 1;
+    if (s->reject) s->decision = TRK_DECISION_CONFIRM; /* H0 (clutter) rejected */
+    *decision = s->decision;
     return TRK_OK;
 }
 

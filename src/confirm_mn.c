@@ -20,27 +20,31 @@ void trk_mn_reset(const struct trk_mn_model *m, struct trk_mn *s)
     s->history = 0;
     s->t = 0;
     s->count = 0;
-    s->decision = 0;
+    s->decision = TRK_DECISION_CONTINUE;
 }
 
-int trk_mn_step(const struct trk_mn_model *md, struct trk_mn *s, int detected)
+trk_status trk_mn_step(const struct trk_mn_model *md, struct trk_mn *s, int detected,
+                       enum trk_decision *decision)
 {
+    if (!md || !s || !decision) return TRK_E_ARG;
+    if (detected != 0 && detected != 1) return TRK_E_RANGE;
     const int m = md->m, n = md->n;
     if (md->mode == TRK_MN_FIXED) {
         /* count over scans 1..n only */
         if (s->t < (uint32_t)n) {
-            s->count += detected != 0;
-            s->history = (s->history << 1) | (uint64_t)(detected != 0);
+            s->count += detected;
+            s->history = (s->history << 1) | (uint64_t)detected;
         }
-        s->t++;
-        if (s->decision == 0 && s->t <= (uint32_t)n) {
-            if (s->count >= m) s->decision = 1;
-            else if (s->count + (n - (int)s->t) < m) s->decision = -1;
+        if (s->t < UINT32_MAX) s->t++;
+        if (s->decision == TRK_DECISION_CONTINUE && s->t <= (uint32_t)n) {
+            if (s->count >= m) s->decision = TRK_DECISION_CONFIRM;
+            else if (s->count + (n - (int)s->t) < m) s->decision = TRK_DECISION_TERMINATE;
         }
     } else {
         trk_i_window_push(&s->history, &s->count, s->t, n, detected);
-        s->t++;
-        if (s->decision == 0 && s->count >= m) s->decision = 1;
+        if (s->t < UINT32_MAX) s->t++;
+        if (s->decision == TRK_DECISION_CONTINUE && s->count >= m) s->decision = TRK_DECISION_CONFIRM;
     }
-    return s->decision;
+    *decision = s->decision;
+    return TRK_OK;
 }

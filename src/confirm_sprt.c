@@ -43,26 +43,31 @@ void trk_sprt_reset(const struct trk_sprt_model *m, struct trk_sprt *s)
     s->stat = 0;
     s->inc = 0;
     s->t = 0;
-    s->fire = 0;
-    s->decision = 0;
+    s->fire = TRK_DECISION_CONTINUE;
+    s->decision = TRK_DECISION_CONTINUE;
 }
 
-trk_status trk_sprt_step_llr(const struct trk_sprt_model *m, struct trk_sprt *s, trk_real inc)
+trk_status trk_sprt_step_llr(const struct trk_sprt_model *m, struct trk_sprt *s, trk_real inc,
+                             enum trk_decision *decision)
 {
-    if (!m || !s) return TRK_E_ARG;
+    if (!m || !s || !decision) return TRK_E_ARG;
     if (!isfinite(inc)) return TRK_E_NAN;
     s->stat += inc;
     s->inc = inc;
     if (s->t < UINT32_MAX) s->t++;
-    s->fire = s->stat >= m->ln_a ? 1 : (s->stat <= m->ln_b ? -1 : 0);
-    if (s->decision == 0) s->decision = s->fire;
+    s->fire = s->stat >= m->ln_a   ? TRK_DECISION_CONFIRM
+              : s->stat <= m->ln_b ? TRK_DECISION_TERMINATE
+                                   : TRK_DECISION_CONTINUE;
+    if (s->decision == TRK_DECISION_CONTINUE) s->decision = s->fire;
+    *decision = s->decision;
     return TRK_OK;
 }
 
 trk_status trk_sprt_step(const struct trk_sprt_model *m, struct trk_sprt *s, unsigned sensor,
-                         int detected, trk_real pfa)
+                         int detected, trk_real pfa, enum trk_decision *decision)
 {
-    if (!m || !s) return TRK_E_ARG;
+    if (!m || !s || !decision) return TRK_E_ARG;
+    if (detected != 0 && detected != 1) return TRK_E_RANGE;
     trk_real lf0, lf1;
     trk_status st = trk_hmm_log_f0(detected, pfa, &lf0); /* Willett eq 55 factor */
     if (st != TRK_OK) return st;
@@ -72,5 +77,5 @@ trk_status trk_sprt_step(const struct trk_sprt_model *m, struct trk_sprt *s, uns
         st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, &lf1); /* eq 53 factor */
         if (st != TRK_OK) return st;
     }
-    return trk_sprt_step_llr(m, s, lf1 - lf0);
+    return trk_sprt_step_llr(m, s, lf1 - lf0, decision);
 }

@@ -13,20 +13,8 @@
         (void)trk_checked_;               \
     } while (0)
 
-/* Small kernels in *_impl.h are forced inline so that a caller passing
- * constant dimensions (the 2-D CV model) gets fully unrolled code.
- * TRK_SIZE_OPT=1 (default when the compiler optimises for size, -Os) leaves
- * the inlining decision to the compiler instead: the firmware build then keeps
- * one copy of each kernel per file rather than one per call site (see
- * mk/size.mk: make size-report, make cross-sizeopt). Host builds (-O2) keep
- * the forced inlining that the benchmarks were measured with. */
-#ifndef TRK_SIZE_OPT
-#ifdef __OPTIMIZE_SIZE__
-#define TRK_SIZE_OPT 1
-#else
-#define TRK_SIZE_OPT 0
-#endif
-#endif
+/* Small kernels in *_impl.h are forced inline unless TRK_SIZE_OPT (config.h:
+ * default 1 under -Os) leaves the inlining decision to the compiler. */
 #if (defined(__GNUC__) || defined(__clang__)) && !TRK_SIZE_OPT
 #define TRK_INLINE static inline __attribute__((always_inline))
 #else

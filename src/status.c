@@ -1,4 +1,5 @@
-/* status.c - names of status codes and the build's capacities. */
+/* status.c - names of status codes and decisions, and the configuration the
+ * library was built with (trk_config_check(), types.h). */
 #include "trk/types.h"
 
 const char *trk_status_str(trk_status s)
@@ -23,12 +24,28 @@ const char *trk_status_str(trk_status s)
         "TRK_E_DIVERGED",
         "TRK_E_UNSUPPORTED",
         "TRK_E_IO",
+        "TRK_E_ABI",
     };
     if ((unsigned)s >= (unsigned)TRK_STATUS_COUNT) return "TRK_E_UNKNOWN";
     return names[s];
 }
 
+const char *trk_decision_str(enum trk_decision d)
+{
+    switch (d) {
+    case TRK_DECISION_CONTINUE: return "TRK_DECISION_CONTINUE";
+    case TRK_DECISION_CONFIRM: return "TRK_DECISION_CONFIRM";
+    case TRK_DECISION_TERMINATE: return "TRK_DECISION_TERMINATE";
+    }
+    return "TRK_DECISION_UNKNOWN";
+}
+
 size_t trk_max_tracks(void) { return TRK_MAX_TRACKS; }
 size_t trk_max_detections(void) { return TRK_MAX_DETECTIONS; }
 size_t trk_max_sensors(void) { return TRK_MAX_SENSORS; }
+size_t trk_max_state(void) { return TRK_MAX_STATE; }
+size_t trk_max_meas(void) { return TRK_MAX_MEAS; }
+size_t trk_clutter_kmax(void) { return TRK_CLUTTER_KMAX; }
+size_t trk_with_clutter_tests(void) { return TRK_WITH_CLUTTER_TESTS; }
 size_t trk_real_size(void) { return sizeof(trk_real); }
+size_t trk_enum_size(void) { return sizeof(enum trk_decision); }

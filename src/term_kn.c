@@ -19,14 +19,18 @@ void trk_kn_reset(const struct trk_kn_model *m, struct trk_kn *s)
     s->t = 0;
     s->count = 0;
     s->fire = 0;
-    s->decision = 0;
+    s->decision = TRK_DECISION_CONTINUE;
 }
 
-int trk_kn_step(const struct trk_kn_model *m, struct trk_kn *s, int detected)
+trk_status trk_kn_step(const struct trk_kn_model *m, struct trk_kn *s, int detected,
+                       enum trk_decision *decision)
 {
+    if (!m || !s || !decision) return TRK_E_ARG;
+    if (detected != 0 && detected != 1) return TRK_E_RANGE;
     trk_i_window_push(&s->history, &s->count, s->t, m->n, detected);
-    s->t++;
+    if (s->t < UINT32_MAX) s->t++;
     s->fire = s->t >= (uint32_t)m->n && s->count <= m->k;
-    if (s->fire) s->decision = 1;
-    return s->decision;
+    if (s->fire) s->decision = TRK_DECISION_TERMINATE;
+    *decision = s->decision;
+    return TRK_OK;
 }

@@ -29,13 +29,13 @@ void trk_shiryaev_reset(const struct trk_shiryaev_model *m, struct trk_shiryaev 
     s->s = 0;
     s->t = 0;
     s->fire = 0;
-    s->decision = 0;
+    s->decision = TRK_DECISION_CONTINUE;
 }
 
 trk_status trk_shiryaev_step_llr(const struct trk_shiryaev_model *m, struct trk_shiryaev *s,
-                                 trk_real s_inc)
+                                 trk_real s_inc, enum trk_decision *decision)
 {
-    if (!m || !s) return TRK_E_ARG;
+    if (!m || !s || !decision) return TRK_E_ARG;
     if (!isfinite(s_inc)) return TRK_E_NAN;
     trk_real g = s->stat;
     if (!m->rho_zero) {
@@ -48,18 +48,21 @@ trk_status trk_shiryaev_step_llr(const struct trk_shiryaev_model *m, struct trk_
     s->s = s_inc;
     if (s->t < UINT32_MAX) s->t++;
     s->fire = s->stat > m->h;
-    if (s->fire) s->decision = 1;
+    if (s->fire) s->decision = TRK_DECISION_TERMINATE;
+    *decision = s->decision;
     return TRK_OK;
 }
 
 trk_status trk_shiryaev_step(const struct trk_shiryaev_model *m, struct trk_shiryaev *s,
-                             unsigned sensor, int detected, trk_real pfa)
+                             unsigned sensor, int detected, trk_real pfa,
+                             enum trk_decision *decision)
 {
-    if (!m || !s) return TRK_E_ARG;
+    if (!m || !s || !decision) return TRK_E_ARG;
+    if (detected != 0 && detected != 1) return TRK_E_RANGE;
     trk_real lf0, lf1;
     trk_status st = trk_hmm_log_f0(detected, pfa, &lf0); /* eq 7 */
     if (st != TRK_OK) return st;
     st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, &lf1); /* eqs 8-10 */
     if (st != TRK_OK) return st;
-    return trk_shiryaev_step_llr(m, s, lf0 - lf1); /* eq 5 increment */
+    return trk_shiryaev_step_llr(m, s, lf0 - lf1, decision); /* eq 5 increment */
 }

@@ -1,5 +1,10 @@
 /* track_tests.c - dispatch from the tracker to the confirmation and
- * termination tests (see track_tests.h and trk/tracker.h). */
+ * termination tests (see track_tests.h and trk/tracker.h). Every test's step
+ * has the same shape and reports the same sticky enum trk_decision
+ * (types.h), so nothing here translates decision codings: each case feeds
+ * its test the per-scan input and copies the statistic for display. Only the
+ * int forms kept for src/tracker.c (trk_i_confirm_step, trk_i_term_step)
+ * map the enum to their return codes. */
 #include "track_tests.h"
 
 #include "internal.h"
@@ -72,43 +77,58 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
     }
 }
 
-int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
-                       const struct trk_look *look)
+/* d starts as the state's decision: a step that is skipped (no input for
+ * the clutter tests) or refused (pfa outside (0, 1), possible only when
+ * lambda V_G is 0 or huge) leaves the state and the decision as they were. */
+enum trk_decision trk_i_confirm_decide(const struct trk_tracker *t, struct trk_track *tr,
+                                       const struct trk_look *look)
 {
     const union trk_confirm_model *m = &t->confirm_model;
     union trk_confirm_state *c = &tr->test.confirm;
+    const int det = look->detected != 0;
+    enum trk_decision d = TRK_DECISION_CONTINUE;
     switch (t->params.confirm.method) {
     case TRK_CONFIRM_MN:
-        (void)trk_mn_step(&m->mn, &c->mn, look->detected);
+        d = c->mn.decision;
+        TRK_CHECKED(trk_mn_step(&m->mn, &c->mn, det, &d));
         tr->confirm_stat = (trk_real)c->mn.count;
-        return c->mn.decision;
+        break;
     case TRK_CONFIRM_SPRT:
-        /* an invalid pfa (cannot happen: 0 < pfa < 1 unless lambda V_G is 0
-         * or huge) leaves the statistic unchanged */
-        if (look->pfa_gate > 0 && look->pfa_gate < 1)
-            TRK_CHECKED(trk_sprt_step(&m->sprt, &c->sprt, look->sensor_id, look->detected,
-                                      look->pfa_gate));
+        d = c->sprt.decision;
+        TRK_CHECKED(trk_sprt_step(&m->sprt, &c->sprt, look->sensor_id, det, look->pfa_gate, &d));
         tr->confirm_stat = c->sprt.stat;
-        return c->sprt.decision;
+        break;
 #if TRK_WITH_CLUTTER_TESTS
     case TRK_CONFIRM_CLUTTER_CHI2:
-        if (look->has_nearest) TRK_CHECKED(trk_clutter_chi2_step(&m->chi2, &c->chi2, look->rho_vg));
+        d = c->chi2.decision;
+        if (look->has_nearest) TRK_CHECKED(trk_clutter_chi2_step(&m->chi2, &c->chi2, look->rho_vg, &d));
         tr->confirm_stat = c->chi2.p_value;
-        return c->chi2.decision;
+        break;
     case TRK_CONFIRM_CLUTTER_AMP:
+        d = c->amp.decision;
         if (look->has_nearest && look->has_amp)
             TRK_CHECKED(trk_clutter_amp_step(&m->amp, &c->amp, look->a_assoc_db, look->n_others,
-                                             look->a_others_db));
+                                             look->a_others_db, &d));
         tr->confirm_stat = c->amp.p_value;
-        return c->amp.decision;
+        break;
 #endif
-    case TRK_CONFIRM_VISIBILITY: /* tr->vis was updated with this scan */
+    case TRK_CONFIRM_VISIBILITY: /* tr->vis was stepped with this scan */
+        d = tr->vis.decision;
         tr->confirm_stat = tr->vis.pcv;
-        if (tr->vis.confirmed) return 1;
-        return tr->vis.terminated ? -1 : 0; /* confidence fell below p_term: reject */
+        break;
     default: break;
     }
-    return 0;
+    return d;
+}
+
+int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
+                       const struct trk_look *look)
+{
+    switch (trk_i_confirm_decide(t, tr, look)) {
+    case TRK_DECISION_CONFIRM: return 1;
+    case TRK_DECISION_TERMINATE: return -1;
+    default: return 0;
+    }
 }
 
 void trk_i_term_start(const struct trk_tracker *t, struct trk_track *tr)
@@ -128,33 +148,43 @@ void trk_i_term_start(const struct trk_tracker *t, struct trk_track *tr)
     }
 }
 
-int trk_i_term_step(const struct trk_tracker *t, struct trk_track *tr,
-                    const struct trk_look *look)
+enum trk_decision trk_i_term_decide(const struct trk_tracker *t, struct trk_track *tr,
+                                    const struct trk_look *look)
 {
     const union trk_term_model *m = &t->term_model;
     union trk_term_state *e = &tr->test.term;
-    const int pfa_ok = look->pfa_gate > 0 && look->pfa_gate < 1;
+    const int det = look->detected != 0;
+    enum trk_decision d = TRK_DECISION_CONTINUE;
     switch (t->params.term.method) {
     case TRK_TERM_KN:
-        (void)trk_kn_step(&m->kn, &e->kn, look->detected);
+        d = e->kn.decision;
+        TRK_CHECKED(trk_kn_step(&m->kn, &e->kn, det, &d));
         tr->term_stat = (trk_real)e->kn.count;
-        return e->kn.decision;
+        break;
     case TRK_TERM_PAGE:
-        if (pfa_ok)
-            TRK_CHECKED(trk_page_step(&m->page, &e->page, look->sensor_id, look->detected,
-                                      look->pfa_gate));
+        d = e->page.decision;
+        TRK_CHECKED(trk_page_step(&m->page, &e->page, look->sensor_id, det, look->pfa_gate, &d));
         tr->term_stat = e->page.stat;
-        return e->page.decision;
+        break;
     case TRK_TERM_SHIRYAEV:
-        if (pfa_ok)
-            TRK_CHECKED(trk_shiryaev_step(&m->shiryaev, &e->shiryaev, look->sensor_id,
-                                          look->detected, look->pfa_gate));
+        d = e->shiryaev.decision;
+        TRK_CHECKED(trk_shiryaev_step(&m->shiryaev, &e->shiryaev, look->sensor_id, det,
+                                      look->pfa_gate, &d));
         tr->term_stat = e->shiryaev.stat;
-        return e->shiryaev.decision;
+        break;
     case TRK_TERM_VISIBILITY:
+        /* the visibility state serves both roles: CONFIRM (of its own
+         * confirmation rule) means "continue" to a termination test */
+        d = tr->vis.decision;
         tr->term_stat = tr->vis.pcv;
-        return tr->vis.terminated;
+        break;
     default: break;
     }
-    return 0;
+    return d == TRK_DECISION_TERMINATE ? TRK_DECISION_TERMINATE : TRK_DECISION_CONTINUE;
+}
+
+int trk_i_term_step(const struct trk_tracker *t, struct trk_track *tr,
+                    const struct trk_look *look)
+{
+    return trk_i_term_decide(t, tr, look) == TRK_DECISION_TERMINATE;
 }

@@ -1,9 +1,10 @@
 /* track_tests.h (private) - the tracker's dispatch to the per-track
  * confirmation and termination tests chosen in its configuration. The
  * tracker holds each chosen test's model once (confirm_model, term_model);
- * every track holds only its state (tr->test.confirm, then tr->test.term). Adding a method:
- * a case in each function of track_tests.c, a member of the state and model
- * unions in trk/tracker.h, and its parameter check. */
+ * every track holds only its state (tr->test.confirm, then tr->test.term).
+ * Adding a method: a test with the common step shape and enum trk_decision
+ * (types.h), a case in each function of track_tests.c, a member of the state
+ * and model unions in trk/tracker.h, and its parameter check. */
 #ifndef TRK_TRACK_TESTS_H
 #define TRK_TRACK_TESTS_H
 
@@ -38,14 +39,26 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
 /* Start the confirmation test of a new tentative track. */
 void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr);
 
-/* One scan of a tentative track: +1 confirm, -1 reject, 0 pending. */
-int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
-                       const struct trk_look *look);
+/* One scan of a tentative track through its confirmation test: the test's
+ * sticky decision (CONTINUE, CONFIRM, or TERMINATE = rejected). Sets
+ * tr->confirm_stat. */
+enum trk_decision trk_i_confirm_decide(const struct trk_tracker *t, struct trk_track *tr,
+                                       const struct trk_look *look);
 
 /* Start the termination test of a newly confirmed track. */
 void trk_i_term_start(const struct trk_tracker *t, struct trk_track *tr);
 
-/* One scan of a confirmed track: 1 terminate, 0 continue. */
+/* One scan of a confirmed track through its termination test: CONTINUE or
+ * TERMINATE. Sets tr->term_stat. */
+enum trk_decision trk_i_term_decide(const struct trk_tracker *t, struct trk_track *tr,
+                                    const struct trk_look *look);
+
+/* The int forms src/tracker.c calls (kept with their prototypes while the
+ * tracker is rewritten; new code calls the _decide functions):
+ * trk_i_confirm_step: +1 confirm, -1 reject, 0 pending;
+ * trk_i_term_step: 1 terminate, 0 continue. */
+int trk_i_confirm_step(const struct trk_tracker *t, struct trk_track *tr,
+                       const struct trk_look *look);
 int trk_i_term_step(const struct trk_tracker *t, struct trk_track *tr,
                     const struct trk_look *look);
 

@@ -2,6 +2,8 @@
  * Kennedy 2008 eqs 1-2, 21-24; CONVENTIONS "Visibility (IPDA)"). */
 #include "trk/visibility.h"
 
+#include <limits.h>
+
 static int prob(trk_real p) { return p >= 0 && p <= 1; }
 
 trk_status trk_visibility_model_init(struct trk_visibility_model *m, const struct trk_visibility_params *p)
@@ -24,8 +26,7 @@ void trk_visibility_reset(const struct trk_visibility_model *m, struct trk_visib
     v->pv_pred = m->params.pv0;
     v->pv = m->params.pv0;
     v->pcv = m->params.pcv0;
-    v->confirmed = 0;
-    v->terminated = 0;
+    v->decision = TRK_DECISION_CONTINUE;
     v->scans = 0;
 }
 
@@ -66,21 +67,36 @@ trk_status trk_visibility_update_log(const struct trk_visibility_model *m, struc
         const trk_real z = trk_log(pv_pred) - trk_log1p(-pv_pred) + ln_lam;
         pv = z >= 0 ? 1 / (1 + trk_exp(-z)) : trk_exp(z) / (1 + trk_exp(z));
     }
-    /* eq 2: smoothed confidence; sticky decisions */
+    /* eq 2: smoothed confidence */
     const trk_real pcv = (1 - p->omega_c) * pv + p->omega_c * v->pcv;
     v->pv_pred = pv_pred;
     v->pv = pv;
     v->pcv = pcv;
-    if (pcv >= p->p_con) v->confirmed = 1;
-    if (pcv < p->p_term) v->terminated = 1;
-    v->scans++;
+    /* sticky decision (visibility.h): CONTINUE -> CONFIRM -> TERMINATE or
+     * CONTINUE -> TERMINATE; TERMINATE is final (p_term < p_con: at most one
+     * of the two rules fires in a scan) */
+    if (v->decision != TRK_DECISION_TERMINATE) {
+        if (pcv < p->p_term) v->decision = TRK_DECISION_TERMINATE;
+        else if (v->decision == TRK_DECISION_CONTINUE && pcv >= p->p_con) v->decision = TRK_DECISION_CONFIRM;
+    }
+    if (v->scans < INT_MAX) v->scans++;
     return TRK_OK;
 }
 
-trk_status trk_visibility_update(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pd,
-                                 trk_real pg, size_t n, const trk_real *gd, trk_real rho, const trk_real *log_la)
+trk_status trk_visibility_step(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pd,
+                               trk_real pg, trk_real log_sum, enum trk_decision *decision)
 {
-    if (!m || !v || (n > 0 && !gd)) return TRK_E_ARG;
+    if (!m || !v || !decision) return TRK_E_ARG;
+    trk_status st = trk_visibility_update_log(m, v, pd, pg, log_sum);
+    if (st != TRK_OK) return st;
+    *decision = v->decision;
+    return TRK_OK;
+}
+
+trk_status trk_visibility_log_sum(size_t n, const trk_real *gd, trk_real rho, const trk_real *log_la,
+                                  trk_real *log_sum)
+{
+    if (!log_sum || (n > 0 && !gd)) return TRK_E_ARG;
     if (n > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
     if (!isfinite(rho)) return TRK_E_NAN;
     if (!(rho > 0)) return TRK_E_RANGE;
@@ -93,11 +109,12 @@ trk_status trk_visibility_update(const struct trk_visibility_model *m, struct tr
         const trk_real t = trk_log(gd[i]) - ln_rho + (log_la ? log_la[i] : 0);
         if (t > top) top = t;
     }
-    trk_real log_sum = top;
+    trk_real ls = top;
     if (top > -(trk_real)INFINITY) {
         trk_real sum = 0;
         for (size_t i = 0; i < n; i++) sum += trk_exp(trk_log(gd[i]) - ln_rho + (log_la ? log_la[i] : 0) - top);
-        log_sum = top + trk_log(sum);
+        ls = top + trk_log(sum);
     }
-    return trk_visibility_update_log(m, v, pd, pg, log_sum);
+    *log_sum = ls;
+    return TRK_OK;
 }

@@ -6,6 +6,27 @@
 #include "hmm_brute.h"
 #include "trk/confirm_sprt.h"
 
+/* The steps through the decision output: on success the decision written
+ * must be the state's sticky one; on error *decision stays as it was. */
+#define UNWRITTEN ((enum trk_decision)77)
+static trk_status step(const struct trk_sprt_model *m, struct trk_sprt *s, unsigned sensor,
+                       int detected, trk_real pfa)
+{
+    enum trk_decision d = UNWRITTEN;
+    const trk_status st = trk_sprt_step(m, s, sensor, detected, pfa, &d);
+    if (st == TRK_OK) assert_int_equal(d, s->decision);
+    else assert_int_equal(d, UNWRITTEN);
+    return st;
+}
+static trk_status step_llr(const struct trk_sprt_model *m, struct trk_sprt *s, trk_real inc)
+{
+    enum trk_decision d = UNWRITTEN;
+    const trk_status st = trk_sprt_step_llr(m, s, inc, &d);
+    if (st == TRK_OK) assert_int_equal(d, s->decision);
+    else assert_int_equal(d, UNWRITTEN);
+    return st;
+}
+
 static struct trk_sprt_params fixed(trk_real pd, trk_real alpha, trk_real beta)
 {
     struct trk_sprt_params p;
@@ -36,19 +57,21 @@ static void test_fixed_pd(void **state)
     TRK_ASSERT_NEAR(m.ln_b, log(b / (1 - a)), 0, TRK_TOL(1e-15, 1e-6));
     const int d[8] = {1, 0, 1, 1, 0, 1, 1, 1};
     double llr = 0;
-    int dec = 0;
+    enum trk_decision dec = TRK_DECISION_CONTINUE;
     for (int t = 0; t < 8; t++) {
         const double pfa = 0.05 + 0.02 * t;
-        TRK_ASSERT_OK(trk_sprt_step(&m, &s, 3, d[t], (trk_real)pfa)); /* sensor ignored (fixed P_D) */
+        TRK_ASSERT_OK(step(&m, &s, 3, d[t], (trk_real)pfa)); /* sensor ignored (fixed P_D) */
         const double pf = (double)(trk_real)pfa;
         llr += d[t] ? log(pd / pf) : log1p(-pd) - log1p(-pf);
         TRK_ASSERT_NEAR(s.stat, llr, 0, TRK_TOL(1e-14, 1e-6));
-        const int fire = llr >= log((1 - b) / a) ? 1 : llr <= log(b / (1 - a)) ? -1 : 0;
+        const enum trk_decision fire = llr >= log((1 - b) / a)   ? TRK_DECISION_CONFIRM
+                                       : llr <= log(b / (1 - a)) ? TRK_DECISION_TERMINATE
+                                                                 : TRK_DECISION_CONTINUE;
         assert_int_equal(s.fire, fire);
-        if (!dec) dec = fire;
+        if (dec == TRK_DECISION_CONTINUE) dec = fire;
         assert_int_equal(s.decision, dec);
     }
-    assert_int_equal(dec, 1);
+    assert_int_equal(dec, TRK_DECISION_CONFIRM);
 }
 
 static void test_ties_and_sticky(void **state)
@@ -58,19 +81,27 @@ static void test_ties_and_sticky(void **state)
     struct trk_sprt_model m;
     struct trk_sprt s;
     start(&m, &s, &p);
-    TRK_ASSERT_OK(trk_sprt_step_llr(&m, &s, m.ln_a)); /* llr == ln A exactly: confirm */
-    assert_int_equal(s.fire, 1);
-    TRK_ASSERT_OK(trk_sprt_step_llr(&m, &s, -100));
-    assert_int_equal(s.fire, -1);
-    assert_int_equal(s.decision, 1); /* the first decision holds */
+    TRK_ASSERT_OK(step_llr(&m, &s, m.ln_a)); /* llr == ln A exactly: confirm */
+    assert_int_equal(s.fire, TRK_DECISION_CONFIRM);
+    assert_int_equal(s.decision, TRK_DECISION_CONFIRM);
+    TRK_ASSERT_OK(step_llr(&m, &s, -100));
+    assert_int_equal(s.fire, TRK_DECISION_TERMINATE);
+    assert_int_equal(s.decision, TRK_DECISION_CONFIRM); /* the first decision holds */
+    TRK_ASSERT_NEAR(s.stat, (double)m.ln_a - 100, 0, TRK_TOL(1e-14, 1e-6)); /* llr runs on */
+    TRK_ASSERT_OK(step_llr(&m, &s, 100 - m.ln_a)); /* back between the thresholds */
+    assert_int_equal(s.fire, TRK_DECISION_CONTINUE);
+    assert_int_equal(s.decision, TRK_DECISION_CONFIRM);
     trk_sprt_reset(&m, &s);
-    assert_true(s.stat == 0 && s.decision == 0 && s.t == 0);
-    TRK_ASSERT_OK(trk_sprt_step_llr(&m, &s, m.ln_b)); /* llr == ln B exactly: reject */
-    assert_int_equal(s.fire, -1);
-    assert_int_equal(s.decision, -1);
-    TRK_ASSERT_OK(trk_sprt_step_llr(&m, &s, 100));
-    assert_int_equal(s.fire, 1);
-    assert_int_equal(s.decision, -1);
+    assert_true(s.stat == 0 && s.decision == TRK_DECISION_CONTINUE && s.t == 0);
+    TRK_ASSERT_OK(step_llr(&m, &s, m.ln_b)); /* llr == ln B exactly: reject */
+    assert_int_equal(s.fire, TRK_DECISION_TERMINATE);
+    assert_int_equal(s.decision, TRK_DECISION_TERMINATE);
+    TRK_ASSERT_OK(step_llr(&m, &s, 100));
+    assert_int_equal(s.fire, TRK_DECISION_CONFIRM);
+    assert_int_equal(s.decision, TRK_DECISION_TERMINATE);
+    enum trk_decision d = UNWRITTEN; /* the step's output is the sticky decision too */
+    TRK_ASSERT_OK(trk_sprt_step(&m, &s, 0, 1, TRK_REAL_C(0.01), &d));
+    assert_int_equal(d, TRK_DECISION_TERMINATE);
 }
 
 /* HMM model: llr = ln P(d | H1) - ln P(d | H0) over several sensors
@@ -93,7 +124,7 @@ static void test_hmm_vs_enumeration(void **state)
     double lf0 = 0;
     for (int t = 0; t < 16; t++) {
         const double pfa = 0.04 + 0.005 * t;
-        TRK_ASSERT_OK(trk_sprt_step(&m, &s, (unsigned)(t % 2), d[t], (trk_real)pfa));
+        TRK_ASSERT_OK(step(&m, &s, (unsigned)(t % 2), d[t], (trk_real)pfa));
         const double pf = (double)(trk_real)pfa;
         lf0 += d[t] ? log(pf) : log1p(-pf);
         if (t % 2) d1[t / 2] = d[t];
@@ -103,7 +134,7 @@ static void test_hmm_vs_enumeration(void **state)
     const double lf1 = brute_log_lik(8, d0, pp, q, 0.1, 0.9, pp / (pp + q)) +
                        brute_log_lik(8, d1, pp, q, 0.1, 0.9, pp / (pp + q));
     TRK_ASSERT_NEAR(s.stat, lf1 - lf0, 0, TRK_TOL(1e-13, 1e-5));
-    TRK_ASSERT_STATUS(trk_sprt_step(&m, &s, 2, 1, TRK_REAL_C(0.1)), TRK_E_SENSOR);
+    TRK_ASSERT_STATUS(step(&m, &s, 2, 1, TRK_REAL_C(0.1)), TRK_E_SENSOR);
 #else
     skip();
 #endif
@@ -140,12 +171,18 @@ static void test_bad_input(void **state)
     start(&m, &s, &p);
     before = s;
     mbefore = m;
-    TRK_ASSERT_STATUS(trk_sprt_step(&m, &s, 0, 1, 0), TRK_E_RANGE);
-    TRK_ASSERT_STATUS(trk_sprt_step(&m, &s, 0, 0, (trk_real)INFINITY), TRK_E_NAN);
-    TRK_ASSERT_STATUS(trk_sprt_step_llr(&m, &s, (trk_real)NAN), TRK_E_NAN);
-    TRK_ASSERT_STATUS(trk_sprt_step(NULL, &s, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
-    TRK_ASSERT_STATUS(trk_sprt_step(&m, NULL, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
-    TRK_ASSERT_STATUS(trk_sprt_step_llr(NULL, &s, 1), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step(&m, &s, 0, 1, 0), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(step(&m, &s, 0, 0, (trk_real)INFINITY), TRK_E_NAN);
+    TRK_ASSERT_STATUS(step(&m, &s, 0, 2, TRK_REAL_C(0.1)), TRK_E_RANGE); /* detected 0 or 1 */
+    TRK_ASSERT_STATUS(step(&m, &s, 0, -1, TRK_REAL_C(0.1)), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(step_llr(&m, &s, (trk_real)NAN), TRK_E_NAN);
+    TRK_ASSERT_STATUS(step_llr(&m, &s, (trk_real)INFINITY), TRK_E_NAN);
+    TRK_ASSERT_STATUS(step(NULL, &s, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step(&m, NULL, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step_llr(NULL, &s, 1), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step_llr(&m, NULL, 1), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_sprt_step(&m, &s, 0, 1, TRK_REAL_C(0.1), NULL), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_sprt_step_llr(&m, &s, 1, NULL), TRK_E_ARG);
     trk_sprt_reset(NULL, &s); /* no-op */
     assert_memory_equal(&s, &before, sizeof s);
     assert_memory_equal(&m, &mbefore, sizeof m);
@@ -186,13 +223,13 @@ static void test_shared_model(void **state)
         for (int k = 0; k < 2; k++) {
             const unsigned sensor = (unsigned)(t % p.hmm.n_sensors);
             const int det = k == 0 ? t % 3 != 0 : 0; /* track 1: misses only */
-            TRK_ASSERT_OK(trk_sprt_step(&shared, &s[k], sensor, det, TRK_REAL_C(0.05)));
-            TRK_ASSERT_OK(trk_sprt_step(&own[k], &r[k], sensor, det, TRK_REAL_C(0.05)));
+            TRK_ASSERT_OK(step(&shared, &s[k], sensor, det, TRK_REAL_C(0.05)));
+            TRK_ASSERT_OK(step(&own[k], &r[k], sensor, det, TRK_REAL_C(0.05)));
             assert_same_state(&s[k], &r[k]);
         }
     assert_memory_equal(&shared, &copy, sizeof shared);
-    assert_int_equal(s[0].decision, 1);
-    assert_int_equal(s[1].decision, -1);
+    assert_int_equal(s[0].decision, TRK_DECISION_CONFIRM);
+    assert_int_equal(s[1].decision, TRK_DECISION_TERMINATE);
 }
 
 static void test_long_runs(void **state)
@@ -204,9 +241,9 @@ static void test_long_runs(void **state)
     TRK_ASSERT_OK(trk_sprt_model_init(&m, &p));
     for (int det = 0; det < 2; det++) {
         trk_sprt_reset(&m, &s);
-        for (long t = 0; t < 1000000; t++) TRK_ASSERT_OK(trk_sprt_step(&m, &s, 0, det, TRK_REAL_C(1e-7)));
+        for (long t = 0; t < 1000000; t++) TRK_ASSERT_OK(step(&m, &s, 0, det, TRK_REAL_C(1e-7)));
         assert_true(isfinite((double)s.stat));
-        assert_int_equal(s.decision, det ? 1 : -1);
+        assert_int_equal(s.decision, det ? TRK_DECISION_CONFIRM : TRK_DECISION_TERMINATE);
         assert_true(det ? s.stat > 1e6 : s.stat < -1e6);
     }
 }

@@ -6,6 +6,27 @@
 #include "hmm_brute.h"
 #include "trk/term_page.h"
 
+/* The steps through the decision output: on success the decision written
+ * must be the state's sticky one; on error *decision stays as it was. */
+#define UNWRITTEN ((enum trk_decision)77)
+static trk_status step(const struct trk_page_model *m, struct trk_page *s, unsigned sensor,
+                       int detected, trk_real pfa)
+{
+    enum trk_decision d = UNWRITTEN;
+    const trk_status st = trk_page_step(m, s, sensor, detected, pfa, &d);
+    if (st == TRK_OK) assert_int_equal(d, s->decision);
+    else assert_int_equal(d, UNWRITTEN);
+    return st;
+}
+static trk_status step_llr(const struct trk_page_model *m, struct trk_page *s, trk_real inc)
+{
+    enum trk_decision d = UNWRITTEN;
+    const trk_status st = trk_page_step_llr(m, s, inc, &d);
+    if (st == TRK_OK) assert_int_equal(d, s->decision);
+    else assert_int_equal(d, UNWRITTEN);
+    return st;
+}
+
 static struct trk_page_params params(unsigned ns, trk_real h)
 {
     const struct trk_hmm_sensor_params sp = {TRK_REAL_C(0.1) / 3, TRK_REAL_C(0.1), TRK_REAL_C(0.1),
@@ -36,19 +57,19 @@ static void test_fixed_pd_closed_form(void **state)
     const int d[12] = {0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0};
     const double pd = (double)TRK_REAL_C(0.6), pfa = (double)TRK_REAL_C(0.02);
     double c = 0;
-    int dec = 0;
+    enum trk_decision dec = TRK_DECISION_CONTINUE;
     for (int t = 0; t < 12; t++) {
-        TRK_ASSERT_OK(trk_page_step(&m, &pg, 0, d[t], TRK_REAL_C(0.02)));
+        TRK_ASSERT_OK(step(&m, &pg, 0, d[t], TRK_REAL_C(0.02)));
         const double s = d[t] ? log(pfa / pd) : log((1 - pfa) / (1 - pd));
         c = c + s > 0 ? c + s : 0;
         TRK_ASSERT_NEAR(pg.s, s, 0, TRK_TOL(1e-14, 1e-6));
         TRK_ASSERT_NEAR(pg.stat, c, 1e-300, TRK_TOL(1e-14, 1e-6));
         assert_int_equal(pg.fire, c > 3);
-        if (c > 3) dec = 1;
+        if (c > 3) dec = TRK_DECISION_TERMINATE;
         assert_int_equal(pg.decision, dec);
         assert_int_equal(pg.t, t + 1);
     }
-    assert_int_equal(dec, 1); /* 0.896 per miss: fires after four misses in a row */
+    assert_int_equal(dec, TRK_DECISION_TERMINATE); /* 0.896 per miss: fires after four misses in a row */
 }
 
 /* Without a reset to 0, sum s = sum ln f0 - ln P(d | H1) (eq 53 by
@@ -64,7 +85,7 @@ static void test_increments_vs_enumeration(void **state)
     double sum_s = 0, sum_f0 = 0;
     for (int t = 0; t < 16; t++) {
         const double pfa = 0.05 + 0.01 * t;
-        TRK_ASSERT_OK(trk_page_step(&m, &pg, 0, d[t], (trk_real)pfa));
+        TRK_ASSERT_OK(step(&m, &pg, 0, d[t], (trk_real)pfa));
         sum_s += (double)pg.s;
         sum_f0 += d[t] ? log((double)(trk_real)pfa) : log1p(-(double)(trk_real)pfa);
     }
@@ -81,19 +102,19 @@ static void test_strict_and_sticky(void **state)
     struct trk_page_model m;
     struct trk_page pg;
     start(&m, &pg, &p);
-    for (int i = 0; i < 4; i++) TRK_ASSERT_OK(trk_page_step_llr(&m, &pg, TRK_REAL_C(0.5)));
+    for (int i = 0; i < 4; i++) TRK_ASSERT_OK(step_llr(&m, &pg, TRK_REAL_C(0.5)));
     assert_true(pg.stat == 2); /* c == h: no firing */
     assert_int_equal(pg.fire, 0);
-    assert_int_equal(pg.decision, 0);
-    TRK_ASSERT_OK(trk_page_step_llr(&m, &pg, TRK_REAL_C(0.25)));
+    assert_int_equal(pg.decision, TRK_DECISION_CONTINUE);
+    TRK_ASSERT_OK(step_llr(&m, &pg, TRK_REAL_C(0.25)));
     assert_int_equal(pg.fire, 1);
-    assert_int_equal(pg.decision, 1);
-    TRK_ASSERT_OK(trk_page_step_llr(&m, &pg, -10));
+    assert_int_equal(pg.decision, TRK_DECISION_TERMINATE);
+    TRK_ASSERT_OK(step_llr(&m, &pg, -10));
     assert_true(pg.stat == 0); /* clamped at 0, no reset after the decision */
     assert_int_equal(pg.fire, 0);
-    assert_int_equal(pg.decision, 1); /* sticky */
+    assert_int_equal(pg.decision, TRK_DECISION_TERMINATE); /* sticky */
     trk_page_reset(&m, &pg);
-    assert_true(pg.stat == 0 && pg.decision == 0 && pg.t == 0);
+    assert_true(pg.stat == 0 && pg.decision == TRK_DECISION_CONTINUE && pg.t == 0);
 }
 
 /* Multisensor: two sensors interleaved give the same increments as each
@@ -112,9 +133,9 @@ static void test_multisensor(void **state)
         const unsigned sensor = (unsigned)((t * 7 + t / 3) % 2);
         const int det = (t * 5) % 7 < 2;
         const trk_real pfa = TRK_REAL_C(0.05) + TRK_REAL_C(0.002) * (trk_real)t;
-        TRK_ASSERT_OK(trk_page_step(&m2, &both, sensor, det, pfa));
+        TRK_ASSERT_OK(step(&m2, &both, sensor, det, pfa));
         struct trk_page *one = sensor ? &b : &a;
-        TRK_ASSERT_OK(trk_page_step(&m1, one, 0, det, pfa));
+        TRK_ASSERT_OK(step(&m1, one, 0, det, pfa));
         TRK_ASSERT_NEAR(both.s, one->s, 0, TRK_TOL(1e-15, 1e-6));
     }
 #else
@@ -147,18 +168,21 @@ static void test_bad_input(void **state)
     struct trk_page pg, before;
     p = params(1, 3);
     start(&m, &pg, &p);
-    TRK_ASSERT_OK(trk_page_step(&m, &pg, 0, 0, TRK_REAL_C(0.1)));
+    TRK_ASSERT_OK(step(&m, &pg, 0, 0, TRK_REAL_C(0.1)));
     before = pg;
     mbefore = m;
-    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 0, 1, 0), TRK_E_RANGE);
-    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 0, 1, 1), TRK_E_RANGE);
-    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 0, 1, (trk_real)NAN), TRK_E_NAN);
-    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 1, 1, TRK_REAL_C(0.1)), TRK_E_SENSOR);
-    TRK_ASSERT_STATUS(trk_page_step_llr(&m, &pg, (trk_real)INFINITY), TRK_E_NAN);
-    TRK_ASSERT_STATUS(trk_page_step(NULL, &pg, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
-    TRK_ASSERT_STATUS(trk_page_step(&m, NULL, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
-    TRK_ASSERT_STATUS(trk_page_step_llr(NULL, &pg, 1), TRK_E_ARG);
-    TRK_ASSERT_STATUS(trk_page_step_llr(&m, NULL, 1), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step(&m, &pg, 0, 1, 0), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(step(&m, &pg, 0, 1, 1), TRK_E_RANGE);
+    TRK_ASSERT_STATUS(step(&m, &pg, 0, 1, (trk_real)NAN), TRK_E_NAN);
+    TRK_ASSERT_STATUS(step(&m, &pg, 1, 1, TRK_REAL_C(0.1)), TRK_E_SENSOR);
+    TRK_ASSERT_STATUS(step_llr(&m, &pg, (trk_real)INFINITY), TRK_E_NAN);
+    TRK_ASSERT_STATUS(step(NULL, &pg, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step(&m, NULL, 0, 1, TRK_REAL_C(0.1)), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step_llr(NULL, &pg, 1), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step_llr(&m, NULL, 1), TRK_E_ARG);
+    TRK_ASSERT_STATUS(step(&m, &pg, 0, 2, TRK_REAL_C(0.1)), TRK_E_RANGE); /* detected 0 or 1 */
+    TRK_ASSERT_STATUS(trk_page_step(&m, &pg, 0, 1, TRK_REAL_C(0.1), NULL), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_page_step_llr(&m, &pg, 1, NULL), TRK_E_ARG);
     trk_page_reset(NULL, &pg); /* no-op */
     assert_memory_equal(&pg, &before, sizeof pg);
     assert_memory_equal(&m, &mbefore, sizeof m);
@@ -196,8 +220,8 @@ static void test_shared_model(void **state)
             const unsigned sensor = (unsigned)(t % p.hmm.n_sensors);
             const int det = (t * (k + 3) + k) % 5 < 2;
             const trk_real pfa = TRK_REAL_C(0.01) * (trk_real)(k + 1);
-            TRK_ASSERT_OK(trk_page_step(&shared, &s[k], sensor, det, pfa));
-            TRK_ASSERT_OK(trk_page_step(&own[k], &r[k], sensor, det, pfa));
+            TRK_ASSERT_OK(step(&shared, &s[k], sensor, det, pfa));
+            TRK_ASSERT_OK(step(&own[k], &r[k], sensor, det, pfa));
             assert_same_state(&s[k], &r[k]);
         }
     assert_memory_equal(&shared, &copy, sizeof shared);
@@ -217,15 +241,15 @@ static void test_long_runs(void **state)
         trk_page_reset(&m, &pg);
         for (long t = 0; t < 1000000; t++) {
             const int det = mode == 1 || (mode == 2 && t % 3 == 0);
-            TRK_ASSERT_OK(trk_page_step(&m, &pg, (unsigned)(t % p.hmm.n_sensors), det, TRK_REAL_C(1e-6)));
+            TRK_ASSERT_OK(step(&m, &pg, (unsigned)(t % p.hmm.n_sensors), det, TRK_REAL_C(1e-6)));
         }
         assert_true(isfinite((double)pg.stat) && pg.stat >= 0);
         assert_int_equal(pg.t, 1000000);
         if (mode == 0) { /* each miss adds ln((1-1e-6)/(1-pd_mix)) >= ln(1/0.9) */
             assert_true(pg.stat > 1e5);
-            assert_int_equal(pg.decision, 1);
+            assert_int_equal(pg.decision, TRK_DECISION_TERMINATE);
         }
-        if (mode == 1) assert_true(pg.stat == 0 && pg.decision == 0);
+        if (mode == 1) assert_true(pg.stat == 0 && pg.decision == TRK_DECISION_CONTINUE);
     }
 }
 

@@ -54,7 +54,8 @@ static void test_clutter_unsupported(void **state)
     const struct trk_clutter_chi2_params cp = {TRK_REAL_C(0.05), 3};
     TRK_ASSERT_OK(trk_clutter_chi2_model_init(&m, &cp));
     trk_clutter_chi2_reset(&m, &s);
-    TRK_ASSERT_OK(trk_clutter_chi2_step(&m, &s, TRK_REAL_C(0.5)));
+    enum trk_decision d;
+    TRK_ASSERT_OK(trk_clutter_chi2_step(&m, &s, TRK_REAL_C(0.5), &d));
     TRK_ASSERT_NEAR(s.p_value, -expm1(-0.5), 0, TRK_TOL(1e-14, 1e-6)); /* chi2(2) cdf at 1 */
 }
 

@@ -23,9 +23,10 @@
  * (dof2 = 0) there is no test: stat 0, p_value 1. With So = 0 < Sa the
  * statistic is infinite: stat = TRK_REAL_MAX, p_value 0.
  *
- * Decisions are sticky (+1 confirm = H0 rejected; these tests never reject a
- * tentative track: pair them with a maximum tentative life). Statistics keep
- * running after a decision.
+ * Decisions are sticky (enum trk_decision, types.h): TRK_DECISION_CONFIRM at
+ * the first update that rejects H0; these tests never reject a tentative
+ * track (never TERMINATE: pair them with a maximum tentative life).
+ * Statistics keep running after a decision.
  *
  * Each test is split in two: a model (validated parameters and, for the
  * density test, the threshold table for K = 1..kmax, which costs a few
@@ -37,14 +38,8 @@
 
 #include "trk/types.h"
 
-/* Largest window (updates) of the clutter tests; per-track storage grows
- * with it. Override with -DTRK_CLUTTER_KMAX=n. */
-#ifndef TRK_CLUTTER_KMAX
-#define TRK_CLUTTER_KMAX 32
-#endif
-#if TRK_CLUTTER_KMAX < 1 || TRK_CLUTTER_KMAX > 1024
-#error "TRK_CLUTTER_KMAX must be in 1..1024"
-#endif
+/* The largest window, TRK_CLUTTER_KMAX (default 32), is a knob of
+ * trk/config.h: per-track storage grows with it. */
 
 /* ---------------------------------------------------------------- density */
 
@@ -72,7 +67,7 @@ struct trk_clutter_chi2 {
     trk_real p_value;      /* P(chi2(2K) <= Z_D); 1 before the first update */
     trk_real threshold;    /* model threshold_tab[K-1]: reject <=> stat <= threshold */
     int reject;            /* p_value <= alpha at the latest update */
-    int decision;          /* 1 confirmed (sticky), 0 pending */
+    enum trk_decision decision; /* sticky: CONTINUE or CONFIRM */
 };
 
 /* Validate and compute the threshold table. TRK_E_ARG NULL, TRK_E_NAN alpha
@@ -85,11 +80,13 @@ TRK_NODISCARD trk_status trk_clutter_chi2_model_init(struct trk_clutter_chi2_mod
  * or s is NULL. */
 void trk_clutter_chi2_reset(const struct trk_clutter_chi2_model *m, struct trk_clutter_chi2 *s);
 
-/* One update with rho_vg = rho V_g of the nearest peak (>= 0).
- * TRK_E_ARG NULL, TRK_E_NAN not finite, TRK_E_RANGE negative; *s untouched
- * on error. */
+/* One update with rho_vg = rho V_g of the nearest peak (>= 0). Writes the
+ * (sticky) decision to *decision. TRK_E_ARG NULL m, s or decision, TRK_E_NAN
+ * rho_vg not finite, TRK_E_RANGE negative; *s and *decision untouched on
+ * error. */
 TRK_NODISCARD trk_status trk_clutter_chi2_step(const struct trk_clutter_chi2_model *m,
-                                               struct trk_clutter_chi2 *s, trk_real rho_vg);
+                                               struct trk_clutter_chi2 *s, trk_real rho_vg,
+                                               enum trk_decision *decision);
 
 /* ---------------------------------------------------------------- amplitude */
 
@@ -117,7 +114,7 @@ struct trk_clutter_amp {
     trk_real stat;         /* Z_A */
     trk_real p_value;      /* P(F(dof1, dof2) >= Z_A); 1 before any test */
     int reject;            /* p_value <= alpha at the latest update */
-    int decision;          /* 1 confirmed (sticky), 0 pending */
+    enum trk_decision decision; /* sticky: CONTINUE or CONFIRM */
 };
 
 /* TRK_E_ARG NULL, TRK_E_NAN non-finite, TRK_E_RANGE alpha outside (0, 1) or
@@ -130,12 +127,14 @@ void trk_clutter_amp_reset(const struct trk_clutter_amp_model *m, struct trk_clu
 
 /* One update: a_assoc_db the associated peak's SNR, a_others_db[n_others]
  * the other peaks of the scan (may be NULL when n_others = 0), all dB.
- * TRK_E_ARG NULL, TRK_E_NAN non-finite amplitude, TRK_E_RANGE an amplitude
- * below a_min_db, TRK_E_CAPACITY n_others > TRK_MAX_DETECTIONS; *s untouched
- * on error. */
+ * Writes the (sticky) decision to *decision. TRK_E_ARG NULL m, s, decision
+ * (or a_others_db with n_others > 0), TRK_E_CAPACITY n_others >
+ * TRK_MAX_DETECTIONS, TRK_E_NAN non-finite amplitude, TRK_E_RANGE an
+ * amplitude below a_min_db; *s and *decision untouched on error. */
 TRK_NODISCARD trk_status trk_clutter_amp_step(const struct trk_clutter_amp_model *m,
                                               struct trk_clutter_amp *s, trk_real a_assoc_db,
-                                              size_t n_others, const trk_real *a_others_db);
+                                              size_t n_others, const trk_real *a_others_db,
+                                              enum trk_decision *decision);
 
 /* Upper alpha-quantile of F(dof1, dof2) of the current window (reject <=>
  * stat >= threshold), solved on demand (tens of microseconds; the decision

@@ -1,12 +1,17 @@
-/* trk/config.h - compile-time capacities and the scalar type.
+/* trk/config.h - every compile-time knob of trk: capacities, options and the
+ * scalar type, each with its default and a check that says how to fix an
+ * impossible value.
  *
- * Every capacity is a default that a build may override with -DNAME=value or by
+ * A knob is a default that a build may override with -DNAME=value or by
  * pointing TRK_CONFIG_FILE at a header of its own (-DTRK_CONFIG_FILE='"my_trk.h"'),
- * which is included first. check_config.h rejects impossible combinations with
- * an #error that says how to fix them.
+ * which is included first. check_config.h (included at the end) and the
+ * #error lines below reject impossible combinations at compile time.
  *
- * The library and the program that links it must agree on these values:
- * trk_config_check() (types.h) compares the header's view with the library's.
+ * The library and the program that links it must agree on every knob that
+ * sets a struct layout (all of them except TRK_SIZE_OPT): trk_config_check()
+ * (types.h) compares the header's view with the library's and returns
+ * TRK_E_ABI on a mismatch; trk_tracker_abi_check() (tracker.h) adds the size
+ * of struct trk_tracker.
  */
 #ifndef TRK_CONFIG_H
 #define TRK_CONFIG_H
@@ -14,6 +19,24 @@
 #ifdef TRK_CONFIG_FILE
 #include TRK_CONFIG_FILE
 #endif
+
+/* ---------------------------------------------------------------- scalar type */
+
+/* TRK_REAL_FLOAT: a switch, not a value. Undefined (default): trk_real is
+ * double. Defined (-DTRK_REAL_FLOAT, `make REAL=float`): trk_real is float and
+ * the float libm functions (sqrtf, ...) are used, so no soft-double code is
+ * pulled in (Cortex-M4F and other FPUs without double support). Compile the
+ * library and every program that includes trk headers with the same choice
+ * (trk_config_check() compares sizeof(trk_real)); tables carry their real
+ * width and a table of the other width is refused (TRK_E_TABLE_REAL).
+ * types.h defines trk_real, TRK_REAL_C() and trk_sqrt/trk_exp/... from it.
+ * It is tested with #ifdef, so -DTRK_REAL_FLOAT=0 or =double would select
+ * float: refused below. */
+#if defined(TRK_REAL_FLOAT) && (0 - TRK_REAL_FLOAT - 1) == -1
+#error "TRK_REAL_FLOAT is a switch tested with #ifdef: its value 0 (or a word such as double) would still select float. For double leave it undefined; for float use -DTRK_REAL_FLOAT (make REAL=float)"
+#endif
+
+/* ---------------------------------------------------------------- capacities */
 
 /* Live tracks in one trk_tracker (tentative + confirmed). */
 #ifndef TRK_MAX_TRACKS
@@ -41,16 +64,51 @@
 #define TRK_MAX_MEAS 3
 #endif
 
+/* Largest window (updates) of Kennedy's clutter tests (clutter_test.h): the
+ * per-track states struct trk_clutter_chi2 / trk_clutter_amp and the density
+ * test's threshold table hold TRK_CLUTTER_KMAX entries each, so their size
+ * grows with it (at 32: about 0.6 KB per track in double, 0.35 KB in float).
+ * Kennedy 2008 uses a window of 25. */
+#ifndef TRK_CLUTTER_KMAX
+#define TRK_CLUTTER_KMAX 32
+#endif
+#if TRK_CLUTTER_KMAX < 1 || TRK_CLUTTER_KMAX > 1024
+#error "TRK_CLUTTER_KMAX must be in 1..1024 (window of the clutter tests; Kennedy 2008 uses 25); set -DTRK_CLUTTER_KMAX=32"
+#endif
+
+/* ---------------------------------------------------------------- options */
+
 /* Kennedy's clutter tests (clutter_test.h) as confirmation methods of the
- * tracker. Their per-track state carries a window of TRK_CLUTTER_KMAX updates
- * (about 0.6 KB per track in double, 0.35 KB in float), by far the largest
- * member of union trk_confirm_state (trk/tracker.h), which every track slot
- * holds. 0 leaves the clutter tests' states and models out of the track
- * table (then selecting TRK_CONFIRM_CLUTTER_CHI2 or TRK_CONFIRM_CLUTTER_AMP
- * makes trk_tracker_init return TRK_E_UNSUPPORTED); the clutter_test module
- * itself is always built and usable on its own. 1 (default) keeps them. */
+ * tracker. Their per-track state carries a window of TRK_CLUTTER_KMAX updates,
+ * by far the largest member of union trk_confirm_state (trk/tracker.h), which
+ * every track slot holds. 0 leaves the clutter tests' states and models out of
+ * the track table (then selecting TRK_CONFIRM_CLUTTER_CHI2 or
+ * TRK_CONFIRM_CLUTTER_AMP makes trk_tracker_init return TRK_E_UNSUPPORTED);
+ * the clutter_test module itself is always built and usable on its own.
+ * 1 (default) keeps them. */
 #ifndef TRK_WITH_CLUTTER_TESTS
 #define TRK_WITH_CLUTTER_TESTS 1
+#endif
+
+/* The library's small kernels (the *_impl.h headers of src) are forced
+ * inline so that a caller passing constant dimensions (the 2-D CV model) gets
+ * fully unrolled code. TRK_SIZE_OPT = 1 leaves the inlining decision to the
+ * compiler and drops the CV-specialised copies instead: a firmware build then
+ * keeps one copy of each kernel per file rather than one per call site
+ * (mk/size.mk: make size-report, make cross-sizeopt). Default: 1 when the
+ * compiler optimises for size (-Os, __OPTIMIZE_SIZE__), else 0 (host -O2
+ * builds keep the forced inlining the benchmarks were measured with). Code
+ * size and speed only: no struct layout depends on it, so a library and a
+ * program may differ (it is not part of trk_config_check()). */
+#ifndef TRK_SIZE_OPT
+#ifdef __OPTIMIZE_SIZE__
+#define TRK_SIZE_OPT 1
+#else
+#define TRK_SIZE_OPT 0
+#endif
+#endif
+#if TRK_SIZE_OPT != 0 && TRK_SIZE_OPT != 1
+#error "TRK_SIZE_OPT must be 0 (forced inlining, speed) or 1 (compiler's choice, size); set -DTRK_SIZE_OPT=1 or leave it unset (default: 1 under -Os)"
 #endif
 
 #include "trk/check_config.h"

@@ -3,12 +3,14 @@
  *
  * Per scan t = 1, 2, ... the caller passes whether the tentative track had a
  * detection in its gate.
- *   fixed:   count = detections in scans 1..min(t, N); decision +1 (confirm)
- *            at the first t with count >= M, -1 (reject) at the first t with
- *            count + (N - t) < M (the outcome is certain).
- *   sliding: count = detections in the last min(t, N) scans; +1 at the first
- *            t with count >= M; never -1 (pair it with a maximum tentative life).
- * Decisions are sticky: the first one holds, later steps repeat it.
+ *   fixed:   count = detections in scans 1..min(t, N); TRK_DECISION_CONFIRM
+ *            at the first t with count >= M, TRK_DECISION_TERMINATE (reject)
+ *            at the first t with count + (N - t) < M (the outcome is certain).
+ *   sliding: count = detections in the last min(t, N) scans; CONFIRM at the
+ *            first t with count >= M; never TERMINATE (pair it with a maximum
+ *            tentative life).
+ * Decisions are sticky (enum trk_decision, types.h): the first one holds,
+ * later steps repeat it; the count keeps running.
  *
  * struct trk_mn_model (M, N, mode; validated once, shared by every track)
  * and struct trk_mn (one track's window and count). */
@@ -38,7 +40,7 @@ struct trk_mn {
     uint64_t history;      /* bit 0 = latest scan */
     uint32_t t;            /* scans seen */
     int count;             /* current count (see above) */
-    int decision;          /* +1 confirmed, -1 rejected, 0 pending */
+    enum trk_decision decision; /* sticky: CONTINUE, CONFIRM or TERMINATE (rejected) */
 };
 
 /* TRK_E_ARG NULL or bad mode, TRK_E_RANGE m or n out of range. *m untouched
@@ -49,7 +51,11 @@ TRK_NODISCARD trk_status trk_mn_model_init(struct trk_mn_model *m, const struct 
  * m or s is NULL. */
 void trk_mn_reset(const struct trk_mn_model *m, struct trk_mn *s);
 
-/* One scan of a track reset with m; returns the (sticky) decision. */
-int trk_mn_step(const struct trk_mn_model *m, struct trk_mn *s, int detected);
+/* One scan of a track reset with m: detected 1 when the gate held a
+ * detection, 0 when not. Writes the (sticky) decision to *decision.
+ * TRK_E_ARG NULL m, s or decision, TRK_E_RANGE detected not 0 or 1; *s and
+ * *decision untouched on error. */
+TRK_NODISCARD trk_status trk_mn_step(const struct trk_mn_model *m, struct trk_mn *s, int detected,
+                                     enum trk_decision *decision);
 
 #endif

@@ -8,12 +8,13 @@
  *   HMM:        f1 the predictive likelihood of trk/hmm_detect.h (per sensor
  *               Markov state), so llr_t is the log of Willett's eq 49 ratio
  *               (eqs 53 / 55) computed recursively, O(1) per look.
- *   ln A = ln((1 - beta) / alpha): confirm (+1) when llr >= ln A
- *   ln B = ln(beta / (1 - alpha)): reject (-1) when llr <= ln B
+ *   ln A = ln((1 - beta) / alpha): TRK_DECISION_CONFIRM when llr >= ln A
+ *   ln B = ln(beta / (1 - alpha)): TRK_DECISION_TERMINATE (reject) when llr <= ln B
  * alpha = P(confirm | false track), beta = P(reject | true track) (Wald's
  * approximate thresholds). The initiating detection counts only if the
  * caller passes it as the first look (Willett conditions on it, eq 50).
- * The decision is sticky; llr keeps accumulating after it.
+ * The decision (enum trk_decision, types.h) is sticky; llr keeps
+ * accumulating after it.
  *
  * struct trk_sprt_model (Wald thresholds, ln P_D / ln(1 - P_D) or the HMM of
  * every sensor; built once, shared by every track) and struct trk_sprt (one
@@ -52,8 +53,9 @@ struct trk_sprt {
     trk_real stat;              /* llr_t */
     trk_real inc;               /* increment of the latest look */
     uint32_t t;
-    int fire;                   /* +1 llr >= ln A, -1 llr <= ln B, 0 between */
-    int decision;               /* sticky first non-zero fire */
+    enum trk_decision fire;     /* the latest look alone: CONFIRM llr >= ln A,
+                                   TERMINATE llr <= ln B, CONTINUE between */
+    enum trk_decision decision; /* sticky: the first fire that is not CONTINUE */
 };
 
 /* TRK_E_ARG NULL or bad model, TRK_E_NAN non-finite parameter, TRK_E_RANGE
@@ -66,16 +68,20 @@ TRK_NODISCARD trk_status trk_sprt_model_init(struct trk_sprt_model *m,
  * when m or s is NULL. */
 void trk_sprt_reset(const struct trk_sprt_model *m, struct trk_sprt *s);
 
-/* One look: detected != 0 for a detection in the gate, pfa the gate's P_FA.
- * `sensor` selects the Markov state (HMM model; ignored for fixed P_D).
- * TRK_E_ARG NULL, TRK_E_SENSOR unknown sensor (HMM), TRK_E_NAN / TRK_E_RANGE
- * pfa not in (0, 1); *s untouched on error. */
+/* One look: detected 1 for a detection in the gate (0 for none), pfa the
+ * gate's P_FA. `sensor` selects the Markov state (HMM model; ignored for
+ * fixed P_D). Writes the (sticky) decision to *decision. TRK_E_ARG NULL m, s
+ * or decision, TRK_E_RANGE detected not 0 or 1, TRK_E_NAN / TRK_E_RANGE pfa
+ * not in (0, 1), TRK_E_SENSOR unknown sensor (HMM); *s and *decision
+ * untouched on error. */
 TRK_NODISCARD trk_status trk_sprt_step(const struct trk_sprt_model *m, struct trk_sprt *s,
-                                       unsigned sensor, int detected, trk_real pfa);
+                                       unsigned sensor, int detected, trk_real pfa,
+                                       enum trk_decision *decision);
 
 /* One step with a given log-likelihood-ratio increment ln f1 - ln f0 (e.g.
- * with kinematic or amplitude terms). TRK_E_ARG NULL, TRK_E_NAN not finite. */
+ * with kinematic or amplitude terms). TRK_E_ARG NULL, TRK_E_NAN not finite;
+ * *s and *decision untouched on error. */
 TRK_NODISCARD trk_status trk_sprt_step_llr(const struct trk_sprt_model *m, struct trk_sprt *s,
-                                           trk_real inc);
+                                           trk_real inc, enum trk_decision *decision);
 
 #endif

@@ -9,8 +9,9 @@
  *   terminate when c_t > h (strict).
  * Multisensor: every sensor's looks update the one statistic; each sensor
  * keeps its own Markov state (one transition per look of that sensor).
- * The decision is sticky (the first firing holds); the statistic keeps
- * running after it (no reset), as the vectors expect.
+ * The decision (TRK_DECISION_TERMINATE, enum trk_decision in types.h) is
+ * sticky (the first firing holds); the statistic keeps running after it (no
+ * reset), as the vectors expect.
  *
  * struct trk_page_model (threshold and the HMM of every sensor; built once,
  * shared by every track) and struct trk_page (one track: c_t, the per-sensor
@@ -39,7 +40,7 @@ struct trk_page {
     trk_real s;      /* increment of the latest look */
     uint32_t t;      /* looks so far */
     int fire;        /* c_t > h at the latest look */
-    int decision;    /* 1 terminated (sticky), 0 continue */
+    enum trk_decision decision; /* sticky: CONTINUE or TERMINATE */
 };
 
 /* TRK_E_ARG NULL, TRK_E_NAN non-finite parameter, TRK_E_RANGE h <= 0 or a
@@ -52,17 +53,19 @@ TRK_NODISCARD trk_status trk_page_model_init(struct trk_page_model *m,
  * m or s is NULL. */
 void trk_page_reset(const struct trk_page_model *m, struct trk_page *s);
 
-/* One look of `sensor`: detected != 0 when the gate held a detection; pfa the
- * gate's false-alarm probability (Blanding eq 4). TRK_E_ARG NULL,
- * TRK_E_SENSOR unknown sensor, TRK_E_NAN / TRK_E_RANGE pfa not in (0, 1);
- * *s untouched on error. */
+/* One look of `sensor`: detected 1 when the gate held a detection, 0 when
+ * not; pfa the gate's false-alarm probability (Blanding eq 4). Writes the
+ * (sticky) decision to *decision. TRK_E_ARG NULL m, s or decision,
+ * TRK_E_RANGE detected not 0 or 1, TRK_E_NAN / TRK_E_RANGE pfa not in
+ * (0, 1), TRK_E_SENSOR unknown sensor; *s and *decision untouched on error. */
 TRK_NODISCARD trk_status trk_page_step(const struct trk_page_model *m, struct trk_page *s,
-                                       unsigned sensor, int detected, trk_real pfa);
+                                       unsigned sensor, int detected, trk_real pfa,
+                                       enum trk_decision *decision);
 
 /* One step with a given increment s = ln f0 - ln f1 (e.g. a likelihood ratio
  * that also uses amplitude); the HMM state is not touched. TRK_E_ARG NULL,
- * TRK_E_NAN s not finite. */
+ * TRK_E_NAN s not finite; *s and *decision untouched on error. */
 TRK_NODISCARD trk_status trk_page_step_llr(const struct trk_page_model *m, struct trk_page *s,
-                                           trk_real s_inc);
+                                           trk_real s_inc, enum trk_decision *decision);
 
 #endif

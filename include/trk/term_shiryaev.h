@@ -12,7 +12,8 @@
  *   terminate when g_t > h (strict); h = ln(b / (1 - b)) for a posterior
  *   probability threshold b, so any finite h is valid.
  * exp(g) is never formed: g passes +709 and -745 on long runs. The decision
- * is sticky; the statistic keeps running after it. Multisensor as Page.
+ * (TRK_DECISION_TERMINATE, enum trk_decision in types.h) is sticky; the
+ * statistic keeps running after it. Multisensor as Page.
  *
  * struct trk_shiryaev_model (threshold, g_0, ln rho, ln(1 - rho) and the HMM
  * of every sensor; built once, shared by every track) and struct
@@ -48,7 +49,7 @@ struct trk_shiryaev {
     trk_real s;           /* increment of the latest look */
     uint32_t t;
     int fire;             /* g_t > h at the latest look */
-    int decision;         /* 1 terminated (sticky), 0 continue */
+    enum trk_decision decision; /* sticky: CONTINUE or TERMINATE */
 };
 
 /* TRK_E_ARG NULL, TRK_E_NAN non-finite parameter, TRK_E_RANGE beta0 or rho
@@ -61,15 +62,18 @@ TRK_NODISCARD trk_status trk_shiryaev_model_init(struct trk_shiryaev_model *m,
  * when m or s is NULL. */
 void trk_shiryaev_reset(const struct trk_shiryaev_model *m, struct trk_shiryaev *s);
 
-/* One look of `sensor` (see trk_page_step). Same statuses; *s untouched on
- * error. */
+/* One look of `sensor` (see trk_page_step). Same statuses; *s and
+ * *decision untouched on error. */
 TRK_NODISCARD trk_status trk_shiryaev_step(const struct trk_shiryaev_model *m,
                                            struct trk_shiryaev *s, unsigned sensor,
-                                           int detected, trk_real pfa);
+                                           int detected, trk_real pfa,
+                                           enum trk_decision *decision);
 
 /* One step with a given increment s = ln f0 - ln f1 (HMM state untouched).
- * TRK_E_ARG NULL, TRK_E_NAN s not finite. */
+ * TRK_E_ARG NULL, TRK_E_NAN s not finite; *s and *decision untouched on
+ * error. */
 TRK_NODISCARD trk_status trk_shiryaev_step_llr(const struct trk_shiryaev_model *m,
-                                               struct trk_shiryaev *s, trk_real s_inc);
+                                               struct trk_shiryaev *s, trk_real s_inc,
+                                               enum trk_decision *decision);
 
 #endif

@@ -1,9 +1,9 @@
-/* trk/types.h - the scalar type, its math functions, and status codes.
+/* trk/types.h - the scalar type and its math functions, the status codes,
+ * the decision of the per-track tests, and the configuration check.
  *
- * trk_real is double by default; compile everything (library and user code)
- * with -DTRK_REAL_FLOAT for single precision (Cortex-M4F and other FPUs without
- * double support). The float build uses the float libm functions (sqrtf, ...)
- * so no soft-double code is pulled in.
+ * trk_real is double, or float with TRK_REAL_FLOAT (see trk/config.h, where
+ * every compile-time knob is documented and checked). The float build uses
+ * the float libm functions (sqrtf, ...) so no soft-double code is pulled in.
  */
 #ifndef TRK_TYPES_H
 #define TRK_TYPES_H
@@ -89,27 +89,90 @@ typedef enum trk_status {
     TRK_E_DIVERGED,        /* an iteration did not converge */
     TRK_E_UNSUPPORTED,     /* a feature not built into this configuration */
     TRK_E_IO,              /* host helpers only: file could not be read/written */
+    TRK_E_ABI,             /* the library was built with another configuration
+                              (capacities, options, real type) than the caller's
+                              headers: trk_config_check(), trk_tracker_abi_check() */
     TRK_STATUS_COUNT
 } trk_status;
 
 /* Short constant name of a status ("TRK_E_NAN"); never NULL. */
 const char *trk_status_str(trk_status s);
 
-/* Compile-time capacities as the library was built (libsodium habit: a tool
- * can check at start-up that the library it links matches its headers). */
+/* Decision of a per-track test: the confirmation tests (confirm_mn.h,
+ * confirm_sprt.h, clutter_test.h, visibility.h) and the termination tests
+ * (term_kn.h, term_page.h, term_shiryaev.h, visibility.h).
+ *
+ * Why one enum. Each test used to code its decision its own way (an int
+ * return of +1/-1/0, a 1/0 field, two flags) and the tracker translated each
+ * of them. With one enum every test's step has the same shape,
+ *
+ *   trk_status trk_<test>_step(const struct trk_<test>_model *m,
+ *                              struct trk_<test> *s, <the test's per-scan input>,
+ *                              enum trk_decision *decision);
+ *
+ * returning TRK_E_ARG for a NULL pointer (m, s, decision or an input array)
+ * and TRK_E_NAN / TRK_E_RANGE / TRK_E_SENSOR / TRK_E_CAPACITY for a bad
+ * input, and on error leaving *s and *decision untouched. A caller (the
+ * tracker, a simulator, a tool) then handles any test with one switch. The
+ * values name what to do with the track, not which hypothesis won: a
+ * confirmation test that rejects a tentative track (M/N can no longer reach
+ * M, SPRT crosses its lower threshold, visibility falls below p_term) says
+ * TRK_DECISION_TERMINATE.
+ *
+ * Sticky. The first decision a test takes is final: every later step
+ * reports it again, and nothing a later scan brings changes it (a test's
+ * state keeps the decision in its `decision` member; only trk_<test>_reset
+ * starts it afresh). The statistics are not frozen: they keep following
+ * their recurrence after the decision, so a display can always show them
+ * (trk_track.confirm_stat / term_stat) and the reference vectors check them
+ * after decisions (CONVENTIONS "Track confirmation and termination"); they
+ * just no longer change the decision. The one change allowed is
+ * CONFIRM -> TERMINATE, and only the visibility test makes it: it serves one
+ * track in both roles with one state (pcv reaches p_con: confirm; later pcv
+ * falls below p_term: terminate). TERMINATE is final for every test.
+ *
+ * CONTINUE is 0, so a zeroed state is "no decision yet". */
+enum trk_decision {
+    TRK_DECISION_CONTINUE = 0, /* no decision yet: keep the track as it is and
+                                  step the test again at the next scan */
+    TRK_DECISION_CONFIRM = 1,  /* confirmation test: confirm the tentative track */
+    TRK_DECISION_TERMINATE = 2 /* end the track: a termination test fired, or a
+                                  confirmation test rejected a tentative track */
+};
+
+/* Short constant name of a decision ("TRK_DECISION_CONFIRM"); never NULL. */
+const char *trk_decision_str(enum trk_decision d);
+
+/* The configuration as the library was built (libsodium habit: a program
+ * checks at start-up that the library it links was built like its headers):
+ * every value that sets the layout of a public struct. */
 size_t trk_max_tracks(void);
 size_t trk_max_detections(void);
 size_t trk_max_sensors(void);
-size_t trk_real_size(void);
+size_t trk_max_state(void);
+size_t trk_max_meas(void);
+size_t trk_clutter_kmax(void);
+size_t trk_with_clutter_tests(void); /* TRK_WITH_CLUTTER_TESTS: 0 or 1 */
+size_t trk_real_size(void);          /* sizeof(trk_real): TRK_REAL_FLOAT */
+size_t trk_enum_size(void);          /* sizeof of an enum (-fshort-enums changes it,
+                                        and every struct that holds one) */
 
-/* TRK_OK when the library was built with the same capacities and real type as
- * the including translation unit sees; TRK_E_ARG otherwise. */
+/* TRK_OK when the library was built with the configuration (capacities,
+ * TRK_CLUTTER_KMAX, TRK_WITH_CLUTTER_TESTS, real type, enum size) that the
+ * including translation unit sees; TRK_E_ABI otherwise. TRK_SIZE_OPT is not
+ * compared: it sets no layout. trk_tracker_abi_check() (tracker.h) also
+ * compares sizeof(struct trk_tracker). */
 #define trk_config_check()                                                   \
     ((trk_max_tracks() == TRK_MAX_TRACKS &&                                   \
       trk_max_detections() == TRK_MAX_DETECTIONS &&                           \
       trk_max_sensors() == TRK_MAX_SENSORS &&                                 \
-      trk_real_size() == sizeof(trk_real))                                    \
+      trk_max_state() == TRK_MAX_STATE &&                                     \
+      trk_max_meas() == TRK_MAX_MEAS &&                                       \
+      trk_clutter_kmax() == TRK_CLUTTER_KMAX &&                               \
+      trk_with_clutter_tests() == TRK_WITH_CLUTTER_TESTS &&                   \
+      trk_real_size() == sizeof(trk_real) &&                                  \
+      trk_enum_size() == sizeof(enum trk_decision))                           \
          ? TRK_OK                                                             \
-         : TRK_E_ARG)
+         : TRK_E_ABI)
 
 #endif /* TRK_TYPES_H */

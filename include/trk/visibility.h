@@ -15,9 +15,18 @@
  * logistic of ln(pv_pred/(1 - pv_pred)) + ln Lam, never overflowing however
  * large l_i. (Eqs 29-31 divide by pv pd, singular at pv = 0: not used.)
  *
- * Decisions (sticky: the first firing holds; the statistics keep running):
- *   confirmed  pcv >= p_con                (Kennedy: tentative -> confirmed)
- *   terminated pcv <  p_term               (deletion; p_term = 0 never fires)
+ * Decision (enum trk_decision, types.h; pv and pcv keep running after it):
+ *   TRK_DECISION_CONFIRM    the first scan with pcv >= p_con (Kennedy:
+ *                           tentative -> confirmed)
+ *   TRK_DECISION_TERMINATE  the first scan with pcv < p_term (deletion, or
+ *                           rejection of a tentative track; p_term = 0 never
+ *                           fires)
+ * Sticky as every test's decision, with the one change types.h allows: this
+ * test serves a track in both roles with one state (the tracker's
+ * trk_track.vis runs from initiation to the end), so a confirmed track later
+ * terminates: CONTINUE -> CONFIRM -> TERMINATE, or CONTINUE -> TERMINATE.
+ * CONFIRM never returns to CONTINUE, and TERMINATE is final (a terminated
+ * track is never confirmed however high pcv climbs).
  * As for the other per-track tests, the validated parameters form a model
  * shared by all tracks and each track owns only the small state.
  */
@@ -46,34 +55,49 @@ struct trk_visibility {
     trk_real pv_pred;       /* p_v(k|k-1) of the last scan (pv0 before the first) */
     trk_real pv;            /* p_v(k|k) */
     trk_real pcv;           /* smoothed confidence p_cv(k) */
-    int confirmed;          /* sticky: pcv reached p_con */
-    int terminated;         /* sticky: pcv fell below p_term */
+    enum trk_decision decision; /* CONTINUE, CONFIRM (pcv reached p_con) or
+                                   TERMINATE (pcv fell below p_term); see above */
     int scans;              /* updates since init */
 };
 
 /* TRK_E_ARG NULL pointer, TRK_E_NAN non-finite parameter, TRK_E_RANGE a
- * parameter outside its range. *v untouched on error. */
+ * parameter outside its range. *m untouched on error. */
 TRK_NODISCARD trk_status trk_visibility_model_init(struct trk_visibility_model *m,
                                                    const struct trk_visibility_params *p);
 
-/* Start state of a new track: pv = pv0, pcv = pcv0, no decision. */
+/* Start state of a new track: pv = pv0, pcv = pcv0, no decision
+ * (CONTINUE). Does nothing when m or v is NULL. */
 void trk_visibility_reset(const struct trk_visibility_model *m, struct trk_visibility *v);
 
-/* One scan from the log of the detection sum,
- *   log_sum = ln sum_i (g_D,i / rho) l_i  (-INFINITY: no gated detection),
- * with detection probability pd in (0, 1] and gate probability pg in (0, 1].
- * (+INFINITY: a detection where clutter is impossible, rho = 0: pv = 1).
- * TRK_E_ARG NULL m or v, TRK_E_NAN NaN log_sum or non-finite pd/pg,
- * TRK_E_RANGE pd or pg outside (0, 1]. v untouched on error. */
-TRK_NODISCARD trk_status trk_visibility_update_log(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pd, trk_real pg,
-                                                   trk_real log_sum);
+/* One scan: the visibility test's step. log_sum is the log of the detection
+ * sum,
+ *   log_sum = ln sum_i (g_D,i / rho) l_i  (-INFINITY: no gated detection;
+ *             +INFINITY: a detection where clutter is impossible, rho = 0:
+ *             pv = 1; trk_visibility_log_sum forms it from the gated set),
+ * pd in (0, 1] the detection probability and pg in (0, 1] the gate
+ * probability. Updates pv_pred, pv, pcv and the decision and writes the
+ * decision to *decision. TRK_E_ARG NULL m, v or decision, TRK_E_NAN NaN
+ * log_sum or non-finite pd/pg, TRK_E_RANGE pd or pg outside (0, 1]; *v and
+ * *decision untouched on error. */
+TRK_NODISCARD trk_status trk_visibility_step(const struct trk_visibility_model *m,
+                                             struct trk_visibility *v, trk_real pd, trk_real pg,
+                                             trk_real log_sum, enum trk_decision *decision);
 
-/* One scan from the n gated detections: spatial likelihoods gd[i] >= 0 and
- * the clutter density rho > 0 (same units), and log_la[i] = ln l_i (NULL:
- * no amplitude, l_i = 1). n <= TRK_MAX_DETECTIONS. TRK_E_CAPACITY above it;
- * otherwise as trk_visibility_update_log, TRK_E_RANGE for gd[i] < 0 or
- * rho <= 0, TRK_E_NAN for a non-finite gd, rho or log_la. */
-TRK_NODISCARD trk_status trk_visibility_update(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pd, trk_real pg, size_t n,
-                                               const trk_real *gd, trk_real rho, const trk_real *log_la);
+/* trk_visibility_step without the decision output (the decision is still
+ * updated in v->decision): the tracker's per-scan update of trk_track.vis.
+ * Same statuses except that there is no decision pointer to check. */
+TRK_NODISCARD trk_status trk_visibility_update_log(const struct trk_visibility_model *m,
+                                                   struct trk_visibility *v, trk_real pd,
+                                                   trk_real pg, trk_real log_sum);
+
+/* The step's log_sum from the n gated detections: spatial likelihoods
+ * gd[i] >= 0 and the clutter density rho > 0 (same units), and
+ * log_la[i] = ln l_i (NULL: no amplitude, l_i = 1), by log-sum-exp
+ * (-INFINITY for n = 0). n <= TRK_MAX_DETECTIONS. TRK_E_ARG NULL log_sum (or
+ * gd with n > 0), TRK_E_CAPACITY n above TRK_MAX_DETECTIONS, TRK_E_NAN a
+ * non-finite gd, rho or log_la, TRK_E_RANGE gd[i] < 0 or rho <= 0; *log_sum
+ * untouched on error. */
+TRK_NODISCARD trk_status trk_visibility_log_sum(size_t n, const trk_real *gd, trk_real rho,
+                                                const trk_real *log_la, trk_real *log_sum);
 
 #endif

@@ -142,29 +142,34 @@ static void run_page(void *a)
 {
     struct job *j = a;
     NEXT(j);
-    trk_status st = trk_page_step(&mod.page, &j->page, sensor_, pat.det[k_], pat.pfa[k_]);
+    enum trk_decision d;
+    trk_status st = trk_page_step(&mod.page, &j->page, sensor_, pat.det[k_], pat.pfa[k_], &d);
     bench_sink((double)j->page.stat + (double)st);
 }
 static void run_shir(void *a)
 {
     struct job *j = a;
     NEXT(j);
-    trk_status st = trk_shiryaev_step(&mod.shir, &j->shir, sensor_, pat.det[k_], pat.pfa[k_]);
+    enum trk_decision d;
+    trk_status st = trk_shiryaev_step(&mod.shir, &j->shir, sensor_, pat.det[k_], pat.pfa[k_], &d);
     bench_sink((double)j->shir.stat + (double)st);
 }
 static void run_sprt_fixed(void *a)
 {
     struct job *j = a;
     NEXT(j);
+    enum trk_decision d;
     trk_status st =
-        trk_sprt_step(&mod.sprt_fixed, &j->sprt_fixed, sensor_, pat.det[k_], pat.pfa[k_]);
+        trk_sprt_step(&mod.sprt_fixed, &j->sprt_fixed, sensor_, pat.det[k_], pat.pfa[k_], &d);
     bench_sink((double)j->sprt_fixed.stat + (double)st);
 }
 static void run_sprt_hmm(void *a)
 {
     struct job *j = a;
     NEXT(j);
-    trk_status st = trk_sprt_step(&mod.sprt_hmm, &j->sprt_hmm, sensor_, pat.det[k_], pat.pfa[k_]);
+    enum trk_decision d;
+    trk_status st =
+        trk_sprt_step(&mod.sprt_hmm, &j->sprt_hmm, sensor_, pat.det[k_], pat.pfa[k_], &d);
     bench_sink((double)j->sprt_hmm.stat + (double)st);
 }
 static void run_kn(void *a)
@@ -172,21 +177,26 @@ static void run_kn(void *a)
     struct job *j = a;
     NEXT(j);
     (void)sensor_;
-    bench_sink(trk_kn_step(&mod.kn, &j->kn, pat.det[k_]));
+    enum trk_decision d = TRK_DECISION_CONTINUE;
+    trk_status st = trk_kn_step(&mod.kn, &j->kn, pat.det[k_], &d);
+    bench_sink((double)d + (double)st);
 }
 static void run_mn(void *a)
 {
     struct job *j = a;
     NEXT(j);
     (void)sensor_;
-    bench_sink(trk_mn_step(&mod.mn, &j->mn, pat.det[k_]));
+    enum trk_decision d = TRK_DECISION_CONTINUE;
+    trk_status st = trk_mn_step(&mod.mn, &j->mn, pat.det[k_], &d);
+    bench_sink((double)d + (double)st);
 }
 static void run_chi2(void *a)
 {
     struct job *j = a;
     NEXT(j);
     (void)sensor_;
-    trk_status st = trk_clutter_chi2_step(&mod.chi2, &j->chi2, pat.rho_vg[k_]);
+    enum trk_decision d;
+    trk_status st = trk_clutter_chi2_step(&mod.chi2, &j->chi2, pat.rho_vg[k_], &d);
     bench_sink((double)j->chi2.p_value + (double)st);
 }
 static void run_amp(void *a)
@@ -194,8 +204,9 @@ static void run_amp(void *a)
     struct job *j = a;
     NEXT(j);
     (void)sensor_;
+    enum trk_decision d;
     trk_status st =
-        trk_clutter_amp_step(&mod.amp, &j->amp, pat.a_assoc[k_], 10, pat.others + (k_ & 7));
+        trk_clutter_amp_step(&mod.amp, &j->amp, pat.a_assoc[k_], 10, pat.others + (k_ & 7), &d);
     bench_sink((double)j->amp.p_value + (double)st);
 }
 static void run_chi2_init(void *a)
@@ -225,13 +236,18 @@ static void run_table(void *a)
         const unsigned k = (table_scan * 7u + (unsigned)t * 13u) & (PAT - 1);
         const int det = pat.det[k];
         const trk_real pfa = pat.pfa[k];
-        trk_status st = trk_page_step(&mod.page, &j->page, sensor, det, pfa);
-        st |= trk_shiryaev_step(&mod.shir, &j->shir, sensor, det, pfa);
-        st |= trk_sprt_step(&mod.sprt_hmm, &j->sprt_hmm, sensor, det, pfa);
-        st |= trk_clutter_chi2_step(&mod.chi2, &j->chi2, pat.rho_vg[k]);
-        st |= trk_clutter_amp_step(&mod.amp, &j->amp, pat.a_assoc[k], 10, pat.others + (k & 7));
-        int d = trk_kn_step(&mod.kn, &j->kn, det) + trk_mn_step(&mod.mn, &j->mn, det);
-        bench_sink((double)j->page.stat + (double)j->amp.p_value + d + (double)st);
+        enum trk_decision d[7] = {TRK_DECISION_CONTINUE};
+        trk_status st = trk_page_step(&mod.page, &j->page, sensor, det, pfa, &d[0]);
+        st |= trk_shiryaev_step(&mod.shir, &j->shir, sensor, det, pfa, &d[1]);
+        st |= trk_sprt_step(&mod.sprt_hmm, &j->sprt_hmm, sensor, det, pfa, &d[2]);
+        st |= trk_clutter_chi2_step(&mod.chi2, &j->chi2, pat.rho_vg[k], &d[3]);
+        st |= trk_clutter_amp_step(&mod.amp, &j->amp, pat.a_assoc[k], 10, pat.others + (k & 7),
+                                   &d[4]);
+        st |= trk_kn_step(&mod.kn, &j->kn, det, &d[5]);
+        st |= trk_mn_step(&mod.mn, &j->mn, det, &d[6]);
+        int nd = 0;
+        for (int i = 0; i < 7; i++) nd += d[i] != TRK_DECISION_CONTINUE;
+        bench_sink((double)j->page.stat + (double)j->amp.p_value + nd + (double)st);
     }
     table_scan++;
 }

@@ -117,16 +117,23 @@ static void run_one(const struct bl_cfg *c, int h1, uint64_t seed, uint64_t stre
             det = rng_uniform(&r) < (double)pfa;
         }
         if (det && trk_kalman_update(2, 1, hm, rm, z, x, pm) != TRK_OK) abort();
-        if (trk_page_step(&c->page_m, &pg, (unsigned)sensor, det, pfa) != TRK_OK ||
-            trk_shiryaev_step(&c->shir_m, &sh, (unsigned)sensor, det, pfa) != TRK_OK)
+        /* Page and Shiryaev are read against several thresholds through their
+         * statistics; their own decisions (at the model's h) are not used */
+        enum trk_decision dp, ds;
+        if (trk_page_step(&c->page_m, &pg, (unsigned)sensor, det, pfa, &dp) != TRK_OK ||
+            trk_shiryaev_step(&c->shir_m, &sh, (unsigned)sensor, det, pfa, &ds) != TRK_OK)
             abort();
         while (next_p < c->n_page && pg.stat > (trk_real)c->h_page[next_p]) o_page[next_p++] = (uint32_t)t;
         while (next_s < c->n_shir && sh.stat > (trk_real)c->h_shir[next_s]) o_shir[next_s++] = (uint32_t)t;
-        for (int j = 0; j < c->n_kn; j++)
-            if (!o_kn[j] && trk_kn_step(&c->kn_m[j], &kn[j], det)) {
+        for (int j = 0; j < c->n_kn; j++) {
+            if (o_kn[j]) continue;
+            enum trk_decision dk;
+            if (trk_kn_step(&c->kn_m[j], &kn[j], det, &dk) != TRK_OK) abort();
+            if (dk == TRK_DECISION_TERMINATE) {
                 o_kn[j] = (uint32_t)t;
                 kn_left--;
             }
+        }
         if (next_p == c->n_page && next_s == c->n_shir && kn_left == 0) break;
     }
 }

@@ -134,13 +134,14 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
                 }
                 const trk_real a_assoc = others[imin];
                 others[imin] = others[n - 1];
-                if (trk_clutter_chi2_step(&chi_m, chi, (trk_real)(mean_peaks * dmin)) != TRK_OK ||
-                    trk_clutter_amp_step(&amp_m, amp, a_assoc, n - 1, others) != TRK_OK)
+                enum trk_decision dc, da;
+                if (trk_clutter_chi2_step(&chi_m, chi, (trk_real)(mean_peaks * dmin), &dc) != TRK_OK ||
+                    trk_clutter_amp_step(&amp_m, amp, a_assoc, n - 1, others, &da) != TRK_OK)
                     abort();
                 lc[t] += chi->reject;
                 la[t] += amp->reject;
-                ldc[t] += chi->decision;
-                lda[t] += amp->decision;
+                ldc[t] += dc == TRK_DECISION_CONFIRM;
+                lda[t] += da == TRK_DECISION_CONFIRM;
             }
             sim_progress_add(&pr, 1);
         }

@@ -26,7 +26,14 @@
  * page_hmm 0.017, shiryaev_hmm 0.037, sprt 0.011, clutter_chi2 0.055,
  * clutter_amp_f 0.013 -- i.e. errors of 1e-7..1e-6 normwise against a
  * tolerance of 2e-5 normwise relative (abs 1e-6): margin for hidden cases
- * with longer runs. */
+ * with longer runs.
+ *
+ * Decisions: the vector file codes them as numbers (CONVENTIONS "Track
+ * confirmation and termination"): confirmation tests +1 confirm, -1 reject,
+ * 0 pending; termination tests 1 terminate, 0 continue. The library's
+ * enum trk_decision (the step's output, and the SPRT's per-look fire) is
+ * translated here, once, into that coding. Every step's decision output is
+ * checked against the state's sticky decision. */
 #include <math.h>
 #include <string.h>
 
@@ -38,6 +45,21 @@
 #include "vec.h"
 
 #define BANK_MAX 64        /* sensors of a case in the capacity fallback */
+
+/* enum trk_decision -> the vector file's coding */
+static double confirm_code(enum trk_decision d)
+{
+    return d == TRK_DECISION_CONFIRM ? 1 : d == TRK_DECISION_TERMINATE ? -1 : 0;
+}
+static double term_code(enum trk_decision d) { return d == TRK_DECISION_TERMINATE ? 1 : 0; }
+
+/* The decision a step wrote must be the state's sticky one. */
+static int same_decision(struct vec_out *o, size_t t, enum trk_decision out, enum trk_decision state)
+{
+    if (out == state) return 0;
+    return vec_fail(o, "scan %zu: step wrote %s, state holds %s", t + 1, trk_decision_str(out),
+                    trk_decision_str(state));
+}
 #define FLOAT_FLIP 2e-5    /* relative margin (vs accumulated magnitude) for a tie in float */
 
 static int deltas(const struct vec_case *c, struct vec_out *o, size_t n, const double **d)
@@ -164,19 +186,21 @@ TRK_VEC_KIND(page_hmm, 1e-6, 2e-5, VEC_FAST)
     double mag = 0;
     for (size_t t = 0; t < hc.n; t++) {
         unsigned i = (unsigned)hc.sensor[t];
+        enum trk_decision d = TRK_DECISION_CONTINUE;
         if (hc.bank) {
             trk_real s;
             if (bank_s(&hc, o, t, &s, &out.post[t])) return -1;
-            st = trk_page_step_llr(&pm, &pg, s);
+            st = trk_page_step_llr(&pm, &pg, s, &d);
         } else {
-            st = trk_page_step(&pm, &pg, i, hc.delta[t] != 0, (trk_real)hc.pfa[t]);
+            st = trk_page_step(&pm, &pg, i, hc.delta[t] != 0, (trk_real)hc.pfa[t], &d);
             out.post[t] = (double)pg.hmm.post_high[i];
         }
         if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
+        if (same_decision(o, t, d, pg.decision)) return -1;
         out.s[t] = (double)pg.s;
         out.stat[t] = (double)pg.stat;
         out.fire[t] = pg.fire;
-        out.dec[t] = pg.decision;
+        out.dec[t] = term_code(d);
         mag = pg.stat == 0 ? 0 : mag + fabs((double)pg.s);
         if (near_tie(o, t, (double)pg.stat, h, mag)) return VEC_NOT_APPLICABLE;
     }
@@ -209,19 +233,21 @@ TRK_VEC_KIND(shiryaev_hmm, 1e-6, 2e-5, VEC_FAST)
     double mag = fabs((double)sh.stat);
     for (size_t t = 0; t < hc.n; t++) {
         unsigned i = (unsigned)hc.sensor[t];
+        enum trk_decision d = TRK_DECISION_CONTINUE;
         if (hc.bank) {
             trk_real s;
             if (bank_s(&hc, o, t, &s, &out.post[t])) return -1;
-            st = trk_shiryaev_step_llr(&sm, &sh, s);
+            st = trk_shiryaev_step_llr(&sm, &sh, s, &d);
         } else {
-            st = trk_shiryaev_step(&sm, &sh, i, hc.delta[t] != 0, (trk_real)hc.pfa[t]);
+            st = trk_shiryaev_step(&sm, &sh, i, hc.delta[t] != 0, (trk_real)hc.pfa[t], &d);
             out.post[t] = (double)sh.hmm.post_high[i];
         }
         if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
+        if (same_decision(o, t, d, sh.decision)) return -1;
         out.s[t] = (double)sh.s;
         out.stat[t] = (double)sh.stat;
         out.fire[t] = sh.fire;
-        out.dec[t] = sh.decision;
+        out.dec[t] = term_code(d);
         mag += fabs((double)sh.s) + fabs((double)sh.stat) * 1e-2;
         if (near_tie(o, t, (double)sh.stat, h, mag)) return VEC_NOT_APPLICABLE;
     }
@@ -260,11 +286,13 @@ TRK_VEC_KIND(sprt, 1e-6, 2e-5, VEC_FAST)
         return -1;
     double mag = 0;
     for (size_t t = 0; t < n; t++) {
-        st = trk_sprt_step(&m, &s, 0, delta[t] != 0, (trk_real)pfa[t]);
+        enum trk_decision d = TRK_DECISION_CONTINUE;
+        st = trk_sprt_step(&m, &s, 0, delta[t] != 0, (trk_real)pfa[t], &d);
         if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
+        if (same_decision(o, t, d, s.decision)) return -1;
         llr[t] = (double)s.stat;
-        fire[t] = s.fire;
-        dec[t] = s.decision;
+        fire[t] = confirm_code(s.fire);
+        dec[t] = confirm_code(d);
         mag += fabs((double)s.inc);
         if (near_tie(o, t, (double)s.stat, (double)m.ln_a, mag) ||
             near_tie(o, t, (double)s.stat, (double)m.ln_b, mag))
@@ -309,14 +337,16 @@ TRK_VEC_KIND(clutter_chi2, 1e-6, 2e-5, VEC_FAST)
            *rej = vec_put_alloc(o, "reject", n), *dec = vec_put_alloc(o, "decision", n);
     if (!dof || !stat || !pv || !thr || !rej || !dec) return -1;
     for (size_t t = 0; t < n; t++) {
-        st = trk_clutter_chi2_step(&m, &s, (trk_real)rv[t]);
+        enum trk_decision d = TRK_DECISION_CONTINUE;
+        st = trk_clutter_chi2_step(&m, &s, (trk_real)rv[t], &d);
         if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
+        if (same_decision(o, t, d, s.decision)) return -1;
         dof[t] = s.dof;
         stat[t] = (double)s.stat;
         pv[t] = (double)s.p_value;
         thr[t] = (double)s.threshold;
         rej[t] = s.reject;
-        dec[t] = s.decision;
+        dec[t] = confirm_code(d);
         if (p_tie(o, t, pv[t], alpha)) return VEC_NOT_APPLICABLE;
     }
     return 0;
@@ -359,8 +389,10 @@ TRK_VEC_KIND(clutter_amp_f, 1e-6, 2e-5, VEC_FAST)
         size_t m_others = (size_t)no[t];
         for (size_t i = 0; i < m_others; i++) others[i] = (trk_real)ao[off + i];
         off += m_others;
-        st = trk_clutter_amp_step(&m, &s, (trk_real)aa[t], m_others, others);
+        enum trk_decision d = TRK_DECISION_CONTINUE;
+        st = trk_clutter_amp_step(&m, &s, (trk_real)aa[t], m_others, others, &d);
         if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
+        if (same_decision(o, t, d, s.decision)) return -1;
         trk_real th = 0;
         if (s.dof2 > 0) {
             st = trk_clutter_amp_threshold(&m, &s, &th);
@@ -372,7 +404,7 @@ TRK_VEC_KIND(clutter_amp_f, 1e-6, 2e-5, VEC_FAST)
         pv[t] = (double)s.p_value;
         thr[t] = (double)th;
         rej[t] = s.reject;
-        dec[t] = s.decision;
+        dec[t] = confirm_code(d);
         if (p_tie(o, t, pv[t], alpha)) return VEC_NOT_APPLICABLE;
     }
     return 0;

@@ -8,7 +8,11 @@
  * error 1.4e-6, 0.14 of the tolerance abs 1e-5. The decisions never sat
  * within that of p_con in the public cases; a case where pcv comes within
  * 2e-5 of p_con before the confirmation is reported as not resolvable in
- * float (VEC_FLOAT_UNRESOLVABLE): its sticky decision may flip by a scan. */
+ * float (VEC_FLOAT_UNRESOLVABLE): its sticky decision may flip by a scan.
+ *
+ * The vector's decision column is 1 once confirmed (pcv >= p_con), else 0;
+ * the cases have no termination threshold (p_term = 0), so the library's
+ * enum trk_decision is CONFIRM or CONTINUE here. */
 #include <math.h>
 
 #include "trk/visibility.h"
@@ -49,12 +53,19 @@ TRK_VEC_KIND(visibility, 1e-5, 0, VEC_FAST)
             l[i] = (trk_real)log(la[k + i]);
         }
         k += n;
-        st = trk_visibility_update(&m, &v, (trk_real)pd, (trk_real)pg, n, g, (trk_real)rho[t], l);
-        if (st != TRK_OK) return vec_fail(o, "trk_visibility_update (scan %zu): %s", t + 1, trk_status_str(st));
+        trk_real log_sum;
+        enum trk_decision d = TRK_DECISION_CONTINUE;
+        st = trk_visibility_log_sum(n, g, (trk_real)rho[t], l, &log_sum);
+        if (st != TRK_OK) return vec_fail(o, "trk_visibility_log_sum (scan %zu): %s", t + 1, trk_status_str(st));
+        st = trk_visibility_step(&m, &v, (trk_real)pd, (trk_real)pg, log_sum, &d);
+        if (st != TRK_OK) return vec_fail(o, "trk_visibility_step (scan %zu): %s", t + 1, trk_status_str(st));
+        if (d != v.decision || d == TRK_DECISION_TERMINATE)
+            return vec_fail(o, "scan %zu: decision %s (state %s)", t + 1, trk_decision_str(d),
+                            trk_decision_str(v.decision));
         pv_pred[t] = (double)v.pv_pred;
         pv_post[t] = (double)v.pv;
         pcv[t] = (double)v.pcv;
-        dec[t] = v.confirmed;
+        dec[t] = d == TRK_DECISION_CONFIRM;
         if (TRK_REAL_IS_FLOAT && (t == 0 || dec[t - 1] == 0) && fabs(pcv[t] - pcon) <= 2e-5) {
             vec_fail(o, "scan %zu: pcv %.8g within float rounding of p_con %.8g", t + 1, pcv[t], pcon);
             return VEC_FLOAT_UNRESOLVABLE;

@@ -1,11 +1,23 @@
 /* kind_window.c - vector kinds kn and mn (../shared/vectors/tracktests.vec):
  * K/N termination and M/N confirmation, step by step. Integer outputs only,
- * so the float build uses the same (exact) tolerances. */
+ * so the float build uses the same (exact) tolerances.
+ *
+ * The vector file codes decisions as numbers (CONVENTIONS "Track
+ * confirmation and termination"): a confirmation test +1 confirm, -1 reject,
+ * 0 pending; a termination test 1 terminate, 0 continue. The library's
+ * enum trk_decision is translated here, once, into that coding. */
 #include <string.h>
 
 #include "trk/confirm_mn.h"
 #include "trk/term_kn.h"
 #include "vec.h"
+
+/* enum trk_decision -> the vector file's coding */
+static double confirm_code(enum trk_decision d)
+{
+    return d == TRK_DECISION_CONFIRM ? 1 : d == TRK_DECISION_TERMINATE ? -1 : 0;
+}
+static double term_code(enum trk_decision d) { return d == TRK_DECISION_TERMINATE ? 1 : 0; }
 
 static int deltas(const struct vec_case *c, struct vec_out *o, const double **d, size_t *n)
 {
@@ -31,7 +43,10 @@ TRK_VEC_KIND(kn, 0, 0, VEC_FAST)
            *dec = vec_put_alloc(o, "decision", len);
     if (!count || !fire || !dec) return -1;
     for (size_t t = 0; t < len; t++) {
-        dec[t] = trk_kn_step(&m, &s, d[t] != 0);
+        enum trk_decision dk;
+        st = trk_kn_step(&m, &s, d[t] != 0, &dk);
+        if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
+        dec[t] = term_code(dk);
         count[t] = s.count;
         fire[t] = s.fire;
     }
@@ -58,7 +73,10 @@ TRK_VEC_KIND(mn, 0, 0, VEC_FAST)
     double *count = vec_put_alloc(o, "count", len), *dec = vec_put_alloc(o, "decision", len);
     if (!count || !dec) return -1;
     for (size_t t = 0; t < len; t++) {
-        dec[t] = trk_mn_step(&md, &s, d[t] != 0);
+        enum trk_decision dm;
+        st = trk_mn_step(&md, &s, d[t] != 0, &dm);
+        if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
+        dec[t] = confirm_code(dm);
         count[t] = s.count;
     }
     return 0;
