@@ -76,6 +76,37 @@
 #error "TRK_CLUTTER_KMAX must be in 1..1024 (window of the clutter tests; Kennedy 2008 uses 25); set -DTRK_CLUTTER_KMAX=32"
 #endif
 
+/* Models of one IMM estimator (imm.h): struct trk_imm_state holds
+ * TRK_MAX_MODELS mode-conditioned estimates (20 reals each) and probabilities.
+ * Default 3 (CV and a left and a right turn). */
+#ifndef TRK_MAX_MODELS
+#define TRK_MAX_MODELS 3
+#endif
+#if TRK_MAX_MODELS < 1 || TRK_MAX_MODELS > 8
+#error "TRK_MAX_MODELS must be in 1..8 (models of one IMM, imm.h); set -DTRK_MAX_MODELS=3"
+#endif
+
+/* Joint association (jpda.h): a cluster is solved exactly by a programme over
+ * the subsets of its smaller side while that side has at most
+ * TRK_JPDA_EXACT_BITS members (struct trk_jpda_work holds 2^bits reals) and
+ * the work stays under TRK_JPDA_MAX_WORK multiply-adds; beyond, loopy belief
+ * propagation runs at most TRK_JPDA_LBP_MAX_ITER iterations. */
+#ifndef TRK_JPDA_EXACT_BITS
+#define TRK_JPDA_EXACT_BITS 10
+#endif
+#if TRK_JPDA_EXACT_BITS < 1 || TRK_JPDA_EXACT_BITS > 16
+#error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=10"
+#endif
+#ifndef TRK_JPDA_MAX_WORK
+#define TRK_JPDA_MAX_WORK (1L << 22)
+#endif
+#ifndef TRK_JPDA_LBP_MAX_ITER
+#define TRK_JPDA_LBP_MAX_ITER 200
+#endif
+#if TRK_JPDA_LBP_MAX_ITER < 1
+#error "TRK_JPDA_LBP_MAX_ITER must be at least 1 (jpda.h); set -DTRK_JPDA_LBP_MAX_ITER=200"
+#endif
+
 /* ---------------------------------------------------------------- options */
 
 /* Kennedy's clutter tests (clutter_test.h) as confirmation methods of the

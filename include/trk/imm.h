@@ -39,14 +39,7 @@
 #include "trk/pda.h"
 #include "trk/types.h"
 
-/* Models of one IMM (default 3: e.g. CV, a left and a right turn). 1..8. */
-#ifndef TRK_MAX_MODELS
-#define TRK_MAX_MODELS 3
-#endif
-#if TRK_MAX_MODELS < 1 || TRK_MAX_MODELS > 8
-#error "TRK_MAX_MODELS must be in 1..8"
-#endif
-
+/* TRK_MAX_MODELS: trk/config.h (default 3). */
 #define TRK_IMM_NX 4
 #define TRK_IMM_NZ 2
 

@@ -42,22 +42,8 @@
 #include "trk/config.h"
 #include "trk/types.h"
 
-/* Exact method bound: clusters with min(tracks, detections) <= this many are
- * solved exactly (2^bits reals of workspace). 1..16. */
-#ifndef TRK_JPDA_EXACT_BITS
-#define TRK_JPDA_EXACT_BITS 10
-#endif
-#if TRK_JPDA_EXACT_BITS < 1 || TRK_JPDA_EXACT_BITS > 16
-#error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace)"
-#endif
-/* Work bound of the exact method, in multiply-adds per cluster: a cluster
- * whose cheaper exact method needs more is solved by belief propagation. */
-#ifndef TRK_JPDA_MAX_WORK
-#define TRK_JPDA_MAX_WORK (1L << 22)
-#endif
-#ifndef TRK_JPDA_LBP_MAX_ITER
-#define TRK_JPDA_LBP_MAX_ITER 200
-#endif
+/* Capacities TRK_JPDA_EXACT_BITS, TRK_JPDA_MAX_WORK, TRK_JPDA_LBP_MAX_ITER:
+ * trk/config.h. */
 
 /* One scan's association weights (see the top of this file). */
 struct trk_jpda_scan {

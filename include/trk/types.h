@@ -153,6 +153,8 @@ size_t trk_max_state(void);
 size_t trk_max_meas(void);
 size_t trk_clutter_kmax(void);
 size_t trk_with_clutter_tests(void); /* TRK_WITH_CLUTTER_TESTS: 0 or 1 */
+size_t trk_max_models(void);         /* TRK_MAX_MODELS (struct trk_imm_state) */
+size_t trk_jpda_exact_bits(void);    /* TRK_JPDA_EXACT_BITS (struct trk_jpda_work) */
 size_t trk_real_size(void);          /* sizeof(trk_real): TRK_REAL_FLOAT */
 size_t trk_enum_size(void);          /* sizeof of an enum (-fshort-enums changes it,
                                         and every struct that holds one) */
@@ -170,6 +172,8 @@ size_t trk_enum_size(void);          /* sizeof of an enum (-fshort-enums changes
       trk_max_meas() == TRK_MAX_MEAS &&                                       \
       trk_clutter_kmax() == TRK_CLUTTER_KMAX &&                               \
       trk_with_clutter_tests() == TRK_WITH_CLUTTER_TESTS &&                   \
+      trk_max_models() == TRK_MAX_MODELS &&                                   \
+      trk_jpda_exact_bits() == TRK_JPDA_EXACT_BITS &&                         \
       trk_real_size() == sizeof(trk_real) &&                                  \
       trk_enum_size() == sizeof(enum trk_decision))                           \
          ? TRK_OK                                                             \
