@@ -13,7 +13,7 @@
 #                   (mk/lcm.mk, demo-lcm) and the firmware-style example.
 #   make demo-main  the sonar scenario alone
 #   DEMO_FLAGS      extra trk-sim demo options / tracker settings, e.g.
-#                   make demo DEMO_FLAGS='--seed 7 term=page'
+#                   make demo DEMO_FLAGS='--seed 7 --set term=page'
 # The whole `make demo` takes well under a minute on 2 cores once built.
 DEMO_DIR = $(BUILD)/demo
 DEMO_FLAGS ?=

@@ -22,14 +22,14 @@ define Q2_TABLE_rule
 $(TABLES_DIR)/$(1).tbl: $(TABLEGEN)
 	@mkdir -p $$(@D)
 	$$(call say,GEN,$$@)
-	@$(TABLEGEN) q2 $(2) $(Q2_TABLE_FLAGS) -o $$@ || { rm -f $$@; exit 1; }
+	@$(TABLEGEN) q2 $(2) $(Q2_TABLE_FLAGS) --out $$@ || { rm -f $$@; exit 1; }
 	@$(TABLEGEN) info $$@ > /dev/null || { echo "$$@: rejected by trk-tablegen info"; rm -f $$@; exit 1; }
 endef
 $(eval $(call Q2_TABLE_rule,q2_pdaf_pg099,--detector pdaf --gate-prob 0.99))
 $(eval $(call Q2_TABLE_rule,q2_pdaf_g6,--detector pdaf --gate-gamma 36))
-$(eval $(call Q2_TABLE_rule,q2_pdafai_rayleigh_g6,--detector pdafai --model rayleigh --gate-gamma 36))
-$(eval $(call Q2_TABLE_rule,q2_pdafai_k1_g6,--detector pdafai --model k --nu 1 --gate-gamma 36))
-$(eval $(call Q2_TABLE_rule,q2_pdafai_k8_g6,--detector pdafai --model k --nu 8 --gate-gamma 36))
+$(eval $(call Q2_TABLE_rule,q2_pdafai_rayleigh_g6,--detector pdafai --clutter-model rayleigh --gate-gamma 36))
+$(eval $(call Q2_TABLE_rule,q2_pdafai_k1_g6,--detector pdafai --clutter-model k --k-shape 1 --gate-gamma 36))
+$(eval $(call Q2_TABLE_rule,q2_pdafai_k8_g6,--detector pdafai --clutter-model k --k-shape 8 --gate-gamma 36))
 
 .PHONY: q2-tables q2-repro
 tables: q2-tables
@@ -44,10 +44,10 @@ q2-repro: $(TEST_EXTRA_DEPS_q2-repro)
 	@d=$$(mktemp -d) || exit 1; st=0; \
 	for t in 1 2; do \
 	  $(TABLEGEN) q2 --detector pdaf --pd 0.5:1:0.1 --lambda-vg 0.01:20:6 --samples 20000 --target-se 2e-3 \
-	    --seed 3 --threads $$t --quiet -o $$d/pdaf$$t.tbl > /dev/null || st=1; \
-	  $(TABLEGEN) q2 --detector pdafai --model k --nu 2 --gate-gamma 36 --snr-db 10,15 --pfa 1e-3:0.1:3 \
+	    --seed 3 --threads $$t --quiet --out $$d/pdaf$$t.tbl > /dev/null || st=1; \
+	  $(TABLEGEN) q2 --detector pdafai --clutter-model k --k-shape 2 --gate-gamma 36 --snr-db 10,15 --pfa 1e-3:0.1:3 \
 	    --lambda-vg 0.01:20:6 --samples 20000 --target-se 2e-3 --seed 3 --threads $$t --quiet \
-	    -o $$d/ai$$t.tbl > /dev/null || st=1; \
+	    --out $$d/ai$$t.tbl > /dev/null || st=1; \
 	done; \
 	if [ $$st = 0 ]; then cmp $$d/pdaf1.tbl $$d/pdaf2.tbl && cmp $$d/ai1.tbl $$d/ai2.tbl || st=1; fi; \
 	rm -rf $$d; \

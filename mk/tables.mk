@@ -17,14 +17,14 @@ define AMP_TABLE_rule
 $(TABLES_DIR)/amp_$(1)_snr$(TABLE_SNR_DB)_pfa$(3).tbl: $(TABLEGEN)
 	@mkdir -p $$(@D)
 	$$(call say,GEN,$$@)
-	@$(TABLEGEN) amp $(2) --snr-db $(TABLE_SNR_DB) --pfa $(3) -o $$@ $$(if $$(filter 1,$$(V)),,> /dev/null) || { rm -f $$@; exit 1; }
+	@$(TABLEGEN) amp $(2) --snr-db $(TABLE_SNR_DB) --pfa $(3) --out $$@ $$(if $$(filter 1,$$(V)),,> /dev/null) || { rm -f $$@; exit 1; }
 	@$(TABLEGEN) info $$@ > /dev/null || { echo "$$@: rejected by trk-tablegen info"; rm -f $$@; exit 1; }
 AMP_TABLES += $(TABLES_DIR)/amp_$(1)_snr$(TABLE_SNR_DB)_pfa$(3).tbl
 endef
 AMP_TABLES :=
-$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,k1,--clutter k --nu 1,$(p))))
-$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,k8,--clutter k --nu 8,$(p))))
-$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,rayleigh,--clutter rayleigh,$(p))))
+$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,k1,--clutter-model k --k-shape 1,$(p))))
+$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,k8,--clutter-model k --k-shape 8,$(p))))
+$(foreach p,$(TABLE_PFAS),$(eval $(call AMP_TABLE_rule,rayleigh,--clutter-model rayleigh,$(p))))
 
 .PHONY: tables
 tables: $(AMP_TABLES)
@@ -34,7 +34,7 @@ tables: $(AMP_TABLES)
 # recompile the example)
 $(GEN)/amp_table_data.h: $(TABLEGEN)
 	@mkdir -p $(@D)
-	$(Q)$(TABLEGEN) amp --clutter k --nu 1 --snr-db 15 --pfa 1e-3 --format c --name amp_table -o $@.tmp > /dev/null
+	$(Q)$(TABLEGEN) amp --clutter-model k --k-shape 1 --snr-db 15 --pfa 1e-3 --format c --name amp_table --out $@.tmp > /dev/null
 	$(Q)if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; \
 	  $(if $(filter 1,$(V)),:,printf '%-14s %-4s %s\n' '$(CFG)' GEN '$@'); fi
 $(BUILD)/obj/examples/amp_table_firmware.o: $(GEN)/amp_table_data.h

@@ -31,13 +31,13 @@ expect_refusal() { # pattern, args...
     grep -q -- "$pat" "$T/e" || fail "trk-lcm-bridge $*: message lacks '$pat': $(cat "$T/e")"
 }
 expect_refusal "gate_prob" --gate_prob 2
-expect_refusal "unknown setting" --no-such-setting 1
-expect_refusal "confirm.mn" --confirm.mn.m 9
-expect_refusal "term = page" --term page --hmm.p_low_high 0 --hmm.q_high_low 0
-expect_refusal "amp_table" --sensor.0.amplitude k   # K clutter needs a table
-expect_refusal "cannot open" --q2_table "$T/missing.tbl"
+expect_refusal "unknown setting" --set no-such-setting=1
+expect_refusal "confirm.mn" --set confirm.mn.m=9
+expect_refusal "term = page" --set term=page --set hmm.p_low_high=0 --set hmm.q_high_low=0
+expect_refusal "amp_table" --set sensor.0.amplitude=k   # K clutter needs a table
+expect_refusal "cannot open" --set q2_table="$T/missing.tbl"
 head -c 300 /dev/urandom > "$T/junk.tbl"
-expect_refusal "TRK_E_TABLE" --sensor.0.amp_table "$T/junk.tbl"
+expect_refusal "TRK_E_TABLE" --set sensor.0.amp_table="$T/junk.tbl"
 printf 'gate_prob = 0.9\nbogus line\n' > "$T/bad.conf"
 expect_refusal "bad.conf:2" --config "$T/bad.conf"
 timeout 20 "$B/trk-lcm-bridge" --help > "$T/help" || fail "--help exited $?"
@@ -70,7 +70,7 @@ ok "SIGINT and SIGTERM stop the bridge cleanly with a summary"
 
 # --- determinism of the log path
 for i in 1 2; do
-    timeout 60 "$B/trk-sonar-sim" --log "$T/d$i.lcmlog" --scans 40 --seed 9 --bad-every 7 --quiet > /dev/null ||
+    timeout 60 "$B/trk-sonar-sim" --out "$T/d$i.lcmlog" --scans 40 --seed 9 --bad-every 7 --quiet > /dev/null ||
         fail "trk-sonar-sim --log exited $?"
     timeout 60 "$B/trk-lcm-bridge" --replay "$T/d$i.lcmlog" --out "$T/t$i.lcmlog" --quiet > "$T/r$i.out" ||
         fail "trk-lcm-bridge --replay exited $?"

@@ -9,9 +9,9 @@ TEST_EXTRA_DEPS_sim-papers-repro := $(BUILD)/bin/trk-sim $(BUILD)/tables/amp_k1_
 sim-papers-repro: $(TEST_EXTRA_DEPS_sim-papers-repro)
 	@d=$$(mktemp -d) || exit 1; st=0; s=$(BUILD)/bin/trk-sim; \
 	for t in 1 2; do \
-	  $$s brekke-trackloss --runs 40 --scans 60 --cell-m2 0.25 --nu 1 --snr-db 10 --pfa 1e-2,1e-1 \
+	  $$s brekke-trackloss --runs 40 --scans 60 --cell-m2 0.25 --k-shape 1 --snr-db 10 --pfa 1e-2,1e-1 \
 	    --seed 3 --threads $$t --quiet --no-plot --out $$d/tl$$t > /dev/null || st=1; \
-	  $$s brekke-toc --runs 30 --scans 60 --from 31 --nu 1 --pfa 1e-3,1e-1 --q2-samples 20000 \
+	  $$s brekke-toc --runs 30 --scans 60 --from 31 --k-shape 1 --pfa 1e-3,1e-1 --q2-samples 20000 \
 	    --seed 3 --threads $$t --quiet --no-plot --out $$d/toc$$t > /dev/null || st=1; \
 	  $$s willett-crlb --runs 200 --scans 40 --from 11 --points 0.9:0.001,0.8:0.0001 --q2-samples 20000 \
 	    --seed 3 --threads $$t --quiet --no-plot --out $$d/wc$$t > /dev/null || st=1; \

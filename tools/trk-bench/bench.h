@@ -3,7 +3,8 @@
  * A benchmark family lives in tools/trk-bench/bench_<family>.c and defines
  *     TRK_BENCH(name) { ... bench_print("name_x", value, "ns"); ... }
  * The build collects every TRK_BENCH line into the registry. `trk-bench`
- * runs all, `trk-bench NAME...` only those whose name starts with NAME.
+ * runs all, `trk-bench NAME...` only those whose name starts with NAME,
+ * `trk-bench --help` lists them (tools/cli's option parser).
  * Output lines: "bench <name> <value> <unit>". */
 #ifndef TRK_BENCH_H
 #define TRK_BENCH_H

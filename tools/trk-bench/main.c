@@ -1,12 +1,15 @@
 /* trk-bench - benchmarks of libtrk; prints "bench <name> <value> <unit>".
  *   trk-bench [PREFIX...]   run every benchmark, or those whose name starts
- *                           with one of the PREFIXes. */
+ *                           with one of the PREFIXes.
+ *   trk-bench --help        the benchmarks (also --list); exit status 0. */
 #define _POSIX_C_SOURCE 199309L
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "bench.h"
+#include "cli.h"
 #include "trk/types.h"
 
 #define TRK_BENCH_ENTRY(bname) TRK_BENCH(bname);
@@ -59,24 +62,71 @@ double bench_time_ns(void (*fn)(void *), void *arg, int reps)
     return best;
 }
 
+/* PREFIX operands. */
+struct prefixes {
+    const char **p;
+    int n;
+};
+
+static int take_prefix(void *ctx, const char *arg, const char *next, char *err, size_t errlen)
+{
+    struct prefixes *pr = ctx;
+    (void)next, (void)err, (void)errlen;
+    if (arg[0] == '-') return 0; /* an unknown option */
+    pr->p[pr->n++] = arg;
+    return 1;
+}
+
+static void list_benchmarks(FILE *f)
+{
+    fprintf(f, "benchmarks (each prints one or more lines \"bench <name> <value> <unit>\"):\n");
+    for (int i = 0; cases[i].name; i++) fprintf(f, "  %s\n", cases[i].name);
+}
+
 int main(int argc, char **argv)
 {
     if (trk_config_check() != TRK_OK) {
         fprintf(stderr, "trk-bench: libtrk was built with other capacities or real type\n");
         return 2;
     }
+    int list = 0;
+    struct prefixes pr = {NULL, 0};
+    pr.p = malloc((size_t)argc * sizeof *pr.p);
+    if (!pr.p) {
+        fprintf(stderr, "trk-bench: out of memory\n");
+        return 1;
+    }
+    const struct cli_opt opts[] = {
+        CLI_OPT_FLAG("--list", &list, "list the benchmarks and exit (as --help does)"),
+        CLI_OPT_END};
+    const struct cli cli = {
+        .prog = "trk-bench",
+        .usage = "[PREFIX...]",
+        .about = "Benchmarks of libtrk: runs every benchmark, or those whose name starts with one of\n"
+                 "the PREFIXes (exit status 2 when none matches).",
+        .opts = opts,
+        .more_help = list_benchmarks,
+        .operand = take_prefix,
+        .ctx = &pr};
+    const int parsed = cli_parse(&cli, argc, argv);
+    if (parsed != CLI_RUN || list) {
+        if (list) list_benchmarks(stdout);
+        free(pr.p);
+        return list ? 0 : parsed;
+    }
     printf("# trk-bench (%s build)\n", TRK_REAL_IS_FLOAT ? "float" : "double");
     int ran = 0;
     for (int i = 0; cases[i].name; i++) {
-        int want = argc < 2;
-        for (int a = 1; a < argc; a++)
-            if (strncmp(cases[i].name, argv[a], strlen(argv[a])) == 0) want = 1;
+        int want = pr.n == 0;
+        for (int a = 0; a < pr.n; a++)
+            if (strncmp(cases[i].name, pr.p[a], strlen(pr.p[a])) == 0) want = 1;
         if (!want) continue;
         cases[i].fn();
         ran++;
     }
+    free(pr.p);
     if (ran == 0) {
-        fprintf(stderr, "trk-bench: no benchmark matches\n");
+        fprintf(stderr, "trk-bench: no benchmark matches (see --help)\n");
         return 2;
     }
     return 0;

@@ -1,6 +1,6 @@
 /* trk-lcm-bridge - LCM detection scans in, tracks out (see --help).
  *
- *   trk-lcm-bridge [options]                       live: subscribe, track, publish
+ *   trk-lcm-bridge [options] [--set KEY=VALUE ...] live: subscribe, track, publish
  *   trk-lcm-bridge --replay IN --out OUT [options] offline: log in, log out
  *   trk-lcm-bridge --summarize LOG                 what a track log contains
  *
@@ -16,46 +16,12 @@
 #include "bridge.h"
 #include "cli.h"
 #include "kvfile.h"
+#include "tracker_config.h"
 #include "transport.h"
 
-static void usage(FILE *f)
+static void more_help(FILE *f)
 {
-    fprintf(f,
-            "usage: trk-lcm-bridge [options] [--KEY VALUE ...]\n"
-            "       trk-lcm-bridge --replay IN.lcmlog --out OUT.lcmlog [options]\n"
-            "       trk-lcm-bridge --summarize LOG.lcmlog [--tracks CH] [--status CH] [--truth CH]\n"
-            "\n"
-            "Subscribes to detection scans (trk.detection_scan_t), runs the trk tracker and\n"
-            "publishes the track table (trk.track_list_t) after every accepted scan, plus a\n"
-            "status message (trk.bridge_status_t). Bad messages are rejected, counted and\n"
-            "logged (once per cause, then at most every log_interval_s); the next scan is\n"
-            "processed normally. SIGINT/SIGTERM stop it cleanly with a summary.\n"
-            "\n"
-            "Options:\n"
-            "  --config FILE          settings file, 'key = value' lines (any key below);\n"
-            "                         command-line settings override it\n"
-            "  --lcm-url URL          LCM provider [lcm_url] (default: $LCM_DEFAULT_URL,\n"
-            "                         else LCM's default udpm://239.255.76.67:7667?ttl=0)\n"
-            "  --detections CH        detection channel [detection_channel] (TRK_DETECTIONS)\n"
-            "  --tracks CH            track channel [track_channel] (TRK_TRACKS)\n"
-            "  --status CH            status channel, '' = none [status_channel] (TRK_BRIDGE_STATUS)\n"
-            "  --status-period-s S    status every S seconds (log time in replay), 0 = only\n"
-            "                         at the end [status_period_s] (1)\n"
-            "  --log-interval-s S     at most one message per rejection cause per S seconds\n"
-            "                         [log_interval_s] (10)\n"
-            "  --max-scans N          live: stop after N accepted scans (0 = until a signal)\n"
-            "  --idle-exit-s S        live: stop when nothing arrived for S seconds (0 = never)\n"
-            "  --replay IN --out OUT  replay the LCM log IN (lcm-logger format) as fast as\n"
-            "                         possible and write the tracks to the log OUT; same input,\n"
-            "                         byte-identical output\n"
-            "  --keep-input           replay: copy the input events to OUT as well\n"
-            "  --summarize LOG        print what a track log holds and exit\n"
-            "  --truth CH             summarize: truth channel of trk-sonar-sim (TRK_TRUTH)\n"
-            "  --print-config         print the effective settings as a config file and exit\n"
-            "  --quiet                no rejection messages (counts are kept)\n"
-            "  --KEY VALUE, --KEY=VALUE, --set KEY=VALUE   any setting (bridge or tracker)\n"
-            "  --help\n"
-            "\n");
+    fprintf(f, "\n");
     tcfg_help(f);
     fprintf(f,
             "\nThe tracker is built for %d tracks and %d detections per scan; the messages\n"
@@ -76,30 +42,117 @@ static int set_any(void *ctx, const char *key, const char *value, char *err, siz
     return r <= 0 ? r : tcfg_set(&s->cfg, key, value, err, n);
 }
 
-/* --name VALUE or --name=VALUE (cli.h): 1 matched (*val set), -1 missing value, 0 no */
-static int opt(int argc, char **argv, int *i, const char *name, const char **val)
+/* The settings of the command line, applied after parsing: the --config
+ * files first (in order), then every other setting in command-line order
+ * (so the command line overrides the files). */
+enum action_kind {
+    A_FLAG,      /* a bridge flag (--tracks CH): bridge_opts_set(key, value) */
+    A_SET,       /* --set KEY=VALUE (value) */
+    A_OLD_PAIR,  /* old form --KEY VALUE (key, value) */
+    A_OLD_JOINED /* old form --KEY=VALUE (value: KEY=VALUE) */
+};
+
+struct action {
+    enum action_kind kind;
+    const char *opt;   /* the option as given ("--tracks", "--set", "--term"): messages */
+    const char *key;   /* A_FLAG, A_OLD_PAIR */
+    const char *value;
+};
+
+struct plan {
+    struct action *a;
+    int n, cap;
+    struct settings scratch; /* to tell known keys of old forms */
+};
+
+static int push(struct plan *pl, enum action_kind kind, const char *opt, const char *key, const char *value,
+                char *err, size_t n)
 {
-    return cli_opt(argc, argv, i, name, val, "trk-lcm-bridge");
+    if (pl->n == pl->cap) {
+        snprintf(err, n, "too many settings");
+        return -1;
+    }
+    struct action ac = {kind, opt, key, value};
+    pl->a[pl->n++] = ac;
+    return 0;
 }
 
 /* The bridge's own flags and the config keys they set. */
-static const struct {
+struct flag_bind {
+    struct plan *pl;
     const char *flag, *key;
-} BRIDGE_FLAGS[] = {{"--lcm-url", "lcm_url"},
-                    {"--detections", "detection_channel"},
-                    {"--tracks", "track_channel"},
-                    {"--status", "status_channel"},
-                    {"--status-period-s", "status_period_s"},
-                    {"--log-interval-s", "log_interval_s"}};
+};
 
-static int bridge_flag(int argc, char **argv, int *i, const char **val, const char **key)
+static int bridge_flag(void *ctx, const char *v, char *err, size_t n)
 {
-    for (size_t f = 0; f < sizeof BRIDGE_FLAGS / sizeof BRIDGE_FLAGS[0]; f++) {
-        int k = opt(argc, argv, i, BRIDGE_FLAGS[f].flag, val);
-        if (k != 0) {
-            *key = BRIDGE_FLAGS[f].key;
-            return k;
+    const struct flag_bind *b = ctx;
+    return push(b->pl, A_FLAG, b->flag, b->key, v, err, n);
+}
+
+static int set_opt(void *ctx, const char *v, char *err, size_t n)
+{
+    return push(ctx, A_SET, "--set", NULL, v, err, n);
+}
+
+/* The old forms --KEY VALUE and --KEY=VALUE of a setting (deprecated). */
+static int old_setting(void *ctx, const char *a, const char *next, char *err, size_t n)
+{
+    struct plan *pl = ctx;
+    char key[KV_MAX_LINE], msg[512], old_s[KV_MAX_LINE + 64], new_s[KV_MAX_LINE + 64];
+    if (strncmp(a, "--", 2) != 0 || !a[2]) return 0;
+    const char *eq = strchr(a + 2, '=');
+    if (!eq && !next) return 0;
+    const size_t klen = eq ? (size_t)(eq - (a + 2)) : strlen(a + 2);
+    if (klen >= sizeof key) return 0;
+    memcpy(key, a + 2, klen);
+    key[klen] = 0;
+    /* a key of neither table: an unknown option */
+    if (set_any(&pl->scratch, key, eq ? eq + 1 : next, msg, sizeof msg) > 0) {
+        snprintf(err, n, "unknown option --%s (and unknown setting '%s'; see --help)", key, key);
+        return -1;
+    }
+    if (eq) {
+        snprintf(old_s, sizeof old_s, "%s", a);
+        snprintf(new_s, sizeof new_s, "--set %s", a + 2);
+    } else {
+        snprintf(old_s, sizeof old_s, "%s %s", a, next);
+        snprintf(new_s, sizeof new_s, "--set %s=%s", a + 2, next);
+    }
+    cli_note_deprecated("trk-lcm-bridge", old_s, new_s);
+    if (push(pl, eq ? A_OLD_JOINED : A_OLD_PAIR, a, a + 2, eq ? a + 2 : next, err, n) != 0) return -1;
+    return eq ? 1 : 2;
+}
+
+/* The plan into *s: 0, or -1 after a message. */
+static int apply(struct settings *s, const char *const *configs, int n_configs, const struct plan *pl)
+{
+    char err[1024], kv[KV_MAX_LINE];
+    for (int i = 0; i < n_configs; i++)
+        if (kv_parse_file(configs[i], set_any, s, err, sizeof err) != 0) {
+            fprintf(stderr, "trk-lcm-bridge: %s\n", err);
+            return -1;
         }
+    for (int i = 0; i < pl->n; i++) {
+        const struct action *ac = &pl->a[i];
+        int r = 0;
+        switch (ac->kind) {
+        case A_FLAG:
+            if ((r = bridge_opts_set(&s->o, ac->key, ac->value, err, sizeof err)) != 0)
+                fprintf(stderr, "trk-lcm-bridge: %s: %s\n", ac->opt, err);
+            break;
+        case A_SET:
+            if ((r = kv_parse_assignment(ac->value, set_any, s, err, sizeof err)) != 0)
+                fprintf(stderr, "trk-lcm-bridge: --set %s: %s\n", ac->value, err);
+            break;
+        case A_OLD_PAIR:
+        case A_OLD_JOINED:
+            if (ac->kind == A_OLD_PAIR) snprintf(kv, sizeof kv, "%s=%s", ac->key, ac->value);
+            else snprintf(kv, sizeof kv, "%s", ac->value);
+            if ((r = kv_parse_assignment(kv, set_any, s, err, sizeof err)) != 0)
+                fprintf(stderr, "trk-lcm-bridge: %s: %s (see --help)\n", ac->opt, err);
+            break;
+        }
+        if (r != 0) return -1;
     }
     return 0;
 }
@@ -107,10 +160,11 @@ static int bridge_flag(int argc, char **argv, int *i, const char **val, const ch
 int main(int argc, char **argv)
 {
     static struct settings s;
+    static struct plan pl;
     char err[1024];
-    const char *replay_in = NULL, *replay_out = NULL, *summarize = NULL, *v;
+    const char *replay_in = NULL, *replay_out = NULL, *summarize = NULL;
     const char *truth_channel = "TRK_TRUTH";
-    int keep_input = 0, print_config = 0;
+    int keep_input = 0, print_config = 0, n_configs = 0;
     long max_scans = 0;
     double idle_exit_s = 0;
 
@@ -120,88 +174,81 @@ int main(int argc, char **argv)
     }
     bridge_opts_defaults(&s.o);
     tcfg_defaults(&s.cfg);
-
-    /* pass 1: help and the config file (command-line settings override it) */
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return 0;
-        }
-        int k = opt(argc, argv, &i, "--config", &v);
-        if (k < 0) return 2;
-        if (k > 0 && kv_parse_file(v, set_any, &s, err, sizeof err) != 0) {
-            fprintf(stderr, "trk-lcm-bridge: %s\n", err);
-            return 2;
-        }
+    bridge_opts_defaults(&pl.scratch.o);
+    tcfg_defaults(&pl.scratch.cfg);
+    const char **configs = malloc((size_t)argc * sizeof *configs);
+    pl.a = malloc((size_t)argc * sizeof *pl.a);
+    pl.cap = argc;
+    if (!configs || !pl.a) {
+        fprintf(stderr, "trk-lcm-bridge: out of memory\n");
+        free(configs), free(pl.a);
+        return 1;
     }
-    /* pass 2: everything else, in order */
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int k;
-        const char *key;
-        char kv[KV_MAX_LINE];
-#define OPT(name) ((k = opt(argc, argv, &i, name, &v)) != 0)
-        if (OPT("--config")) {
-            if (k < 0) return 2;
-        } else if ((k = bridge_flag(argc, argv, &i, &v, &key)) != 0) {
-            if (k < 0) return 2;
-            if (bridge_opts_set(&s.o, key, v, err, sizeof err) != 0) {
-                fprintf(stderr, "trk-lcm-bridge: %s: %s\n", a, err);
-                return 2;
-            }
-        } else if (OPT("--max-scans")) {
-            if (k < 0 || kv_parse_long(v, 0, 2000000000L, &max_scans) != 0) {
-                fprintf(stderr, "trk-lcm-bridge: --max-scans needs a count >= 0\n");
-                return 2;
-            }
-        } else if (OPT("--idle-exit-s")) {
-            if (k < 0 || kv_parse_double(v, &idle_exit_s) != 0 || idle_exit_s < 0) {
-                fprintf(stderr, "trk-lcm-bridge: --idle-exit-s needs seconds >= 0\n");
-                return 2;
-            }
-        } else if (OPT("--replay")) {
-            if (k < 0) return 2;
-            replay_in = v;
-        } else if (OPT("--out")) {
-            if (k < 0) return 2;
-            replay_out = v;
-        } else if (OPT("--summarize")) {
-            if (k < 0) return 2;
-            summarize = v;
-        } else if (OPT("--truth")) {
-            if (k < 0) return 2;
-            truth_channel = v;
-        } else if (OPT("--set")) {
-            if (k < 0) return 2;
-            if (kv_parse_assignment(v, set_any, &s, err, sizeof err) != 0) {
-                fprintf(stderr, "trk-lcm-bridge: --set %s: %s\n", v, err);
-                return 2;
-            }
-        } else if (strcmp(a, "--keep-input") == 0) {
-            keep_input = 1;
-        } else if (strcmp(a, "--print-config") == 0) {
-            print_config = 1;
-        } else if (strcmp(a, "--quiet") == 0) {
-            s.o.quiet = 1;
-        } else if (strncmp(a, "--", 2) == 0 && a[2]) {
-            /* --KEY=VALUE or --KEY VALUE for any setting */
-            const char *eq = strchr(a + 2, '=');
-            if (eq) snprintf(kv, sizeof kv, "%s", a + 2);
-            else if (i + 1 < argc) snprintf(kv, sizeof kv, "%s=%s", a + 2, argv[++i]);
-            else {
-                fprintf(stderr, "trk-lcm-bridge: unknown option %s (see --help)\n", a);
-                return 2;
-            }
-            if (kv_parse_assignment(kv, set_any, &s, err, sizeof err) != 0) {
-                fprintf(stderr, "trk-lcm-bridge: %s: %s (see --help)\n", a, err);
-                return 2;
-            }
-        } else {
-            fprintf(stderr, "trk-lcm-bridge: unexpected argument '%s' (see --help)\n", a);
-            return 2;
-        }
-#undef OPT
-    }
+    struct flag_bind fb[] = {{&pl, "--lcm-url", "lcm_url"},
+                             {&pl, "--detections", "detection_channel"},
+                             {&pl, "--tracks", "track_channel"},
+                             {&pl, "--status", "status_channel"},
+                             {&pl, "--status-period-s", "status_period_s"},
+                             {&pl, "--log-interval-s", "log_interval_s"}};
+    const struct cli_opt opts[] = {
+        CLI_OPT_STRINGS("--config", configs, &n_configs, argc, "FILE",
+                        "settings file, 'key = value' lines (any key below);\n"
+                        "command-line settings override it (repeat for more files)"),
+        CLI_OPT_CALL("--set", &pl, set_opt, "KEY=VALUE",
+                     "any setting: a bridge key [in brackets] or a tracker key\n(below); repeat for more"),
+        {.name = "--lcm-url", .type = CLI_CALL, .dst = &fb[0], .call = bridge_flag, .arg = "URL",
+         .flags = CLI_EMPTY_OK,
+         .help = "LCM provider [lcm_url] (default: $LCM_DEFAULT_URL,\n"
+                 "else LCM's default udpm://239.255.76.67:7667?ttl=0)"},
+        CLI_OPT_CALL("--detections", &fb[1], bridge_flag, "CH",
+                     "detection channel [detection_channel] (TRK_DETECTIONS)"),
+        CLI_OPT_CALL("--tracks", &fb[2], bridge_flag, "CH", "track channel [track_channel] (TRK_TRACKS)"),
+        {.name = "--status", .type = CLI_CALL, .dst = &fb[3], .call = bridge_flag, .arg = "CH",
+         .flags = CLI_EMPTY_OK, .help = "status channel, '' = none [status_channel] (TRK_BRIDGE_STATUS)"},
+        CLI_OPT_CALL("--status-period-s", &fb[4], bridge_flag, "S",
+                     "status every S seconds (log time in replay), 0 = only\n"
+                     "at the end [status_period_s] (1)"),
+        CLI_OPT_CALL("--log-interval-s", &fb[5], bridge_flag, "S",
+                     "at most one message per rejection cause per S seconds\n[log_interval_s] (10)"),
+        CLI_OPT_LONG("--max-scans", &max_scans, "N", NULL, CLI_IN, 0, 2000000000.0,
+                     "live: stop after N accepted scans (0 = until a signal)"),
+        CLI_OPT_DOUBLE("--idle-exit-s", &idle_exit_s, "S", NULL, CLI_GE, 0, 0,
+                       "live: stop when nothing arrived for S seconds (0 = never)"),
+        CLI_OPT_STRING("--replay", &replay_in, "IN",
+                       NULL, "replay the LCM log IN (lcm-logger format) as fast as\n"
+                             "possible and write the tracks to the log --out; same input,\n"
+                             "byte-identical output"),
+        CLI_OPT_STRING("--out", &replay_out, "OUT", NULL, "replay: the track log written"),
+        CLI_OPT_FLAG("--keep-input", &keep_input, "replay: copy the input events to OUT as well"),
+        CLI_OPT_STRING("--summarize", &summarize, "LOG", NULL, "print what a track log holds and exit"),
+        {.name = "--truth", .type = CLI_STRING, .dst = &truth_channel, .arg = "CH", .flags = CLI_EMPTY_OK,
+         .help = "summarize: truth channel of trk-sonar-sim (TRK_TRUTH)"},
+        CLI_OPT_FLAG("--print-config", &print_config, "print the effective settings as a config file and exit"),
+        CLI_OPT_FLAG("--quiet", &s.o.quiet, "no rejection messages (counts are kept)"),
+        CLI_OPT_END};
+    const struct cli cli = {
+        .prog = "trk-lcm-bridge",
+        .usage = "[options] [--set KEY=VALUE ...]\n"
+                 "       trk-lcm-bridge --replay IN.lcmlog --out OUT.lcmlog [options]\n"
+                 "       trk-lcm-bridge --summarize LOG.lcmlog [--tracks CH] [--status CH] [--truth CH]",
+        .about = "\n"
+                 "Subscribes to detection scans (trk.detection_scan_t), runs the trk tracker and\n"
+                 "publishes the track table (trk.track_list_t) after every accepted scan, plus a\n"
+                 "status message (trk.bridge_status_t). Bad messages are rejected, counted and\n"
+                 "logged (once per cause, then at most every log_interval_s); the next scan is\n"
+                 "processed normally. SIGINT/SIGTERM stop it cleanly with a summary.\n",
+        .opts = opts,
+        .after = "deprecated spellings (accepted until the next release, with a note on stderr):\n"
+                 "  --KEY VALUE, --KEY=VALUE  use --set KEY=VALUE (any setting, e.g. --term page:\n"
+                 "                      --set term=page)",
+        .more_help = more_help,
+        .operand = old_setting,
+        .ctx = &pl};
+    int parsed = cli_parse(&cli, argc, argv);
+    if (parsed == CLI_RUN && apply(&s, configs, n_configs, &pl) != 0) parsed = 2;
+    free(configs);
+    free(pl.a);
+    if (parsed != CLI_RUN) return parsed;
 
     if (summarize) return bridge_summarize(summarize, &s.o, truth_channel, stdout) == 0 ? 0 : 1;
     if (print_config) {

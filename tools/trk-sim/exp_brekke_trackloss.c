@@ -83,7 +83,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         SIM_OPT_LIST("--cell-m2", cells, &ncell, MAXL, "1,0.25,0.1", SIM_GT, 0, 0,
                      "resolution cell areas, lambda = P_FA / cell\n"
                      "(the paper does not print it, CONVENTIONS asks for all three)"),
-        SIM_OPT_LIST("--nu", nus, &nnu, MAXL, "1,8", 0, 0, 0, "K shapes"),
+        SIM_OPT_LIST("--k-shape", nus, &nnu, MAXL, "1,8", SIM_GT, 0, 0, "K shapes nu"),
+        SIM_OPT_ALIAS("--nu", "--k-shape"),
         SIM_OPT_LIST("--snr-db", snrs, &nsnr, MAXL, "10,15", 0, 0, 0, "target SNRs"),
         SIM_OPT_LIST("--pfa", pfas, &npfa, MAXL, "1e-4,1e-2,1e-1", 0, 0, 0, "false-alarm probabilities"),
         SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",

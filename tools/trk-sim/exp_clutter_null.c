@@ -63,8 +63,9 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
         SIM_OPT_LONG("--scans", &scans, "N", "40", SIM_IN, 1, MAX_SCANS, "updates per track"),
         SIM_OPT_DOUBLE("--alpha", &alpha, "A", "0.01", SIM_OPEN, 0, 1, "size of both tests"),
         SIM_OPT_LONG("--kmax", &kmax, "K", "25", SIM_IN, 1, TRK_CLUTTER_KMAX, "window, as Kennedy's"),
-        SIM_OPT_DOUBLE("--mean-peaks", &mean_peaks, "M", "30", SIM_IN, 2, 1000,
+        SIM_OPT_DOUBLE("--clutter-count", &mean_peaks, "M", "30", SIM_IN, 2, 1000,
                        "expected clutter peaks per scan in the region"),
+        SIM_OPT_ALIAS("--mean-peaks", "--clutter-count"),
         SIM_OPT_DOUBLE("--a-min", &a_min, "DB", "5", 0, 0, 0, "detection threshold SNR"),
         SIM_OPT_DOUBLE("--theta", &theta, "DB", "8", 0, 0, 0, "mean clutter SNR above threshold, theta_A"),
         SIM_OPT_END};

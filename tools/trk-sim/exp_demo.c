@@ -30,6 +30,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cli.h"
+#include "kvfile.h"
 #include "progress.h"
 #include "scenario.h"
 #include "sim.h"
@@ -75,7 +77,8 @@ static int mkdir_p(const char *path)
     return 0;
 }
 
-/* key=value operands: tracker settings, applied after the demo's own */
+/* Tracker settings, applied after the demo's own, in command-line order:
+ * --set key=value, and the old bare key=value operands (deprecated). */
 struct demo_settings {
     const char *kv[MAX_SETTINGS];
     int n;
@@ -85,6 +88,9 @@ static int take_setting(const char *arg, void *ctx)
 {
     struct demo_settings *s = ctx;
     if (arg[0] == '-' || !strchr(arg, '=') || s->n >= MAX_SETTINGS) return -1;
+    char new_form[600];
+    snprintf(new_form, sizeof new_form, "--set %.500s", arg);
+    cli_note_deprecated("trk-sim demo", arg, new_form);
     s->kv[s->n++] = arg;
     return 0;
 }
@@ -102,29 +108,34 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
                        "uses DIR/amp_k1_snr15_pfa1e-2.tbl"),
         SIM_OPT_STRING("--amp-table", &amp_table, "FILE", NULL, "another amplitude table (its model, SNR and P_FA)"),
         SIM_OPT_LONG("--scans", &scans, "N", "250", SIM_IN, 10, 100000, "scans, one every 2 s"),
-        SIM_OPT_DOUBLE("--clutter", &clutter_per_scan, "N", "15", SIM_IN, 0, 200,
-                       "mean clutter detections per scan over the 2 km x 2 km area"),
+        SIM_OPT_DOUBLE("--clutter-count", &clutter_per_scan, "N", "15", SIM_IN, 0, 200,
+                       "clutter detections per scan over the 2 km x 2 km area\n"
+                       "(the mean of a Poisson count)"),
+        SIM_OPT_ALIAS("--clutter", "--clutter-count"),
+        SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
+                        "a tracker setting (the keys below; repeat for more)"),
         SIM_OPT_FLAG("--fluct", &fluct, "targets fade (Blanding's two-state P_D: p 0.1, q 0.02, P_D low 0.1)"),
         SIM_OPT_DOUBLE("--assoc-m", &assoc_m, "D", "25", SIM_GT, 0, 0, "a track is on a target within D m"),
         SIM_OPT_LONG("--mre-samples", &mre_samples, "N", NULL, SIM_GE, 1000, 0,
                      "importance samples of the MRE's q2 (default: toc.h's)"),
         SIM_OPT_END};
     const struct sim_cli cli = {
-        "demo", "[options] [key=value ...]",
+        "demo", "[options] [--set key=value ...]",
         "trk's main job end to end (`make demo`): a simulated sonar with heavy-tailed (K, nu 1)\n"
         "clutter through the track table (PDAFAI, confirmation by amplitude-aided visibility,\n"
         "Shiryaev termination);\n"
         "prints a summary (tracks confirmed, lost, false; RMSE against the MRE prediction) and\n"
         "writes CSV files and PNG plots.",
         opts, "demo", "DIR", SIM_UNUSED_RUNS | SIM_UNUSED_THREADS,
-        "key=value: tracker settings (tracker_config.h keys, e.g. term=page, confirm=mn);\n"
-        "the demo sets confirm=visibility, max_tentative_scans=10,\n"
-        "init_speed_sigma_mps=3, term=shiryaev with the scenario's detection model\n"
+        "--set key=value: tracker settings (the keys below, as in a config file, e.g.\n"
+        "--set term=page --set confirm=mn), applied after the demo's own: confirm=visibility,\n"
+        "max_tentative_scans=10, init_speed_sigma_mps=3, term=shiryaev with the scenario's\n"
+        "detection model. (A bare key=value operand still works, with a deprecation note.)\n"
         "Writes DIR/detections.csv, truth.csv, tracks.csv, errors.csv, summary.csv,\n"
-        "demo_tracks.png (tracks over detections), demo_error.png (error over time).",
+        "demo_tracks.png (tracks over detections), demo_error.png (error over time).\n",
         take_setting, &set};
     struct sim_common com;
-    const int parsed = sim_parse(&cli, &com, argc, argv);
+    const int parsed = sim_parse_more(&cli, tcfg_help, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     const double t_start = progress_now_s();
     char err[512], table_path[1024], path[1200];
@@ -168,7 +179,6 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     /* ---- the tracker: defaults, the demo's settings, then the user's */
     static struct tcfg cfg;
     tcfg_defaults(&cfg);
-    char kv[N_TG * 64 + 1024];
     const char *demo_set[] = {"sensor.0.meas_sigma_m", "process_noise_q", "gate_prob", "confirm", "term",
                               "sensor.0.clutter_density_per_m2", "sensor.0.amp_table", "hmm.pd_high",
                               "hmm.pd_low", "hmm.p_low_high", "hmm.q_high_low", "max_tentative_scans",
@@ -197,18 +207,12 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
             scen_free(&sc);
             return 1;
         }
-    for (int i = 0; i < set.n; i++) {
-        snprintf(kv, sizeof kv, "%s", set.kv[i]);
-        char *eq = strchr(kv, '=');
-        *eq = 0;
-        int r = tcfg_set(&cfg, kv, eq + 1, err, sizeof err);
-        if (r != 0) {
-            fprintf(stderr, "demo: %s: %s\n", set.kv[i],
-                    r > 0 ? "unknown key (see trk-lcm-bridge --help-config)" : err);
+    for (int i = 0; i < set.n; i++)
+        if (kv_parse_assignment(set.kv[i], tcfg_set, &cfg, err, sizeof err) != 0) {
+            fprintf(stderr, "trk-sim demo: --set %s: %s (see trk-sim demo --help)\n", set.kv[i], err);
             scen_free(&sc);
             return 2;
         }
-    }
     if (tcfg_check(&cfg, err, sizeof err) != 0) {
         fprintf(stderr, "demo: tracker configuration: %s\n", err);
         scen_free(&sc);

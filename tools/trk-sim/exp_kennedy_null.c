@@ -38,8 +38,9 @@ SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-trac
     const struct sim_opt opts[] = {
         SIM_OPT_LONG("--runs", &runs, "N", "1000", SIM_GE, 1, 0, "runs per scan length, as in the paper"),
         SIM_OPT_LONG("--max-scans", &max_scans, "N", "50", SIM_IN, 2, 100000, "run lengths 2 .. N"),
-        SIM_OPT_LONG("--peaks", &peaks, "N", "100", SIM_GE, 2, 0,
+        SIM_OPT_LONG("--clutter-count", &peaks, "N", "100", SIM_GE, 2, 0,
                      "clutter peaks per scan (at most TRK_MAX_DETECTIONS)"),
+        SIM_OPT_ALIAS("--peaks", "--clutter-count"),
         SIM_OPT_DOUBLE("--alpha", &alpha, "A", "0.01", SIM_OPEN, 0, 1, "size of both tests"),
         SIM_OPT_LONG("--kmax", &kmax, "K", "25", SIM_IN, 1, TRK_CLUTTER_KMAX, "window"),
         SIM_OPT_DOUBLE("--b", &b, "B", "0.02", SIM_OPEN, 0, 1,

@@ -117,6 +117,7 @@ static int parse_points(const char *v, void *dst)
     struct wc_points *p = dst;
     const char *s = v;
     p->n = 0;
+    if (strpbrk(v, " \t\n\r\v\f")) return -1; /* no blanks, as every number */
     while (*s && p->n < MAXP) {
         char *end;
         const double pd = strtod(s, &end);

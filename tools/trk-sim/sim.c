@@ -9,63 +9,16 @@
 #include <omp.h>
 #endif
 
-#include "cli.h"
 #include "plot.h"
 #include "single_target.h"
 #include "trk/table_file.h"
 
-/* ---------------------------------------------------------------- value parsers */
-
-int sim_parse_long(const char *s, long *v)
-{
-    char *end;
-    errno = 0;
-    double d = strtod(s, &end); /* accepts 1e6 */
-    /* (the range test keeps the conversion to long defined) */
-    if (errno || end == s || *end || !(d >= -9.2e18 && d <= 9.2e18) || d != (double)(long)d) return -1;
-    *v = (long)d;
-    return 0;
-}
-
-int sim_parse_double(const char *s, double *v)
-{
-    char *end;
-    errno = 0;
-    *v = strtod(s, &end);
-    return errno || end == s || *end ? -1 : 0;
-}
-
-int sim_parse_list(const char *s, double *v, int max)
-{
-    double a, b, st;
-    char tail;
-    if (sscanf(s, "%lf:%lf:%lf%c", &a, &b, &st, &tail) == 3) {
-        if (!(st > 0) || b < a) return -1;
-        int n = 0;
-        for (double x = a; x <= b + 1e-9 * st; x = a + st * n) {
-            if (n == max) return -1; /* more values than the list holds: refuse, never drop */
-            v[n++] = x;
-        }
-        return n;
-    }
-    int n = 0;
-    const char *p = s;
-    while (*p) {
-        char *end;
-        if (n == max) return -1; /* more values than the list holds */
-        v[n] = strtod(p, &end);
-        if (end == p) return -1;
-        n++;
-        if (*end == ',') end++;
-        else if (*end) return -1;
-        p = end;
-    }
-    return n > 0 ? n : -1;
-}
+/* ---------------------------------------------------------------- options */
 
 static int parse_seed(const char *s, void *dst)
 {
     char *end;
+    if (!*s || strpbrk(s, " \t\n\r\v\f")) return -1; /* no blanks, as every number */
     errno = 0;
     unsigned long long v = strtoull(s, &end, 0);
     if (errno || end == s || *end) return -1;
@@ -73,143 +26,24 @@ static int parse_seed(const char *s, void *dst)
     return 0;
 }
 
-/* ---------------------------------------------------------------- option table */
-
-static int in_range(const struct sim_opt *o, double v)
-{
-    return (!(o->range & SIM_GE) || v >= o->lo) && (!(o->range & SIM_GT) || v > o->lo) &&
-           (!(o->range & SIM_LE) || v <= o->hi) && (!(o->range & SIM_LT) || v < o->hi);
-}
-
-/* "in [lo, hi]", ">= lo", ... ("" without a range). */
-static void range_text(const struct sim_opt *o, char *buf, size_t n)
-{
-    const unsigned lo = o->range & (SIM_GE | SIM_GT), hi = o->range & (SIM_LE | SIM_LT);
-    if (lo && hi)
-        snprintf(buf, n, " in %c%.15g, %.15g%c", lo == SIM_GE ? '[' : '(', o->lo, o->hi, hi == SIM_LE ? ']' : ')');
-    else if (lo)
-        snprintf(buf, n, " %s %.15g", lo == SIM_GE ? ">=" : ">", o->lo);
-    else if (hi)
-        snprintf(buf, n, " %s %.15g", hi == SIM_LE ? "<=" : "<", o->hi);
-    else
-        buf[0] = 0;
-}
-
-/* The k-th word of "a|b|c" matching s? */
-static int choice_index(const char *words, const char *s)
-{
-    const size_t len = strlen(s);
-    for (int k = 0; *words; k++) {
-        const size_t w = strcspn(words, "|");
-        if (w == len && strncmp(words, s, len) == 0) return k;
-        words += w;
-        if (*words == '|') words++;
-    }
-    return -1;
-}
-
-/* The value into o->dst: 0, or -1 (nothing stored for a scalar). */
-static int set_value(const struct sim_opt *o, const char *v)
-{
-    switch (o->type) {
-    case SIM_LONG: {
-        long l;
-        if (sim_parse_long(v, &l) || !in_range(o, (double)l)) return -1;
-        *(long *)o->dst = l;
-        return 0;
-    }
-    case SIM_DOUBLE: {
-        double d;
-        if (sim_parse_double(v, &d) || !in_range(o, d)) return -1;
-        *(double *)o->dst = d;
-        return 0;
-    }
-    case SIM_LIST: {
-        double *x = o->dst;
-        const int n = sim_parse_list(v, x, o->max);
-        if (n < 1) return -1;
-        for (int k = 0; k < n; k++)
-            if (!in_range(o, x[k])) return -1;
-        *o->n = n;
-        return 0;
-    }
-    case SIM_CHOICE: {
-        const int k = choice_index(o->arg, v);
-        if (k < 0) return -1;
-        *(int *)o->dst = o->values ? o->values[k] : k;
-        return 0;
-    }
-    case SIM_STRING: *(const char **)o->dst = v; return 0;
-    case SIM_CUSTOM: return o->parse(v, o->dst);
-    case SIM_FLAG: break;
-    }
-    return -1;
-}
-
-static void bad_value(const char *exp, const struct sim_opt *o, const char *v)
-{
-    char what[160] = "see --help", r[96];
-    range_text(o, r, sizeof r);
-    switch (o->type) {
-    case SIM_LONG: snprintf(what, sizeof what, "an integer%s", r); break;
-    case SIM_DOUBLE: snprintf(what, sizeof what, "a number%s", r); break;
-    case SIM_LIST:
-        snprintf(what, sizeof what, "a list a,b,c or from:to:step%s%s",
-                 r[0] ? ", each" : "", r);
-        break;
-    case SIM_CHOICE: snprintf(what, sizeof what, "one of %s", o->arg); break;
-    default: break;
-    }
-    fprintf(stderr, "%s: bad value for %s: '%s' (%s)\n", exp, o->name, v, what);
-}
-
-/* One option's lines of --help: name and value, the help text, the default
- * (on a line of its own when the last one is long). */
-static void help_line(FILE *f, const struct sim_opt *o, const char *out_arg)
-{
-    char left[96];
-    const char *arg = o->type == SIM_FLAG ? NULL : o->arg;
-    if (strcmp(o->name, "--out") == 0) arg = out_arg;
-    snprintf(left, sizeof left, "%s%s%s", o->name, arg ? " " : "", arg ? arg : "");
-    int col = strlen(left) < 20 ? fprintf(f, "  %-19s ", left) : fprintf(f, "  %s  ", left);
-    for (const char *h = o->help ? o->help : "";;) {
-        const size_t len = strcspn(h, "\n");
-        col += fprintf(f, "%.*s", (int)len, h);
-        h += len;
-        if (!*h) break;
-        col = fprintf(f, "\n  %-19s ", "") - 1;
-        h++;
-    }
-    if (o->def) {
-        if (col + 11 + (int)strlen(o->def) > 100) fprintf(f, "\n  %-19s (default %s)\n", "", o->def);
-        else fprintf(f, " (default %s)\n", o->def);
-    } else {
-        fputc('\n', f);
-    }
-}
-
-static const struct sim_opt *find(const struct sim_opt *t, const char *name)
-{
-    for (; t && t->name; t++)
-        if (strcmp(t->name, name) == 0) return t;
-    return NULL;
-}
-
 enum { C_SEED, C_RUNS, C_OUT, C_THREADS, C_QUIET, C_NO_PLOT, C_N };
 
 /* The common options over *com (and *threads: --threads is parsed as a long). */
-static void common_table(struct sim_opt t[C_N + 1], struct sim_common *com, long *threads, const char *def_out)
+static void common_table(struct cli_opt t[C_N + 1], struct sim_common *com, long *threads, const char *def_out,
+                         const char *out_arg)
 {
-    const struct sim_opt c[C_N + 1] = {
-        SIM_OPT_CUSTOM("--seed", &com->seed, parse_seed, "N", "1",
+    const struct cli_opt c[C_N + 1] = {
+        CLI_OPT_CUSTOM("--seed", &com->seed, parse_seed, "N", "1",
                        "random seed; run i draws from the stream (seed, i)"),
-        SIM_OPT_LONG("--runs", &com->runs, "N", NULL, SIM_GE, 1, 0, "Monte Carlo runs"),
-        SIM_OPT_STRING("--out", &com->out, "PREFIX", def_out, "prefix of the output files"),
-        SIM_OPT_LONG("--threads", threads, "N", NULL, SIM_IN, 1, 1024,
+        CLI_OPT_LONG("--runs", &com->runs, "N", NULL, CLI_GE, 1, 0, "Monte Carlo runs"),
+        CLI_OPT_STRING("--out", &com->out, out_arg ? out_arg : "PREFIX", def_out,
+                       out_arg && strcmp(out_arg, "DIR") == 0 ? "directory of the output files"
+                                                              : "prefix of the output files"),
+        CLI_OPT_LONG("--threads", threads, "N", NULL, CLI_IN, 1, 1024,
                      "OpenMP threads (default: all cores; the results do not depend on it)"),
-        SIM_OPT_FLAG("--quiet", &com->quiet, "no progress on stderr"),
-        SIM_OPT_FLAG("--no-plot", &com->no_plot, "CSV only: no gnuplot script or PNG"),
-        SIM_OPT_END};
+        CLI_OPT_FLAG("--quiet", &com->quiet, "no progress on stderr"),
+        CLI_OPT_FLAG("--no-plot", &com->no_plot, "CSV only: no gnuplot script or PNG"),
+        CLI_OPT_END};
     memcpy(t, c, sizeof c);
 }
 
@@ -217,77 +51,55 @@ void sim_common_usage(FILE *f)
 {
     struct sim_common com;
     long threads;
-    struct sim_opt t[C_N + 1];
-    common_table(t, &com, &threads, NULL);
-    for (int k = 0; k < C_N; k++) help_line(f, &t[k], "PREFIX");
+    struct cli_opt t[C_N + 1];
+    common_table(t, &com, &threads, NULL, NULL);
+    cli_print_options(f, t, NULL);
 }
 
-static void usage(const struct sim_cli *cli, const struct sim_opt *common)
+/* sim_cli's operand (0: taken) as a cli operand hook (1: one argument taken). */
+struct operand_adapter {
+    const struct sim_cli *cli;
+};
+
+static int take_operand(void *ctx, const char *arg, const char *next, char *err, size_t errlen)
 {
-    printf("usage: trk-sim %s %s\n", cli->name, cli->usage ? cli->usage : "[options]");
-    if (cli->about) printf("%s\n", cli->about);
-    printf("options:\n");
-    int lists = 0;
-    for (const struct sim_opt *o = cli->opts; o && o->name; o++) {
-        help_line(stdout, o, NULL);
-        lists |= o->type == SIM_LIST;
-    }
-    if (lists) printf("  (LIST: values a,b,c or a range from:to:step)\n");
-    printf("common options:\n");
-    for (int k = 0; k < C_N; k++) {
-        if ((k == C_RUNS && (cli->unused & SIM_UNUSED_RUNS)) ||
-            (k == C_THREADS && (cli->unused & SIM_UNUSED_THREADS)) || find(cli->opts, common[k].name))
-            continue;
-        help_line(stdout, &common[k], cli->out_arg ? cli->out_arg : "PREFIX");
-    }
-    if (cli->files) printf("%s\n", cli->files);
+    const struct operand_adapter *ad = ctx;
+    (void)next, (void)err, (void)errlen;
+    return ad->cli->operand(arg, ad->cli->operand_ctx) == 0 ? 1 : 0;
+}
+
+int sim_parse_more(const struct sim_cli *cli, void (*more_help)(FILE *f), struct sim_common *com, int argc,
+                   char **argv)
+{
+    long threads = 0;
+    struct cli_opt common[C_N + 1];
+    char prog[128], usage[256];
+    memset(com, 0, sizeof *com);
+    common_table(common, com, &threads, cli->out, cli->out_arg);
+    if (cli->unused & SIM_UNUSED_RUNS) common[C_RUNS].flags |= CLI_HIDDEN;
+    if (cli->unused & SIM_UNUSED_THREADS) common[C_THREADS].flags |= CLI_HIDDEN;
+    snprintf(prog, sizeof prog, "trk-sim %s", cli->name);
+    snprintf(usage, sizeof usage, "%s", cli->usage ? cli->usage : "[options]");
+    struct operand_adapter ad = {cli};
+    struct cli c;
+    memset(&c, 0, sizeof c);
+    c.prog = prog;
+    c.usage = usage;
+    c.about = cli->about;
+    c.opts = cli->opts;
+    c.common = common;
+    c.after = cli->files;
+    c.more_help = more_help;
+    c.operand = cli->operand ? take_operand : NULL;
+    c.ctx = &ad;
+    const int rc = cli_parse(&c, argc, argv);
+    com->threads = (int)threads;
+    return rc;
 }
 
 int sim_parse(const struct sim_cli *cli, struct sim_common *com, int argc, char **argv)
 {
-    long threads = 0;
-    struct sim_opt common[C_N + 1];
-    memset(com, 0, sizeof *com);
-    common_table(common, com, &threads, cli->out);
-    const struct sim_opt *tables[2] = {cli->opts, common};
-    for (int t = 0; t < 2; t++)
-        for (const struct sim_opt *o = tables[t]; o && o->name; o++)
-            if (o->def && set_value(o, o->def) != 0) {
-                fprintf(stderr, "%s: internal error: bad default '%s' of %s\n", cli->name, o->def, o->name);
-                return 1;
-            }
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(cli, common);
-            return 0;
-        }
-        const struct sim_opt *hit = NULL;
-        const char *v = NULL;
-        for (int t = 0; t < 2 && !hit; t++)
-            for (const struct sim_opt *o = tables[t]; o && o->name && !hit; o++) {
-                if (o->type == SIM_FLAG) {
-                    if (strcmp(a, o->name) == 0) hit = o;
-                    continue;
-                }
-                const int r = cli_opt(argc, argv, &i, o->name, &v, cli->name);
-                if (r < 0) return 2;
-                if (r > 0) hit = o;
-            }
-        if (!hit) {
-            if (cli->operand && cli->operand(a, cli->operand_ctx) == 0) continue;
-            fprintf(stderr, "%s: unknown option %s (see --help)\n", cli->name, a);
-            return 2;
-        }
-        if (hit->type == SIM_FLAG) {
-            *(int *)hit->dst = 1;
-        } else if (set_value(hit, v) != 0) {
-            bad_value(cli->name, hit, v);
-            return 2;
-        }
-    }
-    com->threads = (int)threads;
-    return SIM_RUN;
+    return sim_parse_more(cli, NULL, com, argc, argv);
 }
 
 /* ---------------------------------------------------------------- runs */

@@ -10,11 +10,12 @@
  * argv[0] = the experiment name.
  *
  * Options: the experiment describes each of its options once, in a table of
- * struct sim_opt (name, type, destination, default, accepted range, help),
- * and sim_parse does the rest: defaults, --help (printed from the table),
- * the common options (--seed N, --runs N, --out PREFIX, --threads N,
- * --quiet, --no-plot), value checks and the error messages. Exit status 2
- * for bad usage, as everywhere in trk-sim:
+ * struct sim_opt (= struct cli_opt, tools/cli/cli.h: name, type,
+ * destination, default, accepted range, help; SIM_OPT_ALIAS for an old
+ * spelling), and sim_parse (cli_parse) does the rest: defaults, --help
+ * (printed from the table), the common options (--seed N, --runs N,
+ * --out PREFIX, --threads N, --quiet, --no-plot), value checks and the
+ * error messages. Exit status 2 for bad usage, as everywhere in trk-sim:
  *     long scans;
  *     const struct sim_opt opts[] = {
  *         SIM_OPT_LONG("--scans", &scans, "N", "300", SIM_IN, 1, 1000000, "scans per run"),
@@ -34,6 +35,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "cli.h"
 #include "progress.h"
 
 #define SIM_EXPERIMENT(id, name, desc) int sim_exp_##id(int argc, char **argv)
@@ -49,57 +51,34 @@ struct sim_common {
 
 /* ---------------------------------------------------------------- options */
 
-enum sim_opt_type {
-    SIM_LONG,   /* long *dst; an integer ("1e6" accepted) within the range */
-    SIM_DOUBLE, /* double *dst; a number within the range */
-    SIM_LIST,   /* double dst[max], *n = count: "a,b,c" or "from:to:step", each within the range */
-    SIM_CHOICE, /* int *dst = values[k] for the k-th word of words ("cell|scan") */
-    SIM_FLAG,   /* int *dst = 1; takes no value */
-    SIM_STRING, /* const char **dst = the value */
-    SIM_CUSTOM  /* parse(value, dst) == 0 */
-};
+/* The options are tools/cli's (cli.h): struct sim_opt is struct cli_opt, the
+ * SIM_ names are its CLI_ names. */
+#define sim_opt cli_opt
+#define SIM_LONG CLI_LONG
+#define SIM_DOUBLE CLI_DOUBLE
+#define SIM_LIST CLI_LIST
+#define SIM_CHOICE CLI_CHOICE
+#define SIM_FLAG CLI_FLAG
+#define SIM_STRING CLI_STRING
+#define SIM_STRINGS CLI_STRINGS
+#define SIM_CUSTOM CLI_CUSTOM
+#define SIM_GE CLI_GE
+#define SIM_GT CLI_GT
+#define SIM_LE CLI_LE
+#define SIM_LT CLI_LT
+#define SIM_IN CLI_IN
+#define SIM_OPEN CLI_OPEN
 
-/* Accepted range of SIM_LONG, SIM_DOUBLE and SIM_LIST values: a bit set
- * (0: any value strtod accepts). */
-enum {
-    SIM_GE = 1, /* lo <= v */
-    SIM_GT = 2, /* lo < v */
-    SIM_LE = 4, /* v <= hi */
-    SIM_LT = 8, /* v < hi */
-    SIM_IN = SIM_GE | SIM_LE,
-    SIM_OPEN = SIM_GT | SIM_LT
-};
-
-struct sim_opt {
-    const char *name;       /* "--scans"; NULL ends the table */
-    enum sim_opt_type type;
-    void *dst;
-    const char *arg;        /* the value in --help ("N", "LIST"); CHOICE: the words */
-    const char *def;        /* the default as text: parsed into dst before the command
-                             * line and shown by --help; NULL: dst keeps its value and
-                             * the help text says what the default is */
-    const char *help;       /* one line; '\n' continues it on the next line */
-    unsigned range;         /* SIM_GE | ... */
-    double lo, hi;
-    int max, *n;            /* SIM_LIST: capacity of dst, count */
-    const int *values;      /* SIM_CHOICE: one per word (NULL: the word's index) */
-    int (*parse)(const char *value, void *dst); /* SIM_CUSTOM: 0 or -1 */
-};
-
-#define SIM_OPT_LONG(name, dst, arg, def, range, lo, hi, help) \
-    {name, SIM_LONG, dst, arg, def, help, range, lo, hi, 0, NULL, NULL, NULL}
-#define SIM_OPT_DOUBLE(name, dst, arg, def, range, lo, hi, help) \
-    {name, SIM_DOUBLE, dst, arg, def, help, range, lo, hi, 0, NULL, NULL, NULL}
-#define SIM_OPT_LIST(name, dst, n, max, def, range, lo, hi, help) \
-    {name, SIM_LIST, dst, "LIST", def, help, range, lo, hi, max, n, NULL, NULL}
-#define SIM_OPT_CHOICE(name, dst, words, values, def, help) \
-    {name, SIM_CHOICE, dst, words, def, help, 0, 0, 0, 0, NULL, values, NULL}
-#define SIM_OPT_FLAG(name, dst, help) {name, SIM_FLAG, dst, NULL, NULL, help, 0, 0, 0, 0, NULL, NULL, NULL}
-#define SIM_OPT_STRING(name, dst, arg, def, help) \
-    {name, SIM_STRING, dst, arg, def, help, 0, 0, 0, 0, NULL, NULL, NULL}
-#define SIM_OPT_CUSTOM(name, dst, parse, arg, def, help) \
-    {name, SIM_CUSTOM, dst, arg, def, help, 0, 0, 0, 0, NULL, NULL, parse}
-#define SIM_OPT_END {NULL, SIM_FLAG, NULL, NULL, NULL, NULL, 0, 0, 0, 0, NULL, NULL, NULL}
+#define SIM_OPT_LONG CLI_OPT_LONG
+#define SIM_OPT_DOUBLE CLI_OPT_DOUBLE
+#define SIM_OPT_LIST CLI_OPT_LIST
+#define SIM_OPT_CHOICE CLI_OPT_CHOICE
+#define SIM_OPT_FLAG CLI_OPT_FLAG
+#define SIM_OPT_STRING CLI_OPT_STRING
+#define SIM_OPT_STRINGS CLI_OPT_STRINGS
+#define SIM_OPT_CUSTOM CLI_OPT_CUSTOM
+#define SIM_OPT_ALIAS CLI_OPT_ALIAS /* an old spelling, with a deprecation note */
+#define SIM_OPT_END CLI_OPT_END
 
 /* Common options an experiment accepts but does not use (not listed by --help). */
 enum { SIM_UNUSED_RUNS = 1, SIM_UNUSED_THREADS = 2 };
@@ -118,22 +97,26 @@ struct sim_cli {
     void *operand_ctx;
 };
 
-#define SIM_RUN (-1)
-/* Defaults, then the command line into the options and *com (--help
- * anywhere: the help, exit status 0). SIM_RUN when the experiment should run,
- * else its exit status (2 after a message on a bad option or value). */
+#define SIM_RUN CLI_RUN
+/* Defaults, then the command line into the options and *com (cli_parse:
+ * --help anywhere: the help, exit status 0). SIM_RUN when the experiment
+ * should run, else its exit status (2 after a one-line message on a bad
+ * option or value). Messages start "trk-sim NAME: ". */
 int sim_parse(const struct sim_cli *cli, struct sim_common *com, int argc, char **argv);
+/* The same, with more_help(f) printed at the end of --help (e.g. tcfg_help). */
+int sim_parse_more(const struct sim_cli *cli, void (*more_help)(FILE *f), struct sim_common *com, int argc,
+                   char **argv);
 
 /* The common options' help lines (trk-sim --help). */
 void sim_common_usage(FILE *f);
 
-/* Value parsers (the ones of the option table). 0, or -1. */
-int sim_parse_long(const char *s, long *v);
-int sim_parse_double(const char *s, double *v);
+/* Value parsers (the ones of the option table, cli.h cli_parse_*). 0, or -1. */
+#define sim_parse_long cli_parse_long
+#define sim_parse_double cli_parse_double
 /* Comma-separated list of doubles ("1,2,3" or "a:b:step"); returns the count
  * (<= max), or -1 for a malformed list or one with more than max values
  * (refused, never cut short). */
-int sim_parse_list(const char *s, double *v, int max);
+#define sim_parse_list cli_parse_list
 
 /* ---------------------------------------------------------------- runs */
 

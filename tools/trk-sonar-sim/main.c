@@ -1,6 +1,6 @@
 /* trk-sonar-sim - a simulated sonar: publishes a seeded scenario
  * (tools/sim/scenario.h) as trk.detection_scan_t messages over LCM, or
- * writes them to an LCM log file, so the whole chain sonar -> trk-lcm-bridge
+ * writes them to an LCM log file (--out), so the whole chain sonar -> trk-lcm-bridge
  * -> consumers can run without hardware. See --help.
  *
  * Exit status: 0 done (also after SIGINT/SIGTERM), 1 LCM or file failure,
@@ -23,56 +23,6 @@
 #include "scenario.h"
 
 #define MAX_TARGETS_CLI 256
-
-static void usage(FILE *f)
-{
-    fprintf(f,
-            "usage: trk-sonar-sim [options]\n"
-            "\n"
-            "Publishes a simulated sonar's detection scans (trk.detection_scan_t) on LCM, at a\n"
-            "chosen rate, or writes them to an LCM log file. Constant-velocity targets with\n"
-            "process noise, detection probability from the amplitude model (or --pd), Poisson\n"
-            "clutter over a region, thresholded Rayleigh or K-distributed amplitudes. The\n"
-            "targets' true states go out as trk.track_list_t on the truth channel.\n"
-            "Same --seed, same scans.\n"
-            "\n"
-            "Output:\n"
-            "  --lcm-url URL          LCM provider (default: $LCM_DEFAULT_URL, else LCM's default)\n"
-            "  --log FILE             write an LCM log file instead (event time = scan time;\n"
-            "                         byte-identical for the same options)\n"
-            "  --channel CH           detection channel (TRK_DETECTIONS)\n"
-            "  --truth-channel CH     truth channel, '' = none (TRK_TRUTH)\n"
-            "  --rate-hz R            live: scans per second of wall clock (default 1/scan period;\n"
-            "                         0 = as fast as possible)\n"
-            "  --scans N              number of scans, 0 = until SIGINT (live default 0, --log 100)\n"
-            "  --start-utime US       time of the first scan (live: now; --log: 1700000000000000)\n"
-            "  --bad-every N          after every N-th scan also send one malformed message,\n"
-            "                         cycling: truncated, count too large, NaN position, time\n"
-            "                         going backwards, unknown sensor, garbage (0 = never)\n"
-            "  --quiet\n"
-            "Scenario:\n"
-            "  --seed N               (1)\n"
-            "  --sensor-id N          (0)\n"
-            "  --scan-period-s S      simulated time between scans (2)\n"
-            "  --targets N            random targets in the region (3)\n"
-            "  --target X,Y,VX,VY[,SNR_DB]  a target (m, m/s); repeat for more; replaces --targets\n"
-            "  --speed MIN,MAX        random targets' speed range, m/s (1,5)\n"
-            "  --region X0,X1,Y0,Y1   clutter region (and random targets), m (0,2000,0,2000)\n"
-            "  --clutter-density L    Poisson clutter per m^2 per scan (5e-6)\n"
-            "  --clutter-count N      exactly N clutter detections per scan instead\n"
-            "  --meas-sigma-m S       position noise per axis (3)\n"
-            "  --with-cov             detections carry their covariance (S^2 I)\n"
-            "  --q Q                  target process noise density, m^2/s^3 (0.01)\n"
-            "  --amplitude none|rayleigh|k   amplitude model (rayleigh)\n"
-            "  --pfa P                detection threshold's false-alarm probability (1e-3)\n"
-            "  --snr-db D             target SNR (15); P_D = S1(threshold) (Rayleigh: pfa^(1/(1+SNR)))\n"
-            "  --k-shape NU           K-distribution shape (1)\n"
-            "  --amp-table FILE       amplitudes from an amplitude table (trk-tablegen amp; any\n"
-            "                         model, e.g. K): the library's sampler; the table fixes pfa\n"
-            "                         and the SNR of every target\n"
-            "  --pd P                 detection probability without amplitude model (0.9)\n"
-            "  --help\n");
-}
 
 static int64_t wall_us(void)
 {
@@ -143,127 +93,149 @@ static void truth_msg(const struct scenario *sc, int64_t utime, int64_t seq, trk
     m->n_omitted = (int32_t)(sc->n_tg - n);
 }
 
+/* --target X,Y,VX,VY[,SNR_DB], repeated. */
+struct targets {
+    struct scen_target_init t[MAX_TARGETS_CLI];
+    size_t n;
+};
+
+static int add_target(void *ctx, const char *v, char *err, size_t errlen)
+{
+    struct targets *tg = ctx;
+    double d[5];
+    if (tg->n == MAX_TARGETS_CLI) {
+        snprintf(err, errlen, "more than %d targets", MAX_TARGETS_CLI);
+        return -1;
+    }
+    d[4] = NAN;
+    if (cli_blank(v) || (kv_parse_doubles(v, d, 4) != 0 && kv_parse_doubles(v, d, 5) != 0)) {
+        snprintf(err, errlen, "needs X,Y,VX,VY[,SNR_DB]");
+        return -1;
+    }
+    struct scen_target_init t = {d[0], d[1], d[2], d[3], d[4]};
+    tg->t[tg->n++] = t;
+    return 0;
+}
+
+/* --amp-table FILE: amplitudes from a table (replaces --clutter-model). */
+struct amp_table_opt {
+    struct scen_params *p;
+};
+
+static int set_amp_table(void *ctx, const char *v, char *err, size_t errlen)
+{
+    struct amp_table_opt *a = ctx;
+    (void)err, (void)errlen;
+    a->p->amp_table = v;
+    a->p->amp_kind = AMP_TABLE;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     struct scen_params p;
-    static struct scen_target_init tgt[MAX_TARGETS_CLI];
-    size_t n_tgt = 0;
-    const char *url = NULL, *log_path = NULL, *channel = "TRK_DETECTIONS",
-               *truth_channel = "TRK_TRUTH", *v;
-    double rate_hz = -1;
-    long scans = -1, bad_every = 0, l;
-    int64_t start_utime = -1;
+    static struct targets tgt;
+    const char *url = NULL, *log_path = NULL, *channel = "TRK_DETECTIONS", *truth_channel = "TRK_TRUTH";
+    double rate_hz = -1, pd = NAN, speed[2], region[4];
+    long scans = -1, bad_every = 0, seed, sensor_id, n_targets;
+    long start_utime_l = -1;
     int quiet = 0, have_pd = 0;
     char err[512];
 
     scen_defaults(&p);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int k;
-        double d[5];
-#define OPT(name) ((k = cli_opt(argc, argv, &i, name, &v, "trk-sonar-sim")) != 0)
-#define BAD(msg)                                                       \
-    do {                                                               \
-        fprintf(stderr, "trk-sonar-sim: %s: %s (see --help)\n", a, msg); \
-        return 2;                                                      \
-    } while (0)
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            return 0;
-        } else if (strcmp(a, "--quiet") == 0) {
-            quiet = 1;
-        } else if (strcmp(a, "--with-cov") == 0) {
-            p.attach_cov = 1;
-        } else if (OPT("--lcm-url")) {
-            if (k < 0) return 2;
-            url = v;
-        } else if (OPT("--log")) {
-            if (k < 0) return 2;
-            log_path = v;
-        } else if (OPT("--channel")) {
-            if (k < 0 || !*v) BAD("needs a channel name");
-            channel = v;
-        } else if (OPT("--truth-channel")) {
-            if (k < 0) return 2;
-            truth_channel = v;
-        } else if (OPT("--rate-hz")) {
-            if (k < 0 || kv_parse_double(v, &rate_hz) != 0 || rate_hz < 0) BAD("needs a rate >= 0");
-        } else if (OPT("--scans")) {
-            if (k < 0 || kv_parse_long(v, 0, 2000000000L, &scans) != 0) BAD("needs a count >= 0");
-        } else if (OPT("--start-utime")) {
-            if (k < 0 || kv_parse_long(v, 0, 9000000000000000000L, &l) != 0) BAD("needs microseconds >= 0");
-            start_utime = l;
-        } else if (OPT("--bad-every")) {
-            if (k < 0 || kv_parse_long(v, 0, 2000000000L, &bad_every) != 0) BAD("needs a count >= 0");
-        } else if (OPT("--seed")) {
-            if (k < 0 || kv_parse_long(v, 0, 9000000000000000000L, &l) != 0) BAD("needs an integer >= 0");
-            p.seed = (uint64_t)l;
-        } else if (OPT("--sensor-id")) {
-            if (k < 0 || kv_parse_long(v, 0, 2147483647L, &l) != 0) BAD("needs an id >= 0");
-            p.sensor_id = (unsigned)l;
-        } else if (OPT("--scan-period-s")) {
-            if (k < 0 || kv_parse_double(v, &p.scan_period_s) != 0 || !(p.scan_period_s > 0))
-                BAD("needs seconds > 0");
-        } else if (OPT("--targets")) {
-            if (k < 0 || kv_parse_long(v, 0, 100000, &l) != 0) BAD("needs a count 0 .. 100000");
-            p.n_targets = (size_t)l;
-        } else if (OPT("--target")) {
-            if (k < 0) return 2;
-            if (n_tgt == MAX_TARGETS_CLI) BAD("too many --target");
-            d[4] = NAN;
-            if (kv_parse_doubles(v, d, 4) != 0 && kv_parse_doubles(v, d, 5) != 0)
-                BAD("needs X,Y,VX,VY[,SNR_DB]");
-            struct scen_target_init t = {d[0], d[1], d[2], d[3], d[4]};
-            tgt[n_tgt++] = t;
-        } else if (OPT("--speed")) {
-            if (k < 0 || kv_parse_doubles(v, d, 2) != 0) BAD("needs MIN,MAX");
-            p.speed_min_mps = d[0];
-            p.speed_max_mps = d[1];
-        } else if (OPT("--region")) {
-            if (k < 0 || kv_parse_doubles(v, d, 4) != 0) BAD("needs X0,X1,Y0,Y1");
-            p.x_min_m = d[0], p.x_max_m = d[1], p.y_min_m = d[2], p.y_max_m = d[3];
-        } else if (OPT("--clutter-density")) {
-            if (k < 0 || kv_parse_double(v, &p.clutter_density_per_m2) != 0) BAD("needs a density >= 0");
-        } else if (OPT("--clutter-count")) {
-            if (k < 0 || kv_parse_long(v, 0, 1000000, &p.clutter_count) != 0) BAD("needs a count >= 0");
-        } else if (OPT("--meas-sigma-m")) {
-            if (k < 0 || kv_parse_double(v, &p.meas_sigma_m) != 0) BAD("needs metres > 0");
-        } else if (OPT("--q")) {
-            if (k < 0 || kv_parse_double(v, &p.process_noise_q) != 0) BAD("needs q >= 0");
-        } else if (OPT("--amplitude")) {
-            if (k < 0 || (p.amp_kind = amp_kind_parse(v)) < 0) BAD("needs none, rayleigh or k");
-        } else if (OPT("--pfa")) {
-            if (k < 0 || kv_parse_double(v, &p.pfa) != 0) BAD("needs a probability");
-        } else if (OPT("--snr-db")) {
-            if (k < 0 || kv_parse_double(v, &p.snr_db) != 0) BAD("needs dB");
-        } else if (OPT("--amp-table")) {
-            if (k < 0) return 2;
-            p.amp_table = v;
-            p.amp_kind = AMP_TABLE;
-        } else if (OPT("--k-shape")) {
-            if (k < 0 || kv_parse_double(v, &p.k_shape) != 0) BAD("needs a shape > 0");
-        } else if (OPT("--pd")) {
-            if (k < 0 || kv_parse_double(v, &p.pd) != 0) BAD("needs a probability");
-            have_pd = 1;
-        } else {
-            fprintf(stderr, "trk-sonar-sim: unknown option %s (see --help)\n", a);
-            return 2;
-        }
-#undef OPT
-#undef BAD
+    seed = (long)p.seed;
+    sensor_id = (long)p.sensor_id;
+    n_targets = (long)p.n_targets;
+    speed[0] = p.speed_min_mps, speed[1] = p.speed_max_mps;
+    region[0] = p.x_min_m, region[1] = p.x_max_m, region[2] = p.y_min_m, region[3] = p.y_max_m;
+    struct amp_table_opt amp_table = {&p};
+    static const int amp_kinds[] = {AMP_NONE, AMP_RAYLEIGH, AMP_K};
+    const struct cli_opt opts[] = {
+        CLI_OPT_HEADING("Output:"),
+        CLI_OPT_STRING("--lcm-url", &url, "URL", NULL, "LCM provider (default: $LCM_DEFAULT_URL, else LCM's default)"),
+        CLI_OPT_STRING("--out", &log_path, "FILE",
+                       NULL, "write an LCM log file instead of publishing (event time =\n"
+                             "scan time; byte-identical for the same options)"),
+        CLI_OPT_STRING("--channel", &channel, "CH", NULL, "detection channel (TRK_DETECTIONS)"),
+        {.name = "--truth-channel", .type = CLI_STRING, .dst = &truth_channel, .arg = "CH", .flags = CLI_EMPTY_OK,
+         .help = "truth channel, '' = none (TRK_TRUTH)"},
+        CLI_OPT_DOUBLE("--rate-hz", &rate_hz, "R", NULL, CLI_GE, 0, 0,
+                       "live: scans per second of wall clock (default 1/scan period;\n0 = as fast as possible)"),
+        CLI_OPT_LONG("--scans", &scans, "N", NULL, CLI_IN, 0, 2000000000.0,
+                     "number of scans, 0 = until SIGINT (live default 0, --out 100)"),
+        CLI_OPT_LONG("--start-utime", &start_utime_l, "US", NULL, CLI_IN, 0, 9e18,
+                     "time of the first scan (live: now; --out: 1700000000000000)"),
+        CLI_OPT_LONG("--bad-every", &bad_every, "N", NULL, CLI_IN, 0, 2000000000.0,
+                     "after every N-th scan also send one malformed message,\n"
+                     "cycling: truncated, count too large, NaN position, time\n"
+                     "going backwards, unknown sensor, garbage (0 = never)"),
+        CLI_OPT_FLAG("--quiet", &quiet, "no start-up line on stderr"),
+        CLI_OPT_HEADING("Scenario:"),
+        CLI_OPT_LONG("--seed", &seed, "N", NULL, CLI_IN, 0, 9e18, "(1)"),
+        CLI_OPT_LONG("--sensor-id", &sensor_id, "N", NULL, CLI_IN, 0, 2147483647.0, "(0)"),
+        CLI_OPT_DOUBLE("--scan-period-s", &p.scan_period_s, "S", NULL, CLI_GT, 0, 0, "simulated time between scans (2)"),
+        CLI_OPT_LONG("--targets", &n_targets, "N", NULL, CLI_IN, 0, 100000, "random targets in the region (3)"),
+        CLI_OPT_CALL("--target", &tgt, add_target, "X,Y,VX,VY[,SNR_DB]",
+                     "a target (m, m/s); repeat for more; replaces --targets"),
+        CLI_OPT_NUMBERS("--speed", speed, 2, "MIN,MAX", "random targets' speed range, m/s (1,5)"),
+        CLI_OPT_NUMBERS("--region", region, 4, "X0,X1,Y0,Y1", "clutter region (and random targets), m (0,2000,0,2000)"),
+        CLI_OPT_DOUBLE("--clutter-density", &p.clutter_density_per_m2, "L", NULL, 0, 0, 0,
+                       "Poisson clutter per m^2 per scan (5e-6)"),
+        CLI_OPT_LONG("--clutter-count", &p.clutter_count, "N", NULL, CLI_IN, 0, 1000000,
+                     "exactly N clutter detections per scan instead"),
+        CLI_OPT_DOUBLE("--meas-sigma-m", &p.meas_sigma_m, "S", NULL, 0, 0, 0, "position noise per axis (3)"),
+        CLI_OPT_FLAG("--with-cov", &p.attach_cov, "detections carry their covariance (S^2 I)"),
+        CLI_OPT_DOUBLE("--q", &p.process_noise_q, "Q", NULL, 0, 0, 0, "target process noise density, m^2/s^3 (0.01)"),
+        CLI_OPT_CHOICE("--clutter-model", &p.amp_kind, "none|rayleigh|k", amp_kinds, NULL,
+                       "clutter amplitude law, Swerling I targets (rayleigh)"),
+        CLI_OPT_DOUBLE("--pfa", &p.pfa, "P", NULL, 0, 0, 0, "detection threshold's false-alarm probability (1e-3)"),
+        CLI_OPT_DOUBLE("--snr-db", &p.snr_db, "D", NULL, 0, 0, 0,
+                       "target SNR (15); P_D = S1(threshold) (Rayleigh: pfa^(1/(1+SNR)))"),
+        CLI_OPT_DOUBLE("--k-shape", &p.k_shape, "NU", NULL, 0, 0, 0, "K-distribution shape (1)"),
+        CLI_OPT_CALL("--amp-table", &amp_table, set_amp_table, "FILE",
+                     "amplitudes from an amplitude table (trk-tablegen amp; any\n"
+                     "model, e.g. K): the library's sampler; the table fixes pfa\n"
+                     "and the SNR of every target"),
+        CLI_OPT_DOUBLE("--pd", &pd, "P", NULL, 0, 0, 0, "detection probability without amplitude model (0.9)"),
+        CLI_OPT_ALIAS("--log", "--out"),
+        CLI_OPT_ALIAS("--amplitude", "--clutter-model"),
+        CLI_OPT_END};
+    const struct cli cli = {
+        .prog = "trk-sonar-sim",
+        .about = "\n"
+                 "Publishes a simulated sonar's detection scans (trk.detection_scan_t) on LCM, at a\n"
+                 "chosen rate, or writes them to an LCM log file (--out). Constant-velocity targets with\n"
+                 "process noise, detection probability from the amplitude model (or --pd), Poisson\n"
+                 "clutter over a region, thresholded Rayleigh or K-distributed amplitudes. The\n"
+                 "targets' true states go out as trk.track_list_t on the truth channel.\n"
+                 "Same --seed, same scans.\n",
+        .opts = opts};
+    const int parsed = cli_parse(&cli, argc, argv);
+    if (parsed != CLI_RUN) return parsed;
+    p.seed = (uint64_t)seed;
+    p.sensor_id = (unsigned)sensor_id;
+    p.n_targets = (size_t)n_targets;
+    p.speed_min_mps = speed[0], p.speed_max_mps = speed[1];
+    p.x_min_m = region[0], p.x_max_m = region[1], p.y_min_m = region[2], p.y_max_m = region[3];
+    if (!isnan(pd)) {
+        p.pd = pd;
+        have_pd = 1;
     }
+    int64_t start_utime = start_utime_l;
+    const size_t n_tgt = tgt.n;
+    const struct scen_target_init *targets = tgt.t;
     if (have_pd && p.amp_kind != AMP_NONE) {
-        fprintf(stderr, "trk-sonar-sim: --pd needs --amplitude none (with an amplitude model "
+        fprintf(stderr, "trk-sonar-sim: --pd needs --clutter-model none (with an amplitude model "
                         "P_D follows from --pfa and --snr-db)\n");
         return 2;
     }
     if (n_tgt) {
-        p.targets = tgt;
+        p.targets = targets;
         p.n_targets = n_tgt;
     }
     if (scans < 0) scans = log_path ? 100 : 0;
     if (log_path && scans == 0) {
-        fprintf(stderr, "trk-sonar-sim: --log needs --scans N > 0\n");
+        fprintf(stderr, "trk-sonar-sim: --out needs --scans N > 0\n");
         return 2;
     }
     if (rate_hz < 0) rate_hz = 1.0 / p.scan_period_s;

@@ -1,133 +1,92 @@
 /* amp.c - `trk-tablegen amp`: amplitude model tables (trk/amplitude.h). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "amp_table.h"
+#include "cli.h"
 #include "table_writer.h"
 #include "tablegen.h"
 
-static void amp_usage(FILE *fp)
-{
-    fprintf(fp,
-        "usage: trk-tablegen amp --clutter rayleigh|k --nu NU --snr-db S --pfa P\n"
-        "                        [--grid geometric|uniform] [--size N] [--llr-size N]\n"
-        "                        [--clutter-power P] [--x-max X] [--real float|double]\n"
-        "                        [--no-measure] -o FILE [--format bin|c] [--name IDENT]\n"
-        "\n"
-        "Amplitude table for one (clutter model, nu, SNR, P_FA): threshold t (S0(t) = P_FA),\n"
-        "P_D = S1(t), ln l^a over [t, a_max] and the inverse truncated survival a(x),\n"
-        "x = -ln(S(a)/S(t)) in [0, x_max], of clutter and of target (Brekke eqs 19-20, 41-47;\n"
-        "CONVENTIONS \"Amplitude models\"). Amplitudes in units of sqrt(clutter power).\n"
-        "\n"
-        "  --clutter rayleigh|k  clutter law: Rayleigh, or K-distributed with shape --nu\n"
-        "  --nu NU               K shape, (0, 1e6] (required for k; ignored for rayleigh)\n"
-        "  --snr-db S            Swerling I target mean power over clutter power, dB\n"
-        "  --pfa P               false-alarm probability of the threshold, (0, 1)\n"
-        "  --grid uniform        a(x) tables uniform in x, cubic Hermite of a^2 (default)\n"
-        "  --grid geometric      Brekke eqs 43-45: amplitudes t + A (B^p-1)/(B-1), A = 0.25,\n"
-        "                        last 100, piecewise linear (the paper's scheme, for comparison)\n"
-        "  --size N              points of each a(x) table (default %u uniform, %u geometric)\n"
-        "  --llr-size N          points of the ln l^a table, uniform in ln a (default %u)\n"
-        "  --clutter-power P     mean clutter power E[a^2] (default 1)\n"
-        "  --x-max X             range of x (default %g; a = a(x_max) is the ln l^a range end)\n"
-        "  --real float|double   real width of the table (default: this build's, %s)\n"
-        "  --no-measure          do not measure the table's errors against direct evaluation\n"
-        "                        (measured by default when the width is this build's, and\n"
-        "                        stored as parameters err_log_lr and err_inv_sf)\n"
-        "  -o FILE               output file\n"
-        "  --format bin|c        binary table (default), or C source: a const union\n"
-        "                        {bytes, double} named IDENT for in-place use from ROM\n"
-        "  --name IDENT          C identifier of --format c (default trk_amp_table)\n",
-        AMP_TABLE_DEFAULT_SIZE, AMP_TABLE_DEFAULT_GEOM_SIZE, AMP_TABLE_DEFAULT_LLR_SIZE, AMP_TABLE_X_MAX,
-        TRK_REAL_IS_FLOAT ? "float" : "double");
-}
-
-TABLEGEN_CMD(amp, "amplitude model table: --clutter rayleigh|k --nu --snr-db --pfa -o FILE")
+TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape --snr-db --pfa --out FILE")
 {
     struct amp_table_opts o;
     memset(&o, 0, sizeof o);
-    o.measure = 1;
-    const char *out = NULL, *format = "bin", *name = "trk_amp_table";
-    int have_nu = 0, have_snr = 0, have_pfa = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        unsigned long u;
-        int bad = 0;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            amp_usage(stdout);
-            return 0;
-        } else if (strcmp(a, "--no-measure") == 0) {
-            o.measure = 0;
-            continue;
-        }
-        static const char *const with_value[] = {"--clutter", "--nu", "--snr-db", "--pfa", "--grid",
-                                                 "--size", "--llr-size", "--clutter-power", "--x-max",
-                                                 "--real", "-o", "--output", "--format", "--name", NULL};
-        int known = 0;
-        for (int k = 0; with_value[k]; k++) known |= strcmp(a, with_value[k]) == 0;
-        if (!known) {
-            fprintf(stderr, "trk-tablegen amp: unknown option '%s' (see --help)\n", a);
-            return 2;
-        }
-        if (!v) {
-            fprintf(stderr, "trk-tablegen amp: %s needs a value\n", a);
-            return 2;
-        }
-        i++;
-        if (strcmp(a, "--clutter") == 0) {
-            if (strcmp(v, "rayleigh") == 0) o.model = TRK_AMP_RAYLEIGH;
-            else if (strcmp(v, "k") == 0) o.model = TRK_AMP_K;
-            else bad = 1;
-        } else if (strcmp(a, "--nu") == 0) {
-            bad = tablegen_parse_real(v, &o.nu);
-            have_nu = 1;
-        } else if (strcmp(a, "--snr-db") == 0) {
-            bad = tablegen_parse_real(v, &o.snr_db);
-            have_snr = 1;
-        } else if (strcmp(a, "--pfa") == 0) {
-            bad = tablegen_parse_real(v, &o.pfa);
-            have_pfa = 1;
-        } else if (strcmp(a, "--grid") == 0) {
-            if (strcmp(v, "uniform") == 0) o.grid = TRK_AMP_GRID_UNIFORM;
-            else if (strcmp(v, "geometric") == 0) o.grid = TRK_AMP_GRID_GEOMETRIC;
-            else bad = 1;
-        } else if (strcmp(a, "--size") == 0) {
-            bad = tablegen_parse_uint(v, 1u << 20, &u) || u < 4;
-            o.size = (uint32_t)u;
-        } else if (strcmp(a, "--llr-size") == 0) {
-            bad = tablegen_parse_uint(v, 1u << 20, &u) || u < 4;
-            o.llr_size = (uint32_t)u;
-        } else if (strcmp(a, "--clutter-power") == 0) {
-            bad = tablegen_parse_real(v, &o.clutter_power) || !(o.clutter_power > 0);
-        } else if (strcmp(a, "--x-max") == 0) {
-            bad = tablegen_parse_real(v, &o.x_max) || !(o.x_max > 0);
-        } else if (strcmp(a, "--real") == 0) {
-            if (strcmp(v, "float") == 0) o.real_size = 4;
-            else if (strcmp(v, "double") == 0) o.real_size = 8;
-            else bad = 1;
-        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
-            out = v;
-        } else if (strcmp(a, "--format") == 0) {
-            format = v;
-            bad = strcmp(v, "bin") != 0 && strcmp(v, "c") != 0;
-        } else if (strcmp(a, "--name") == 0) {
-            name = v;
-            bad = !tablegen_valid_ident(v);
-        } else {
-            fprintf(stderr, "trk-tablegen amp: unknown option '%s' (see --help)\n", a);
-            return 2;
-        }
-        if (bad) {
-            fprintf(stderr, "trk-tablegen amp: bad value '%s' for %s\n", v, a);
-            return 2;
-        }
-    }
-    if (!o.model || !have_snr || !have_pfa || !out || (o.model == TRK_AMP_K && !have_nu)) {
-        fprintf(stderr, "trk-tablegen amp: --clutter, --snr-db, --pfa, -o (and --nu for k) are required\n");
-        amp_usage(stderr);
+    const char *out = NULL, *name = "trk_amp_table";
+    int model = 0, grid = 0, real_size = 0, format = 0, no_measure = 0;
+    long size = 0, llr_size = 0;
+    double nu = NAN, snr_db = 0, pfa = 0, clutter_power = 0, x_max = 0;
+    static const int models[] = {TRK_AMP_RAYLEIGH, TRK_AMP_K};
+    static const int grids[] = {TRK_AMP_GRID_UNIFORM, TRK_AMP_GRID_GEOMETRIC};
+    static const int reals[] = {4, 8};
+    char h_size[160], h_llr[96], h_xmax[128], h_real[96];
+    snprintf(h_size, sizeof h_size, "points of each a(x) table (default %u uniform, %u geometric)",
+             AMP_TABLE_DEFAULT_SIZE, AMP_TABLE_DEFAULT_GEOM_SIZE);
+    snprintf(h_llr, sizeof h_llr, "points of the ln l^a table, uniform in ln a (default %u)",
+             AMP_TABLE_DEFAULT_LLR_SIZE);
+    snprintf(h_xmax, sizeof h_xmax, "range of x (default %g; a = a(x_max) is the ln l^a range end)",
+             AMP_TABLE_X_MAX);
+    snprintf(h_real, sizeof h_real, "real width of the table (default: this build's, %s)",
+             TRK_REAL_IS_FLOAT ? "float" : "double");
+    const struct cli_opt opts[] = {
+        {.name = "--clutter-model", .type = CLI_CHOICE, .dst = &model, .arg = "rayleigh|k", .values = models,
+         .flags = CLI_REQUIRED, .help = "clutter law: Rayleigh, or K-distributed with shape --k-shape"},
+        CLI_OPT_DOUBLE("--k-shape", &nu, "NU", NULL, 0, 0, 0, "K shape, (0, 1e6] (required for k; ignored for rayleigh)"),
+        {.name = "--snr-db", .type = CLI_DOUBLE, .dst = &snr_db, .arg = "S", .flags = CLI_REQUIRED,
+         .help = "Swerling I target mean power over clutter power, dB"},
+        {.name = "--pfa", .type = CLI_DOUBLE, .dst = &pfa, .arg = "P", .flags = CLI_REQUIRED,
+         .help = "false-alarm probability of the threshold, (0, 1)"},
+        CLI_OPT_CHOICE("--grid", &grid, "uniform|geometric", grids, NULL,
+                       "uniform: a(x) tables uniform in x, cubic Hermite of a^2 (default);\n"
+                       "geometric: Brekke eqs 43-45, amplitudes t + A (B^p-1)/(B-1), A = 0.25,\n"
+                       "last 100, piecewise linear (the paper's scheme, for comparison)"),
+        CLI_OPT_LONG("--size", &size, "N", NULL, CLI_IN, 4, 1u << 20, h_size),
+        CLI_OPT_LONG("--llr-size", &llr_size, "N", NULL, CLI_IN, 4, 1u << 20, h_llr),
+        CLI_OPT_DOUBLE("--clutter-power", &clutter_power, "P", NULL, CLI_GT, 0, 0,
+                       "mean clutter power E[a^2] (default 1)"),
+        CLI_OPT_DOUBLE("--x-max", &x_max, "X", NULL, CLI_GT, 0, 0, h_xmax),
+        CLI_OPT_CHOICE("--real", &real_size, "float|double", reals, NULL, h_real),
+        CLI_OPT_FLAG("--no-measure", &no_measure,
+                     "do not measure the table's errors against direct evaluation\n"
+                     "(measured by default when the width is this build's, and\n"
+                     "stored as parameters err_log_lr and err_inv_sf)"),
+        CLI_OPT_REQUIRED_STRING("--out", &out, "FILE", "output file (the table)"),
+        CLI_OPT_CHOICE("--format", &format, "bin|c", NULL, "bin",
+                       "binary table, or C source: a const union\n"
+                       "{bytes, double} named IDENT for in-place use from ROM"),
+        CLI_OPT_CUSTOM("--name", &name, tablegen_parse_ident, "IDENT", "trk_amp_table",
+                       "C identifier of --format c"),
+        CLI_OPT_ALIAS("--clutter", "--clutter-model"),
+        CLI_OPT_ALIAS("--nu", "--k-shape"),
+        CLI_OPT_ALIAS("-o", "--out"),
+        CLI_OPT_ALIAS("--output", "--out"),
+        CLI_OPT_END};
+    const struct cli cli = {
+        .prog = "trk-tablegen amp",
+        .usage = "--clutter-model rayleigh|k [--k-shape NU] --snr-db S --pfa P --out FILE [options]",
+        .about = "Amplitude table for one (clutter model, nu, SNR, P_FA): threshold t (S0(t) = P_FA),\n"
+                 "P_D = S1(t), ln l^a over [t, a_max] and the inverse truncated survival a(x),\n"
+                 "x = -ln(S(a)/S(t)) in [0, x_max], of clutter and of target (Brekke eqs 19-20, 41-47;\n"
+                 "CONVENTIONS \"Amplitude models\"). Amplitudes in units of sqrt(clutter power).",
+        .opts = opts};
+    const int parsed = cli_parse(&cli, argc, argv);
+    if (parsed != CLI_RUN) return parsed;
+    if (model == TRK_AMP_K && isnan(nu)) {
+        fprintf(stderr, "trk-tablegen amp: --clutter-model k needs --k-shape (see --help)\n");
         return 2;
     }
+    o.model = model;
+    o.nu = isnan(nu) ? 0 : nu;
+    o.snr_db = snr_db;
+    o.pfa = pfa;
+    o.grid = grid;
+    o.size = (uint32_t)size;
+    o.llr_size = (uint32_t)llr_size;
+    o.clutter_power = clutter_power;
+    o.x_max = x_max;
+    o.real_size = (uint32_t)real_size;
+    o.measure = !no_measure;
     if (o.model == TRK_AMP_RAYLEIGH) o.nu = 0;
     struct amp_table_result r;
     char err[256];
@@ -147,7 +106,7 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter rayleigh|k --nu --snr-db --p
                  o.snr_db, o.pfa, o.grid == TRK_AMP_GRID_GEOMETRIC ? "geometric" : "uniform",
                  (size_t)(o.real_size ? o.real_size : sizeof(trk_real)));
     }
-    int rc = strcmp(format, "c") == 0 ? tablew_write_c(out, name, r.bytes, r.len, desc)
+    int rc = format == 1 ? tablew_write_c(out, name, r.bytes, r.len, desc)
                                       : tablew_write_bin(out, r.bytes, r.len);
     if (rc != 0) {
         perror(out);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli.h"
 #include "fileio.h"
 #include "tablegen.h"
 #include "trk/q2.h"
@@ -173,25 +174,48 @@ static int check_kind(const unsigned char *b, size_t len, const struct trk_table
     return 0;
 }
 
+/* The one FILE operand. */
+static int take_file(void *ctx, const char *arg, const char *next, char *err, size_t errlen)
+{
+    const char **file = ctx;
+    (void)next;
+    if (arg[0] == '-' && arg[1]) return 0; /* an unknown option */
+    if (*file) {
+        snprintf(err, errlen, "one FILE only, '%s' is a second (see --help)", arg);
+        return -1;
+    }
+    *file = arg;
+    return 1;
+}
+
 TABLEGEN_CMD(info, "load a table through the library, print header and parameters (exit 1 on a defect)")
 {
-    if (argc != 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
-        FILE *fp = argc == 2 ? stdout : stderr;
-        fprintf(fp, "usage: trk-tablegen info FILE\n"
-                    "Checks FILE with the library's loader (size, magic, version, CRC, layout, finite and\n"
-                    "monotone values; for tables of this build's real width also trk_table_parse and the\n"
-                    "kind's own checks, e.g. trk_amplitude_init_table), prints its header, parameters and\n"
-                    "sections. Exit status 0 sound, 1 defect, 2 usage or unreadable file.\n");
-        return argc == 2 ? 0 : 2;
+    const char *file = NULL;
+    const struct cli_opt opts[] = {CLI_OPT_END};
+    const struct cli cli = {
+        .prog = "trk-tablegen info",
+        .usage = "FILE",
+        .about = "Checks FILE with the library's loader (size, magic, version, CRC, layout, finite and\n"
+                 "monotone values; for tables of this build's real width also trk_table_parse and the\n"
+                 "kind's own checks, e.g. trk_amplitude_init_table), prints its header, parameters and\n"
+                 "sections. Exit status 0 sound, 1 defect, 2 usage or unreadable file.",
+        .opts = opts,
+        .operand = take_file,
+        .ctx = &file};
+    const int parsed = cli_parse(&cli, argc, argv);
+    if (parsed != CLI_RUN) return parsed;
+    if (!file) {
+        fprintf(stderr, "trk-tablegen info: FILE is required (see --help)\n");
+        return 2;
     }
     size_t len;
-    unsigned char *b = fileio_read(argv[1], &len);
+    unsigned char *b = fileio_read(file, &len);
     if (!b) {
-        perror(argv[1]);
+        perror(file);
         return 2;
     }
     struct trk_table_info in;
-    printf("%s:\n", argv[1]);
+    printf("%s:\n", file);
     trk_status st = trk_table_check(b, len, &in);
     if (st != TRK_OK) {
         printf("  DEFECT: trk_table_check: %s\n", trk_status_str(st));

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli.h"
 #include "progress.h"
 #include "q2_amp.h"
 #include "q2_is.h"
@@ -23,68 +24,6 @@
 #define DEF_SAMPLES ((unsigned long long)Q2_TABLE_DEFAULT_SAMPLES)
 #define DEF_TARGET_SE Q2_TABLE_DEFAULT_TARGET_SE
 #define MAX_LIST Q2_TABLE_MAX_NODES
-
-static void q2_usage(FILE *fp)
-{
-    fprintf(fp,
-        "usage: trk-tablegen q2 --detector pdaf|pdafai -o FILE [options]\n"
-        "\n"
-        "q2, the information-reduction factor of the PDAF / PDAFAI (CONVENTIONS \"q2, MRE and\n"
-        "CRLB\"; Brekke eqs 28-30, 38), by importance sampling over a grid, written with its\n"
-        "Monte Carlo standard error per cell as a q2 table (trk/q2.h \"Q2 TABLE\": versioned,\n"
-        "CRC-checked, used in place by trk_q2_lookup_init_table).\n"
-        "  pdaf    2-D table over (pd, lambda_vg) for one measurement dimension and gate\n"
-        "  pdafai  3-D table over (snr_db, pfa, lambda_vg) for one clutter model (Rayleigh, or\n"
-        "          K with shape nu); pd = S1(t) follows from the ROC (library amplitude module)\n"
-        "lambda_vg = lambda V_G is the expected number of clutter points in the gate.\n"
-        "\n"
-        "Model:\n"
-        "  --detector pdaf|pdafai  (required)\n"
-        "  --nz N                measurement dimension 1..3 (default 2)\n"
-        "  --gate-prob P         gate probability P_G in (0, 1) (default 0.99), or\n"
-        "  --gate-gamma G        the gate threshold on d2 itself, (0, 1000] (e.g. 36: Brekke g = 6)\n"
-        "  --model rayleigh|k    pdafai: clutter amplitude model (required)\n"
-        "  --nu NU               pdafai, k: K shape in (0, 1e6] (required for k)\n"
-        "Grid (LIST: comma-separated values and ranges A:B:STEP, strictly increasing;\n"
-        "      LOG: A:B:N, N nodes equally spaced in ln x from A to B):\n"
-        "  --pd LIST             pdaf: pd nodes in (0, 1] (default %s)\n"
-        "  --snr-db LIST         pdafai: target SNR nodes, dB, in [-30, 60] (default %s)\n"
-        "  --pfa LOG             pdafai: false-alarm probabilities in (0, 1) (default %s)\n"
-        "  --lambda-vg LOG       lambda_vg nodes in (0, 1000] (default pdaf %s, pdafai %s)\n"
-        "  --interp cubic|linear interpolation rule stored in the table (default cubic)\n"
-        "Sampling:\n"
-        "  --samples N           scenes per clutter-count stratum where a cell's variance comes\n"
-        "                        from (Neyman allocation; default %llu; >= 2)\n"
-        "  --target-se S         stop a cell once its standard error <= S, in [0, 1); 0 runs all\n"
-        "                        samples (default %g)\n"
-        "  --seed N              random seed (default 1). The file is bit-identical for any\n"
-        "                        --threads: a counter-based generator keyed by (seed, stratum,\n"
-        "                        sample), work merged in a fixed order\n"
-        "  --threads N           OpenMP threads (default: all cores)\n"
-        "  --tail-mass M         Poisson mass of the clutter count left out per cell, (0, 0.01]\n"
-        "                        (default 1e-12: the bound on that truncation's bias)\n"
-        "  --amp-size N          points per curve of the in-memory K amplitude tables (default %u)\n"
-        "  --amp-measure         measure every K amplitude table against the direct K model and\n"
-        "                        store the largest errors (amp_err_log_lr, amp_err_inv_sf)\n"
-        "  --measure-interp      also estimate q2 at the centre of every grid cell (same random\n"
-        "                        numbers) and report/store the interpolation error of the table\n"
-        "                        (interp_err_max, interp_err_rms); pdafai: about twice the time\n"
-        "Output:\n"
-        "  -o FILE               output file (required)\n"
-        "  --real float|double   real width of the table (default: this build's, %s)\n"
-        "  --format bin|c        binary table (default), or C source: a const union {bytes,\n"
-        "                        double} named IDENT for in-place use from ROM\n"
-        "  --name IDENT          C identifier of --format c (default trk_q2_table)\n"
-        "  --quiet               no progress bar on stderr\n"
-        "\n"
-        "Progress on stderr: lines of cells done, sampled points per second, ETA (an upper bound:\n"
-        "--target-se stops cells early). Exit status 0 success, 1 computation failed, 2 bad\n"
-        "usage or input.\n",
-        DEF_PD, DEF_SNR, DEF_PFA, DEF_LV_PDAF, DEF_LV_PDAFAI, (unsigned long long)DEF_SAMPLES, DEF_TARGET_SE,
-        Q2_AMP_TABLE_SIZE, TRK_REAL_IS_FLOAT ? "float" : "double");
-}
-
-static int real_ok(const char *s, double *v) { return tablegen_parse_real(s, v) == 0 && isfinite(*v); }
 
 struct prog {
     struct progress p;
@@ -109,147 +48,144 @@ static void on_progress(void *ctx, const struct q2_is_progress *pr)
     c->last = pr->points_done;
 }
 
-TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid] -o FILE (OpenMP)")
+TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid] --out FILE (OpenMP)")
 {
     static double pd_v[MAX_LIST], snr_v[MAX_LIST];
     struct q2_table_spec s;
     struct q2_table_run run;
     memset(&s, 0, sizeof s);
     memset(&run, 0, sizeof run);
-    s.nz = 2;
-    s.cubic = 1;
-    run.samples = DEF_SAMPLES;
-    run.target_se = DEF_TARGET_SE;
-    run.seed = 1;
-    double gate_prob = 0.99, gate_gamma = 0;
-    const char *out = NULL, *format = "bin", *name = "trk_q2_table";
+    double gate_prob = NAN, gate_gamma = NAN, nu = NAN, target_se = DEF_TARGET_SE, tail_mass = 0;
+    const char *out = NULL, *name = "trk_q2_table";
     const char *pd_s = DEF_PD, *snr_s = DEF_SNR, *pfa_s = DEF_PFA, *lv_s = NULL;
-    int have_gp = 0, have_gg = 0, have_nu = 0, quiet = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            q2_usage(stdout);
-            return 0;
-        }
-        if (strcmp(a, "--quiet") == 0) {
-            quiet = 1;
-            continue;
-        }
-        if (strcmp(a, "--tail-mass") == 0 && i + 1 < argc) {
-            if (!real_ok(argv[++i], &run.tail_mass) || !(run.tail_mass > 0 && run.tail_mass <= 1e-2)) {
-                fprintf(stderr, "trk-tablegen q2: bad value '%s' for --tail-mass: must be in (0, 0.01]\n", argv[i]);
-                return 2;
-            }
-            continue;
-        }
-        if (strcmp(a, "--amp-measure") == 0) {
-            s.amp_measure = 1;
-            continue;
-        }
-        if (strcmp(a, "--measure-interp") == 0) {
-            s.measure_interp = 1;
-            continue;
-        }
-        static const char *const with_value[] = {
-            "--detector", "--nz", "--gate-prob", "--gate-gamma", "--model", "--nu", "--pd", "--snr-db", "--pfa",
-            "--lambda-vg", "--interp", "--samples", "--target-se", "--seed", "--threads", "--amp-size", "-o",
-            "--output", "--real", "--format", "--name", NULL};
-        int known = 0;
-        for (int k = 0; with_value[k]; k++) known |= strcmp(a, with_value[k]) == 0;
-        if (!known) {
-            fprintf(stderr, "trk-tablegen q2: unknown option '%s' (see --help)\n", a);
-            return 2;
-        }
-        if (i + 1 >= argc) {
-            fprintf(stderr, "trk-tablegen q2: %s needs a value\n", a);
-            return 2;
-        }
-        const char *v = argv[++i];
-        unsigned long u;
-        const char *why = NULL;
-        if (strcmp(a, "--detector") == 0) {
-            if (strcmp(v, "pdaf") == 0) s.detector = TRK_Q2_PDAF;
-            else if (strcmp(v, "pdafai") == 0) s.detector = TRK_Q2_PDAFAI;
-            else why = "pdaf or pdafai";
-        } else if (strcmp(a, "--nz") == 0) {
-            if (tablegen_parse_uint(v, 3, &u) || u < 1) why = "1, 2 or 3";
-            else s.nz = (int)u;
-        } else if (strcmp(a, "--gate-prob") == 0) {
-            if (!real_ok(v, &gate_prob) || !(gate_prob > 0 && gate_prob < 1)) why = "a probability in (0, 1)";
-            have_gp = 1;
-        } else if (strcmp(a, "--gate-gamma") == 0) {
-            if (!real_ok(v, &gate_gamma) || !(gate_gamma > 0 && gate_gamma <= 1000)) why = "a number in (0, 1000]";
-            have_gg = 1;
-        } else if (strcmp(a, "--model") == 0) {
-            if (!(s.amp_model = q2_amp_model_parse(v))) why = "rayleigh or k";
-        } else if (strcmp(a, "--nu") == 0) {
-            if (!real_ok(v, &s.nu) || !(s.nu > 0 && s.nu <= 1e6)) why = "a K shape in (0, 1e6]";
-            have_nu = 1;
-        } else if (strcmp(a, "--pd") == 0) {
-            pd_s = v;
-        } else if (strcmp(a, "--snr-db") == 0) {
-            snr_s = v;
-        } else if (strcmp(a, "--pfa") == 0) {
-            pfa_s = v;
-        } else if (strcmp(a, "--lambda-vg") == 0) {
-            lv_s = v;
-        } else if (strcmp(a, "--interp") == 0) {
-            if (strcmp(v, "cubic") == 0) s.cubic = 1;
-            else if (strcmp(v, "linear") == 0) s.cubic = 0;
-            else why = "cubic or linear";
-        } else if (strcmp(a, "--samples") == 0) {
-            double d;
-            if (!real_ok(v, &d) || !(d >= 2 && d <= 4294967295.0) || d != floor(d))
-                why = "an integer in [2, 4294967295] (e.g. 1e6)";
-            else run.samples = (uint64_t)d;
-        } else if (strcmp(a, "--target-se") == 0) {
-            if (!real_ok(v, &run.target_se) || !(run.target_se >= 0 && run.target_se < 1)) why = "a number in [0, 1)";
-        } else if (strcmp(a, "--seed") == 0) {
-            if (tablegen_parse_uint(v, 0xffffffffUL, &u)) why = "an integer in [0, 4294967295]";
-            else run.seed = u;
-        } else if (strcmp(a, "--threads") == 0) {
-            if (tablegen_parse_uint(v, 1024, &u) || u < 1) why = "an integer in [1, 1024]";
-            else run.threads = (int)u;
-        } else if (strcmp(a, "--amp-size") == 0) {
-            if (tablegen_parse_uint(v, 1u << 20, &u) || u < 4) why = "an integer in [4, 1048576]";
-            else s.amp_size = (unsigned)u;
-        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
-            out = v;
-        } else if (strcmp(a, "--real") == 0) {
-            if (strcmp(v, "float") == 0) s.real_size = 4;
-            else if (strcmp(v, "double") == 0) s.real_size = 8;
-            else why = "float or double";
-        } else if (strcmp(a, "--format") == 0) {
-            format = v;
-            if (strcmp(v, "bin") != 0 && strcmp(v, "c") != 0) why = "bin or c";
-        } else if (strcmp(a, "--name") == 0) {
-            name = v;
-            if (!tablegen_valid_ident(v)) why = "a C identifier";
-        }
-        if (why) {
-            fprintf(stderr, "trk-tablegen q2: bad value '%s' for %s: must be %s\n", v, a, why);
-            return 2;
-        }
-    }
-    if (!s.detector || !out) {
-        fprintf(stderr, "trk-tablegen q2: --detector and -o are required (see --help)\n");
-        return 2;
-    }
+    int detector = 0, amp_model = 0, cubic = 1, real_size = 0, format = 0, quiet = 0, amp_measure = 0,
+        measure_interp = 0;
+    long nz = 2, samples = (long)DEF_SAMPLES, seed = 1, threads = 0, amp_size = 0;
+    static const int detectors[] = {TRK_Q2_PDAF, TRK_Q2_PDAFAI};
+    static const int models[] = {TRK_AMP_RAYLEIGH, TRK_AMP_K};
+    static const int interps[] = {1, 0};
+    static const int reals[] = {4, 8};
+    char h_pd[160], h_snr[160], h_pfa[160], h_lv[160], h_samples[200], h_se[160], h_amp[120], h_real[96];
+    snprintf(h_pd, sizeof h_pd, "pdaf: pd nodes in (0, 1] (default %s)", DEF_PD);
+    snprintf(h_snr, sizeof h_snr, "pdafai: target SNR nodes, dB, in [-30, 60] (default %s)", DEF_SNR);
+    snprintf(h_pfa, sizeof h_pfa, "pdafai: false-alarm probabilities in (0, 1) (default %s)", DEF_PFA);
+    snprintf(h_lv, sizeof h_lv, "lambda_vg nodes in (0, 1000] (default pdaf %s,\npdafai %s)", DEF_LV_PDAF,
+             DEF_LV_PDAFAI);
+    snprintf(h_samples, sizeof h_samples,
+             "scenes per clutter-count stratum where a cell's variance comes\n"
+             "from (Neyman allocation; default %llu; >= 2)",
+             (unsigned long long)DEF_SAMPLES);
+    snprintf(h_se, sizeof h_se,
+             "stop a cell once its standard error <= S, in [0, 1); 0 runs all\nsamples (default %g)",
+             DEF_TARGET_SE);
+    snprintf(h_amp, sizeof h_amp, "points per curve of the in-memory K amplitude tables (default %u)",
+             Q2_AMP_TABLE_SIZE);
+    snprintf(h_real, sizeof h_real, "real width of the table (default: this build's, %s)",
+             TRK_REAL_IS_FLOAT ? "float" : "double");
+    const struct cli_opt opts[] = {
+        CLI_OPT_HEADING("Model:"),
+        {.name = "--detector", .type = CLI_CHOICE, .dst = &detector, .arg = "pdaf|pdafai", .values = detectors,
+         .flags = CLI_REQUIRED, .help = "the filter"},
+        CLI_OPT_LONG("--nz", &nz, "N", "2", CLI_IN, 1, 3, "measurement dimension"),
+        CLI_OPT_DOUBLE("--gate-prob", &gate_prob, "P", NULL, CLI_OPEN, 0, 1,
+                       "gate probability P_G in (0, 1) (default 0.99), or"),
+        CLI_OPT_DOUBLE("--gate-gamma", &gate_gamma, "G", NULL, CLI_GT | CLI_LE, 0, 1000,
+                       "the gate threshold on d2 itself, (0, 1000] (e.g. 36: Brekke g = 6)"),
+        CLI_OPT_CHOICE("--clutter-model", &amp_model, "rayleigh|k", models, NULL,
+                       "pdafai: clutter amplitude model (required)"),
+        CLI_OPT_DOUBLE("--k-shape", &nu, "NU", NULL, CLI_GT | CLI_LE, 0, 1e6,
+                       "pdafai, k: K shape in (0, 1e6] (required for k)"),
+        CLI_OPT_HEADING("Grid (LIST: comma-separated values and ranges A:B:STEP, strictly increasing;\n"
+                        "      LOG: A:B:N, N nodes equally spaced in ln x from A to B):"),
+        CLI_OPT_STRING("--pd", &pd_s, "LIST", NULL, h_pd),
+        CLI_OPT_STRING("--snr-db", &snr_s, "LIST", NULL, h_snr),
+        CLI_OPT_STRING("--pfa", &pfa_s, "LOG", NULL, h_pfa),
+        CLI_OPT_STRING("--lambda-vg", &lv_s, "LOG", NULL, h_lv),
+        CLI_OPT_CHOICE("--interp", &cubic, "cubic|linear", interps, "cubic",
+                       "interpolation rule stored in the table"),
+        CLI_OPT_HEADING("Sampling:"),
+        CLI_OPT_LONG("--samples", &samples, "N", NULL, CLI_IN, 2, 4294967295.0, h_samples),
+        CLI_OPT_DOUBLE("--target-se", &target_se, "S", NULL, CLI_GE | CLI_LT, 0, 1, h_se),
+        CLI_OPT_LONG("--seed", &seed, "N", "1", CLI_IN, 0, 4294967295.0,
+                     "random seed. The file is bit-identical for any\n"
+                     "--threads: a counter-based generator keyed by (seed, stratum,\n"
+                     "sample), work merged in a fixed order"),
+        CLI_OPT_LONG("--threads", &threads, "N", NULL, CLI_IN, 1, 1024, "OpenMP threads (default: all cores)"),
+        CLI_OPT_DOUBLE("--tail-mass", &tail_mass, "M", NULL, CLI_GT | CLI_LE, 0, 0.01,
+                       "Poisson mass of the clutter count left out per cell, (0, 0.01]\n"
+                       "(default 1e-12: the bound on that truncation's bias)"),
+        CLI_OPT_LONG("--amp-size", &amp_size, "N", NULL, CLI_IN, 4, 1u << 20, h_amp),
+        CLI_OPT_FLAG("--amp-measure", &amp_measure,
+                     "measure every K amplitude table against the direct K model and\n"
+                     "store the largest errors (amp_err_log_lr, amp_err_inv_sf)"),
+        CLI_OPT_FLAG("--measure-interp", &measure_interp,
+                     "also estimate q2 at the centre of every grid cell (same random\n"
+                     "numbers) and report/store the interpolation error of the table\n"
+                     "(interp_err_max, interp_err_rms); pdafai: about twice the time"),
+        CLI_OPT_HEADING("Output:"),
+        CLI_OPT_REQUIRED_STRING("--out", &out, "FILE", "output file (the table)"),
+        CLI_OPT_CHOICE("--real", &real_size, "float|double", reals, NULL, h_real),
+        CLI_OPT_CHOICE("--format", &format, "bin|c", NULL, "bin",
+                       "binary table, or C source: a const union {bytes,\n"
+                       "double} named IDENT for in-place use from ROM"),
+        CLI_OPT_CUSTOM("--name", &name, tablegen_parse_ident, "IDENT", "trk_q2_table",
+                       "C identifier of --format c"),
+        CLI_OPT_FLAG("--quiet", &quiet, "no progress bar on stderr"),
+        CLI_OPT_ALIAS("--model", "--clutter-model"),
+        CLI_OPT_ALIAS("--nu", "--k-shape"),
+        CLI_OPT_ALIAS("-o", "--out"),
+        CLI_OPT_ALIAS("--output", "--out"),
+        CLI_OPT_END};
+    const struct cli cli = {
+        .prog = "trk-tablegen q2",
+        .usage = "--detector pdaf|pdafai --out FILE [options]",
+        .about = "\n"
+                 "q2, the information-reduction factor of the PDAF / PDAFAI (CONVENTIONS \"q2, MRE and\n"
+                 "CRLB\"; Brekke eqs 28-30, 38), by importance sampling over a grid, written with its\n"
+                 "Monte Carlo standard error per cell as a q2 table (trk/q2.h \"Q2 TABLE\": versioned,\n"
+                 "CRC-checked, used in place by trk_q2_lookup_init_table).\n"
+                 "  pdaf    2-D table over (pd, lambda_vg) for one measurement dimension and gate\n"
+                 "  pdafai  3-D table over (snr_db, pfa, lambda_vg) for one clutter model (Rayleigh, or\n"
+                 "          K with shape nu); pd = S1(t) follows from the ROC (library amplitude module)\n"
+                 "lambda_vg = lambda V_G is the expected number of clutter points in the gate.\n",
+        .opts = opts,
+        .after = "\n"
+                 "Progress on stderr: lines of cells done, sampled points per second, ETA (an upper bound:\n"
+                 "--target-se stops cells early). Exit status 0 success, 1 computation failed, 2 bad\n"
+                 "usage or input."};
+    const int parsed = cli_parse(&cli, argc, argv);
+    if (parsed != CLI_RUN) return parsed;
+    s.detector = detector;
+    s.nz = (int)nz;
+    s.amp_model = amp_model;
+    s.nu = isnan(nu) ? 0 : nu;
+    s.cubic = cubic;
+    s.amp_size = (unsigned)amp_size;
+    s.amp_measure = amp_measure;
+    s.measure_interp = measure_interp;
+    s.real_size = (uint32_t)real_size;
+    run.samples = (uint64_t)samples;
+    run.target_se = target_se;
+    run.seed = (uint64_t)seed;
+    run.threads = (int)threads;
+    run.tail_mass = tail_mass;
+    const int have_gp = !isnan(gate_prob), have_gg = !isnan(gate_gamma), have_nu = !isnan(nu);
+    if (!have_gp) gate_prob = 0.99;
     const int ai = s.detector == TRK_Q2_PDAFAI;
     if (have_gp && have_gg) {
         fprintf(stderr, "trk-tablegen q2: give --gate-prob or --gate-gamma, not both\n");
         return 2;
     }
     if (ai && !s.amp_model) {
-        fprintf(stderr, "trk-tablegen q2: --detector pdafai needs --model rayleigh|k\n");
+        fprintf(stderr, "trk-tablegen q2: --detector pdafai needs --clutter-model rayleigh|k\n");
         return 2;
     }
     if (ai && s.amp_model == TRK_AMP_K && !have_nu) {
-        fprintf(stderr, "trk-tablegen q2: --model k needs --nu\n");
+        fprintf(stderr, "trk-tablegen q2: --clutter-model k needs --k-shape\n");
         return 2;
     }
     if (!ai && (s.amp_model || have_nu)) {
-        fprintf(stderr, "trk-tablegen q2: --model and --nu are for --detector pdafai\n");
+        fprintf(stderr, "trk-tablegen q2: --clutter-model and --k-shape are for --detector pdafai\n");
         return 2;
     }
     if (s.amp_model == TRK_AMP_RAYLEIGH) s.nu = 0;
@@ -316,7 +252,7 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
         snprintf(desc, sizeof desc, "q2 table: PDAFAI, Rayleigh clutter, nz %d, gamma %.6g, %zu-byte reals", s.nz,
                  s.gate_gamma, (size_t)(s.real_size ? s.real_size : sizeof(trk_real)));
     }
-    int rc = strcmp(format, "c") == 0 ? tablew_write_c(out, name, r.bytes, r.len, desc)
+    int rc = format == 1 ? tablew_write_c(out, name, r.bytes, r.len, desc)
                                       : tablew_write_bin(out, r.bytes, r.len);
     if (rc != 0) {
         perror(out);

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli.h"
 #include "fileio.h"
 #include "trk/types.h"
 #include "vec.h"
@@ -89,9 +90,24 @@ static void print_kinds(const char *what, long count, const struct kind_names *k
     printf("%s\n", k->more ? " ..." : "");
 }
 
+/* FILE operands. */
+struct files {
+    const char **f;
+    int n;
+};
+
+static int take_file(void *ctx, const char *arg, const char *next, char *err, size_t errlen)
+{
+    struct files *fl = ctx;
+    (void)next, (void)err, (void)errlen;
+    if (arg[0] == '-') return 0; /* an unknown option */
+    fl->f[fl->n++] = arg;
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
-    int strict = 0, emit = 0, report = 0, quiet = 0, nfiles = 0, bad_file = 0;
+    int strict = 0, emit = 0, report = 0, quiet = 0, bad_file = 0;
     const char *skip = NULL; /* comma-separated kinds not to run */
     int skip_slow = 0;       /* --skip-slow: kinds registered VEC_SLOW */
     long skipped = 0, skipped_slow = 0;
@@ -104,44 +120,46 @@ int main(int argc, char **argv)
         fprintf(stderr, "trk-vectors: libtrk was built with other capacities or real type\n");
         return 2;
     }
-    for (int a = 1; a < argc; a++) {
-        if (strcmp(argv[a], "--strict") == 0) strict = 1;
-        else if (strcmp(argv[a], "--emit") == 0) emit = 1;
-        else if (strcmp(argv[a], "--report-error") == 0) report = 1;
-        else if (strcmp(argv[a], "--quiet") == 0 || strcmp(argv[a], "-q") == 0) quiet = 1;
-        else if (strcmp(argv[a], "--skip-slow") == 0) skip_slow = 1;
-        else if (strcmp(argv[a], "--skip") == 0 && a + 1 < argc) {
-            skip = argv[++a];
-            argv[a] = (char *)"-"; /* not a file */
-        }
-        else if (strcmp(argv[a], "--help") == 0 || strcmp(argv[a], "-h") == 0) {
-            printf("usage: trk-vectors [--strict] [--emit] [--report-error] [--quiet] [--skip-slow] FILE...\n"
-                   "  checks each case of each FILE against libtrk (%s build)\n"
-                   "  --strict        exit non-zero also when a case's kind is not implemented\n"
-                   "  --emit          write the cases back with computed out values instead\n"
-                   "  --report-error  per kind: max abs/rel error and max fraction of tolerance used\n"
-                   "  --quiet         only the summary line and failures\n"
-                   "  --skip-slow     do not run cases of the kinds registered as slow (Monte Carlo,\n"
-                   "                  seconds per case; counted and named; `make check` passes it,\n"
-                   "                  `make test` runs them in one configuration)\n"
-                   "  --skip K1,K2    do not run cases of these kinds (counted as skipped)\n",
-                   TRK_REAL_IS_FLOAT ? "float" : "double");
-            return 0;
-        } else if (argv[a][0] == '-') {
-            fprintf(stderr, "trk-vectors: unknown option %s (see --help)\n", argv[a]);
-            return 2;
-        } else nfiles++;
-    }
-    if (nfiles == 0) {
-        fprintf(stderr, "usage: trk-vectors [--strict] [--emit] [--report-error] FILE...\n");
+    struct files fl = {NULL, 0};
+    fl.f = malloc((size_t)argc * sizeof *fl.f);
+    if (!fl.f) {
+        fprintf(stderr, "trk-vectors: out of memory\n");
         return 2;
     }
-    for (int a = 1; a < argc; a++) {
-        if (argv[a][0] == '-') continue;
+    const struct cli_opt opts[] = {
+        CLI_OPT_FLAG("--strict", &strict, "exit non-zero also when a case's kind is not implemented"),
+        CLI_OPT_FLAG("--emit", &emit, "write the cases back with computed out values instead"),
+        CLI_OPT_FLAG("--report-error", &report, "per kind: max abs/rel error and max fraction of tolerance used"),
+        CLI_OPT_FLAG("--quiet", &quiet, "only the summary line and failures"),
+        CLI_OPT_SHORT("-q", "--quiet"),
+        CLI_OPT_FLAG("--skip-slow", &skip_slow,
+                     "do not run cases of the kinds registered as slow (Monte Carlo,\n"
+                     "seconds per case; counted and named; `make check` passes it,\n"
+                     "`make test` runs them in one configuration)"),
+        CLI_OPT_STRING("--skip", &skip, "K1,K2", NULL, "do not run cases of these kinds (counted as skipped)"),
+        CLI_OPT_END};
+    char about[96];
+    snprintf(about, sizeof about, "  checks each case of each FILE against libtrk (%s build)",
+             TRK_REAL_IS_FLOAT ? "float" : "double");
+    const struct cli cli = {
+        .prog = "trk-vectors",
+        .usage = "[--strict] [--emit] [--report-error] [--quiet] [--skip-slow] [--skip K1,K2] FILE...",
+        .about = about,
+        .opts = opts,
+        .operand = take_file,
+        .ctx = &fl};
+    const int parsed = cli_parse(&cli, argc, argv);
+    if (parsed != CLI_RUN || fl.n == 0) {
+        if (parsed == CLI_RUN) fprintf(stderr, "trk-vectors: no FILE given (see --help)\n");
+        free(fl.f);
+        return parsed == CLI_RUN ? 2 : parsed;
+    }
+    for (int fi = 0; fi < fl.n; fi++) {
+        const char *path = fl.f[fi];
         size_t len;
-        char *buf = fileio_read(argv[a], &len);
+        char *buf = fileio_read(path, &len);
         if (!buf) {
-            fprintf(stderr, "trk-vectors: cannot read %s\n", argv[a]);
+            fprintf(stderr, "trk-vectors: cannot read %s\n", path);
             bad_file = 1;
             failed++;
             continue;
@@ -163,7 +181,7 @@ int main(int argc, char **argv)
             }
             if (!k) {
                 if (emit) emit_case(&cs, &out, 0);
-                else if (!quiet || strict) printf("UNIMPLEMENTED %s %s %s\n", argv[a], cs.id, cs.kind);
+                else if (!quiet || strict) printf("UNIMPLEMENTED %s %s %s\n", path, cs.id, cs.kind);
                 unimpl++;
                 note_kind(&unimpl_kinds, cs.kind);
                 continue;
@@ -174,12 +192,12 @@ int main(int argc, char **argv)
                 continue;
             }
             if (rc == VEC_NOT_APPLICABLE) {
-                if (!quiet) printf("NOT-APPLICABLE %s %s %s\n", argv[a], cs.id, out.err);
+                if (!quiet) printf("NOT-APPLICABLE %s %s %s\n", path, cs.id, out.err);
                 not_applicable++;
                 continue;
             }
             if (rc != 0) {
-                printf("FAIL %s %s %s\n", argv[a], cs.id, out.err[0] ? out.err : "kind failed");
+                printf("FAIL %s %s %s\n", path, cs.id, out.err[0] ? out.err : "kind failed");
                 failed++;
                 continue;
             }
@@ -187,7 +205,7 @@ int main(int argc, char **argv)
             vec_compare(&f, &cs, &out, TRK_REAL_IS_FLOAT, k->float_abs, k->float_rel, &chk);
             if (chk.ok) passed++;
             else {
-                printf("FAIL %s %s %s\n", argv[a], cs.id, chk.first_fail);
+                printf("FAIL %s %s %s\n", path, cs.id, chk.first_fail);
                 failed++;
             }
             size_t e;
@@ -202,13 +220,14 @@ int main(int argc, char **argv)
             }
         }
         if (r < 0) {
-            fprintf(stderr, "trk-vectors: %s: %s\n", argv[a], f.err);
-            printf("FAIL %s malformed: %s\n", argv[a], f.err);
+            fprintf(stderr, "trk-vectors: %s: %s\n", path, f.err);
+            printf("FAIL %s malformed: %s\n", path, f.err);
             bad_file = 1;
             failed++;
         }
         free(buf);
     }
+    free(fl.f);
     if (emit) return bad_file ? 2 : 0;
     if (report) {
         printf("%-20s %6s %12s %12s %10s   (%s build)\n", "kind", "cases", "max_abs_err", "max_rel_err",
