@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "pda_impl.h"
 
 #if TRK_MAX_TRACKS > 65535 || TRK_MAX_DETECTIONS > 65535
 #error "jpda.c indexes tracks and detections with unsigned short"
@@ -82,6 +83,31 @@ trk_status trk_jpda_existence(trk_real psi, trk_real pd_pg, const trk_real *p_as
     beta[0] = miss_exists / post;
     for (size_t j = 0; j < n_dets; j++) beta[j + 1] = p_assoc[j] / post;
     *psi_post = post;
+    return TRK_OK;
+}
+
+trk_status trk_jpda_track_weights(const struct trk_pda *pda, trk_real psi, const struct trk_innovation *inn,
+                                  size_t n_dets, const trk_real *z, const trk_real *log_lr, trk_real *log_w_row,
+                                  trk_real *log_w_miss, trk_real *d2)
+{
+    if (!pda || !inn || !log_w_miss || (n_dets > 0 && (!z || !log_w_row)) || inn->nz != pda->params.nz)
+        return TRK_E_ARG;
+    if (pda->params.clutter != TRK_CLUTTER_PARAMETRIC || !(pda->params.clutter_density > 0)) return TRK_E_UNSUPPORTED;
+    if (!isfinite(psi)) return TRK_E_NAN;
+    if (!(psi > 0 && psi <= 1)) return TRK_E_RANGE;
+    const int nz = inn->nz;
+    const trk_real miss = 1 - pda->params.pd * pda->params.gate_prob * psi;
+    if (!(miss > 0)) return TRK_E_RANGE; /* psi P_D P_G = 1: a track that cannot be missed */
+    const trk_real base = trk_log(psi) - trk_log(pda->params.clutter_density);
+    for (size_t j = 0; j < n_dets; j++) {
+        trk_real nu[TRK_MAX_MEAS];
+        for (int a = 0; a < nz; a++) nu[a] = z[j * (size_t)nz + (size_t)a] - inn->z_pred[a];
+        const trk_real dj = trk_gate_d2(inn, nu), lr = log_lr ? log_lr[j] : 0;
+        if (!isfinite(dj) || !isfinite(lr)) return TRK_E_NAN;
+        log_w_row[j] = dj <= pda->gamma ? base + trk_i_pda_log_e(pda, inn->log_det_s, dj, lr) : -(trk_real)INFINITY;
+        if (d2) d2[j] = dj;
+    }
+    *log_w_miss = trk_log(miss);
     return TRK_OK;
 }
 

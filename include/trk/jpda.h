@@ -40,6 +40,8 @@
 #include <stddef.h>
 
 #include "trk/config.h"
+#include "trk/kalman.h"
+#include "trk/pda.h"
 #include "trk/types.h"
 
 /* Capacities TRK_JPDA_EXACT_BITS, TRK_JPDA_MAX_WORK, TRK_JPDA_LBP_MAX_ITER:
@@ -84,6 +86,18 @@ struct trk_jpda_report {
 TRK_NODISCARD trk_status trk_jpda_marginals(const struct trk_jpda_scan *scan, struct trk_jpda_work *work,
                                             trk_real *p_assoc, trk_real *p_miss,
                                             struct trk_jpda_report *rep);
+
+/* One track's row of the scan weights from its predicted measurement:
+ * log_w_row[j] = ln psi + ln(P_D N(nu_j; 0, S) l^a(a_j)) - ln lambda for the
+ * detections in the gate (d2 <= gamma), -inf outside; *log_w_miss =
+ * ln(1 - P_D P_G psi); d2 (n_dets outputs, may be NULL). pda gives P_D, P_G,
+ * gamma and the parametric clutter density lambda > 0; z is n_dets x 2, log_lr
+ * NULL for none. TRK_E_ARG, TRK_E_UNSUPPORTED nonparametric clutter or
+ * lambda = 0, TRK_E_RANGE psi outside (0, 1], TRK_E_NAN non-finite input. */
+TRK_NODISCARD trk_status trk_jpda_track_weights(const struct trk_pda *pda, trk_real psi,
+                                                const struct trk_innovation *inn, size_t n_dets,
+                                                const trk_real *z, const trk_real *log_lr, trk_real *log_w_row,
+                                                trk_real *log_w_miss, trk_real *d2);
 
 /* JIPDA posterior existence and the weights of the state update, conditional
  * on existence, for one track (CONVENTIONS):
