@@ -14,6 +14,13 @@
 #define SCAN_PERIOD_S 2.0
 #define N_SCANS 60
 
+/* the CV state [x, vx, y, vy] and its covariance by name (trk/kalman.h) */
+#define X TRK_CV2_X
+#define VX TRK_CV2_VX
+#define Y TRK_CV2_Y
+#define VY TRK_CV2_VY
+#define P(i, j) TRK_CV2_P(i, j)
+
 static struct trk_tracker tracker;                 /* ~40 KB, .bss */
 static struct trk_detection detections[TRK_MAX_DETECTIONS];
 
@@ -39,7 +46,7 @@ static unsigned poisson(double mean)
     return k;
 }
 
-static const double target0[N_TARGETS][4] = {
+static const double target0[N_TARGETS][4] = { /* [x, vx, y, vy] like the tracks */
     {200, 3.0, 300, 1.0}, {1500, -2.0, 400, 2.5}, {900, 0.5, 1700, -3.0}};
 static double target[N_TARGETS][4];
 
@@ -47,11 +54,11 @@ static size_t get_scan(int k, struct trk_scan *scan)
 {
     size_t n = 0;
     for (int i = 0; i < N_TARGETS; i++) {
-        target[i][0] += SCAN_PERIOD_S * target[i][1];
-        target[i][2] += SCAN_PERIOD_S * target[i][3];
+        target[i][X] += SCAN_PERIOD_S * target[i][VX];
+        target[i][Y] += SCAN_PERIOD_S * target[i][VY];
         if (urand() < 0.85 && n < TRK_MAX_DETECTIONS) {
-            detections[n].x_m = (trk_real)(target[i][0] + 3 * nrand());
-            detections[n].y_m = (trk_real)(target[i][2] + 3 * nrand());
+            detections[n].x_m = (trk_real)(target[i][X] + 3 * nrand());
+            detections[n].y_m = (trk_real)(target[i][Y] + 3 * nrand());
             detections[n].has_cov = detections[n].has_amplitude = 0;
             n++;
         }
@@ -74,8 +81,8 @@ int main(void)
     struct trk_tracker_params params;
     trk_tracker_default_params(&params);
     params.sensor[0].pd = TRK_REAL_C(0.85);
-    params.sensor[0].meas_cov_m2[0] = 9; /* 3 m standard deviation */
-    params.sensor[0].meas_cov_m2[2] = 9;
+    params.sensor[0].meas_cov_m2[TRK_COV2_XX] = 9; /* 3 m standard deviation */
+    params.sensor[0].meas_cov_m2[TRK_COV2_YY] = 9;
     params.sensor[0].clutter_density_per_m2 = (trk_real)(20.0 / (AREA_M * AREA_M));
     params.process_noise_q = TRK_REAL_C(0.01);
     params.confirm.u.mn.m = 4; /* 4 of the first 5 scans */
@@ -85,7 +92,13 @@ int main(void)
     params.max_tentative_scans = 5;
 
     if (trk_tracker_abi_check() != TRK_OK) return 2; /* header/library mismatch */
-    trk_status st = trk_tracker_init(&tracker, &params);
+    const char *field;
+    trk_status st = trk_tracker_check_params(&params, &field); /* names what it refuses */
+    if (st != TRK_OK) {
+        printf("tracker parameter %s: %s\n", field, trk_status_str(st));
+        return 1;
+    }
+    st = trk_tracker_init(&tracker, &params);
     if (st != TRK_OK) {
         printf("trk_tracker_init: %s\n", trk_status_str(st));
         return 1;
@@ -112,8 +125,8 @@ int main(void)
                 const struct trk_track *tr = trk_tracker_track(&tracker, s);
                 if (!tr || tr->status != TRK_TRACK_CONFIRMED) continue;
                 printf("  id %3u  x %8.1f y %8.1f m  v (%5.2f, %5.2f) m/s  sd %.1f m  hits %u/%u\n",
-                       (unsigned)tr->id, (double)tr->x[0], (double)tr->x[2], (double)tr->x[1],
-                       (double)tr->x[3], sqrt((double)(tr->p[0] + tr->p[10])), (unsigned)tr->n_hits,
+                       (unsigned)tr->id, (double)tr->x[X], (double)tr->x[Y], (double)tr->x[VX],
+                       (double)tr->x[VY], sqrt((double)(tr->p[P(X, X)] + tr->p[P(Y, Y)])), (unsigned)tr->n_hits,
                        (unsigned)tr->n_scans);
             }
         }
@@ -124,7 +137,7 @@ int main(void)
         for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
             const struct trk_track *tr = trk_tracker_track(&tracker, s);
             if (tr && tr->status == TRK_TRACK_CONFIRMED &&
-                hypot((double)tr->x[0] - target[i][0], (double)tr->x[2] - target[i][2]) < 20) {
+                hypot((double)tr->x[X] - target[i][X], (double)tr->x[Y] - target[i][Y]) < 20) {
                 found++;
                 break;
             }

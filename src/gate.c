@@ -1,6 +1,7 @@
 /* gate.c - gate threshold, volume and distance (CONVENTIONS "Gating"). */
 #include "trk/gate.h"
 
+#include "gate_impl.h"
 #include "kalman_impl.h"
 #include "trk/special.h"
 
@@ -11,20 +12,16 @@ trk_status trk_gate_gamma(int nz, trk_real gate_prob, trk_real *gamma)
     return trk_chi2_inv(nz, gate_prob, gamma);
 }
 
-trk_real trk_gate_unit_volume(int nz)
+trk_real trk_gate_unit_volume(int nz) { return trk_i_gate_unit_volume(nz); }
+
+trk_real trk_gate_volume_inn(const struct trk_innovation *inn, trk_real gamma)
 {
-    switch (nz) {
-    case 1: return 2;
-    case 2: return TRK_PI;
-    case 3: return TRK_REAL_C(4.0) * TRK_PI / 3;
-    default: return 0;
-    }
+    return trk_i_gate_volume(inn->nz, gamma, inn->sqrt_det_s, inn->log_det_s);
 }
 
 trk_real trk_gate_volume(int nz, trk_real gamma, trk_real log_det_s)
 {
-    return trk_gate_unit_volume(nz) * trk_pow(gamma, (trk_real)nz / 2) *
-           trk_exp(TRK_REAL_C(0.5) * log_det_s);
+    return trk_i_gate_volume(nz, gamma, (trk_real)INFINITY, log_det_s);
 }
 
 trk_real trk_gate_d2(const struct trk_innovation *inn, const trk_real *nu)

@@ -1,23 +1,56 @@
-/* pda_impl.h (private) - stages of the PDA update shared by pda.c (one track,
- * public API) and tracker.c (a whole scan). See trk/pda.h for the formulas. */
+/* pda_impl.h (private) - one track's PDA update over its gated set, shared
+ * by pda.c (the public one-track API) and the tracker (every track of a
+ * scan). See trk/pda.h for the formulas (CONVENTIONS "PDA").
+ *
+ * The caller predicts, computes the innovation and gates; the gated set
+ * holds the detections with their unnormalised log weights ln e_i. Detections
+ * with the shared innovation covariance S (the sensor's R) and detections
+ * with their own R_j (S_j = H P H' + R_j) are one set: the first n_shared
+ * share S, the rest carry R_j. trk_i_pda_update_set then does the rest:
+ * clutter density, beta, the Joseph-form P_c, the combination into (x, P),
+ * the check of the posterior. */
 #ifndef TRK_PDA_IMPL_H
 #define TRK_PDA_IMPL_H
 
+#include "gate_impl.h"
 #include "kalman_impl.h"
+#include "trk/gate.h"
 #include "trk/pda.h"
+
+/* The prediction of one track, as the PDA needs it. */
+struct trk_i_pda_pred {
+    int nx, nz;
+    const trk_real *h;                /* H (nz x nx) */
+    const int *sel;                   /* the state components H selects, or NULL (H general) */
+    const trk_real *r;                /* R of the detections that share S */
+    trk_real *x, *p;                  /* predicted state and covariance; the update
+                                         writes the posterior over them */
+    const trk_real *pht;              /* P H' (nx x nz) */
+    const struct trk_innovation *inn; /* z_pred and the shared S = H P H' + R */
+};
+
+/* One track's gated set. */
+struct trk_i_pda_set {
+    size_t n;              /* detections: z[0, n) (rows of nz), w[0, n) */
+    size_t n_shared;       /* z[0, n_shared) share S; z[n_shared, n) each have an R_j */
+    size_t m_gated;        /* m_G, detections in the gate (nonparametric lambda = m_G / V_G) */
+    const trk_real *z;
+    trk_real *w;           /* in: ln e_i (-inf: weight 0); out: beta_i */
+    const trk_real *r_own; /* R_j of detection n_shared + j at r_own + j nz^2 */
+};
+
+struct trk_i_pda_out {
+    trk_real beta0;       /* P(no detection is the target's) */
+    trk_real lambda;      /* clutter density used */
+    trk_real gate_volume; /* V_G of the shared S */
+    trk_real log_sum_e;   /* ln sum_i e_i over the set (-inf: none) */
+};
 
 /* ln e_i = ln P_D - (nz/2) ln 2pi - (1/2) ln det S - d2/2 + ln l^a */
 TRK_INLINE trk_real trk_i_pda_log_e(const struct trk_pda *pda, trk_real log_det_s, trk_real d2,
-                                       trk_real log_lr)
+                                    trk_real log_lr)
 {
     return pda->log_pd_norm - TRK_REAL_C(0.5) * (log_det_s + d2) + log_lr;
-}
-
-/* V_G = c_nz gamma^(nz/2) sqrt(det S) */
-TRK_INLINE trk_real trk_i_pda_gate_volume(const struct trk_pda *pda, const struct trk_innovation *inn)
-{
-    return inn->sqrt_det_s <= TRK_REAL_MAX ? pda->gate_const * inn->sqrt_det_s
-                                           : pda->gate_const * trk_exp(TRK_REAL_C(0.5) * inn->log_det_s);
 }
 
 /* ln e_0 = ln lambda + ln(1 - P_D P_G); precomputed for parametric clutter */
@@ -29,8 +62,8 @@ TRK_INLINE trk_real trk_i_pda_log_e0(const struct trk_pda *pda, trk_real lambda)
 
 /* Normalise in the log domain: log_e0 and log_w[0..n) (in) -> beta0 and
  * w[0..n) = beta_i (out, in place). When every weight is zero (e.g. no
- * detection and lambda = 0) beta0 = 1. If log_sum_meas is not NULL it gets
- * ln sum_i e_i over the detections (-inf when there are none). */
+ * detection and lambda = 0) beta0 = 1. *log_sum_meas gets ln sum_i e_i over
+ * the detections (-inf when there are none). */
 TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, trk_real *log_sum_meas)
 {
     trk_real mx = log_e0;
@@ -38,7 +71,7 @@ TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, 
         if (w[i] > mx) mx = w[i];
     if (!(mx > -TRK_REAL_MAX)) { /* all -inf */
         for (size_t i = 0; i < n; i++) w[i] = 0;
-        if (log_sum_meas) *log_sum_meas = -(trk_real)INFINITY;
+        *log_sum_meas = -(trk_real)INFINITY;
         return 1;
     }
     trk_real e0 = trk_exp(log_e0 - mx), sum_meas = 0;
@@ -46,10 +79,36 @@ TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, 
         w[i] = trk_exp(w[i] - mx);
         sum_meas += w[i];
     }
-    if (log_sum_meas) *log_sum_meas = sum_meas > 0 ? mx + trk_log(sum_meas) : -(trk_real)INFINITY;
+    *log_sum_meas = sum_meas > 0 ? mx + trk_log(sum_meas) : -(trk_real)INFINITY;
     trk_real inv = 1 / (e0 + sum_meas);
     for (size_t i = 0; i < n; i++) w[i] *= inv;
     return e0 * inv;
+}
+
+/* S_j = H P H' + R_j of a detection with its own covariance (gating and the
+ * update use the same). */
+TRK_INLINE void trk_i_pda_own_s(const struct trk_i_pda_pred *pr, const trk_real *r_j, trk_real *s)
+{
+    const int nz = pr->nz;
+    if (pr->sel) {
+        for (int j = 0; j < nz; j++)
+            for (int k = 0; k < nz; k++) s[j * nz + k] = pr->pht[pr->sel[j] * nz + k] + r_j[j * nz + k];
+    } else {
+        trk_i_mat_mul(nz, pr->nx, nz, pr->h, pr->pht, s);
+        for (int i = 0; i < nz * nz; i++) s[i] += r_j[i];
+    }
+    trk_i_symmetrize(nz, s);
+}
+
+/* L^-1 (S = L L') and ln det S; TRK_E_NOT_SPD when S is not SPD. */
+TRK_INLINE trk_status trk_i_pda_factor(int nz, const trk_real *s, trk_real *l_inv, trk_real *log_det)
+{
+    trk_real l[TRK_MAX_MEAS * TRK_MAX_MEAS];
+    trk_status st = trk_i_chol(nz, s, l);
+    if (st != TRK_OK) return st;
+    trk_i_tril_inverse(nz, l, l_inv);
+    *log_det = trk_i_chol_logdet(nz, l);
+    return TRK_OK;
 }
 
 /* u = P- H' L^-T (nx x nz), so that K = u L^-1 and K nu = u y with the
@@ -82,93 +141,184 @@ TRK_INLINE void trk_i_pda_rank1(int nx, trk_real *acc, trk_real w, const trk_rea
     }
 }
 
-/* The PDA state and covariance update (CONVENTIONS "PDA") as the moment
- * match of a Gaussian mixture, written so that every term is positive
- * semi-definite. Hypothesis i (beta_i, innovation nu_i = z_i - z_pred) moves
- * the state by dx_i = K_i nu_i = u_i y_i; hypothesis 0 (beta0) by 0:
- *   x = x- + dxbar,  dxbar = sum_i beta_i dx_i
- *   P = beta0 P- + pc_sum + sum_i beta_i (dx_i - dxbar)(dx_i - dxbar)' + beta0 dxbar dxbar'
- * pc_sum = sum_i beta_i P_c,i is supplied by the caller.
- * Detections that share one S (the sensor's covariance) form one group G
- * with u = P- H' L^-T; its part of the sum is split by the law of total
- * variance into u W u' + B (u ybar - dxbar)(u ybar - dxbar)', with
- * B = sum_G beta_i, ybar = sum_G beta_i y_i / B, W = sum_G beta_i (y_i - ybar)(y_i - ybar)',
- * so each shared detection costs only nz-dimensional work. With that group
- * alone this is exactly the standard form
- *   P = beta0 P- + (1 - beta0) P_c + K (sum beta_i nu_i nu_i' - nubar nubar') K'.
- * Detections with their own covariance R_j (own S_j = L_j L_j') enter one by
- * one with their own u_j.
- *   shared group: n rows of z at z_stride, beta[n], its l_inv = L^-1
- *   own: n1 rows of z1 (stride nz), beta1[n1], l_inv1 at stride nz*nz
- * Entries with beta = 0 are skipped. x_out/p_out may alias x_pred/p_pred. */
-TRK_INLINE void trk_i_pda_combine(int nx, int nz, const trk_real *x_pred, const trk_real *p_pred,
-                                  const trk_real *pht, const trk_real *z_pred, trk_real beta0,
-                                  size_t n, const trk_real *z, size_t z_stride,
-                                  const trk_real *beta, const trk_real *l_inv, size_t n1,
-                                  const trk_real *z1, const trk_real *beta1,
-                                  const trk_real *l_inv1, const trk_real *pc_sum, trk_real *x_out,
-                                  trk_real *p_out)
+/* Detection i >= n_shared with its own covariance: the move d = K_j nu_j =
+ * u_j y_j, and with pc_sum not NULL also pc_sum += beta_j P_c,j (Joseph). */
+TRK_INLINE void trk_i_pda_own_move(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                   size_t i, trk_real *d, trk_real *pc_sum)
 {
-    trk_real u[TRK_MAX_STATE * TRK_MAX_MEAS], uj[TRK_MAX_STATE * TRK_MAX_MEAS];
-    trk_real sy[TRK_MAX_MEAS] = {0}, y[TRK_MAX_MEAS], d[TRK_MAX_STATE];
-    trk_real dxbar[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
-    trk_real bsum = 0;
-    /* pass 1: group sums and the mean move */
-    trk_i_pda_u(nx, nz, pht, l_inv, u);
-    for (size_t i = 0; i < n; i++) {
-        if (beta[i] == 0) continue;
-        trk_i_pda_whiten(nz, l_inv, z + i * z_stride, z_pred, y);
-        bsum += beta[i];
-        for (int t = 0; t < nz; t++) sy[t] += beta[i] * y[t];
+    const int nx = pr->nx, nz = pr->nz;
+    const trk_real *r_j = s->r_own + (i - s->n_shared) * (size_t)(nz * nz);
+    trk_real sj[TRK_MAX_MEAS * TRK_MAX_MEAS], li[TRK_MAX_MEAS * TRK_MAX_MEAS], log_det;
+    trk_real u[TRK_MAX_STATE * TRK_MAX_MEAS], y[TRK_MAX_MEAS];
+    trk_i_pda_own_s(pr, r_j, sj);
+    if (trk_i_pda_factor(nz, sj, li, &log_det) != TRK_OK) { /* cannot happen: it was gated */
+        for (int a = 0; a < nx; a++) d[a] = 0;
+        return;
     }
+    if (pc_sum) {
+        trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS], pc[TRK_MAX_STATE * TRK_MAX_STATE];
+        trk_i_gain(nx, nz, pr->pht, li, k);
+        trk_i_joseph_sel(nx, nz, pr->h, pr->sel, r_j, k, pr->p, pr->pht, pc);
+        for (int a = 0; a < nx * nx; a++) pc_sum[a] += s->w[i] * pc[a];
+    }
+    trk_i_pda_u(nx, nz, pr->pht, li, u);
+    trk_i_pda_whiten(nz, li, s->z + i * (size_t)nz, pr->inn->z_pred, y);
+    trk_i_mat_mul(nx, nz, 1, u, y, d);
+}
+
+/* The moments of the shared group (beta_i, i < n_shared): B = sum beta_i,
+ * sy = sum beta_i y_i; and pc_sum = B P_c (Joseph form with the shared R). */
+TRK_INLINE trk_real trk_i_pda_shared_sums(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                          trk_real *sy, trk_real *pc_sum)
+{
+    const int nx = pr->nx, nz = pr->nz;
+    trk_real bsum = 0, y[TRK_MAX_MEAS];
+    for (int t = 0; t < nz; t++) sy[t] = 0;
+    for (size_t i = 0; i < s->n_shared; i++) {
+        if (s->w[i] == 0) continue;
+        trk_i_pda_whiten(nz, pr->inn->s_chol_inv, s->z + i * (size_t)nz, pr->inn->z_pred, y);
+        bsum += s->w[i];
+        for (int t = 0; t < nz; t++) sy[t] += s->w[i] * y[t];
+    }
+    if (bsum > 0) {
+        trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS];
+        trk_i_gain(nx, nz, pr->pht, pr->inn->s_chol_inv, k);
+        trk_i_joseph_sel(nx, nz, pr->h, pr->sel, pr->r, k, pr->p, pr->pht, pc_sum);
+        for (int a = 0; a < nx * nx; a++) pc_sum[a] *= bsum;
+    } else {
+        for (int a = 0; a < nx * nx; a++) pc_sum[a] = 0;
+    }
+    return bsum;
+}
+
+/* acc += the spread of the shared group about dxbar, split by the law of
+ * total variance: u W u' + B (u ybar - dxbar)(u ybar - dxbar)', with
+ * ybar = sy / B, W = sum beta_i (y_i - ybar)(y_i - ybar)' (nz-dimensional
+ * work per detection). */
+TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                        const trk_real *u, trk_real bsum, const trk_real *sy,
+                                        const trk_real *dxbar, trk_real *acc)
+{
+    const int nx = pr->nx, nz = pr->nz;
+    trk_real ybar[TRK_MAX_MEAS], w[TRK_MAX_MEAS * TRK_MAX_MEAS] = {0}, y[TRK_MAX_MEAS];
+    trk_real uw[TRK_MAX_STATE * TRK_MAX_MEAS], d[TRK_MAX_STATE];
+    for (int t = 0; t < nz; t++) ybar[t] = sy[t] / bsum;
+    for (size_t i = 0; i < s->n_shared; i++) {
+        if (s->w[i] == 0) continue;
+        trk_i_pda_whiten(nz, pr->inn->s_chol_inv, s->z + i * (size_t)nz, pr->inn->z_pred, y);
+        for (int t = 0; t < nz; t++) y[t] -= ybar[t];
+        for (int a = 0; a < nz; a++)
+            for (int t = a; t < nz; t++) w[a * nz + t] += s->w[i] * y[a] * y[t];
+    }
+    for (int a = 0; a < nz; a++)
+        for (int t = a + 1; t < nz; t++) w[t * nz + a] = w[a * nz + t];
+    trk_i_mat_mul(nx, nz, nz, u, w, uw);
+    for (int a = 0; a < nx; a++)
+        for (int b = a; b < nx; b++) {
+            trk_real v = 0;
+            for (int t = 0; t < nz; t++) v += uw[a * nz + t] * u[b * nz + t];
+            acc[a * nx + b] += v;
+        }
+    trk_i_mat_mul(nx, nz, 1, u, ybar, d);
+    for (int a = 0; a < nx; a++) d[a] -= dxbar[a];
+    trk_i_pda_rank1(nx, acc, bsum, d);
+}
+
+/* The PDA state and covariance update as the moment match of a Gaussian
+ * mixture, written so that every term is positive semi-definite.
+ * Hypothesis i (beta_i) moves the state by dx_i = K_i nu_i; hypothesis 0
+ * (beta0) by 0:
+ *   x = x- + dxbar,  dxbar = sum_i beta_i dx_i
+ *   P = beta0 P- + sum_i beta_i P_c,i + sum_i beta_i (dx_i - dxbar)(dx_i - dxbar)'
+ *       + beta0 dxbar dxbar'
+ * With the shared group alone this is exactly the standard form
+ *   P = beta0 P- + (1 - beta0) P_c + K (sum beta_i nu_i nu_i' - nubar nubar') K'.
+ * Detections with their own R_j enter one by one (their own K_j). Entries
+ * with beta = 0 are skipped. Out: x_new and P (acc, symmetric). */
+TRK_INLINE void trk_i_pda_combine(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                  trk_real beta0, trk_real *x_new, trk_real *acc)
+{
+    const int nx = pr->nx, nz = pr->nz;
+    trk_real u[TRK_MAX_STATE * TRK_MAX_MEAS], sy[TRK_MAX_MEAS], dxbar[TRK_MAX_STATE], d[TRK_MAX_STATE];
+    const trk_real bsum = trk_i_pda_shared_sums(pr, s, sy, acc); /* acc = pc_sum first */
+    trk_i_pda_u(nx, nz, pr->pht, pr->inn->s_chol_inv, u);
     trk_i_mat_mul(nx, nz, 1, u, sy, dxbar);
-    for (size_t j = 0; j < n1; j++) {
-        if (beta1[j] == 0) continue;
-        trk_i_pda_u(nx, nz, pht, l_inv1 + j * (size_t)(nz * nz), uj);
-        trk_i_pda_whiten(nz, l_inv1 + j * (size_t)(nz * nz), z1 + j * (size_t)nz, z_pred, y);
-        trk_i_mat_mul(nx, nz, 1, uj, y, d);
-        for (int a = 0; a < nx; a++) dxbar[a] += beta1[j] * d[a];
+    for (size_t i = s->n_shared; i < s->n; i++) {
+        if (s->w[i] == 0) continue;
+        trk_i_pda_own_move(pr, s, i, d, acc);
+        for (int a = 0; a < nx; a++) dxbar[a] += s->w[i] * d[a];
     }
     for (int a = 0; a < nx; a++)
         for (int b = a; b < nx; b++)
-            acc[a * nx + b] = beta0 * (p_pred[a * nx + b] + dxbar[a] * dxbar[b]) + pc_sum[a * nx + b];
-    /* pass 2: spreads */
-    if (bsum > 0) {
-        trk_real ybar[TRK_MAX_MEAS], w[TRK_MAX_MEAS * TRK_MAX_MEAS] = {0};
-        trk_real uw[TRK_MAX_STATE * TRK_MAX_MEAS];
-        for (int t = 0; t < nz; t++) ybar[t] = sy[t] / bsum;
-        for (size_t i = 0; i < n; i++) {
-            if (beta[i] == 0) continue;
-            trk_i_pda_whiten(nz, l_inv, z + i * z_stride, z_pred, y);
-            for (int t = 0; t < nz; t++) y[t] -= ybar[t];
-            for (int s = 0; s < nz; s++)
-                for (int t = s; t < nz; t++) w[s * nz + t] += beta[i] * y[s] * y[t];
-        }
-        for (int s = 0; s < nz; s++)
-            for (int t = s + 1; t < nz; t++) w[t * nz + s] = w[s * nz + t];
-        trk_i_mat_mul(nx, nz, nz, u, w, uw);
-        for (int a = 0; a < nx; a++)
-            for (int b = a; b < nx; b++) {
-                trk_real s = 0;
-                for (int t = 0; t < nz; t++) s += uw[a * nz + t] * u[b * nz + t];
-                acc[a * nx + b] += s;
-            }
-        trk_i_mat_mul(nx, nz, 1, u, ybar, d);
+            acc[a * nx + b] = beta0 * (pr->p[a * nx + b] + dxbar[a] * dxbar[b]) + acc[a * nx + b];
+    if (bsum > 0) trk_i_pda_shared_spread(pr, s, u, bsum, sy, dxbar, acc);
+    for (size_t i = s->n_shared; i < s->n; i++) {
+        if (s->w[i] == 0) continue;
+        trk_i_pda_own_move(pr, s, i, d, NULL);
         for (int a = 0; a < nx; a++) d[a] -= dxbar[a];
-        trk_i_pda_rank1(nx, acc, bsum, d);
-    }
-    for (size_t j = 0; j < n1; j++) {
-        if (beta1[j] == 0) continue;
-        trk_i_pda_u(nx, nz, pht, l_inv1 + j * (size_t)(nz * nz), uj);
-        trk_i_pda_whiten(nz, l_inv1 + j * (size_t)(nz * nz), z1 + j * (size_t)nz, z_pred, y);
-        trk_i_mat_mul(nx, nz, 1, uj, y, d);
-        for (int a = 0; a < nx; a++) d[a] -= dxbar[a];
-        trk_i_pda_rank1(nx, acc, beta1[j], d);
+        trk_i_pda_rank1(nx, acc, s->w[i], d);
     }
     for (int a = 0; a < nx; a++) {
-        x_out[a] = x_pred[a] + dxbar[a];
-        for (int b = a; b < nx; b++) p_out[a * nx + b] = p_out[b * nx + a] = acc[a * nx + b];
+        x_new[a] = pr->x[a] + dxbar[a];
+        for (int b = a + 1; b < nx; b++) acc[b * nx + a] = acc[a * nx + b];
     }
+}
+
+/* A usable state and covariance: every value finite (else TRK_E_NAN),
+ * every variance > 0 (else TRK_E_NOT_SPD). */
+TRK_INLINE trk_status trk_i_pda_check(int nx, const trk_real *x, const trk_real *p)
+{
+    int finite = 1, positive = 1;
+    for (int a = 0; a < nx; a++) finite &= isfinite(x[a]) != 0;
+    for (int a = 0; a < nx * nx; a++) finite &= isfinite(p[a]) != 0;
+    for (int a = 0; a < nx; a++) positive &= p[a * nx + a] > 0;
+    return !finite ? TRK_E_NAN : positive ? TRK_OK : TRK_E_NOT_SPD;
+}
+
+/* One track's PDA over its gated set *s (CONVENTIONS "PDA"): lambda (given,
+ * or m_G / V_G), beta (into s->w), and the posterior written over the
+ * prediction pr->x, pr->p, with *o. With m_G = 0 the prediction is the
+ * posterior (left as the caller made it). TRK_E_NAN / TRK_E_NOT_SPD for a
+ * posterior that is not finite or has a variance <= 0: pr->x, pr->p are
+ * then untouched. */
+TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                           struct trk_i_pda_set *s, struct trk_i_pda_out *o)
+{
+    const int nx = pr->nx;
+    o->gate_volume = trk_i_gate_volume(pr->nz, pda->gamma, pr->inn->sqrt_det_s, pr->inn->log_det_s);
+    o->lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->params.clutter_density
+                                                             : (trk_real)s->m_gated / o->gate_volume;
+    o->beta0 = 1;
+    o->log_sum_e = -(trk_real)INFINITY;
+    if (s->m_gated == 0) { /* nothing to associate (also nonparametric m_G = 0): x, P = prediction */
+        for (size_t i = 0; i < s->n; i++) s->w[i] = 0;
+        return TRK_OK;
+    }
+    trk_real x[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
+    o->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, o->lambda), s->n, s->w, &o->log_sum_e);
+    trk_i_pda_combine(pr, s, o->beta0, x, acc);
+    const trk_status st = trk_i_pda_check(nx, x, acc);
+    if (st != TRK_OK) return st;
+    for (int a = 0; a < nx; a++) pr->x[a] = x[a];
+    for (int a = 0; a < nx * nx; a++) pr->p[a] = acc[a];
+    return TRK_OK;
+}
+
+/* The same, out of line with run-time dimensions (pda.c). */
+trk_status trk_i_pda_update_set_rt(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                   struct trk_i_pda_set *s, struct trk_i_pda_out *o);
+
+/* What callers call: inlined where speed counts (the caller's constant
+ * dimensions unroll it), the one out-of-line copy in size-optimised builds
+ * (TRK_SIZE_OPT), shared by pda.c and the tracker. */
+TRK_INLINE trk_status trk_i_pda_run(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                    struct trk_i_pda_set *s, struct trk_i_pda_out *o)
+{
+#if TRK_SIZE_OPT
+    return trk_i_pda_update_set_rt(pda, pr, s, o);
+#else
+    return trk_i_pda_update_set(pda, pr, s, o);
+#endif
 }
 
 #endif

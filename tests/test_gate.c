@@ -75,6 +75,15 @@ static void test_volume_and_d2(void **state)
     TRK_ASSERT_OK(trk_kalman_innovation(4, 2, trk_cv2_h, r, x, p, &inn)); /* S = diag(4, 9) */
     TRK_ASSERT_NEAR(trk_gate_d2(&inn, nu), 2.0, 0, TRK_TOL(1e-15, 1e-6));
     TRK_ASSERT_NEAR(inn.log_det_s, log(36.0), 0, TRK_TOL(1e-15, 1e-6));
+    /* the volume from the innovation: the same formula, and at gamma = d2 the
+     * ellipse through that detection (Kennedy's V_g) */
+    TRK_ASSERT_NEAR(trk_gate_volume_inn(&inn, 9), 3.141592653589793 * 9 * 6, 0, TRK_TOL(1e-14, 1e-6));
+    TRK_ASSERT_NEAR(trk_gate_volume_inn(&inn, trk_gate_d2(&inn, nu)), 3.141592653589793 * 2 * 6, 0,
+                    TRK_TOL(1e-14, 1e-6));
+    TRK_ASSERT_NEAR(trk_gate_volume_inn(&inn, 9), trk_gate_volume(2, 9, inn.log_det_s), 0, TRK_TOL(1e-14, 1e-6));
+    struct trk_innovation big = inn; /* sqrt(det S) overflowed (float): from ln det S */
+    big.sqrt_det_s = (trk_real)INFINITY;
+    TRK_ASSERT_NEAR(trk_gate_volume_inn(&big, 9), 3.141592653589793 * 9 * 6, 0, TRK_TOL(1e-14, 1e-6));
     /* less-or-equal rule, NaN outside */
     assert_true(trk_gate_inside(TRK_REAL_C(2.0), TRK_REAL_C(2.0)));
     assert_false(trk_gate_inside(TRK_REAL_C(2.001), TRK_REAL_C(2.0)));

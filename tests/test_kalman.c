@@ -4,22 +4,41 @@
 #include "trk/kalman.h"
 #include "trk/linalg.h"
 
+#define X TRK_CV2_X
+#define VX TRK_CV2_VX
+#define Y TRK_CV2_Y
+#define VY TRK_CV2_VY
+#define P(i, j) TRK_CV2_P(i, j)
+
 static void test_cv_model(void **state)
 {
     (void)state;
+    /* the named indices: state [x, vx, y, vy], row-major 4x4 and 2x2 */
+    assert_int_equal(X, 0);
+    assert_int_equal(VX, 1);
+    assert_int_equal(Y, 2);
+    assert_int_equal(VY, 3);
+    assert_int_equal(P(X, X), 0);
+    assert_int_equal(P(VX, VX), 5);
+    assert_int_equal(P(Y, Y), 10);
+    assert_int_equal(P(VY, VY), 15);
+    assert_int_equal(P(X, Y), 2);
+    assert_int_equal(P(Y, X), 8);
+    assert_int_equal(TRK_CV2_S(TRK_CV2_ZY, TRK_CV2_ZY), 3);
+    assert_int_equal(TRK_CV2_S(TRK_CV2_ZX, TRK_CV2_ZY), 1);
     trk_real f[16], q[16];
     trk_cv2_transition(2, f);
     trk_cv2_process_noise(2, TRK_REAL_C(0.5), q);
-    TRK_ASSERT_NEAR(f[1], 2, 0, 0);
-    TRK_ASSERT_NEAR(f[11], 2, 0, 0);
-    TRK_ASSERT_NEAR(f[0] + f[5] + f[10] + f[15], 4, 0, 0);
+    TRK_ASSERT_NEAR(f[P(X, VX)], 2, 0, 0);
+    TRK_ASSERT_NEAR(f[P(Y, VY)], 2, 0, 0);
+    TRK_ASSERT_NEAR(f[P(X, X)] + f[P(VX, VX)] + f[P(Y, Y)] + f[P(VY, VY)], 4, 0, 0);
     /* q T^3/3 = 0.5*8/3, q T^2/2 = 1, q T = 1 */
-    TRK_ASSERT_NEAR(q[0], 4.0 / 3, 0, TRK_TOL(1e-15, 1e-7));
-    TRK_ASSERT_NEAR(q[1], 1, 0, 0);
-    TRK_ASSERT_NEAR(q[4], 1, 0, 0);
-    TRK_ASSERT_NEAR(q[5], 1, 0, 0);
-    TRK_ASSERT_NEAR(q[10], 4.0 / 3, 0, TRK_TOL(1e-15, 1e-7));
-    TRK_ASSERT_NEAR(q[2], 0, 0, 0);
+    TRK_ASSERT_NEAR(q[P(X, X)], 4.0 / 3, 0, TRK_TOL(1e-15, 1e-7));
+    TRK_ASSERT_NEAR(q[P(X, VX)], 1, 0, 0);
+    TRK_ASSERT_NEAR(q[P(VX, X)], 1, 0, 0);
+    TRK_ASSERT_NEAR(q[P(VX, VX)], 1, 0, 0);
+    TRK_ASSERT_NEAR(q[P(Y, Y)], 4.0 / 3, 0, TRK_TOL(1e-15, 1e-7));
+    TRK_ASSERT_NEAR(q[P(X, Y)], 0, 0, 0);
 }
 
 /* trk_cv2_predict equals the general predict with the CV matrices */

@@ -1,7 +1,9 @@
 /* test_pda.c - PDA update invariants: sum of beta = 1, symmetry and SPD of
  * the posterior, permutation invariance, limits (no detection, certain
- * detection = Kalman), nonparametric and include-all modes, bad input. */
+ * detection = Kalman), nonparametric and include-all modes, bad input, the
+ * variant with the innovation given, the parameter check's field names. */
 #include "trk_test.h"
+#include "trk/gate.h"
 #include "trk/kalman.h"
 #include "trk/linalg.h"
 #include "trk/pda.h"
@@ -159,6 +161,65 @@ static void test_bad_input(void **state)
     for (int i = 0; i < 16; i++) assert_true(p[i] == p0[i]);
 }
 
+/* trk_pda_update_inn with the innovation of trk_kalman_innovation gives
+ * exactly what trk_pda_update gives; a missing or mismatched innovation is
+ * refused. */
+static void test_given_innovation(void **state)
+{
+    (void)state;
+    struct trk_pda pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.8), TRK_REAL_C(0.01), 1);
+    const trk_real z[10] = {101, 50, 97, 53, 104, 44, 100.5, 50.5, 130, 90}, lr[5] = {TRK_REAL_C(0.5), -1, 2, 0, 1};
+    trk_real x[4], p[16], beta[5], d2[5], x2[4], p2[16], beta2[5], d22[5];
+    struct trk_pda_report rep, rep2;
+    struct trk_innovation inn;
+    prior(x, p);
+    prior(x2, p2);
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, 5, z, lr, beta, d2, &rep));
+    TRK_ASSERT_OK(trk_kalman_innovation(4, 2, trk_cv2_h, R, x2, p2, &inn));
+    TRK_ASSERT_OK(trk_pda_update_inn(&pda, 4, trk_cv2_h, R, x2, p2, &inn, 5, z, lr, beta2, d22, &rep2));
+    for (int i = 0; i < 5; i++) assert_true(beta2[i] == beta[i] && d22[i] == d2[i]);
+    for (int i = 0; i < 4; i++) assert_true(x2[i] == x[i]);
+    for (int i = 0; i < 16; i++) assert_true(p2[i] == p[i]);
+    assert_true(rep2.beta0 == rep.beta0 && rep2.gate_volume == rep.gate_volume && rep2.n_gated == rep.n_gated);
+    TRK_ASSERT_NEAR(rep.gate_volume, trk_gate_volume_inn(&inn, pda.gamma), 0, 0);
+    TRK_ASSERT_STATUS(trk_pda_update_inn(&pda, 4, trk_cv2_h, R, x2, p2, NULL, 5, z, lr, beta2, NULL, NULL), TRK_E_ARG);
+    inn.nz = 1;
+    TRK_ASSERT_STATUS(trk_pda_update_inn(&pda, 4, trk_cv2_h, R, x2, p2, &inn, 5, z, lr, beta2, NULL, NULL), TRK_E_ARG);
+    for (int i = 0; i < 4; i++) assert_true(x2[i] == x[i]);
+}
+
+/* trk_pda_check_params names the field trk_pda_init refuses. */
+static void test_check_params(void **state)
+{
+    (void)state;
+    const struct trk_pda_params ok = {2, TRK_REAL_C(0.9), TRK_REAL_C(0.99), TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(1e-3), 1};
+    const char *field = "(not set)";
+    TRK_ASSERT_OK(trk_pda_check_params(&ok, &field));
+    assert_null(field);
+    struct trk_pda_params pp = ok;
+    struct trk_pda pda;
+#define REFUSE(member, value, name, status)                              \
+    do {                                                                 \
+        pp = ok;                                                         \
+        pp.member = value;                                               \
+        TRK_ASSERT_STATUS(trk_pda_check_params(&pp, &field), status);    \
+        assert_string_equal(field, name);                                \
+        TRK_ASSERT_STATUS(trk_pda_init(&pda, &pp), status);              \
+    } while (0)
+    REFUSE(nz, 0, "nz", TRK_E_ARG);
+    REFUSE(clutter, (enum trk_clutter_mode)5, "clutter", TRK_E_ARG);
+    REFUSE(gating, 2, "gating", TRK_E_ARG);
+    REFUSE(pd, 0, "pd", TRK_E_RANGE);
+    REFUSE(pd, NAN, "pd", TRK_E_NAN);
+    REFUSE(gate_prob, 1, "gate_prob", TRK_E_RANGE);
+    REFUSE(gate_prob, NAN, "gate_prob", TRK_E_NAN);
+    REFUSE(clutter_density, -1, "clutter_density", TRK_E_RANGE);
+    REFUSE(clutter_density, (trk_real)INFINITY, "clutter_density", TRK_E_NAN);
+#undef REFUSE
+    TRK_ASSERT_STATUS(trk_pda_check_params(NULL, &field), TRK_E_ARG);
+    assert_string_equal(field, "params");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -167,6 +228,8 @@ int main(void)
         cmocka_unit_test(test_amplitude_weights),
         cmocka_unit_test(test_nonparametric_and_include_all),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_given_innovation),
+        cmocka_unit_test(test_check_params),
     };
     return trk_run_tests("pda", tests, NULL, NULL);
 }

@@ -12,6 +12,13 @@ static struct trk_tracker tk; /* ~40 KB: static, as in firmware */
 
 #define SEC(k) ((int64_t)(k) * 1000000)
 
+/* the CV state [x, vx, y, vy] and its covariance by name (trk/kalman.h) */
+#define X TRK_CV2_X
+#define VX TRK_CV2_VX
+#define Y TRK_CV2_Y
+#define VY TRK_CV2_VY
+#define P(i, j) TRK_CV2_P(i, j)
+
 /* splitmix64: a small deterministic generator for the test scenario */
 static uint64_t rng_state;
 static double urand(void)
@@ -107,15 +114,15 @@ static void test_follow_target(void **state)
     const struct trk_track *best = NULL;
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
         const struct trk_track *a = trk_tracker_track(&tk, i);
-        if (a && a->status == TRK_TRACK_CONFIRMED && fabs(a->x[0] - tx) < 10 && fabs(a->x[2] - ty) < 10) best = a;
+        if (a && a->status == TRK_TRACK_CONFIRMED && fabs(a->x[X] - tx) < 10 && fabs(a->x[Y] - ty) < 10) best = a;
     }
     assert_non_null(best);
     id = best->id;
-    TRK_ASSERT_NEAR(best->x[1], 3, 0.5, 0);
-    TRK_ASSERT_NEAR(best->x[3], 1, 0.5, 0);
+    TRK_ASSERT_NEAR(best->x[VX], 3, 0.5, 0);
+    TRK_ASSERT_NEAR(best->x[VY], 1, 0.5, 0);
     /* position error within 4 sigma of its own covariance */
-    assert_true(fabs(best->x[0] - tx) < 4 * sqrt(best->p[0]));
-    assert_true(fabs(best->x[2] - ty) < 4 * sqrt(best->p[10]));
+    assert_true(fabs(best->x[X] - tx) < 4 * sqrt(best->p[P(X, X)]));
+    assert_true(fabs(best->x[Y] - ty) < 4 * sqrt(best->p[P(Y, Y)]));
     assert_true(best->n_hits >= 45);
     (void)id;
 }
@@ -211,9 +218,9 @@ static void test_bad_input(void **state)
     d[3].x_m = 300;
     d[3].y_m = 300;
     d[3].has_cov = 1;
-    d[3].cov_m2[0] = 1;
-    d[3].cov_m2[1] = 2; /* not SPD */
-    d[3].cov_m2[2] = 1;
+    d[3].cov_m2[TRK_COV2_XX] = 1;
+    d[3].cov_m2[TRK_COV2_XY] = 2; /* not SPD */
+    d[3].cov_m2[TRK_COV2_YY] = 1;
     scan.detections = d;
     scan.n_detections = 4;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
@@ -235,7 +242,7 @@ static void test_bad_params(void **state)
     p.n_sensors = 0;
     TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
     base_params(&p);
-    p.sensor[0].meas_cov_m2[1] = 5;
+    p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 5;
     TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_NOT_SPD);
     base_params(&p);
     p.sensor[0].pd = TRK_REAL_C(1.5);
@@ -255,6 +262,151 @@ static void test_bad_params(void **state)
     base_params(&p);
     p.init_speed_sigma_mps = 0;
     TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+}
+
+/* trk_tracker_check_params refuses p with status want and names field; so
+ * does trk_tracker_init (same status, table untouched). */
+static void expect_refused(const struct trk_tracker_params *p, const char *field, trk_status want)
+{
+    const char *got = "(not set)";
+    const uint32_t next_id = tk.next_id;
+    const trk_status st = trk_tracker_check_params(p, &got);
+    if (st != want) fail_msg("field %s: %s, expected %s", field, trk_status_str(st), trk_status_str(want));
+    if (!got || strcmp(got, field) != 0) fail_msg("refused field '%s', expected '%s'", got ? got : "NULL", field);
+    TRK_ASSERT_STATUS(trk_tracker_check_params(p, NULL), want); /* field may be NULL */
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, p), want);
+    assert_int_equal(tk.next_id, next_id);
+}
+
+/* Every parameter the tracker checks is refused by name. */
+static void test_check_params(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const char *field = "(not set)";
+    base_params(&p);
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+    assert_null(field);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    TRK_ASSERT_STATUS(trk_tracker_check_params(NULL, &field), TRK_E_ARG);
+    assert_string_equal(field, "params");
+    /* the scalars */
+#define REFUSE(member, value, name, status) \
+    do {                                    \
+        base_params(&p);                    \
+        p.member = value;                   \
+        expect_refused(&p, name, status);   \
+    } while (0)
+    REFUSE(n_sensors, 0, "n_sensors", TRK_E_RANGE);
+    REFUSE(n_sensors, TRK_MAX_SENSORS + 1, "n_sensors", TRK_E_RANGE);
+    REFUSE(clutter, (enum trk_clutter_mode)7, "clutter", TRK_E_ARG);
+    REFUSE(process_noise_q, -1, "process_noise_q", TRK_E_RANGE);
+    REFUSE(process_noise_q, NAN, "process_noise_q", TRK_E_NAN);
+    REFUSE(gate_prob, 1, "gate_prob", TRK_E_RANGE);
+    REFUSE(gate_prob, NAN, "gate_prob", TRK_E_NAN);
+    REFUSE(init_speed_sigma_mps, 0, "init_speed_sigma_mps", TRK_E_RANGE);
+    REFUSE(max_dt_s, TRK_REAL_C(2e9), "max_dt_s", TRK_E_RANGE);
+    REFUSE(max_dt_s, 0, "max_dt_s", TRK_E_RANGE);
+    REFUSE(merge_gate_d2, -1, "merge_gate_d2", TRK_E_RANGE);
+    REFUSE(init_exclusion_d2, (trk_real)INFINITY, "init_exclusion_d2", TRK_E_NAN);
+    REFUSE(track_visibility, 2, "track_visibility", TRK_E_ARG);
+    REFUSE(visibility.pv0, TRK_REAL_C(1.5), "visibility", TRK_E_RANGE);
+    /* the sensors: the first and the last index of this build */
+    const unsigned last = TRK_MAX_SENSORS - 1;
+    for (unsigned s = 0; s <= last; s += last > 0 ? last : 1) {
+        char name[64];
+#define REFUSE_SENSOR(member, value, what, status)                       \
+    do {                                                                 \
+        base_params(&p);                                                 \
+        p.n_sensors = s + 1;                                             \
+        for (unsigned k = 1; k <= s; k++) p.sensor[k] = p.sensor[0];      \
+        p.sensor[s].member = value;                                      \
+        snprintf(name, sizeof name, "sensor[%u].%s", s, what);           \
+        expect_refused(&p, name, status);                                \
+    } while (0)
+        REFUSE_SENSOR(pd, 0, "pd", TRK_E_RANGE);
+        REFUSE_SENSOR(pd, NAN, "pd", TRK_E_NAN);
+        REFUSE_SENSOR(meas_cov_m2[TRK_COV2_XY], 5, "meas_cov_m2", TRK_E_NOT_SPD);
+        REFUSE_SENSOR(meas_cov_m2[TRK_COV2_YY], NAN, "meas_cov_m2", TRK_E_NAN);
+        REFUSE_SENSOR(clutter_density_per_m2, -1, "clutter_density_per_m2", TRK_E_RANGE);
+        REFUSE_SENSOR(use_amplitude, 2, "use_amplitude", TRK_E_ARG);
+        REFUSE_SENSOR(use_amplitude, 1, "amplitude", TRK_E_RANGE); /* a zero model: its P_D is 0 */
+        base_params(&p);
+        p.sensor[0].amplitude.threshold = NAN; /* no model is used without use_amplitude */
+        TRK_ASSERT_OK(trk_tracker_check_params(&p, NULL));
+        base_params(&p);
+        p.n_sensors = s + 1;
+        for (unsigned k = 1; k <= s; k++) p.sensor[k] = p.sensor[0];
+        p.sensor[s].use_amplitude = 1;
+        p.sensor[s].amplitude.threshold = NAN; /* not an initialised model */
+        snprintf(name, sizeof name, "sensor[%u].amplitude", s);
+        expect_refused(&p, name, TRK_E_ARG);
+#undef REFUSE_SENSOR
+        if (last == 0) break;
+    }
+    /* the tests: method, their parameters, their HMM's sensors */
+    REFUSE(confirm.method, (enum trk_confirm_method)99, "confirm.method", TRK_E_ARG);
+    REFUSE(term.method, (enum trk_term_method)99, "term.method", TRK_E_ARG);
+    REFUSE(confirm.u.mn.m, 6, "confirm.u.mn", TRK_E_RANGE); /* M > N */
+    REFUSE(term.u.kn.k, 5, "term.u.kn", TRK_E_RANGE);       /* K >= N */
+    base_params(&p);
+    p.track_visibility = 0;
+    p.confirm.method = TRK_CONFIRM_VISIBILITY;
+    expect_refused(&p, "confirm.method", TRK_E_ARG);
+    base_params(&p);
+    p.track_visibility = 0;
+    p.term.method = TRK_TERM_VISIBILITY;
+    expect_refused(&p, "term.method", TRK_E_ARG);
+    const struct trk_hmm_sensor_params hs = {TRK_REAL_C(0.05), TRK_REAL_C(0.1), TRK_REAL_C(0.3),
+                                             TRK_REAL_C(0.95), TRK_HMM_PI0_STATIONARY};
+    base_params(&p);
+    p.confirm.method = TRK_CONFIRM_SPRT;
+    memset(&p.confirm.u.sprt, 0, sizeof p.confirm.u.sprt);
+    p.confirm.u.sprt.alpha = TRK_REAL_C(0.6);
+    p.confirm.u.sprt.beta = TRK_REAL_C(0.6); /* alpha + beta >= 1 */
+    p.confirm.u.sprt.model = TRK_SPRT_FIXED_PD;
+    p.confirm.u.sprt.pd = TRK_REAL_C(0.9);
+    expect_refused(&p, "confirm.u.sprt", TRK_E_RANGE);
+    base_params(&p);
+    p.term.method = TRK_TERM_PAGE;
+    trk_hmm_params_uniform(&p.term.u.page.hmm, 1, &hs);
+    p.term.u.page.h = -1;
+    expect_refused(&p, "term.u.page", TRK_E_RANGE);
+    if (TRK_MAX_SENSORS >= 2) {
+        base_params(&p);
+        p.n_sensors = 2;
+        p.sensor[1] = p.sensor[0];
+        p.confirm.method = TRK_CONFIRM_SPRT;
+        memset(&p.confirm.u.sprt, 0, sizeof p.confirm.u.sprt);
+        p.confirm.u.sprt.alpha = TRK_REAL_C(0.01);
+        p.confirm.u.sprt.beta = TRK_REAL_C(0.1);
+        p.confirm.u.sprt.model = TRK_SPRT_HMM;
+        trk_hmm_params_uniform(&p.confirm.u.sprt.hmm, 1, &hs); /* one sensor of two */
+        expect_refused(&p, "confirm.u.sprt.hmm", TRK_E_SENSOR);
+        base_params(&p);
+        p.n_sensors = 2;
+        p.sensor[1] = p.sensor[0];
+        p.term.method = TRK_TERM_SHIRYAEV;
+        trk_hmm_params_uniform(&p.term.u.shiryaev.hmm, 1, &hs);
+        p.term.u.shiryaev.beta0 = TRK_REAL_C(0.01);
+        p.term.u.shiryaev.rho = TRK_REAL_C(0.01);
+        p.term.u.shiryaev.h = TRK_REAL_C(4.6);
+        expect_refused(&p, "term.u.shiryaev.hmm", TRK_E_SENSOR);
+    }
+#if TRK_WITH_CLUTTER_TESTS
+    base_params(&p);
+    p.confirm.method = TRK_CONFIRM_CLUTTER_CHI2;
+    p.confirm.u.chi2.alpha = TRK_REAL_C(0.05);
+    p.confirm.u.chi2.kmax = 0;
+    expect_refused(&p, "confirm.u.chi2", TRK_E_RANGE);
+    base_params(&p);
+    p.confirm.method = TRK_CONFIRM_CLUTTER_AMP;
+    p.confirm.u.amp.a_min_db = 0;
+    p.confirm.u.amp.alpha = 0;
+    p.confirm.u.amp.kmax = 5;
+    expect_refused(&p, "confirm.u.amp", TRK_E_RANGE);
+#endif
+#undef REFUSE
 }
 
 /* A full table refuses new tracks and counts them; nothing is overwritten. */
@@ -283,7 +435,7 @@ static void test_full_table(void **state)
     for (size_t i = 0; i < want; i++) {
         const struct trk_track *a = trk_tracker_track(&tk, i);
         assert_int_equal(a->id, i + 1);
-        TRK_ASSERT_NEAR(a->x[0], 1000.0 * (double)i, 0, 0);
+        TRK_ASSERT_NEAR(a->x[X], 1000.0 * (double)i, 0, 0);
     }
     check_invariants(&tk);
 }
@@ -295,9 +447,9 @@ static void test_own_covariance(void **state)
     (void)state;
     struct trk_tracker_params p;
     base_params(&p);
-    p.sensor[0].meas_cov_m2[0] = 2;
-    p.sensor[0].meas_cov_m2[1] = TRK_REAL_C(0.3);
-    p.sensor[0].meas_cov_m2[2] = 3;
+    p.sensor[0].meas_cov_m2[TRK_COV2_XX] = 2;
+    p.sensor[0].meas_cov_m2[TRK_COV2_XY] = TRK_REAL_C(0.3);
+    p.sensor[0].meas_cov_m2[TRK_COV2_YY] = 3;
     static struct trk_tracker a, b;
     TRK_ASSERT_OK(trk_tracker_init(&a, &p));
     TRK_ASSERT_OK(trk_tracker_init(&b, &p));
@@ -315,9 +467,9 @@ static void test_own_covariance(void **state)
         TRK_ASSERT_OK(trk_tracker_process_scan(&a, &sa, NULL));
         for (int i = 0; i < 3; i++) {
             d[i].has_cov = 1;
-            d[i].cov_m2[0] = 2;
-            d[i].cov_m2[1] = TRK_REAL_C(0.3);
-            d[i].cov_m2[2] = 3;
+            d[i].cov_m2[TRK_COV2_XX] = 2;
+            d[i].cov_m2[TRK_COV2_XY] = TRK_REAL_C(0.3);
+            d[i].cov_m2[TRK_COV2_YY] = 3;
         }
         /* mixed: one shared, two own */
         d[0].has_cov = 0;
@@ -342,14 +494,14 @@ static void test_polar(void **state)
     TRK_ASSERT_OK(trk_detection_from_polar(1000, TRK_REAL_C(1.5707963267948966), 2, TRK_REAL_C(0.01), 10, 20, &d));
     TRK_ASSERT_NEAR(d.x_m, 1010, 0, TRK_TOL(1e-12, 1e-6));
     TRK_ASSERT_NEAR(d.y_m, 20, TRK_TOL(1e-9, 1e-3), 0);
-    TRK_ASSERT_NEAR(d.cov_m2[0], 4, TRK_TOL(1e-9, 1e-3), 0);
-    TRK_ASSERT_NEAR(d.cov_m2[2], 100, 0, TRK_TOL(1e-12, 1e-5));
-    TRK_ASSERT_NEAR(d.cov_m2[1], 0, TRK_TOL(1e-9, 1e-3), 0);
+    TRK_ASSERT_NEAR(d.cov_m2[TRK_COV2_XX], 4, TRK_TOL(1e-9, 1e-3), 0);
+    TRK_ASSERT_NEAR(d.cov_m2[TRK_COV2_YY], 100, 0, TRK_TOL(1e-12, 1e-5));
+    TRK_ASSERT_NEAR(d.cov_m2[TRK_COV2_XY], 0, TRK_TOL(1e-9, 1e-3), 0);
     assert_int_equal(d.has_cov, 1);
     /* 45 deg: symmetric with correlation (vr - vt)/2 */
     TRK_ASSERT_OK(trk_detection_from_polar(100, TRK_REAL_C(0.7853981633974483), 1, TRK_REAL_C(0.02), 0, 0, &d));
-    TRK_ASSERT_NEAR(d.cov_m2[0], (1 + 4) / 2.0, 0, TRK_TOL(1e-12, 1e-5));
-    TRK_ASSERT_NEAR(d.cov_m2[1], (1 - 4) / 2.0, 0, TRK_TOL(1e-12, 1e-5));
+    TRK_ASSERT_NEAR(d.cov_m2[TRK_COV2_XX], (1 + 4) / 2.0, 0, TRK_TOL(1e-12, 1e-5));
+    TRK_ASSERT_NEAR(d.cov_m2[TRK_COV2_XY], (1 - 4) / 2.0, 0, TRK_TOL(1e-12, 1e-5));
     TRK_ASSERT_STATUS(trk_detection_from_polar(-1, 0, 1, 1, 0, 0, &d), TRK_E_RANGE);
     TRK_ASSERT_STATUS(trk_detection_from_polar(1, NAN, 1, 1, 0, 0, &d), TRK_E_NAN);
     TRK_ASSERT_STATUS(trk_detection_from_polar(1, 0, 0, 1, 0, 0, &d), TRK_E_RANGE);
@@ -486,8 +638,8 @@ static void test_two_sensors(void **state)
     p.n_sensors = 2;
     p.sensor[1] = p.sensor[0];
     p.sensor[1].pd = TRK_REAL_C(0.6);
-    p.sensor[1].meas_cov_m2[0] = 9;
-    p.sensor[1].meas_cov_m2[2] = TRK_REAL_C(0.25);
+    p.sensor[1].meas_cov_m2[TRK_COV2_XX] = 9;
+    p.sensor[1].meas_cov_m2[TRK_COV2_YY] = TRK_REAL_C(0.25);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_detection d;
     memset(&d, 0, sizeof d);
@@ -501,8 +653,8 @@ static void test_two_sensors(void **state)
     assert_int_equal(count_status(&tk, TRK_TRACK_CONFIRMED), 1);
     assert_int_equal(trk_tracker_live_count(&tk), 1);
     const struct trk_track *t0 = trk_tracker_track(&tk, 0);
-    TRK_ASSERT_NEAR(t0->x[1], 2.0, 0.05, 0);  /* 1 m per 0.5 s */
-    TRK_ASSERT_NEAR(t0->x[3], -1.0, 0.05, 0);
+    TRK_ASSERT_NEAR(t0->x[VX], 2.0, 0.05, 0);  /* 1 m per 0.5 s */
+    TRK_ASSERT_NEAR(t0->x[VY], -1.0, 0.05, 0);
 }
 
 
@@ -727,6 +879,7 @@ int main(void)
         cmocka_unit_test(test_termination_and_slot_reuse),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_bad_params),
+        cmocka_unit_test(test_check_params),
         cmocka_unit_test(test_full_table),
         cmocka_unit_test(test_own_covariance),
         cmocka_unit_test(test_polar),

@@ -12,6 +12,21 @@
 #define TRK_CV2_NX 4
 #define TRK_CV2_NZ 2
 
+/* Named components of the CV state [x, vx, y, vy] (m, m/s) ... */
+#define TRK_CV2_X 0
+#define TRK_CV2_VX 1
+#define TRK_CV2_Y 2
+#define TRK_CV2_VY 3
+/* ... and of its measurement [x, y] (m). */
+#define TRK_CV2_ZX 0
+#define TRK_CV2_ZY 1
+
+/* Row-major index of element (i, j) of a CV state covariance P (4 x 4) and
+ * of a measurement-space matrix S or R (2 x 2), e.g. the position variance
+ * p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)] + p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)]. */
+#define TRK_CV2_P(i, j) ((i) * TRK_CV2_NX + (j))
+#define TRK_CV2_S(i, j) ((i) * TRK_CV2_NZ + (j))
+
 /* F = blkdiag([[1, T], [0, 1]] x 2). */
 void trk_cv2_transition(trk_real dt_s, trk_real f[TRK_CV2_NX * TRK_CV2_NX]);
 

@@ -46,8 +46,13 @@ struct trk_pda {
     trk_real log_pd_norm;  /* ln P_D - (nz/2) ln 2 pi */
     trk_real log_miss;     /* ln(1 - P_D P_G) (-inf when P_D P_G = 1) */
     trk_real log_e0_param; /* ln lambda + log_miss for parametric clutter */
-    trk_real gate_const;   /* c_nz gamma^(nz/2): V_G = gate_const sqrt(det S) */
 };
+
+/* Check params as trk_pda_init does, without building anything. On a
+ * refusal *field (if field is not NULL) names the refused member: "nz",
+ * "clutter", "gating", "pd", "gate_prob" or "clutter_density" ("params" for
+ * a NULL params); NULL on success. Statuses as trk_pda_init. */
+TRK_NODISCARD trk_status trk_pda_check_params(const struct trk_pda_params *params, const char **field);
 
 /* TRK_E_ARG bad pointer/nz/enum, TRK_E_NAN non-finite, TRK_E_RANGE a
  * probability or density outside its range. *pda untouched on error. */
@@ -69,11 +74,26 @@ struct trk_pda_report {
  *   d2         m outputs (squared Mahalanobis distances), or NULL
  *   rep        beta_0 and counts, or NULL
  * TRK_E_ARG bad pointer/dimension, TRK_E_CAPACITY m > TRK_MAX_DETECTIONS,
- * TRK_E_NAN non-finite z or log_lr, TRK_E_NOT_SPD S not positive definite.
- * On error x and P are untouched. */
+ * TRK_E_NAN non-finite z or log_lr or a non-finite result, TRK_E_NOT_SPD S
+ * not positive definite or a posterior variance not > 0. On error x and P
+ * are untouched.
+ *
+ * This is the one per-track PDA of the library: the tracker runs the same
+ * code for each track (with detections that carry their own covariance in
+ * the same gated set), and the simulators call it. */
 TRK_NODISCARD trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h,
                                         const trk_real *r, trk_real *x, trk_real *p, size_t m,
                                         const trk_real *z, const trk_real *log_lr, trk_real *beta,
                                         trk_real *d2, struct trk_pda_report *rep);
+
+/* The same with the innovation of the prediction already computed (by
+ * trk_kalman_innovation from this x, P, h and r, e.g. for gating or to draw
+ * clutter in the gate first): *inn is used as given, not recomputed.
+ * TRK_E_ARG also for inn NULL or inn->nz other than the PDA's nz. */
+TRK_NODISCARD trk_status trk_pda_update_inn(const struct trk_pda *pda, int nx, const trk_real *h,
+                                            const trk_real *r, trk_real *x, trk_real *p,
+                                            const struct trk_innovation *inn, size_t m,
+                                            const trk_real *z, const trk_real *log_lr, trk_real *beta,
+                                            trk_real *d2, struct trk_pda_report *rep);
 
 #endif

@@ -53,11 +53,17 @@
  * association when the sensor has an amplitude model. */
 struct trk_detection {
     trk_real x_m, y_m;       /* position */
-    trk_real cov_m2[3];      /* own covariance [xx, xy, yy], used when has_cov */
+    trk_real cov_m2[3];      /* own covariance [xx, xy, yy] (TRK_COV2_*), used when has_cov */
     trk_real amplitude;      /* linear envelope amplitude, used when has_amplitude */
     uint8_t has_cov;         /* 0: use the sensor's covariance */
     uint8_t has_amplitude;
 };
+
+/* The elements of a packed 2x2 covariance [xx, xy, yy] (cov_m2,
+ * meas_cov_m2). */
+#define TRK_COV2_XX 0
+#define TRK_COV2_XY 1
+#define TRK_COV2_YY 2
 
 /* One scan of one sensor. The detections are read, never written. */
 /* Largest |time_us| of a scan: 2^62 us (146,000 years), so that any two
@@ -294,23 +300,47 @@ struct trk_tracker {
     struct trk_track track[TRK_MAX_TRACKS];
     /* per-scan workspace (contents meaningless between calls) */
     struct {
-        trk_real x[TRK_MAX_DETECTIONS], y[TRK_MAX_DETECTIONS]; /* valid detections */
+        size_t n_valid;                                        /* valid detections, */
+        size_t n_shared;                                       /* [0, n_shared) with the sensor's
+                                                                  covariance, then own ones */
+        trk_real x[TRK_MAX_DETECTIONS], y[TRK_MAX_DETECTIONS]; /* their positions */
         trk_real log_lr[TRK_MAX_DETECTIONS];                   /* amplitude ln l^a */
         uint16_t src[TRK_MAX_DETECTIONS];                      /* index in the scan */
         uint8_t used[TRK_MAX_DETECTIONS];                      /* gated by some track */
         uint16_t cand[TRK_MAX_DETECTIONS];                     /* one track's gated set */
         trk_real w[TRK_MAX_DETECTIONS];                        /* its weights */
-        trk_real z[2 * TRK_MAX_DETECTIONS];                    /* its detections */
-        trk_real s_chol_inv[4 * TRK_MAX_DETECTIONS];           /* own-covariance L^-1 */
-        trk_real amp_db[TRK_MAX_DETECTIONS];                   /* amplitudes (dB) of the
-                                                                  detections that have one */
+        trk_real z[TRK_CV2_NZ * TRK_MAX_DETECTIONS];           /* its detections */
+        trk_real r_own[TRK_CV2_NZ * TRK_CV2_NZ * TRK_MAX_DETECTIONS]; /* their own R_j */
+        trk_real amp_db[2 * TRK_MAX_DETECTIONS];               /* amplitudes (dB) of the
+                                                                  detections that have one,
+                                                                  twice over: the others of
+                                                                  entry k are k+1 .. k+n-1 */
         int16_t amp_pos[TRK_MAX_DETECTIONS];                   /* index in amp_db, -1 none */
         size_t n_amp;
     } ws;
 };
 
-/* Validate params, build the confirmation and termination models once (the
- * clutter-density threshold table, HMMs, ...) and initialise an empty table.
+/* Check params as trk_tracker_init does, without a tracker. On a refusal
+ * *field (field may be NULL) names the refused member of struct
+ * trk_tracker_params, a constant string:
+ *   "n_sensors", "clutter", "process_noise_q", "gate_prob",
+ *   "init_speed_sigma_mps", "max_dt_s", "merge_gate_d2", "init_exclusion_d2",
+ *   "track_visibility", "visibility" (its model refused the parameters),
+ *   "sensor[i].pd", "sensor[i].meas_cov_m2", "sensor[i].clutter_density_per_m2",
+ *   "sensor[i].use_amplitude", "sensor[i].amplitude" (no usable model, or its
+ *   P_D), i the sensor index;
+ *   "confirm.method" (unknown, not built in, or a visibility method without
+ *   track_visibility), "confirm.u.mn", "confirm.u.sprt", "confirm.u.chi2",
+ *   "confirm.u.amp" (the method's parameters), "confirm.u.sprt.hmm" (fewer
+ *   sensors than the tracker); the same for "term.method", "term.u.kn",
+ *   "term.u.page", "term.u.shiryaev", "term.u.page.hmm", "term.u.shiryaev.hmm";
+ *   "params" for a NULL p.
+ * *field is NULL on success. Statuses as trk_tracker_init. */
+TRK_NODISCARD trk_status trk_tracker_check_params(const struct trk_tracker_params *p, const char **field);
+
+/* Validate params (trk_tracker_check_params), build the confirmation and
+ * termination models once (the clutter-density threshold table, HMMs, ...)
+ * and initialise an empty table.
  * TRK_E_ARG NULL/enum, TRK_E_NAN non-finite, TRK_E_RANGE out of range,
  * TRK_E_NOT_SPD a sensor covariance, TRK_E_SENSOR an HMM test with fewer
  * sensors than the tracker, TRK_E_UNSUPPORTED a clutter confirmation test in
@@ -343,7 +373,7 @@ size_t trk_tracker_sizeof(void);
 #define trk_tracker_abi_check()                                                        \
     ((trk_config_check() == TRK_OK && trk_tracker_sizeof() == sizeof(struct trk_tracker)) \
          ? TRK_OK                                                                      \
-         : TRK_E_ARG)
+         : TRK_E_ABI)
 
 /* ---------------------------------------------------------------- helpers */
 

@@ -202,11 +202,20 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v
             snprintf(err, n, "expected three numbers xx, xy, yy (m^2)");
             return -1;
         }
-        if (!(m[0] > 0 && m[2] > 0 && m[0] * m[2] - m[1] * m[1] > 0)) {
-            snprintf(err, n, "not positive definite (need xx > 0, yy > 0, xx yy > xy^2)");
+        /* the tracker's check (the authority), on its defaults with this covariance */
+        struct trk_tracker_params t;
+        const char *field;
+        trk_tracker_default_params(&t);
+        t.n_sensors = s + 1;
+        for (unsigned k = 1; k <= s; k++) t.sensor[k] = t.sensor[0];
+        for (int i = 0; i < 3; i++) t.sensor[s].meas_cov_m2[i] = (trk_real)m[i];
+        const trk_status st = trk_tracker_check_params(&t, &field);
+        if (st != TRK_OK) {
+            snprintf(err, n, "refused by the tracker (%s): %s%s", field, trk_status_str(st),
+                     st == TRK_E_NOT_SPD ? " (not positive definite: need xx > 0, yy > 0, xx yy > xy^2)" : "");
             return -1;
         }
-        for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = (trk_real)m[i];
+        for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = t.sensor[s].meas_cov_m2[i];
         return 0;
     }
     if (strcmp(key, "meas_sigma_m") == 0) {
@@ -449,75 +458,59 @@ static const char *term_name(enum trk_term_method m)
     return "?";
 }
 
-/* trk_tracker_init on a heap tracker (it is large). */
-static trk_status try_init(const struct trk_tracker_params *p)
+static const char *method_hint(trk_status st, const char *field, int visibility_method)
 {
-    struct trk_tracker *t = malloc(sizeof *t);
-    if (!t) return TRK_E_CAPACITY;
-    trk_status st = trk_tracker_init(t, p);
-    free(t);
-    return st;
+    if (st == TRK_E_UNSUPPORTED) return " (not built into this libtrk: TRK_WITH_CLUTTER_TESTS = 0)";
+    if (st == TRK_E_SENSOR) return " (the HMM needs a model for every sensor)";
+    if (visibility_method && strstr(field, ".method")) return " (needs visibility = 1)";
+    return "";
 }
 
-static const char *unsupported_hint(trk_status st)
+/* Name the setting behind the field that trk_tracker_check_params refused
+ * (a member of struct trk_tracker_params) in this file's keys. */
+static void explain(const struct tcfg *c, const char *field, trk_status st, char *err, size_t n)
 {
-    return st == TRK_E_UNSUPPORTED ? " (not built into this libtrk: TRK_WITH_CLUTTER_TESTS = 0)"
-           : st == TRK_E_SENSOR    ? " (the HMM needs a model for every sensor)"
-                                   : "";
+    const char *f = field ? field : "?";
+    unsigned s;
+    char member[48];
+    if (strcmp(f, "confirm.method") == 0 || strcmp(f, "term.method") == 0) {
+        const int conf = f[0] == 'c';
+        snprintf(err, n, "%s = %s: refused by the tracker (%s): %s%s", conf ? "confirm" : "term",
+                 conf ? confirm_name(c->confirm) : term_name(c->term), f, trk_status_str(st),
+                 method_hint(st, f, conf ? c->confirm == TRK_CONFIRM_VISIBILITY : c->term == TRK_TERM_VISIBILITY));
+    } else if (strncmp(f, "confirm.", 8) == 0) {
+        snprintf(err, n, "confirm = %s: its parameters (confirm.%s.*%s) are refused (%s): %s%s",
+                 confirm_name(c->confirm), confirm_name(c->confirm),
+                 c->confirm == TRK_CONFIRM_SPRT ? ", hmm.*" : "", f, trk_status_str(st),
+                 method_hint(st, f, c->confirm == TRK_CONFIRM_VISIBILITY));
+    } else if (strncmp(f, "term.", 5) == 0) {
+        snprintf(err, n, "term = %s: its parameters (term.%s.*%s) are refused (%s): %s%s", term_name(c->term),
+                 term_name(c->term), c->term == TRK_TERM_PAGE || c->term == TRK_TERM_SHIRYAEV ? ", hmm.*" : "",
+                 f, trk_status_str(st), method_hint(st, f, c->term == TRK_TERM_VISIBILITY));
+    } else if (sscanf(f, "sensor[%u].%47s", &s, member) == 2) {
+        snprintf(err, n, "sensor.%u.%s: refused by the tracker (%s): %s", s,
+                 strcmp(member, "use_amplitude") == 0 ? "amplitude" : member, f, trk_status_str(st));
+    } else {
+        const char *key = strcmp(f, "n_sensors") == 0          ? "sensors"
+                          : strcmp(f, "track_visibility") == 0 ? "visibility"
+                          : strcmp(f, "visibility") == 0       ? "visibility.*"
+                                                               : f;
+        snprintf(err, n, "%s: refused by the tracker (%s): %s", key, f, trk_status_str(st));
+    }
 }
 
 int tcfg_check(const struct tcfg *c, char *err, size_t n)
 {
     const struct trk_tracker_params *p = &c->params;
-    struct trk_tracker_params full, base;
+    struct trk_tracker_params full;
+    const char *field;
     trk_status st;
-    /* 1. the tracker (the authority) with the chosen methods */
+    /* 1. the tracker (the authority) with the chosen methods: it names the
+     *    field it refuses */
     tcfg_params(c, &full);
-    st = try_init(&full);
+    st = trk_tracker_check_params(&full, &field);
     if (st != TRK_OK) {
-        /* name the culprit: the base parameters (default tests), or the
-         * confirmation test, or the termination test */
-        if (p->n_sensors < 1 || p->n_sensors > TRK_MAX_SENSORS) {
-            snprintf(err, n, "sensors = %u: must be 1 .. %d", p->n_sensors, TRK_MAX_SENSORS);
-            return -1;
-        }
-        for (unsigned s = 0; s < p->n_sensors; s++) {
-            struct trk_pda pda;
-            struct trk_pda_params pp = {2, p->sensor[s].pd, p->gate_prob, p->clutter,
-                                        p->sensor[s].clutter_density_per_m2, 1};
-            trk_status sst = trk_pda_init(&pda, &pp);
-            if (sst != TRK_OK) {
-                snprintf(err, n, "sensor.%u (pd, clutter_density_per_m2) or gate_prob: %s", s,
-                         trk_status_str(sst));
-                return -1;
-            }
-        }
-        struct tcfg d = *c;
-        d.confirm = TRK_CONFIRM_MN;
-        d.mn.m = 1, d.mn.n = 1, d.mn.mode = TRK_MN_FIXED;
-        d.term = TRK_TERM_KN;
-        d.kn.k = 0, d.kn.n = 1;
-        tcfg_params(&d, &base);
-        trk_status bst = try_init(&base);
-        if (bst != TRK_OK) {
-            snprintf(err, n, "tracker parameters refused by trk_tracker_init: %s", trk_status_str(bst));
-            return -1;
-        }
-        d = *c;
-        d.term = TRK_TERM_KN;
-        d.kn.k = 0, d.kn.n = 1;
-        tcfg_params(&d, &base);
-        bst = try_init(&base);
-        if (bst != TRK_OK) {
-            snprintf(err, n, "confirm = %s: its parameters (confirm.%s.*%s) are refused: %s%s",
-                     confirm_name(c->confirm), confirm_name(c->confirm),
-                     c->confirm == TRK_CONFIRM_SPRT ? ", hmm.*" : "", trk_status_str(bst),
-                     unsupported_hint(bst));
-            return -1;
-        }
-        snprintf(err, n, "term = %s: its parameters (term.%s.*%s) are refused: %s%s",
-                 term_name(c->term), term_name(c->term), c->term == TRK_TERM_KN ? "" : ", hmm.*",
-                 trk_status_str(st), unsupported_hint(st));
+        explain(c, field, st, err, n);
         return -1;
     }
     /* 2. table files: read and checked by the library's table parser, kind
@@ -554,12 +547,12 @@ int tcfg_check(const struct tcfg *c, char *err, size_t n)
     if (tcfg_load(c, &rt, err, n) != 0) return -1;
     struct trk_tracker_params pa;
     tcfg_params_rt(c, &rt, &pa);
-    struct trk_tracker *tk = malloc(sizeof *tk);
-    st = tk ? trk_tracker_init(tk, &pa) : TRK_E_CAPACITY;
-    free(tk);
+    st = trk_tracker_check_params(&pa, &field);
     tcfg_unload(&rt);
     if (st != TRK_OK) {
-        snprintf(err, n, "the tracker refuses the sensors' amplitude models: %s", trk_status_str(st));
+        snprintf(err, n, "the tracker refuses the sensors' amplitude models: ");
+        const size_t k = strlen(err);
+        explain(c, field, st, err + k, n - k);
         return -1;
     }
     return 0;

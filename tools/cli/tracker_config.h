@@ -23,7 +23,8 @@
  * forth loses nothing); tcfg_params() assembles the tracker's parameters
  * for the chosen methods (the one place to extend when the tracker gains
  * one). tcfg_check() refuses, with a message naming the setting, anything
- * trk_tracker_init refuses and a bad table. Amplitude tables are read by
+ * the tracker refuses (trk_tracker_check_params, which names the field) and
+ * a bad table. Amplitude tables are read by
  * tcfg_load() into a struct tcfg_runtime that must outlive the tracker
  * (its amplitude models point into the table bytes); tcfg_params_rt() then
  * gives the tracker parameters with the sensors' amplitude models. */
@@ -83,12 +84,13 @@ void tcfg_defaults(struct tcfg *c);
 int tcfg_set(void *ctx, const char *key, const char *value, char *err, size_t errlen);
 
 /* Whole-configuration check, in this order: the tracker accepts the
- * parameters (trk_tracker_init); the chosen methods' own parameters are
- * valid (their _init); every table file parses as a table of the right kind
- * for this build (trk_table_parse; amplitude tables also
+ * parameters with the chosen methods (trk_tracker_check_params: the message
+ * gives the key of the field it names); every table file parses as a table
+ * of the right kind for this build (trk_table_parse; amplitude tables also
  * trk_amplitude_init_table), a Rayleigh model's snr_db/pfa are valid
- * (trk_amplitude_init_rayleigh), K has a table; nothing is configured that
- * this libtrk's tracker cannot run. 0, or -1 with a message. */
+ * (trk_amplitude_init_rayleigh), K has a table, the tracker accepts the
+ * sensors' amplitude models; nothing is configured that this libtrk's
+ * tracker cannot run. 0, or -1 with a message. */
 int tcfg_check(const struct tcfg *c, char *err, size_t errlen);
 
 /* The tracker parameters (what trk_tracker_init gets): params with the

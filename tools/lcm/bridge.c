@@ -83,9 +83,11 @@ struct bridge *bridge_new(const struct tcfg *cfg, const struct bridge_opts *o, c
     }
     struct trk_tracker_params p;
     tcfg_params_rt(cfg, &b->rt, &p);
-    trk_status st = trk_tracker_init(&b->tk, &p);
+    const char *field = NULL;
+    trk_status st = trk_tracker_check_params(&p, &field); /* names the field it refuses */
+    if (st == TRK_OK) st = trk_tracker_init(&b->tk, &p);
     if (st != TRK_OK) {
-        snprintf(err, n, "trk_tracker_init: %s", trk_status_str(st));
+        snprintf(err, n, "the tracker refuses %s: %s", field ? field : "its parameters", trk_status_str(st));
         tcfg_unload(&b->rt);
         free(b);
         return NULL;

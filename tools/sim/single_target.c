@@ -12,6 +12,18 @@
 #include "trk/kalman.h"
 #include "trk/table.h"
 
+/* The CV state [x, vx, y, vy] and its matrices by name (trk/kalman.h); per
+ * axis a (0: x, 1: y) the position POS[a] and velocity VEL[a]. */
+#define X TRK_CV2_X
+#define VX TRK_CV2_VX
+#define Y TRK_CV2_Y
+#define VY TRK_CV2_VY
+#define ZX TRK_CV2_ZX
+#define ZY TRK_CV2_ZY
+#define P(i, j) TRK_CV2_P(i, j)
+#define S(i, j) TRK_CV2_S(i, j)
+static const int POS[2] = {X, Y}, VEL[2] = {VX, VY};
+
 /* ---------------------------------------------------------------- amplitude model */
 
 int st_amp_init(struct st_amp *a, int model, double nu, double snr_db, double pfa, int grid,
@@ -96,14 +108,16 @@ static int kalman_steady(const struct st_params *p, const trk_real r[4], double 
 {
     trk_real x[4] = {0, 0, 0, 0}, pm[16] = {0}, z[2] = {0, 0};
     const double r0 = p->r_m2, t = p->dt_s;
-    pm[0] = pm[10] = (trk_real)r0; /* two-point start */
-    pm[1] = pm[4] = pm[11] = pm[14] = (trk_real)(r0 / t);
-    pm[5] = pm[15] = (trk_real)(2 * r0 / (t * t));
+    for (int a = 0; a < 2; a++) { /* two-point start */
+        pm[P(POS[a], POS[a])] = (trk_real)r0;
+        pm[P(POS[a], VEL[a])] = pm[P(VEL[a], POS[a])] = (trk_real)(r0 / t);
+        pm[P(VEL[a], VEL[a])] = (trk_real)(2 * r0 / (t * t));
+    }
     for (int it = 0; it < 100000; it++) {
-        trk_real prev = pm[0];
+        trk_real prev = pm[P(X, X)];
         if (trk_cv2_predict((trk_real)t, (trk_real)p->q_m2_per_s3, x, pm) != TRK_OK) return -1;
         if (trk_kalman_update(4, 2, trk_cv2_h, r, z, x, pm) != TRK_OK) return -1;
-        if (it > 10 && fabs((double)(pm[0] - prev)) <= 1e-15 * (double)pm[0]) break;
+        if (it > 10 && fabs((double)(pm[P(X, X)] - prev)) <= 1e-15 * (double)pm[P(X, X)]) break;
     }
     for (int i = 0; i < 16; i++) out[i] = (double)pm[i];
     return 0;
@@ -158,24 +172,26 @@ int st_model_init(struct st_model *m, const struct st_params *p, char *err, size
         return -1;
     }
     m->gamma_used = (double)m->pda.gamma;
-    m->r[0] = m->r[3] = (trk_real)p->r_m2;
-    m->r[1] = m->r[2] = 0;
+    m->r[S(ZX, ZX)] = m->r[S(ZY, ZY)] = (trk_real)p->r_m2;
+    m->r[S(ZX, ZY)] = m->r[S(ZY, ZX)] = 0;
     const double r0 = p->r_m2, t = p->dt_s;
     if (p->init == ST_INIT_TWOPOINT) {
-        m->p0[0] = m->p0[10] = r0;
-        m->p0[1] = m->p0[4] = m->p0[11] = m->p0[14] = r0 / t;
-        m->p0[5] = m->p0[15] = 2 * r0 / (t * t);
+        for (int a = 0; a < 2; a++) {
+            m->p0[P(POS[a], POS[a])] = r0;
+            m->p0[P(POS[a], VEL[a])] = m->p0[P(VEL[a], POS[a])] = r0 / t;
+            m->p0[P(VEL[a], VEL[a])] = 2 * r0 / (t * t);
+        }
     } else if (kalman_steady(p, m->r, m->p0) != 0) {
         snprintf(err, errlen, "steady-state Kalman covariance failed");
         return -1;
     }
-    if (chol2(m->p0[0], m->p0[1], m->p0[5], m->p0_chol) != 0) {
+    if (chol2(m->p0[P(X, X)], m->p0[P(X, VX)], m->p0[P(VX, VX)], m->p0_chol) != 0) {
         snprintf(err, errlen, "initial covariance not positive definite");
         return -1;
     }
     trk_real q[16];
     trk_cv2_process_noise((trk_real)t, (trk_real)p->q_m2_per_s3, q);
-    if (p->q_m2_per_s3 > 0) chol2((double)q[0], (double)q[1], (double)q[5], m->q_chol);
+    if (p->q_m2_per_s3 > 0) chol2((double)q[P(X, X)], (double)q[P(X, VX)], (double)q[P(VX, VX)], m->q_chol);
     if (scen_field_init(&m->field, p->seed, p->lambda_per_m2, p->tile_m) != 0) {
         snprintf(err, errlen, "clutter field: bad density or tile");
         return -1;
@@ -275,13 +291,14 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
     const trk_real dt = (trk_real)p->dt_s, qq = (trk_real)p->q_m2_per_s3, gamma = m->pda.gamma;
     const double sg = sqrt(p->r_m2);
     struct rng r;
-    double xt[4] = {0, p->speed_mps, 0, 0};
+    double xt[4] = {0};
     trk_real x[4], pm[16];
+    xt[VX] = p->speed_mps;
     run_stream(m, run, 0, &r);
     for (int ax = 0; ax < 2; ax++) {
         const double z1 = rng_normal(&r), z2 = rng_normal(&r);
-        x[2 * ax] = (trk_real)(xt[2 * ax] + m->p0_chol[0] * z1);
-        x[2 * ax + 1] = (trk_real)(xt[2 * ax + 1] + m->p0_chol[1] * z1 + m->p0_chol[2] * z2);
+        x[POS[ax]] = (trk_real)(xt[POS[ax]] + m->p0_chol[0] * z1);
+        x[VEL[ax]] = (trk_real)(xt[VEL[ax]] + m->p0_chol[1] * z1 + m->p0_chol[2] * z2);
     }
     for (int i = 0; i < 16; i++) pm[i] = (trk_real)m->p0[i];
     trk_real z[2 * TRK_MAX_DETECTIONS], llr[TRK_MAX_DETECTIONS], beta[TRK_MAX_DETECTIONS];
@@ -292,12 +309,12 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
         /* truth: x_k = F x_{k-1} + w */
         for (int ax = 0; ax < 2; ax++) {
             const double z1 = rng_normal(&r), z2 = rng_normal(&r);
-            xt[2 * ax] += p->dt_s * xt[2 * ax + 1] + m->q_chol[0] * z1;
-            xt[2 * ax + 1] += m->q_chol[1] * z1 + m->q_chol[2] * z2;
+            xt[POS[ax]] += p->dt_s * xt[VEL[ax]] + m->q_chol[0] * z1;
+            xt[VEL[ax]] += m->q_chol[1] * z1 + m->q_chol[2] * z2;
         }
         /* the target's detection: position and amplitude variate */
         const double u_det = rng_uniform(&r);
-        const double zx = xt[0] + sg * rng_normal(&r), zy = xt[2] + sg * rng_normal(&r);
+        const double zx = xt[X] + sg * rng_normal(&r), zy = xt[Y] + sg * rng_normal(&r);
         const double x_amp = rng_exp(&r);
         /* the scan's clutter: density and amplitude laws */
         double lambda_k = p->lambda_per_m2, pd_k = m->pd;
@@ -332,7 +349,7 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
             res->status = (int)st;
             break;
         }
-        const double cx = (double)inn.z_pred[0], cy = (double)inn.z_pred[1];
+        const double cx = (double)inn.z_pred[ZX], cy = (double)inn.z_pred[ZY];
         /* gated detections: the target's (if detected) and the clutter of the
          * gate's bounding box [c - w, c + w) with d2 <= gamma. The library
          * takes TRK_MAX_DETECTIONS: a gate holding more passes its nearest
@@ -340,8 +357,7 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
          * first pass looks inside d2 <= gq, an ellipse expected to hold twice
          * the capacity; when it holds fewer than the capacity, the whole gate
          * is taken (the same result as one pass over the gate, cheaper). */
-        const double sdet = exp(0.5 * (double)inn.log_det_s);
-        double gq = 2.0 * TRK_MAX_DETECTIONS / (lambda_k * 3.14159265358979323846 * sdet);
+        double gq = 2.0 * TRK_MAX_DETECTIONS / (lambda_k * (double)trk_gate_volume_inn(&inn, 1));
         if (!(gq < (double)gamma)) gq = (double)gamma;
         trk_real nu_t[2] = {(trk_real)(zx - cx), (trk_real)(zy - cy)};
         const double d2_t = det ? (double)trk_gate_d2(&inn, nu_t) : INFINITY;
@@ -350,7 +366,7 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
         int early = 0;
         for (int pass = 0; pass < 2 && st == TRK_OK; pass++) {
             const double g = pass ? (double)gamma : gq;
-            const double wx = sqrt(g * (double)inn.s[0]), wy = sqrt(g * (double)inn.s[3]);
+            const double wx = sqrt(g * (double)inn.s[S(ZX, ZX)]), wy = sqrt(g * (double)inn.s[S(ZY, ZY)]);
             nca = 0;
             if (det && (pass ? trk_gate_inside((trk_real)d2_t, gamma) : d2_t <= g) &&
                 cand_push(ws, &nca, d2_t, zx, zy, x_amp, 1) != 0)
@@ -405,8 +421,9 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
                 if (st == TRK_OK) st = trk_amplitude_log_lr(p->amp, a, &llr[m_g]);
             }
         }
-        if (st == TRK_OK)
-            st = trk_pda_update(&m->pda, 4, trk_cv2_h, m->r, x, pm, m_g, z, ai ? llr : NULL, beta, NULL, NULL);
+        if (st == TRK_OK) /* the library's PDA over the gated set, with the innovation above */
+            st = trk_pda_update_inn(&m->pda, 4, trk_cv2_h, m->r, x, pm, &inn, m_g, z, ai ? llr : NULL, beta,
+                                    NULL, NULL);
         if (st != TRK_OK) {
             res->failed = 1;
             res->status = (int)st;
@@ -415,7 +432,7 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
         res->gated += (long)m_g;
         for (size_t i = 0; i < m_g; i++) res->gated_clutter += !ws->cand[i].target;
         res->scans = k;
-        const double ex = (double)x[0] - xt[0], ey = (double)x[2] - xt[2];
+        const double ex = (double)x[X] - xt[X], ey = (double)x[Y] - xt[Y];
         const double e = sqrt(ex * ex + ey * ey);
         if (err_by_scan) err_by_scan[k - 1] = e;
         if (e > res->max_err_m) res->max_err_m = e;
@@ -519,13 +536,13 @@ int kn_model_init(struct kn_model *m, const struct kn_params *p, char *err, size
     const double t = p->dt_s;
     trk_cv2_transition((trk_real)t, m->f);
     memset(m->q, 0, sizeof m->q);
-    m->q[0] = (trk_real)pow(p->accel_x * t * t / 2, 2);
-    m->q[5] = (trk_real)pow(p->accel_x * t, 2);
-    m->q[10] = (trk_real)pow(p->accel_y * t * t / 2, 2);
-    m->q[15] = (trk_real)pow(p->accel_y * t, 2);
-    m->r[0] = (trk_real)(p->sigma_x_m * p->sigma_x_m);
-    m->r[3] = (trk_real)(p->sigma_y_m * p->sigma_y_m);
-    m->r[1] = m->r[2] = 0;
+    m->q[P(X, X)] = (trk_real)pow(p->accel_x * t * t / 2, 2);
+    m->q[P(VX, VX)] = (trk_real)pow(p->accel_x * t, 2);
+    m->q[P(Y, Y)] = (trk_real)pow(p->accel_y * t * t / 2, 2);
+    m->q[P(VY, VY)] = (trk_real)pow(p->accel_y * t, 2);
+    m->r[S(ZX, ZX)] = (trk_real)(p->sigma_x_m * p->sigma_x_m);
+    m->r[S(ZY, ZY)] = (trk_real)(p->sigma_y_m * p->sigma_y_m);
+    m->r[S(ZX, ZY)] = m->r[S(ZY, ZX)] = 0;
     return 0;
 }
 
@@ -555,13 +572,13 @@ int kn_run(const struct kn_model *m, long n_scans, uint32_t tag, uint32_t run, s
         if (k == 1) { /* initiation on a random peak */
             long j = (long)(rng_uniform(&r) * (double)np);
             if (j >= np) j = np - 1;
-            x[0] = px[j];
-            x[2] = py[j];
-            x[1] = x[3] = 0;
-            pm[0] = m->r[0];
-            pm[10] = m->r[3];
-            pm[5] = (trk_real)(p->init_vx_sigma * p->init_vx_sigma);
-            pm[15] = (trk_real)(p->init_vy_sigma * p->init_vy_sigma);
+            x[X] = px[j];
+            x[Y] = py[j];
+            x[VX] = x[VY] = 0;
+            pm[P(X, X)] = m->r[S(ZX, ZX)];
+            pm[P(Y, Y)] = m->r[S(ZY, ZY)];
+            pm[P(VX, VX)] = (trk_real)(p->init_vx_sigma * p->init_vx_sigma);
+            pm[P(VY, VY)] = (trk_real)(p->init_vy_sigma * p->init_vy_sigma);
             continue;
         }
         struct trk_innovation inn;
@@ -572,7 +589,7 @@ int kn_run(const struct kn_model *m, long n_scans, uint32_t tag, uint32_t run, s
             res->status = (int)st;
             return 0;
         }
-        const double cx = (double)inn.z_pred[0], cy = (double)inn.z_pred[1];
+        const double cx = (double)inn.z_pred[ZX], cy = (double)inn.z_pred[ZY];
         if (!p->torus && (cx < p->x_min_m || cx > p->x_max_m || cy < p->y_min_m || cy > p->y_max_m)) res->outside = 1;
         if (p->torus) /* each peak's copy nearest the prediction */
             for (long i = 0; i < np; i++) {
@@ -582,7 +599,7 @@ int kn_run(const struct kn_model *m, long n_scans, uint32_t tag, uint32_t run, s
         long best = 0;
         size_t m_g = 0;
         for (long i = 0; i < np; i++) {
-            trk_real nu[2] = {px[i] - inn.z_pred[0], py[i] - inn.z_pred[1]};
+            trk_real nu[2] = {px[i] - inn.z_pred[ZX], py[i] - inn.z_pred[ZY]};
             d2[i] = trk_gate_d2(&inn, nu);
             if (d2[i] < d2[best]) best = i;
             if (trk_gate_inside(d2[i], m->pda.gamma)) { /* n_peaks <= TRK_MAX_DETECTIONS */
@@ -592,14 +609,14 @@ int kn_run(const struct kn_model *m, long n_scans, uint32_t tag, uint32_t run, s
             }
         }
         /* the clutter tests: nearest peak (Kennedy eqs 5-9, 13-15) */
-        const trk_real rho_vg = (trk_real)(m->rho * 3.14159265358979323846 * (double)d2[best] *
-                                           exp(0.5 * (double)inn.log_det_s));
+        const trk_real rho_vg = (trk_real)(m->rho * (double)trk_gate_volume_inn(&inn, d2[best]));
         size_t no = 0;
         for (long i = 0; i < np; i++)
             if (i != best) others[no++] = adb[i];
-        st = trk_clutter_chi2_step(&m->chi2, &chi, rho_vg);
-        if (st == TRK_OK) st = trk_clutter_amp_step(&m->amp, &amp, adb[best], no, others);
-        if (st == TRK_OK) st = trk_pda_update(&m->pda, 4, trk_cv2_h, m->r, x, pm, m_g, z, NULL, beta, NULL, NULL);
+        enum trk_decision d_chi, d_amp;
+        st = trk_clutter_chi2_step(&m->chi2, &chi, rho_vg, &d_chi);
+        if (st == TRK_OK) st = trk_clutter_amp_step(&m->amp, &amp, adb[best], no, others, &d_amp);
+        if (st == TRK_OK) st = trk_pda_update_inn(&m->pda, 4, trk_cv2_h, m->r, x, pm, &inn, m_g, z, NULL, beta, NULL, NULL);
         if (st != TRK_OK) {
             res->failed = 1;
             res->status = (int)st;
@@ -608,8 +625,8 @@ int kn_run(const struct kn_model *m, long n_scans, uint32_t tag, uint32_t run, s
     }
     res->chi2_reject = chi.reject;
     res->amp_reject = amp.reject;
-    res->chi2_ever = chi.decision;
-    res->amp_ever = amp.decision;
+    res->chi2_ever = chi.decision == TRK_DECISION_CONFIRM;
+    res->amp_ever = amp.decision == TRK_DECISION_CONFIRM;
     res->chi2_p = (double)chi.p_value;
     res->amp_p = (double)amp.p_value;
     return 0;

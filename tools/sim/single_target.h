@@ -6,8 +6,10 @@
  *
  * The track runs on the library's one-track functions, the same code the
  * tracker (trk_tracker_process_scan) runs per track: trk_cv2_predict,
- * trk_kalman_innovation + trk_gate_d2 (gating), trk_pda_update (PDAF, or
- * PDAFAI with ln l^a from trk_amplitude_log_lr), amplitudes drawn by
+ * trk_kalman_innovation + trk_gate_d2 (gating), trk_pda_update_inn (the
+ * library's one PDA over the gated set, with that innovation: PDAF, or
+ * PDAFAI with ln l^a from trk_amplitude_log_lr), trk_gate_volume_inn (the
+ * gate volume: the clutter tests' rho V_g), amplitudes drawn by
  * trk_amplitude_inv_sf (Brekke eqs 41-47) on the amplitude model (a table
  * for K clutter), the clutter tests trk_clutter_chi2_step /
  * trk_clutter_amp_step. Nothing of the PDA is re-implemented here. The
@@ -28,7 +30,7 @@
  *   density lambda, taken in the bounding box of the track's gate ellipse
  *   (d2 <= gamma) around its prediction: exact, since clutter outside the
  *   gate gets weight 0 (CONVENTIONS "PDA"). Detections in the gate (d2 <=
- *   gamma by trk_gate_d2) go to trk_pda_update with parametric lambda, P_D
+ *   gamma by trk_gate_d2) go to trk_pda_update_inn with parametric lambda, P_D
  *   and P_G = 1 - exp(-gamma/2).
  *   K texture (the clutter's local power eta ~ Gamma(nu, 1/nu) x P):
  *     cell  drawn independently for every detection: i.i.d. amplitudes with
@@ -72,9 +74,9 @@
  * init_speed^2 per axis, position variance R); scans 2..n: Kennedy's CV
  * prediction (trk_kalman_predict with Q = diag((s'T^2/2)^2, (s'T)^2) per
  * axis), the nearest peak (smallest d2 under S) feeds the clutter tests
- * (rho V_g = rho pi d2 sqrt|S|, rho = n_peaks / area; its dB amplitude
- * against the scan's other peaks), and the PDA update uses the peaks in the
- * gate. The tests run their recursion every scan; the decision is read at
+ * (rho V_g = rho pi d2 sqrt|S| by trk_gate_volume_inn, rho = n_peaks /
+ * area; its dB amplitude against the scan's other peaks), and the PDA update
+ * (trk_pda_update_inn) uses the peaks in the gate. The tests run their recursion every scan; the decision is read at
  * the last scan only (Kennedy: "track confirmation was only applied on the
  * last scan of the run"). Random stream (seed, tag << 32 | run). With torus
  * the region wraps around, which removes Kennedy's edge effects (a track

@@ -39,7 +39,7 @@ static void pda_once(void *arg)
     memcpy(j->p, j->p0, sizeof j->p);
     trk_status st = trk_cv2_predict(1, TRK_REAL_C(0.05), j->x, j->p);
     st |= trk_pda_update(&j->pda, 4, trk_cv2_h, j->r, j->x, j->p, j->m, j->z, NULL, j->beta, NULL, NULL);
-    bench_sink((double)j->x[0] + (double)st);
+    bench_sink((double)j->x[TRK_CV2_X] + (double)st);
 }
 
 TRK_BENCH(pda_update)
@@ -49,14 +49,17 @@ TRK_BENCH(pda_update)
     if (trk_pda_init(&j.pda, &pp) != TRK_OK) return;
     trk_cv2_transition(1, j.f);
     trk_cv2_process_noise(1, TRK_REAL_C(0.05), j.q);
-    j.r[0] = j.r[3] = 4;
-    j.r[1] = j.r[2] = 0;
-    const trk_real x0[4] = {1000, 2, -500, 1};
+    j.r[TRK_CV2_S(TRK_CV2_ZX, TRK_CV2_ZX)] = j.r[TRK_CV2_S(TRK_CV2_ZY, TRK_CV2_ZY)] = 4;
+    j.r[TRK_CV2_S(TRK_CV2_ZX, TRK_CV2_ZY)] = j.r[TRK_CV2_S(TRK_CV2_ZY, TRK_CV2_ZX)] = 0;
+    const trk_real x0[4] = {1000, 2, -500, 1}; /* [x, vx, y, vy] */
     memcpy(j.x0, x0, sizeof x0);
     memset(j.p0, 0, sizeof j.p0);
-    j.p0[0] = j.p0[10] = 5;
-    j.p0[5] = j.p0[15] = 1;
-    j.p0[1] = j.p0[4] = j.p0[11] = j.p0[14] = TRK_REAL_C(0.5);
+    static const int pos[2] = {TRK_CV2_X, TRK_CV2_Y}, vel[2] = {TRK_CV2_VX, TRK_CV2_VY};
+    for (int a = 0; a < 2; a++) {
+        j.p0[TRK_CV2_P(pos[a], pos[a])] = 5;
+        j.p0[TRK_CV2_P(vel[a], vel[a])] = 1;
+        j.p0[TRK_CV2_P(pos[a], vel[a])] = j.p0[TRK_CV2_P(vel[a], pos[a])] = TRK_REAL_C(0.5);
+    }
     /* detections inside the gate (d2 < 4 < gamma = 9.2) around the prediction */
     const size_t ms[] = {0, 1, 10, 100};
     for (size_t k = 0; k < 4; k++) {

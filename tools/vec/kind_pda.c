@@ -1,6 +1,7 @@
 /* kind_pda.c - vector kinds pda_update, pda_track, pdafai_update
  * (../shared/vectors/pda.vec, pdafai.vec): the library's CV-2D predict followed
- * by trk_pda_update.
+ * by trk_pda_update (pda_track) or, with the innovation that the single-step
+ * kinds output, trk_pda_update_inn.
  *
  * Float tolerances (normwise, see vec.h): states of a few thousand metres carry
  * float rounding of ~4e3 * 6e-8 = 2.4e-4 m per operation; covariances are
@@ -66,8 +67,8 @@ static int setup(const struct vec_case *c, struct vec_out *o, struct pda_setup *
     if (st != TRK_OK) return vec_fail(o, "trk_pda_init: %s", trk_status_str(st));
     trk_cv2_transition((trk_real)t, s->f);
     trk_cv2_process_noise((trk_real)t, (trk_real)q, s->q);
-    s->r[0] = s->r[3] = (trk_real)r;
-    s->r[1] = s->r[2] = 0;
+    s->r[TRK_CV2_S(TRK_CV2_ZX, TRK_CV2_ZX)] = s->r[TRK_CV2_S(TRK_CV2_ZY, TRK_CV2_ZY)] = (trk_real)r;
+    s->r[TRK_CV2_S(TRK_CV2_ZX, TRK_CV2_ZY)] = s->r[TRK_CV2_S(TRK_CV2_ZY, TRK_CV2_ZX)] = 0;
     to_real(x, s->x, NX);
     to_real(p, s->p, NX * NX);
     s->dt = t;
@@ -89,7 +90,8 @@ static int step(struct vec_out *o, struct pda_setup *s, size_t m, const double *
     if (lrd) to_real(lrd, lr, m);
     trk_status st = trk_kalman_predict(NX, s->f, s->q, s->x, s->p);
     if (st != TRK_OK) return vec_fail(o, "predict: %s", trk_status_str(st));
-    if (full) {
+    struct trk_pda_report rep;
+    if (full) { /* the innovation is an output too: the update takes it as given */
         struct trk_innovation inn;
         st = trk_kalman_innovation(NX, NZ, trk_cv2_h, s->r, s->x, s->p, &inn);
         if (st != TRK_OK) return vec_fail(o, "innovation: %s", trk_status_str(st));
@@ -97,10 +99,11 @@ static int step(struct vec_out *o, struct pda_setup *s, size_t m, const double *
             vec_put_real(o, "z_pred", inn.z_pred, NZ) || vec_put_real(o, "S", inn.s, NZ * NZ) ||
             vec_put_real(o, "gamma", &s->pda.gamma, 1))
             return -1;
+        st = trk_pda_update_inn(&s->pda, NX, trk_cv2_h, s->r, s->x, s->p, &inn, m, z, lrd ? lr : NULL, beta,
+                                d2, &rep);
+    } else {
+        st = trk_pda_update(&s->pda, NX, trk_cv2_h, s->r, s->x, s->p, m, z, lrd ? lr : NULL, beta, d2, &rep);
     }
-    struct trk_pda_report rep;
-    st = trk_pda_update(&s->pda, NX, trk_cv2_h, s->r, s->x, s->p, m, z, lrd ? lr : NULL, beta, d2,
-                        &rep);
     if (st != TRK_OK) return vec_fail(o, "trk_pda_update: %s", trk_status_str(st));
     if (TRK_REAL_IS_FLOAT)
         for (size_t i = 0; i < m; i++)

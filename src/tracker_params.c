@@ -1,0 +1,210 @@
+/* tracker_params.c - the tracker's parameters (trk/tracker.h): defaults and
+ * the check that names the refused field (trk_tracker_init in tracker.c
+ * runs it). */
+#include <string.h>
+
+#include "tracker_impl.h"
+
+void trk_tracker_default_params(struct trk_tracker_params *p)
+{
+    /* filled in place: a local copy would put ~1 KB on a firmware stack */
+    memset(p, 0, sizeof *p);
+    p->n_sensors = 1;
+    p->sensor[0].pd = TRK_REAL_C(0.9);
+    p->sensor[0].meas_cov_m2[TRK_COV2_XX] = 1;
+    p->sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
+    p->sensor[0].meas_cov_m2[TRK_COV2_YY] = 1;
+    p->sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
+    p->process_noise_q = TRK_REAL_C(0.01);
+    p->gate_prob = TRK_REAL_C(0.99);
+    p->clutter = TRK_CLUTTER_PARAMETRIC;
+    p->init_speed_sigma_mps = 5;
+    p->max_dt_s = 3600;
+    p->confirm.method = TRK_CONFIRM_MN;
+    p->confirm.u.mn.m = 3;
+    p->confirm.u.mn.n = 5;
+    p->confirm.u.mn.mode = TRK_MN_FIXED;
+    p->term.method = TRK_TERM_KN;
+    p->term.u.kn.k = 0;
+    p->term.u.kn.n = 5;
+    p->max_tentative_scans = 0;
+    p->merge_gate_d2 = 4;
+    p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
+                                                              detections */
+    p->track_visibility = 1; /* Kennedy's Table 1 style IPDA parameters */
+    p->visibility.pv0 = TRK_REAL_C(0.5);
+    p->visibility.pcv0 = TRK_REAL_C(0.5);
+    p->visibility.delta_stay = TRK_REAL_C(0.99);
+    p->visibility.delta_become = TRK_REAL_C(0.01);
+    p->visibility.omega_c = TRK_REAL_C(0.75);
+    p->visibility.p_con = TRK_REAL_C(0.9);
+    p->visibility.p_term = TRK_REAL_C(0.1);
+}
+
+/* ------------------------------------------------------------------ field names */
+
+/* "sensor[i].<member>" for every sensor index of this build, as literals
+ * (no stdio to format them): one row per index, rows up to TRK_MAX_SENSORS
+ * (in blocks of up to twice the rows needed above 2). */
+enum { F_PD, F_COV, F_DENSITY, F_USE_AMP, F_AMP, N_SENSOR_FIELDS };
+#define ROW(i)                                                                                \
+    {"sensor[" #i "].pd", "sensor[" #i "].meas_cov_m2", "sensor[" #i "].clutter_density_per_m2", \
+     "sensor[" #i "].use_amplitude", "sensor[" #i "].amplitude"},
+#define ROWS10(d) ROW(d##0) ROW(d##1) ROW(d##2) ROW(d##3) ROW(d##4) ROW(d##5) ROW(d##6) ROW(d##7) ROW(d##8) ROW(d##9)
+static const char *const sensor_field[][N_SENSOR_FIELDS] = {
+    ROW(0)
+#if TRK_MAX_SENSORS > 1
+    ROW(1)
+#endif
+#if TRK_MAX_SENSORS > 2
+    ROW(2) ROW(3)
+#endif
+#if TRK_MAX_SENSORS > 4
+    ROW(4) ROW(5) ROW(6) ROW(7)
+#endif
+#if TRK_MAX_SENSORS > 8
+    ROW(8) ROW(9)
+#endif
+#if TRK_MAX_SENSORS > 10
+    ROWS10(1)
+#endif
+#if TRK_MAX_SENSORS > 20
+    ROWS10(2) ROWS10(3)
+#endif
+#if TRK_MAX_SENSORS > 40
+    ROWS10(4) ROWS10(5) ROWS10(6) ROWS10(7)
+#endif
+#if TRK_MAX_SENSORS > 80
+    ROWS10(8) ROWS10(9) ROWS10(10) ROWS10(11) ROWS10(12) ROWS10(13) ROWS10(14) ROWS10(15)
+#endif
+#if TRK_MAX_SENSORS > 160
+    ROWS10(16) ROWS10(17) ROWS10(18) ROWS10(19) ROWS10(20) ROWS10(21) ROWS10(22) ROWS10(23) ROWS10(24)
+    ROWS10(25)
+#endif
+};
+#undef ROWS10
+#undef ROW
+typedef char trk_i_sensor_field_rows_ok[sizeof sensor_field / sizeof sensor_field[0] >= TRK_MAX_SENSORS ? 1 : -1];
+
+static trk_status refuse(const char **field, const char *name, trk_status st)
+{
+    if (field) *field = name;
+    return st;
+}
+
+/* ------------------------------------------------------------------ check */
+
+/* A finite v in [lo, hi] (lo_open: (lo, hi]). */
+static trk_status check_real(trk_real v, trk_real lo, int lo_open, trk_real hi, const char *name,
+                             const char **field)
+{
+    if (!isfinite(v)) return refuse(field, name, TRK_E_NAN);
+    if (!(lo_open ? v > lo : v >= lo) || !(v <= hi)) return refuse(field, name, TRK_E_RANGE);
+    return TRK_OK;
+}
+
+/* The scalars (gate_prob with the sensors' PDA). */
+static trk_status check_scalars(const struct trk_tracker_params *p, const char **field)
+{
+    trk_status st;
+    if (p->n_sensors < 1 || p->n_sensors > TRK_MAX_SENSORS) return refuse(field, "n_sensors", TRK_E_RANGE);
+    if (p->clutter != TRK_CLUTTER_PARAMETRIC && p->clutter != TRK_CLUTTER_NONPARAMETRIC)
+        return refuse(field, "clutter", TRK_E_ARG);
+    if ((st = check_real(p->process_noise_q, 0, 0, TRK_REAL_MAX, "process_noise_q", field)) != TRK_OK ||
+        (st = check_real(p->init_speed_sigma_mps, 0, 1, TRK_REAL_MAX, "init_speed_sigma_mps", field)) != TRK_OK ||
+        (st = check_real(p->max_dt_s, 0, 1, TRK_REAL_C(1e9), "max_dt_s", field)) != TRK_OK ||
+        (st = check_real(p->merge_gate_d2, 0, 0, TRK_REAL_MAX, "merge_gate_d2", field)) != TRK_OK ||
+        (st = check_real(p->init_exclusion_d2, 0, 0, TRK_REAL_MAX, "init_exclusion_d2", field)) != TRK_OK)
+        return st;
+    if (p->track_visibility != 0 && p->track_visibility != 1) return refuse(field, "track_visibility", TRK_E_ARG);
+    return TRK_OK;
+}
+
+/* Sensor s: its PDA (P_D at the amplitude threshold with an amplitude
+ * model: CONVENTIONS "PDA") and its covariance. */
+static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, const char **field,
+                               const struct trk_i_tracker_built *b)
+{
+    const struct trk_sensor_params *sp = &p->sensor[s];
+    const char *const *name = sensor_field[s];
+    if (sp->use_amplitude != 0 && sp->use_amplitude != 1) return refuse(field, name[F_USE_AMP], TRK_E_ARG);
+    if (sp->use_amplitude) {
+        const trk_real t_a = trk_amplitude_threshold(&sp->amplitude);
+        if (!(t_a >= 0 && t_a <= TRK_REAL_MAX)) return refuse(field, name[F_AMP], TRK_E_ARG); /* not initialised */
+    }
+    const struct trk_pda_params pp = {NZ, sp->use_amplitude ? trk_amplitude_pd(&sp->amplitude) : sp->pd,
+                                      p->gate_prob, p->clutter, sp->clutter_density_per_m2, 1};
+    const char *pf;
+    trk_status st = trk_pda_check_params(&pp, &pf);
+    if (st != TRK_OK) {
+        const char *f = strcmp(pf, "gate_prob") == 0         ? "gate_prob"
+                        : strcmp(pf, "clutter_density") == 0 ? name[F_DENSITY]
+                        : sp->use_amplitude                   ? name[F_AMP]
+                                                              : name[F_PD];
+        return refuse(field, f, st);
+    }
+    TRK_CHECKED(trk_pda_init(&b->pda[s], &pp));
+    st = trk_i_cov2_unpack(sp->meas_cov_m2, b->r[s]);
+    return st == TRK_OK ? TRK_OK : refuse(field, name[F_COV], st);
+}
+
+/* Does the confirmation test's model build? (Which of the two tests
+ * trk_i_tests_init refused: it checks confirmation first.) */
+static int confirm_builds(const struct trk_tracker_params *p)
+{
+    union trk_confirm_model m;
+    switch (p->confirm.method) {
+    case TRK_CONFIRM_MN: return trk_mn_model_init(&m.mn, &p->confirm.u.mn) == TRK_OK;
+    case TRK_CONFIRM_SPRT: return trk_sprt_model_init(&m.sprt, &p->confirm.u.sprt) == TRK_OK;
+#if TRK_WITH_CLUTTER_TESTS
+    case TRK_CONFIRM_CLUTTER_CHI2: return trk_clutter_chi2_model_init(&m.chi2, &p->confirm.u.chi2) == TRK_OK;
+    case TRK_CONFIRM_CLUTTER_AMP: return trk_clutter_amp_model_init(&m.amp, &p->confirm.u.amp) == TRK_OK;
+#endif
+    case TRK_CONFIRM_VISIBILITY: return p->track_visibility;
+    default: return 0;
+    }
+}
+
+/* The field of a refusal st by trk_i_tests_init: the method (unknown, not
+ * built in, or a visibility method without track_visibility), its
+ * parameters, or its HMM with fewer sensors than the tracker. */
+static const char *tests_field(const struct trk_tracker_params *p, trk_status st)
+{
+    static const char *const confirm[] = {"confirm.u.mn", "confirm.u.sprt", "confirm.u.chi2", "confirm.u.amp"};
+    static const char *const term[] = {"term.u.kn", "term.u.page", "term.u.shiryaev"};
+    const unsigned cm = (unsigned)p->confirm.method, tm = (unsigned)p->term.method;
+    if (st == TRK_E_SENSOR)
+        return p->confirm.method == TRK_CONFIRM_SPRT && p->confirm.u.sprt.model == TRK_SPRT_HMM &&
+                       p->confirm.u.sprt.hmm.n_sensors < p->n_sensors
+                   ? "confirm.u.sprt.hmm"
+                   : tm == TRK_TERM_PAGE ? "term.u.page.hmm" : "term.u.shiryaev.hmm";
+    if (st == TRK_E_UNSUPPORTED) return "confirm.method";
+    if (!confirm_builds(p)) return cm < sizeof confirm / sizeof *confirm ? confirm[cm] : "confirm.method";
+    return tm < sizeof term / sizeof *term ? term[tm] : "term.method";
+}
+
+trk_status trk_i_tracker_check(const struct trk_tracker_params *p, const char **field,
+                               const struct trk_i_tracker_built *b)
+{
+    if (field) *field = NULL;
+    if (!p) return refuse(field, "params", TRK_E_ARG);
+    trk_status st = check_scalars(p, field);
+    if (st != TRK_OK) return st;
+    for (unsigned s = 0; s < p->n_sensors; s++)
+        if ((st = check_sensor(p, s, field, b)) != TRK_OK) return st;
+    if (p->track_visibility && (st = trk_visibility_model_init(b->vis, &p->visibility)) != TRK_OK)
+        return refuse(field, "visibility", st);
+    st = trk_i_tests_init(p, b->confirm, b->term);
+    return st == TRK_OK ? TRK_OK : refuse(field, tests_field(p, st), st);
+}
+
+trk_status trk_tracker_check_params(const struct trk_tracker_params *p, const char **field)
+{
+    struct trk_pda pda[TRK_MAX_SENSORS];
+    trk_real r[TRK_MAX_SENSORS][NZ * NZ];
+    struct trk_visibility_model vis;
+    union trk_confirm_model confirm;
+    union trk_term_model term;
+    const struct trk_i_tracker_built b = {pda, r, &vis, &confirm, &term};
+    return trk_i_tracker_check(p, field, &b);
+}

@@ -1,0 +1,233 @@
+/* tracker_update_impl.h (private) - one track's update in a scan: predict
+ * to the scan time, gate, the PDA over the gated set (pda_impl.h, the same
+ * code as trk_pda_update), visibility, commit, and the look for its tests.
+ * The PDA is inlined with the CV model's constant dimensions, so its small
+ * matrix loops unroll (one shared copy in size-optimised builds).
+ *
+ * Included by tracker.c only: these functions use struct trk_tracker, whose
+ * layout depends on TRK_WITH_CLUTTER_TESTS (config.h), and
+ * tests/test_tracker_noclutter.mk rebuilds tracker.c alone in the other
+ * configuration. */
+#ifndef TRK_TRACKER_UPDATE_IMPL_H
+#define TRK_TRACKER_UPDATE_IMPL_H
+
+#include "tracker_impl.h"
+
+/* The CV model's H picks x and y. */
+static const int cv2_sel[NZ] = {X, Y};
+
+/* One track's prediction for this scan. */
+struct pred {
+    trk_real x[NX], p[NX * NX], pht[NX * NZ];
+    struct trk_innovation inn;
+};
+
+static trk_status predict(const struct trk_tracker *t, const struct trk_track *tr,
+                          const struct trk_scan *scan, struct pred *pr);
+static void gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                 const struct trk_i_pda_pred *pp, struct trk_i_pda_set *set);
+static trk_status update_visibility(const struct trk_tracker *t, const struct trk_pda *pda,
+                                    const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
+                                    struct trk_visibility *vis);
+static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+                   const struct trk_i_pda_set *set, const trk_real *x, const trk_real *p);
+static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                       const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look);
+
+/* Predict track tr to the scan time, gate the scan's valid detections (the
+ * workspace), PDA-update it and mark the detections it used; *look gets what
+ * the scan told its tests. 0, or -1 on a numerical failure (tr untouched). */
+static int track_update(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+                        struct trk_look *look)
+{
+    const struct trk_pda *pda = &t->pda[scan->sensor_id];
+    struct pred pr;
+    if (predict(t, tr, scan, &pr) != TRK_OK) return -1;
+    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
+                                      pr.x, pr.p, pr.pht, &pr.inn};
+    struct trk_i_pda_set set;
+    gate(t, tr, scan, &pp, &set);
+    struct trk_i_pda_out out;
+    struct trk_visibility vis = tr->vis;
+    if (trk_i_pda_run(pda, &pp, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
+    if (t->params.track_visibility && update_visibility(t, pda, &set, &out, &vis) != TRK_OK) return -1;
+    /* accepted: from here on the track changes */
+    tr->vis = vis;
+    tr->beta0_last = out.beta0;
+    commit(t, tr, scan, &set, pr.x, pr.p);
+    build_look(t, tr, scan, &pr.inn, &out, look);
+    return 0;
+}
+
+/* CV prediction to the scan time, checked (finite, variances > 0: it is
+ * the posterior when no detection is gated), and its innovation (S = H P H'
+ * + R of the scan's sensor; TRK_E_NOT_SPD when S is not positive definite). */
+static trk_status predict(const struct trk_tracker *t, const struct trk_track *tr,
+                          const struct trk_scan *scan, struct pred *pr)
+{
+    const trk_real dt = (trk_real)(scan->time_us - tr->time_us) * TRK_REAL_C(1e-6);
+    for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
+    for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
+    trk_i_cv2_predict(dt, t->params.process_noise_q, pr->x, pr->p);
+    const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
+    if (st != TRK_OK) return st;
+    return trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
+                                &pr->inn);
+}
+
+/* One track's gate while it is built (see gate()). */
+struct gate {
+    const struct trk_pda *pda;
+    trk_real gamma;            /* the gate d2 <= gamma */
+    trk_real g;                /* and the exclusion zone d2 <= g */
+    struct trk_i_pda_set *set; /* the gated set being filled */
+};
+
+/* Detection j passed the bounding box: the ellipse d2 <= gamma adds it to
+ * the gated set with its ln e_i (and its R_j when it has its own, r_j not
+ * NULL); gamma < d2 <= g only marks it used, so that it starts no track. */
+static void gate_ellipse(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *nu,
+                         const trk_real *l_inv, trk_real log_det, const trk_real *r_j)
+{
+    const trk_real d2 = trk_i_mahalanobis2(NZ, l_inv, nu);
+    if (!trk_gate_inside(d2, gt->gamma)) {
+        if (d2 <= gt->g) t->ws.used[j] = 1; /* the exclusion mark */
+        return;
+    }
+    struct trk_i_pda_set *set = gt->set;
+    const size_t n = set->n++;
+    t->ws.cand[n] = (uint16_t)j;
+    t->ws.w[n] = trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]);
+    t->ws.z[NZ * n + ZX] = t->ws.x[j];
+    t->ws.z[NZ * n + ZY] = t->ws.y[j];
+    if (r_j)
+        for (int i = 0; i < NZ * NZ; i++) t->ws.r_own[NZ * NZ * (n - set->n_shared) + i] = r_j[i];
+    else
+        set->n_shared = n + 1;
+}
+
+/* A detection with its own covariance: R_j and S_j = H P H' + R_j; 0 when
+ * it is outside the bounding box of d2 <= g (or S_j is not SPD: cannot
+ * happen), else L_j^-1 and ln det S_j. */
+static int own_box(const struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_pred *pp,
+                   size_t j, trk_real g, const trk_real *nu, trk_real *r_j, trk_real *l_inv, trk_real *log_det)
+{
+    trk_real s[NZ * NZ];
+    TRK_CHECKED(trk_i_cov2_unpack(scan->detections[t->ws.src[j]].cov_m2, r_j)); /* checked at load */
+    trk_i_pda_own_s(pp, r_j, s);
+    if (trk_fabs(nu[ZX]) > trk_sqrt(g * s[S(ZX, ZX)]) || trk_fabs(nu[ZY]) > trk_sqrt(g * s[S(ZY, ZY)]))
+        return 0;
+    return trk_i_pda_factor(NZ, s, l_inv, log_det) == TRK_OK;
+}
+
+/* Gate the valid detections into the track's gated set (workspace cand, z,
+ * w = ln e_i, r_own): the bounding box of the ellipse d2 <= g (cheap: the
+ * detections with the sensor's covariance share S and its box), then the
+ * ellipse (gate_ellipse). g = init_exclusion_d2 for a confirmed track, else
+ * gamma. The set holds the shared-covariance detections first (n_shared),
+ * then the own-covariance ones. */
+static void gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                 const struct trk_i_pda_pred *pp, struct trk_i_pda_set *set)
+{
+    const struct trk_pda *pda = &t->pda[scan->sensor_id];
+    const struct trk_innovation *inn = pp->inn;
+    const trk_real excl = t->params.init_exclusion_d2;
+    struct gate gt = {pda, pda->gamma, tr->status == TRK_TRACK_CONFIRMED && excl > pda->gamma ? excl : pda->gamma,
+                      set};
+    const trk_real wx = trk_sqrt(gt.g * inn->s[S(ZX, ZX)]), wy = trk_sqrt(gt.g * inn->s[S(ZY, ZY)]);
+    const trk_real zx = inn->z_pred[ZX], zy = inn->z_pred[ZY];
+    const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;
+    set->n = set->n_shared = 0;
+    set->z = t->ws.z;
+    set->w = t->ws.w;
+    set->r_own = t->ws.r_own;
+    for (size_t j = 0; j < n_shared; j++) {
+        const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
+        if (trk_fabs(nu[ZX]) <= wx && trk_fabs(nu[ZY]) <= wy)
+            gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
+    }
+    for (size_t j = n_shared; j < n_valid; j++) {
+        const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
+        trk_real r_j[NZ * NZ], l_inv[NZ * NZ], log_det;
+        if (own_box(t, scan, pp, j, gt.g, nu, r_j, l_inv, &log_det)) gate_ellipse(t, &gt, j, nu, l_inv, log_det, r_j);
+    }
+    set->m_gated = set->n;
+}
+
+/* Kennedy eqs 21-24 with the PDA weights: ln sum_i (g_D,i / rho) l_i =
+ * ln sum_i e_i - ln P_D - ln lambda (e_i = P_D g_D,i l_i; lambda = 0: +inf,
+ * a certain detection). */
+static trk_status update_visibility(const struct trk_tracker *t, const struct trk_pda *pda,
+                                    const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
+                                    struct trk_visibility *vis)
+{
+    trk_real log_sum = out->log_sum_e;
+    if (set->n > 0)
+        log_sum = out->lambda > 0 ? out->log_sum_e - trk_log(pda->params.pd) - trk_log(out->lambda)
+                                  : (trk_real)INFINITY;
+    return trk_visibility_update_log(&t->vis_model, vis, pda->params.pd, pda->params.gate_prob, log_sum);
+}
+
+/* The posterior into the track; its gated detections start no track. */
+static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+                   const struct trk_i_pda_set *set, const trk_real *x, const trk_real *p)
+{
+    for (size_t i = 0; i < set->n; i++) t->ws.used[t->ws.cand[i]] = 1;
+    for (int i = 0; i < NX; i++) tr->x[i] = x[i];
+    for (int i = 0; i < NX * NX; i++) tr->p[i] = p[i];
+    tr->time_us = scan->time_us;
+    tr->n_gated_last = (uint16_t)set->n;
+}
+
+/* The clutter tests' inputs (Kennedy eqs 5-9, 13-15): the scan's detection
+ * nearest the prediction (smallest d2 with the sensor's S), rho V_g of the
+ * ellipse it encloses, and its amplitude (dB) against the scan's others
+ * (workspace amp_db holds the amplitudes twice over, so the others of entry
+ * k are the n_amp - 1 entries from k + 1). */
+static void clutter_look(const struct trk_tracker *t, const struct trk_innovation *inn, trk_real rho,
+                         struct trk_look *look)
+{
+    trk_real best = TRK_REAL_MAX;
+    size_t jb = 0;
+    for (size_t j = 0; j < t->ws.n_valid; j++) {
+        const trk_real nu[NZ] = {t->ws.x[j] - inn->z_pred[ZX], t->ws.y[j] - inn->z_pred[ZY]};
+        const trk_real d2 = trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
+        if (d2 < best) {
+            best = d2;
+            jb = j;
+        }
+    }
+    look->has_nearest = 1;
+    look->nearest = jb;
+    look->rho_vg = rho * trk_gate_volume_inn(inn, best);
+    if (t->ws.amp_pos[jb] >= 0) {
+        const size_t k = (size_t)t->ws.amp_pos[jb];
+        look->has_amp = 1;
+        look->a_assoc_db = t->ws.amp_db[k];
+        look->n_others = t->ws.n_amp - 1;
+        look->a_others_db = t->ws.amp_db + k + 1;
+    }
+}
+
+/* What this scan told the track's tests: the one place a look is built
+ * (the M/N test's first look at initiation apart). */
+static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                       const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look)
+{
+    look->detected = tr->n_gated_last > 0;
+    look->sensor_id = scan->sensor_id;
+    look->n_gated = (int)tr->n_gated_last;
+    look->pfa_gate = -trk_expm1(-out->lambda * out->gate_volume);
+    look->beta0 = out->beta0;
+    look->has_nearest = 0;
+    look->nearest = 0;
+    look->rho_vg = 0;
+    look->has_amp = 0;
+    look->a_assoc_db = 0;
+    look->n_others = 0;
+    look->a_others_db = t->ws.amp_db;
+    if (tr->status == TRK_TRACK_TENTATIVE && trk_i_confirm_needs_nearest(&t->params) && t->ws.n_valid > 0)
+        clutter_look(t, inn, t->pda[scan->sensor_id].params.clutter_density, look);
+}
+
+#endif
