@@ -206,8 +206,8 @@ trk_status trk_imm_pda_update(const struct trk_imm_params *m, const struct trk_p
         trk_real sum = mx > -TRK_REAL_MAX ? trk_exp(le0 - mx) : 0;
         for (size_t i = 0; i < nv; i++) sum += trk_exp(w->beta[i] - mx);
         ll[j] = sum > 0 ? mx + trk_log(sum) : -(trk_real)INFINITY;
-        trk_status st = trk_pda_update(&all, NX, trk_cv2_h, r, out.x[j], out.p[j], nv, zv, log_lr ? lrv : NULL,
-                                       w->beta, NULL, NULL);
+        trk_status st = trk_pda_update_inn(&all, NX, trk_cv2_h, r, out.x[j], out.p[j], &inn[j], nv, zv,
+                                           log_lr ? lrv : NULL, w->beta, NULL, NULL);
         if (st != TRK_OK) return st;
     }
     mode_update(n, ll, mu_pred, out.mu);

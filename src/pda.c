@@ -3,6 +3,8 @@
  * tracker; this file gates the caller's detections into a gated set. */
 #include "trk/pda.h"
 
+#include <stdint.h>
+
 #include "pda_impl.h"
 
 static trk_status refuse(const char **field, const char *name, trk_status st)
@@ -150,4 +152,37 @@ trk_status trk_pda_update_inn(const struct trk_pda *pda, int nx, const trk_real 
 {
     if (!inn || !pda || inn->nz != pda->params.nz) return TRK_E_ARG;
     return update(pda, nx, h, r, x, p, inn, m, z, log_lr, beta, d2, rep);
+}
+
+trk_status trk_pda_update_weights(int nx, const trk_real *h, const trk_real *r, trk_real *x, trk_real *p,
+                                  const struct trk_innovation *inn, size_t m, const trk_real *z,
+                                  const trk_real *beta)
+{
+    if (!h || !r || !x || !p || !inn || !beta || (m > 0 && !z)) return TRK_E_ARG;
+    const int nz = inn->nz;
+    if (nz < 1 || nz > TRK_MAX_MEAS || nx < nz || nx > TRK_MAX_STATE) return TRK_E_ARG;
+    if (m > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
+    trk_real sum = 0;
+    for (size_t i = 0; i <= m; i++) {
+        if (!isfinite(beta[i])) return TRK_E_NAN;
+        if (!(beta[i] >= 0 && beta[i] <= 1)) return TRK_E_RANGE;
+        sum += beta[i];
+    }
+    if (!(trk_fabs(sum - 1) <= TRK_REAL_C(1e-3))) return TRK_E_RANGE;
+    for (size_t i = 0; i < m * (size_t)nz; i++)
+        if (!isfinite(z[i])) return TRK_E_NAN;
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS], xn[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
+    int sel_idx[TRK_MAX_MEAS];
+    const int *sel = trk_i_h_select(nx, nz, h, sel_idx) ? sel_idx : NULL;
+    trk_i_mul_ht(nx, nx, nz, p, h, sel, pht);
+    const struct trk_i_pda_pred pred = {nx, nz, h, sel, r, x, p, pht, inn};
+    /* the combination only reads the weights (s->w is not const for the
+     * update that normalises them in place) */
+    const struct trk_i_pda_set set = {m, m, m, z, (trk_real *)(uintptr_t)(beta + 1), NULL};
+    trk_i_pda_combine(&pred, &set, beta[0], xn, acc);
+    const trk_status st = trk_i_pda_check(nx, xn, acc);
+    if (st != TRK_OK) return st;
+    for (int a = 0; a < nx; a++) x[a] = xn[a];
+    for (int a = 0; a < nx * nx; a++) p[a] = acc[a];
+    return TRK_OK;
 }

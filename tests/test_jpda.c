@@ -208,6 +208,7 @@ static void test_lbp_fallback(void **state)
     (void)state;
     enum { N = 12 };
     static trk_real lw0[N], lw[N * N], pa[N * N], pm[N];
+    if (TRK_MAX_TRACKS < N || TRK_MAX_DETECTIONS < N) skip(); /* a small-capacity build */
     /* a chain: track t gates detections t and t+1 (no cycle) */
     for (int t = 0; t < N; t++) {
         lw0[t] = (trk_real)log(0.2 + 0.05 * t);
@@ -259,6 +260,7 @@ static void test_lbp_rows_are_distributions(void **state)
     (void)state;
     enum { N = 14, M = 14 };
     static trk_real lw0[N], lw[N * M], pa[N * M], pm[N];
+    if (TRK_MAX_TRACKS < N || TRK_MAX_DETECTIONS < M) skip(); /* a small-capacity build */
     for (int t = 0; t < N; t++) {
         lw0[t] = (trk_real)log(0.1 + 0.8 * urand());
         for (int j = 0; j < M; j++) lw[t * M + j] = urand() < 0.5 ? (trk_real)(4 * (urand() - 0.5)) : -(trk_real)INFINITY;

@@ -96,4 +96,17 @@ TRK_NODISCARD trk_status trk_pda_update_inn(const struct trk_pda *pda, int nx, c
                                             const trk_real *z, const trk_real *log_lr, trk_real *beta,
                                             trk_real *d2, struct trk_pda_report *rep);
 
+/* The state update of the PDA with association weights given by the caller
+ * (e.g. the conditional weights of joint association, trk/jpda.h):
+ * beta[0] = beta_0 (no detection is the target's), beta[1..m] for the m
+ * detections z (m x nz), summing to 1 (within 1e-3); inn the innovation of
+ * (x, P) under (h, r) from trk_kalman_innovation. The combination is the
+ * one of trk_pda_update (CONVENTIONS "PDA"), so a detection with weight 0
+ * does not enter. TRK_E_ARG, TRK_E_CAPACITY m > TRK_MAX_DETECTIONS,
+ * TRK_E_NAN / TRK_E_RANGE bad weights or z, TRK_E_NOT_SPD a posterior
+ * variance <= 0; x and P untouched on error. */
+TRK_NODISCARD trk_status trk_pda_update_weights(int nx, const trk_real *h, const trk_real *r, trk_real *x,
+                                                trk_real *p, const struct trk_innovation *inn, size_t m,
+                                                const trk_real *z, const trk_real *beta);
+
 #endif
