@@ -142,7 +142,7 @@ trk_status trk_imm_update(const struct trk_imm_params *m, const trk_real r[NZ * 
         struct trk_innovation inn;
         trk_status st = trk_kalman_innovation(NX, NZ, trk_cv2_h, r, out.x[j], out.p[j], &inn);
         if (st != TRK_OK) return st;
-        trk_real nu[NZ] = {z[0] - inn.z_pred[0], z[1] - inn.z_pred[1]};
+        trk_real nu[NZ] = {z[0] - inn.z_pred[TRK_CV2_ZX], z[1] - inn.z_pred[TRK_CV2_ZY]};
         /* ln N(z; H x-, S) = -(nz/2) ln 2pi - (1/2)(ln det S + d2) */
         ll[j] = -TRK_REAL_C(0.5) * ((trk_real)NZ * TRK_LN_2PI + inn.log_det_s + trk_gate_d2(&inn, nu));
         st = trk_kalman_update(NX, NZ, trk_cv2_h, r, z, out.x[j], out.p[j]);
@@ -178,7 +178,7 @@ trk_status trk_imm_pda_update(const struct trk_imm_params *m, const struct trk_p
     for (size_t i = 0; i < n_det; i++) {
         int in = 0;
         for (int j = 0; j < n && !in; j++) {
-            const trk_real nu[NZ] = {z[2 * i] - inn[j].z_pred[0], z[2 * i + 1] - inn[j].z_pred[1]};
+            const trk_real nu[NZ] = {z[2 * i] - inn[j].z_pred[TRK_CV2_ZX], z[2 * i + 1] - inn[j].z_pred[TRK_CV2_ZY]};
             in = trk_gate_d2(&inn[j], nu) <= pda->gamma;
         }
         if (validated) validated[i] = (unsigned char)in;
@@ -199,7 +199,7 @@ trk_status trk_imm_pda_update(const struct trk_imm_params *m, const struct trk_p
         const trk_real le0 = trk_i_pda_log_e0(pda, pda->params.clutter_density);
         trk_real mx = le0;
         for (size_t i = 0; i < nv; i++) {
-            const trk_real nu[NZ] = {zv[2 * i] - inn[j].z_pred[0], zv[2 * i + 1] - inn[j].z_pred[1]};
+            const trk_real nu[NZ] = {zv[2 * i] - inn[j].z_pred[TRK_CV2_ZX], zv[2 * i + 1] - inn[j].z_pred[TRK_CV2_ZY]};
             w->beta[i] = trk_i_pda_log_e(pda, inn[j].log_det_s, trk_gate_d2(&inn[j], nu), lrv[i]);
             if (w->beta[i] > mx) mx = w->beta[i];
         }

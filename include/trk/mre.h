@@ -62,7 +62,6 @@ struct trk_mre {
     trk_real f[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];
     trk_real q[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];
     trk_real gamma;                             /* gate threshold on d2 */
-    trk_real gate_const;                        /* c_nz gamma^(nz/2) */
 };
 
 /* TRK_E_ARG NULL / nz not 1 or 2 / negative max_iter / q2 not given,

@@ -48,7 +48,6 @@ trk_status trk_mre_init(struct trk_mre *m, const struct trk_mre_params *pr)
     if (m->params.rel_tol == 0) m->params.rel_tol = 64 * TRK_REAL_EPS;
     m->nx = 2 * pr->nz;
     m->gamma = gamma;
-    m->gate_const = trk_gate_unit_volume(pr->nz) * trk_pow(gamma, (trk_real)pr->nz / 2);
     /* the CV model of each coordinate (nz = 1: [x, vx]; nz = 2: [x, vx, y, vy]) */
     TRK_CHECKED(trk_cv_model(pr->nz, pr->dt_s, pr->q_m2_per_s3, m->f, m->q));
     return TRK_OK;
@@ -84,8 +83,7 @@ trk_status trk_mre_step(const struct trk_mre *m, trk_real *p, struct trk_mre_ste
     if (st != TRK_OK) return st;
     st = trk_kalman_innovation(nx, nz, h, r, x, pp, &inn);
     if (st != TRK_OK) return st;
-    const trk_real lambda_vg =
-        m->params.clutter_density * m->gate_const * trk_exp(TRK_REAL_C(0.5) * inn.log_det_s);
+    const trk_real lambda_vg = m->params.clutter_density * trk_gate_volume_inn(&inn, m->gamma);
     trk_real q2 = m->params.q2;
     if (m->params.q2_fn) {
         st = m->params.q2_fn(m->params.q2_ctx, lambda_vg, &q2);
@@ -112,12 +110,12 @@ trk_status trk_mre_step(const struct trk_mre *m, trk_real *p, struct trk_mre_ste
 trk_real trk_mre_rmse(int nz, const trk_real *p)
 {
     if (!p) return (trk_real)NAN;
-    if (nz == 2) return trk_sqrt(p[0] + p[10]);
+    if (nz == 2) return trk_sqrt(p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)] + p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)]);
     if (nz == 1) return trk_sqrt(p[0]);
     return (trk_real)NAN;
 }
 
-static trk_real pos_var(int nz, const trk_real *p) { return nz == 2 ? p[0] + p[10] : p[0]; }
+static trk_real pos_var(int nz, const trk_real *p) { return nz == 2 ? p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)] + p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)] : p[0]; }
 
 static void fill_result(const struct trk_mre *m, const trk_real *p, const struct trk_mre_step_info *in,
                         int it, struct trk_mre_result *res)

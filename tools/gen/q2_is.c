@@ -76,8 +76,9 @@ double q2_is_b(int nz, double gamma, double pd, double lambda_vg)
     /* b = (2 pi)^(nz/2) lambda_vg (1 - pd pg) / (pd c_nz gamma^(nz/2));
      * 1 - pd pg = (1 - pd) + pd (1 - pg): no cancellation when pd pg -> 1 */
     const double one_m = (1 - pd) + pd * gate_sf(nz, gamma);
-    const double cnz = (double)trk_gate_unit_volume(nz);
-    return pow(TWO_PI, 0.5 * nz) * lambda_vg * one_m / (pd * cnz * pow(gamma, 0.5 * nz));
+    /* c_nz gamma^(nz/2): the gate volume at det S = 1 (the library's formula) */
+    const double vg1 = (double)trk_gate_volume(nz, (trk_real)gamma, 0);
+    return pow(TWO_PI, 0.5 * nz) * lambda_vg * one_m / (pd * vg1);
 }
 
 /* ---- the line's strata and cells ---- */

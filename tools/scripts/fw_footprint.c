@@ -39,7 +39,7 @@ int main(void)
         fw_name = trk_status_str(st);
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             const struct trk_track *tr = trk_tracker_track(&tracker, i);
-            if (tr) fw_sink = tr->x[0];
+            if (tr) fw_sink = tr->x[TRK_CV2_X];
         }
     }
 }

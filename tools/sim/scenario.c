@@ -120,10 +120,10 @@ int scen_init(struct scenario *s, const struct scen_params *p, char *err, size_t
         double snr = p->snr_db;
         if (p->targets) {
             const struct scen_target_init *ti = &p->targets[i];
-            t->x[0] = ti->x_m;
-            t->x[1] = ti->vx_mps;
-            t->x[2] = ti->y_m;
-            t->x[3] = ti->vy_mps;
+            t->x[TRK_CV2_X] = ti->x_m;
+            t->x[TRK_CV2_VX] = ti->vx_mps;
+            t->x[TRK_CV2_Y] = ti->y_m;
+            t->x[TRK_CV2_VY] = ti->vy_mps;
             if (!isnan(ti->snr_db)) snr = ti->snr_db;
             for (int k = 0; k < 4; k++)
                 if (!isfinite(t->x[k])) {
@@ -135,10 +135,10 @@ int scen_init(struct scenario *s, const struct scen_params *p, char *err, size_t
             const double sp = p->speed_min_mps +
                               (p->speed_max_mps - p->speed_min_mps) * rng_uniform(&s->motion);
             const double hd = 6.283185307179586 * rng_uniform(&s->motion);
-            t->x[0] = p->x_min_m + (p->x_max_m - p->x_min_m) * rng_uniform(&s->motion);
-            t->x[2] = p->y_min_m + (p->y_max_m - p->y_min_m) * rng_uniform(&s->motion);
-            t->x[1] = sp * sin(hd);
-            t->x[3] = sp * cos(hd);
+            t->x[TRK_CV2_X] = p->x_min_m + (p->x_max_m - p->x_min_m) * rng_uniform(&s->motion);
+            t->x[TRK_CV2_Y] = p->y_min_m + (p->y_max_m - p->y_min_m) * rng_uniform(&s->motion);
+            t->x[TRK_CV2_VX] = sp * sin(hd);
+            t->x[TRK_CV2_VY] = sp * cos(hd);
         }
         if (amp_target_init(&s->amp, snr, &t->amp) != 0) {
             snprintf(err, n, "target %zu: SNR %g dB not usable (must be in [-50, 80])", i, snr);
@@ -285,7 +285,7 @@ static struct scen_field_point *around_targets(const struct scenario *s, size_t 
     size_t nt = 0, cap = 0;
     long *tiles = NULL;
     for (size_t t = 0; t < s->n_tg; t++) {
-        const double cx = s->tg[t].x[0], cy = s->tg[t].x[2];
+        const double cx = s->tg[t].x[TRK_CV2_X], cy = s->tg[t].x[TRK_CV2_Y];
         const double i0 = floor((cx - h) / l), i1 = floor((cx + h) / l);
         const double j0 = floor((cy - h) / l), j1 = floor((cy + h) / l);
         if (!isfinite(i0) || !isfinite(j1) || (i1 - i0 + 1) * (j1 - j0 + 1) > (double)SCEN_FIELD_MAX_TILES)
@@ -338,7 +338,7 @@ static struct scen_field_point *around_targets(const struct scenario *s, size_t 
             const struct scen_field_point pt0 = pts[base + q], *pt = &pt0;
             int in = 0;
             for (size_t t = 0; t < s->n_tg && !in; t++)
-                in = fabs(pt->x_m - s->tg[t].x[0]) <= h && fabs(pt->y_m - s->tg[t].x[2]) <= h;
+                in = fabs(pt->x_m - s->tg[t].x[TRK_CV2_X]) <= h && fabs(pt->y_m - s->tg[t].x[TRK_CV2_Y]) <= h;
             if (in) pts[m++] = *pt;
         }
     }
@@ -394,7 +394,7 @@ void scen_next(struct scenario *s, struct trk_detection *det, size_t max_det, st
         const struct scen_target *t = &s->tg[i];
         if (!rng_bernoulli(&r, t->high ? t->pd : s->p.fluct_pd_low)) continue;
         if (t->end_scan > 0 && s->k >= (uint64_t)t->end_scan) continue; /* gone */
-        const double x = t->x[0] + sg * rng_normal(&r), y = t->x[2] + sg * rng_normal(&r);
+        const double x = t->x[TRK_CV2_X] + sg * rng_normal(&r), y = t->x[TRK_CV2_Y] + sg * rng_normal(&r);
         nt += add_detection(s, &t->amp, &r, x, y, det, max_det, &n, &dropped);
     }
     const double area = (s->p.x_max_m - s->p.x_min_m) * (s->p.y_max_m - s->p.y_min_m);

@@ -37,7 +37,7 @@ static void follow(const trk_track_list_t *m, const trk_track_list_t *truth, uin
         for (int i = 0; i < m->n_tracks && !ok; i++) {
             const trk_track_t *t = &m->tracks[i];
             if (t->status != TRK_TRACK_T_STATUS_CONFIRMED) continue;
-            ok = hypot(t->x[0] - tx[0], t->x[2] - tx[2]) <= 25;
+            ok = hypot(t->x[TRK_CV2_X] - tx[TRK_CV2_X], t->x[TRK_CV2_Y] - tx[TRK_CV2_Y]) <= 25;
         }
         n[g]++;
         ok_n[g] += (uint64_t)ok;
@@ -150,8 +150,8 @@ int bridge_summarize(const char *path, const struct bridge_opts *o, const char *
             for (int k = 0; k < i; k++) {
                 const trk_track_t *u = &last->tracks[k];
                 if (u->status == TRK_TRACK_T_STATUS_CONFIRMED &&
-                    hypot(t->x[0] - u->x[0], t->x[2] - u->x[2]) < 5 &&
-                    hypot(t->x[1] - u->x[1], t->x[3] - u->x[3]) < 0.5) {
+                    hypot(t->x[TRK_CV2_X] - u->x[TRK_CV2_X], t->x[TRK_CV2_Y] - u->x[TRK_CV2_Y]) < 5 &&
+                    hypot(t->x[TRK_CV2_VX] - u->x[TRK_CV2_VX], t->x[TRK_CV2_VY] - u->x[TRK_CV2_VY]) < 0.5) {
                     dup++;
                     break;
                 }
@@ -163,8 +163,8 @@ int bridge_summarize(const char *path, const struct bridge_opts *o, const char *
             const trk_track_t *t = &last->tracks[i];
             if (t->status != TRK_TRACK_T_STATUS_CONFIRMED) continue;
             fprintf(f, "  track %-6lld x %9.1f m  y %9.1f m  vx %6.2f  vy %6.2f m/s  sd %.1f m  %d updates\n",
-                    (long long)t->id, t->x[0], t->x[2], t->x[1], t->x[3],
-                    sqrt(0.5 * (t->p[0] + t->p[10])), t->n_updates);
+                    (long long)t->id, t->x[TRK_CV2_X], t->x[TRK_CV2_Y], t->x[TRK_CV2_VX], t->x[TRK_CV2_VY],
+                    sqrt(0.5 * (t->p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)] + t->p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)])), t->n_updates);
         }
     }
     if (have_truth) {

@@ -40,6 +40,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "trk/gate.h"
 #include "rng.h"
 #include "sim.h"
 #include "trk/hmm_detect.h"
@@ -103,7 +104,7 @@ static void run_one(const struct bl_cfg *c, int h1, uint64_t seed, uint64_t stre
         const int sensor = (int)((t - 1) % c->ns);
         if (trk_kalman_predict(2, f, qm, x, pm) != TRK_OK) abort();
         const trk_real s = pm[0] + rm[0];                       /* S per axis */
-        const trk_real v = (trk_real)c->gamma * TRK_PI * s;    /* eq 3: sqrt|S| = s */
+        const trk_real v = trk_gate_volume(2, (trk_real)c->gamma, 2 * trk_log(s)); /* eq 3: sqrt|S| = s */
         const trk_real pfa = trk_hmm_gate_pfa((trk_real)c->lambda * v); /* eq 4 */
         int det;
         if (h1) {

@@ -272,7 +272,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         for (int j = 0; j < N_TG; j++) {
             const struct scen_target *t = &sc.tg[j];
             present[j] = !(t->end_scan > 0 && k >= t->end_scan);
-            fprintf(ft, "%ld,%.1f,%d,%.3f,%.3f,%.4f,%.4f,%d,%d\n", k, ts, j, t->x[0], t->x[2], t->x[1], t->x[3],
+            fprintf(ft, "%ld,%.1f,%d,%.3f,%.3f,%.4f,%.4f,%d,%d\n", k, ts, j, t->x[TRK_CV2_X], t->x[TRK_CV2_Y], t->x[TRK_CV2_VX], t->x[TRK_CV2_VY],
                     present[j], t->high);
         }
         long live = 0;
@@ -307,14 +307,14 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
             double bd = INFINITY;
             for (int j = 0; j < N_TG; j++) {
                 if (!present[j]) continue;
-                const double d = hypot((double)tr->x[0] - sc.tg[j].x[0], (double)tr->x[2] - sc.tg[j].x[2]);
+                const double d = hypot((double)tr->x[TRK_CV2_X] - sc.tg[j].x[TRK_CV2_X], (double)tr->x[TRK_CV2_Y] - sc.tg[j].x[TRK_CV2_Y]);
                 if (d < bd) bd = d, best = j;
             }
             const int on = best >= 0 && bd <= assoc_m;
             if (on) r->on[best]++;
             fprintf(fk, "%ld,%.1f,%u,%d,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%d,%.4f\n", k, ts, tr->id, tr->status,
-                    (double)tr->x[0], (double)tr->x[2], (double)tr->x[1], (double)tr->x[3], sqrt((double)tr->p[0]),
-                    sqrt((double)tr->p[10]), on ? best : -1, on ? bd : NAN);
+                    (double)tr->x[TRK_CV2_X], (double)tr->x[TRK_CV2_Y], (double)tr->x[TRK_CV2_VX], (double)tr->x[TRK_CV2_VY], sqrt((double)tr->p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)]),
+                    sqrt((double)tr->p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)]), on ? best : -1, on ? bd : NAN);
             if (on) {
                 if (n_er == cap_er) {
                     cap_er = cap_er ? 2 * cap_er : 4096;

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "trk/gate.h"
 #include "progress.h"
 #include "q2_is.h"
 #include "sim.h"
@@ -45,7 +46,7 @@ static int mre_of(double q2, double *p11)
     struct trk_mre_params p;
     memset(&p, 0, sizeof p);
     p.nz = 2, p.dt_s = 1, p.q_m2_per_s3 = 1, p.r_m2 = 1, p.q2 = (trk_real)q2;
-    p.gate_gamma = (trk_real)(WILLETT_AREA / 3.14159265358979323846);
+    p.gate_gamma = (trk_real)(WILLETT_AREA / (double)trk_gate_unit_volume(2));
     struct trk_mre m;
     struct trk_mre_result r;
     trk_status st = trk_mre_init(&m, &p);
@@ -97,7 +98,7 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
     struct q2_is_line line;
     memset(&line, 0, sizeof line);
     line.nz = 2;
-    line.gamma = WILLETT_AREA / 3.14159265358979323846;
+    line.gamma = WILLETT_AREA / (double)trk_gate_unit_volume(2);
     line.n_cells = NC;
     line.pd = pd;
     line.lambda_vg = lv;

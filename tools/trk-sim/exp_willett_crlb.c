@@ -34,6 +34,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "trk/gate.h"
 #include "mc_stats.h"
 #include "progress.h"
 #include "q2_is.h"
@@ -182,7 +183,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
         char err[256];
         q2p[k] = willett_paper_q2(pds[k], lams[k]);
         if (lams[k] > 0) {
-            if (q2_is_cell(2, WILLETT_AREA / 3.14159265358979323846, pds[k], WILLETT_AREA * lams[k], NULL, &qo,
+            if (q2_is_cell(2, WILLETT_AREA / (double)trk_gate_unit_volume(2), pds[k], WILLETT_AREA * lams[k], NULL, &qo,
                            &q2o[k], &q2o_se[k], err, sizeof err) != 0) {
                 fprintf(stderr, "willett-crlb: q2 sampler: %s\n", err);
                 return 1;
