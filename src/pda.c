@@ -94,7 +94,11 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
     const struct trk_i_pda_pred pred = {nx, nz, h, sel, r, x, p, pht, inn};
     struct trk_i_pda_set set = {m, m, pda->params.gating ? n_gated : m, z, beta, NULL};
     struct trk_i_pda_out out;
-    const trk_status st = trk_i_pda_run(pda, &pred, &set, &out); /* x, P: the posterior */
+    /* x, P: the posterior. The CV copy inlines the update (speed); other
+     * dimensions share the one out-of-line copy (and so does every caller in
+     * a TRK_SIZE_OPT build) */
+    const trk_status st = (nx == TRK_CV2_NX && nz == TRK_CV2_NZ) ? trk_i_pda_run(pda, &pred, &set, &out)
+                                                                 : trk_i_pda_update_set_rt(pda, &pred, &set, &out);
     if (st != TRK_OK) return st;
     if (rep) {
         rep->beta0 = out.beta0;
