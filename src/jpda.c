@@ -362,32 +362,51 @@ static int solve_exact(const struct cluster *c, trk_real *p_assoc, trk_real *p_m
  *   nu_ab = 1 / (1 + S_b - mu_ab),   T_a = w_a0 + sum_b w_ab nu_ab,
  *   mu_ab <- w_ab / (T_a - w_ab nu_ab).
  * Marginals: P(a <- b) = w_ab nu_ab / T_a, P(a <- none) = w_a0 / T_a. */
+#define MU(a, b) p_assoc[(size_t)c->w->cl_tracks[a] * c->scan->n_dets + c->w->cl_dets[b]]
+
+/* S_b = sum_a mu_ab of every detection of the cluster */
+static void lbp_sums(const struct cluster *c, const trk_real *p_assoc, trk_real *sum)
+{
+    for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] = 0;
+    for (size_t a = 0; a < c->nt; a++)
+        for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] += MU(a, b);
+}
+
+/* nu_ab = 1 / (1 + S_b - mu_ab) (0 outside the gate) */
+static trk_real lbp_nu(const struct cluster *c, const trk_real *p_assoc, const trk_real *sum, size_t a, size_t b,
+                       trk_real wb)
+{
+    return wb != 0 ? 1 / (1 + sum[c->w->cl_dets[b]] - MU(a, b)) : 0;
+}
+
+/* T_a = w_a0 + sum_b w_ab nu_ab */
+static trk_real lbp_total(const struct cluster *c, const trk_real *p_assoc, const trk_real *sum, size_t a)
+{
+    trk_real ta = wmiss(c, a);
+    for (size_t b = 0; b < c->nd; b++) {
+        const trk_real wb = wdet(c, a, b);
+        ta += wb * lbp_nu(c, p_assoc, sum, a, b, wb);
+    }
+    return ta;
+}
+
 static int solve_lbp(const struct cluster *c, trk_real *p_assoc, trk_real *p_miss, int *converged)
 {
     trk_real *sum = c->w->det_sum;
-    const size_t n_dets = c->scan->n_dets;
-#define MU(a, b) p_assoc[(size_t)c->w->cl_tracks[a] * n_dets + c->w->cl_dets[b]]
     for (size_t a = 0; a < c->nt; a++)
         for (size_t b = 0; b < c->nd; b++) MU(a, b) = wdet(c, a, b);
     int it = 0;
     *converged = 0;
     while (it < TRK_JPDA_LBP_MAX_ITER) {
         it++;
-        for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] = 0;
-        for (size_t a = 0; a < c->nt; a++)
-            for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] += MU(a, b);
+        lbp_sums(c, p_assoc, sum);
         trk_real change = 0;
         for (size_t a = 0; a < c->nt; a++) {
-            trk_real ta = wmiss(c, a);
-            for (size_t b = 0; b < c->nd; b++) {
-                const trk_real wb = wdet(c, a, b);
-                if (wb != 0) ta += wb / (1 + sum[c->w->cl_dets[b]] - MU(a, b));
-            }
+            const trk_real ta = lbp_total(c, p_assoc, sum, a);
             for (size_t b = 0; b < c->nd; b++) {
                 const trk_real wb = wdet(c, a, b);
                 if (wb == 0) continue;
-                const trk_real nu = 1 / (1 + sum[c->w->cl_dets[b]] - MU(a, b));
-                const trk_real mu = wb / (ta - wb * nu);
+                const trk_real mu = wb / (ta - wb * lbp_nu(c, p_assoc, sum, a, b, wb));
                 const trk_real d = trk_fabs(mu - MU(a, b)) / (mu > 0 ? mu : 1);
                 if (d > change) change = d;
                 MU(a, b) = mu;
@@ -398,24 +417,17 @@ static int solve_lbp(const struct cluster *c, trk_real *p_assoc, trk_real *p_mis
             break;
         }
     }
-    /* marginals from the final messages */
-    for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] = 0;
-    for (size_t a = 0; a < c->nt; a++)
-        for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] += MU(a, b);
+    /* marginals from the final messages; each row's nu from the sums taken
+     * before any row is overwritten */
+    lbp_sums(c, p_assoc, sum);
     for (size_t a = 0; a < c->nt; a++) {
-        /* nu of this track from the sums before its row is overwritten */
-        trk_real ta = wmiss(c, a);
+        const trk_real ta = lbp_total(c, p_assoc, sum, a);
         for (size_t b = 0; b < c->nd; b++) {
             const trk_real wb = wdet(c, a, b);
-            if (wb != 0) ta += wb / (1 + sum[c->w->cl_dets[b]] - MU(a, b));
-        }
-        for (size_t b = 0; b < c->nd; b++) {
-            const trk_real wb = wdet(c, a, b);
-            const trk_real nu = wb != 0 ? 1 / (1 + sum[c->w->cl_dets[b]] - MU(a, b)) : 0;
-            MU(a, b) = wb * nu / ta;
+            MU(a, b) = wb * lbp_nu(c, p_assoc, sum, a, b, wb) / ta;
         }
         p_miss[c->w->cl_tracks[a]] = wmiss(c, a) / ta;
     }
-#undef MU
     return it;
 }
+#undef MU
