@@ -39,7 +39,7 @@
 #                                       importance sampler (OpenMP)          (cli)
 #   tools/cli/*.c     -> libtrk_cli.a   option parser, key=value files, tracker
 #                                       configuration, progress, plots, errors, files
-#   src/host/*.c      -> libtrk_host.a  table files: reader and writer (host, stdio)
+#   src/host/*.c      -> libtrk_host.a  the table file reader (host, stdio)
 #   src/perf/*.c      -> libtrk_perf.a  design-time analysis: q2 lookup, MRE, TOC,
 #                                       ROC, CRLB (not in the firmware archive)
 #   src/*.c           -> libtrk.a       the firmware library: no heap, no stdio
@@ -122,7 +122,7 @@ HOSTLIB := $(BUILD)/libtrk_host.a
 LAYERLIB = $(BUILD)/libtrk_$(1).a
 # every layer below the tools, in link order
 TOOL_LIBS := $(foreach l,$(TOOL_LAYERS),$(call LAYERLIB,$(l))) $(HOSTLIB) $(PERFLIB) $(LIB)
-TOOL_INC := $(addprefix -Itools/,$(TOOL_LAYERS)) -Isrc/host
+TOOL_INC := $(addprefix -Itools/,$(TOOL_LAYERS))
 GEN := $(BUILD)/gen
 RESULTS := $(BUILD)/results
 obj = $(patsubst %.c,$(BUILD)/obj/%.o,$(1))
