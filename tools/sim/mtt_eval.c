@@ -89,7 +89,6 @@ int mtt_eval_scan(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_trut
     struct gospa_result g;
     if (gospa(d, n_truth, n_est, e->c_m, 2, assign, &g)) goto out;
     const size_t scan = e->n_scans++;
-    e->gospa_sum += g.loc + g.missed + g.false_;
     e->gospa_lin_sum += g.gospa;
     e->loc_sum += g.loc;
     e->missed_sum += g.missed;

@@ -38,7 +38,7 @@ struct mtt_track_state;  /* per track id, internal */
 struct mtt_eval {
     double c_m;                 /* GOSPA cut-off */
     size_t n_scans;
-    double gospa_sum, loc_sum, missed_sum, false_sum; /* of GOSPA^2 parts, summed over scans */
+    double loc_sum, missed_sum, false_sum; /* the parts of GOSPA^2, summed over scans */
     double gospa_lin_sum;       /* of GOSPA (the metric itself) over scans */
     size_t target_scans, assigned_scans;
     size_t false_track_scans, duplicate_track_scans;
