@@ -47,7 +47,9 @@ SIZE_SMALL_DEFS := -DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=
 STACK_LIMIT ?= 2048
 TEXT_LIMIT ?= 32768
 RAM_LIMIT ?= 65536
-LIB_TEXT_LIMIT ?= 40960
+# 40 KB until issue 14's initiation, existence tests and complete detection
+# model (+3.8 KB); the goal stays 32 KB (issue 13)
+LIB_TEXT_LIMIT ?= 45056
 SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
 TARGET_cortex-m4f_ARCH := arm
 TARGET_cortex-m4f-O2_ARCH := arm

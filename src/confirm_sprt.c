@@ -1,5 +1,6 @@
 /* confirm_sprt.c - Wald SPRT track confirmation (trk/confirm_sprt.h;
- * Willett eqs 49-57 in sequential form). */
+ * Willett eqs 49-57 in sequential form; complete or paper event model,
+ * CONVENTIONS "Complete detection-event model"). */
 #include "trk/confirm_sprt.h"
 
 trk_status trk_sprt_model_init(struct trk_sprt_model *m, const struct trk_sprt_params *p)
@@ -17,10 +18,12 @@ trk_status trk_sprt_model_init(struct trk_sprt_model *m, const struct trk_sprt_p
         if (!(p->pd > 0 && p->pd < 1)) return TRK_E_RANGE;
         log_pd = trk_log(p->pd);
         log_miss = trk_log1p(-p->pd);
-        /* a valid one-sensor model so that the struct is fully defined */
+        /* a valid one-sensor model so that the struct is fully defined; it
+         * carries (and validates) hmm.events, the rest of hmm is ignored */
         struct trk_hmm_params hp;
         const struct trk_hmm_sensor_params one = {0, 0, p->pd, p->pd, 1};
         trk_hmm_params_uniform(&hp, 1, &one);
+        hp.events = p->hmm.events;
         trk_status st = trk_hmm_model_init(&hmm, &hp);
         if (st != TRK_OK) return st;
     } else {
@@ -30,6 +33,9 @@ trk_status trk_sprt_model_init(struct trk_sprt_model *m, const struct trk_sprt_p
     m->pd_model = p->model;
     m->ln_a = trk_log1p(-p->beta) - trk_log(p->alpha); /* ln((1-beta)/alpha) */
     m->ln_b = trk_log(p->beta) - trk_log1p(-p->alpha); /* ln(beta/(1-alpha)) */
+    m->events = hmm.events;
+    m->pd = p->model == TRK_SPRT_FIXED_PD ? p->pd : 0;
+    m->miss = 1 - m->pd;
     m->log_pd = log_pd;
     m->log_miss = log_miss;
     m->hmm = hmm;
@@ -71,10 +77,19 @@ trk_status trk_sprt_step(const struct trk_sprt_model *m, struct trk_sprt *s, uns
     trk_real lf0, lf1;
     trk_status st = trk_hmm_log_f0(detected, pfa, &lf0); /* Willett eq 55 factor */
     if (st != TRK_OK) return st;
-    if (m->pd_model == TRK_SPRT_FIXED_PD) {
+    if (m->pd_model == TRK_SPRT_FIXED_PD && m->events == TRK_EVENTS_PAPER) {
         lf1 = detected ? m->log_pd : m->log_miss;
+    } else if (m->pd_model == TRK_SPRT_FIXED_PD) {
+        /* complete model: hit ln(1 - (1-Pd)(1-pfa)), e = Pd + pfa (1-Pd) with
+         * log1p of the complement near 1; miss ln(1-Pd) + ln(1-pfa) */
+        if (detected) {
+            const trk_real e = m->pd + pfa * m->miss;
+            lf1 = e <= TRK_REAL_C(0.5) ? trk_log(e) : trk_log1p(-(m->miss * (1 - pfa)));
+        } else {
+            lf1 = m->log_miss + trk_log1p(-pfa);
+        }
     } else {
-        st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, &lf1); /* eq 53 factor */
+        st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, pfa, &lf1); /* eq 53 factor */
         if (st != TRK_OK) return st;
     }
     return trk_sprt_step_llr(m, s, lf1 - lf0, decision);

@@ -51,7 +51,7 @@ trk_status trk_page_step(const struct trk_page_model *m, struct trk_page *s, uns
     if (st != TRK_OK) return st;
     /* the HMM advances only when the step goes through: pfa was checked above
      * and trk_hmm_update checks the sensor before it writes */
-    st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, &lf1); /* eqs 8-10 */
+    st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, pfa, &lf1); /* eqs 8-10 */
     if (st != TRK_OK) return st;
     return trk_page_step_llr(m, s, lf0 - lf1, decision); /* eq 5 */
 }

@@ -62,7 +62,7 @@ trk_status trk_shiryaev_step(const struct trk_shiryaev_model *m, struct trk_shir
     trk_real lf0, lf1;
     trk_status st = trk_hmm_log_f0(detected, pfa, &lf0); /* eq 7 */
     if (st != TRK_OK) return st;
-    st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, &lf1); /* eqs 8-10 */
+    st = trk_hmm_update(&m->hmm, &s->hmm, sensor, detected, pfa, &lf1); /* eqs 8-10 */
     if (st != TRK_OK) return st;
     return trk_shiryaev_step_llr(m, s, lf0 - lf1, decision); /* eq 5 increment */
 }

@@ -34,6 +34,15 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
     case TRK_CONFIRM_CLUTTER_AMP: return TRK_E_UNSUPPORTED;
 #endif
     case TRK_CONFIRM_VISIBILITY: st = p->track_visibility ? TRK_OK : TRK_E_ARG; break;
+    case TRK_CONFIRM_EXISTENCE: {
+        const struct trk_existence_confirm_params *x = &p->confirm.u.existence;
+        if (!p->track_visibility) return TRK_E_ARG;
+        if (!isfinite(x->p_confirm) || !isfinite(x->reject_odds_ratio)) return TRK_E_NAN;
+        st = x->p_confirm > 0 && x->p_confirm < 1 && x->reject_odds_ratio >= 0 && x->reject_odds_ratio < 1
+                 ? TRK_OK
+                 : TRK_E_RANGE;
+        break;
+    }
     default: return TRK_E_ARG;
     }
     if (st != TRK_OK) return st;
@@ -42,6 +51,13 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
     case TRK_TERM_PAGE: st = trk_page_model_init(&e->page, &p->term.u.page); break;
     case TRK_TERM_SHIRYAEV: st = trk_shiryaev_model_init(&e->shiryaev, &p->term.u.shiryaev); break;
     case TRK_TERM_VISIBILITY: st = p->track_visibility ? TRK_OK : TRK_E_ARG; break;
+    case TRK_TERM_EXISTENCE: {
+        const trk_real pt = p->term.u.existence.p_terminate;
+        if (!p->track_visibility) return TRK_E_ARG;
+        if (!isfinite(pt)) return TRK_E_NAN;
+        st = pt > 0 && pt < 1 ? TRK_OK : TRK_E_RANGE;
+        break;
+    }
     default: return TRK_E_ARG;
     }
     if (st != TRK_OK) return st;
@@ -73,8 +89,23 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
         break;
 #endif
     case TRK_CONFIRM_VISIBILITY: tr->confirm_stat = tr->vis.pcv; break;
+    case TRK_CONFIRM_EXISTENCE: tr->confirm_stat = tr->vis.pv; break;
     default: break;
     }
+}
+
+/* ln(p / (1 - p)), +inf at p = 1 */
+static trk_real log_odds(trk_real p) { return trk_log(p) - trk_log1p(-p); }
+
+/* TRK_CONFIRM_EXISTENCE on the existence the scan's update left in tr->vis */
+static enum trk_decision existence_confirm(const struct trk_existence_confirm_params *x,
+                                           const struct trk_track *tr)
+{
+    if (tr->vis.pv >= x->p_confirm) return TRK_DECISION_CONFIRM;
+    if (x->reject_odds_ratio > 0 && tr->existence0 < 1 &&
+        log_odds(tr->vis.pv) < log_odds(tr->existence0) + trk_log(x->reject_odds_ratio))
+        return TRK_DECISION_TERMINATE;
+    return TRK_DECISION_CONTINUE;
 }
 
 /* d starts as the state's decision: a step that is skipped (no input for
@@ -116,6 +147,10 @@ enum trk_decision trk_i_confirm_decide(const struct trk_tracker *t, struct trk_t
         d = tr->vis.decision;
         tr->confirm_stat = tr->vis.pcv;
         break;
+    case TRK_CONFIRM_EXISTENCE:
+        d = existence_confirm(&t->params.confirm.u.existence, tr);
+        tr->confirm_stat = tr->vis.pv;
+        break;
     default: break;
     }
     return d;
@@ -143,7 +178,17 @@ void trk_i_term_start(const struct trk_tracker *t, struct trk_track *tr)
         trk_shiryaev_reset(&m->shiryaev, &e->shiryaev);
         tr->term_stat = e->shiryaev.stat; /* g_0 */
         break;
-    case TRK_TERM_VISIBILITY: tr->term_stat = tr->vis.pcv; break;
+    case TRK_TERM_VISIBILITY:
+        /* confirmed by another test: the visibility test starts from here,
+         * its confidence at the current visibility (its sticky decision may
+         * hold a TERMINATE from a start below p_term) */
+        if (t->params.confirm.method != TRK_CONFIRM_VISIBILITY) {
+            tr->vis.pcv = tr->vis.pv;
+            tr->vis.decision = TRK_DECISION_CONFIRM;
+        }
+        tr->term_stat = tr->vis.pcv;
+        break;
+    case TRK_TERM_EXISTENCE: tr->term_stat = tr->vis.pv; break;
     default: break;
     }
 }
@@ -177,6 +222,10 @@ enum trk_decision trk_i_term_decide(const struct trk_tracker *t, struct trk_trac
          * confirmation rule) means "continue" to a termination test */
         d = tr->vis.decision;
         tr->term_stat = tr->vis.pcv;
+        break;
+    case TRK_TERM_EXISTENCE:
+        d = tr->vis.pv < t->params.term.u.existence.p_terminate ? TRK_DECISION_TERMINATE : TRK_DECISION_CONTINUE;
+        tr->term_stat = tr->vis.pv;
         break;
     default: break;
     }

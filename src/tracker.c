@@ -2,10 +2,12 @@
  * stages, in the order they run (as Stone Soup's MultiTargetTracker loop),
  * then trk_tracker_init and the table accessors. The only module that loops
  * over tracks. One track's update (predict, gate, PDA) is
- * tracker_update_impl.h, the parameter check tracker_params.c. */
+ * tracker_update_impl.h, initiation tracker_initiate_impl.h, the parameter
+ * check tracker_params.c. */
 #include <string.h>
 
 #include "tracker_impl.h"
+#include "tracker_initiate_impl.h"
 #include "tracker_update_impl.h"
 
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
@@ -16,7 +18,6 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
 static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
                        struct trk_scan_report *rep);
 static void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep);
-static void initiate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 
 static int is_live(const struct trk_track *tr)
 {
@@ -34,6 +35,7 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     if (st != TRK_OK) return st;
     /* the scan is accepted: from here on the table changes */
     rep.n_detections = (uint32_t)scan->n_detections;
+    t->scan_no++;
     free_terminated(t);
     load_detections(t, scan, &rep);
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
@@ -153,7 +155,16 @@ static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_s
     if (why == TRK_END_MERGED) rep->n_merged++;
 }
 
-/* One live track: update (predict, gate, PDA), count the look, step its test. */
+/* Is the track's position uncertainty over the bound (max_pos_sigma_ratio)
+ * of the scan's sensor? */
+static int over_covariance_bound(const struct trk_tracker *t, const struct trk_track *tr, unsigned sensor)
+{
+    const trk_real bound = t->max_pos_var_m2[sensor];
+    return bound > 0 && tr->p[P(X, X)] + tr->p[P(Y, Y)] > bound;
+}
+
+/* One live track: update (predict, gate, PDA), the covariance bound, count
+ * the look, step its test. */
 static void update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
                          struct trk_scan_report *rep)
 {
@@ -164,6 +175,11 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
         return;
     }
     tr->n_scans++;
+    if (over_covariance_bound(t, tr, scan->sensor_id)) {
+        end_track(tr, TRK_END_COVARIANCE, rep);
+        rep->n_covariance++;
+        return;
+    }
     if (look.detected) {
         tr->n_hits++;
         tr->n_misses_in_row = 0;
@@ -246,72 +262,6 @@ static void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep)
     }
 }
 
-/* A tentative track on workspace detection j: position from the detection
- * (its covariance: its own or the sensor's), velocity from the zero-mean
- * prior. */
-static void start_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t j)
-{
-    const struct trk_detection *d = &scan->detections[t->ws.src[j]];
-    trk_real own[NZ * NZ];
-    const trk_real *r = t->r[scan->sensor_id];
-    if (d->has_cov) {
-        TRK_CHECKED(trk_i_cov2_unpack(d->cov_m2, own)); /* checked at load */
-        r = own;
-    }
-    const trk_real vv = t->params.init_speed_sigma_mps * t->params.init_speed_sigma_mps;
-    tr->id = t->next_id;
-    t->next_id = t->next_id == UINT32_MAX ? 1 : t->next_id + 1;
-    tr->status = TRK_TRACK_TENTATIVE;
-    tr->end_reason = TRK_END_NONE;
-    tr->time_us = scan->time_us;
-    tr->x[X] = t->ws.x[j];
-    tr->x[VX] = 0;
-    tr->x[Y] = t->ws.y[j];
-    tr->x[VY] = 0;
-    for (int i = 0; i < NX * NX; i++) tr->p[i] = 0;
-    tr->p[P(X, X)] = r[S(ZX, ZX)];
-    tr->p[P(X, Y)] = tr->p[P(Y, X)] = r[S(ZX, ZY)];
-    tr->p[P(Y, Y)] = r[S(ZY, ZY)];
-    tr->p[P(VX, VX)] = tr->p[P(VY, VY)] = vv;
-    tr->n_scans = 1;
-    tr->n_hits = 1;
-    tr->n_misses_in_row = 0;
-    tr->n_gated_last = 1;
-    tr->beta0_last = 0;
-    tr->term_stat = 0;
-    if (t->params.track_visibility) trk_visibility_reset(&t->vis_model, &tr->vis);
-    else memset(&tr->vis, 0, sizeof tr->vis);
-    trk_i_confirm_start(t, tr);
-}
-
-/* Single-point initiation from every valid detection no track used; with
- * no free slot the refusal is counted. M/N counts the initiating detection
- * as its first look; the SPRT and the clutter tests start with the first
- * update. */
-static void initiate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
-{
-    size_t slot = 0;
-    for (size_t j = 0; j < t->ws.n_valid; j++) {
-        if (t->ws.used[j]) continue;
-        while (slot < TRK_MAX_TRACKS && t->track[slot].status != TRK_TRACK_FREE) slot++;
-        if (slot == TRK_MAX_TRACKS) {
-            rep->n_init_refused_full++;
-            continue;
-        }
-        struct trk_track *tr = &t->track[slot];
-        start_track(t, tr, scan, j);
-        t->n_live++;
-        rep->n_started++;
-        if (t->params.confirm.method == TRK_CONFIRM_MN) {
-            struct trk_look look = {0};
-            look.detected = 1;
-            look.sensor_id = scan->sensor_id;
-            look.n_gated = 1;
-            step_tests(t, tr, &look, rep);
-        }
-    }
-}
-
 /* ------------------------------------------------------------------ the table */
 
 trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_params *p)
@@ -332,7 +282,10 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     for (unsigned s = 0; s < p->n_sensors; s++) {
         t->pda[s] = pda[s];
         for (int i = 0; i < NZ * NZ; i++) t->r[s][i] = r[s][i];
+        t->max_pos_var_m2[s] = p->max_pos_sigma_ratio * p->max_pos_sigma_ratio * (r[s][S(ZX, ZX)] + r[s][S(ZY, ZY)]);
     }
+    t->scan_no = 0;
+    t->n_cand = 0;
     t->last_time_us = 0;
     {   /* seconds (<= 1e9) to microseconds with 32-bit conversions only: a
          * float -> int64 conversion is soft double on Cortex-M (__aeabi_f2lz) */

@@ -20,6 +20,37 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->clutter = TRK_CLUTTER_PARAMETRIC;
     p->init_speed_sigma_mps = 5;
     p->max_dt_s = 3600;
+    /* existence-based confirmation and termination (README "Defaults") */
+    p->confirm.method = TRK_CONFIRM_EXISTENCE;
+    p->confirm.u.existence.p_confirm = TRK_REAL_C(0.99);
+    p->confirm.u.existence.reject_odds_ratio = TRK_REAL_C(0.01);
+    p->term.method = TRK_TERM_EXISTENCE;
+    p->term.u.existence.p_terminate = TRK_REAL_C(0.05);
+    p->max_tentative_scans = 0;
+    p->init.method = TRK_INIT_TWO_POINT;
+    p->init.max_speed_mps = 15; /* 30 knots */
+    p->init.max_gap_scans = 1;
+    p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
+    p->max_pos_sigma_ratio = 20;
+    p->merge_gate_d2 = 4;
+    p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
+                                                              detections */
+    /* existence (IPDA, Markov chain one: a target that is gone stays gone) */
+    p->track_visibility = 1;
+    p->visibility.pv0 = TRK_REAL_C(0.5);
+    p->visibility.pcv0 = TRK_REAL_C(0.5);
+    p->visibility.delta_stay = TRK_REAL_C(0.99);
+    p->visibility.delta_become = 0;
+    p->visibility.omega_c = TRK_REAL_C(0.75);
+    p->visibility.p_con = TRK_REAL_C(0.9);
+    p->visibility.p_term = TRK_REAL_C(0.1);
+}
+
+void trk_tracker_mn_kn_params(struct trk_tracker_params *p)
+{
+    trk_tracker_default_params(p);
+    memset(&p->confirm, 0, sizeof p->confirm);
+    memset(&p->term, 0, sizeof p->term);
     p->confirm.method = TRK_CONFIRM_MN;
     p->confirm.u.mn.m = 3;
     p->confirm.u.mn.n = 5;
@@ -27,18 +58,10 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->term.method = TRK_TERM_KN;
     p->term.u.kn.k = 0;
     p->term.u.kn.n = 5;
-    p->max_tentative_scans = 0;
-    p->merge_gate_d2 = 4;
-    p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
-                                                              detections */
-    p->track_visibility = 1; /* Kennedy's Table 1 style IPDA parameters */
-    p->visibility.pv0 = TRK_REAL_C(0.5);
-    p->visibility.pcv0 = TRK_REAL_C(0.5);
-    p->visibility.delta_stay = TRK_REAL_C(0.99);
+    p->init.method = TRK_INIT_SINGLE_POINT;
+    p->init.birth_density_per_m2 = 0;
+    p->max_pos_sigma_ratio = 0;
     p->visibility.delta_become = TRK_REAL_C(0.01);
-    p->visibility.omega_c = TRK_REAL_C(0.75);
-    p->visibility.p_con = TRK_REAL_C(0.9);
-    p->visibility.p_term = TRK_REAL_C(0.1);
 }
 
 /* ------------------------------------------------------------------ field names */
@@ -103,6 +126,19 @@ static trk_status check_real(trk_real v, trk_real lo, int lo_open, trk_real hi, 
     return TRK_OK;
 }
 
+/* How tracks start (trk_init_params). */
+static trk_status check_init(const struct trk_init_params *in, const char **field)
+{
+    trk_status st;
+    if (in->method != TRK_INIT_SINGLE_POINT && in->method != TRK_INIT_TWO_POINT)
+        return refuse(field, "init.method", TRK_E_ARG);
+    if ((st = check_real(in->birth_density_per_m2, 0, 0, TRK_REAL_MAX, "init.birth_density_per_m2", field)) != TRK_OK)
+        return st;
+    if (in->method == TRK_INIT_SINGLE_POINT) return TRK_OK;
+    if ((st = check_real(in->max_speed_mps, 0, 1, TRK_REAL_MAX, "init.max_speed_mps", field)) != TRK_OK) return st;
+    return in->max_gap_scans >= 1 ? TRK_OK : refuse(field, "init.max_gap_scans", TRK_E_RANGE);
+}
+
 /* The scalars (gate_prob with the sensors' PDA). */
 static trk_status check_scalars(const struct trk_tracker_params *p, const char **field)
 {
@@ -117,7 +153,9 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
         (st = check_real(p->init_exclusion_d2, 0, 0, TRK_REAL_MAX, "init_exclusion_d2", field)) != TRK_OK)
         return st;
     if (p->track_visibility != 0 && p->track_visibility != 1) return refuse(field, "track_visibility", TRK_E_ARG);
-    return TRK_OK;
+    if ((st = check_real(p->max_pos_sigma_ratio, 0, 0, TRK_REAL_MAX, "max_pos_sigma_ratio", field)) != TRK_OK)
+        return st;
+    return check_init(&p->init, field);
 }
 
 /* Sensor s: its PDA (P_D at the amplitude threshold with an amplitude
@@ -161,6 +199,11 @@ static int confirm_builds(const struct trk_tracker_params *p)
     case TRK_CONFIRM_CLUTTER_AMP: return trk_clutter_amp_model_init(&m.amp, &p->confirm.u.amp) == TRK_OK;
 #endif
     case TRK_CONFIRM_VISIBILITY: return p->track_visibility;
+    case TRK_CONFIRM_EXISTENCE: {
+        const struct trk_existence_confirm_params *x = &p->confirm.u.existence;
+        return p->track_visibility && x->p_confirm > 0 && x->p_confirm < 1 && x->reject_odds_ratio >= 0 &&
+               x->reject_odds_ratio < 1;
+    }
     default: return 0;
     }
 }
@@ -170,8 +213,10 @@ static int confirm_builds(const struct trk_tracker_params *p)
  * parameters, or its HMM with fewer sensors than the tracker. */
 static const char *tests_field(const struct trk_tracker_params *p, trk_status st)
 {
-    static const char *const confirm[] = {"confirm.u.mn", "confirm.u.sprt", "confirm.u.chi2", "confirm.u.amp"};
-    static const char *const term[] = {"term.u.kn", "term.u.page", "term.u.shiryaev"};
+    static const char *const confirm[] = {"confirm.u.mn",  "confirm.u.sprt",     "confirm.u.chi2",
+                                          "confirm.u.amp", "confirm.method", "confirm.u.existence"};
+    static const char *const term[] = {"term.u.kn", "term.u.page", "term.u.shiryaev", "term.method",
+                                       "term.u.existence"};
     const unsigned cm = (unsigned)p->confirm.method, tm = (unsigned)p->term.method;
     if (st == TRK_E_SENSOR)
         return p->confirm.method == TRK_CONFIRM_SPRT && p->confirm.u.sprt.model == TRK_SPRT_HMM &&
@@ -179,7 +224,11 @@ static const char *tests_field(const struct trk_tracker_params *p, trk_status st
                    ? "confirm.u.sprt.hmm"
                    : tm == TRK_TERM_PAGE ? "term.u.page.hmm" : "term.u.shiryaev.hmm";
     if (st == TRK_E_UNSUPPORTED) return "confirm.method";
+    if (!p->track_visibility && (p->confirm.method == TRK_CONFIRM_VISIBILITY || p->confirm.method == TRK_CONFIRM_EXISTENCE))
+        return "confirm.method";
     if (!confirm_builds(p)) return cm < sizeof confirm / sizeof *confirm ? confirm[cm] : "confirm.method";
+    if (!p->track_visibility && (p->term.method == TRK_TERM_VISIBILITY || p->term.method == TRK_TERM_EXISTENCE))
+        return "term.method";
     return tm < sizeof term / sizeof *term ? term[tm] : "term.method";
 }
 

@@ -30,6 +30,13 @@ void trk_visibility_reset(const struct trk_visibility_model *m, struct trk_visib
     v->scans = 0;
 }
 
+void trk_visibility_reset_to(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pv0)
+{
+    if (!m || !v) return;
+    trk_visibility_reset(m, v);
+    v->pv_pred = v->pv = v->pcv = pv0;
+}
+
 /* ln(e^a + e^b) */
 static trk_real log_add(trk_real a, trk_real b)
 {

@@ -1,7 +1,8 @@
 /* test_confirm_sprt.c - Wald SPRT confirmation: thresholds and llr against
  * closed forms, ties (>= / <=), sticky decisions, the HMM model against
- * Willett's eq 49 by enumeration, bad input, one model shared by several
- * tracks, 10^6-step runs. */
+ * Willett's eq 49 by enumeration, both in the paper's and the complete
+ * event model (CONVENTIONS "Complete detection-event model"), bad input,
+ * one model shared by several tracks, 10^6-step runs. */
 #include "trk_test.h"
 #include "hmm_brute.h"
 #include "trk/confirm_sprt.h"
@@ -27,6 +28,7 @@ static trk_status step_llr(const struct trk_sprt_model *m, struct trk_sprt *s, t
     return st;
 }
 
+/* Fixed P_D, complete event model (zeroed hmm: the default). */
 static struct trk_sprt_params fixed(trk_real pd, trk_real alpha, trk_real beta)
 {
     struct trk_sprt_params p;
@@ -45,10 +47,12 @@ static void start(struct trk_sprt_model *m, struct trk_sprt *s, const struct trk
     trk_sprt_reset(m, s);
 }
 
+/* The paper's form: hit ln(P_D / P_FA), miss ln(1-P_D) - ln(1-P_FA). */
 static void test_fixed_pd(void **state)
 {
     (void)state;
     struct trk_sprt_params p = fixed(TRK_REAL_C(0.8), TRK_REAL_C(0.01), TRK_REAL_C(0.1));
+    p.hmm.events = TRK_EVENTS_PAPER;
     struct trk_sprt_model m;
     struct trk_sprt s;
     start(&m, &s, &p);
@@ -104,9 +108,9 @@ static void test_ties_and_sticky(void **state)
     assert_int_equal(d, TRK_DECISION_TERMINATE);
 }
 
-/* HMM model: llr = ln P(d | H1) - ln P(d | H0) over several sensors
- * (Willett eqs 49, 53, 55; without the TT conditioning, i.e. the
- * initiating detection not passed). */
+/* HMM model, the paper's form: llr = ln P(d | H1) - ln P(d | H0) over
+ * several sensors (Willett eqs 49, 53, 55; without the TT conditioning,
+ * i.e. the initiating detection not passed). */
 static void test_hmm_vs_enumeration(void **state)
 {
     (void)state;
@@ -116,6 +120,7 @@ static void test_hmm_vs_enumeration(void **state)
     const struct trk_hmm_sensor_params sp = {TRK_REAL_C(0.1) / 3, TRK_REAL_C(0.1), TRK_REAL_C(0.1),
                                              TRK_REAL_C(0.9), TRK_HMM_PI0_STATIONARY};
     trk_hmm_params_uniform(&p.hmm, 2, &sp);
+    p.hmm.events = TRK_EVENTS_PAPER;
     struct trk_sprt_model m;
     struct trk_sprt s;
     start(&m, &s, &p);
@@ -248,6 +253,125 @@ static void test_long_runs(void **state)
     }
 }
 
+/* Complete event model with fixed P_D = 0.8 (the default; CONVENTIONS
+ * "Complete detection-event model"): hit ln f1 = ln(1 - (1-P_D)(1-P_FA)),
+ * miss ln f1 = ln(1-P_D) + ln(1-P_FA), so a miss adds ln(1-P_D) whatever
+ * the gate (pfa near 1 included). */
+static void test_fixed_pd_complete(void **state)
+{
+    (void)state;
+    struct trk_sprt_params p = fixed(TRK_REAL_C(0.8), TRK_REAL_C(0.01), TRK_REAL_C(0.1));
+    struct trk_sprt_model m;
+    struct trk_sprt s;
+    start(&m, &s, &p);
+    assert_int_equal(m.events, TRK_EVENTS_COMPLETE);
+    const trk_real pfas[6] = {TRK_REAL_C(1e-4), TRK_REAL_C(0.05), TRK_REAL_C(0.5), TRK_REAL_C(0.95),
+                              TRK_REAL_C(0.999), 1 - (trk_real)TRK_TOL(1e-12, 1e-6)};
+    const int d[12] = {0, 1, 0, 1, 1, 0, 1, 0, 0, 1, 1, 0};
+    const double pd = (double)TRK_REAL_C(0.8);
+    double llr = 0;
+    for (int t = 0; t < 12; t++) {
+        const trk_real pfa = pfas[t % 6];
+        const double f = (double)pfa;
+        TRK_ASSERT_OK(step(&m, &s, 0, d[t], pfa));
+        const double inc = d[t] ? log1p(-(1 - pd) * (1 - f)) - log(f) : log1p(-pd);
+        /* a miss near pfa = 1: |ln(1-pfa)| ~ 27.6 (float 13.8) cancels */
+        TRK_ASSERT_NEAR(s.inc, inc, TRK_TOL(1e-13, 4e-6), TRK_TOL(1e-14, 1e-6));
+        llr += inc;
+        TRK_ASSERT_NEAR(s.stat, llr, TRK_TOL(1e-13, 1e-5), TRK_TOL(1e-14, 1e-6));
+    }
+    /* a hit at pfa near 1 says almost nothing: ln(1 - 0.2 eps) - ln(1 - eps) ~ 0.8 eps */
+    trk_sprt_reset(&m, &s);
+    const trk_real near1 = pfas[5];
+    const double eps = 1 - (double)near1;
+    TRK_ASSERT_OK(step(&m, &s, 0, 1, near1));
+    TRK_ASSERT_NEAR(s.inc, log1p(-0.2 * eps) - log1p(-eps), 0, TRK_TOL(1e-12, 1e-3));
+}
+
+/* The event model of a fixed-P_D SPRT is hmm.events; the rest of hmm is
+ * ignored (here left invalid). An unknown events value is TRK_E_ARG for
+ * both P_D models. */
+static void test_events_selection(void **state)
+{
+    (void)state;
+    struct trk_sprt_params p = fixed(TRK_REAL_C(0.8), TRK_REAL_C(0.01), TRK_REAL_C(0.1));
+    p.hmm.n_sensors = 0;                         /* ignored with fixed P_D */
+    p.hmm.sensor[0].pd_low = (trk_real)NAN;
+    p.hmm.events = TRK_EVENTS_PAPER;
+    struct trk_sprt_model m, mbefore;
+    struct trk_sprt s;
+    start(&m, &s, &p);
+    assert_int_equal(m.events, TRK_EVENTS_PAPER);
+    TRK_ASSERT_OK(step(&m, &s, 0, 0, TRK_REAL_C(0.5)));
+    TRK_ASSERT_NEAR(s.inc, log1p(-(double)TRK_REAL_C(0.8)) - log(0.5), 0, TRK_TOL(1e-15, 1e-6));
+    memset(&m, 0x2d, sizeof m);
+    mbefore = m;
+    p.hmm.events = (enum trk_event_model)2;
+    TRK_ASSERT_STATUS(trk_sprt_model_init(&m, &p), TRK_E_ARG);
+    p.model = TRK_SPRT_HMM;
+    const struct trk_hmm_sensor_params sp = {TRK_REAL_C(0.1) / 3, TRK_REAL_C(0.1), TRK_REAL_C(0.1),
+                                             TRK_REAL_C(0.9), TRK_HMM_PI0_STATIONARY};
+    trk_hmm_params_uniform(&p.hmm, 1, &sp);
+    p.hmm.events = (enum trk_event_model)-3;
+    TRK_ASSERT_STATUS(trk_sprt_model_init(&m, &p), TRK_E_ARG);
+    assert_memory_equal(&m, &mbefore, sizeof m);
+    p.hmm.events = TRK_EVENTS_PAPER;
+    TRK_ASSERT_OK(trk_sprt_model_init(&m, &p));
+    assert_int_equal(m.events, TRK_EVENTS_PAPER);
+    assert_int_equal(m.hmm.events, TRK_EVENTS_PAPER);
+}
+
+/* HMM, complete event model: llr = ln P(d | H1) - ln P(d | H0) with
+ * P(miss | u) = (1 - Pd_u)(1 - pfa_t) under H1, by enumeration. */
+static void test_hmm_complete_vs_enumeration(void **state)
+{
+    (void)state;
+#if TRK_MAX_SENSORS >= 2
+    struct trk_sprt_params p = fixed(TRK_REAL_C(0.5), TRK_REAL_C(1e-9), TRK_REAL_C(1e-9));
+    p.model = TRK_SPRT_HMM;
+    const struct trk_hmm_sensor_params sp = {TRK_REAL_C(0.1) / 3, TRK_REAL_C(0.1), TRK_REAL_C(0.1),
+                                             TRK_REAL_C(0.9), TRK_HMM_PI0_STATIONARY};
+    trk_hmm_params_uniform(&p.hmm, 2, &sp);
+    struct trk_sprt_model m;
+    struct trk_sprt s;
+    start(&m, &s, &p);
+    const int d[16] = {1, 1, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0, 0, 0, 1, 1};
+    int d0[8], d1[8];
+    double f0[8], f1[8], lf0 = 0;
+    for (int t = 0; t < 16; t++) {
+        const trk_real pfa = (trk_real)(0.04 + 0.05 * t); /* up to 0.79 */
+        TRK_ASSERT_OK(step(&m, &s, (unsigned)(t % 2), d[t], pfa));
+        const double pf = (double)pfa;
+        lf0 += d[t] ? log(pf) : log1p(-pf);
+        if (t % 2) d1[t / 2] = d[t], f1[t / 2] = pf;
+        else d0[t / 2] = d[t], f0[t / 2] = pf;
+    }
+    const double pp = 0.1 / 3, q = 0.1;
+    const double lik = brute_log_lik_events(8, d0, f0, pp, q, 0.1, 0.9, pp / (pp + q)) +
+                       brute_log_lik_events(8, d1, f1, pp, q, 0.1, 0.9, pp / (pp + q));
+    TRK_ASSERT_NEAR(s.stat, lik - lf0, 0, TRK_TOL(1e-13, 1e-5));
+#else
+    skip();
+#endif
+}
+
+/* Empty gates of a growing size (pfa 0.9, fixed P_D 0.5): the paper's miss
+ * adds ln(0.5 / 0.1) = +1.61 and confirms a track that never had a
+ * detection; the complete model's adds ln 0.5 and rejects it. */
+static void test_empty_large_gates(void **state)
+{
+    (void)state;
+    for (int complete = 0; complete < 2; complete++) {
+        struct trk_sprt_params p = fixed(TRK_REAL_C(0.5), TRK_REAL_C(0.01), TRK_REAL_C(0.1));
+        p.hmm.events = complete ? TRK_EVENTS_COMPLETE : TRK_EVENTS_PAPER;
+        struct trk_sprt_model m;
+        struct trk_sprt s;
+        start(&m, &s, &p);
+        for (int t = 0; t < 10; t++) TRK_ASSERT_OK(step(&m, &s, 0, 0, TRK_REAL_C(0.9)));
+        assert_int_equal(s.decision, complete ? TRK_DECISION_TERMINATE : TRK_DECISION_CONFIRM);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -257,6 +381,10 @@ int main(void)
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_shared_model),
         cmocka_unit_test(test_long_runs),
+        cmocka_unit_test(test_fixed_pd_complete),
+        cmocka_unit_test(test_events_selection),
+        cmocka_unit_test(test_hmm_complete_vs_enumeration),
+        cmocka_unit_test(test_empty_large_gates),
     };
     return trk_run_tests("confirm_sprt", tests, NULL, NULL);
 }

@@ -327,6 +327,7 @@ static void test_refuses_bad_config(void **state)
 {
     (void)state;
     struct tcfg bad = cfg;
+    assert_int_equal(tcfg_set(&bad, "confirm", "mn", err, sizeof err), 0);
     assert_int_equal(tcfg_set(&bad, "confirm.mn.m", "4", err, sizeof err), 0); /* > n = 3 */
     assert_null(bridge_new(&bad, &opts, err, sizeof err));
     assert_non_null(strstr(err, "confirm.mn"));

@@ -43,10 +43,14 @@ static void test_defaults(void **state)
     assert_int_equal(p->n_sensors, d.n_sensors);
     assert_true(p->process_noise_q == d.process_noise_q && p->gate_prob == d.gate_prob);
     assert_true(p->max_dt_s == d.max_dt_s && p->init_speed_sigma_mps == d.init_speed_sigma_mps);
-    assert_int_equal(p->confirm.method, TRK_CONFIRM_MN);
-    assert_int_equal(p->confirm.u.mn.m, d.confirm.u.mn.m);
-    assert_int_equal(p->term.method, TRK_TERM_KN);
-    assert_int_equal(p->term.u.kn.n, d.term.u.kn.n);
+    assert_int_equal(p->confirm.method, TRK_CONFIRM_EXISTENCE);
+    assert_true(p->confirm.u.existence.p_confirm == d.confirm.u.existence.p_confirm);
+    assert_true(p->confirm.u.existence.reject_odds_ratio == d.confirm.u.existence.reject_odds_ratio);
+    assert_int_equal(p->term.method, TRK_TERM_EXISTENCE);
+    assert_true(p->term.u.existence.p_terminate == d.term.u.existence.p_terminate);
+    assert_int_equal(p->init.method, d.init.method);
+    assert_true(p->init.birth_density_per_m2 == d.init.birth_density_per_m2);
+    assert_true(p->max_pos_sigma_ratio == d.max_pos_sigma_ratio);
     for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) { /* every sensor like sensor 0 */
         assert_true(p->sensor[s].pd == d.sensor[0].pd);
         assert_true(p->sensor[s].meas_cov_m2[0] == d.sensor[0].meas_cov_m2[0]);
@@ -64,6 +68,13 @@ static void test_set_keys(void **state)
     assert_int_equal(set("init_speed_sigma_mps", "7"), 0);
     assert_int_equal(set("max_dt_s", "60"), 0);
     assert_int_equal(set("max_tentative_scans", "12"), 0);
+    assert_int_equal(set("confirm", "mn"), 0);
+    assert_int_equal(set("term", "kn"), 0);
+    assert_int_equal(set("init.method", "single_point"), 0);
+    assert_int_equal(set("init.max_speed_mps", "12.5"), 0);
+    assert_int_equal(set("init.max_gap_scans", "3"), 0);
+    assert_int_equal(set("init.birth_density_per_m2", "2e-9"), 0);
+    assert_int_equal(set("max_pos_sigma_ratio", "8"), 0);
     assert_int_equal(set("confirm.mn.m", "4"), 0);
     assert_int_equal(set("confirm.mn.n", "6"), 0);
     assert_int_equal(set("confirm.mn.mode", "sliding"), 0);
@@ -80,6 +91,9 @@ static void test_set_keys(void **state)
     assert_int_equal(p->clutter, TRK_CLUTTER_NONPARAMETRIC);
     assert_true(p->init_speed_sigma_mps == 7 && p->max_dt_s == 60);
     assert_int_equal(p->max_tentative_scans, 12);
+    assert_int_equal(p->init.method, TRK_INIT_SINGLE_POINT);
+    assert_true(p->init.max_speed_mps == TRK_REAL_C(12.5) && p->init.max_gap_scans == 3);
+    assert_true(p->init.birth_density_per_m2 == TRK_REAL_C(2e-9) && p->max_pos_sigma_ratio == 8);
     assert_int_equal(p->confirm.u.mn.m, 4);
     assert_int_equal(p->confirm.u.mn.n, 6);
     assert_int_equal(p->confirm.u.mn.mode, TRK_MN_SLIDING);
@@ -101,11 +115,28 @@ static void test_set_keys(void **state)
     assert_int_equal(set("term.shiryaev.rho", "0"), 0);
     assert_int_equal(set("hmm.pi0_high", "stationary"), 0);
     assert_int_equal(set("hmm.pd_high", "0.95"), 0);
+    assert_int_equal(c.hmm_events, TRK_EVENTS_COMPLETE); /* the default */
+    assert_int_equal(set("hmm.events", "paper"), 0);
     assert_int_equal(set("confirm.clutter_density.kmax", "10"), 0);
     assert_true(c.sprt.alpha == TRK_REAL_C(0.05) && c.sprt.model == TRK_SPRT_HMM);
     assert_true(c.page.h == TRK_REAL_C(6.5) && c.shiryaev.rho == 0);
     assert_true(c.hmm.pi0_high == TRK_HMM_PI0_STATIONARY && c.hmm.pd_high == TRK_REAL_C(0.95));
     assert_int_equal(c.clutter_density.kmax, 10);
+    /* hmm.events reaches every test that uses it (fixed-P_D SPRT included) */
+    assert_int_equal(c.hmm_events, TRK_EVENTS_PAPER);
+    const enum trk_term_method terms[2] = {TRK_TERM_PAGE, TRK_TERM_SHIRYAEV};
+    for (int k = 0; k < 2; k++) {
+        c.confirm = TRK_CONFIRM_SPRT;
+        c.term = terms[k];
+        tcfg_params(&c, &pp);
+        assert_int_equal(pp.confirm.u.sprt.hmm.events, TRK_EVENTS_PAPER);
+        assert_int_equal(k ? pp.term.u.shiryaev.hmm.events : pp.term.u.page.hmm.events,
+                         TRK_EVENTS_PAPER);
+    }
+    assert_int_equal(set("hmm.events", "complete"), 0);
+    tcfg_params(&c, &pp);
+    assert_int_equal(pp.confirm.u.sprt.hmm.events, TRK_EVENTS_COMPLETE);
+    assert_int_equal(pp.term.u.shiryaev.hmm.events, TRK_EVENTS_COMPLETE);
 }
 
 static void test_bad_values(void **state)
@@ -124,6 +155,7 @@ static void test_bad_values(void **state)
         {"sensor.0.meas_sigma_m", "0"},                          {"sensor.0.amplitude", "weibull"},
         {"sensor.0.pfa", "1"},       {"sensor.0.snr_db", "200"}, {"sensor.99.pd", "0.5"},
         {"hmm.pi0_high", "2"},       {"term.shiryaev.rho", "1"}, {"confirm.sprt.alpha", "0"},
+        {"hmm.events", "blanding"},  {"hmm.events", ""},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         err[0] = 0;
@@ -226,6 +258,7 @@ static void test_write_read_back(void **state)
     assert_int_equal(set("sensor.0.meas_cov_m2", "2.5, -0.1, 3.3"), 0);
     assert_int_equal(set("term.shiryaev.h", "-3.25"), 0);
     assert_int_equal(set("hmm.pi0_high", "0.4"), 0);
+    assert_int_equal(set("hmm.events", "paper"), 0);
     assert_int_equal(set("confirm", "sprt"), 0);
     if (TRK_MAX_SENSORS >= 2) {
         assert_int_equal(set("sensors", "2"), 0);
@@ -253,6 +286,7 @@ static void test_write_read_back(void **state)
     assert_true(c2.params.gate_prob == c.params.gate_prob);
     assert_true(c2.params.sensor[0].meas_cov_m2[1] == c.params.sensor[0].meas_cov_m2[1]);
     assert_int_equal(c2.confirm, TRK_CONFIRM_SPRT);
+    assert_int_equal(c2.hmm_events, TRK_EVENTS_PAPER);
 }
 
 static void expect_check_fails(const char *want)
@@ -266,11 +300,16 @@ static void test_check(void **state)
 {
     (void)state;
     tcfg_defaults(&c);
+    assert_int_equal(set("confirm", "mn"), 0);
     assert_int_equal(set("confirm.mn.m", "6"), 0); /* m > n = 5 */
     expect_check_fails("confirm.mn");
     tcfg_defaults(&c);
+    assert_int_equal(set("term", "kn"), 0);
     assert_int_equal(set("term.kn.k", "5"), 0); /* k >= n = 5 */
     expect_check_fails("term.kn");
+    tcfg_defaults(&c);
+    assert_int_equal(set("visibility", "0"), 0); /* the existence methods need it */
+    expect_check_fails("needs visibility = 1");
     /* every method the tracker runs, with its defaults, passes; a bad
      * combination is refused with the method named */
     static const char *const confirms[] = {"sprt", "clutter_density", "clutter_amplitude"};

@@ -295,7 +295,7 @@ static void test_tracks_to_msg(void **state)
 {
     (void)state;
     struct trk_tracker_params p;
-    trk_tracker_default_params(&p);
+    trk_tracker_mn_kn_params(&p);
     p.confirm.u.mn.m = 2;
     p.confirm.u.mn.n = 3;
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));

@@ -1,7 +1,9 @@
 /* test_term_shiryaev.c - Shiryaev termination (Blanding eqs 11-14): the log
  * recursion against the probability form (eq 12) where that is accurate,
  * rho = 0, strict threshold and sticky decision, runs past exp's overflow and
- * underflow limits, bad input. */
+ * underflow limits, bad input, closed forms of the paper's and the complete
+ * event model (CONVENTIONS "Complete detection-event model") and the
+ * coasting track that only the complete model terminates. */
 #include "trk_test.h"
 #include "trk/term_shiryaev.h"
 
@@ -26,6 +28,7 @@ static trk_status step_llr(const struct trk_shiryaev_model *m, struct trk_shirya
     return st;
 }
 
+/* Blanding's HMM, complete event model (the default). */
 static struct trk_shiryaev_params params(trk_real beta0, trk_real rho, trk_real h)
 {
     const struct trk_hmm_sensor_params sp = {TRK_REAL_C(0.1) / 3, TRK_REAL_C(0.1), TRK_REAL_C(0.1),
@@ -150,6 +153,9 @@ static void test_bad_input(void **state)
     TRK_ASSERT_STATUS(trk_shiryaev_model_init(&m, &p), TRK_E_RANGE);
     TRK_ASSERT_STATUS(trk_shiryaev_model_init(NULL, &p), TRK_E_ARG);
     TRK_ASSERT_STATUS(trk_shiryaev_model_init(&m, NULL), TRK_E_ARG);
+    p = params(TRK_REAL_C(0.5), TRK_REAL_C(0.005), 1);
+    p.hmm.events = (enum trk_event_model)3; /* unknown event model */
+    TRK_ASSERT_STATUS(trk_shiryaev_model_init(&m, &p), TRK_E_ARG);
     assert_memory_equal(&m, &mbefore, sizeof m); /* never half-initialised */
     struct trk_shiryaev sh, before;
     p = params(TRK_REAL_C(0.5), TRK_REAL_C(0.005), 1);
@@ -171,6 +177,119 @@ static void test_bad_input(void **state)
     assert_memory_equal(&m, &mbefore, sizeof m);
 }
 
+/* Fixed P_D = 0.7 in both event models (CONVENTIONS "Complete
+ * detection-event model"): paper s = ln(pfa / pd) on a hit, ln((1-pfa) /
+ * (1-pd)) on a miss; complete s = ln pfa - ln(1 - (1-pd)(1-pfa)) on a hit,
+ * -ln(1-pd) on a miss (pfa near 1 included), and
+ * g = logaddexp(ln rho, g) - ln(1 - rho) + s. */
+static void test_fixed_pd_both_forms(void **state)
+{
+    (void)state;
+    const trk_real pfas[5] = {TRK_REAL_C(0.01), TRK_REAL_C(0.2), TRK_REAL_C(0.7), TRK_REAL_C(0.99),
+                              1 - (trk_real)TRK_TOL(1e-12, 1e-6)};
+    const int d[15] = {1, 0, 1, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0};
+    const double pd = (double)TRK_REAL_C(0.7), rho = (double)TRK_REAL_C(0.02);
+    for (int complete = 0; complete < 2; complete++) {
+        struct trk_shiryaev_params p = params(TRK_REAL_C(0.1), TRK_REAL_C(0.02), 1000);
+        p.hmm.sensor[0].pd_low = p.hmm.sensor[0].pd_high = TRK_REAL_C(0.7);
+        p.hmm.events = complete ? TRK_EVENTS_COMPLETE : TRK_EVENTS_PAPER;
+        struct trk_shiryaev_model m;
+        struct trk_shiryaev sh;
+        start(&m, &sh, &p);
+        double g = log((double)TRK_REAL_C(0.1) / (1 - (double)TRK_REAL_C(0.1)));
+        for (int t = 0; t < 15; t++) {
+            const trk_real pfa = pfas[t % 5];
+            const double f = (double)pfa;
+            TRK_ASSERT_OK(step(&m, &sh, 0, d[t], pfa));
+            double s;
+            if (complete) s = d[t] ? log(f) - log1p(-(1 - pd) * (1 - f)) : -log1p(-pd);
+            else s = d[t] ? log(f / pd) : log1p(-f) - log1p(-pd);
+            TRK_ASSERT_NEAR(sh.s, s, TRK_TOL(1e-13, 4e-6), TRK_TOL(1e-14, 1e-6));
+            if (complete && !d[t]) assert_true(sh.s > 0);
+            const double hi = g > log(rho) ? g : log(rho), lo = g > log(rho) ? log(rho) : g;
+            g = hi + log1p(exp(lo - hi)) - log1p(-rho) + s;
+            TRK_ASSERT_NEAR(sh.stat, g, TRK_TOL(1e-13, 2e-5), TRK_TOL(1e-13, 1e-6));
+        }
+    }
+}
+
+/* The coasting track of the issue (see test_term_page.c,
+ * test_coasting_track_terminates, for the scenario and pfa_k): fading HMM
+ * (pd_high 0.9, pd_low 0.1, p = 0.1, q = 0.02), 12 hits at pfa 1e-3, then
+ * 40 misses with lambda V_k = 0.2 .. 41; Shiryaev beta0 = rho = 0.01,
+ * h = ln 99 (posterior 0.99). */
+#define COAST_HITS 12
+#define COAST_LOOKS 40
+static trk_real coast_pfa(int k, int *rounds_to_one)
+{
+    const double lv = 0.2 + (41 - 0.2) * k / (COAST_LOOKS - 1);
+    const trk_real pfa = (trk_real)-expm1(-lv);
+    *rounds_to_one = pfa >= 1;
+    return pfa < 1 ? pfa : (TRK_TEST_IS_FLOAT ? (trk_real)nextafterf(1, 0) : (trk_real)nextafter(1, 0));
+}
+
+/* Complete: g_t >= g_{t-1} + s_t (logaddexp(ln rho, g) >= g, -ln(1-rho) >
+ * 0) and every miss adds s = -ln M >= -ln 0.82 = 0.198 (prior P(u=1) >=
+ * min(p, 1-q) = 0.1). The hits leave g near ln(rho/(1-rho)) + ln(pfa/f1) =
+ * -11.4; the first four misses (2.14, 1.45, 0.56, 0.26) bring it to -0.01
+ * > -0.05, so g > ln 99 = 4.595 after at most 4 + ceil((4.595 + 0.05) /
+ * 0.198) = 28 misses (computed: the 25th; the slow part is the chain
+ * settling at P(u=1) ~ 0.11 under misses, where a miss says little: s =
+ * -ln 0.81). Paper: s = -lambda V_k - ln M, negative from the third miss
+ * on: g peaks at -2.31 and the track is never terminated. */
+static void test_coasting_track_terminates(void **state)
+{
+    (void)state;
+    const struct trk_hmm_sensor_params fading = {TRK_REAL_C(0.1), TRK_REAL_C(0.02), TRK_REAL_C(0.1),
+                                                 TRK_REAL_C(0.9), TRK_HMM_PI0_STATIONARY};
+    for (int complete = 0; complete < 2; complete++) {
+        struct trk_shiryaev_params p;
+        trk_hmm_params_uniform(&p.hmm, 1, &fading);
+        p.hmm.events = complete ? TRK_EVENTS_COMPLETE : TRK_EVENTS_PAPER;
+        p.beta0 = TRK_REAL_C(0.01);
+        p.rho = TRK_REAL_C(0.01);
+        p.h = (trk_real)log(99.0);
+        struct trk_shiryaev_model m;
+        struct trk_shiryaev sh, before;
+        start(&m, &sh, &p);
+        for (int t = 0; t < COAST_HITS; t++) TRK_ASSERT_OK(step(&m, &sh, 0, 1, TRK_REAL_C(1e-3)));
+        assert_true(sh.stat < -11 && sh.decision == TRK_DECISION_CONTINUE);
+        int fired = 0;
+        double g4 = 0, gmax = -1e300;
+        for (int k = 0; k < COAST_LOOKS; k++) {
+            int one;
+            const trk_real pfa = coast_pfa(k, &one);
+            if (one) { /* pfa = 1 is refused and changes nothing */
+                before = sh;
+                TRK_ASSERT_STATUS(step(&m, &sh, 0, 0, 1), TRK_E_RANGE);
+                assert_memory_equal(&sh.stat, &before.stat, sizeof sh.stat);
+                assert_memory_equal(sh.hmm.post_high, before.hmm.post_high, sizeof sh.hmm.post_high);
+                assert_int_equal(sh.t, before.t);
+            }
+            const double g_prev = (double)sh.stat;
+            TRK_ASSERT_OK(step(&m, &sh, 0, 0, pfa));
+            assert_true(isfinite((double)sh.s) && isfinite((double)sh.stat));
+            if (complete) {
+                assert_true(sh.s > 0.198);                       /* s >= -ln 0.82 */
+                assert_true((double)sh.stat >= g_prev + (double)sh.s - 1e-5);
+            } else if (k >= 2) {
+                assert_true(sh.s < 0); /* the paper's flaw: the empty gate counts for the target */
+            }
+            if (k == 3) g4 = (double)sh.stat;
+            if (sh.stat > gmax) gmax = (double)sh.stat;
+            if (!fired && sh.decision == TRK_DECISION_TERMINATE) fired = k + 1;
+        }
+        if (complete) {
+            assert_true(g4 > -0.05);
+            assert_true(fired >= 1 && fired <= 28);
+        } else {
+            assert_int_equal(fired, 0); /* 40 empty, growing gates: not terminated */
+            assert_int_equal(sh.decision, TRK_DECISION_CONTINUE);
+            assert_true(gmax < -2.3);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -178,6 +297,8 @@ int main(void)
         cmocka_unit_test(test_rho_zero_and_strict),
         cmocka_unit_test(test_long_runs),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_fixed_pd_both_forms),
+        cmocka_unit_test(test_coasting_track_terminates),
     };
     return trk_run_tests("term_shiryaev", tests, NULL, NULL);
 }

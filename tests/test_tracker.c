@@ -58,7 +58,7 @@ static void check_invariants(const struct trk_tracker *t)
 
 static void base_params(struct trk_tracker_params *p)
 {
-    trk_tracker_default_params(p);
+    trk_tracker_mn_kn_params(p); /* the tests below were written for M/N, K/N */
     p->sensor[0].pd = TRK_REAL_C(0.9);
     p->sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
     p->process_noise_q = TRK_REAL_C(0.05);

@@ -24,14 +24,18 @@ static void test_union_without_clutter(void **state)
     };
     assert_int_equal(sizeof(union trk_confirm_state), sizeof(union mn_or_sprt));
     assert_true(sizeof(union trk_confirm_state) < sizeof(struct trk_clutter_chi2));
-    assert_true(sizeof(union trk_confirm_model) < sizeof(struct trk_clutter_chi2_model));
+    union mn_or_sprt_model {
+        struct trk_mn_model mn;
+        struct trk_sprt_model sprt;
+    };
+    assert_int_equal(sizeof(union trk_confirm_model), sizeof(union mn_or_sprt_model));
 }
 
 static void test_clutter_unsupported(void **state)
 {
     (void)state;
     struct trk_tracker_params p;
-    trk_tracker_default_params(&p);
+    trk_tracker_mn_kn_params(&p);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     const uint32_t next_id = tk.next_id;
     p.confirm.method = TRK_CONFIRM_CLUTTER_CHI2;
@@ -69,7 +73,7 @@ static void test_other_methods_run(void **state)
     for (int cm = 0; cm < 2; cm++)
         for (int tm = 0; tm < 2; tm++) {
             struct trk_tracker_params p;
-            trk_tracker_default_params(&p);
+            trk_tracker_mn_kn_params(&p);
             p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
             p.confirm.method = cm ? TRK_CONFIRM_SPRT : TRK_CONFIRM_MN;
             if (cm) {

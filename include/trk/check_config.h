@@ -9,6 +9,9 @@
 #if TRK_MAX_DETECTIONS < 1 || TRK_MAX_DETECTIONS > 65535
 #error "TRK_MAX_DETECTIONS must be in 1..65535 (detections are indexed by uint16_t); set -DTRK_MAX_DETECTIONS=256"
 #endif
+#if TRK_MAX_CANDIDATES < 1 || TRK_MAX_CANDIDATES > 65535
+#error "TRK_MAX_CANDIDATES must be in 1..65535 (initiation candidates are indexed by uint16_t); set -DTRK_MAX_CANDIDATES=256 (default: TRK_MAX_DETECTIONS)"
+#endif
 #if TRK_MAX_SENSORS < 1 || TRK_MAX_SENSORS > 255
 #error "TRK_MAX_SENSORS must be in 1..255 (sensor ids are uint8_t); set -DTRK_MAX_SENSORS=4"
 #endif

@@ -48,6 +48,16 @@
 #define TRK_MAX_DETECTIONS 256
 #endif
 
+/* Initiation candidates (trk/tracker.h, two-point initiation): the
+ * unexplained detections of recent scans that may pair with a later one to
+ * start a track. One full scan's worth by default; each costs 40 bytes in
+ * float, 64 in double. A scan whose unexplained
+ * detections do not fit evicts the oldest candidates first, then counts the
+ * rest as dropped (trk_scan_report.n_candidates_dropped). */
+#ifndef TRK_MAX_CANDIDATES
+#define TRK_MAX_CANDIDATES TRK_MAX_DETECTIONS
+#endif
+
 /* Sensors (e.g. multistatic receivers) with their own noise and detection
  * parameters that one tracker fuses. */
 #ifndef TRK_MAX_SENSORS
@@ -67,13 +77,15 @@
 /* Largest window (updates) of Kennedy's clutter tests (clutter_test.h): the
  * per-track states struct trk_clutter_chi2 / trk_clutter_amp and the density
  * test's threshold table hold TRK_CLUTTER_KMAX entries each, so their size
- * grows with it (at 32: about 0.6 KB per track in double, 0.35 KB in float).
- * Kennedy 2008 uses a window of 25. */
+ * grows with it (at 25: about 0.45 KB per track in double, 0.28 KB in float).
+ * Default 25, Kennedy 2008's window: every track slot pays for the largest
+ * window (32 would cost 4.5 KB more at 64 float tracks, which the
+ * two-point initiation's candidate store needs). */
 #ifndef TRK_CLUTTER_KMAX
-#define TRK_CLUTTER_KMAX 32
+#define TRK_CLUTTER_KMAX 25
 #endif
 #if TRK_CLUTTER_KMAX < 1 || TRK_CLUTTER_KMAX > 1024
-#error "TRK_CLUTTER_KMAX must be in 1..1024 (window of the clutter tests; Kennedy 2008 uses 25); set -DTRK_CLUTTER_KMAX=32"
+#error "TRK_CLUTTER_KMAX must be in 1..1024 (window of the clutter tests; Kennedy 2008 uses 25); set -DTRK_CLUTTER_KMAX=25"
 #endif
 
 /* Models of one IMM estimator (imm.h): struct trk_imm_state holds

@@ -7,6 +7,11 @@
  *                             trk/hmm_detect.h, f0 = P_FA or 1 - P_FA of the gate)
  *   c_t = max(c_{t-1} + s, 0), c_0 = 0                         (eq 6)
  *   terminate when c_t > h (strict).
+ * hmm.events selects f1's event model (trk/hmm_detect.h): under
+ * TRK_EVENTS_COMPLETE, the default, a miss gives s = -ln(miss mixture) > 0
+ * however large the gate, so a coasting track is terminated; under
+ * TRK_EVENTS_PAPER (Blanding eq 8 as printed) s = ln(1 - P_FA) - ln(miss
+ * mixture) turns negative as the gate grows and it may never be.
  * Multisensor: every sensor's looks update the one statistic; each sensor
  * keeps its own Markov state (one transition per look of that sensor).
  * The decision (TRK_DECISION_TERMINATE, enum trk_decision in types.h) is
@@ -23,7 +28,8 @@
 #include "trk/types.h"
 
 struct trk_page_params {
-    struct trk_hmm_params hmm; /* detection model of a present target */
+    struct trk_hmm_params hmm; /* detection model of a present target and
+                                  its event model (hmm.events) */
     trk_real h;                /* threshold on c, > 0 */
 };
 
@@ -43,9 +49,9 @@ struct trk_page {
     enum trk_decision decision; /* sticky: CONTINUE or TERMINATE */
 };
 
-/* TRK_E_ARG NULL, TRK_E_NAN non-finite parameter, TRK_E_RANGE h <= 0 or a
- * model probability out of range, TRK_E_CAPACITY too many sensors.
- * *m untouched on error. */
+/* TRK_E_ARG NULL or unknown hmm.events, TRK_E_NAN non-finite parameter,
+ * TRK_E_RANGE h <= 0 or a model probability out of range, TRK_E_CAPACITY
+ * too many sensors. *m untouched on error. */
 TRK_NODISCARD trk_status trk_page_model_init(struct trk_page_model *m,
                                              const struct trk_page_params *p);
 

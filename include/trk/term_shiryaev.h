@@ -13,7 +13,8 @@
  *   probability threshold b, so any finite h is valid.
  * exp(g) is never formed: g passes +709 and -745 on long runs. The decision
  * (TRK_DECISION_TERMINATE, enum trk_decision in types.h) is sticky; the
- * statistic keeps running after it. Multisensor as Page.
+ * statistic keeps running after it. Multisensor as Page; hmm.events selects
+ * the event model of f1 as for Page (trk/term_page.h, trk/hmm_detect.h).
  *
  * struct trk_shiryaev_model (threshold, g_0, ln rho, ln(1 - rho) and the HMM
  * of every sensor; built once, shared by every track) and struct
@@ -26,7 +27,8 @@
 #include "trk/types.h"
 
 struct trk_shiryaev_params {
-    struct trk_hmm_params hmm; /* detection model of a present target */
+    struct trk_hmm_params hmm; /* detection model of a present target and
+                                  its event model (hmm.events) */
     trk_real beta0;            /* P(change before the first look), (0, 1) */
     trk_real rho;              /* per-look change probability, [0, 1) */
     trk_real h;                /* threshold on the log-odds g, finite */
@@ -52,9 +54,9 @@ struct trk_shiryaev {
     enum trk_decision decision; /* sticky: CONTINUE or TERMINATE */
 };
 
-/* TRK_E_ARG NULL, TRK_E_NAN non-finite parameter, TRK_E_RANGE beta0 or rho
- * or a model probability out of range, TRK_E_CAPACITY too many sensors.
- * *m untouched on error. */
+/* TRK_E_ARG NULL or unknown hmm.events, TRK_E_NAN non-finite parameter,
+ * TRK_E_RANGE beta0 or rho or a model probability out of range,
+ * TRK_E_CAPACITY too many sensors. *m untouched on error. */
 TRK_NODISCARD trk_status trk_shiryaev_model_init(struct trk_shiryaev_model *m,
                                                  const struct trk_shiryaev_params *p);
 

@@ -17,20 +17,32 @@
  *      counted in the report and skipped, the rest of the scan is processed
  *   3. every live track: predict to the scan time, gate (a cheap bounding box
  *      of the gate ellipse first, then d2 <= gamma), PDA update over every
- *      detection in its gate (a detection may serve several tracks), then
- *      its confirmation test (tentative) or termination test (confirmed)
+ *      detection in its gate (a detection may serve several tracks), its
+ *      existence (IPDA), the covariance bound, then its confirmation test
+ *      (tentative) or termination test (confirmed)
  *   4. tracks that have converged onto one target (PDA tracks sharing
  *      detections do) are merged: of two live tracks whose 4-D states are
  *      within merge_gate_d2, the confirmed (else the one with more hits,
  *      else the older) is kept
- *   5. every valid detection no track gated (nor fell within a confirmed
- *      track's init_exclusion_d2) starts a tentative track
- *      (single-point initiation: position from the detection, velocity from
- *      a zero-mean prior); with no free slot it is counted, not silent
+ *   5. initiation (struct trk_init_params) from the valid detections no live
+ *      track gated (tentative ones included: no track starts inside another's
+ *      gate) nor fell within a confirmed track's init_exclusion_d2:
+ *      two-point (default): a detection that pairs with a candidate, an
+ *      unexplained detection of a recent scan within the velocity gate,
+ *      starts a tentative track whose velocity and covariance come from the
+ *      two points; the others become candidates (a bounded store of
+ *      TRK_MAX_CANDIDATES, config.h). Single-point: every such detection
+ *      starts a track (velocity from a zero-mean prior).
+ *      A new track takes a free slot, else the slot of the weakest tentative
+ *      track when that one's existence is lower than the new track's
+ *      (never a confirmed track's); else the initiation is refused. Both
+ *      are counted.
  *   6. the report counts what happened
  * Track ids are stable, start at 1 and are never reused within 2^32 tracks.
  * A terminated track stays visible (status TRK_TRACK_TERMINATED) until the
- * next scan, so a consumer sees its end; its slot is then reused.
+ * next scan, so a consumer sees its end; its slot is then reused. A
+ * replaced tentative track is the exception: its slot is taken at once
+ * (trk_scan_report.n_replaced).
  */
 #ifndef TRK_TRACKER_H
 #define TRK_TRACKER_H
@@ -106,9 +118,20 @@ enum trk_confirm_method {
     TRK_CONFIRM_CLUTTER_CHI2 = 2,/* Kennedy clutter-density test (clutter_test.h) */
     TRK_CONFIRM_CLUTTER_AMP = 3, /* Kennedy clutter-amplitude test (clutter_test.h);
                                     both need TRK_WITH_CLUTTER_TESTS (config.h) */
-    TRK_CONFIRM_VISIBILITY = 4   /* visibility confidence: confirm at pcv >= p_con,
+    TRK_CONFIRM_VISIBILITY = 4,  /* visibility confidence: confirm at pcv >= p_con,
                                     reject at pcv < p_term (visibility.h); needs
                                     track_visibility */
+    TRK_CONFIRM_EXISTENCE = 5    /* existence vis.pv (IPDA, with the initial value of
+                                    trk_init_params): confirm at pv >= p_confirm; reject
+                                    when its odds fell below reject_odds_ratio times
+                                    the track's initial odds (a Wald lower threshold on
+                                    the likelihood ratio since initiation); needs
+                                    track_visibility */
+};
+
+struct trk_existence_confirm_params {
+    trk_real p_confirm;          /* (0, 1) */
+    trk_real reject_odds_ratio;  /* [0, 1), 0 = never reject */
 };
 
 struct trk_confirm_params {
@@ -118,6 +141,7 @@ struct trk_confirm_params {
         struct trk_sprt_params sprt;
         struct trk_clutter_chi2_params chi2;
         struct trk_clutter_amp_params amp;
+        struct trk_existence_confirm_params existence;
     } u;
 };
 
@@ -126,7 +150,12 @@ enum trk_term_method {
     TRK_TERM_KN = 0,      /* K-of-N (term_kn.h); K = 0 is "N consecutive misses" */
     TRK_TERM_PAGE = 1,    /* Page CUSUM with the fluctuating-P_D HMM (term_page.h) */
     TRK_TERM_SHIRYAEV = 2, /* Shiryaev rule with the same HMM (term_shiryaev.h) */
-    TRK_TERM_VISIBILITY = 3 /* visibility confidence pcv < p_term (visibility.h) */
+    TRK_TERM_VISIBILITY = 3, /* visibility confidence pcv < p_term (visibility.h) */
+    TRK_TERM_EXISTENCE = 4   /* existence vis.pv < p_terminate; needs track_visibility */
+};
+
+struct trk_existence_term_params {
+    trk_real p_terminate;        /* (0, 1) */
 };
 
 struct trk_term_params {
@@ -135,6 +164,7 @@ struct trk_term_params {
         struct trk_kn_params kn;
         struct trk_page_params page;
         struct trk_shiryaev_params shiryaev;
+        struct trk_existence_term_params existence;
     } u;
 };
 
@@ -171,6 +201,47 @@ union trk_term_model {
     struct trk_shiryaev_model shiryaev;
 };
 
+/* How tracks start (step 5 above). */
+enum trk_init_method {
+    TRK_INIT_SINGLE_POINT = 0, /* every unexplained detection starts a track */
+    TRK_INIT_TWO_POINT = 1     /* two detections of different scans within the velocity gate */
+};
+
+/* Initiation and the existence a new track starts with.
+ *
+ * Two-point initiation (Bar-Shalom, Willett & Tian, "Tracking and Data
+ * Fusion" 2011, two-point differencing): candidate c (time t_c, R_c) and
+ * detection z (t, R), dt = t - t_c > 0, pair when
+ *   |z - z_c| <= max_speed_mps dt + sqrt(gamma lambda_max(R_c + R))
+ * (gamma the sensor's gate); the track starts at x = z, v = (z - z_c) / dt,
+ * P_pp = R, P_pv = R / dt, P_vv = (R_c + R) / dt^2 (per axis pair, with the
+ * xy terms). A detection pairs with the candidate of the highest amplitude
+ * likelihood ratio, then the nearest; a candidate serves one track. A
+ * candidate pairs with detections of the next max_gap_scans scans (scans
+ * processed by this tracker, any sensor), then it is dropped.
+ *
+ * Initial existence (the track score of Blackman & Popoli, "Design and
+ * Analysis of Modern Tracking Systems" 1999, sec. 6.2: new-target over
+ * false-alarm density, times the amplitude likelihood ratio l^a of each
+ * detection (1 without an amplitude model)), as odds:
+ *   single point: O = beta l^a(z) / lambda
+ *   two points:   O = beta l^a(z_c) / lambda_c * P_D l^a(z) / (lambda A_v),
+ *                 A_v = pi (max_speed_mps dt)^2 (the target's second point is
+ *                 uniform over the reachable disc; a clutter one has density
+ *                 lambda)
+ *   psi0 = O / (1 + O); lambda = 0 gives psi0 = 1.
+ * beta = birth_density_per_m2, lambda the sensor's clutter density, P_D the
+ * sensor's. With birth_density_per_m2 = 0 a track starts at the visibility
+ * parameters' pv0 / pcv0 instead (Kennedy 2008). The existence is
+ * trk_track.vis.pv (needs track_visibility); it orders replacement (lowest
+ * first). Without track_visibility replacement orders by n_hits / n_scans. */
+struct trk_init_params {
+    enum trk_init_method method;
+    trk_real max_speed_mps;           /* two-point velocity gate, > 0 */
+    uint32_t max_gap_scans;           /* two-point: candidate lifetime in scans, >= 1 */
+    trk_real birth_density_per_m2;    /* new targets per m^2 per scan, >= 0 (0: pv0) */
+};
+
 struct trk_tracker_params {
     unsigned n_sensors;                               /* 1 .. TRK_MAX_SENSORS */
     struct trk_sensor_params sensor[TRK_MAX_SENSORS];
@@ -200,6 +271,13 @@ struct trk_tracker_params {
                                                          duplicates. <= gamma: gate only */
     uint32_t max_tentative_scans;                     /* drop a tentative track after this
                                                          many scans (0 = no limit) */
+    struct trk_init_params init;                      /* how tracks start */
+    trk_real max_pos_sigma_ratio;                     /* covariance bound (as Stone Soup's
+                                                         CovarianceBasedDeleter): a track
+                                                         ends (TRK_END_COVARIANCE) when
+                                                         trace of its position covariance
+                                                         > ratio^2 trace R of the scan's
+                                                         sensor; >= 0, 0 = no bound */
 };
 
 /* Tests and their inputs per scan (CONVENTIONS "Track confirmation and
@@ -214,14 +292,16 @@ struct trk_tracker_params {
  * detection) leaves the clutter tests unchanged. Clutter tests never reject:
  * pair them with max_tentative_scans.
  *
- * Defaults: one sensor (pd 0.9, R = 1 m^2 I, lambda 1e-4 /m^2), q = 0.01,
- * P_G 0.99, parametric clutter, velocity prior 5 m/s, max_dt 3600 s,
- * confirm 3-of-5 fixed, terminate after 5 consecutive misses (K/N 0/5),
- * no tentative limit, merge duplicates at d2 <= 4 (4-D), no initiation within
- * d2 18.42 (99.99 %) of a confirmed track, visibility tracked
- * (pv0 0.5, pcv0 0.5, Delta 0.99, Delta_bar 0.01, omega 0.75, p_con 0.9,
- * p_term 0.1). */
+ * The defaults are in trk_tracker_default_params() (src/tracker_params.c),
+ * documented there and in the README; they live in code only. */
 void trk_tracker_default_params(struct trk_tracker_params *p);
+
+/* The configuration the defaults were before existence-based confirmation
+ * (kept for comparison and for users of M/N): the defaults with M/N 3-of-5
+ * confirmation, termination after 5 consecutive misses (K/N 0/5),
+ * single-point initiation at the visibility's pv0, no covariance bound,
+ * and Delta_bar 0.01. */
+void trk_tracker_mn_kn_params(struct trk_tracker_params *p);
 
 /* ---------------------------------------------------------------- tracks */
 
@@ -239,7 +319,8 @@ enum trk_track_end {
     TRK_END_TENTATIVE_AGE,/* tentative longer than max_tentative_scans */
     TRK_END_TERMINATED,   /* confirmed track's termination test fired */
     TRK_END_NUMERICAL,    /* covariance lost positive definiteness */
-    TRK_END_MERGED        /* duplicate of a stronger track (merge_gate_d2) */
+    TRK_END_MERGED,       /* duplicate of a stronger track (merge_gate_d2) */
+    TRK_END_COVARIANCE    /* position uncertainty over max_pos_sigma_ratio */
 };
 
 struct trk_track {
@@ -254,7 +335,10 @@ struct trk_track {
     uint32_t n_misses_in_row;         /* consecutive scans without */
     uint16_t n_gated_last;            /* detections in the gate at the last scan */
     trk_real beta0_last;              /* P(no detection is the target's), last scan */
-    struct trk_visibility vis;        /* visibility / existence (pv, pcv), when tracked */
+    trk_real existence0;              /* existence at initiation (trk_init_params) */
+    struct trk_visibility vis;        /* existence (IPDA) vis.pv and its smoothed
+                                         confidence vis.pcv, when track_visibility:
+                                         the track's quality (trk_init_params) */
     trk_real confirm_stat;            /* current statistic of the confirmation test:
                                          M/N count, SPRT log-LR, clutter-test p-value */
     trk_real term_stat;               /* current statistic of the termination test:
@@ -281,9 +365,24 @@ struct trk_scan_report {
     uint32_t n_init_refused_full;   /* initiations refused: table full */
     uint32_t n_numerical;           /* tracks ended for a numerical failure */
     uint32_t n_merged;              /* tracks ended as duplicates of another */
+    uint32_t n_replaced;            /* tentative tracks whose slot a new track took */
+    uint32_t n_covariance;          /* tracks ended by the covariance bound */
+    uint32_t n_candidates;          /* initiation candidates held after the scan */
+    uint32_t n_candidates_dropped;  /* unexplained detections the store could not hold */
 };
 
 /* ---------------------------------------------------------------- tracker */
+
+/* An unexplained detection kept for two-point initiation. */
+struct trk_candidate {
+    trk_real x_m, y_m;
+    trk_real cov_m2[3];      /* its covariance [xx, xy, yy] (own or the sensor's) */
+    trk_real log_lr;         /* ln l^a (0 without amplitude) */
+    int64_t time_us;
+    uint32_t scan_no;        /* the tracker's scan count when it was seen */
+    uint8_t sensor_id;
+    uint8_t used;            /* paired this scan */
+};
 
 struct trk_tracker {
     struct trk_tracker_params params;
@@ -298,6 +397,10 @@ struct trk_tracker {
     union trk_confirm_model confirm_model;      /* the tests' validated parameters and */
     union trk_term_model term_model;            /* derived constants, shared by all tracks */
     struct trk_track track[TRK_MAX_TRACKS];
+    trk_real max_pos_var_m2[TRK_MAX_SENSORS];   /* covariance bound per sensor (0: none) */
+    uint32_t scan_no;                           /* scans processed (initiation ages) */
+    size_t n_cand;                              /* initiation candidates, sorted by x */
+    struct trk_candidate cand[TRK_MAX_CANDIDATES];
     /* per-scan workspace (contents meaningless between calls) */
     struct {
         size_t n_valid;                                        /* valid detections, */
@@ -326,14 +429,16 @@ struct trk_tracker {
  *   "n_sensors", "clutter", "process_noise_q", "gate_prob",
  *   "init_speed_sigma_mps", "max_dt_s", "merge_gate_d2", "init_exclusion_d2",
  *   "track_visibility", "visibility" (its model refused the parameters),
+ *   "init.method", "init.max_speed_mps", "init.max_gap_scans",
+ *   "init.birth_density_per_m2", "max_pos_sigma_ratio",
  *   "sensor[i].pd", "sensor[i].meas_cov_m2", "sensor[i].clutter_density_per_m2",
  *   "sensor[i].use_amplitude", "sensor[i].amplitude" (no usable model, or its
  *   P_D), i the sensor index;
  *   "confirm.method" (unknown, not built in, or a visibility method without
  *   track_visibility), "confirm.u.mn", "confirm.u.sprt", "confirm.u.chi2",
- *   "confirm.u.amp" (the method's parameters), "confirm.u.sprt.hmm" (fewer
+ *   "confirm.u.amp", "confirm.u.existence" (the method's parameters), "confirm.u.sprt.hmm" (fewer
  *   sensors than the tracker); the same for "term.method", "term.u.kn",
- *   "term.u.page", "term.u.shiryaev", "term.u.page.hmm", "term.u.shiryaev.hmm";
+ *   "term.u.page", "term.u.shiryaev", "term.u.existence", "term.u.page.hmm", "term.u.shiryaev.hmm";
  *   "params" for a NULL p.
  * *field is NULL on success. Statuses as trk_tracker_init. */
 TRK_NODISCARD trk_status trk_tracker_check_params(const struct trk_tracker_params *p, const char **field);

@@ -69,6 +69,11 @@ TRK_NODISCARD trk_status trk_visibility_model_init(struct trk_visibility_model *
  * (CONTINUE). Does nothing when m or v is NULL. */
 void trk_visibility_reset(const struct trk_visibility_model *m, struct trk_visibility *v);
 
+/* Start state of a new track with a given existence pv0 in [0, 1] (the
+ * tracker's initial existence, trk/tracker.h): pv = pv_pred = pcv = pv0.
+ * Does nothing when m or v is NULL. */
+void trk_visibility_reset_to(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pv0);
+
 /* One scan: the visibility test's step. log_sum is the log of the detection
  * sum,
  *   log_sum = ln sum_i (g_D,i / rho) l_i  (-INFINITY: no gated detection;

@@ -24,8 +24,13 @@ void tcfg_defaults(struct tcfg *c)
     for (unsigned s = 1; s < TRK_MAX_SENSORS; s++) c->params.sensor[s] = c->params.sensor[0];
     c->confirm = c->params.confirm.method;
     c->term = c->params.term.method;
-    c->mn = c->params.confirm.u.mn;
-    c->kn = c->params.term.u.kn;
+    c->existence_confirm = c->params.confirm.u.existence; /* the defaults' methods */
+    c->existence_term = c->params.term.u.existence;
+    c->mn.m = 3;
+    c->mn.n = 5;
+    c->mn.mode = TRK_MN_FIXED;
+    c->kn.k = 0;
+    c->kn.n = 5;
     c->sprt.alpha = TRK_REAL_C(0.01);
     c->sprt.beta = TRK_REAL_C(0.1);
     c->sprt.model = TRK_SPRT_FIXED_PD;
@@ -44,6 +49,7 @@ void tcfg_defaults(struct tcfg *c)
     c->hmm.pd_low = TRK_REAL_C(0.3);
     c->hmm.pd_high = TRK_REAL_C(0.9);
     c->hmm.pi0_high = TRK_HMM_PI0_STATIONARY;
+    c->hmm_events = TRK_EVENTS_COMPLETE;
     for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) {
         c->amp[s].model = TCFG_AMP_NONE;
         c->amp[s].k_shape = 1;
@@ -57,6 +63,7 @@ void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out)
     struct trk_hmm_params hp;
     memset(&hp, 0, sizeof hp);
     trk_hmm_params_uniform(&hp, c->params.n_sensors, &c->hmm);
+    hp.events = c->hmm_events; /* SPRT (both P_D models), Page, Shiryaev */
     *out = c->params;
     memset(&out->confirm, 0, sizeof out->confirm);
     memset(&out->term, 0, sizeof out->term);
@@ -70,6 +77,7 @@ void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out)
     case TRK_CONFIRM_CLUTTER_CHI2: out->confirm.u.chi2 = c->clutter_density; break;
     case TRK_CONFIRM_CLUTTER_AMP: out->confirm.u.amp = c->clutter_amplitude; break;
     case TRK_CONFIRM_VISIBILITY: break; /* uses out->visibility */
+    case TRK_CONFIRM_EXISTENCE: out->confirm.u.existence = c->existence_confirm; break;
     }
     out->term.method = c->term;
     switch (c->term) {
@@ -83,6 +91,7 @@ void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out)
         out->term.u.shiryaev.hmm = hp;
         break;
     case TRK_TERM_VISIBILITY: break; /* uses out->visibility */
+    case TRK_TERM_EXISTENCE: out->term.u.existence = c->existence_term; break;
     }
 }
 
@@ -181,9 +190,11 @@ static const struct range R_MAXDT = {0, 1e9, 1, 0};
 static const char *const CLUTTER_NAMES[] = {"parametric", "nonparametric", NULL};
 static const char *const MODE_NAMES[] = {"fixed", "sliding", NULL};
 static const char *const CONFIRM_NAMES[] = {"mn", "sprt", "clutter_density", "clutter_amplitude",
-                                            "visibility", NULL};
-static const char *const TERM_NAMES[] = {"kn", "page", "shiryaev", "visibility", NULL};
+                                            "visibility", "existence", NULL};
+static const char *const TERM_NAMES[] = {"kn", "page", "shiryaev", "visibility", "existence", NULL};
+static const char *const INIT_NAMES[] = {"single_point", "two_point", NULL}; /* enum trk_init_method */
 static const char *const SPRT_MODEL_NAMES[] = {"fixed_pd", "hmm", NULL};
+static const char *const EVENTS_NAMES[] = {"complete", "paper", NULL}; /* enum trk_event_model */
 static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
 
 /* ------------------------------------------------------------------ set */
@@ -278,6 +289,21 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     }
     if (strcmp(key, "merge_gate_d2") == 0) return get_real(v, R_NONNEG, &p->merge_gate_d2, err, n);
     if (strcmp(key, "init_exclusion_d2") == 0) return get_real(v, R_NONNEG, &p->init_exclusion_d2, err, n);
+    /* initiation and the covariance bound */
+    if (strcmp(key, "init.method") == 0) {
+        if (get_name(v, INIT_NAMES, &e, err, n) != 0) return -1;
+        p->init.method = e ? TRK_INIT_TWO_POINT : TRK_INIT_SINGLE_POINT;
+        return 0;
+    }
+    if (strcmp(key, "init.max_speed_mps") == 0) return get_real(v, R_POS, &p->init.max_speed_mps, err, n);
+    if (strcmp(key, "init.max_gap_scans") == 0) {
+        if (get_long(v, 1, LONG_MAX < 4294967295L ? LONG_MAX : 4294967295L, &l, err, n) != 0) return -1;
+        p->init.max_gap_scans = (uint32_t)l;
+        return 0;
+    }
+    if (strcmp(key, "init.birth_density_per_m2") == 0)
+        return get_real(v, R_NONNEG, &p->init.birth_density_per_m2, err, n);
+    if (strcmp(key, "max_pos_sigma_ratio") == 0) return get_real(v, R_NONNEG, &p->max_pos_sigma_ratio, err, n);
     /* visibility (IPDA existence) */
     if (strcmp(key, "visibility") == 0) {
         if (get_long(v, 0, 1, &l, err, n) != 0) return -1;
@@ -297,11 +323,15 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "confirm") == 0) {
         static const enum trk_confirm_method m[] = {TRK_CONFIRM_MN, TRK_CONFIRM_SPRT,
                                                     TRK_CONFIRM_CLUTTER_CHI2, TRK_CONFIRM_CLUTTER_AMP,
-                                                    TRK_CONFIRM_VISIBILITY};
+                                                    TRK_CONFIRM_VISIBILITY, TRK_CONFIRM_EXISTENCE};
         if (get_name(v, CONFIRM_NAMES, &e, err, n) != 0) return -1;
         c->confirm = m[e];
         return 0;
     }
+    if (strcmp(key, "confirm.existence.p_confirm") == 0)
+        return get_real(v, R_PROB_OO, &c->existence_confirm.p_confirm, err, n);
+    if (strcmp(key, "confirm.existence.reject_odds_ratio") == 0)
+        return get_real(v, R_PROB_CO, &c->existence_confirm.reject_odds_ratio, err, n);
     if (strcmp(key, "confirm.mn.m") == 0) {
         if (get_long(v, 1, TRK_MN_MAX_N, &l, err, n) != 0) return -1;
         c->mn.m = (int)l;
@@ -344,11 +374,13 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     /* termination */
     if (strcmp(key, "term") == 0) {
         static const enum trk_term_method m[] = {TRK_TERM_KN, TRK_TERM_PAGE, TRK_TERM_SHIRYAEV,
-                                                 TRK_TERM_VISIBILITY};
+                                                 TRK_TERM_VISIBILITY, TRK_TERM_EXISTENCE};
         if (get_name(v, TERM_NAMES, &e, err, n) != 0) return -1;
         c->term = m[e];
         return 0;
     }
+    if (strcmp(key, "term.existence.p_terminate") == 0)
+        return get_real(v, R_PROB_OO, &c->existence_term.p_terminate, err, n);
     if (strcmp(key, "term.kn.k") == 0) {
         if (get_long(v, 0, TRK_KN_MAX_N - 1, &l, err, n) != 0) return -1;
         c->kn.k = (int)l;
@@ -369,6 +401,11 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "hmm.q_high_low") == 0) return get_real(v, R_PROB_CC, &c->hmm.q_high_low, err, n);
     if (strcmp(key, "hmm.pd_low") == 0) return get_real(v, R_PROB_OO, &c->hmm.pd_low, err, n);
     if (strcmp(key, "hmm.pd_high") == 0) return get_real(v, R_PROB_OO, &c->hmm.pd_high, err, n);
+    if (strcmp(key, "hmm.events") == 0) {
+        if (get_name(v, EVENTS_NAMES, &e, err, n) != 0) return -1;
+        c->hmm_events = e ? TRK_EVENTS_PAPER : TRK_EVENTS_COMPLETE;
+        return 0;
+    }
     if (strcmp(key, "hmm.pi0_high") == 0) {
         if (strcmp(v, "stationary") == 0) {
             c->hmm.pi0_high = TRK_HMM_PI0_STATIONARY;
@@ -443,6 +480,7 @@ static const char *confirm_name(enum trk_confirm_method m)
     case TRK_CONFIRM_CLUTTER_CHI2: return "clutter_density";
     case TRK_CONFIRM_CLUTTER_AMP: return "clutter_amplitude";
     case TRK_CONFIRM_VISIBILITY: return "visibility";
+    case TRK_CONFIRM_EXISTENCE: return "existence";
     }
     return "?";
 }
@@ -454,6 +492,7 @@ static const char *term_name(enum trk_term_method m)
     case TRK_TERM_PAGE: return "page";
     case TRK_TERM_SHIRYAEV: return "shiryaev";
     case TRK_TERM_VISIBILITY: return "visibility";
+    case TRK_TERM_EXISTENCE: return "existence";
     }
     return "?";
 }
@@ -477,7 +516,9 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
         const int conf = f[0] == 'c';
         snprintf(err, n, "%s = %s: refused by the tracker (%s): %s%s", conf ? "confirm" : "term",
                  conf ? confirm_name(c->confirm) : term_name(c->term), f, trk_status_str(st),
-                 method_hint(st, f, conf ? c->confirm == TRK_CONFIRM_VISIBILITY : c->term == TRK_TERM_VISIBILITY));
+                 method_hint(st, f,
+                             conf ? c->confirm == TRK_CONFIRM_VISIBILITY || c->confirm == TRK_CONFIRM_EXISTENCE
+                                  : c->term == TRK_TERM_VISIBILITY || c->term == TRK_TERM_EXISTENCE));
     } else if (strncmp(f, "confirm.", 8) == 0) {
         snprintf(err, n, "confirm = %s: its parameters (confirm.%s.*%s) are refused (%s): %s%s",
                  confirm_name(c->confirm), confirm_name(c->confirm),
@@ -635,6 +676,11 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     fprintf(f, "max_tentative_scans = %lu\n", (unsigned long)p->max_tentative_scans);
     put_num(f, "merge_gate_d2", (double)p->merge_gate_d2);
     put_num(f, "init_exclusion_d2", (double)p->init_exclusion_d2);
+    fprintf(f, "init.method = %s\n", INIT_NAMES[p->init.method == TRK_INIT_TWO_POINT]);
+    put_num(f, "init.max_speed_mps", (double)p->init.max_speed_mps);
+    fprintf(f, "init.max_gap_scans = %lu\n", (unsigned long)p->init.max_gap_scans);
+    put_num(f, "init.birth_density_per_m2", (double)p->init.birth_density_per_m2);
+    put_num(f, "max_pos_sigma_ratio", (double)p->max_pos_sigma_ratio);
     fprintf(f, "visibility = %d\n", p->track_visibility);
     put_num(f, "visibility.pv0", (double)p->visibility.pv0);
     put_num(f, "visibility.pcv0", (double)p->visibility.pcv0);
@@ -644,6 +690,8 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "visibility.p_con", (double)p->visibility.p_con);
     put_num(f, "visibility.p_term", (double)p->visibility.p_term);
     fprintf(f, "confirm = %s\n", confirm_name(c->confirm));
+    put_num(f, "confirm.existence.p_confirm", (double)c->existence_confirm.p_confirm);
+    put_num(f, "confirm.existence.reject_odds_ratio", (double)c->existence_confirm.reject_odds_ratio);
     fprintf(f, "confirm.mn.m = %d\n", c->mn.m);
     fprintf(f, "confirm.mn.n = %d\n", c->mn.n);
     fprintf(f, "confirm.mn.mode = %s\n", MODE_NAMES[c->mn.mode == TRK_MN_SLIDING]);
@@ -657,6 +705,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     fprintf(f, "confirm.clutter_amplitude.kmax = %u\n", c->clutter_amplitude.kmax);
     put_num(f, "confirm.clutter_amplitude.a_min_db", (double)c->clutter_amplitude.a_min_db);
     fprintf(f, "term = %s\n", term_name(c->term));
+    put_num(f, "term.existence.p_terminate", (double)c->existence_term.p_terminate);
     fprintf(f, "term.kn.k = %d\n", c->kn.k);
     fprintf(f, "term.kn.n = %d\n", c->kn.n);
     put_num(f, "term.page.h", (double)c->page.h);
@@ -669,6 +718,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "hmm.pd_high", (double)c->hmm.pd_high);
     if (c->hmm.pi0_high == TRK_HMM_PI0_STATIONARY) fprintf(f, "hmm.pi0_high = stationary\n");
     else put_num(f, "hmm.pi0_high", (double)c->hmm.pi0_high);
+    fprintf(f, "hmm.events = %s\n", EVENTS_NAMES[c->hmm_events == TRK_EVENTS_PAPER]);
     if (c->q2_table[0]) fprintf(f, "q2_table = %s\n", c->q2_table);
     for (unsigned s = 0; s < p->n_sensors; s++) {
         const struct trk_sensor_params *sp = &p->sensor[s];
@@ -703,25 +753,42 @@ void tcfg_help(FILE *f)
             "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
+            "  init.method = two_point|single_point   how tracks start (two_point)\n"
+            "    init.max_speed_mps               two-point velocity gate, > 0 (15)\n"
+            "    init.max_gap_scans               candidate lifetime in scans, >= 1 (1)\n"
+            "    init.birth_density_per_m2        new targets per m^2 per scan: the initial existence,\n"
+            "                                     >= 0, 0 = visibility.pv0 (1e-9)\n"
+            "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
+            "                                    sensor's, 0 = off (20)\n"
             "  visibility = 0|1                  track each track's visibility / existence (1)\n"
             "    visibility.pv0, .pcv0            at initiation (0.5, 0.5)\n"
-            "    visibility.delta_stay, .delta_become   Markov visibility model (0.99, 0.01)\n"
+            "    visibility.delta_stay, .delta_become   Markov visibility model (0.99, 0)\n"
             "    visibility.omega_c               confidence smoothing, [0,1) (0.75)\n"
             "    visibility.p_con, .p_term        confirm at pcv >= p_con, end at pcv < p_term (0.9, 0.1)\n"
-            "  confirm = mn|sprt|clutter_density|clutter_amplitude|visibility   confirmation test (mn)\n"
+            , TRK_MAX_SENSORS);
+    fprintf(f,
+            "  confirm = existence|mn|sprt|clutter_density|clutter_amplitude|visibility   confirmation test (existence)\n"
+            "    confirm.existence.p_confirm, .reject_odds_ratio   confirm at existence >= p, reject when\n"
+            "                                     its odds fell below ratio x the initial odds (0.99, 0.01)\n"
             "    confirm.mn.m, confirm.mn.n       M of N, 1 <= m <= n <= %d (3, 5)\n"
             "    confirm.mn.mode = fixed|sliding  (fixed)\n"
             "    confirm.sprt.alpha, .beta        Wald error probabilities, (0,1), sum < 1 (0.01, 0.1)\n"
             "    confirm.sprt.model = fixed_pd|hmm, confirm.sprt.pd   (fixed_pd, 0.9)\n"
             "    confirm.clutter_density.alpha, .kmax          (0.01, 25)\n"
             "    confirm.clutter_amplitude.alpha, .kmax, .a_min_db   (0.01, 25, 10 dB)\n"
-            "  term = kn|page|shiryaev|visibility  termination test (kn)\n"
+            "  term = existence|kn|page|shiryaev|visibility  termination test (existence)\n"
+            "    term.existence.p_terminate       end at existence < p (0.05)\n"
             "    term.kn.k, term.kn.n             K or fewer hits in the last N, 0 <= k < n (0, 5)\n"
             "    term.page.h                      CUSUM threshold, > 0 (5)\n"
             "    term.shiryaev.beta0, .rho, .h    prior, change rate, log-odds threshold (0.01, 0.01, 4.595)\n"
             "  hmm.p_low_high, hmm.q_high_low, hmm.pd_low, hmm.pd_high, hmm.pi0_high\n"
             "                                    fluctuating-SNR model of sprt(hmm)/page/shiryaev\n"
             "                                    (0.1, 0.1, 0.3, 0.9, stationary)\n"
+            "  hmm.events = complete|paper       what a detection in the gate means under H1 for\n"
+            "                                    sprt (fixed_pd and hmm)/page/shiryaev: target or\n"
+            "                                    clutter (complete), or the target alone as in\n"
+            "                                    Blanding eq 8 (paper; empty gates of a coasting\n"
+            "                                    track then count for it) (complete)\n"
             "  q2_table = FILE                   q2 table (trk-tablegen output)\n"
             "  sensor.N.pd = P                   detection probability, (0,1] (0.9)\n"
             "  sensor.N.meas_cov_m2 = XX, XY, YY measurement covariance, SPD (1, 0, 1)\n"
@@ -732,5 +799,5 @@ void tcfg_help(FILE *f)
             "  sensor.N.amp_table = FILE         amplitude table (trk-tablegen output)\n"
             "Amplitude tables and q2 tables are read and checked at start-up; a bad one\n"
             "stops the program (exit status 2).\n",
-            TRK_MAX_SENSORS, TRK_MN_MAX_N);
+            TRK_MN_MAX_N);
 }

@@ -6,15 +6,20 @@
  * Keys (tcfg_help prints them with defaults and ranges):
  *   sensors, process_noise_q, gate_prob, clutter, init_speed_sigma_mps,
  *   max_dt_s, max_tentative_scans, merge_gate_d2, init_exclusion_d2,
+ *   init.{method,max_speed_mps,max_gap_scans,birth_density_per_m2},
+ *   max_pos_sigma_ratio,
  *   visibility (0|1), visibility.{pv0,pcv0,delta_stay,delta_become,omega_c,p_con,p_term},
- *   confirm = mn | sprt | clutter_density | clutter_amplitude | visibility,
+ *   confirm = existence | mn | sprt | clutter_density | clutter_amplitude | visibility,
+ *     confirm.existence.{p_confirm,reject_odds_ratio},
  *     confirm.mn.{m,n,mode}, confirm.sprt.{alpha,beta,model,pd},
  *     confirm.clutter_density.{alpha,kmax},
  *     confirm.clutter_amplitude.{alpha,kmax,a_min_db}
- *   term = kn | page | shiryaev | visibility,
+ *   term = existence | kn | page | shiryaev | visibility, term.existence.p_terminate,
  *     term.kn.{k,n}, term.page.h, term.shiryaev.{beta0,rho,h}
  *   hmm.{p_low_high,q_high_low,pd_low,pd_high,pi0_high}  (fluctuating-SNR
  *     detection model of SPRT-hmm / Page / Shiryaev, same for every sensor)
+ *   hmm.events = complete | paper  (event model of SPRT (fixed_pd and hmm),
+ *     Page, Shiryaev; trk/hmm_detect.h)
  *   q2_table
  *   sensor.N.{pd,meas_cov_m2,meas_sigma_m,clutter_density_per_m2,
  *             amplitude,k_shape,snr_db,pfa,amp_table}   N = 0 .. sensors-1
@@ -67,9 +72,12 @@ struct tcfg {
     struct trk_clutter_chi2_params clutter_density;
     struct trk_clutter_amp_params clutter_amplitude;
     struct trk_kn_params kn;
+    struct trk_existence_confirm_params existence_confirm;
+    struct trk_existence_term_params existence_term;
     struct trk_page_params page;                  /* .hmm from hmm below */
     struct trk_shiryaev_params shiryaev;          /* .hmm from hmm below */
     struct trk_hmm_sensor_params hmm;             /* same for every sensor */
+    enum trk_event_model hmm_events;              /* hmm.events of sprt/page/shiryaev */
     /* amplitude and q2 */
     struct tcfg_amp amp[TRK_MAX_SENSORS];
     char q2_table[TCFG_PATH_MAX];

@@ -180,6 +180,7 @@ static int8_t confirm_code(const struct trk_tracker_params *p)
     case TRK_CONFIRM_CLUTTER_CHI2: return TRK_TRACK_T_CONFIRM_CLUTTER_DENSITY;
     case TRK_CONFIRM_CLUTTER_AMP: return TRK_TRACK_T_CONFIRM_CLUTTER_AMPLITUDE;
     case TRK_CONFIRM_VISIBILITY: return TRK_TRACK_T_CONFIRM_VISIBILITY;
+    case TRK_CONFIRM_EXISTENCE: return TRK_TRACK_T_CONFIRM_EXISTENCE;
     }
     return 0;
 }
@@ -191,6 +192,7 @@ static int8_t term_code(const struct trk_tracker_params *p)
     case TRK_TERM_PAGE: return TRK_TRACK_T_TERM_PAGE;
     case TRK_TERM_SHIRYAEV: return TRK_TRACK_T_TERM_SHIRYAEV;
     case TRK_TERM_VISIBILITY: return TRK_TRACK_T_TERM_VISIBILITY;
+    case TRK_TERM_EXISTENCE: return TRK_TRACK_T_TERM_EXISTENCE;
     }
     return 0;
 }

@@ -3,7 +3,11 @@
  *                     detections in its gate (public API: trk_cv2_predict +
  *                     trk_pda_update)
  *   scan_64x256       ns per trk_tracker_process_scan with 64 confirmed tracks
- *                     and 256 detections (64 targets + 192 clutter)
+ *                     and 256 detections (64 targets + 192 clutter), the
+ *                     default configuration (two-point initiation, existence)
+ *   scan_64x256_mn_kn the same scans with trk_tracker_mn_kn_params (M/N 2/3
+ *                     here, single-point initiation): the path before issue 14,
+ *                     for the ratio in the same run
  *   sizeof_tracker    bytes of struct trk_tracker at this build's capacities */
 #include <math.h>
 #include <stdio.h>
@@ -85,9 +89,11 @@ struct scan_job {
     struct trk_tracker tk;
     struct trk_detection det[N_SCANS][N_DET];
     struct trk_scan scan[N_SCANS];
+    struct trk_scan_report rep;
+    double n_updated; /* track updates in the timed scans (all repetitions) */
 };
 
-TRK_BENCH(scan_64x256)
+static void scan_bench(const char *name, int mn_kn)
 {
     if (TRK_MAX_TRACKS < N_TGT || TRK_MAX_DETECTIONS < N_DET) {
         bench_print("scan_64x256_skipped_capacity", 0, "-");
@@ -96,12 +102,17 @@ TRK_BENCH(scan_64x256)
     struct scan_job *j = calloc(1, sizeof *j);
     if (!j) return;
     struct trk_tracker_params p;
-    trk_tracker_default_params(&p);
+    if (mn_kn) {
+        trk_tracker_mn_kn_params(&p);
+        p.confirm.u.mn.m = 2;
+        p.confirm.u.mn.n = 3;
+    } else {
+        trk_tracker_default_params(&p);
+    }
     p.sensor[0].pd = TRK_REAL_C(0.9);
     p.sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
     p.process_noise_q = TRK_REAL_C(0.01);
-    p.confirm.u.mn.m = 2;
-    p.confirm.u.mn.n = 3;
+    rs = 42;
     double tx[N_TGT], ty[N_TGT], vx[N_TGT], vy[N_TGT];
     for (int i = 0; i < N_TGT; i++) {
         tx[i] = 150.0 * (i % 8);
@@ -139,7 +150,8 @@ TRK_BENCH(scan_64x256)
         double t0 = bench_now_ns();
         for (int k = 4; k < N_SCANS; k++) {
             j->scan[k].time_us = (int64_t)k * 1000000;
-            if (trk_tracker_process_scan(&j->tk, &j->scan[k], NULL) != TRK_OK) break;
+            if (trk_tracker_process_scan(&j->tk, &j->scan[k], &j->rep) != TRK_OK) break;
+            j->n_updated += j->rep.n_tracks_updated;
         }
         double per = (bench_now_ns() - t0) / (N_SCANS - 4);
         if (per < best) best = per;
@@ -149,9 +161,16 @@ TRK_BENCH(scan_64x256)
             n_conf += t && t->status == TRK_TRACK_CONFIRMED;
         }
     }
-    bench_print("scan_64x256", best, "ns");
-    bench_print("scan_64x256_confirmed_tracks", n_conf, "tracks");
+    char what[64];
+    bench_print(name, best, "ns");
+    snprintf(what, sizeof what, "%s_confirmed_tracks", name);
+    bench_print(what, n_conf, "tracks");
+    snprintf(what, sizeof what, "%s_tracks_per_scan", name);
+    bench_print(what, j->n_updated / (5.0 * (N_SCANS - 4)), "tracks");
     free(j);
 }
+
+TRK_BENCH(scan_64x256) { scan_bench("scan_64x256", 0); }
+TRK_BENCH(scan_64x256_mn_kn) { scan_bench("scan_64x256_mn_kn", 1); }
 
 TRK_BENCH(sizeof_tracker) { bench_print("sizeof_tracker", (double)sizeof(struct trk_tracker), "bytes"); }

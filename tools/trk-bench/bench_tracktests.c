@@ -135,7 +135,7 @@ static void run_hmm(void *a)
     struct job *j = a;
     NEXT(j);
     trk_real lf1;
-    trk_status st = trk_hmm_update(&mod.hmm, &j->hmm, sensor_, pat.det[k_], &lf1);
+    trk_status st = trk_hmm_update(&mod.hmm, &j->hmm, sensor_, pat.det[k_], pat.pfa[k_], &lf1);
     bench_sink((double)lf1 + (double)st);
 }
 static void run_page(void *a)

@@ -19,7 +19,10 @@
  *   5e-16.
  *   H1 (true track): a look detects with P_D of the sensor's current state
  *   (the paper's f1: no false alarm under H1). H0 (false track): a look
- *   detects with the gate's P_FA.
+ *   detects with the gate's P_FA. The tests run the paper's event model too
+ *   (hmm.events = TRK_EVENTS_PAPER, Blanding eq 8 as printed; the library's
+ *   default is the complete model, CONVENTIONS "Complete detection-event
+ *   model"), so that the paper's figures are reproduced.
  *   Every test starts with its initial statistic at the first look after
  *   initiation (Page c_0 = 0, Shiryaev g_0 = logit beta0 with beta0 = 0.5,
  *   rho = 0.005, K/N empty window) and runs on the same detection sequence
@@ -250,6 +253,7 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
                                        (trk_real)c.pd_high, TRK_HMM_PI0_STATIONARY};
     struct trk_page_params pp;
     trk_hmm_params_uniform(&pp.hmm, (unsigned)c.ns, &sp);
+    pp.hmm.events = TRK_EVENTS_PAPER; /* the paper's eq 8, as reproduced here */
     pp.h = (trk_real)c.h_page[c.n_page - 1];
     struct trk_shiryaev_params shp;
     shp.hmm = pp.hmm;

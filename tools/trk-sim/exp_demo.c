@@ -2,10 +2,10 @@
  * `make demo`. A simulated sonar (tools/sim/scenario.h) with K-distributed
  * (heavy-tailed, nu = 1) clutter amplitudes feeds the track table
  * (trk_tracker_process_scan, the code firmware runs) with amplitude-aided
- * association (PDAFAI: the amplitude table made by `trk-tablegen amp`),
- * confirmation by the track's visibility (IPDA existence, Kennedy eqs 21-24,
- * whose likelihood carries the same amplitude ratios; a tentative track lives
- * 10 scans at most) and Shiryaev termination. The tracks are scored
+ * association (PDAFAI: the amplitude table made by `trk-tablegen amp`) and
+ * the library's defaults: two-point initiation, confirmation and termination
+ * by the track's existence (IPDA, Kennedy eqs 21-24, whose likelihood
+ * carries the same amplitude ratios; trk/tracker.h). The tracks are scored
  * against the truth and the position RMSE against the MRE's prediction
  * (toc.h: Brekke eq 27 with q2 of the PDAFAI at this scenario).
  *
@@ -13,8 +13,8 @@
  * at 1.5-2.6 m/s with process noise q = 1e-3 m^2/s^3 (the tracker's model),
  * one of them gone after scan 150 (its track must be terminated); position
  * noise 5 m; P_D = S1(t) of the table (SNR 15 dB, P_FA 1e-2: 0.775); clutter
- * 15 detections per scan on average, uniform (Poisson), amplitudes from the
- * K law. Same seed, same run.
+ * 150 detections per scan on average (heavy clutter; --clutter-count),
+ * uniform (Poisson), amplitudes from the K law. Same seed, same run.
  *
  * Scoring: a confirmed track is on a target at a scan when its position is
  * within --assoc-m of that target's true position; a confirmed track is
@@ -108,7 +108,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
                        "uses DIR/amp_k1_snr15_pfa1e-2.tbl"),
         SIM_OPT_STRING("--amp-table", &amp_table, "FILE", NULL, "another amplitude table (its model, SNR and P_FA)"),
         SIM_OPT_LONG("--scans", &scans, "N", "250", SIM_IN, 10, 100000, "scans, one every 2 s"),
-        SIM_OPT_DOUBLE("--clutter-count", &clutter_per_scan, "N", "15", SIM_IN, 0, 200,
+        SIM_OPT_DOUBLE("--clutter-count", &clutter_per_scan, "N", "150", SIM_IN, 0, 200,
                        "clutter detections per scan over the 2 km x 2 km area\n"
                        "(the mean of a Poisson count)"),
         SIM_OPT_ALIAS("--clutter", "--clutter-count"),
@@ -122,15 +122,15 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     const struct sim_cli cli = {
         "demo", "[options] [--set key=value ...]",
         "trk's main job end to end (`make demo`): a simulated sonar with heavy-tailed (K, nu 1)\n"
-        "clutter through the track table (PDAFAI, confirmation by amplitude-aided visibility,\n"
-        "Shiryaev termination);\n"
+        "clutter through the track table (PDAFAI, the library's defaults: two-point initiation,\n"
+        "existence-based confirmation and termination);\n"
         "prints a summary (tracks confirmed, lost, false; RMSE against the MRE prediction) and\n"
         "writes CSV files and PNG plots.",
         opts, "demo", "DIR", SIM_UNUSED_RUNS | SIM_UNUSED_THREADS,
         "--set key=value: tracker settings (the keys below, as in a config file, e.g.\n"
-        "--set term=page --set confirm=mn), applied after the demo's own: confirm=visibility,\n"
-        "max_tentative_scans=10, init_speed_sigma_mps=3, term=shiryaev with the scenario's\n"
-        "detection model. (A bare key=value operand still works, with a deprecation note.)\n"
+        "--set term=page --set confirm=mn), applied after the demo's own (the scenario's sensor,\n"
+        "and its detection model for the HMM tests). (A bare key=value operand still works,\n"
+        "with a deprecation note.)\n"
         "Writes DIR/detections.csv, truth.csv, tracks.csv, errors.csv, summary.csv,\n"
         "demo_tracks.png (tracks over detections), demo_error.png (error over time).\n",
         take_setting, &set};
@@ -179,28 +179,26 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     /* ---- the tracker: defaults, the demo's settings, then the user's */
     static struct tcfg cfg;
     tcfg_defaults(&cfg);
-    const char *demo_set[] = {"sensor.0.meas_sigma_m", "process_noise_q", "gate_prob", "confirm", "term",
+    /* the library's defaults (existence-based confirmation and termination,
+     * two-point initiation) with the scenario's sensor */
+    const char *demo_set[] = {"sensor.0.meas_sigma_m", "process_noise_q", "gate_prob",
                               "sensor.0.clutter_density_per_m2", "sensor.0.amp_table", "hmm.pd_high",
-                              "hmm.pd_low", "hmm.p_low_high", "hmm.q_high_low", "max_tentative_scans",
-                              "init_speed_sigma_mps"};
-    enum { N_DEMO_SET = 13 };
+                              "hmm.pd_low", "hmm.p_low_high", "hmm.q_high_low"};
+    enum { N_DEMO_SET = 9 };
     char demo_val[N_DEMO_SET][1100];
     snprintf(demo_val[0], sizeof demo_val[0], "%g", sigma);
     snprintf(demo_val[1], sizeof demo_val[1], "%g", q);
     snprintf(demo_val[2], sizeof demo_val[2], "0.99");
-    snprintf(demo_val[3], sizeof demo_val[3], "visibility");
-    snprintf(demo_val[4], sizeof demo_val[4], "shiryaev");
-    snprintf(demo_val[5], sizeof demo_val[5], "%.17g", lambda);
-    snprintf(demo_val[6], sizeof demo_val[6], "%s", table_path);
-    snprintf(demo_val[7], sizeof demo_val[7], "%.6f", pd);
-    /* the termination test's detection model: the scenario's (fixed P_D: both
-     * HMM states alike; fading: Blanding's two states) */
-    if (fluct) snprintf(demo_val[8], sizeof demo_val[8], "0.1");
-    else snprintf(demo_val[8], sizeof demo_val[8], "%.6f", pd);
-    snprintf(demo_val[9], sizeof demo_val[9], "0.1");
-    snprintf(demo_val[10], sizeof demo_val[10], "%g", fluct ? 0.02 : 0.1);
-    snprintf(demo_val[11], sizeof demo_val[11], "10");
-    snprintf(demo_val[12], sizeof demo_val[12], "3");
+    snprintf(demo_val[3], sizeof demo_val[3], "%.17g", lambda);
+    snprintf(demo_val[4], sizeof demo_val[4], "%s", table_path);
+    snprintf(demo_val[5], sizeof demo_val[5], "%.6f", pd);
+    /* the detection model of an HMM termination test chosen with --set:
+     * the scenario's (fixed P_D: both HMM states alike; fading: Blanding's
+     * two states) */
+    if (fluct) snprintf(demo_val[6], sizeof demo_val[6], "0.1");
+    else snprintf(demo_val[6], sizeof demo_val[6], "%.6f", pd);
+    snprintf(demo_val[7], sizeof demo_val[7], "0.1");
+    snprintf(demo_val[8], sizeof demo_val[8], "%g", fluct ? 0.02 : 0.1);
     for (int i = 0; i < N_DEMO_SET; i++)
         if (tcfg_set(&cfg, demo_set[i], demo_val[i], err, sizeof err) != 0) {
             fprintf(stderr, "demo: %s = %s: %s\n", demo_set[i], demo_val[i], err);
@@ -440,8 +438,8 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     if (tg_end[3] > 0) printf(", one gone after scan %ld", tg_end[3]);
     printf("; position noise %g m\n", sigma);
     static const char *const conf_name[] = {"M-of-N", "SPRT", "clutter density test", "clutter amplitude test",
-                                            "visibility (amplitude-aided existence)"};
-    static const char *const term_name[] = {"K-of-N", "Page", "Shiryaev", "visibility"};
+                                            "visibility", "existence (amplitude-aided IPDA)"};
+    static const char *const term_name[] = {"K-of-N", "Page", "Shiryaev", "visibility", "existence"};
     printf("   tracker: PDAFAI (amplitude table %s), confirm by %s, terminate by %s, P_G %g, %d track slots\n",
            table_path, conf_name[cfg.confirm], term_name[cfg.term], (double)tp.gate_prob, TRK_MAX_TRACKS);
     printf("   detections: %ld (%.1f per scan)%s\n", n_det, (double)n_det / (double)scans,
@@ -450,9 +448,9 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     printf("   started %ld tentative tracks, %ld merged duplicates, at most %ld of %d slots live\n", n_started, n_merged,
            max_live, TRK_MAX_TRACKS);
     if (n_refused)
-        printf("   %ld initiations refused while the table was full (tentative tracks on clutter keep their\n"
-               "   slot up to max_tentative_scans = %u scans)\n",
-               n_refused, (unsigned)tp.max_tentative_scans);
+        printf("   %ld initiations refused while the table was full of confirmed tracks or of stronger\n"
+               "   tentative ones\n",
+               n_refused);
     printf("   confirmed %ld: %ld on targets (%ld of them duplicates of a held target, merged or ended), %ld false "
            "(%ld confirmed scans in all)\n",
            n_conf, n_true, n_dup, n_false, false_scans);

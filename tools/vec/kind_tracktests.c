@@ -28,6 +28,13 @@
  * tolerance of 2e-5 normwise relative (abs 1e-6): margin for hidden cases
  * with longer runs.
  *
+ * Event model (CONVENTIONS "Complete detection-event model"): the cases of
+ * tracktests.vec use the paper's form (Blanding eq 8 and the SPRT as
+ * printed); a case of page_hmm, shiryaev_hmm or sprt with `in model complete`
+ * runs the library's complete model (TRK_EVENTS_COMPLETE), any other word
+ * or no `model` line the paper's (TRK_EVENTS_PAPER); a numeric `model` is
+ * an error.
+ *
  * Decisions: the vector file codes them as numbers (CONVENTIONS "Track
  * confirmation and termination"): confirmation tests +1 confirm, -1 reject,
  * 0 pending; termination tests 1 terminate, 0 continue. The library's
@@ -61,6 +68,17 @@ static int same_decision(struct vec_out *o, size_t t, enum trk_decision out, enu
                     trk_decision_str(state));
 }
 #define FLOAT_FLIP 2e-5    /* relative margin (vs accumulated magnitude) for a tie in float */
+
+/* The case's event model: `model complete` or the paper's (see the top). */
+static int case_events(const struct vec_case *c, struct vec_out *o, enum trk_event_model *ev)
+{
+    const char *w;
+    *ev = TRK_EVENTS_PAPER;
+    if (!vec_has_in(c, "model")) return 0;
+    if (vec_in_word(c, o, "model", &w)) return -1;
+    if (strcmp(w, "complete") == 0) *ev = TRK_EVENTS_COMPLETE;
+    return 0;
+}
 
 static int deltas(const struct vec_case *c, struct vec_out *o, size_t n, const double **d)
 {
@@ -101,7 +119,8 @@ struct hmm_case {
     long ns;
     size_t n;
     const double *sensor, *pfa, *delta;
-    struct trk_hmm_params hp;   /* ns sensors, or 1 in the capacity fallback */
+    struct trk_hmm_params hp;   /* ns sensors, or 1 in the capacity fallback;
+                                   hp.events the case's event model */
     int bank;                   /* ns > TRK_MAX_SENSORS */
     struct trk_hmm_model bank_model;          /* the one-sensor model */
     struct trk_hmm_state bank_state[BANK_MAX]; /* one chain per sensor */
@@ -111,7 +130,9 @@ static int hmm_setup(const struct vec_case *c, struct vec_out *o, struct hmm_cas
 {
     double p, q, pdl, pdh, pi0;
     const double *sensor;
-    if (vec_in_int(c, o, "ns", &hc->ns) || vec_in_array(c, o, "sensor", &sensor, &hc->n) ||
+    enum trk_event_model ev;
+    if (case_events(c, o, &ev) || vec_in_int(c, o, "ns", &hc->ns) ||
+        vec_in_array(c, o, "sensor", &sensor, &hc->n) ||
         vec_in_scalar(c, o, "p", &p) || vec_in_scalar(c, o, "q", &q) ||
         vec_in_scalar(c, o, "pd_low", &pdl) || vec_in_scalar(c, o, "pd_high", &pdh) ||
         vec_in_scalar(c, o, "pi0_high", &pi0) || vec_in_array_n(c, o, "pfa", hc->n, &hc->pfa) ||
@@ -128,6 +149,7 @@ static int hmm_setup(const struct vec_case *c, struct vec_out *o, struct hmm_cas
                                              (trk_real)pdh, (trk_real)pi0};
     hc->bank = hc->ns > TRK_MAX_SENSORS;
     trk_hmm_params_uniform(&hc->hp, hc->bank ? 1 : (unsigned)hc->ns, &sp);
+    hc->hp.events = ev;
     if (hc->bank) {
         trk_status st = trk_hmm_model_init(&hc->bank_model, &hc->hp);
         if (st != TRK_OK) return vec_fail(o, "trk_hmm_model_init: %s", trk_status_str(st));
@@ -143,7 +165,8 @@ static int bank_s(struct hmm_case *hc, struct vec_out *o, size_t t, trk_real *s,
     trk_real lf0, lf1;
     trk_status st = trk_hmm_log_f0(hc->delta[t] != 0, (trk_real)hc->pfa[t], &lf0);
     if (st == TRK_OK)
-        st = trk_hmm_update(&hc->bank_model, &hc->bank_state[i], 0, hc->delta[t] != 0, &lf1);
+        st = trk_hmm_update(&hc->bank_model, &hc->bank_state[i], 0, hc->delta[t] != 0,
+                            (trk_real)hc->pfa[t], &lf1);
     if (st != TRK_OK) return vec_fail(o, "scan %zu: %s", t + 1, trk_status_str(st));
     *s = lf0 - lf1;
     *post = (double)hc->bank_state[i].post_high[0];
@@ -263,8 +286,9 @@ TRK_VEC_KIND(sprt, 1e-6, 2e-5, VEC_FAST)
     double pd, alpha, beta;
     const double *pfa, *delta;
     size_t n;
-    if (vec_in_scalar(c, o, "pd", &pd) || vec_in_scalar(c, o, "alpha", &alpha) ||
-        vec_in_scalar(c, o, "beta", &beta) || vec_in_array(c, o, "pfa", &pfa, &n) ||
+    enum trk_event_model ev;
+    if (case_events(c, o, &ev) || vec_in_scalar(c, o, "pd", &pd) ||
+        vec_in_scalar(c, o, "alpha", &alpha) || vec_in_scalar(c, o, "beta", &beta) || vec_in_array(c, o, "pfa", &pfa, &n) ||
         deltas(c, o, n, &delta))
         return -1;
     if (complement_unrepresentable(o, "pd", pd)) return VEC_NOT_APPLICABLE;
@@ -274,6 +298,7 @@ TRK_VEC_KIND(sprt, 1e-6, 2e-5, VEC_FAST)
     p.beta = (trk_real)beta;
     p.model = TRK_SPRT_FIXED_PD;
     p.pd = (trk_real)pd;
+    p.hmm.events = ev; /* hmm.events applies to fixed P_D too */
     static struct trk_sprt_model m;
     struct trk_sprt s;
     trk_status st = trk_sprt_model_init(&m, &p);

@@ -1,0 +1,412 @@
+/* tracker_initiate_impl.h (private) - step 5 of the scan: initiation
+ * (trk/tracker.h, struct trk_init_params): the candidate store, two-point and
+ * single-point starts, the initial existence, and the slot a new track
+ * takes (free, else the weakest tentative track's).
+ *
+ * Included by tracker.c only (the layout of struct trk_tracker depends on
+ * config.h options; see tracker_update_impl.h). */
+#ifndef TRK_TRACKER_INITIATE_IMPL_H
+#define TRK_TRACKER_INITIATE_IMPL_H
+
+#include <string.h>
+
+#include "tracker_impl.h"
+
+/* What initiation knows of the table within one scan (initiation only
+ * fills slots): no free slot below free_from; no_tentative once a search
+ * found the table full of confirmed (or terminated) tracks. */
+struct slots {
+    size_t free_from;
+    int no_tentative;
+};
+
+/* What bounds the velocity gates of the store's candidates in a scan. */
+struct cand_reach {
+    trk_real dt_max_s;   /* the oldest candidate's gap */
+    trk_real var_max_m2; /* the largest trace of a candidate's covariance */
+};
+
+static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan);
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
+                           const trk_real *r_j, const struct cand_reach *reach);
+static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t c, size_t j,
+                      const trk_real *r_j, struct trk_scan_report *rep);
+static int start_single(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t j,
+                        const trk_real *r_j, struct trk_scan_report *rep);
+static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
+                             struct trk_scan_report *rep);
+static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
+                       struct trk_scan_report *rep);
+
+/* Workspace detection j's covariance (its own or the sensor's) into r. */
+static void detection_r(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real *r)
+{
+    const struct trk_detection *d = &scan->detections[t->ws.src[j]];
+    if (d->has_cov) {
+        TRK_CHECKED(trk_i_cov2_unpack(d->cov_m2, r)); /* checked at load */
+    } else {
+        for (int i = 0; i < NZ * NZ; i++) r[i] = t->r[scan->sensor_id][i];
+    }
+}
+
+/* Every valid detection no track used starts a track (single point), or
+ * pairs with a candidate (two points); the unpaired ones become candidates. */
+static void initiate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
+{
+    const int two_point = t->params.init.method == TRK_INIT_TWO_POINT;
+    size_t n_new = 0;
+    struct slots sl = {0, 0};
+    struct cand_reach reach = {0, 0};
+    if (two_point) reach = expire_candidates(t, scan);
+    for (size_t j = 0; j < t->ws.n_valid; j++) {
+        if (t->ws.used[j]) continue;
+        trk_real r_j[NZ * NZ];
+        detection_r(t, scan, j, r_j);
+        if (!two_point) {
+            (void)start_single(t, &sl, scan, j, r_j, rep);
+            continue;
+        }
+        const long c = best_candidate(t, scan, j, r_j, &reach);
+        if (c >= 0 && start_pair(t, &sl, scan, (size_t)c, j, r_j, rep)) continue;
+        t->ws.cand[n_new++] = (uint16_t)j; /* the gated-set scratch is free by now */
+    }
+    if (two_point) store_candidates(t, scan, t->ws.cand, n_new, rep);
+    rep->n_candidates = (uint32_t)t->n_cand;
+}
+
+/* ------------------------------------------------------------------ existence and slots */
+
+/* logistic(lo) without overflow: +inf -> 1, -inf -> 0 */
+static trk_real logistic(trk_real lo)
+{
+    return lo >= 0 ? 1 / (1 + trk_exp(-lo)) : trk_exp(lo) / (1 + trk_exp(lo));
+}
+
+/* ln(l^a / lambda) of a detection of sensor s (+inf when lambda = 0). */
+static trk_real log_lr_over_clutter(const struct trk_tracker *t, unsigned s, trk_real log_lr)
+{
+    const trk_real lambda = t->pda[s].params.clutter_density;
+    return lambda > 0 ? log_lr - trk_log(lambda) : (trk_real)INFINITY;
+}
+
+/* The ranking of replacement: existence, or n_hits / n_scans without it. */
+static trk_real quality(const struct trk_tracker *t, const struct trk_track *tr)
+{
+    return t->params.track_visibility ? tr->vis.pv : (trk_real)tr->n_hits / (trk_real)tr->n_scans;
+}
+
+/* Can a new track get a slot at all? (Cheap: before its existence is
+ * computed.) Counts the refusal when not. */
+static int slot_possible(const struct trk_tracker *t, const struct slots *sl, struct trk_scan_report *rep)
+{
+    if (t->n_live < TRK_MAX_TRACKS || !sl->no_tentative) return 1;
+    rep->n_init_refused_full++;
+    return 0;
+}
+
+/* A slot for a new track of quality q: a free one, else the weakest
+ * tentative track's when it is weaker than q (replaced, counted); NULL and
+ * counted when there is none. */
+static struct trk_track *take_slot(struct trk_tracker *t, struct slots *sl, trk_real q, struct trk_scan_report *rep)
+{
+    if (t->n_live < TRK_MAX_TRACKS)
+        for (size_t i = sl->free_from; i < TRK_MAX_TRACKS; i++)
+            if (t->track[i].status == TRK_TRACK_FREE) {
+                sl->free_from = i + 1;
+                t->n_live++;
+                return &t->track[i];
+            }
+    struct trk_track *weakest = NULL;
+    trk_real q_weakest = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        struct trk_track *tr = &t->track[i];
+        if (tr->status != TRK_TRACK_TENTATIVE) continue;
+        const trk_real qi = quality(t, tr);
+        if (!weakest || qi < q_weakest) weakest = tr, q_weakest = qi;
+    }
+    sl->no_tentative = weakest == NULL;
+    if (weakest && q_weakest < q) {
+        rep->n_replaced++;
+        return weakest;
+    }
+    rep->n_init_refused_full++;
+    return NULL;
+}
+
+/* A new tentative track in tr from n_points detections (the latest at the
+ * scan time), existence psi0 (NaN: the visibility parameters' pv0); the
+ * caller sets x and P. M/N counts each point as a detected look; the SPRT
+ * and the clutter tests start with the first update. */
+static void new_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, trk_real psi0,
+                      uint32_t n_points, struct trk_scan_report *rep)
+{
+    tr->id = t->next_id;
+    t->next_id = t->next_id == UINT32_MAX ? 1 : t->next_id + 1;
+    tr->status = TRK_TRACK_TENTATIVE;
+    tr->end_reason = TRK_END_NONE;
+    tr->time_us = scan->time_us;
+    tr->n_scans = n_points;
+    tr->n_hits = n_points;
+    tr->n_misses_in_row = 0;
+    tr->n_gated_last = 1;
+    tr->beta0_last = 0;
+    tr->term_stat = 0;
+    if (!t->params.track_visibility) {
+        memset(&tr->vis, 0, sizeof tr->vis);
+    } else if (isnan(psi0)) {
+        trk_visibility_reset(&t->vis_model, &tr->vis);
+    } else {
+        trk_visibility_reset_to(&t->vis_model, &tr->vis, psi0);
+    }
+    tr->existence0 = tr->vis.pv;
+    trk_i_confirm_start(t, tr);
+    rep->n_started++;
+    if (t->params.confirm.method == TRK_CONFIRM_MN) {
+        struct trk_look look = {0};
+        look.detected = 1;
+        look.sensor_id = scan->sensor_id;
+        look.n_gated = 1;
+        for (uint32_t k = 0; k < n_points && tr->status == TRK_TRACK_TENTATIVE; k++) step_tests(t, tr, &look, rep);
+    }
+}
+
+/* The existence a new track starts with from ln O (trk_init_params), or NaN
+ * (pv0) when birth_density_per_m2 is 0. */
+static trk_real initial_existence(const struct trk_tracker *t, trk_real log_odds_without_beta)
+{
+    const trk_real beta = t->params.init.birth_density_per_m2;
+    return beta > 0 ? logistic(trk_log(beta) + log_odds_without_beta) : (trk_real)NAN;
+}
+
+/* The quality take_slot compares for a new track of existence psi0. */
+static trk_real new_quality(const struct trk_tracker *t, trk_real psi0)
+{
+    if (!t->params.track_visibility) return 1;
+    return isnan(psi0) ? t->vis_model.params.pv0 : psi0;
+}
+
+/* ------------------------------------------------------------------ single point */
+
+/* A track at workspace detection j: position and its covariance from it,
+ * velocity from the zero-mean prior. 0 when no slot was free. */
+static int start_single(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t j,
+                        const trk_real *r_j, struct trk_scan_report *rep)
+{
+    if (!slot_possible(t, sl, rep)) return 0;
+    const trk_real psi0 = initial_existence(t, log_lr_over_clutter(t, scan->sensor_id, t->ws.log_lr[j]));
+    struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
+    if (!tr) return 0;
+    const trk_real vv = t->params.init_speed_sigma_mps * t->params.init_speed_sigma_mps;
+    tr->x[X] = t->ws.x[j];
+    tr->x[VX] = 0;
+    tr->x[Y] = t->ws.y[j];
+    tr->x[VY] = 0;
+    for (int i = 0; i < NX * NX; i++) tr->p[i] = 0;
+    tr->p[P(X, X)] = r_j[S(ZX, ZX)];
+    tr->p[P(X, Y)] = tr->p[P(Y, X)] = r_j[S(ZX, ZY)];
+    tr->p[P(Y, Y)] = r_j[S(ZY, ZY)];
+    tr->p[P(VX, VX)] = tr->p[P(VY, VY)] = vv;
+    new_track(t, tr, scan, psi0, 1, rep);
+    return 1;
+}
+
+/* ------------------------------------------------------------------ two points */
+
+/* Largest eigenvalue of a 2x2 symmetric matrix. */
+static trk_real lambda_max2(const trk_real *a)
+{
+    const trk_real m = (a[S(ZX, ZX)] + a[S(ZY, ZY)]) / 2, h = (a[S(ZX, ZX)] - a[S(ZY, ZY)]) / 2;
+    return m + trk_sqrt(h * h + a[S(ZX, ZY)] * a[S(ZX, ZY)]);
+}
+
+static void candidate_r(const struct trk_candidate *c, trk_real *r)
+{
+    TRK_CHECKED(trk_i_cov2_unpack(c->cov_m2, r)); /* stored from a checked detection */
+}
+
+/* Drop the candidates older than max_gap_scans (the store stays sorted);
+ * the bounds of the others' velocity gates. */
+static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan)
+{
+    struct cand_reach r = {0, 0};
+    size_t n = 0;
+    for (size_t i = 0; i < t->n_cand; i++) {
+        struct trk_candidate *c = &t->cand[i];
+        if (t->scan_no - c->scan_no > t->params.init.max_gap_scans) continue;
+        const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
+        const trk_real var = c->cov_m2[TRK_COV2_XX] + c->cov_m2[TRK_COV2_YY];
+        if (dt > r.dt_max_s) r.dt_max_s = dt;
+        if (var > r.var_max_m2) r.var_max_m2 = var;
+        t->cand[n] = *c;
+        t->cand[n].used = 0;
+        n++;
+    }
+    t->n_cand = n;
+    return r;
+}
+
+/* The first candidate with x >= x_lo (the store is sorted by x). */
+static size_t lower_bound_x(const struct trk_tracker *t, trk_real x_lo)
+{
+    size_t lo = 0, hi = t->n_cand;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (t->cand[mid].x_m < x_lo) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* The candidate detection j pairs with (trk_init_params: within the velocity
+ * gate; highest ln l^a, then nearest), or -1. The x-window bounds every
+ * candidate's velocity gate (lambda_max(R_c + R_j) <= tr R_c + lambda_max(R_j)). */
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
+                           const trk_real *r_j, const struct cand_reach *cr)
+{
+    const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
+    const trk_real xj = t->ws.x[j], yj = t->ws.y[j];
+    const trk_real reach =
+        (vmax * cr->dt_max_s + trk_sqrt(gamma * (cr->var_max_m2 + lambda_max2(r_j)))) * TRK_REAL_C(1.0001);
+    long best = -1;
+    trk_real best_llr = 0, best_d2 = 0;
+    for (size_t i = lower_bound_x(t, xj - reach); i < t->n_cand && t->cand[i].x_m <= xj + reach; i++) {
+        const struct trk_candidate *c = &t->cand[i];
+        if (c->used || trk_fabs(yj - c->y_m) > reach) continue;
+        const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
+        if (!(dt > 0)) continue;
+        trk_real r_sum[NZ * NZ];
+        candidate_r(c, r_sum);
+        for (int k = 0; k < NZ * NZ; k++) r_sum[k] += r_j[k];
+        const trk_real dx = xj - c->x_m, dy = yj - c->y_m, d2 = dx * dx + dy * dy;
+        const trk_real lim = vmax * dt + trk_sqrt(gamma * lambda_max2(r_sum));
+        if (d2 > lim * lim) continue;
+        if (best < 0 || c->log_lr > best_llr || (c->log_lr == best_llr && d2 < best_d2))
+            best = (long)i, best_llr = c->log_lr, best_d2 = d2;
+    }
+    return best;
+}
+
+/* A track from candidate c and workspace detection j (two-point
+ * differencing, trk_init_params): x = z_j, v = (z_j - z_c) / dt,
+ * P_pp = R_j, P_pv = R_j / dt, P_vv = (R_c + R_j) / dt^2. 0 when no slot. */
+static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t ci, size_t j,
+                      const trk_real *r_j, struct trk_scan_report *rep)
+{
+    if (!slot_possible(t, sl, rep)) return 0;
+    struct trk_candidate *c = &t->cand[ci];
+    const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
+    const trk_real vdt = t->params.init.max_speed_mps * dt;
+    /* ln O without beta: ln(l_c / lambda_c) + ln(P_D l_j / (lambda_j A_v)) */
+    const trk_real pi = TRK_REAL_C(3.14159265358979323846);
+    const trk_real log_odds = log_lr_over_clutter(t, c->sensor_id, c->log_lr) +
+                              trk_log(t->pda[scan->sensor_id].params.pd) - trk_log(pi * vdt * vdt) +
+                              log_lr_over_clutter(t, scan->sensor_id, t->ws.log_lr[j]);
+    const trk_real psi0 = initial_existence(t, log_odds);
+    struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
+    if (!tr) return 0;
+    trk_real r_c[NZ * NZ];
+    candidate_r(c, r_c);
+    const int pos[NZ] = {X, Y}, vel[NZ] = {VX, VY};
+    for (int a = 0; a < NZ; a++) {
+        tr->x[pos[a]] = a == ZX ? t->ws.x[j] : t->ws.y[j];
+        tr->x[vel[a]] = (tr->x[pos[a]] - (a == ZX ? c->x_m : c->y_m)) / dt;
+        for (int b = 0; b < NZ; b++) {
+            const trk_real rj = r_j[S(a, b)];
+            tr->p[P(pos[a], pos[b])] = rj;
+            tr->p[P(pos[a], vel[b])] = tr->p[P(vel[a], pos[b])] = rj / dt;
+            tr->p[P(vel[a], vel[b])] = (r_c[S(a, b)] + rj) / (dt * dt);
+        }
+    }
+    c->used = 1;
+    new_track(t, tr, scan, psi0, 2, rep);
+    return 1;
+}
+
+/* ------------------------------------------------------------------ the store */
+
+/* Sort idx[0..n) by the workspace x of the detection (heap sort: no
+ * recursion, n log n). */
+static void sort_by_x(const struct trk_tracker *t, uint16_t *idx, size_t n)
+{
+    for (size_t k = n; k-- > 0;) { /* heapify, then pop */
+        for (size_t i = k;;) {
+            size_t c = 2 * i + 1;
+            if (c >= n) break;
+            if (c + 1 < n && t->ws.x[idx[c + 1]] > t->ws.x[idx[c]]) c++;
+            if (!(t->ws.x[idx[c]] > t->ws.x[idx[i]])) break;
+            const uint16_t tmp = idx[i];
+            idx[i] = idx[c], idx[c] = tmp, i = c;
+        }
+    }
+    for (size_t end = n; end-- > 1;) {
+        uint16_t tmp = idx[0];
+        idx[0] = idx[end], idx[end] = tmp;
+        for (size_t i = 0;;) {
+            size_t c = 2 * i + 1;
+            if (c >= end) break;
+            if (c + 1 < end && t->ws.x[idx[c + 1]] > t->ws.x[idx[c]]) c++;
+            if (!(t->ws.x[idx[c]] > t->ws.x[idx[i]])) break;
+            tmp = idx[i];
+            idx[i] = idx[c], idx[c] = tmp, i = c;
+        }
+    }
+}
+
+/* Remove the paired candidates, and while the new ones do not fit, the
+ * oldest scan's. */
+static void make_room(struct trk_tracker *t, size_t n_new)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < t->n_cand; i++)
+        if (!t->cand[i].used) t->cand[n++] = t->cand[i];
+    t->n_cand = n;
+    while (t->n_cand > 0 && t->n_cand + n_new > TRK_MAX_CANDIDATES) {
+        uint32_t oldest = t->cand[0].scan_no;
+        for (size_t i = 1; i < t->n_cand; i++)
+            if (t->scan_no - t->cand[i].scan_no > t->scan_no - oldest) oldest = t->cand[i].scan_no;
+        n = 0;
+        for (size_t i = 0; i < t->n_cand; i++)
+            if (t->cand[i].scan_no != oldest) t->cand[n++] = t->cand[i];
+        t->n_cand = n;
+    }
+}
+
+/* The candidate of workspace detection j. */
+static void fill_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
+                           struct trk_candidate *c)
+{
+    trk_real r[NZ * NZ];
+    detection_r(t, scan, j, r);
+    c->x_m = t->ws.x[j];
+    c->y_m = t->ws.y[j];
+    c->cov_m2[TRK_COV2_XX] = r[S(ZX, ZX)];
+    c->cov_m2[TRK_COV2_XY] = r[S(ZX, ZY)];
+    c->cov_m2[TRK_COV2_YY] = r[S(ZY, ZY)];
+    c->log_lr = t->ws.log_lr[j];
+    c->time_us = scan->time_us;
+    c->scan_no = t->scan_no;
+    c->sensor_id = (uint8_t)scan->sensor_id;
+    c->used = 0;
+}
+
+/* The scan's unpaired detections idx[0..n) into the store, merged in x
+ * order; what does not fit even after evicting every older candidate is
+ * counted as dropped. */
+static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
+                             struct trk_scan_report *rep)
+{
+    make_room(t, n);
+    if (n > TRK_MAX_CANDIDATES - t->n_cand) {
+        rep->n_candidates_dropped += (uint32_t)(n - (TRK_MAX_CANDIDATES - t->n_cand));
+        n = TRK_MAX_CANDIDATES - t->n_cand;
+    }
+    sort_by_x(t, idx, n);
+    size_t i = t->n_cand, k = n, w = t->n_cand + n;
+    while (k > 0) { /* merge from the back, in place */
+        if (i > 0 && t->cand[i - 1].x_m > t->ws.x[idx[k - 1]]) t->cand[--w] = t->cand[--i];
+        else fill_candidate(t, scan, idx[--k], &t->cand[--w]);
+    }
+    t->n_cand += n;
+}
+
+#endif

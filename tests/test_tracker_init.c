@@ -1,0 +1,404 @@
+/* test_tracker_init.c - the track table in clutter (issue 14): two-point
+ * initiation (state, covariance and initial existence in closed form; the
+ * velocity gate; the candidates' lifetime), a full table that replaces its
+ * weakest tentative track and never a confirmed one, existence-based
+ * confirmation and rejection, the covariance bound, no duplicate tracks, and
+ * every termination method ending a vanished target's track within its
+ * design delay at every clutter level. */
+#include "trk_test.h"
+#include "trk/kalman.h"
+#include "trk/tracker.h"
+
+static struct trk_tracker tk; /* static, as in firmware */
+
+#define SCAN_S 4.0
+#define T_US(k) ((int64_t)(k) * 4000000)
+#define X TRK_CV2_X
+#define VX TRK_CV2_VX
+#define Y TRK_CV2_Y
+#define VY TRK_CV2_VY
+#define P(i, j) TRK_CV2_P(i, j)
+#define AREA_M2 9e6 /* the 3 km x 3 km region of the clutter */
+
+/* splitmix64 */
+static uint64_t rng_state;
+static double urand(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+static double nrand(void)
+{
+    double u1 = urand(), u2 = urand();
+    if (u1 < 1e-300) u1 = 1e-300;
+    return sqrt(-2 * log(u1)) * cos(6.283185307179586 * u2);
+}
+
+/* The sonar-like sensor of issue 14: P_D 0.8, R = 25 I, clutter density lambda. */
+static void sonar_params(struct trk_tracker_params *p, double lambda)
+{
+    trk_tracker_default_params(p);
+    p->sensor[0].pd = TRK_REAL_C(0.8);
+    p->sensor[0].meas_cov_m2[0] = p->sensor[0].meas_cov_m2[2] = 25;
+    p->sensor[0].meas_cov_m2[1] = 0;
+    p->sensor[0].clutter_density_per_m2 = (trk_real)lambda;
+    p->process_noise_q = TRK_REAL_C(1e-3);
+}
+
+static struct trk_detection det_at(double x, double y)
+{
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    d.x_m = (trk_real)x;
+    d.y_m = (trk_real)y;
+    return d;
+}
+
+static trk_status run_scan(int k, const struct trk_detection *d, size_t n, struct trk_scan_report *rep)
+{
+    const struct trk_scan scan = {T_US(k), 0, n, d};
+    return trk_tracker_process_scan(&tk, &scan, rep);
+}
+
+static const struct trk_track *only_live_track(void)
+{
+    const struct trk_track *found = NULL;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *tr = trk_tracker_track(&tk, i);
+        if (tr && tr->status != TRK_TRACK_TERMINATED) {
+            assert_null(found);
+            found = tr;
+        }
+    }
+    return found;
+}
+
+/* Two detections 4 s apart start one track: x = z2, v = (z2 - z1) / dt,
+ * P_pp = R, P_pv = R / dt, P_vv = 2 R / dt^2, existence from the odds
+ * beta / lambda * P_D / (lambda pi (v_max dt)^2). */
+static void test_two_point_start(void **state)
+{
+    (void)state;
+    const double lambda = 1e-5, beta = 1e-9, pd = 0.8, vmax = 15;
+    struct trk_tracker_params p;
+    sonar_params(&p, lambda);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_scan_report rep;
+    struct trk_detection d = det_at(100, 200);
+    TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+    assert_int_equal(rep.n_started, 0);
+    assert_int_equal(rep.n_candidates, 1);
+    assert_null(only_live_track());
+    d = det_at(140, 220);
+    TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+    assert_int_equal(rep.n_started, 1);
+    assert_int_equal(rep.n_candidates, 0);
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
+    const double tol = TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12;
+    TRK_ASSERT_NEAR(tr->x[X], 140, 0, tol);
+    TRK_ASSERT_NEAR(tr->x[Y], 220, 0, tol);
+    TRK_ASSERT_NEAR(tr->x[VX], 10, 0, tol);
+    TRK_ASSERT_NEAR(tr->x[VY], 5, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(X, X)], 25, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(X, VX)], 25 / SCAN_S, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(VX, X)], 25 / SCAN_S, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(VX, VX)], 50 / (SCAN_S * SCAN_S), 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(VY, VY)], 50 / (SCAN_S * SCAN_S), 0, tol);
+    assert_true(tr->p[P(X, Y)] == 0 && tr->p[P(X, VY)] == 0 && tr->p[P(VX, VY)] == 0);
+    const double odds = beta / lambda * pd / (lambda * 3.14159265358979323846 * pow(vmax * SCAN_S, 2));
+    TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
+    TRK_ASSERT_NEAR(tr->vis.pv, tr->existence0, 0, 0);
+    assert_int_equal(tr->n_hits, 2);
+}
+
+/* The velocity gate: |dz| <= v_max dt + sqrt(gamma lambda_max(R1 + R2)),
+ * gamma = -2 ln(1 - P_G) = 9.21 for P_G 0.99: 60 + 21.46 = 81.46 m. A
+ * candidate lives max_gap_scans scans. */
+static void test_velocity_gate_and_lifetime(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    sonar_params(&p, 1e-5);
+    const double limit = 60 + sqrt(-2 * log(0.01) * 50);
+    for (int inside = 0; inside <= 1; inside++) {
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        struct trk_scan_report rep;
+        struct trk_detection d = det_at(0, 0);
+        TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+        d = det_at(0.6 * (limit + (inside ? -0.5 : 0.5)), 0.8 * (limit + (inside ? -0.5 : 0.5)));
+        TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+        assert_int_equal(rep.n_started, inside ? 1 : 0);
+        assert_int_equal(rep.n_candidates, inside ? 0 : 2);
+    }
+    /* lifetime: the scan-0 candidate has expired at scan 2 */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_scan_report rep;
+    struct trk_detection d = det_at(0, 0);
+    TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+    TRK_ASSERT_OK(run_scan(1, NULL, 0, &rep));
+    assert_int_equal(rep.n_candidates, 1);
+    d = det_at(50, 0); /* within 2 v_max dt of the first, but two scans later */
+    TRK_ASSERT_OK(run_scan(2, &d, 1, &rep));
+    assert_int_equal(rep.n_started, 0);
+    assert_int_equal(rep.n_candidates, 1);
+    /* with max_gap_scans 2 it pairs */
+    p.init.max_gap_scans = 2;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    d = det_at(0, 0);
+    TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+    TRK_ASSERT_OK(run_scan(1, NULL, 0, &rep));
+    d = det_at(50, 0);
+    TRK_ASSERT_OK(run_scan(2, &d, 1, &rep));
+    assert_int_equal(rep.n_started, 1);
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    TRK_ASSERT_NEAR(tr->x[VX], 50 / (2 * SCAN_S), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
+}
+
+/* A target followed with P_D 1 from scan 0; n_fresh new "clutter pairs" per
+ * scan (a detection near one of the previous scan's, never seen again) keep
+ * the table full of weak tentative tracks. The target's confirmed track is
+ * never replaced, a second target appearing later still gets a track, and
+ * the replacements are counted. */
+static void test_full_table_replaces_weakest(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    sonar_params(&p, 1e-5);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const size_t n_fresh = (TRK_MAX_DETECTIONS - 2) / 2 < TRK_MAX_TRACKS ? (TRK_MAX_DETECTIONS - 2) / 2 : TRK_MAX_TRACKS;
+    static struct trk_detection d[TRK_MAX_DETECTIONS];
+    double fresh_x[TRK_MAX_DETECTIONS], fresh_y[TRK_MAX_DETECTIONS];
+    uint32_t target_id = 0, second_id = 0;
+    size_t n_prev = 0;
+    uint32_t replaced = 0;
+    rng_state = 7;
+    for (int k = 0; k < 40; k++) {
+        size_t n = 0;
+        d[n++] = det_at(-1000 + 10.0 * SCAN_S * k, 0); /* target 1: 10 m/s east */
+        if (k >= 20) d[n++] = det_at(1000, -1000 + 5.0 * SCAN_S * (k - 20)); /* target 2: 5 m/s north */
+        if (k >= 8) { /* once target 1 is confirmed, fill the table */
+            for (size_t i = 0; i < n_prev; i++) d[n++] = det_at(fresh_x[i] + 20, fresh_y[i]);
+            for (size_t i = 0; i < n_fresh && n < TRK_MAX_DETECTIONS; i++) {
+                fresh_x[i] = 20000 + 300.0 * (double)i;
+                fresh_y[i] = 20000 + 300.0 * k;
+                d[n++] = det_at(fresh_x[i], fresh_y[i]);
+            }
+            n_prev = n_fresh;
+        }
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(run_scan(k, d, n, &rep));
+        replaced += rep.n_replaced;
+        int seen_target = 0;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *tr = trk_tracker_track(&tk, i);
+            if (!tr || tr->status != TRK_TRACK_CONFIRMED) continue;
+            if (fabs(tr->x[Y]) < 30 && fabs(tr->x[X] - (-1000 + 10.0 * SCAN_S * k)) < 30) {
+                if (!target_id) target_id = tr->id;
+                assert_int_equal(tr->id, target_id); /* one track, never replaced */
+                seen_target = 1;
+            }
+            if (k >= 20 && fabs(tr->x[X] - 1000) < 30 && fabs(tr->x[Y] - (-1000 + 5.0 * SCAN_S * (k - 20))) < 30)
+                second_id = tr->id;
+        }
+        if (k >= 8) assert_true(seen_target);
+    }
+    assert_true(target_id != 0);
+    assert_true(second_id != 0);
+    if (TRK_MAX_TRACKS < 2 * n_fresh) assert_true(replaced > 0);
+}
+
+/* Tentative tracks on clutter: a pair with nothing after it is rejected
+ * within two scans (its existence odds fall below 1/100 of the initial
+ * ones: each miss multiplies them by at most Delta (1 - P_D P_G) = 0.21). */
+static void test_existence_rejects_clutter_pair(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    sonar_params(&p, 1e-5);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_scan_report rep;
+    struct trk_detection d = det_at(0, 0);
+    TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+    d = det_at(30, 0);
+    TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    TRK_ASSERT_OK(run_scan(2, NULL, 0, &rep));
+    assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
+    TRK_ASSERT_NEAR(tr->vis.pv / (1 - tr->vis.pv),
+                    tr->existence0 / (1 - tr->existence0) * 0.99 * (1 - 0.8 * 0.99), 0, 1e-4);
+    TRK_ASSERT_OK(run_scan(3, NULL, 0, &rep));
+    TRK_ASSERT_OK(run_scan(4, NULL, 0, &rep));
+    assert_int_equal(tr->status, TRK_TRACK_TERMINATED);
+    assert_int_equal(tr->end_reason, TRK_END_REJECTED);
+}
+
+/* Uniform clutter of density lambda over the 3 km region around (0, 0),
+ * appended to d[n..]; at most TRK_MAX_DETECTIONS in all. */
+static size_t add_clutter(struct trk_detection *d, size_t n, double lambda)
+{
+    double mean = lambda * AREA_M2, u = urand(), pk = exp(-mean), cdf = pk;
+    size_t m = 0;
+    while (u > cdf && m < 100000) { /* Poisson by inversion */
+        m++;
+        pk *= mean / (double)m;
+        cdf += pk;
+    }
+    for (size_t i = 0; i < m && n < TRK_MAX_DETECTIONS; i++) d[n++] = det_at(-1500 + 3000 * urand(), -1500 + 3000 * urand());
+    return n;
+}
+
+/* The scans a coasting track needs to pass the covariance bound: its
+ * predicted position variance (no update) from the covariance at the last
+ * detection. An upper bound on the wait of a track that PDA updates with
+ * clutter would not shrink more than the target's detections did. */
+static int covariance_bound_delay(const struct trk_track *tr, const struct trk_tracker_params *p)
+{
+    trk_real x[TRK_CV2_NX], pp[TRK_CV2_NX * TRK_CV2_NX];
+    memcpy(x, tr->x, sizeof x);
+    memcpy(pp, tr->p, sizeof pp);
+    const double bound = p->max_pos_sigma_ratio * p->max_pos_sigma_ratio * 50;
+    for (int k = 1; k < 1000; k++) {
+        TRK_ASSERT_OK(trk_cv2_predict((trk_real)SCAN_S, p->process_noise_q, x, pp));
+        if (pp[P(X, X)] + pp[P(Y, Y)] > bound) return k;
+    }
+    return 1000;
+}
+
+enum term_case { T_EXISTENCE, T_KN, T_PAGE, T_SHIRYAEV, T_VISIBILITY, N_TERM_CASES };
+
+static void set_term(struct trk_tracker_params *p, enum term_case c)
+{
+    struct trk_hmm_params hmm;
+    memset(&hmm, 0, sizeof hmm);
+    const struct trk_hmm_sensor_params fading = {TRK_REAL_C(0.1), TRK_REAL_C(0.02), TRK_REAL_C(0.1),
+                                                 TRK_REAL_C(0.9), TRK_HMM_PI0_STATIONARY};
+    trk_hmm_params_uniform(&hmm, 1, &fading); /* events: complete (0) */
+    switch (c) {
+    case T_EXISTENCE: break; /* the default */
+    case T_KN:
+        p->term.method = TRK_TERM_KN;
+        p->term.u.kn.k = 0;
+        p->term.u.kn.n = 5;
+        break;
+    case T_PAGE:
+        p->term.method = TRK_TERM_PAGE;
+        p->term.u.page.hmm = hmm;
+        p->term.u.page.h = 5;
+        break;
+    case T_SHIRYAEV: /* issue 14's reproduction */
+        p->term.method = TRK_TERM_SHIRYAEV;
+        p->term.u.shiryaev.hmm = hmm;
+        p->term.u.shiryaev.beta0 = TRK_REAL_C(0.01);
+        p->term.u.shiryaev.rho = TRK_REAL_C(0.01);
+        p->term.u.shiryaev.h = TRK_REAL_C(4.59511985013459); /* ln 99 */
+        break;
+    case T_VISIBILITY: /* Kennedy's configuration: visibility confirmation too, pv0 = 0.5 */
+        p->term.method = TRK_TERM_VISIBILITY;
+        p->confirm.method = TRK_CONFIRM_VISIBILITY;
+        p->init.birth_density_per_m2 = 0;
+        break;
+    default: break;
+    }
+}
+
+/* One target detected for 12 scans (every scan), then gone; uniform
+ * clutter from none to the scan capacity. Every termination method ends the
+ * track within its design delay: the scans its test needs on empty gates
+ * (measured at lambda = 0, where K/N 0/5 needs exactly 5), and at any
+ * clutter level at most the covariance bound's delay plus one. */
+static void test_vanished_target_every_method(void **state)
+{
+    (void)state;
+    static const double lambdas[] = {0, 2.2e-6, 1.1e-5, 2.8e-5};
+    static struct trk_detection d[TRK_MAX_DETECTIONS];
+    for (int c = 0; c < N_TERM_CASES; c++) {
+        int empty_delay = -1;
+        for (size_t li = 0; li < sizeof lambdas / sizeof *lambdas; li++) {
+            const double lambda = lambdas[li];
+            struct trk_tracker_params p;
+            sonar_params(&p, lambda > 0 ? lambda : 1e-5); /* the tracker's model keeps clutter */
+            set_term(&p, (enum term_case)c);
+            TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+            rng_state = 1000 + li;
+            uint32_t id = 0;
+            const struct trk_track *tr = NULL;
+            int delay_cov = 0, ended = -1;
+            for (int k = 0; k < 400 && ended < 0; k++) {
+                size_t n = 0;
+                const double tx = -300 + 8.0 * SCAN_S * k, ty = 100 + 3.0 * SCAN_S * k;
+                if (k < 12) d[n++] = det_at(tx + 5 * nrand(), ty + 5 * nrand());
+                n = add_clutter(d, n, lambda);
+                struct trk_scan_report rep;
+                TRK_ASSERT_OK(run_scan(k, d, n, &rep));
+                if (k == 11) { /* the target's confirmed track */
+                    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+                        const struct trk_track *a = trk_tracker_track(&tk, i);
+                        if (a && a->status == TRK_TRACK_CONFIRMED && fabs(a->x[X] - tx) < 30 && fabs(a->x[Y] - ty) < 30)
+                            tr = a, id = a->id;
+                    }
+                    assert_non_null(tr);
+                    delay_cov = covariance_bound_delay(tr, &p);
+                }
+                if (k > 11 && (tr->id != id || tr->status == TRK_TRACK_TERMINATED)) ended = k - 11;
+            }
+            print_message("term %d lambda %.1e: ended %d scans after the last detection (covariance bound %d)\n", c,
+                          lambda, ended, delay_cov);
+            assert_true(ended > 0);
+            if (lambda == 0) {
+                empty_delay = ended;
+                if (c == T_KN) assert_int_equal(ended, 5);
+            } else {
+                assert_true(ended <= (empty_delay > delay_cov ? empty_delay : delay_cov) + 1);
+            }
+        }
+    }
+}
+
+/* No track starts inside the gate of a live track: a target with P_D 0.8 in
+ * clutter of 100 per 9 km^2 never has two confirmed tracks within 50 m. */
+static void test_no_duplicates(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    sonar_params(&p, 1.1e-5);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    static struct trk_detection d[TRK_MAX_DETECTIONS];
+    rng_state = 99;
+    int confirmed_scans = 0;
+    for (int k = 0; k < 100; k++) {
+        size_t n = 0;
+        const double tx = -1000 + 6.0 * SCAN_S * k, ty = -500 + 4.0 * SCAN_S * k;
+        if (urand() < 0.8) d[n++] = det_at(tx + 5 * nrand(), ty + 5 * nrand());
+        n = add_clutter(d, n, 1.1e-5);
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(run_scan(k, d, n, &rep));
+        int near = 0;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *a = trk_tracker_track(&tk, i);
+            if (a && a->status == TRK_TRACK_CONFIRMED && hypot(a->x[X] - tx, a->x[Y] - ty) < 50) near++;
+        }
+        assert_true(near <= 1);
+        confirmed_scans += near;
+    }
+    assert_true(confirmed_scans >= 85);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_two_point_start),
+        cmocka_unit_test(test_velocity_gate_and_lifetime),
+        cmocka_unit_test(test_existence_rejects_clutter_pair),
+        cmocka_unit_test(test_full_table_replaces_weakest),
+        cmocka_unit_test(test_no_duplicates),
+        cmocka_unit_test(test_vanished_target_every_method),
+    };
+    return trk_run_tests("tracker_init", tests, NULL, NULL);
+}
