@@ -24,8 +24,8 @@ static int is_live(const struct trk_track *tr)
     return tr->status == TRK_TRACK_TENTATIVE || tr->status == TRK_TRACK_CONFIRMED;
 }
 
-/* Check the scan; load its detections; per live track, update (predict,
- * gate, PDA) then step its test; merge; initiate. */
+/* Check the scan; load its detections; per live track (confirmed ones
+ * first), update (predict, gate, PDA) then step its test; merge; initiate. */
 trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,
                                     struct trk_scan_report *report)
 {
@@ -38,8 +38,12 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     t->scan_no++;
     free_terminated(t);
     load_detections(t, scan, &rep);
+    /* confirmed tracks first: a tentative track may not use the detections
+     * in a confirmed track's gate (it would become its duplicate) */
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
-        if (is_live(&t->track[i])) update_track(t, &t->track[i], scan, &rep);
+        if (t->track[i].status == TRK_TRACK_CONFIRMED) update_track(t, &t->track[i], scan, &rep);
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+        if (t->track[i].status == TRK_TRACK_TENTATIVE) update_track(t, &t->track[i], scan, &rep);
     if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
     initiate(t, scan, &rep);
     t->last_time_us = scan->time_us;

@@ -22,7 +22,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->max_dt_s = 3600;
     /* existence-based confirmation and termination (README "Defaults") */
     p->confirm.method = TRK_CONFIRM_EXISTENCE;
-    p->confirm.u.existence.p_confirm = TRK_REAL_C(0.99);
+    p->confirm.u.existence.p_confirm = TRK_REAL_C(0.999);
     p->confirm.u.existence.reject_odds_ratio = TRK_REAL_C(0.01);
     p->term.method = TRK_TERM_EXISTENCE;
     p->term.u.existence.p_terminate = TRK_REAL_C(0.05);

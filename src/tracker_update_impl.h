@@ -83,15 +83,21 @@ struct gate {
     struct trk_i_pda_set *set; /* the gated set being filled */
 };
 
+/* Workspace marks (ws.used) of a detection: no track gated it, a
+ * tentative track did or it fell in a confirmed track's exclusion zone (it
+ * starts no track), or a confirmed track gated it (no tentative track may
+ * use it either). */
+enum { USED_NONE = 0, USED_NO_START = 1, USED_CONFIRMED = 2 };
+
 /* Detection j passed the bounding box: the ellipse d2 <= gamma adds it to
  * the gated set with its ln e_i (and its R_j when it has its own, r_j not
- * NULL); gamma < d2 <= g only marks it used, so that it starts no track. */
+ * NULL); gamma < d2 <= g only marks it, so that it starts no track. */
 static void gate_ellipse(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *nu,
                          const trk_real *l_inv, trk_real log_det, const trk_real *r_j)
 {
     const trk_real d2 = trk_i_mahalanobis2(NZ, l_inv, nu);
     if (!trk_gate_inside(d2, gt->gamma)) {
-        if (d2 <= gt->g) t->ws.used[j] = 1; /* the exclusion mark */
+        if (d2 <= gt->g && t->ws.used[j] == USED_NONE) t->ws.used[j] = USED_NO_START; /* the exclusion mark */
         return;
     }
     struct trk_i_pda_set *set = gt->set;
@@ -137,18 +143,21 @@ static void gate(struct trk_tracker *t, const struct trk_track *tr, const struct
     const trk_real wx = trk_sqrt(gt.g * inn->s[S(ZX, ZX)]), wy = trk_sqrt(gt.g * inn->s[S(ZY, ZY)]);
     const trk_real zx = inn->z_pred[ZX], zy = inn->z_pred[ZY];
     const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;
+    const uint8_t *used = t->ws.used;
+    const int tentative = tr->status == TRK_TRACK_TENTATIVE;
     set->n = set->n_shared = 0;
     set->z = t->ws.z;
     set->w = t->ws.w;
     set->r_own = t->ws.r_own;
     for (size_t j = 0; j < n_shared; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
-        if (trk_fabs(nu[ZX]) <= wx && trk_fabs(nu[ZY]) <= wy)
+        if (trk_fabs(nu[ZX]) <= wx && trk_fabs(nu[ZY]) <= wy && !(tentative && used[j] == USED_CONFIRMED))
             gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
     }
     for (size_t j = n_shared; j < n_valid; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
         trk_real r_j[NZ * NZ], l_inv[NZ * NZ], log_det;
+        if (tentative && used[j] == USED_CONFIRMED) continue;
         if (own_box(t, scan, pp, j, gt.g, nu, r_j, l_inv, &log_det)) gate_ellipse(t, &gt, j, nu, l_inv, log_det, r_j);
     }
     set->m_gated = set->n;
@@ -172,7 +181,9 @@ static trk_status update_visibility(const struct trk_tracker *t, const struct tr
 static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
                    const struct trk_i_pda_set *set, const trk_real *x, const trk_real *p)
 {
-    for (size_t i = 0; i < set->n; i++) t->ws.used[t->ws.cand[i]] = 1;
+    const uint8_t mark = tr->status == TRK_TRACK_CONFIRMED ? USED_CONFIRMED : USED_NO_START;
+    for (size_t i = 0; i < set->n; i++)
+        if (t->ws.used[t->ws.cand[i]] < mark) t->ws.used[t->ws.cand[i]] = mark;
     for (int i = 0; i < NX; i++) tr->x[i] = x[i];
     for (int i = 0; i < NX * NX; i++) tr->p[i] = p[i];
     tr->time_us = scan->time_us;

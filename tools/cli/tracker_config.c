@@ -769,7 +769,7 @@ void tcfg_help(FILE *f)
     fprintf(f,
             "  confirm = existence|mn|sprt|clutter_density|clutter_amplitude|visibility   confirmation test (existence)\n"
             "    confirm.existence.p_confirm, .reject_odds_ratio   confirm at existence >= p, reject when\n"
-            "                                     its odds fell below ratio x the initial odds (0.99, 0.01)\n"
+            "                                     its odds fell below ratio x the initial odds (0.999, 0.01)\n"
             "    confirm.mn.m, confirm.mn.n       M of N, 1 <= m <= n <= %d (3, 5)\n"
             "    confirm.mn.mode = fixed|sliding  (fixed)\n"
             "    confirm.sprt.alpha, .beta        Wald error probabilities, (0,1), sum < 1 (0.01, 0.1)\n"

@@ -119,3 +119,33 @@ void mc_mean_ci(const double *x, size_t n, double level, double *mean, double *l
     *lo = m - z * se;
     *hi = m + z * se;
 }
+
+double mc_t(double level, double nu)
+{
+    /* P(|T| <= t) = 1 - I_x(nu/2, 1/2), x = nu / (nu + t^2): increasing in t */
+    double lo = 0, hi = 1;
+    while (hi < 1e12 && 1 - mc_betai(0.5 * nu, 0.5, nu / (nu + hi * hi)) < level) hi *= 2;
+    for (int i = 0; i < 200 && hi - lo > 1e-13 * hi; i++) {
+        const double mid = 0.5 * (lo + hi);
+        if (1 - mc_betai(0.5 * nu, 0.5, nu / (nu + mid * mid)) < level) lo = mid;
+        else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+void mc_mean_ci_t(const double *x, size_t n, double level, double *mean, double *lo, double *hi)
+{
+    if (n == 0) {
+        *mean = *lo = *hi = NAN;
+        return;
+    }
+    double s = 0;
+    for (size_t i = 0; i < n; i++) s += x[i];
+    const double m = s / (double)n;
+    double v = 0;
+    for (size_t i = 0; i < n; i++) v += (x[i] - m) * (x[i] - m);
+    const double h = n > 1 ? mc_t(level, (double)(n - 1)) * sqrt(v / (double)(n - 1) / (double)n) : 0;
+    *mean = m;
+    *lo = m - h;
+    *hi = m + h;
+}

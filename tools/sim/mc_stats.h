@@ -9,6 +9,9 @@
  *                  Binomial(n, p): P(X < lo) <= tail, P(X > hi) <= tail
  *   mc_mean_ci     mean and normal-approximation interval of iid values
  *                  (mean -+ z se, se = s / sqrt(n), z from the level)
+ *   mc_mean_ci_t   the same with Student's t quantile of n - 1 degrees of
+ *                  freedom (few samples, e.g. a mean over 10 seeds):
+ *                  P(|T| <= t) = 1 - I_{nu/(nu+t^2)}(nu/2, 1/2), by bisection
  * Everything in double precision. */
 #ifndef TRK_TOOLS_MC_STATS_H
 #define TRK_TOOLS_MC_STATS_H
@@ -29,5 +32,12 @@ double mc_z(double level);
 
 /* Mean of x[0..n) and its interval at level; n >= 1 (n = 1: lo = hi = mean). */
 void mc_mean_ci(const double *x, size_t n, double level, double *mean, double *lo, double *hi);
+
+/* Two-sided Student t quantile t with P(|T| <= t) = level, nu > 0 degrees of freedom. */
+double mc_t(double level, double nu);
+
+/* Mean of x[0..n) and its Student t interval at level (nu = n - 1); n = 1:
+ * lo = hi = mean; n = 0: all NaN. */
+void mc_mean_ci_t(const double *x, size_t n, double level, double *mean, double *lo, double *hi);
 
 #endif

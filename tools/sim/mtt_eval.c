@@ -77,6 +77,12 @@ static struct mtt_track_state *track_of(struct mtt_eval *e, long id)
 int mtt_eval_scan(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_truth, const struct mtt_obj *est,
                   size_t n_est)
 {
+    return mtt_eval_scan_assign(e, truth, n_truth, est, n_est, NULL);
+}
+
+int mtt_eval_scan_assign(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_truth,
+                         const struct mtt_obj *est, size_t n_est, long *assign_out)
+{
     if (!e || (n_truth && !truth) || (n_est && !est)) return -1;
     double *d = n_truth && n_est ? malloc(n_truth * n_est * sizeof *d) : NULL;
     long *assign = n_truth ? malloc(n_truth * sizeof *assign) : NULL;
@@ -129,6 +135,8 @@ int mtt_eval_scan(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_trut
             k->false_scans++;
         }
     }
+    if (assign_out)
+        for (size_t i = 0; i < n_truth; i++) assign_out[i] = assign[i];
     rc = 0;
 out:
     free(d);

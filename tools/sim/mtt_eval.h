@@ -69,6 +69,11 @@ void mtt_eval_free(struct mtt_eval *e);
  * each list). Returns 0, -1 on bad arguments or no memory. */
 int mtt_eval_scan(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_truth, const struct mtt_obj *est,
                   size_t n_est);
+/* The same, and assign[i] (n_truth entries; may be NULL) = the index in est
+ * of the track assigned to truth[i] in this scan, or -1 (per-target
+ * statistics of the caller: coverage in a window, both of a pair held). */
+int mtt_eval_scan_assign(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_truth,
+                         const struct mtt_obj *est, size_t n_est, long *assign_out);
 void mtt_eval_summary(const struct mtt_eval *e, struct mtt_summary *s);
 
 #endif

@@ -1,0 +1,87 @@
+#!/bin/sh
+# tests/mtt_smoke.sh TRK_SIM - the `make test` step mtt-smoke (mk/mtt.mk): a short
+# `trk-sim mtt --scans 30 --seeds 2 --clutter-count 0,50` run, with 1 and 2 OpenMP
+# threads, and its CSV checked:
+#   - the header: the key columns, then <metric>_mean,_lo,_hi for the metrics below
+#   - exactly the rows (capacity, config, clutter) = (one capacity) x {new, old} x {0, 50},
+#     seeds 2, scans 30, amplitude 1
+#   - per row and metric lo <= mean <= hi; coverage, turn/pair/cross fractions in [0, 1];
+#     GOSPA and its parts >= 0; clutter per scan = the count asked for unless capped;
+#     detections counted by the tracker = the scan sizes (30 x (clutter + targets'))
+#   - at clutter 0 the two configurations hold the targets: coverage > 0.3, every
+#     target confirmed at some scan
+#   - every column but the CPU time identical with 1 and 2 threads
+set -u
+sim=$1
+d=$(mktemp -d) || exit 1
+trap 'rm -rf "$d"' EXIT
+fail() {
+    echo "mtt-smoke: FAILED: $*"
+    exit 1
+}
+for t in 1 2; do
+    "$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads $t --quiet --no-plot \
+        --out "$d/m$t" >"$d/out$t.txt" 2>&1 || { cat "$d/out$t.txt"; fail "trk-sim mtt exited with $?"; }
+done
+csv=$d/m1.csv
+[ -f "$csv" ] || fail "no CSV written"
+awk -F, -v want_metrics="gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 scans_to_confirm never_confirmed coverage turn_coverage parallel_both cross_both false_tracks_per_1000_scans false_track_scans_per_100 duplicate_track_scans_per_100 fragmentations id_switches rmse_m cpu_us_per_scan rep_n_init_refused_full" '
+function bad(msg) { print "mtt-smoke: FAILED: " msg; err = 1; exit 1 }
+NR == 1 {
+    if ($1 != "capacity" || $2 != "config" || $3 != "clutter" || $4 != "seeds" || $5 != "scans" || $6 != "amplitude")
+        bad("header starts " $1 "," $2 "," $3 "," $4 "," $5 "," $6)
+    ncol = NF
+    for (i = 1; i <= NF; i++) col[$i] = i
+    n = split(want_metrics, w, " ")
+    for (k = 1; k <= n; k++)
+        for (p = 1; p <= 3; p++) {
+            c = w[k] (p == 1 ? "_mean" : p == 2 ? "_lo" : "_hi")
+            if (!(c in col)) bad("no column " c)
+        }
+    if ((NF - 6) % 3 != 0) bad("metric columns not in threes: " NF " columns")
+    next
+}
+{
+    rows++
+    if (NF != ncol) bad("row " NR ": " NF " fields")
+    if ($1 !~ /^[0-9]+$/ || $1 < 1) bad("row " NR ": capacity " $1)
+    if (cap == "") cap = $1
+    if ($1 != cap) bad("two capacities in one run")
+    if ($4 != 2 || $5 != 30 || $6 != 1) bad("row " NR ": seeds/scans/amplitude " $4 "/" $5 "/" $6)
+    key = $2 "/" $3
+    if (key in seen) bad("row " key " twice")
+    seen[key] = 1
+    for (i = 7; i + 2 <= NF; i += 3) {
+        if ($i == "nan" || $i == "-nan") continue
+        if (!($(i + 1) <= $i + 1e-9 * (1 + ($i < 0 ? -$i : $i)) && $i <= $(i + 2) + 1e-9 * (1 + ($i < 0 ? -$i : $i))))
+            bad("row " key ": column " i " mean " $i " not in [" $(i + 1) ", " $(i + 2) "]")
+    }
+    split("coverage turn_coverage parallel_both cross_both", f01, " ")
+    for (k in f01) { v = $(col[f01[k] "_mean"]); if (v != "nan" && (v < 0 || v > 1)) bad(key ": " f01[k] " " v) }
+    split("gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 rmse_m", fpos, " ")
+    for (k in fpos) if ($(col[fpos[k] "_mean"]) < 0) bad(key ": " fpos[k] " < 0")
+    cl = $(col["clutter_per_scan_mean"])
+    if ($(col["clutter_capped_scans_mean"]) == 0 && cl != $3) bad(key ": clutter per scan " cl ", asked " $3)
+    if (cl > $3) bad(key ": clutter per scan " cl " > " $3)
+    dets = $(col["rep_n_detections_mean"])
+    if (dets < 30 * cl || dets > 30 * (cl + 8)) bad(key ": " dets " detections in 30 scans at clutter " cl)
+    if ($3 == 0) {
+        if ($(col["coverage_mean"]) <= 0.3) bad(key ": coverage " $(col["coverage_mean"]))
+        if ($(col["never_confirmed_mean"]) != 0) bad(key ": targets never confirmed " $(col["never_confirmed_mean"]))
+    }
+}
+END {
+    if (err) exit 1
+    if (rows != 4) bad(rows " rows, want 4")
+    if (!("new/0" in seen) || !("new/50" in seen) || !("old/0" in seen) || !("old/50" in seen))
+        bad("rows are not {new, old} x {0, 50}")
+}' "$csv" || exit 1
+# the same with 2 threads, except the CPU time (the columns named cpu_*)
+strip() {
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) keep[i] = $i !~ /^cpu_/ }
+             { s = ""; for (i = 1; i <= NF; i++) if (keep[i]) s = s $i ","; print s }' "$1"
+}
+strip "$d/m1.csv" >"$d/s1" && strip "$d/m2.csv" >"$d/s2" || fail "cannot read the CSV files"
+cmp -s "$d/s1" "$d/s2" || fail "the CSV depends on the thread count (cpu_* columns aside)"
+grep -q ' new  *50 ' "$d/out1.txt" && grep -q ' old  *0 ' "$d/out1.txt" || fail "no table on stdout"
+echo "mtt-smoke: trk-sim mtt: 4 rows (new, old x clutter 0, 50) checked; identical with 1 and 2 threads"

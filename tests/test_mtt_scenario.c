@@ -1,0 +1,372 @@
+/* test_mtt_scenario.c - the multi-target scenario family of trk-sim mtt
+ * (tools/sim/mtt_scenario.h): determinism (same seed, same detections bit
+ * for bit, in any scan order; common random numbers across clutter counts
+ * and with or without amplitudes), the targets present per scan (the birth
+ * and the death), the geometry (the X, the pair 60 m apart, the turn, the
+ * region), the scan capacity (clutter never makes a scan exceed
+ * TRK_MAX_DETECTIONS, the tracker accepts every scan); and the helpers the
+ * experiment uses: Student t intervals (mc_stats.h), the per-target
+ * assignment of mtt_eval.h, the pre-issue-14 defaults. */
+#include "trk_test.h"
+
+#include "mc_stats.h"
+#include "mtt_eval.h"
+#include "mtt_scenario.h"
+
+#define DEG (3.14159265358979323846 / 180.0)
+
+static struct trk_detection det_a[TRK_MAX_DETECTIONS], det_b[TRK_MAX_DETECTIONS];
+static int org_a[TRK_MAX_DETECTIONS], org_b[TRK_MAX_DETECTIONS];
+
+static void init_seed(struct mtt_scenario *s, uint64_t seed, long scans)
+{
+    struct mtt_scen_params p;
+    mtt_scen_defaults(&p);
+    p.seed = seed;
+    p.n_scans = scans;
+    char err[256];
+    if (mtt_scen_init(s, &p, err, sizeof err) != 0) fail_msg("mtt_scen_init: %s", err);
+}
+
+/* Same seed: the same geometry and the same scans, bit for bit, whatever
+ * the order the scans are asked in; another seed: other scans. */
+static void test_determinism(void **state)
+{
+    (void)state;
+    struct mtt_scenario a, b, c;
+    init_seed(&a, 7, 200);
+    init_seed(&b, 7, 200);
+    init_seed(&c, 8, 200);
+    assert_memory_equal(a.tg, b.tg, sizeof a.tg);
+    assert_true(memcmp(a.tg, c.tg, sizeof a.tg) != 0);
+    static const long ks[] = {199, 0, 17, 99, 140, 41};
+    static const long ncl[] = {0, 50, 256};
+    for (size_t i = 0; i < sizeof ks / sizeof ks[0]; i++)
+        for (size_t j = 0; j < sizeof ncl / sizeof ncl[0]; j++) {
+            struct trk_scan sa, sb, sc;
+            struct mtt_scan_info ia, ib;
+            mtt_scen_scan(&a, ks[i], ncl[j], det_a, TRK_MAX_DETECTIONS, org_a, &sa, &ia);
+            mtt_scen_scan(&b, ks[i], ncl[j], det_b, TRK_MAX_DETECTIONS, org_b, &sb, &ib);
+            assert_int_equal(sa.n_detections, sb.n_detections);
+            assert_true(sa.time_us == sb.time_us && sa.time_us == (int64_t)ks[i] * 4000000);
+            assert_memory_equal(det_a, det_b, sa.n_detections * sizeof det_a[0]);
+            assert_memory_equal(org_a, org_b, sa.n_detections * sizeof org_a[0]);
+            assert_memory_equal(&ia, &ib, sizeof ia);
+            mtt_scen_scan(&c, ks[i], ncl[j], det_b, TRK_MAX_DETECTIONS, org_b, &sc, NULL);
+            assert_true(sc.n_detections != sa.n_detections ||
+                        memcmp(det_a, det_b, sa.n_detections * sizeof det_a[0]) != 0);
+        }
+    mtt_scen_free(&a);
+    mtt_scen_free(&b);
+    mtt_scen_free(&c);
+}
+
+/* 1 when detection d's position is among det[0..n) with origin o. */
+static int has_pos(const struct trk_detection *d, const struct trk_detection *det, const int *org, size_t n,
+                   int o)
+{
+    for (size_t i = 0; i < n; i++)
+        if (org[i] == o && det[i].x_m == d->x_m && det[i].y_m == d->y_m) return 1;
+    return 0;
+}
+
+/* Common random numbers: the targets' detections are the same at every
+ * clutter count, a count's clutter is the first points of a larger one's,
+ * and the positions do not depend on the amplitudes being on. */
+static void test_common_random_numbers(void **state)
+{
+    (void)state;
+    struct mtt_scenario s, na;
+    init_seed(&s, 3, 200);
+    struct mtt_scen_params p = s.p;
+    p.amplitude = 0;
+    char err[256];
+    assert_int_equal(mtt_scen_init(&na, &p, err, sizeof err), 0);
+    const long lo = TRK_MAX_DETECTIONS / 5, hi = TRK_MAX_DETECTIONS / 2;
+    for (long k = 0; k < 200; k += 13) {
+        struct trk_scan s1, s2;
+        mtt_scen_scan(&s, k, lo, det_a, TRK_MAX_DETECTIONS, org_a, &s1, NULL);
+        mtt_scen_scan(&s, k, hi, det_b, TRK_MAX_DETECTIONS, org_b, &s2, NULL);
+        for (size_t i = 0; i < s1.n_detections; i++) {
+            assert_true(det_a[i].has_amplitude == 1);
+            assert_true(has_pos(&det_a[i], det_b, org_b, s2.n_detections, org_a[i]));
+        }
+        mtt_scen_scan(&na, k, hi, det_a, TRK_MAX_DETECTIONS, org_a, &s1, NULL);
+        assert_int_equal(s1.n_detections, s2.n_detections);
+        for (size_t i = 0; i < s1.n_detections; i++) {
+            assert_true(det_a[i].has_amplitude == 0);
+            assert_true(has_pos(&det_a[i], det_b, org_b, s2.n_detections, org_a[i]));
+        }
+    }
+    mtt_scen_free(&s);
+    mtt_scen_free(&na);
+}
+
+/* Targets present per scan: 7 before the birth, 8 from it to the death, 7
+ * after; the birth at ~20 % and the death at ~70 % of the run; every target
+ * inside the region less the margin while present; target detections near
+ * their target, at the rate P_D. Over 20 seeds. */
+static void test_presence(void **state)
+{
+    (void)state;
+    long hits = 0, tries = 0;
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        struct mtt_scenario s;
+        init_seed(&s, seed, 200);
+        const long b = s.tg[MTT_BIRTH].birth_scan, d = s.tg[MTT_DEATH].death_scan;
+        assert_true(b >= 37 && b <= 43);
+        assert_true(d >= 137 && d <= 143);
+        for (int i = 0; i < MTT_N_TARGETS; i++) {
+            assert_int_equal(s.tg[i].role, i);
+            if (i != MTT_BIRTH) assert_int_equal(s.tg[i].birth_scan, 0);
+            if (i != MTT_DEATH) assert_int_equal(s.tg[i].death_scan, 200);
+        }
+        for (long k = 0; k < 200; k++) {
+            int n = 0;
+            for (int i = 0; i < MTT_N_TARGETS; i++) n += mtt_scen_present(&s, i, k);
+            assert_int_equal(n, k < b || k >= d ? 7 : 8);
+            assert_int_equal(mtt_scen_present(&s, MTT_BIRTH, k), k >= b);
+            assert_int_equal(mtt_scen_present(&s, MTT_DEATH, k), k < d);
+            struct trk_scan sc;
+            struct mtt_scan_info info;
+            mtt_scen_scan(&s, k, 0, det_a, TRK_MAX_DETECTIONS, org_a, &sc, &info);
+            assert_int_equal(info.n_target, sc.n_detections);
+            assert_true(info.n_target <= (size_t)n);
+            int seen[MTT_N_TARGETS] = {0};
+            for (size_t j = 0; j < sc.n_detections; j++) {
+                const int o = org_a[j];
+                assert_true(o >= 0 && o < MTT_N_TARGETS && mtt_scen_present(&s, o, k) && !seen[o]);
+                seen[o] = 1;
+                double x[4];
+                mtt_scen_truth(&s, o, (double)k * 4, x);
+                assert_true(hypot((double)det_a[j].x_m - x[TRK_CV2_X], (double)det_a[j].y_m - x[TRK_CV2_Y]) < 35);
+            }
+            hits += (long)sc.n_detections;
+            tries += n;
+            for (int i = 0; i < MTT_N_TARGETS; i++) {
+                if (!mtt_scen_present(&s, i, k)) continue;
+                double x[4];
+                mtt_scen_truth(&s, i, (double)k * 4, x);
+                assert_true(x[TRK_CV2_X] >= 50 - 1e-6 && x[TRK_CV2_X] <= 2950 + 1e-6);
+                assert_true(x[TRK_CV2_Y] >= 50 - 1e-6 && x[TRK_CV2_Y] <= 2950 + 1e-6);
+            }
+        }
+        mtt_scen_free(&s);
+    }
+    /* 31 000 target-scans: se of the rate 0.0023 */
+    TRK_ASSERT_NEAR((double)hits / (double)tries, 0.8, 0.012, 0);
+}
+
+static double ang_diff(double a, double b) /* a - b in (-pi, pi] */
+{
+    double d = fmod(a - b, 2 * 3.14159265358979323846);
+    if (d > 3.14159265358979323846) d -= 2 * 3.14159265358979323846;
+    if (d <= -3.14159265358979323846) d += 2 * 3.14159265358979323846;
+    return d;
+}
+
+/* The X, the pair, the turn and the speeds, over 20 seeds and two run
+ * lengths. */
+static void test_geometry(void **state)
+{
+    (void)state;
+    for (int len = 0; len < 2; len++)
+        for (uint64_t seed = 1; seed <= 20; seed++) {
+            const long ns = len ? 200 : 40;
+            struct mtt_scenario s;
+            init_seed(&s, seed, ns);
+            const struct mtt_target *a = &s.tg[MTT_CROSS_A], *b = &s.tg[MTT_CROSS_B];
+            /* the X: both at the crossing point at the same time, near the centre */
+            double xa[4], xb[4];
+            assert_true(a->at_s == b->at_s);
+            mtt_scen_truth(&s, MTT_CROSS_A, a->at_s, xa);
+            mtt_scen_truth(&s, MTT_CROSS_B, b->at_s, xb);
+            TRK_ASSERT_NEAR(xa[TRK_CV2_X], s.cross_x_m, 1e-9, 0);
+            TRK_ASSERT_NEAR(xa[TRK_CV2_Y], s.cross_y_m, 1e-9, 0);
+            TRK_ASSERT_NEAR(xb[TRK_CV2_X], s.cross_x_m, 1e-9, 0);
+            TRK_ASSERT_NEAR(xb[TRK_CV2_Y], s.cross_y_m, 1e-9, 0);
+            assert_true(fabs(s.cross_x_m - 1500) <= 150 && fabs(s.cross_y_m - 1500) <= 150);
+            const double cross = fabs(ang_diff(atan2(xb[TRK_CV2_VY], xb[TRK_CV2_VX]), atan2(xa[TRK_CV2_VY], xa[TRK_CV2_VX])));
+            const double acute = cross > 90 * DEG ? 180 * DEG - cross : cross;
+            assert_true(acute >= 70 * DEG - 1e-9 && acute <= 90 * DEG + 1e-9);
+            const long kc = s.cross_scan;
+            assert_true(kc > ns / 2 - ns / 20 - 1 && kc < ns / 2 + ns / 20 + 1);
+            mtt_scen_truth(&s, MTT_CROSS_A, (double)kc * 4, xa);
+            mtt_scen_truth(&s, MTT_CROSS_B, (double)kc * 4, xb);
+            assert_true(hypot(xa[TRK_CV2_X] - xb[TRK_CV2_X], xa[TRK_CV2_Y] - xb[TRK_CV2_Y]) <=
+                        (a->speed_mps + b->speed_mps) * 2 + 1e-9);
+            /* the pair: 60 m apart side by side, one velocity, at every scan */
+            for (long k = 0; k < ns; k++) {
+                double pa[4], pb[4];
+                mtt_scen_truth(&s, MTT_PAR_A, (double)k * 4, pa);
+                mtt_scen_truth(&s, MTT_PAR_B, (double)k * 4, pb);
+                const double dx = pa[TRK_CV2_X] - pb[TRK_CV2_X], dy = pa[TRK_CV2_Y] - pb[TRK_CV2_Y];
+                TRK_ASSERT_NEAR(hypot(dx, dy), 60, 1e-9, 0);
+                TRK_ASSERT_NEAR(pa[TRK_CV2_VX], pb[TRK_CV2_VX], 1e-12, 0);
+                TRK_ASSERT_NEAR(pa[TRK_CV2_VY], pb[TRK_CV2_VY], 1e-12, 0);
+                TRK_ASSERT_NEAR(dx * pa[TRK_CV2_VX] + dy * pa[TRK_CV2_VY], 0, 1e-9, 0);
+            }
+            /* the turn: 90 deg at 2.4-3.6 deg/s, within the run, speed kept */
+            const struct mtt_target *t = &s.tg[MTT_TURN];
+            const double tau = fabs(t->turn_rad) / t->turn_rate_rps;
+            TRK_ASSERT_NEAR(fabs(t->turn_rad), 90 * DEG, 1e-12, 0);
+            assert_true(t->turn_rate_rps >= 2.4 * DEG - 1e-12 && t->turn_rate_rps <= 3.6 * DEG + 1e-12);
+            assert_true(s.turn_first_scan >= 1 && s.turn_first_scan <= s.turn_last_scan &&
+                        s.turn_last_scan < ns);
+            double x0[4], x1[4], xm[4];
+            mtt_scen_truth(&s, MTT_TURN, t->at_s - 4, x0);
+            mtt_scen_truth(&s, MTT_TURN, t->at_s + tau + 4, x1);
+            mtt_scen_truth(&s, MTT_TURN, t->at_s + 0.5 * tau, xm);
+            TRK_ASSERT_NEAR(ang_diff(atan2(x1[TRK_CV2_VY], x1[TRK_CV2_VX]), atan2(x0[TRK_CV2_VY], x0[TRK_CV2_VX])),
+                            t->turn_rad, 1e-9, 0);
+            TRK_ASSERT_NEAR(ang_diff(atan2(xm[TRK_CV2_VY], xm[TRK_CV2_VX]), atan2(x0[TRK_CV2_VY], x0[TRK_CV2_VX])),
+                            0.5 * t->turn_rad, 1e-9, 0);
+            TRK_ASSERT_NEAR(hypot(xm[TRK_CV2_VX], xm[TRK_CV2_VY]), t->speed_mps, 1e-9, 0);
+            /* continuity through the turn (no jump at its start or end) */
+            double e0[4], e1[4];
+            mtt_scen_truth(&s, MTT_TURN, t->at_s + tau - 1e-6, e0);
+            mtt_scen_truth(&s, MTT_TURN, t->at_s + tau + 1e-6, e1);
+            assert_true(hypot(e0[TRK_CV2_X] - e1[TRK_CV2_X], e0[TRK_CV2_Y] - e1[TRK_CV2_Y]) < 1e-3);
+            /* speeds: the draw in [5, 15] m/s, or less to stay in */
+            for (int i = 0; i < MTT_N_TARGETS; i++) {
+                const struct mtt_target *g = &s.tg[i];
+                assert_true(g->speed_drawn_mps >= 5 && g->speed_drawn_mps <= 15);
+                assert_true(g->speed_mps > 0.5 && g->speed_mps <= g->speed_drawn_mps);
+                mtt_scen_truth(&s, i, 100, xm);
+                TRK_ASSERT_NEAR(hypot(xm[TRK_CV2_VX], xm[TRK_CV2_VY]), g->speed_mps, 1e-9, 0);
+            }
+            mtt_scen_free(&s);
+        }
+}
+
+/* Clutter never makes a scan exceed the capacity: the targets' detections
+ * first, then as much clutter as fits (the rest counted); the tracker
+ * accepts every scan. */
+static void test_capacity(void **state)
+{
+    (void)state;
+    struct mtt_scenario s;
+    init_seed(&s, 11, 200);
+    static struct trk_tracker tk;
+    struct trk_tracker_params tp;
+    trk_tracker_default_params(&tp);
+    tp.sensor[0].pd = (trk_real)0.8;
+    tp.sensor[0].meas_cov_m2[0] = tp.sensor[0].meas_cov_m2[2] = 25;
+    tp.sensor[0].meas_cov_m2[1] = 0;
+    tp.sensor[0].clutter_density_per_m2 = (trk_real)(TRK_MAX_DETECTIONS / 9e6);
+    tp.process_noise_q = (trk_real)1e-3;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &tp));
+    static const long counts[] = {0, 7, TRK_MAX_DETECTIONS - 8, TRK_MAX_DETECTIONS, TRK_MAX_DETECTIONS + 44, 5000};
+    long capped_scans = 0;
+    for (long k = 0; k < 200; k++) {
+        struct trk_scan none, sc;
+        struct mtt_scan_info i0, info;
+        mtt_scen_scan(&s, k, 0, det_b, TRK_MAX_DETECTIONS, org_b, &none, &i0);
+        for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+            mtt_scen_scan(&s, k, counts[c], det_a, TRK_MAX_DETECTIONS, org_a, &sc, &info);
+            assert_true(sc.n_detections <= TRK_MAX_DETECTIONS);
+            assert_int_equal(info.n_target + info.n_clutter, sc.n_detections);
+            assert_int_equal(info.n_clutter + info.n_clutter_capped, (size_t)counts[c]);
+            assert_int_equal(info.n_target, i0.n_target); /* targets never dropped */
+            if (info.n_clutter_capped) {
+                assert_int_equal(sc.n_detections, TRK_MAX_DETECTIONS);
+                capped_scans++;
+            }
+            for (size_t j = 0; j < sc.n_detections; j++)
+                assert_true(det_a[j].x_m >= 0 && det_a[j].x_m <= 3000 && det_a[j].y_m >= 0 && det_a[j].y_m <= 3000);
+        }
+        /* the tracker takes the fullest scan (every 10th scan: time) */
+        if (k % 10 == 0) {
+            mtt_scen_scan(&s, k, 5000, det_a, TRK_MAX_DETECTIONS, NULL, &sc, NULL);
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &sc, &rep));
+            assert_int_equal(rep.n_detections, sc.n_detections);
+        }
+    }
+    assert_true(capped_scans >= 2 * 200); /* the two counts above the capacity, every scan */
+    /* a smaller capacity */
+    struct mtt_scen_params p = s.p;
+    p.max_det = 10;
+    struct mtt_scenario small;
+    char err[256];
+    assert_int_equal(mtt_scen_init(&small, &p, err, sizeof err), 0);
+    for (long k = 0; k < 200; k += 7) {
+        struct trk_scan sc;
+        struct mtt_scan_info info;
+        mtt_scen_scan(&small, k, 100, det_a, TRK_MAX_DETECTIONS, NULL, &sc, &info);
+        assert_true(sc.n_detections <= 10 && sc.n_detections == info.n_target + info.n_clutter);
+    }
+    p.max_det = TRK_MAX_DETECTIONS + 1;
+    assert_int_equal(mtt_scen_init(&small, &p, err, sizeof err), -1);
+    mtt_scen_free(&small);
+    mtt_scen_free(&s);
+}
+
+/* Student t quantiles and intervals (R: qt(0.975, df)). */
+static void test_student_t(void **state)
+{
+    (void)state;
+    TRK_ASSERT_NEAR(mc_t(0.95, 1), 12.706204736174707, 1e-8, 0);
+    TRK_ASSERT_NEAR(mc_t(0.95, 9), 2.2621571627982053, 1e-9, 0);
+    TRK_ASSERT_NEAR(mc_t(0.99, 4), 4.6040948713499177, 1e-9, 0);
+    TRK_ASSERT_NEAR(mc_t(0.95, 1e7), 1.959963984540054, 1e-5, 0);
+    const double x[4] = {1, 2, 3, 4};
+    double m, lo, hi;
+    mc_mean_ci_t(x, 4, 0.95, &m, &lo, &hi);
+    TRK_ASSERT_NEAR(m, 2.5, 1e-15, 0);
+    TRK_ASSERT_NEAR(hi - m, 3.1824463052842638 * sqrt(5.0 / 3 / 4), 1e-9, 0);
+    TRK_ASSERT_NEAR(m - lo, hi - m, 1e-12, 0);
+    mc_mean_ci_t(x, 1, 0.95, &m, &lo, &hi);
+    assert_true(m == 1 && lo == 1 && hi == 1);
+    mc_mean_ci_t(x, 0, 0.95, &m, &lo, &hi);
+    assert_true(isnan(m) && isnan(lo) && isnan(hi));
+}
+
+/* mtt_eval's per-target assignment agrees with its counts. */
+static void test_eval_assign(void **state)
+{
+    (void)state;
+    struct mtt_eval e;
+    mtt_eval_init(&e, 50);
+    const struct mtt_obj truth[3] = {{0, 0, 0}, {1, 100, 0}, {2, 1000, 1000}};
+    const struct mtt_obj est[3] = {{7, 3, 4}, {9, 130, 0}, {11, 2000, 0}};
+    long as[3];
+    assert_int_equal(mtt_eval_scan_assign(&e, truth, 3, est, 3, as), 0);
+    assert_true(as[0] == 0 && as[1] == 1 && as[2] == -1);
+    struct mtt_summary su;
+    mtt_eval_summary(&e, &su);
+    TRK_ASSERT_NEAR(su.coverage, 2.0 / 3, 1e-12, 0);
+    TRK_ASSERT_NEAR(su.loc_mean_m2, 25 + 900, 1e-9, 0);
+    assert_int_equal(mtt_eval_scan(&e, truth, 3, est, 0), 0);
+    mtt_eval_free(&e);
+}
+
+/* The `old` configuration: the pre-issue-14 defaults, accepted by the tracker. */
+static void test_old_defaults(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    mtt_old_defaults(&p);
+    assert_int_equal(p.confirm.method, TRK_CONFIRM_MN);
+    assert_true(p.confirm.u.mn.m == 3 && p.confirm.u.mn.n == 5 && p.confirm.u.mn.mode == TRK_MN_FIXED);
+    assert_int_equal(p.term.method, TRK_TERM_KN);
+    assert_true(p.term.u.kn.k == 0 && p.term.u.kn.n == 5);
+    TRK_ASSERT_NEAR(p.merge_gate_d2, 4, 0, 0);
+    TRK_ASSERT_NEAR(p.init_exclusion_d2, 18.42068, 1e-4, 0);
+    assert_int_equal(p.track_visibility, 1);
+    TRK_ASSERT_NEAR(p.visibility.delta_become, 0.01, 1e-7, 0);
+    TRK_ASSERT_NEAR(p.visibility.p_con, 0.9, 1e-7, 0);
+    const char *field = NULL;
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_determinism), cmocka_unit_test(test_common_random_numbers),
+        cmocka_unit_test(test_presence),    cmocka_unit_test(test_geometry),
+        cmocka_unit_test(test_capacity),    cmocka_unit_test(test_student_t),
+        cmocka_unit_test(test_eval_assign), cmocka_unit_test(test_old_defaults),
+    };
+    return trk_run_tests("mtt_scenario", tests, NULL, NULL);
+}

@@ -1,0 +1,997 @@
+/* exp_mtt.c - trk-sim mtt and mtt-compare: the multi-target evaluation of
+ * issue 14 (item 7).
+ *
+ * mtt: the scenario family of tools/sim/mtt_scenario.h (eight targets:
+ * an X, a pair 60 m apart, a birth, a death, a 90 deg turn, one straight;
+ * 3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes),
+ * seeds S, S+1, ..., S+seeds-1, each at every clutter count of the list
+ * (exactly N uniform clutter detections per scan, capped so that a scan never
+ * exceeds TRK_MAX_DETECTIONS) through each configuration (common random
+ * numbers: every configuration and clutter level sees the same targets'
+ * detections, and a level's clutter is the first N points of the largest's):
+ *   new  trk_tracker_default_params() with the scenario's sensor
+ *   old  mtt_old_defaults() (the defaults before issue 14) with the same
+ * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
+ * of the scenario with use_amplitude, q = 1e-3; then every --set).
+ * Per scan the CONFIRMED tracks are scored against the targets present
+ * (tools/sim/mtt_eval.h: GOSPA p = 2, alpha = 2, cut-off c, and the
+ * track-maintenance statistics); per (configuration, clutter) the mean over
+ * seeds and its 95 % Student t interval of every metric. The CPU time is the
+ * thread's (CLOCK_THREAD_CPUTIME_ID) around trk_tracker_process_scan only:
+ * the process clock would add the other OpenMP threads' time.
+ *
+ * mtt-compare: the CSV files of several builds (TRK_MAX_TRACKS differs)
+ * merged into one table and one set of plots, and per metric the ratio of
+ * the smallest capacity's mean to the largest's and whether it is within
+ * the largest's interval. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "kvfile.h"
+#include "mc_stats.h"
+#include "mtt_eval.h"
+#include "mtt_scenario.h"
+#include "sim.h"
+#include "tracker_config.h"
+#include "trk/amplitude.h"
+#include "trk/tracker.h"
+
+#define MAX_LEVELS 64
+#define MAX_SETTINGS 64
+#define MAX_FILES 16
+#define MAX_ROWS 4096
+#define CROSS_WINDOW 5 /* scans either side of the crossing */
+
+/* ---------------------------------------------------------------- metrics */
+
+/* Every counter of struct trk_scan_report (summed over a run's scans). */
+#define MTT_REPORT_COUNTERS(X)                                                                             \
+    X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_below_threshold) \
+    X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_terminated) X(n_init_refused_full) \
+    X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)
+
+enum {
+    M_GOSPA, M_LOC, M_MISSED, M_FALSE, M_STC, M_NEVER, M_COV, M_TURN, M_PAR, M_CROSS, M_FALSE_TRK,
+    M_FALSE_TS, M_DUP_TS, M_FRAG, M_IDSW, M_RMSE, M_CPU, M_CONF, M_LIVE, M_FULL, M_CLUTTER, M_CAPPED,
+#define X(f) M_REP_##f,
+    MTT_REPORT_COUNTERS(X)
+#undef X
+    M_N
+};
+#define M_REP_FIRST M_REP_n_detections
+#define N_REP (M_N - M_REP_FIRST)
+
+static const char *const metric_name[M_N] = {
+    "gospa_m", "gospa_loc_m2", "gospa_missed_m2", "gospa_false_m2", "scans_to_confirm", "never_confirmed",
+    "coverage", "turn_coverage", "parallel_both", "cross_both", "false_tracks_per_1000_scans",
+    "false_track_scans_per_100", "duplicate_track_scans_per_100", "fragmentations", "id_switches", "rmse_m",
+    "cpu_us_per_scan", "confirmed_per_scan", "live_per_scan", "table_full_frac", "clutter_per_scan",
+    "clutter_capped_scans",
+#define X(f) "rep_" #f,
+    MTT_REPORT_COUNTERS(X)
+#undef X
+};
+
+static int metric_index(const char *name)
+{
+    for (int m = 0; m < M_N; m++)
+        if (strcmp(name, metric_name[m]) == 0) return m;
+    return -1;
+}
+
+/* One run: (seed, clutter level, configuration). */
+struct run_result {
+    double v[M_N];
+};
+
+/* One (capacity, configuration, clutter) cell: mean and interval over seeds. */
+struct mtt_row {
+    long capacity;
+    char config[16];
+    double clutter;
+    long seeds, scans;
+    int amplitude;
+    double mean[M_N], lo[M_N], hi[M_N];
+};
+
+/* ---------------------------------------------------------------- configurations */
+
+enum { CFG_NEW, CFG_OLD, N_CFG_KINDS };
+static const char *const cfg_name[N_CFG_KINDS] = {"new", "old"};
+
+struct mtt_settings {
+    const char *kv[MAX_SETTINGS];
+    int n;
+};
+
+/* The tracker parameters of configuration kind at clutter density lambda
+ * (the scenario's sensor, then the --set settings). 0, or -1 with a message. */
+static int build_params(int kind, const struct mtt_scenario *sc, double lambda, double q,
+                        const struct mtt_settings *set, struct trk_tracker_params *out,
+                        struct tcfg_runtime *rt, char *err, size_t n)
+{
+    struct trk_tracker_params p;
+    if (kind == CFG_NEW) trk_tracker_default_params(&p);
+    else mtt_old_defaults(&p);
+    const double sg = sc->p.meas_sigma_m;
+    p.n_sensors = 1;
+    p.sensor[0].pd = (trk_real)sc->p.pd;
+    p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = (trk_real)(sg * sg);
+    p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
+    p.sensor[0].clutter_density_per_m2 = (trk_real)lambda;
+    p.sensor[0].use_amplitude = sc->p.amplitude;
+    if (sc->p.amplitude &&
+        trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, (trk_real)sc->p.snr_db, (trk_real)sc->pfa) != TRK_OK) {
+        snprintf(err, n, "Rayleigh model (SNR %g dB, P_FA %g) refused", sc->p.snr_db, sc->pfa);
+        return -1;
+    }
+    p.process_noise_q = (trk_real)q;
+    memset(rt, 0, sizeof *rt);
+    if (set->n > 0) {
+        /* the settings through tools/cli/tracker_config, on a tcfg holding p */
+        struct tcfg *c = malloc(sizeof *c);
+        if (!c) {
+            snprintf(err, n, "out of memory");
+            return -1;
+        }
+        tcfg_defaults(c);
+        c->params = p;
+        for (unsigned s = 1; s < TRK_MAX_SENSORS; s++) c->params.sensor[s] = p.sensor[0];
+        c->confirm = p.confirm.method;
+        c->term = p.term.method;
+        if (p.confirm.method == TRK_CONFIRM_MN) c->mn = p.confirm.u.mn;
+        if (p.term.method == TRK_TERM_KN) c->kn = p.term.u.kn;
+        c->amp[0].model = sc->p.amplitude ? TCFG_AMP_RAYLEIGH : TCFG_AMP_NONE;
+        c->amp[0].snr_db = sc->p.snr_db;
+        c->amp[0].pfa = sc->pfa;
+        int confirm_set = 0, term_set = 0;
+        for (int i = 0; i < set->n; i++) {
+            const char *kv = set->kv[i];
+            if (kv_parse_assignment(kv, tcfg_set, c, err, n) != 0) {
+                char e2[512];
+                snprintf(e2, sizeof e2, "--set %.200s: %.300s", kv, err);
+                snprintf(err, n, "%s", e2);
+                free(c);
+                return -1;
+            }
+            confirm_set |= strncmp(kv, "confirm", 7) == 0 || strncmp(kv, "hmm", 3) == 0;
+            term_set |= strncmp(kv, "term", 4) == 0 || strncmp(kv, "hmm", 3) == 0;
+        }
+        if (tcfg_check(c, err, n) != 0 || tcfg_load(c, rt, err, n) != 0) {
+            free(c);
+            return -1;
+        }
+        struct trk_tracker_params t;
+        tcfg_params_rt(c, rt, &t);
+        /* the tests the settings did not touch stay the configuration's own */
+        if (!confirm_set) t.confirm = p.confirm;
+        if (!term_set) t.term = p.term;
+        p = t;
+        free(c);
+    }
+    const char *field = NULL;
+    const trk_status st = trk_tracker_check_params(&p, &field);
+    if (st != TRK_OK) {
+        snprintf(err, n, "the tracker refuses configuration %s: %s: %s", cfg_name[kind], field ? field : "?",
+                 trk_status_str(st));
+        tcfg_unload(rt);
+        return -1;
+    }
+    *out = p;
+    return 0;
+}
+
+/* ---------------------------------------------------------------- one run */
+
+struct run_ws {
+    struct trk_tracker *tk;
+    struct trk_detection det[TRK_MAX_DETECTIONS];
+    int origin[TRK_MAX_DETECTIONS];
+    struct mtt_obj est[TRK_MAX_TRACKS];
+};
+
+static double thread_cpu_s(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) return NAN;
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk_tracker_params *tp, double c_m,
+                   struct run_ws *ws, struct run_result *res)
+{
+    struct mtt_eval ev;
+    mtt_eval_init(&ev, c_m);
+    if (trk_tracker_init(ws->tk, tp) != TRK_OK) return -1;
+    const long ns = sc->p.n_scans;
+    double cpu = 0, rep_sum[N_REP] = {0};
+    long conf_sum = 0, live_sum = 0, full = 0, clutter_sum = 0, capped = 0;
+    long turn_n = 0, turn_hit = 0, par_n = 0, par_hit = 0, cross_n = 0, cross_hit = 0;
+    int rc = 0;
+    for (long k = 0; k < ns && rc == 0; k++) {
+        struct trk_scan scan;
+        struct mtt_scan_info info;
+        mtt_scen_scan(sc, k, clutter, ws->det, TRK_MAX_DETECTIONS, ws->origin, &scan, &info);
+        clutter_sum += (long)info.n_clutter;
+        capped += info.n_clutter_capped > 0;
+        struct trk_scan_report rep;
+        const double t0 = thread_cpu_s();
+        const trk_status st = trk_tracker_process_scan(ws->tk, &scan, &rep);
+        cpu += thread_cpu_s() - t0;
+        if (st != TRK_OK) {
+            rc = -1;
+            break;
+        }
+        {
+            int j = 0;
+#define X(f) rep_sum[j++] += (double)rep.f;
+            MTT_REPORT_COUNTERS(X)
+#undef X
+            (void)j;
+        }
+        /* the confirmed tracks and the targets present */
+        size_t ne = 0;
+        long live = 0;
+        for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
+            const struct trk_track *t = trk_tracker_track(ws->tk, s);
+            if (!t) continue;
+            live++;
+            if (t->status != TRK_TRACK_CONFIRMED) continue;
+            ws->est[ne++] = (struct mtt_obj){(long)t->id, (double)t->x[TRK_CV2_X], (double)t->x[TRK_CV2_Y]};
+        }
+        conf_sum += (long)ne;
+        live_sum += live;
+        full += live >= TRK_MAX_TRACKS;
+        struct mtt_obj truth[MTT_N_TARGETS];
+        int idx[MTT_N_TARGETS] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        size_t nt = 0;
+        for (int i = 0; i < MTT_N_TARGETS; i++) {
+            if (!mtt_scen_present(sc, i, k)) continue;
+            double x[4];
+            mtt_scen_truth(sc, i, (double)k * sc->p.scan_period_s, x);
+            idx[i] = (int)nt;
+            truth[nt++] = (struct mtt_obj){i, x[TRK_CV2_X], x[TRK_CV2_Y]};
+        }
+        long assign[MTT_N_TARGETS];
+        if (mtt_eval_scan_assign(&ev, truth, nt, ws->est, ne, assign) != 0) {
+            rc = -1;
+            break;
+        }
+        if (k >= sc->turn_first_scan && k <= sc->turn_last_scan && mtt_scen_present(sc, MTT_TURN, k)) {
+            turn_n++;
+            turn_hit += assign[idx[MTT_TURN]] >= 0;
+        }
+        if (mtt_scen_present(sc, MTT_PAR_A, k) && mtt_scen_present(sc, MTT_PAR_B, k)) {
+            par_n++;
+            par_hit += assign[idx[MTT_PAR_A]] >= 0 && assign[idx[MTT_PAR_B]] >= 0;
+        }
+        if (labs(k - sc->cross_scan) <= CROSS_WINDOW) {
+            cross_n++;
+            cross_hit += assign[idx[MTT_CROSS_A]] >= 0 && assign[idx[MTT_CROSS_B]] >= 0;
+        }
+    }
+    if (rc == 0) {
+        struct mtt_summary su;
+        mtt_eval_summary(&ev, &su);
+        const double dn = (double)ns;
+        double *v = res->v;
+        v[M_GOSPA] = su.gospa_mean_m;
+        v[M_LOC] = su.loc_mean_m2;
+        v[M_MISSED] = su.missed_mean_m2;
+        v[M_FALSE] = su.false_mean_m2;
+        v[M_STC] = su.scans_to_confirm_mean;
+        v[M_NEVER] = (double)su.n_never;
+        v[M_COV] = su.coverage;
+        v[M_TURN] = turn_n ? (double)turn_hit / (double)turn_n : NAN;
+        v[M_PAR] = par_n ? (double)par_hit / (double)par_n : NAN;
+        v[M_CROSS] = cross_n ? (double)cross_hit / (double)cross_n : NAN;
+        v[M_FALSE_TRK] = 1000.0 * (double)su.n_false_tracks / dn;
+        v[M_FALSE_TS] = su.false_track_scans_per_100;
+        v[M_DUP_TS] = su.duplicate_track_scans_per_100;
+        v[M_FRAG] = (double)su.fragmentations;
+        v[M_IDSW] = (double)su.id_switches;
+        v[M_RMSE] = su.rmse_m;
+        v[M_CPU] = 1e6 * cpu / dn;
+        v[M_CONF] = (double)conf_sum / dn;
+        v[M_LIVE] = (double)live_sum / dn;
+        v[M_FULL] = (double)full / dn;
+        v[M_CLUTTER] = (double)clutter_sum / dn;
+        v[M_CAPPED] = (double)capped;
+        for (int j = 0; j < N_REP; j++) v[M_REP_FIRST + j] = rep_sum[j];
+    }
+    mtt_eval_free(&ev);
+    return rc;
+}
+
+/* ---------------------------------------------------------------- output */
+
+static void csv_header(FILE *f)
+{
+    fprintf(f, "capacity,config,clutter,seeds,scans,amplitude");
+    for (int m = 0; m < M_N; m++)
+        fprintf(f, ",%s_mean,%s_lo,%s_hi", metric_name[m], metric_name[m], metric_name[m]);
+    fprintf(f, "\n");
+}
+
+static void csv_row(FILE *f, const struct mtt_row *r)
+{
+    fprintf(f, "%ld,%s,%g,%ld,%ld,%d", r->capacity, r->config, r->clutter, r->seeds, r->scans, r->amplitude);
+    for (int m = 0; m < M_N; m++) fprintf(f, ",%.6g,%.6g,%.6g", r->mean[m], r->lo[m], r->hi[m]);
+    fprintf(f, "\n");
+}
+
+static int write_csv(const struct sim_common *com, const char *suffix, const struct mtt_row *rows, int n,
+                     char *path, size_t pathlen)
+{
+    FILE *f = sim_csv_open(com, suffix, path, pathlen, NULL);
+    if (!f) return -1;
+    csv_header(f);
+    for (int i = 0; i < n; i++) csv_row(f, &rows[i]);
+    return fclose(f) == 0 ? 0 : -1;
+}
+
+/* "12.3+-0.4" (mean and the interval's half width) in w characters. */
+static void put_ci(const struct mtt_row *r, int m, int w, int prec)
+{
+    char b[64];
+    if (isnan(r->mean[m])) snprintf(b, sizeof b, "-");
+    else snprintf(b, sizeof b, "%.*f+-%.*f", prec, r->mean[m], prec, 0.5 * (r->hi[m] - r->lo[m]));
+    printf(" %*s", w, b);
+}
+
+static void put_v(const struct mtt_row *r, int m, int w, int prec)
+{
+    if (isnan(r->mean[m])) printf(" %*s", w, "-");
+    else printf(" %*.*f", w, prec, r->mean[m]);
+}
+
+static void print_tables(const struct mtt_row *rows, int n)
+{
+    printf("-- accuracy (mean +- half the 95%% interval over seeds; GOSPA parts in m^2 per scan)\n");
+    printf("%5s %-4s %7s %13s %8s %8s %8s %12s %5s %12s %6s %6s %6s %7s\n", "slots", "cfg", "clutter", "GOSPA m",
+           "loc", "missed", "false", "to-confirm", "never", "coverage", "turn", "pair2", "cross2", "RMSE m");
+    for (int i = 0; i < n; i++) {
+        const struct mtt_row *r = &rows[i];
+        printf("%5ld %-4s %7g", r->capacity, r->config, r->clutter);
+        put_ci(r, M_GOSPA, 13, 1);
+        put_v(r, M_LOC, 8, 0);
+        put_v(r, M_MISSED, 8, 0);
+        put_v(r, M_FALSE, 8, 0);
+        put_ci(r, M_STC, 12, 1);
+        put_v(r, M_NEVER, 5, 1);
+        put_ci(r, M_COV, 12, 3);
+        put_v(r, M_TURN, 6, 2);
+        put_v(r, M_PAR, 6, 2);
+        put_v(r, M_CROSS, 6, 2);
+        put_v(r, M_RMSE, 7, 2);
+        printf("\n");
+    }
+    printf("-- track management and cost (per run of %ld scans unless noted)\n", n ? rows[0].scans : 0L);
+    printf("%5s %-4s %7s %13s %9s %8s %6s %6s %10s %7s %6s %6s %9s %8s %7s\n", "slots", "cfg", "clutter",
+           "falseT/1000sc", "falseTS%", "dupTS%", "frag", "idsw", "cpu us/scan", "live", "full%", "conf",
+           "refused", "replaced", "merged");
+    for (int i = 0; i < n; i++) {
+        const struct mtt_row *r = &rows[i];
+        printf("%5ld %-4s %7g", r->capacity, r->config, r->clutter);
+        put_ci(r, M_FALSE_TRK, 13, 1);
+        put_v(r, M_FALSE_TS, 9, 1);
+        put_v(r, M_DUP_TS, 8, 1);
+        put_v(r, M_FRAG, 6, 1);
+        put_v(r, M_IDSW, 6, 1);
+        put_ci(r, M_CPU, 10, 0);
+        put_v(r, M_LIVE, 7, 1);
+        const double full = r->mean[M_FULL] * 100;
+        printf(" %6.1f", full);
+        put_v(r, M_CONF, 6, 1);
+        put_v(r, M_REP_n_init_refused_full, 9, 0);
+        put_v(r, M_REP_n_replaced, 8, 0);
+        put_v(r, M_REP_n_merged, 7, 0);
+        printf("\n");
+    }
+}
+
+/* Plots against clutter count, one line (with its interval) per (capacity,
+ * configuration); the data go into the scripts as datablocks. */
+static void plot_all(const struct sim_common *com, const struct mtt_row *rows, int n, const char *title)
+{
+    if (com->no_plot || n == 0) return;
+    long caps[MAX_ROWS];
+    char cfgs[MAX_ROWS][16];
+    int ng = 0, grp[MAX_ROWS];
+    double xmax = 0;
+    for (int i = 0; i < n; i++) {
+        int g = 0;
+        while (g < ng && !(caps[g] == rows[i].capacity && strcmp(cfgs[g], rows[i].config) == 0)) g++;
+        if (g == ng) {
+            caps[ng] = rows[i].capacity;
+            snprintf(cfgs[ng], sizeof cfgs[ng], "%s", rows[i].config);
+            ng++;
+        }
+        grp[i] = g;
+        if (rows[i].clutter > xmax) xmax = rows[i].clutter;
+    }
+    static const struct {
+        const char *suffix, *what;
+        int m[3];
+        int nm;
+    } plots[] = {
+        {"_gospa", "GOSPA (m), p = 2, alpha = 2", {M_GOSPA}, 1},
+        {"_gospa_parts", "", {M_LOC, M_MISSED, M_FALSE}, 3},
+        {"_confirm", "", {M_STC, M_NEVER}, 2},
+        {"_false", "", {M_FALSE_TRK, M_FALSE_TS}, 2},
+    };
+    static const char *const ylabel[M_N] = {
+        [M_GOSPA] = "GOSPA (m)",
+        [M_LOC] = "localisation part (m^2 per scan)",
+        [M_MISSED] = "missed part (m^2 per scan)",
+        [M_FALSE] = "false part (m^2 per scan)",
+        [M_STC] = "scans to the first confirmed track",
+        [M_NEVER] = "targets never confirmed (of 8)",
+        [M_FALSE_TRK] = "false confirmed tracks per 1000 scans",
+        [M_FALSE_TS] = "false track-scans per 100 scans",
+    };
+    const double dx = xmax > 0 ? xmax / 150 : 1; /* groups side by side */
+    for (size_t pl = 0; pl < sizeof plots / sizeof plots[0]; pl++) {
+        struct sim_text t = {NULL, 0, 0, 0};
+        for (int g = 0; g < ng; g++) {
+            sim_text_add(&t, "$g%d << EOD\n", g);
+            for (int i = 0; i < n; i++) {
+                if (grp[i] != g) continue;
+                sim_text_add(&t, "%.6g", rows[i].clutter + ((double)g - 0.5 * (ng - 1)) * dx);
+                for (int k = 0; k < plots[pl].nm; k++) {
+                    const int m = plots[pl].m[k];
+                    sim_text_add(&t, " %.6g %.6g %.6g", rows[i].mean[m], rows[i].lo[m], rows[i].hi[m]);
+                }
+                sim_text_add(&t, "\n");
+            }
+            sim_text_add(&t, "EOD\n");
+        }
+        if (plots[pl].nm > 1)
+            sim_text_add(&t, "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+                             "  set terminal pngcairo size %d,520 enhanced font 'sans,10'\n"
+                             "} else {\n  set terminal png size %d,520\n}\n"
+                             "set output '%s%s.png'\nset multiplot layout 1,%d title '%s'\n",
+                         450 * plots[pl].nm, 450 * plots[pl].nm, com->out, plots[pl].suffix, plots[pl].nm, title);
+        for (int k = 0; k < plots[pl].nm; k++) {
+            const int m = plots[pl].m[k];
+            double ymax = 0; /* an all-zero panel gets [0:1], not gnuplot's warning */
+            for (int i = 0; i < n; i++)
+                if (isfinite(rows[i].hi[m]) && rows[i].hi[m] > ymax) ymax = rows[i].hi[m];
+            sim_text_add(&t, "set grid\nset key top left font ',9'\nset xlabel 'clutter detections per scan'\n"
+                             "set ylabel '%s'\nset xrange [%g:%g]\nset yrange [0:%s]\n",
+                         ylabel[m], -0.04 * xmax - 1, 1.04 * xmax + 1, ymax > 0 ? "*" : "1");
+            if (plots[pl].nm == 1) sim_text_add(&t, "set title '%s: %s'\n", title, plots[pl].what);
+            else sim_text_add(&t, "unset title\n");
+            sim_text_add(&t, "plot ");
+            for (int g = 0; g < ng; g++)
+                sim_text_add(&t, "%s$g%d using 1:%d:%d:%d with yerrorlines lw 2 pt %d title '%ld slots, %s'",
+                             g ? ", \\\n     " : "", g, 2 + 3 * k, 3 + 3 * k, 4 + 3 * k, 5 + 2 * g, caps[g], cfgs[g]);
+            sim_text_add(&t, "\n");
+        }
+        if (plots[pl].nm > 1) sim_text_add(&t, "unset multiplot\n");
+        if (!t.failed) sim_plot(com, plots[pl].suffix, t.s);
+        sim_text_free(&t);
+    }
+}
+
+/* ---------------------------------------------------------------- mtt */
+
+/* The directory of the output prefix (mkdir -p of everything before the
+ * last '/'). 0, or -1. */
+static int make_parent(const char *prefix)
+{
+    char buf[1024];
+    const char *slash = strrchr(prefix, '/');
+    if (!slash) return 0;
+    const size_t n = (size_t)(slash - prefix);
+    if (n == 0 || n >= sizeof buf) return n == 0 ? 0 : -1;
+    memcpy(buf, prefix, n);
+    buf[n] = 0;
+    for (size_t i = 1; i <= n; i++)
+        if (buf[i] == '/' || buf[i] == 0) {
+            const char c = buf[i];
+            buf[i] = 0;
+            struct stat st;
+            if (mkdir(buf, 0777) != 0 && (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode))) return -1;
+            buf[i] = c;
+        }
+    return 0;
+}
+
+static int take_configs(const char *s, int *kinds, int *n, char *err, size_t errlen)
+{
+    *n = 0;
+    while (*s) {
+        const size_t len = strcspn(s, ",");
+        int k = -1;
+        for (int i = 0; i < N_CFG_KINDS; i++)
+            if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
+        if (k < 0 || *n >= N_CFG_KINDS) {
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, old (each once)", (int)len, s);
+            return -1;
+        }
+        for (int i = 0; i < *n; i++)
+            if (kinds[i] == k) {
+                snprintf(err, errlen, "--config: '%s' twice", cfg_name[k]);
+                return -1;
+            }
+        kinds[(*n)++] = k;
+        s += len;
+        if (*s == ',') s++;
+    }
+    if (*n == 0) {
+        snprintf(err, errlen, "--config: no configuration");
+        return -1;
+    }
+    return 0;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track maintenance) over clutter levels")
+{
+    long scans, seeds;
+    double levels[MAX_LEVELS], c_m, pd, snr_db, q;
+    int n_levels, no_amp = 0;
+    const char *configs;
+    struct mtt_settings set = {{NULL}, 0};
+    const struct sim_opt opts[] = {
+        SIM_OPT_LONG("--scans", &scans, "N", "200", SIM_IN, 10, 100000, "scans per run, one every 4 s"),
+        SIM_OPT_LONG("--seeds", &seeds, "N", "10", SIM_IN, 1, 100000,
+                     "scenarios of the family: seeds S .. S+N-1 (S = --seed)"),
+        SIM_OPT_LIST("--clutter-count", levels, &n_levels, MAX_LEVELS, "0,20,50,100,150,200,256", SIM_IN, 0,
+                     100000,
+                     "clutter detections per scan (exactly N, uniform over the region),\n"
+                     "each capped at TRK_MAX_DETECTIONS minus the scan's target detections"),
+        SIM_OPT_STRING("--config", &configs, "LIST", "new,old",
+                       "configurations: new (trk_tracker_default_params), old (the\n"
+                       "defaults before issue 14)"),
+        SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
+                        "a tracker setting for every configuration (the keys below)"),
+        SIM_OPT_FLAG("--no-amplitude", &no_amp, "no amplitudes: positions only, use_amplitude off"),
+        SIM_OPT_DOUBLE("--gospa-c", &c_m, "M", "50", SIM_GT, 0, 0, "GOSPA cut-off c (m)"),
+        SIM_OPT_DOUBLE("--pd", &pd, "P", "0.8", SIM_OPEN, 0, 1, "detection probability"),
+        SIM_OPT_DOUBLE("--snr-db", &snr_db, "D", "13", SIM_IN, 0, 40,
+                       "target SNR (Swerling I, Rayleigh clutter); the threshold's\n"
+                       "P_FA is pd^(1 + SNR), so that P_D = pd"),
+        SIM_OPT_DOUBLE("--q", &q, "Q", "1e-3", SIM_GE, 0, 0, "the tracker's process noise (m^2/s^3)"),
+        SIM_OPT_END};
+    const struct sim_cli cli = {
+        "mtt", "[options] [--set key=value ...]",
+        "Issue 14's multi-target evaluation: the scenario family of tools/sim/mtt_scenario.h\n"
+        "(3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes; eight\n"
+        "targets: an X through the centre, a pair 60 m apart, a birth at ~20 % of the run, a\n"
+        "death at ~70 %, a 90 deg turn at ~3 deg/s mid-run, one straight; speeds 5-15 m/s,\n"
+        "reduced where a target would leave the region), each seed at every clutter count\n"
+        "through every configuration (the same scenarios: common random numbers). Scored per\n"
+        "scan on the confirmed tracks (GOSPA p = 2, alpha = 2, cut-off c; tools/sim/mtt_eval.h);\n"
+        "mean and 95 % Student t interval over seeds.",
+        opts, "build/results/mtt", NULL, SIM_UNUSED_RUNS,
+        "Writes PREFIX.csv: one row per (TRK_MAX_TRACKS, config, clutter), columns\n"
+        "<metric>_mean, _lo, _hi; and PREFIX_gospa.png, _gospa_parts.png, _confirm.png,\n"
+        "_false.png (gnuplot). Compare builds with `trk-sim mtt-compare A.csv B.csv`.\n"
+        "--set key=value: tracker settings (the keys below), applied after each\n"
+        "configuration's own and the scenario's sensor (sensor.0.*, process_noise_q).\n",
+        NULL, NULL};
+    struct sim_common com;
+    const int parsed = sim_parse_more(&cli, tcfg_help, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
+    char err[1024];
+    if (make_parent(com.out) != 0) {
+        fprintf(stderr, "trk-sim mtt: cannot create the directory of %s\n", com.out);
+        return 1;
+    }
+    int kinds[N_CFG_KINDS], n_cfg;
+    if (take_configs(configs, kinds, &n_cfg, err, sizeof err) != 0) {
+        fprintf(stderr, "trk-sim mtt: %s\n", err);
+        return 2;
+    }
+    for (int l = 0; l < n_levels; l++)
+        if (levels[l] != floor(levels[l])) {
+            fprintf(stderr, "trk-sim mtt: --clutter-count: %g is not a whole number\n", levels[l]);
+            return 2;
+        }
+    if (sizeof(struct trk_scan_report) != (size_t)N_REP * sizeof(uint32_t))
+        fprintf(stderr, "trk-sim mtt: note: struct trk_scan_report holds %zu bytes, the %d counters listed "
+                        "here %zu: update MTT_REPORT_COUNTERS in %s\n",
+                sizeof(struct trk_scan_report), N_REP, (size_t)N_REP * sizeof(uint32_t), __FILE__);
+    /* ---- the scenarios (one per seed; read-only from here on) */
+    struct mtt_scenario *sc = calloc((size_t)seeds, sizeof *sc);
+    if (!sc) return 1;
+    double vmin = INFINITY, vmax = 0;
+    for (long i = 0; i < seeds; i++) {
+        struct mtt_scen_params sp;
+        mtt_scen_defaults(&sp);
+        sp.seed = com.seed + (uint64_t)i;
+        sp.n_scans = scans;
+        sp.pd = pd;
+        sp.snr_db = snr_db;
+        sp.amplitude = !no_amp;
+        if (mtt_scen_init(&sc[i], &sp, err, sizeof err) != 0) {
+            fprintf(stderr, "trk-sim mtt: scenario: %s\n", err);
+            return 2;
+        }
+        for (int j = 0; j < MTT_N_TARGETS; j++) {
+            vmin = fmin(vmin, sc[i].tg[j].speed_mps);
+            vmax = fmax(vmax, sc[i].tg[j].speed_mps);
+        }
+    }
+    const double area = sc[0].p.region_m * sc[0].p.region_m;
+    /* ---- the configurations at every level (the clutter density differs) */
+    const int nl = n_levels, nc = n_cfg;
+    struct trk_tracker_params *tp = malloc((size_t)(nl * nc) * sizeof *tp);
+    struct tcfg_runtime *rts = calloc((size_t)(nl * nc), sizeof *rts);
+    if (!tp || !rts) return 1;
+    for (int l = 0; l < nl; l++)
+        for (int c = 0; c < nc; c++) {
+            const double n_eff = fmin(levels[l], (double)TRK_MAX_DETECTIONS);
+            if (build_params(kinds[c], &sc[0], n_eff / area, q, &set, &tp[l * nc + c], &rts[l * nc + c], err,
+                             sizeof err) != 0) {
+                fprintf(stderr, "trk-sim mtt: %s (see trk-sim mtt --help)\n", err);
+                return 2;
+            }
+        }
+    /* ---- run: every (seed, level, configuration) on its own, in parallel */
+    const long n_jobs = seeds * nl * nc;
+    struct run_result *res = calloc((size_t)n_jobs, sizeof *res);
+    if (!res) return 1;
+    const int threads = sim_threads(&com);
+    printf("== trk-sim mtt: %ld seeds (%llu..%llu) x %ld scans of %g s, region %g km x %g km, TRK_MAX_TRACKS %d, "
+           "TRK_MAX_DETECTIONS %d, %d threads\n",
+           seeds, (unsigned long long)com.seed, (unsigned long long)(com.seed + (uint64_t)seeds - 1), scans,
+           sc[0].p.scan_period_s, sc[0].p.region_m / 1000, sc[0].p.region_m / 1000, TRK_MAX_TRACKS,
+           TRK_MAX_DETECTIONS, threads);
+    printf("   8 targets, P_D %g, sigma %g m, %s, speeds %.1f-%.1f m/s (drawn in [%g, %g], reduced to stay in the "
+           "region), q %g; GOSPA c %g m\n",
+           pd, sc[0].p.meas_sigma_m, no_amp ? "no amplitudes" : "Rayleigh amplitudes", vmin, vmax,
+           sc[0].p.speed_min_mps, sc[0].p.speed_max_mps, q, c_m);
+    if (!no_amp)
+        printf("   amplitudes: target SNR %g dB, threshold P_FA %.4g (P_D = %.3f), use_amplitude on\n", snr_db,
+               sc[0].pfa, sc[0].amp_tg.pd);
+    printf("   clutter per scan:");
+    for (int l = 0; l < nl; l++) printf(" %g", levels[l]);
+    printf(" (a scan holds at most %d detections: the clutter is cut to %d minus the target detections)\n",
+           TRK_MAX_DETECTIONS, TRK_MAX_DETECTIONS);
+    if (set.n) {
+        printf("   settings for every configuration:");
+        for (int i = 0; i < set.n; i++) printf(" %s", set.kv[i]);
+        printf("\n");
+    }
+    fflush(stdout);
+    int failed = 0;
+    struct sim_progress pr;
+    sim_progress_start(&pr, &com, "mtt", n_jobs);
+#pragma omp parallel
+    {
+        struct run_ws *ws = malloc(sizeof *ws);
+        struct trk_tracker *tk = malloc(sizeof *tk);
+        if (!ws || !tk) {
+#pragma omp atomic write
+            failed = 1;
+        } else {
+            ws->tk = tk;
+        }
+#pragma omp for schedule(dynamic, 1)
+        for (long j = 0; j < n_jobs; j++) {
+            if (!ws || !tk) continue;
+            const long i = j / (nl * nc), l = (j / nc) % nl, c = j % nc;
+            if (run_one(&sc[i], (long)levels[l], &tp[l * nc + c], c_m, ws, &res[j]) != 0) {
+#pragma omp atomic write
+                failed = 1;
+            }
+            sim_progress_add(&pr, 1);
+        }
+        free(ws);
+        free(tk);
+    }
+    const double wall = sim_progress_end(&pr);
+    if (failed) {
+        fprintf(stderr, "trk-sim mtt: a run failed (tracker refused a scan, or out of memory)\n");
+        return 1;
+    }
+    /* ---- reduce over seeds, in seed order */
+    struct mtt_row *rows = calloc((size_t)(nl * nc), sizeof *rows);
+    double *x = malloc((size_t)seeds * sizeof *x);
+    if (!rows || !x) return 1;
+    /* rows: configurations in --config order, clutter ascending */
+    double lv_sorted[MAX_LEVELS];
+    memcpy(lv_sorted, levels, sizeof lv_sorted);
+    qsort(lv_sorted, (size_t)nl, sizeof *lv_sorted, cmp_double);
+    int nr = 0;
+    for (int c = 0; c < nc; c++)
+        for (int ls = 0; ls < nl; ls++) {
+            int l = 0;
+            while (levels[l] != lv_sorted[ls]) l++;
+            if (ls > 0 && lv_sorted[ls] == lv_sorted[ls - 1]) continue; /* a level given twice */
+            struct mtt_row *r = &rows[nr++];
+            r->capacity = TRK_MAX_TRACKS;
+            snprintf(r->config, sizeof r->config, "%s", cfg_name[kinds[c]]);
+            r->clutter = levels[l];
+            r->seeds = seeds;
+            r->scans = scans;
+            r->amplitude = !no_amp;
+            for (int m = 0; m < M_N; m++) {
+                size_t k = 0;
+                for (long i = 0; i < seeds; i++) {
+                    const double v = res[(i * nl + l) * nc + c].v[m];
+                    if (isfinite(v)) x[k++] = v;
+                }
+                mc_mean_ci_t(x, k, 0.95, &r->mean[m], &r->lo[m], &r->hi[m]);
+            }
+        }
+    char path[1024];
+    if (write_csv(&com, ".csv", rows, nr, path, sizeof path) != 0) return 1;
+    print_tables(rows, nr);
+    char title[256];
+    snprintf(title, sizeof title, "trk-sim mtt: %ld seeds x %ld scans, %d slots", seeds, scans, TRK_MAX_TRACKS);
+    plot_all(&com, rows, nr, title);
+    printf("-- %ld runs in %.1f s wall on %d threads; CSV %s%s\n", n_jobs, wall, threads, path,
+           com.no_plot ? "" : " and PNG plots beside it");
+    for (int k = 0; k < nl * nc; k++) tcfg_unload(&rts[k]);
+    for (long i = 0; i < seeds; i++) mtt_scen_free(&sc[i]);
+    free(rts);
+    free(tp);
+    free(sc);
+    free(res);
+    free(rows);
+    free(x);
+    return 0;
+}
+
+/* ---------------------------------------------------------------- mtt-compare */
+
+struct compare_files {
+    const char *path[MAX_FILES];
+    int n;
+};
+
+static int take_file(const char *arg, void *ctx)
+{
+    struct compare_files *f = ctx;
+    if (arg[0] == '-' || f->n >= MAX_FILES) return -1;
+    f->path[f->n++] = arg;
+    return 0;
+}
+
+/* Split a CSV line in place: up to max fields, returns the count. */
+static int split(char *line, char **fld, int max)
+{
+    int n = 0;
+    char *s = line;
+    line[strcspn(line, "\r\n")] = 0;
+    while (n < max) {
+        fld[n++] = s;
+        char *c = strchr(s, ',');
+        if (!c) break;
+        *c = 0;
+        s = c + 1;
+    }
+    return n;
+}
+
+#define MAX_COLS (6 + 3 * M_N + 64)
+
+/* Rows of one mtt CSV appended to rows[*n]. 0, or -1 with a message. */
+static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot read", path);
+        return -1;
+    }
+    static char line[65536], head[65536];
+    char *h[MAX_COLS], *v[MAX_COLS];
+    int col_m[MAX_COLS], col_part[MAX_COLS]; /* metric and 0 mean, 1 lo, 2 hi; -1 key */
+    if (!fgets(head, sizeof head, f)) {
+        fclose(f);
+        snprintf(err, errlen, "%s: empty", path);
+        return -1;
+    }
+    const int nh = split(head, h, MAX_COLS);
+    if (nh < 6 || strcmp(h[0], "capacity") != 0 || strcmp(h[1], "config") != 0 || strcmp(h[2], "clutter") != 0) {
+        fclose(f);
+        snprintf(err, errlen, "%s: not a trk-sim mtt CSV (header capacity,config,clutter,...)", path);
+        return -1;
+    }
+    for (int j = 0; j < nh; j++) {
+        col_m[j] = -1;
+        col_part[j] = -1;
+        static const char *const sfx[3] = {"_mean", "_lo", "_hi"};
+        for (int p = 0; p < 3; p++) {
+            const size_t lh = strlen(h[j]), ls = strlen(sfx[p]);
+            if (lh > ls && strcmp(h[j] + lh - ls, sfx[p]) == 0) {
+                char name[256];
+                snprintf(name, sizeof name, "%.*s", (int)(lh - ls), h[j]);
+                col_m[j] = metric_index(name);
+                col_part[j] = p;
+            }
+        }
+    }
+    int lineno = 1;
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        if (line[0] == '#' || line[0] == '\n') continue;
+        if (*n >= MAX_ROWS) {
+            fclose(f);
+            snprintf(err, errlen, "%s: more than %d rows in all", path, MAX_ROWS);
+            return -1;
+        }
+        const int nv = split(line, v, MAX_COLS);
+        if (nv != nh) {
+            fclose(f);
+            snprintf(err, errlen, "%s:%d: %d fields, the header has %d", path, lineno, nv, nh);
+            return -1;
+        }
+        struct mtt_row *r = &rows[*n];
+        memset(r, 0, sizeof *r);
+        for (int m = 0; m < M_N; m++) r->mean[m] = r->lo[m] = r->hi[m] = NAN;
+        r->capacity = strtol(v[0], NULL, 10);
+        snprintf(r->config, sizeof r->config, "%s", v[1]);
+        r->clutter = strtod(v[2], NULL);
+        for (int j = 3; j < nh; j++) {
+            if (strcmp(h[j], "seeds") == 0) r->seeds = strtol(v[j], NULL, 10);
+            else if (strcmp(h[j], "scans") == 0) r->scans = strtol(v[j], NULL, 10);
+            else if (strcmp(h[j], "amplitude") == 0) r->amplitude = (int)strtol(v[j], NULL, 10);
+            else if (col_m[j] >= 0) {
+                const double d = strtod(v[j], NULL);
+                double *dst = col_part[j] == 0 ? r->mean : col_part[j] == 1 ? r->lo : r->hi;
+                dst[col_m[j]] = d;
+            }
+        }
+        ++*n;
+    }
+    fclose(f);
+    return 0;
+}
+
+static int cmp_row(const void *a, const void *b)
+{
+    const struct mtt_row *x = a, *y = b;
+    if (x->capacity != y->capacity) return x->capacity < y->capacity ? -1 : 1;
+    const int c = strcmp(x->config, y->config);
+    if (c) return c; /* "new" before "old" */
+    return x->clutter < y->clutter ? -1 : x->clutter > y->clutter;
+}
+
+SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of builds with other TRK_MAX_TRACKS, ratios")
+{
+    struct compare_files files = {{NULL}, 0};
+    const struct sim_opt opts[] = {SIM_OPT_END};
+    const struct sim_cli cli = {
+        "mtt-compare", "A.csv B.csv ... [--out PREFIX]",
+        "Merges the PREFIX.csv files of `trk-sim mtt` run by builds with different\n"
+        "TRK_MAX_TRACKS (e.g. 64 and 1024, `make mtt`) into one table and one set of plots,\n"
+        "and prints per metric, configuration and clutter count the ratio of the smallest\n"
+        "capacity's mean to the largest's, marked when it is outside the largest build's\n"
+        "95 % interval.",
+        opts, "build/results/mtt", NULL, SIM_UNUSED_RUNS | SIM_UNUSED_THREADS,
+        "Writes PREFIX.csv (the merged rows, the columns of trk-sim mtt), PREFIX_ratio.csv\n"
+        "(config, clutter, metric, the two means, the large build's interval, ratio,\n"
+        "within) and the plots of trk-sim mtt with one line per (capacity, config).\n",
+        take_file, &files};
+    struct sim_common com;
+    const int parsed = sim_parse(&cli, &com, argc, argv);
+    if (parsed != SIM_RUN) return parsed;
+    if (files.n < 1) {
+        fprintf(stderr, "trk-sim mtt-compare: give the CSV files of trk-sim mtt runs\n");
+        return 2;
+    }
+    if (make_parent(com.out) != 0) {
+        fprintf(stderr, "trk-sim mtt-compare: cannot create the directory of %s\n", com.out);
+        return 1;
+    }
+    struct mtt_row *rows = malloc(MAX_ROWS * sizeof *rows);
+    if (!rows) return 1;
+    int n = 0;
+    char err[1200];
+    for (int i = 0; i < files.n; i++)
+        if (read_csv(files.path[i], rows, &n, err, sizeof err) != 0) {
+            fprintf(stderr, "trk-sim mtt-compare: %s\n", err);
+            free(rows);
+            return 2;
+        }
+    qsort(rows, (size_t)n, sizeof *rows, cmp_row);
+    for (int i = 1; i < n; i++)
+        if (rows[i].capacity == rows[i - 1].capacity && strcmp(rows[i].config, rows[i - 1].config) == 0 &&
+            rows[i].clutter == rows[i - 1].clutter) {
+            fprintf(stderr, "trk-sim mtt-compare: (%ld slots, %s, clutter %g) appears twice\n", rows[i].capacity,
+                    rows[i].config, rows[i].clutter);
+            free(rows);
+            return 2;
+        }
+    if (n == 0) {
+        fprintf(stderr, "trk-sim mtt-compare: no rows\n");
+        free(rows);
+        return 2;
+    }
+    const long small = rows[0].capacity, large = rows[n - 1].capacity;
+    char path[1024];
+    if (write_csv(&com, ".csv", rows, n, path, sizeof path) != 0) {
+        free(rows);
+        return 1;
+    }
+    printf("== trk-sim mtt-compare: %d files, %d rows, capacities %ld .. %ld\n", files.n, n, small, large);
+    for (int i = 1; i < n; i++)
+        if (rows[i].scans != rows[0].scans || rows[i].seeds != rows[0].seeds ||
+            rows[i].amplitude != rows[0].amplitude) {
+            printf("   NOTE: the files differ in scans, seeds or amplitudes: not the same runs\n");
+            break;
+        }
+    print_tables(rows, n);
+    char title[256];
+    snprintf(title, sizeof title, "trk-sim mtt: %ld seeds x %ld scans, %ld vs %ld slots", rows[0].seeds,
+             rows[0].scans, small, large);
+    plot_all(&com, rows, n, title);
+    if (small == large) {
+        printf("-- one capacity only: no ratios. CSV %s\n", path);
+        free(rows);
+        return 0;
+    }
+    /* ---- ratios small / large per (config, clutter) and metric */
+    FILE *fr = sim_csv_open(&com, "_ratio.csv", NULL, 0,
+                            "config,clutter,metric,small_capacity,large_capacity,small_mean,large_mean,large_lo,"
+                            "large_hi,ratio,within");
+    if (!fr) {
+        free(rows);
+        return 1;
+    }
+    int pair_s[MAX_ROWS], pair_l[MAX_ROWS], np = 0;
+    for (int i = 0; i < n; i++) {
+        if (rows[i].capacity != small) continue;
+        for (int j = 0; j < n; j++)
+            if (rows[j].capacity == large && strcmp(rows[j].config, rows[i].config) == 0 &&
+                rows[j].clutter == rows[i].clutter) {
+                pair_s[np] = i;
+                pair_l[np] = j;
+                np++;
+            }
+    }
+    printf("-- %ld slots / %ld slots: ratio of the means; '*' = the %ld-slot mean is outside the %ld-slot 95%% "
+           "interval ('-': undefined)\n",
+           small, large, small, large);
+    printf("%-30s %-4s", "metric", "cfg");
+    for (int k = 0; k < np && strcmp(rows[pair_s[k]].config, rows[pair_s[0]].config) == 0; k++)
+        printf(" %8g", rows[pair_s[k]].clutter);
+    printf("   within\n");
+    for (int m = 0; m < M_N; m++) {
+        for (int k0 = 0; k0 < np;) {
+            int k1 = k0;
+            while (k1 < np && strcmp(rows[pair_s[k1]].config, rows[pair_s[k0]].config) == 0) k1++;
+            printf("%-30s %-4s", metric_name[m], rows[pair_s[k0]].config);
+            int within_n = 0, defined = 0;
+            for (int k = k0; k < k1; k++) {
+                const struct mtt_row *a = &rows[pair_s[k]], *b = &rows[pair_l[k]];
+                const double sm = a->mean[m], lm = b->mean[m];
+                const double ratio = lm != 0 ? sm / lm : sm == 0 ? 1 : INFINITY;
+                const int ok = !isnan(sm) && !isnan(lm);
+                const int within = ok && sm >= b->lo[m] && sm <= b->hi[m];
+                fprintf(fr, "%s,%g,%s,%ld,%ld,%.6g,%.6g,%.6g,%.6g,%.6g,%d\n", a->config, a->clutter, metric_name[m],
+                        small, large, sm, lm, b->lo[m], b->hi[m], ok ? ratio : NAN, within);
+                if (!ok) {
+                    printf(" %8s", "-");
+                    continue;
+                }
+                defined++;
+                within_n += within;
+                char b8[32];
+                snprintf(b8, sizeof b8, "%.3f%s", ratio, within ? " " : "*");
+                printf(" %8s", b8);
+            }
+            printf("   %d/%d\n", within_n, defined);
+            k0 = k1;
+        }
+    }
+    fclose(fr);
+    printf("-- CSV %s, %s_ratio.csv%s\n", path, com.out, com.no_plot ? "" : "; PNG plots beside them");
+    free(rows);
+    return 0;
+}
