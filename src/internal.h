@@ -21,4 +21,13 @@
 #define TRK_INLINE static inline
 #endif
 
+/* A stage kept out of its caller, so that the caller's stack frame does not
+ * carry the stage's locals on the paths through its other stages (the
+ * firmware stack budget of trk_tracker_process_scan, mk/size.mk). */
+#if defined(__GNUC__) || defined(__clang__)
+#define TRK_NOINLINE __attribute__((noinline))
+#else
+#define TRK_NOINLINE
+#endif
+
 #endif

@@ -248,7 +248,7 @@ static int duplicates(const struct trk_track *a, const struct trk_track *b, trk_
 
 /* End the weaker of every pair of live tracks that follow one target
  * (PDA tracks sharing detections converge onto it). */
-static void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep)
+static TRK_NOINLINE void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep)
 {
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
         struct trk_track *a = &t->track[i];

@@ -20,15 +20,17 @@ struct slots {
     int no_tentative;
 };
 
-/* What bounds the velocity gates of the store's candidates in a scan. */
+/* What bounds every velocity gate of a scan: no candidate farther than
+ * reach_m in x from a detection can pair with it. */
 struct cand_reach {
-    trk_real dt_max_s;   /* the oldest candidate's gap */
-    trk_real var_max_m2; /* the largest trace of a candidate's covariance */
+    trk_real reach_m;
 };
 
-static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan);
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
-                           const trk_real *r_j, const struct cand_reach *reach);
+static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n);
+static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
+                                           size_t n);
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, const trk_real *r_j,
+                           size_t from, trk_real reach_m);
 static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t c, size_t j,
                       const trk_real *r_j, struct trk_scan_report *rep);
 static int start_single(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t j,
@@ -50,27 +52,39 @@ static void detection_r(const struct trk_tracker *t, const struct trk_scan *scan
 }
 
 /* Every valid detection no track used starts a track (single point), or
- * pairs with a candidate (two points); the unpaired ones become candidates. */
-static void initiate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
+ * pairs with a candidate (two points: a sweep over the detections in x
+ * order against the store, also in x order); the unpaired ones become
+ * candidates. */
+static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
-    const int two_point = t->params.init.method == TRK_INIT_TWO_POINT;
-    size_t n_new = 0;
     struct slots sl = {0, 0};
-    struct cand_reach reach = {0, 0};
-    if (two_point) reach = expire_candidates(t, scan);
-    for (size_t j = 0; j < t->ws.n_valid; j++) {
-        if (t->ws.used[j]) continue;
-        trk_real r_j[NZ * NZ];
-        detection_r(t, scan, j, r_j);
-        if (!two_point) {
-            (void)start_single(t, &sl, scan, j, r_j, rep);
-            continue;
+    uint16_t *idx = t->ws.cand; /* the gated-set scratch is free by now */
+    size_t n = 0;
+    for (size_t j = 0; j < t->ws.n_valid; j++)
+        if (!t->ws.used[j]) idx[n++] = (uint16_t)j;
+    if (t->params.init.method == TRK_INIT_SINGLE_POINT) {
+        for (size_t k = 0; k < n; k++) {
+            trk_real r_j[NZ * NZ];
+            detection_r(t, scan, idx[k], r_j);
+            (void)start_single(t, &sl, scan, idx[k], r_j, rep);
         }
-        const long c = best_candidate(t, scan, j, r_j, &reach);
-        if (c >= 0 && start_pair(t, &sl, scan, (size_t)c, j, r_j, rep)) continue;
-        t->ws.cand[n_new++] = (uint16_t)j; /* the gated-set scratch is free by now */
+    } else {
+        sort_by_x(t, idx, n);
+        const struct cand_reach reach = expire_candidates(t, scan, idx, n);
+        size_t lo = 0, n_new = 0;
+        for (size_t k = 0; k < n; k++) { /* idx[k] by increasing x: lo only moves up */
+            const size_t j = idx[k];
+            while (lo < t->n_cand && t->cand[lo].x_m < t->ws.x[j] - reach.reach_m) lo++;
+            if (lo < t->n_cand && t->cand[lo].x_m <= t->ws.x[j] + reach.reach_m) { /* a candidate in reach */
+                trk_real r_j[NZ * NZ];
+                detection_r(t, scan, j, r_j);
+                const long c = best_candidate(t, scan, j, r_j, lo, reach.reach_m);
+                if (c >= 0 && start_pair(t, &sl, scan, (size_t)c, j, r_j, rep)) continue;
+            }
+            idx[n_new++] = (uint16_t)j; /* stays in x order */
+        }
+        store_candidates(t, scan, idx, n_new, rep);
     }
-    if (two_point) store_candidates(t, scan, t->ws.cand, n_new, rep);
     rep->n_candidates = (uint32_t)t->n_cand;
 }
 
@@ -225,51 +239,49 @@ static void candidate_r(const struct trk_candidate *c, trk_real *r)
 }
 
 /* Drop the candidates older than max_gap_scans (the store stays sorted);
- * the bounds of the others' velocity gates. */
-static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan)
+ * the reach of the velocity gates of the others with the scan's n
+ * unexplained detections idx: v_max dt_max + sqrt(gamma (tr R_c + tr R_j)),
+ * maxima over both (lambda_max(R_c + R_j) <= tr R_c + tr R_j). */
+static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
+                                           size_t n)
 {
-    struct cand_reach r = {0, 0};
-    size_t n = 0;
+    trk_real dt_max = 0, var_c = 0, var_j = 0;
+    size_t kept = 0;
     for (size_t i = 0; i < t->n_cand; i++) {
         struct trk_candidate *c = &t->cand[i];
         if (t->scan_no - c->scan_no > t->params.init.max_gap_scans) continue;
         const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
         const trk_real var = c->cov_m2[TRK_COV2_XX] + c->cov_m2[TRK_COV2_YY];
-        if (dt > r.dt_max_s) r.dt_max_s = dt;
-        if (var > r.var_max_m2) r.var_max_m2 = var;
-        t->cand[n] = *c;
-        t->cand[n].used = 0;
-        n++;
+        if (dt > dt_max) dt_max = dt;
+        if (var > var_c) var_c = var;
+        if (kept != i) t->cand[kept] = *c;
+        t->cand[kept++].used = 0;
     }
-    t->n_cand = n;
-    return r;
-}
-
-/* The first candidate with x >= x_lo (the store is sorted by x). */
-static size_t lower_bound_x(const struct trk_tracker *t, trk_real x_lo)
-{
-    size_t lo = 0, hi = t->n_cand;
-    while (lo < hi) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (t->cand[mid].x_m < x_lo) lo = mid + 1;
-        else hi = mid;
+    t->n_cand = kept;
+    const trk_real *r = t->r[scan->sensor_id];
+    var_j = r[S(ZX, ZX)] + r[S(ZY, ZY)];
+    for (size_t k = 0; k < n; k++) {
+        const struct trk_detection *d = &scan->detections[t->ws.src[idx[k]]];
+        if (d->has_cov && d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY] > var_j)
+            var_j = d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY];
     }
-    return lo;
+    const trk_real gamma = t->pda[scan->sensor_id].gamma;
+    const struct cand_reach reach = {(t->params.init.max_speed_mps * dt_max + trk_sqrt(gamma * (var_c + var_j))) *
+                                     TRK_REAL_C(1.0001)};
+    return reach;
 }
 
 /* The candidate detection j pairs with (trk_init_params: within the velocity
- * gate; highest ln l^a, then nearest), or -1. The x-window bounds every
- * candidate's velocity gate (lambda_max(R_c + R_j) <= tr R_c + lambda_max(R_j)). */
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
-                           const trk_real *r_j, const struct cand_reach *cr)
+ * gate; highest ln l^a, then nearest), or -1, from the store's entries from
+ * `from` on (x >= x_j - reach) up to x_j + reach. */
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, const trk_real *r_j,
+                           size_t from, trk_real reach)
 {
     const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
     const trk_real xj = t->ws.x[j], yj = t->ws.y[j];
-    const trk_real reach =
-        (vmax * cr->dt_max_s + trk_sqrt(gamma * (cr->var_max_m2 + lambda_max2(r_j)))) * TRK_REAL_C(1.0001);
     long best = -1;
     trk_real best_llr = 0, best_d2 = 0;
-    for (size_t i = lower_bound_x(t, xj - reach); i < t->n_cand && t->cand[i].x_m <= xj + reach; i++) {
+    for (size_t i = from; i < t->n_cand && t->cand[i].x_m <= xj + reach; i++) {
         const struct trk_candidate *c = &t->cand[i];
         if (c->used || trk_fabs(yj - c->y_m) > reach) continue;
         const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
@@ -324,31 +336,32 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
 
 /* ------------------------------------------------------------------ the store */
 
-/* Sort idx[0..n) by the workspace x of the detection (heap sort: no
- * recursion, n log n). */
-static void sort_by_x(const struct trk_tracker *t, uint16_t *idx, size_t n)
+/* Sort idx[0..n) by the workspace x of the detection: a counting sort on n
+ * buckets of equal width over [min x, max x], then an insertion sort that
+ * finishes the buckets (O(n) for spread positions; correct for any). */
+static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n)
 {
-    for (size_t k = n; k-- > 0;) { /* heapify, then pop */
-        for (size_t i = k;;) {
-            size_t c = 2 * i + 1;
-            if (c >= n) break;
-            if (c + 1 < n && t->ws.x[idx[c + 1]] > t->ws.x[idx[c]]) c++;
-            if (!(t->ws.x[idx[c]] > t->ws.x[idx[i]])) break;
-            const uint16_t tmp = idx[i];
-            idx[i] = idx[c], idx[c] = tmp, i = c;
-        }
+    const trk_real *x = t->ws.x;
+    if (n < 2) return;
+    trk_real lo = x[idx[0]], hi = lo;
+    for (size_t i = 1; i < n; i++) {
+        if (x[idx[i]] < lo) lo = x[idx[i]];
+        if (x[idx[i]] > hi) hi = x[idx[i]];
     }
-    for (size_t end = n; end-- > 1;) {
-        uint16_t tmp = idx[0];
-        idx[0] = idx[end], idx[end] = tmp;
-        for (size_t i = 0;;) {
-            size_t c = 2 * i + 1;
-            if (c >= end) break;
-            if (c + 1 < end && t->ws.x[idx[c + 1]] > t->ws.x[idx[c]]) c++;
-            if (!(t->ws.x[idx[c]] > t->ws.x[idx[i]])) break;
-            tmp = idx[i];
-            idx[i] = idx[c], idx[c] = tmp, i = c;
-        }
+    const trk_real scale = (trk_real)(n - 1) / (hi - lo); /* inf when all equal: skipped */
+    if (hi > lo && isfinite(scale)) {
+        uint16_t *count = t->ws.sort_count, *tmp = t->ws.sort_tmp;
+        for (size_t b = 0; b <= n; b++) count[b] = 0;
+        for (size_t i = 0; i < n; i++) count[(size_t)((x[idx[i]] - lo) * scale) + 1]++; /* bucket <= n - 1 */
+        for (size_t b = 1; b <= n; b++) count[b] = (uint16_t)(count[b] + count[b - 1]);
+        for (size_t i = 0; i < n; i++) tmp[count[(size_t)((x[idx[i]] - lo) * scale)]++] = idx[i];
+        for (size_t i = 0; i < n; i++) idx[i] = tmp[i];
+    }
+    for (size_t i = 1; i < n; i++) {
+        const uint16_t v = idx[i];
+        size_t k = i;
+        for (; k > 0 && x[idx[k - 1]] > x[v]; k--) idx[k] = idx[k - 1];
+        idx[k] = v;
     }
 }
 
@@ -389,9 +402,9 @@ static void fill_candidate(const struct trk_tracker *t, const struct trk_scan *s
     c->used = 0;
 }
 
-/* The scan's unpaired detections idx[0..n) into the store, merged in x
- * order; what does not fit even after evicting every older candidate is
- * counted as dropped. */
+/* The scan's unpaired detections idx[0..n) (in x order) into the store,
+ * merged in x order; what does not fit even after evicting every older
+ * candidate is counted as dropped (the last in x order). */
 static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
                              struct trk_scan_report *rep)
 {
@@ -400,7 +413,6 @@ static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan,
         rep->n_candidates_dropped += (uint32_t)(n - (TRK_MAX_CANDIDATES - t->n_cand));
         n = TRK_MAX_CANDIDATES - t->n_cand;
     }
-    sort_by_x(t, idx, n);
     size_t i = t->n_cand, k = n, w = t->n_cand + n;
     while (k > 0) { /* merge from the back, in place */
         if (i > 0 && t->cand[i - 1].x_m > t->ws.x[idx[k - 1]]) t->cand[--w] = t->cand[--i];

@@ -32,7 +32,7 @@ expect_refusal() { # pattern, args...
 }
 expect_refusal "gate_prob" --gate_prob 2
 expect_refusal "unknown setting" --set no-such-setting=1
-expect_refusal "confirm.mn" --set confirm.mn.m=9
+expect_refusal "confirm.mn" --set confirm=mn --set confirm.mn.m=9
 expect_refusal "term = page" --set term=page --set hmm.p_low_high=0 --set hmm.q_high_low=0
 expect_refusal "amp_table" --set sensor.0.amplitude=k   # K clutter needs a table
 expect_refusal "cannot open" --set q2_table="$T/missing.tbl"

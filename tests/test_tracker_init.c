@@ -390,11 +390,47 @@ static void test_no_duplicates(void **state)
     assert_true(confirmed_scans >= 85);
 }
 
+/* The store stays sorted by x, holds only candidates within max_gap_scans,
+ * and when a scan's unexplained detections do not fit, the oldest scan's
+ * candidates make room first (a full scan of far-apart detections never
+ * pairs: each scan replaces the previous one's). */
+static void test_candidate_store(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    sonar_params(&p, 1e-7);
+    p.init.max_gap_scans = 3;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    static struct trk_detection d[TRK_MAX_DETECTIONS];
+    rng_state = 5;
+    for (int k = 0; k < 6; k++) {
+        for (size_t i = 0; i < TRK_MAX_DETECTIONS; i++) /* 1 km apart in y: no pairs */
+            d[i] = det_at(1e5 * urand(), 1000.0 * (double)(i + TRK_MAX_DETECTIONS * (size_t)k));
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(run_scan(k, d, TRK_MAX_DETECTIONS, &rep));
+        assert_int_equal(rep.n_started, 0);
+        assert_int_equal(rep.n_candidates, TRK_MAX_CANDIDATES < TRK_MAX_DETECTIONS ? TRK_MAX_CANDIDATES : TRK_MAX_DETECTIONS);
+        assert_int_equal(rep.n_candidates_dropped,
+                         TRK_MAX_CANDIDATES < TRK_MAX_DETECTIONS ? TRK_MAX_DETECTIONS - TRK_MAX_CANDIDATES : 0);
+        for (size_t i = 0; i + 1 < tk.n_cand; i++) assert_true(tk.cand[i].x_m <= tk.cand[i + 1].x_m);
+        for (size_t i = 0; i < tk.n_cand; i++) assert_int_equal(tk.cand[i].scan_no, tk.scan_no); /* the newest */
+    }
+    /* small scans: three scans' worth kept, then the oldest expires */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    for (int k = 0; k < 6; k++) {
+        for (size_t i = 0; i < 4; i++) d[i] = det_at(5000.0 * (double)i + 1e5 * k, 0);
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(run_scan(k, d, 4, &rep));
+        assert_int_equal(rep.n_candidates, 4 * (k < 3 ? k + 1 : 4)); /* ages 0 .. 3 */
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_two_point_start),
         cmocka_unit_test(test_velocity_gate_and_lifetime),
+        cmocka_unit_test(test_candidate_store),
         cmocka_unit_test(test_existence_rejects_clutter_pair),
         cmocka_unit_test(test_full_table_replaces_weakest),
         cmocka_unit_test(test_no_duplicates),

@@ -419,6 +419,8 @@ struct trk_tracker {
                                                                   twice over: the others of
                                                                   entry k are k+1 .. k+n-1 */
         int16_t amp_pos[TRK_MAX_DETECTIONS];                   /* index in amp_db, -1 none */
+        uint16_t sort_tmp[TRK_MAX_DETECTIONS];                 /* initiation's x-order sort */
+        uint16_t sort_count[TRK_MAX_DETECTIONS + 1];
         size_t n_amp;
     } ws;
 };

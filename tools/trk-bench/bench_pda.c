@@ -8,6 +8,8 @@
  *   scan_64x256_mn_kn the same scans with trk_tracker_mn_kn_params (M/N 2/3
  *                     here, single-point initiation): the path before issue 14,
  *                     for the ratio in the same run
+ *   candidates_full   ns per scan of the initiation stage at full scan capacity
+ *                     (TRK_MAX_DETECTIONS unexplained detections) and the store's bytes
  *   sizeof_tracker    bytes of struct trk_tracker at this build's capacities */
 #include <math.h>
 #include <stdio.h>
@@ -174,3 +176,49 @@ TRK_BENCH(scan_64x256) { scan_bench("scan_64x256", 0); }
 TRK_BENCH(scan_64x256_mn_kn) { scan_bench("scan_64x256_mn_kn", 1); }
 
 TRK_BENCH(sizeof_tracker) { bench_print("sizeof_tracker", (double)sizeof(struct trk_tracker), "bytes"); }
+
+/* The candidate store at full scan capacity: a tracker without tracks fed
+ * TRK_MAX_DETECTIONS uniform clutter detections per scan over 30 km x 30 km
+ * (pairs are rare: every detection is looked up in the store and becomes a
+ * candidate), so the scan's time is the initiation stage's: expiry, one
+ * binary search and window per detection, the sort and the merge. */
+TRK_BENCH(candidates_full)
+{
+    enum { N_SC = 32 };
+    struct cand_job {
+        struct trk_tracker tk;
+        struct trk_detection det[N_SC][TRK_MAX_DETECTIONS];
+    } *j = calloc(1, sizeof *j);
+    if (!j) return;
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p);
+    p.sensor[0].clutter_density_per_m2 = (trk_real)(TRK_MAX_DETECTIONS / 9e8);
+    rs = 7;
+    for (int k = 0; k < N_SC; k++)
+        for (int i = 0; i < TRK_MAX_DETECTIONS; i++) {
+            j->det[k][i].x_m = (trk_real)(30000 * urand());
+            j->det[k][i].y_m = (trk_real)(30000 * urand());
+        }
+    double best = 1e300;
+    uint32_t n_cand = 0, n_started = 0;
+    for (int rep = 0; rep < 5; rep++) {
+        if (trk_tracker_init(&j->tk, &p) != TRK_OK) break;
+        struct trk_scan_report r;
+        const struct trk_scan first = {0, 0, TRK_MAX_DETECTIONS, j->det[0]};
+        if (trk_tracker_process_scan(&j->tk, &first, &r) != TRK_OK) break;
+        double t0 = bench_now_ns();
+        for (int k = 1; k < N_SC; k++) {
+            const struct trk_scan scan = {(int64_t)k * 4000000, 0, TRK_MAX_DETECTIONS, j->det[k]};
+            if (trk_tracker_process_scan(&j->tk, &scan, &r) != TRK_OK) break;
+            n_cand = r.n_candidates;
+            n_started += r.n_started;
+        }
+        const double per = (bench_now_ns() - t0) / (N_SC - 1);
+        if (per < best) best = per;
+    }
+    bench_print("candidates_full_scan", best, "ns");
+    bench_print("candidates_full_held", n_cand, "candidates");
+    bench_print("candidates_full_started_per_scan", n_started / (5.0 * (N_SC - 1)), "tracks");
+    bench_print("candidates_store_bytes", (double)sizeof j->tk.cand, "bytes");
+    free(j);
+}
