@@ -7,7 +7,8 @@
 #     seeds 2, scans 30, amplitude 1
 #   - per row and metric lo <= mean <= hi; coverage, turn/pair/cross fractions in [0, 1];
 #     GOSPA and its parts >= 0; clutter per scan = the count asked for unless capped;
-#     detections counted by the tracker = the scan sizes (30 x (clutter + targets'))
+#     detections counted by the tracker = the scan sizes (30 x (clutter + targets'));
+#     targets present per scan in (0, 8] (eight slots), at least 8 targets per run
 #   - at clutter 0 the two configurations hold the targets: coverage > 0.3, every
 #     target confirmed at some scan
 #   - every column but the CPU time identical with 1 and 2 threads
@@ -25,7 +26,7 @@ for t in 1 2; do
 done
 csv=$d/m1.csv
 [ -f "$csv" ] || fail "no CSV written"
-awk -F, -v want_metrics="gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 scans_to_confirm never_confirmed coverage turn_coverage parallel_both cross_both false_tracks_per_1000_scans false_track_scans_per_100 duplicate_track_scans_per_100 fragmentations id_switches rmse_m cpu_us_per_scan rep_n_init_refused_full" '
+awk -F, -v want_metrics="targets_per_run targets_present_per_scan gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 scans_to_confirm never_confirmed coverage turn_coverage parallel_both cross_both false_tracks_per_1000_scans false_track_scans_per_100 duplicate_track_scans_per_100 fragmentations id_switches rmse_m cpu_us_per_scan rep_n_init_refused_full" '
 function bad(msg) { print "mtt-smoke: FAILED: " msg; err = 1; exit 1 }
 NR == 1 {
     if ($1 != "capacity" || $2 != "config" || $3 != "clutter" || $4 != "seeds" || $5 != "scans" || $6 != "amplitude")
@@ -65,6 +66,9 @@ NR == 1 {
     if (cl > $3) bad(key ": clutter per scan " cl " > " $3)
     dets = $(col["rep_n_detections_mean"])
     if (dets < 30 * cl || dets > 30 * (cl + 8)) bad(key ": " dets " detections in 30 scans at clutter " cl)
+    np = $(col["targets_present_per_scan_mean"]); ntg = $(col["targets_per_run_mean"])
+    if (!(np > 0 && np <= 8)) bad(key ": targets present per scan " np ", want (0, 8]")
+    if (ntg < 8) bad(key ": " ntg " targets per run, want >= 8 (one per slot at least)")
     if ($3 == 0) {
         if ($(col["coverage_mean"]) <= 0.3) bad(key ": coverage " $(col["coverage_mean"]))
         if ($(col["never_confirmed_mean"]) != 0) bad(key ": targets never confirmed " $(col["never_confirmed_mean"]))

@@ -4,12 +4,18 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "rng.h"
 #include "trk/kalman.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
+#define PAR_SCANS 40       /* the pair present together for at least min(this, n) scans */
+#define PAR_OFF_MIN_M 150  /* the pair's line no nearer the centre than this */
+#define TRANSIT_TRIES 64   /* draws of a transit target's entry (exit) and heading */
+#define TRANSIT_OFF_DEG 60 /* transit heading: up to this off the inward (outward) normal */
+#define EDGE_INSET_M 0.01  /* a transit target's entry (exit) point: this far inside */
 
 void mtt_scen_defaults(struct mtt_scen_params *p)
 {
@@ -29,16 +35,26 @@ void mtt_scen_defaults(struct mtt_scen_params *p)
     p->parallel_sep_m = 60;
     p->turn_deg = 90;
     p->turn_rate_dps = 3;
+    p->min_life_scans = 25;
+    p->gap_max_scans = 10;
 }
 
 const char *mtt_role_name(int role)
 {
-    static const char *const names[MTT_N_TARGETS] = {"cross_a", "cross_b", "parallel_a", "parallel_b",
-                                                     "birth",   "death",   "turn",       "straight"};
-    return role >= 0 && role < MTT_N_TARGETS ? names[role] : "?";
+    static const char *const names[MTT_N_SLOTS + 1] = {"cross_a", "cross_b", "parallel_a", "parallel_b", "birth",
+                                                       "death",   "turn",    "straight",   "transit"};
+    return role >= 0 && role <= MTT_TRANSIT ? names[role] : "?";
 }
 
-void mtt_scen_free(struct mtt_scenario *s) { amp_model_free(&s->amp); }
+void mtt_scen_free(struct mtt_scenario *s)
+{
+    amp_model_free(&s->amp);
+    free(s->tg);
+    free(s->by_slot);
+    s->tg = NULL;
+    s->by_slot = NULL;
+    s->n_targets = 0;
+}
 
 static double unif(struct rng *r, double lo, double hi) { return lo + (hi - lo) * rng_uniform(r); }
 
@@ -70,64 +86,244 @@ static void truth_of(const struct mtt_target *g, double t, double x[4])
     x[TRK_CV2_VY] = v * sin(hd);
 }
 
-void mtt_scen_truth(const struct mtt_scenario *s, int i, double t_s, double x[4])
-{
-    truth_of(&s->tg[i], t_s, x);
-}
+void mtt_scen_truth(const struct mtt_scenario *s, long i, double t_s, double x[4]) { truth_of(&s->tg[i], t_s, x); }
 
-int mtt_scen_present(const struct mtt_scenario *s, int i, long k)
+int mtt_scen_present(const struct mtt_scenario *s, long i, long k)
 {
     return k >= s->tg[i].birth_scan && k < s->tg[i].death_scan;
 }
 
-/* Every scan of the target's life inside [m, S - m]^2 at speed v. */
-static int inside_at(const struct mtt_scenario *s, struct mtt_target g, double v)
+long mtt_scen_slot_target(const struct mtt_scenario *s, int j, long k)
 {
-    const double lo = s->p.margin_m, hi = s->p.region_m - s->p.margin_m;
-    g.speed_mps = v;
-    for (long k = g.birth_scan; k < g.death_scan; k++) {
-        double x[4];
-        truth_of(&g, (double)k * s->p.scan_period_s, x);
-        if (!(x[TRK_CV2_X] >= lo && x[TRK_CV2_X] <= hi && x[TRK_CV2_Y] >= lo && x[TRK_CV2_Y] <= hi)) return 0;
-    }
-    return 1;
-}
-
-/* The largest speed <= v whose path stays in (the path shrinks towards the
- * anchor, inside by construction, as the speed falls: bisection). With a
- * second target b (the pair: one velocity) both must stay in. */
-static double fit_speed(const struct mtt_scenario *s, const struct mtt_target *a, const struct mtt_target *b,
-                        double v)
-{
-    if (inside_at(s, *a, v) && (!b || inside_at(s, *b, v))) return v;
-    double lo = 0, hi = v;
-    for (int it = 0; it < 60; it++) {
-        const double mid = 0.5 * (lo + hi);
-        if (inside_at(s, *a, mid) && (!b || inside_at(s, *b, mid))) lo = mid;
+    if (j < 0 || j >= MTT_N_SLOTS) return -1;
+    /* the last of the slot's targets born at or before k */
+    long lo = s->slot_first[j], hi = s->slot_first[j + 1];
+    while (lo < hi) {
+        const long mid = lo + (hi - lo) / 2;
+        if (s->tg[s->by_slot[mid]].birth_scan <= k) lo = mid + 1;
         else hi = mid;
     }
-    return lo;
+    if (lo == s->slot_first[j]) return -1;
+    const long i = s->by_slot[lo - 1];
+    return k < s->tg[i].death_scan ? i : -1;
+}
+
+int mtt_scen_n_present(const struct mtt_scenario *s, long k)
+{
+    int n = 0;
+    for (int j = 0; j < MTT_N_SLOTS; j++) n += mtt_scen_slot_target(s, j, k) >= 0;
+    return n;
+}
+
+/* ---------------------------------------------------------------- lives */
+
+static int inside_xy(const struct mtt_scenario *s, double x, double y)
+{
+    const double lo = s->p.margin_m, hi = s->p.region_m - s->p.margin_m;
+    return x >= lo && x <= hi && y >= lo && y <= hi;
+}
+
+static int inside_k(const struct mtt_scenario *s, const struct mtt_target *g, long k)
+{
+    double x[4];
+    truth_of(g, (double)k * s->p.scan_period_s, x);
+    return inside_xy(s, x[TRK_CV2_X], x[TRK_CV2_Y]);
+}
+
+/* The life of g (mtt_scenario.h): the consecutive scans around its anchor
+ * scan inside, within [lo, hi) (its designated birth and death, the run).
+ * An anchor outside gives an empty life at the anchor. */
+static void set_life(const struct mtt_scenario *s, struct mtt_target *g, long lo, long hi)
+{
+    const long ns = s->p.n_scans;
+    if (lo < 0) lo = 0;
+    if (hi > ns) hi = ns;
+    long a = lround(g->at_s / s->p.scan_period_s);
+    if (a < lo) a = lo;
+    if (a > hi - 1) a = hi - 1;
+    if (a < lo || !inside_k(s, g, a)) {
+        g->birth_scan = g->death_scan = a < 0 ? 0 : a;
+        return;
+    }
+    long b = a, d = a + 1;
+    while (b > lo && inside_k(s, g, b - 1)) b--;
+    while (d < hi && inside_k(s, g, d)) d++;
+    g->birth_scan = b;
+    g->death_scan = d;
+}
+
+static long overlap(const struct mtt_target *a, const struct mtt_target *b)
+{
+    const long lo = a->birth_scan > b->birth_scan ? a->birth_scan : b->birth_scan;
+    const long hi = a->death_scan < b->death_scan ? a->death_scan : b->death_scan;
+    return hi > lo ? hi - lo : 0;
 }
 
 static long clamp_l(long v, long lo, long hi) { return v < lo ? lo : v > hi ? hi : v; }
 
-/* A straight target through a point 300-700 m from the centre at its
- * mid-life, heading tangential +- 30 deg, either way. */
-static void straight(struct mtt_target *g, struct rng *r, double cx, double cy, double T)
+/* ---------------------------------------------------------------- the structure */
+
+/* A straight target through a point 300-700 m from the centre at time
+ * at_s, heading tangential +- 30 deg, either way. */
+static void straight(struct mtt_target *g, struct rng *r, double cx, double cy, double at_s)
 {
     const double al = unif(r, 0, 360 * DEG), rad = unif(r, 300, 700);
     const double h = al + 90 * DEG + unif(r, -30 * DEG, 30 * DEG) + (rng_uniform(r) < 0.5 ? 180 * DEG : 0);
     g->ax_m = cx + rad * cos(al);
     g->ay_m = cy + rad * sin(al);
-    g->at_s = 0.5 * (double)(g->birth_scan + g->death_scan - 1) * T;
+    g->at_s = at_s;
     g->heading_rad = h;
 }
+
+/* The parameter interval [*s0, *s1] of the line (x0, y0) + s (ux, uy) inside
+ * (slabs); 0 when it misses. */
+static int chord(const struct mtt_scenario *s, double x0, double y0, double ux, double uy, double *s0, double *s1)
+{
+    const double lo = s->p.margin_m, hi = s->p.region_m - s->p.margin_m;
+    double a = -INFINITY, b = INFINITY;
+    const double p0[2] = {x0, y0}, u[2] = {ux, uy};
+    for (int ax = 0; ax < 2; ax++) {
+        if (fabs(u[ax]) < 1e-12) {
+            if (p0[ax] < lo || p0[ax] > hi) return 0;
+            continue;
+        }
+        double t0 = (lo - p0[ax]) / u[ax], t1 = (hi - p0[ax]) / u[ax];
+        if (t0 > t1) {
+            const double t = t0;
+            t0 = t1;
+            t1 = t;
+        }
+        if (t0 > a) a = t0;
+        if (t1 < b) b = t1;
+    }
+    *s0 = a;
+    *s1 = b;
+    return a < b;
+}
+
+/* The pair (targets a, b) on lines off_m from the centre, heading hp, the
+ * pair's middle at mid-run along_m from the middle of the part of its lines
+ * inside, at speed v; their lives. Returns the scans with both present. */
+static long place_pair(const struct mtt_scenario *s, struct mtt_target *a, struct mtt_target *b, double side,
+                       double off_m, double hp, double along_m, double v)
+{
+    const double cx = 0.5 * s->p.region_m, cy = cx, t_mid = 0.5 * (double)(s->p.n_scans - 1) * s->p.scan_period_s;
+    const double ux = cos(hp), uy = sin(hp), nx = cos(hp + 90 * DEG), ny = sin(hp + 90 * DEG);
+    const double px = cx + side * off_m * nx, py = cy + side * off_m * ny, h = 0.5 * s->p.parallel_sep_m;
+    double a0, a1, b0, b1, m = 0;
+    if (chord(s, px + h * nx, py + h * ny, ux, uy, &a0, &a1) && chord(s, px - h * nx, py - h * ny, ux, uy, &b0, &b1))
+        m = 0.5 * (fmax(a0, b0) + fmin(a1, b1));
+    for (int i = 0; i < 2; i++) {
+        struct mtt_target *g = i ? b : a;
+        const double o = i ? -h : h;
+        g->ax_m = px + o * nx + (m + along_m) * ux;
+        g->ay_m = py + o * ny + (m + along_m) * uy;
+        g->at_s = t_mid;
+        g->heading_rad = hp;
+        g->speed_mps = v;
+        set_life(s, g, 0, s->p.n_scans);
+    }
+    return overlap(a, b);
+}
+
+/* 1 when the turn's arc (and a scan before and after it) is inside. */
+static int turn_inside(const struct mtt_scenario *s, const struct mtt_target *g)
+{
+    const double tau = fabs(g->turn_rad) / g->turn_rate_rps, T = s->p.scan_period_s;
+    for (int i = 0; i <= 64; i++) {
+        double x[4];
+        truth_of(g, g->at_s - T + (tau + 2 * T) * i / 64.0, x);
+        if (!inside_xy(s, x[TRK_CV2_X], x[TRK_CV2_Y])) return 0;
+    }
+    return 1;
+}
+
+/* ---------------------------------------------------------------- transit targets */
+
+struct tg_list {
+    struct mtt_target *v;
+    size_t n, cap;
+};
+
+static int tg_push(struct tg_list *l, const struct mtt_target *g)
+{
+    if (l->n == l->cap) {
+        const size_t cap = l->cap ? 2 * l->cap : 64;
+        struct mtt_target *v = realloc(l->v, cap * sizeof *v);
+        if (!v) return -1;
+        l->v = v;
+        l->cap = cap;
+    }
+    l->v[l->n++] = *g;
+    return 0;
+}
+
+/* A transit target of slot j at speed v: forward, entering at scan k and
+ * present until it leaves; backward, leaving after scan k (dead at k + 1)
+ * and present back to where it entered or scan 0. Position and heading
+ * drawn up to TRANSIT_TRIES times until (a) it is present min_life_scans
+ * scans and (b) it leaves room for the slot's next target (gap g_next
+ * before its birth, or after its death, and min_life_scans), or reaches the
+ * run's end; else the best draw ((a) and (b), then (a), then the longest). */
+static void transit(const struct mtt_scenario *s, struct rng *r, int j, long k, int forward, double v, long g_next,
+                    struct mtt_target *out)
+{
+    const double m = s->p.margin_m, L = s->p.region_m - 2 * m, T = s->p.scan_period_s;
+    const long ns = s->p.n_scans, ml = s->p.min_life_scans;
+    struct mtt_target best;
+    memset(&best, 0, sizeof best);
+    long best_n = -1;
+    int best_q = -1;
+    for (int it = 0; it < TRANSIT_TRIES; it++) {
+        const double u = unif(r, 0, 4 * L), off = unif(r, -TRANSIT_OFF_DEG * DEG, TRANSIT_OFF_DEG * DEG);
+        int side = (int)(u / L);
+        if (side > 3) side = 3;
+        const double w = u - (double)side * L;
+        double x, y, nrm; /* the point on the boundary, the inward normal */
+        switch (side) {
+        case 0: x = m + w, y = m, nrm = 90 * DEG; break;                   /* bottom */
+        case 1: x = m + L, y = m + w, nrm = 180 * DEG; break;              /* right */
+        case 2: x = m + L - w, y = m + L, nrm = 270 * DEG; break;          /* top */
+        default: x = m, y = m + L - w, nrm = 0; break;                      /* left */
+        }
+        struct mtt_target g;
+        memset(&g, 0, sizeof g);
+        g.role = MTT_TRANSIT;
+        g.slot = j;
+        g.speed_mps = g.speed_drawn_mps = v;
+        g.ax_m = x + EDGE_INSET_M * cos(nrm);
+        g.ay_m = y + EDGE_INSET_M * sin(nrm);
+        g.at_s = (double)k * T;
+        g.heading_rad = nrm + off + (forward ? 0 : 180 * DEG);
+        if (forward) set_life(s, &g, k, s->p.n_scans);
+        else set_life(s, &g, 0, k + 1);
+        const long n = g.death_scan - g.birth_scan;
+        const int room = forward ? g.death_scan == ns || g.death_scan + g_next + ml <= ns
+                                 : g.birth_scan == 0 || g.birth_scan - g_next >= ml;
+        const int q = n >= ml ? 1 + room : 0;
+        if (q > best_q || (q == best_q && n > best_n)) {
+            best = g;
+            best_n = n;
+            best_q = q;
+        }
+        if (q == 2) break;
+    }
+    *out = best;
+}
+
+static long draw_gap(const struct mtt_scenario *s, struct rng *r)
+{
+    long g = 1 + (long)(rng_uniform(r) * (double)s->p.gap_max_scans);
+    return g > s->p.gap_max_scans ? s->p.gap_max_scans : g;
+}
+
+/* ---------------------------------------------------------------- init */
 
 int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char *err, size_t n)
 {
     memset(s, 0, sizeof *s);
-    if (p->n_scans < 10 || p->n_scans > 100000000L) {
-        snprintf(err, n, "scans must be in [10, 1e8]");
+    if (p->n_scans < 10 || p->n_scans > 1000000L) {
+        snprintf(err, n, "scans must be in [10, 1e6]");
         return -1;
     }
     if (!(p->scan_period_s > 0) || !isfinite(p->scan_period_s) || !(p->region_m >= 1000) ||
@@ -144,11 +340,15 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         snprintf(err, n, "scan capacity %zu exceeds TRK_MAX_DETECTIONS = %d", p->max_det, TRK_MAX_DETECTIONS);
         return -1;
     }
-    if (!(p->speed_min_mps > 0) || !(p->speed_max_mps >= p->speed_min_mps) || !isfinite(p->speed_max_mps) ||
+    if (!(p->speed_min_mps > 0) || !(p->speed_max_mps >= p->speed_min_mps) || !(p->speed_max_mps <= 1000) ||
         !(p->parallel_sep_m > 0) || !(p->parallel_sep_m < 500) || !(p->turn_deg > 0 && p->turn_deg <= 180) ||
         !(p->turn_rate_dps > 0 && p->turn_rate_dps <= 90)) {
-        snprintf(err, n, "speeds must be 0 < min <= max, pair separation in (0, 500) m, turn in (0, 180] deg "
-                         "at (0, 90] deg/s");
+        snprintf(err, n, "speeds must be 0 < min <= max <= 1000 m/s, pair separation in (0, 500) m, turn in "
+                         "(0, 180] deg at (0, 90] deg/s");
+        return -1;
+    }
+    if (p->min_life_scans < 1 || p->gap_max_scans < 1 || p->gap_max_scans > p->n_scans) {
+        snprintf(err, n, "transit targets: min life must be >= 1 scan, gaps 1 .. [1, scans]");
         return -1;
     }
     s->p = *p;
@@ -162,18 +362,18 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         mtt_scen_free(s);
         return -1;
     }
+    struct mtt_target dg[MTT_N_SLOTS]; /* the designated targets */
+    memset(dg, 0, sizeof dg);
     /* ---- the geometry: stream 0, in this order */
     struct rng r;
     rng_init(&r, p->seed, 0);
     const long ns = p->n_scans;
     const double T = p->scan_period_s, t_end = (double)(ns - 1) * T;
     const double cx = 0.5 * p->region_m, cy = 0.5 * p->region_m;
-    for (int i = 0; i < MTT_N_TARGETS; i++) {
-        s->tg[i].role = i;
-        s->tg[i].birth_scan = 0;
-        s->tg[i].death_scan = ns;
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        dg[i].role = i;
+        dg[i].slot = i;
     }
-    double vdraw[MTT_N_TARGETS];
     /* the X */
     s->cross_x_m = cx + unif(&r, -150, 150);
     s->cross_y_m = cy + unif(&r, -150, 150);
@@ -181,66 +381,152 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
     const double ha = 45 * DEG + unif(&r, -10 * DEG, 10 * DEG) + (rng_uniform(&r) < 0.5 ? 180 * DEG : 0);
     const double hb = ha + 90 * DEG + unif(&r, -20 * DEG, 20 * DEG) + (rng_uniform(&r) < 0.5 ? 180 * DEG : 0);
     for (int i = MTT_CROSS_A; i <= MTT_CROSS_B; i++) {
-        struct mtt_target *g = &s->tg[i];
+        struct mtt_target *g = &dg[i];
         g->ax_m = s->cross_x_m;
         g->ay_m = s->cross_y_m;
         g->at_s = tc;
         g->heading_rad = i == MTT_CROSS_A ? ha : hb;
     }
     s->cross_scan = lround(tc / T);
-    /* the pair, along A's line */
-    {
-        const double hp = ha + unif(&r, -5 * DEG, 5 * DEG) + (rng_uniform(&r) < 0.5 ? 180 * DEG : 0);
-        const double side = rng_uniform(&r) < 0.5 ? -1 : 1, off = unif(&r, 300, 500), along = unif(&r, -150, 150);
-        const double nx = cos(hp + 90 * DEG), ny = sin(hp + 90 * DEG);
-        const double px = cx + side * off * nx + along * cos(hp), py = cy + side * off * ny + along * sin(hp);
-        for (int i = MTT_PAR_A; i <= MTT_PAR_B; i++) {
-            struct mtt_target *g = &s->tg[i];
-            const double o = (i == MTT_PAR_A ? 0.5 : -0.5) * p->parallel_sep_m;
-            g->ax_m = px + o * nx;
-            g->ay_m = py + o * ny;
-            g->at_s = 0.5 * t_end;
-            g->heading_rad = hp;
-        }
-    }
+    /* the pair, along A's line (placed once the speed is known) */
+    const double hp = ha + unif(&r, -5 * DEG, 5 * DEG) + (rng_uniform(&r) < 0.5 ? 180 * DEG : 0);
+    const double p_side = rng_uniform(&r) < 0.5 ? -1 : 1, p_off = unif(&r, 300, 500), p_along = unif(&r, -150, 150);
     /* birth and death */
-    s->tg[MTT_BIRTH].birth_scan = clamp_l(lround((0.2 + unif(&r, -0.015, 0.015)) * (double)ns), 1, ns - 2);
-    straight(&s->tg[MTT_BIRTH], &r, cx, cy, T);
-    s->tg[MTT_DEATH].death_scan = clamp_l(lround((0.7 + unif(&r, -0.015, 0.015)) * (double)ns), 2, ns - 1);
-    straight(&s->tg[MTT_DEATH], &r, cx, cy, T);
-    /* the turn */
+    const long kb = clamp_l(lround((0.2 + unif(&r, -0.015, 0.015)) * (double)ns), 1, ns - 2);
+    straight(&dg[MTT_BIRTH], &r, cx, cy, (double)kb * T);
+    const long kd = clamp_l(lround((0.7 + unif(&r, -0.015, 0.015)) * (double)ns), 2, ns - 1);
+    straight(&dg[MTT_DEATH], &r, cx, cy, (double)(kd - 1) * T);
+    /* the turn (its start pulled in, if need be, once the speed is known) */
+    const double t_phi = unif(&r, 0, 360 * DEG), t_rq = unif(&r, 500, 700);
+    const double t_sg = rng_uniform(&r) < 0.5 ? -1 : 1, t_dh = unif(&r, -10 * DEG, 10 * DEG);
+    const double t_w = p->turn_rate_dps * DEG * unif(&r, 0.8, 1.2), t_th = p->turn_deg * DEG;
+    const double tau = t_th / t_w;
+    double ts = 0.5 * t_end - 0.5 * tau + unif(&r, -0.05, 0.05) * t_end;
+    if (ts > t_end - tau - T) ts = t_end - tau - T;
+    if (ts < T) ts = T;
+    straight(&dg[MTT_STRAIGHT], &r, cx, cy, 0.5 * t_end);
+    /* ---- the speeds: drawn, and kept */
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        const double v = unif(&r, p->speed_min_mps, p->speed_max_mps);
+        dg[i].speed_mps = dg[i].speed_drawn_mps = v;
+    }
+    dg[MTT_PAR_B].speed_mps = dg[MTT_PAR_B].speed_drawn_mps = dg[MTT_PAR_A].speed_mps; /* one velocity */
+    /* ---- lives of the designated targets */
+    set_life(s, &dg[MTT_CROSS_A], 0, ns);
+    set_life(s, &dg[MTT_CROSS_B], 0, ns);
+    set_life(s, &dg[MTT_BIRTH], kb, ns);
+    set_life(s, &dg[MTT_DEATH], 0, kd);
+    set_life(s, &dg[MTT_STRAIGHT], 0, ns);
     {
-        struct mtt_target *g = &s->tg[MTT_TURN];
-        const double phi = unif(&r, 0, 360 * DEG), rq = unif(&r, 500, 700);
-        const double sg = rng_uniform(&r) < 0.5 ? -1 : 1, dh = unif(&r, -10 * DEG, 10 * DEG);
-        const double w = p->turn_rate_dps * DEG * unif(&r, 0.8, 1.2), th = p->turn_deg * DEG;
-        const double tau = th / w;
-        double ts = 0.5 * t_end - 0.5 * tau + unif(&r, -0.05, 0.05) * t_end;
-        if (ts > t_end - tau - T) ts = t_end - tau - T;
-        if (ts < T) ts = T;
-        g->ax_m = cx + rq * cos(phi);
-        g->ay_m = cy + rq * sin(phi);
-        g->at_s = ts;
-        g->heading_rad = phi + sg * 0.5 * (180 * DEG - th) + dh;
-        g->turn_rad = sg * th;
-        g->turn_rate_rps = w;
+        /* the pair: present together for min(PAR_SCANS, n) scans, the
+         * geometry adapted if need be, then the speed */
+        const long need = ns < PAR_SCANS ? ns : PAR_SCANS;
+        struct mtt_target *a = &dg[MTT_PAR_A], *b = &dg[MTT_PAR_B];
+        double v = a->speed_mps, off = p_off, h = hp;
+        const double hdiag = 45 * DEG + 90 * DEG * floor((hp - 45 * DEG) / (90 * DEG) + 0.5);
+        long got = place_pair(s, a, b, p_side, off, h, p_along, v);
+        for (int st = 1; st <= 20 && got < need; st++) {
+            if (st <= 10) off = p_off - (p_off - PAR_OFF_MIN_M) * st / 10.0;
+            else h = hp + (hdiag - hp) * (st - 10) / 10.0;
+            got = place_pair(s, a, b, p_side, off, h, 0, v);
+        }
+        if (got < need) { /* the largest speed that gives it */
+            double lo = 0, hi = v;
+            for (int it = 0; it < 50; it++) {
+                const double mid = 0.5 * (lo + hi);
+                if (place_pair(s, a, b, p_side, off, h, 0, mid) >= need) lo = mid;
+                else hi = mid;
+            }
+            v = lo > 0 ? lo : 1e-3;
+            got = place_pair(s, a, b, p_side, off, h, 0, v);
+        }
+        s->par_scans = got;
+    }
+    {
+        struct mtt_target *g = &dg[MTT_TURN];
+        double rq = t_rq;
+        for (int it = 0; it < 40; it++) {
+            g->ax_m = cx + rq * cos(t_phi);
+            g->ay_m = cy + rq * sin(t_phi);
+            g->at_s = ts;
+            g->heading_rad = t_phi + t_sg * 0.5 * (180 * DEG - t_th) + t_dh;
+            g->turn_rad = t_sg * t_th;
+            g->turn_rate_rps = t_w;
+            if (turn_inside(s, g)) break;
+            rq *= 0.9;
+        }
+        set_life(s, g, 0, ns);
         s->turn_first_scan = (long)ceil(ts / T - 1e-9);
         s->turn_last_scan = (long)floor((ts + tau) / T + 1e-9);
         if (s->turn_last_scan > ns - 1) s->turn_last_scan = ns - 1;
     }
-    straight(&s->tg[MTT_STRAIGHT], &r, cx, cy, T);
-    for (int i = 0; i < MTT_N_TARGETS; i++) vdraw[i] = unif(&r, p->speed_min_mps, p->speed_max_mps);
-    vdraw[MTT_PAR_B] = vdraw[MTT_PAR_A]; /* one velocity */
-    /* ---- speeds: the draw, or what keeps the target in */
-    for (int i = 0; i < MTT_N_TARGETS; i++) {
-        struct mtt_target *g = &s->tg[i];
-        g->speed_drawn_mps = vdraw[i];
-        if (i == MTT_PAR_B) continue;
-        g->speed_mps = fit_speed(s, g, i == MTT_PAR_A ? &s->tg[MTT_PAR_B] : NULL, vdraw[i]);
-        if (i == MTT_PAR_A) s->tg[MTT_PAR_B].speed_mps = g->speed_mps;
+    /* ---- the slots: transit targets before and after the designated one */
+    struct tg_list all = {NULL, 0, 0}, before = {NULL, 0, 0};
+    long *ord = NULL;
+    int oom = 0;
+    for (int i = 0; i < MTT_N_SLOTS && !oom; i++) oom = tg_push(&all, &dg[i]) != 0;
+    size_t n_ord = 0, cap_ord = 0;
+    for (int j = 0; j < MTT_N_SLOTS && !oom; j++) {
+        before.n = 0;
+        long gap = draw_gap(s, &r);
+        for (long kb0 = dg[j].birth_scan; !oom;) { /* backwards: the earlier ones, latest first */
+            const long x = kb0 - gap;
+            if (x < p->min_life_scans) break;
+            const double v = unif(&r, p->speed_min_mps, p->speed_max_mps);
+            gap = draw_gap(s, &r); /* the one before it */
+            struct mtt_target g;
+            transit(s, &r, j, x - 1, 0, v, gap, &g);
+            oom = tg_push(&before, &g) != 0;
+            kb0 = g.birth_scan;
+        }
+        const size_t first = all.n;
+        for (size_t q = before.n; q-- > 0 && !oom;) oom = tg_push(&all, &before.v[q]) != 0;
+        const size_t mid = all.n;
+        gap = draw_gap(s, &r);
+        for (long kd0 = dg[j].death_scan; !oom;) { /* forwards: the later ones */
+            const long e = kd0 + gap;
+            if (e + p->min_life_scans > ns) break;
+            const double v = unif(&r, p->speed_min_mps, p->speed_max_mps);
+            gap = draw_gap(s, &r); /* the one after it */
+            struct mtt_target g;
+            transit(s, &r, j, e, 1, v, gap, &g);
+            oom = tg_push(&all, &g) != 0;
+            kd0 = g.death_scan;
+        }
+        /* the slot's order: the earlier ones, the designated one, the later ones */
+        const size_t need = n_ord + (all.n - first) + 1;
+        if (!oom && need > cap_ord) {
+            size_t cap = cap_ord ? cap_ord : 64;
+            while (cap < need) cap *= 2;
+            long *o = realloc(ord, cap * sizeof *o);
+            if (!o) oom = 1;
+            else {
+                ord = o;
+                cap_ord = cap;
+            }
+        }
+        if (oom) break;
+        s->slot_first[j] = (long)n_ord;
+        for (size_t q = first; q < mid; q++) ord[n_ord++] = (long)q;
+        ord[n_ord++] = j;
+        for (size_t q = mid; q < all.n; q++) ord[n_ord++] = (long)q;
     }
+    free(before.v);
+    if (oom) {
+        free(all.v);
+        free(ord);
+        snprintf(err, n, "out of memory");
+        mtt_scen_free(s);
+        return -1;
+    }
+    s->slot_first[MTT_N_SLOTS] = (long)n_ord;
+    s->tg = all.v;
+    s->n_targets = all.n;
+    s->by_slot = ord;
     return 0;
 }
+
+/* ---------------------------------------------------------------- scans */
 
 /* One detection. */
 static void put(struct trk_detection *d, double x, double y, int has_a, double a)
@@ -253,20 +539,21 @@ static void put(struct trk_detection *d, double x, double y, int has_a, double a
 }
 
 void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
-                   size_t max, int *origin, struct trk_scan *scan, struct mtt_scan_info *info)
+                   size_t max, long *origin, struct trk_scan *scan, struct mtt_scan_info *info)
 {
     const size_t cap = s->p.max_det < max ? s->p.max_det : max;
     const double t = (double)k * s->p.scan_period_s, sg = s->p.meas_sigma_m;
     const int has_a = s->p.amplitude;
     size_t nd = 0, nt = 0, nc = 0, capped = 0;
     struct rng r;
-    /* targets: four draws each (detected?, two noises, amplitude), always */
+    /* targets: four draws per slot (detected?, two noises, amplitude), always */
     rng_init(&r, s->p.seed, 4 * (uint64_t)k + 1);
-    for (int i = 0; i < MTT_N_TARGETS; i++) {
+    for (int j = 0; j < MTT_N_SLOTS; j++) {
         const double u = rng_uniform(&r), e1 = rng_normal(&r), e2 = rng_normal(&r);
         double a;
         if (amp_draw(&s->amp, &s->amp_tg, &r, &a) != 0) a = s->amp.t;
-        if (!mtt_scen_present(s, i, k) || !(u < s->p.pd) || nd == cap) continue;
+        const long i = mtt_scen_slot_target(s, j, k);
+        if (i < 0 || !(u < s->p.pd) || nd == cap) continue;
         double x[4];
         truth_of(&s->tg[i], t, x);
         if (origin) origin[nd] = i;
@@ -298,7 +585,7 @@ void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, str
         det[i - 1] = det[j];
         det[j] = tmp;
         if (origin) {
-            const int o = origin[i - 1];
+            const long o = origin[i - 1];
             origin[i - 1] = origin[j];
             origin[j] = o;
         }

@@ -1,56 +1,105 @@
 /* mtt_scenario.h - the multi-target scenario family of `trk-sim mtt` (issue
- * 14 item 7): eight targets in a square region, seeded, deterministic.
+ * 14 item 7): targets in a square region, at most eight at a time, seeded,
+ * deterministic.
  *
  * Region [0, S]^2 (S = region_m, 3 km), a scan every T s (4 s), scans
- * 0 .. n_scans-1 at t_k = k T. The targets, by role (enum mtt_role):
+ * 0 .. n_scans-1 at t_k = k T. "Inside" is the region less margin_m (50 m):
+ * [m, S - m]^2. Every target moves at its own speed, drawn uniformly in
+ * [speed_min_mps, speed_max_mps] (5-15 m/s) and kept (one exception: the
+ * pair, below), so a target crosses the region in 200-600 s at the default
+ * speeds: targets enter and leave during a run.
+ *
+ * Slots. The scenario has MTT_N_SLOTS (8) slots; a slot holds one target at
+ * a time, so that at most eight are present. Each slot has one designated
+ * target, its structure role (enum mtt_role, = the slot index and the
+ * target's index in tg[]):
  *   CROSS_A, CROSS_B  an X: both pass the crossing point (the centre + up to
  *                     +-150 m per axis) at the same time, scan n/2 +- 5 %;
  *                     A heads 45 deg +- 10 deg (or the opposite way), B A's
- *                     heading + 90 deg +- 20 deg (crossing angle 70-110 deg)
+ *                     heading + 90 deg +- 20 deg (crossing angle 70-110 deg);
+ *                     both are inside for >= ~1400 m of path either side of
+ *                     the crossing (>= 22 scans at 15 m/s, 16 at 20 m/s)
  *   PAR_A, PAR_B      a pair moving together, parallel_sep_m (60 m) apart
  *                     side by side (same velocity at every time): heading
  *                     along CROSS_A's line +- 5 deg (either way), the pair's
- *                     centre line 300-500 m from the centre (either side),
- *                     its mid-run position +- 150 m along the line
- *   BIRTH             present from scan round(0.2 n) + j (j up to +-1.5 % of n)
- *   DEATH             present until scan round(0.7 n) + j (gone from it on)
+ *                     centre line 300-500 m from the centre (either side); at
+ *                     mid-run the pair is at the middle of the part of its
+ *                     lines inside the region +- 150 m along them. Both are
+ *                     present together for at least min(40, n) scans: where
+ *                     the draw does not give that, the jitter along the line
+ *                     goes, then the line comes nearer the centre (down to
+ *                     150 m) and then turns towards the nearest diagonal;
+ *                     only beyond that (a pair speed above ~22 m/s at 4 s
+ *                     scans) is the pair's speed reduced to what the
+ *                     longest chord allows (speed_mps < speed_drawn_mps)
+ *   BIRTH             born inside at scan round(0.2 n) + j (j up to +-1.5 %
+ *                     of n): at that scan at a point 300-700 m from the
+ *                     centre, heading tangential +- 30 deg (either way)
+ *   DEATH             dies inside at scan round(0.7 n) + j (gone from it
+ *                     on): at its last scan at a point 300-700 m from the
+ *                     centre, heading tangential +- 30 deg
  *   TURN              a coordinated turn of turn_deg (90 deg, left or right)
  *                     at turn_rate_dps (3 deg/s) x [0.8, 1.2], centred on
  *                     mid-run +- 5 %; the turn starts 500-700 m from the
- *                     centre, the legs before and after point 45 deg off the
- *                     direction to the centre (+- 10 deg)
- *   STRAIGHT          (also BIRTH and DEATH) straight, through a point
- *                     300-700 m from the centre at mid-life, heading
- *                     tangential +- 30 deg (either way)
+ *                     centre (nearer where its arc would leave the region),
+ *                     the legs before and after point 45 deg off the
+ *                     direction to the centre (+- 10 deg); present for the
+ *                     whole turn and before and after it
+ *   STRAIGHT          straight, through a point 300-700 m from the centre at
+ *                     mid-run, heading tangential +- 30 deg (either way)
  * Motion is deterministic (no process noise): straight legs and the turn's
- * arc (radius v / omega). Speeds are drawn uniformly in [speed_min_mps,
- * speed_max_mps] (5-15 m/s) and then, where the target's path over its life
- * would leave the region less margin_m (50 m), reduced until it stays in:
- * the path is anchored at its mid-life point (the crossing, the pair's
- * mid-run, the turn's start), so a lower speed shrinks it towards that
- * point (speed_drawn_mps keeps the draw). A straight target crosses 3 km
- * at 15 m/s in 200 s: runs of more than ~70 scans of 4 s bring every
- * target down to what its chord allows (at the default 200 scans, 800 s:
- * about 3.5-5.5 m/s).
+ * arc (radius v / omega; 0.52 m/s^2 at 10 m/s and 3 deg/s).
  *
- * Detections of scan k: each present target with probability pd, at its
- * position + N(0, sigma^2 I); with amplitudes (amplitude = 1) a Swerling I
- * target of snr_db in thresholded Rayleigh clutter (amp_sample.h), the
- * threshold's P_FA chosen so that P_D = S1(t) = pd: pfa = pd^(1 + SNR).
- * Clutter: exactly clutter_count detections uniform over the region
- * (Rayleigh amplitudes above the threshold), capped so that the scan never
- * holds more than max_det (<= TRK_MAX_DETECTIONS) detections: targets' first,
- * then at most max_det - n_target clutter ones (n_clutter_capped counts the
- * clutter left out). The scan is shuffled.
+ * Life. A target's life is the part of its path inside: the longest run of
+ * consecutive scans around its anchor scan (the crossing, mid-run, the
+ * designated birth or death, the turn's start, the entry or exit below) in
+ * which it is inside, cut at its designated birth or death scan and at the
+ * run's ends. It is present for birth_scan <= k < death_scan.
+ *
+ * Re-use of a slot (transit targets, role MTT_TRANSIT, each a new target
+ * with a new index = id). After a slot's target is gone (death_scan d, by
+ * leaving or by dying), the next one enters at scan d + g, g uniform in
+ * {1 .. gap_max_scans} (10), provided min_life_scans (25) scans of the run
+ * remain (d + g + min_life_scans <= n): at a point of the boundary of the
+ * inside square (uniform along its perimeter), heading into the region at up
+ * to 60 deg off the inward normal, straight at a speed of its own, present
+ * until it leaves. Its position and heading are redrawn (up to 64 times)
+ * until it is present for at least min_life_scans scans (no target is there
+ * too briefly to be tracked) and leaves room for the slot's next target
+ * (min_life_scans after the next gap) or stays to the run's end; failing
+ * that, the draw present min_life_scans scans with room, else the one
+ * present min_life_scans, else the longest. The same backwards in time
+ * before the slot's designated target (born at b): the previous one leaves
+ * through the boundary at scan b - g (its death_scan; heading out at up to
+ * 60 deg off the outward normal) and is present back to where it entered
+ * or to scan 0, provided b - g >= min_life_scans; and so on back to the
+ * run's start. So every slot, BIRTH's before its birth and DEATH's after its
+ * death included, is occupied but for gaps of 1-10 scans between its
+ * targets and fewer than min_life_scans + gap_max_scans scans at either end
+ * of the run. At the defaults (200 seeds): about 25 targets in a run of 200
+ * scans (17-29), 7.4 present per scan on average, 6-8 in 96 % of the scans
+ * (fewer near the run's ends and where several slots change at once).
+ *
+ * Detections of scan k: per slot, its target present at k with probability
+ * pd, at its position + N(0, sigma^2 I); with amplitudes (amplitude = 1) a
+ * Swerling I target of snr_db in thresholded Rayleigh clutter
+ * (amp_sample.h), the threshold's P_FA chosen so that P_D = S1(t) = pd:
+ * pfa = pd^(1 + SNR). Clutter: exactly clutter_count detections uniform over
+ * the region (Rayleigh amplitudes above the threshold), capped so that the
+ * scan never holds more than max_det (<= TRK_MAX_DETECTIONS) detections:
+ * targets' first, then at most max_det - n_target clutter ones
+ * (n_clutter_capped counts the clutter left out). The scan is shuffled.
  *
  * Random numbers (rng.h, philox, keyed by seed): stream 0 draws the
- * geometry; scan k uses stream 4k+1 for the targets' detections (four draws
- * per target whether present or detected or not), 4k+2 for the clutter
- * (the same draws per point, so the first N points are the same at every
- * clutter count: scans at 50 clutter hold the first 50 points of the scan at
- * 100, and the targets' detections are the same at every level; with or
- * without amplitudes the positions are the same), 4k+3 for the shuffle.
- * A scan depends only on (seed, k, clutter_count, amplitude): same seed, same
+ * geometry (the structure, the speeds, then slot by slot the transit
+ * targets, earlier ones then later ones); scan k uses stream 4k+1 for the
+ * targets' detections (four draws per slot whether a target is present or
+ * detected or not), 4k+2 for the clutter (the same draws per point, so the
+ * first N points are the same at every clutter count: scans at 50 clutter
+ * hold the first 50 points of the scan at 100, and the targets' detections
+ * are the same at every level; with or without amplitudes the positions are
+ * the same), 4k+3 for the shuffle. A scan depends only on (seed, k,
+ * clutter_count, amplitude) and the geometry parameters: same seed, same
  * scenario bit for bit, in any scan order and from any thread (the scenario
  * is read-only after mtt_scen_init). */
 #ifndef TRK_SIM_MTT_SCENARIO_H
@@ -71,36 +120,41 @@ enum mtt_role {
     MTT_DEATH,
     MTT_TURN,
     MTT_STRAIGHT,
-    MTT_N_TARGETS
+    MTT_N_SLOTS,                /* the slots: at most this many targets at a time */
+    MTT_TRANSIT = MTT_N_SLOTS   /* a target re-using a slot, straight through the region */
 };
 
 struct mtt_scen_params {
     uint64_t seed;
-    long n_scans;               /* >= 10 */
+    long n_scans;               /* [10, 1e6] */
     double scan_period_s;       /* > 0 */
     double region_m;            /* side of the square region, >= 1000 */
-    double margin_m;            /* targets stay this far inside, [0, region/10] */
+    double margin_m;            /* "inside": this far in, [0, region/10] */
     double pd;                  /* detection probability, (0, 1) */
     double meas_sigma_m;        /* position noise per axis, > 0 */
     int amplitude;              /* 1: Rayleigh amplitudes (target snr_db), 0: none */
     double snr_db;              /* target SNR, [0, 40] */
     size_t max_det;             /* scan capacity, 1 .. TRK_MAX_DETECTIONS (0: TRK_MAX_DETECTIONS) */
-    double speed_min_mps, speed_max_mps; /* 0 < min <= max */
-    double parallel_sep_m;      /* > 0 */
+    double speed_min_mps, speed_max_mps; /* 0 < min <= max <= 1000 */
+    double parallel_sep_m;      /* (0, 500) */
     double turn_deg;            /* (0, 180] */
-    double turn_rate_dps;       /* > 0 */
+    double turn_rate_dps;       /* (0, 90] */
+    long min_life_scans;        /* transit targets: present at least this long, >= 1 */
+    long gap_max_scans;         /* scans between a slot's targets: 1 .. this, >= 1 */
 };
 
 /* Defaults: seed 1, 200 scans of 4 s, 3 km region, margin 50 m, pd 0.8,
  * sigma 5 m, amplitudes at 13 dB, capacity TRK_MAX_DETECTIONS, speeds
- * 5-15 m/s, pair 60 m apart, a 90 deg turn at 3 deg/s. */
+ * 5-15 m/s, pair 60 m apart, a 90 deg turn at 3 deg/s, transit targets
+ * present >= 25 scans, gaps of 1-10 scans. */
 void mtt_scen_defaults(struct mtt_scen_params *p);
 
 struct mtt_target {
-    int role;                   /* enum mtt_role (= its index) */
+    int role;                   /* enum mtt_role: the slot's designated role, or MTT_TRANSIT */
+    int slot;                   /* 0 .. MTT_N_SLOTS-1 */
     long birth_scan;            /* present for birth_scan <= k < death_scan */
-    long death_scan;            /* n_scans: present to the end */
-    double speed_mps, speed_drawn_mps;
+    long death_scan;
+    double speed_mps, speed_drawn_mps; /* equal but for the pair's fallback (above) */
     double ax_m, ay_m, at_s;    /* anchor: position at time at_s */
     double heading_rad;         /* direction of motion (from +x, counter-clockwise);
                                    TURN: before the turn, which starts at the anchor */
@@ -113,20 +167,33 @@ struct mtt_scenario {
     struct amp_model amp;       /* Rayleigh clutter law at the threshold (amplitude = 1) */
     struct amp_target amp_tg;   /* the targets' law */
     double pfa;                 /* threshold P_FA (pd^(1 + SNR)) */
-    struct mtt_target tg[MTT_N_TARGETS];
+    /* the targets: tg[0 .. MTT_N_SLOTS) the designated ones (index = role =
+     * slot), then the transit ones; a target's index is its id */
+    struct mtt_target *tg;
+    size_t n_targets;
+    /* per slot its targets' indices in time order: by_slot[slot_first[j] ..
+     * slot_first[j + 1]) */
+    long *by_slot;
+    long slot_first[MTT_N_SLOTS + 1];
     long cross_scan;            /* the scan nearest the crossing */
     double cross_x_m, cross_y_m;/* the crossing point */
     long turn_first_scan, turn_last_scan; /* scans within the turn [start, end] (first > last: none) */
+    long par_scans;             /* scans with both of the pair present */
 };
 
-/* 0, or -1 with a message. */
+/* 0, or -1 with a message (nothing to free then). */
 int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char *err, size_t errlen);
 void mtt_scen_free(struct mtt_scenario *s);
 
-/* Truth of target i at time t_s: x = [x, vx, y, vy] (TRK_CV2 order). */
-void mtt_scen_truth(const struct mtt_scenario *s, int i, double t_s, double x[4]);
+/* Truth of target i (0 <= i < n_targets) at time t_s, whether present or
+ * not: x = [x, vx, y, vy] (TRK_CV2 order). */
+void mtt_scen_truth(const struct mtt_scenario *s, long i, double t_s, double x[4]);
 /* 1 when target i is present at scan k. */
-int mtt_scen_present(const struct mtt_scenario *s, int i, long k);
+int mtt_scen_present(const struct mtt_scenario *s, long i, long k);
+/* The target of slot j present at scan k, or -1. */
+long mtt_scen_slot_target(const struct mtt_scenario *s, int j, long k);
+/* Targets present at scan k (0 .. MTT_N_SLOTS). */
+int mtt_scen_n_present(const struct mtt_scenario *s, long k);
 
 struct mtt_scan_info {
     size_t n_target;            /* target detections */
@@ -139,7 +206,7 @@ struct mtt_scan_info {
  * least the scan capacity p.max_det. origin (may be NULL; max entries):
  * the target index of each detection, -1 for clutter. *info may be NULL. */
 void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
-                   size_t max, int *origin, struct trk_scan *scan, struct mtt_scan_info *info);
+                   size_t max, long *origin, struct trk_scan *scan, struct mtt_scan_info *info);
 
 const char *mtt_role_name(int role);
 

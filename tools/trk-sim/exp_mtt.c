@@ -1,9 +1,11 @@
 /* exp_mtt.c - trk-sim mtt and mtt-compare: the multi-target evaluation of
  * issue 14 (item 7).
  *
- * mtt: the scenario family of tools/sim/mtt_scenario.h (eight targets:
- * an X, a pair 60 m apart, a birth, a death, a 90 deg turn, one straight;
- * 3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes),
+ * mtt: the scenario family of tools/sim/mtt_scenario.h (eight slots of one
+ * target at a time: an X, a pair 60 m apart, a birth, a death, a 90 deg
+ * turn, one straight, and targets crossing the region in the slots freed by
+ * those that left; speeds in [--speed-min, --speed-max], 5-15 m/s; 3 km x
+ * 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes),
  * seeds S, S+1, ..., S+seeds-1, each at every clutter count of the list
  * (exactly N uniform clutter detections per scan, capped so that a scan never
  * exceeds TRK_MAX_DETECTIONS) through each configuration (common random
@@ -25,6 +27,7 @@
  * the smallest capacity's mean to the largest's and whether it is within
  * the largest's interval. */
 #define _POSIX_C_SOURCE 200809L
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -58,6 +61,7 @@
 enum {
     M_GOSPA, M_LOC, M_MISSED, M_FALSE, M_STC, M_NEVER, M_COV, M_TURN, M_PAR, M_CROSS, M_FALSE_TRK,
     M_FALSE_TS, M_DUP_TS, M_FRAG, M_IDSW, M_RMSE, M_CPU, M_CONF, M_LIVE, M_FULL, M_CLUTTER, M_CAPPED,
+    M_TARGETS, M_PRESENT,
 #define X(f) M_REP_##f,
     MTT_REPORT_COUNTERS(X)
 #undef X
@@ -72,6 +76,7 @@ static const char *const metric_name[M_N] = {
     "false_track_scans_per_100", "duplicate_track_scans_per_100", "fragmentations", "id_switches", "rmse_m",
     "cpu_us_per_scan", "confirmed_per_scan", "live_per_scan", "table_full_frac", "clutter_per_scan",
     "clutter_capped_scans",
+    "targets_per_run", "targets_present_per_scan",
 #define X(f) "rep_" #f,
     MTT_REPORT_COUNTERS(X)
 #undef X
@@ -191,7 +196,7 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
 struct run_ws {
     struct trk_tracker *tk;
     struct trk_detection det[TRK_MAX_DETECTIONS];
-    int origin[TRK_MAX_DETECTIONS];
+    long origin[TRK_MAX_DETECTIONS];
     struct mtt_obj est[TRK_MAX_TRACKS];
 };
 
@@ -211,7 +216,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
     const long ns = sc->p.n_scans;
     double cpu = 0, rep_sum[N_REP] = {0};
     long conf_sum = 0, live_sum = 0, full = 0, clutter_sum = 0, capped = 0;
-    long turn_n = 0, turn_hit = 0, par_n = 0, par_hit = 0, cross_n = 0, cross_hit = 0;
+    long turn_n = 0, turn_hit = 0, par_n = 0, par_hit = 0, cross_n = 0, cross_hit = 0, present_sum = 0;
     int rc = 0;
     for (long k = 0; k < ns && rc == 0; k++) {
         struct trk_scan scan;
@@ -247,17 +252,22 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
         conf_sum += (long)ne;
         live_sum += live;
         full += live >= TRK_MAX_TRACKS;
-        struct mtt_obj truth[MTT_N_TARGETS];
-        int idx[MTT_N_TARGETS] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        /* the targets present, one per occupied slot; a target's id is its
+         * index (a slot re-used holds a new target, with a new id) */
+        struct mtt_obj truth[MTT_N_SLOTS];
+        int idx[MTT_N_SLOTS]; /* per slot: its target's entry in truth, or -1 */
         size_t nt = 0;
-        for (int i = 0; i < MTT_N_TARGETS; i++) {
-            if (!mtt_scen_present(sc, i, k)) continue;
+        for (int j = 0; j < MTT_N_SLOTS; j++) {
+            const long i = mtt_scen_slot_target(sc, j, k);
+            idx[j] = -1;
+            if (i < 0) continue;
             double x[4];
             mtt_scen_truth(sc, i, (double)k * sc->p.scan_period_s, x);
-            idx[i] = (int)nt;
+            idx[j] = (int)nt;
             truth[nt++] = (struct mtt_obj){i, x[TRK_CV2_X], x[TRK_CV2_Y]};
         }
-        long assign[MTT_N_TARGETS];
+        present_sum += (long)nt;
+        long assign[MTT_N_SLOTS];
         if (mtt_eval_scan_assign(&ev, truth, nt, ws->est, ne, assign) != 0) {
             rc = -1;
             break;
@@ -270,7 +280,8 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
             par_n++;
             par_hit += assign[idx[MTT_PAR_A]] >= 0 && assign[idx[MTT_PAR_B]] >= 0;
         }
-        if (labs(k - sc->cross_scan) <= CROSS_WINDOW) {
+        if (labs(k - sc->cross_scan) <= CROSS_WINDOW && mtt_scen_present(sc, MTT_CROSS_A, k) &&
+            mtt_scen_present(sc, MTT_CROSS_B, k)) {
             cross_n++;
             cross_hit += assign[idx[MTT_CROSS_A]] >= 0 && assign[idx[MTT_CROSS_B]] >= 0;
         }
@@ -302,6 +313,8 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
         v[M_FULL] = (double)full / dn;
         v[M_CLUTTER] = (double)clutter_sum / dn;
         v[M_CAPPED] = (double)capped;
+        v[M_TARGETS] = (double)su.n_targets;
+        v[M_PRESENT] = (double)present_sum / dn;
         for (int j = 0; j < N_REP; j++) v[M_REP_FIRST + j] = rep_sum[j];
     }
     mtt_eval_free(&ev);
@@ -431,7 +444,7 @@ static void plot_all(const struct sim_common *com, const struct mtt_row *rows, i
         [M_MISSED] = "missed part (m^2 per scan)",
         [M_FALSE] = "false part (m^2 per scan)",
         [M_STC] = "scans to the first confirmed track",
-        [M_NEVER] = "targets never confirmed (of 8)",
+        [M_NEVER] = "targets never confirmed (per run)",
         [M_FALSE_TRK] = "false confirmed tracks per 1000 scans",
         [M_FALSE_TS] = "false track-scans per 100 scans",
     };
@@ -540,7 +553,7 @@ static int cmp_double(const void *a, const void *b)
 SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track maintenance) over clutter levels")
 {
     long scans, seeds;
-    double levels[MAX_LEVELS], c_m, pd, snr_db, q;
+    double levels[MAX_LEVELS], c_m, pd, snr_db, q, v_min, v_max;
     int n_levels, no_amp = 0;
     const char *configs;
     struct mtt_settings set = {{NULL}, 0};
@@ -564,17 +577,24 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
                        "target SNR (Swerling I, Rayleigh clutter); the threshold's\n"
                        "P_FA is pd^(1 + SNR), so that P_D = pd"),
         SIM_OPT_DOUBLE("--q", &q, "Q", "1e-3", SIM_GE, 0, 0, "the tracker's process noise (m^2/s^3)"),
+        SIM_OPT_DOUBLE("--speed-min", &v_min, "V", "5", SIM_GT, 0, 0,
+                       "target speeds drawn uniformly in [--speed-min, --speed-max] (m/s)"),
+        SIM_OPT_DOUBLE("--speed-max", &v_max, "V", "15", SIM_GT, 0, 0,
+                       "upper end of the speed range, e.g. 20 to go past the tracker's\n"
+                       "two-point velocity gate (its own: --set init.max_speed_mps=V)"),
         SIM_OPT_END};
     const struct sim_cli cli = {
         "mtt", "[options] [--set key=value ...]",
         "Issue 14's multi-target evaluation: the scenario family of tools/sim/mtt_scenario.h\n"
         "(3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes; eight\n"
-        "targets: an X through the centre, a pair 60 m apart, a birth at ~20 % of the run, a\n"
-        "death at ~70 %, a 90 deg turn at ~3 deg/s mid-run, one straight; speeds 5-15 m/s,\n"
-        "reduced where a target would leave the region), each seed at every clutter count\n"
-        "through every configuration (the same scenarios: common random numbers). Scored per\n"
-        "scan on the confirmed tracks (GOSPA p = 2, alpha = 2, cut-off c; tools/sim/mtt_eval.h);\n"
-        "mean and 95 % Student t interval over seeds.",
+        "slots, each holding one target at a time: an X through the centre, a pair 60 m\n"
+        "apart, a birth at ~20 % of the run, a death at ~70 %, a 90 deg turn at ~3 deg/s\n"
+        "mid-run, one straight; speeds drawn in [--speed-min, --speed-max], 5-15 m/s; a\n"
+        "target is present while inside the region, and a slot whose target has left or\n"
+        "died takes a new target entering at the edge 1-10 scans later: 6-8 present), each\n"
+        "seed at every clutter count through every configuration (the same scenarios: common\n"
+        "random numbers). Scored per scan on the confirmed tracks (GOSPA p = 2, alpha = 2,\n"
+        "cut-off c; tools/sim/mtt_eval.h); mean and 95 % Student t interval over seeds.",
         opts, "build/results/mtt", NULL, SIM_UNUSED_RUNS,
         "Writes PREFIX.csv: one row per (TRK_MAX_TRACKS, config, clutter), columns\n"
         "<metric>_mean, _lo, _hi; and PREFIX_gospa.png, _gospa_parts.png, _confirm.png,\n"
@@ -604,10 +624,16 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         fprintf(stderr, "trk-sim mtt: note: struct trk_scan_report holds %zu bytes, the %d counters listed "
                         "here %zu: update MTT_REPORT_COUNTERS in %s\n",
                 sizeof(struct trk_scan_report), N_REP, (size_t)N_REP * sizeof(uint32_t), __FILE__);
+    if (v_min > v_max) {
+        fprintf(stderr, "trk-sim mtt: --speed-min %g exceeds --speed-max %g\n", v_min, v_max);
+        return 2;
+    }
     /* ---- the scenarios (one per seed; read-only from here on) */
     struct mtt_scenario *sc = calloc((size_t)seeds, sizeof *sc);
     if (!sc) return 1;
-    double vmin = INFINITY, vmax = 0;
+    double vmin = INFINITY, vmax = 0, n_tg_sum = 0, pres_sum = 0;
+    long n_tg_min = LONG_MAX, n_tg_max = 0, reduced = 0;
+    int pres_min = MTT_N_SLOTS, pres_max = 0;
     for (long i = 0; i < seeds; i++) {
         struct mtt_scen_params sp;
         mtt_scen_defaults(&sp);
@@ -616,13 +642,30 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         sp.pd = pd;
         sp.snr_db = snr_db;
         sp.amplitude = !no_amp;
+        sp.speed_min_mps = v_min;
+        sp.speed_max_mps = v_max;
         if (mtt_scen_init(&sc[i], &sp, err, sizeof err) != 0) {
             fprintf(stderr, "trk-sim mtt: scenario: %s\n", err);
+            while (i-- > 0) mtt_scen_free(&sc[i]);
+            free(sc);
             return 2;
         }
-        for (int j = 0; j < MTT_N_TARGETS; j++) {
-            vmin = fmin(vmin, sc[i].tg[j].speed_mps);
-            vmax = fmax(vmax, sc[i].tg[j].speed_mps);
+        for (size_t j = 0; j < sc[i].n_targets; j++) {
+            const struct mtt_target *g = &sc[i].tg[j];
+            if (g->death_scan <= g->birth_scan) continue;
+            vmin = fmin(vmin, g->speed_mps);
+            vmax = fmax(vmax, g->speed_mps);
+            reduced += g->speed_mps != g->speed_drawn_mps;
+        }
+        const long nti = (long)sc[i].n_targets;
+        n_tg_sum += (double)nti;
+        n_tg_min = nti < n_tg_min ? nti : n_tg_min;
+        n_tg_max = nti > n_tg_max ? nti : n_tg_max;
+        for (long k = 0; k < scans; k++) {
+            const int np = mtt_scen_n_present(&sc[i], k);
+            pres_sum += np;
+            pres_min = np < pres_min ? np : pres_min;
+            pres_max = np > pres_max ? np : pres_max;
         }
     }
     const double area = sc[0].p.region_m * sc[0].p.region_m;
@@ -650,10 +693,13 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
            seeds, (unsigned long long)com.seed, (unsigned long long)(com.seed + (uint64_t)seeds - 1), scans,
            sc[0].p.scan_period_s, sc[0].p.region_m / 1000, sc[0].p.region_m / 1000, TRK_MAX_TRACKS,
            TRK_MAX_DETECTIONS, threads);
-    printf("   8 targets, P_D %g, sigma %g m, %s, speeds %.1f-%.1f m/s (drawn in [%g, %g], reduced to stay in the "
-           "region), q %g; GOSPA c %g m\n",
-           pd, sc[0].p.meas_sigma_m, no_amp ? "no amplitudes" : "Rayleigh amplitudes", vmin, vmax,
-           sc[0].p.speed_min_mps, sc[0].p.speed_max_mps, q, c_m);
+    printf("   8 slots: %.1f targets per run (%ld-%ld), %.2f present per scan (%d-%d); speeds %.1f-%.1f m/s (drawn "
+           "in [%g, %g]%s)\n",
+           n_tg_sum / (double)seeds, n_tg_min, n_tg_max, pres_sum / ((double)seeds * (double)scans), pres_min,
+           pres_max, vmin, vmax, sc[0].p.speed_min_mps, sc[0].p.speed_max_mps,
+           reduced ? "; the pair's reduced to keep 40 scans together" : "");
+    printf("   P_D %g, sigma %g m, %s, q %g; GOSPA c %g m\n", pd, sc[0].p.meas_sigma_m,
+           no_amp ? "no amplitudes" : "Rayleigh amplitudes", q, c_m);
     if (!no_amp)
         printf("   amplitudes: target SNR %g dB, threshold P_FA %.4g (P_D = %.3f), use_amplitude on\n", snr_db,
                sc[0].pfa, sc[0].amp_tg.pd);
