@@ -25,7 +25,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->confirm.u.existence.p_confirm = TRK_REAL_C(0.999);
     p->confirm.u.existence.reject_odds_ratio = TRK_REAL_C(0.01);
     p->term.method = TRK_TERM_EXISTENCE;
-    p->term.u.existence.p_terminate = TRK_REAL_C(0.2);
+    p->term.u.existence.p_terminate = TRK_REAL_C(0.1);
     p->max_tentative_scans = 0;
     p->init.method = TRK_INIT_TWO_POINT;
     p->init.max_speed_mps = 15; /* 30 knots */

@@ -777,7 +777,7 @@ void tcfg_help(FILE *f)
             "    confirm.clutter_density.alpha, .kmax          (0.01, 25)\n"
             "    confirm.clutter_amplitude.alpha, .kmax, .a_min_db   (0.01, 25, 10 dB)\n"
             "  term = existence|kn|page|shiryaev|visibility  termination test (existence)\n"
-            "    term.existence.p_terminate       end at existence < p (0.2)\n"
+            "    term.existence.p_terminate       end at existence < p (0.1)\n"
             "    term.kn.k, term.kn.n             K or fewer hits in the last N, 0 <= k < n (0, 5)\n"
             "    term.page.h                      CUSUM threshold, > 0 (5)\n"
             "    term.shiryaev.beta0, .rho, .h    prior, change rate, log-odds threshold (0.01, 0.01, 4.595)\n"
