@@ -14,6 +14,8 @@
 #                   make mtt MTT_ARGS="--scans 60 --seeds 3 --set term=page"
 #                   make mtt MTT_ARGS="--speed-max 20"   (targets faster than the 15 m/s
 #                                                         two-point velocity gate)
+#                   make mtt MTT_ARGS="--family fixed"   (b9ce836's 8 fixed targets, the
+#                                                         scenario the peer was measured on)
 # The default run (10 seeds x 200 scans x 7 clutter levels x 2 configurations per build)
 # takes seconds per build on 2 cores; compiling the large build dominates.
 #   make mtt-smoke  the `make test` step: a short run, its CSV checked (tests/mtt_smoke.sh)

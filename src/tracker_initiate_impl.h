@@ -148,16 +148,14 @@ static struct trk_track *take_slot(struct trk_tracker *t, struct slots *sl, trk_
 }
 
 /* A new tentative track in tr from n_points detections (the latest at the
- * scan time), existence psi0 (NaN: the visibility parameters' pv0; certain:
- * its odds are infinite, lambda = 0); the
+ * scan time), existence psi0 (NaN: the visibility parameters' pv0); the
  * caller sets x and P. M/N counts each point as a detected look; the
- * existence test confirms at its first update, or at once when its
- * existence starts at 1 (no clutter, lambda = 0: its points are certain;
- * with clutter a pair alone, however strong its amplitudes, is not
- * confirmed: measured, it confirmed clutter pairs); the SPRT and the
- * clutter tests start with the first update. */
+ * existence test, the SPRT and the clutter tests start with the first
+ * update: a pair alone is never confirmed, however high its existence
+ * (measured: with strong amplitudes it confirmed clutter pairs, and without
+ * clutter, lambda = 0, pairs of two targets' detections). */
 static void new_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, trk_real psi0,
-                      int certain, uint32_t n_points, struct trk_scan_report *rep)
+                      uint32_t n_points, struct trk_scan_report *rep)
 {
     tr->id = t->next_id;
     t->next_id = t->next_id == UINT32_MAX ? 1 : t->next_id + 1;
@@ -180,14 +178,13 @@ static void new_track(struct trk_tracker *t, struct trk_track *tr, const struct 
     tr->existence0 = tr->vis.pv;
     trk_i_confirm_start(t, tr);
     rep->n_started++;
-    struct trk_look look = {0};
-    look.detected = 1;
-    look.sensor_id = scan->sensor_id;
-    look.n_gated = 1;
-    if (t->params.confirm.method == TRK_CONFIRM_MN)
+    if (t->params.confirm.method == TRK_CONFIRM_MN) {
+        struct trk_look look = {0};
+        look.detected = 1;
+        look.sensor_id = scan->sensor_id;
+        look.n_gated = 1;
         for (uint32_t k = 0; k < n_points && tr->status == TRK_TRACK_TENTATIVE; k++) step_tests(t, tr, &look, rep);
-    else if (t->params.confirm.method == TRK_CONFIRM_EXISTENCE && certain)
-        step_tests(t, tr, &look, rep); /* no clutter (lambda = 0): its points are certain */
+    }
 }
 
 /* The existence a new track starts with from ln O (trk_init_params), or NaN
@@ -213,8 +210,7 @@ static int start_single(struct trk_tracker *t, struct slots *sl, const struct tr
                         const trk_real *r_j, struct trk_scan_report *rep)
 {
     if (!slot_possible(t, sl, rep)) return 0;
-    const trk_real log_odds = log_lr_over_clutter(t, scan->sensor_id, t->ws.log_lr[j]);
-    const trk_real psi0 = initial_existence(t, log_odds);
+    const trk_real psi0 = initial_existence(t, log_lr_over_clutter(t, scan->sensor_id, t->ws.log_lr[j]));
     struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
     if (!tr) return 0;
     const trk_real vv = t->params.init_speed_sigma_mps * t->params.init_speed_sigma_mps;
@@ -227,7 +223,7 @@ static int start_single(struct trk_tracker *t, struct slots *sl, const struct tr
     tr->p[P(X, Y)] = tr->p[P(Y, X)] = r_j[S(ZX, ZY)];
     tr->p[P(Y, Y)] = r_j[S(ZY, ZY)];
     tr->p[P(VX, VX)] = tr->p[P(VY, VY)] = vv;
-    new_track(t, tr, scan, psi0, log_odds == (trk_real)INFINITY && !isnan(psi0), 1, rep);
+    new_track(t, tr, scan, psi0, 1, rep);
     return 1;
 }
 
@@ -337,7 +333,7 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
         }
     }
     c->used = 1;
-    new_track(t, tr, scan, psi0, log_odds == (trk_real)INFINITY && !isnan(psi0), 2, rep);
+    new_track(t, tr, scan, psi0, 2, rep);
     return 1;
 }
 

@@ -1,17 +1,23 @@
 #!/bin/sh
 # tests/mtt_smoke.sh TRK_SIM - the `make test` step mtt-smoke (mk/mtt.mk): a short
 # `trk-sim mtt --scans 30 --seeds 2 --clutter-count 0,50` run, with 1 and 2 OpenMP
-# threads, and its CSV checked:
-#   - the header: the key columns, then <metric>_mean,_lo,_hi for the metrics below
+# threads (the transit family, the default), one with --family fixed (1 thread), and
+# their CSVs checked:
+#   - the header: the key columns (capacity,config,clutter,seeds,scans,amplitude,family),
+#     then <metric>_mean,_lo,_hi for the metrics below
 #   - exactly the rows (capacity, config, clutter) = (one capacity) x {new, old} x {0, 50},
-#     seeds 2, scans 30, amplitude 1
+#     seeds 2, scans 30, amplitude 1, family the one asked for
 #   - per row and metric lo <= mean <= hi; coverage, turn/pair/cross fractions in [0, 1];
 #     GOSPA and its parts >= 0; clutter per scan = the count asked for unless capped;
 #     detections counted by the tracker = the scan sizes (30 x (clutter + targets'));
-#     targets present per scan in (0, 8] (eight slots), at least 8 targets per run
+#     targets present per scan in (0, 8] (eight slots), at least 8 targets per run;
+#     fixed: exactly 8 targets per run, 7-8 present per scan (7 before the birth and
+#     after the death, 8 between)
 #   - at clutter 0 the two configurations hold the targets: coverage > 0.3, every
 #     target confirmed at some scan
 #   - every column but the CPU time identical with 1 and 2 threads
+#   - trk-sim mtt-compare merges the transit and the fixed CSV (8 rows: the family is
+#     part of the key) and refuses two CSVs of the same family and capacity
 set -u
 sim=$1
 d=$(mktemp -d) || exit 1
@@ -24,13 +30,17 @@ for t in 1 2; do
     "$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads $t --quiet --no-plot \
         --out "$d/m$t" >"$d/out$t.txt" 2>&1 || { cat "$d/out$t.txt"; fail "trk-sim mtt exited with $?"; }
 done
-csv=$d/m1.csv
-[ -f "$csv" ] || fail "no CSV written"
-awk -F, -v want_metrics="targets_per_run targets_present_per_scan gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 scans_to_confirm never_confirmed coverage turn_coverage parallel_both cross_both false_tracks_per_1000_scans false_track_scans_per_100 duplicate_track_scans_per_100 fragmentations id_switches rmse_m cpu_us_per_scan rep_n_init_refused_full" '
+"$sim" mtt --family fixed --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads 1 --quiet --no-plot \
+    --out "$d/f1" >"$d/outf.txt" 2>&1 || { cat "$d/outf.txt"; fail "trk-sim mtt --family fixed exited with $?"; }
+# check CSV FAMILY
+check() {
+    [ -f "$1" ] || fail "no CSV written ($1)"
+    awk -F, -v family="$2" -v want_metrics="targets_per_run targets_present_per_scan gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 scans_to_confirm never_confirmed coverage turn_coverage parallel_both cross_both false_tracks_per_1000_scans false_track_scans_per_100 duplicate_track_scans_per_100 fragmentations id_switches rmse_m cpu_us_per_scan rep_n_init_refused_full" '
 function bad(msg) { print "mtt-smoke: FAILED: " msg; err = 1; exit 1 }
 NR == 1 {
-    if ($1 != "capacity" || $2 != "config" || $3 != "clutter" || $4 != "seeds" || $5 != "scans" || $6 != "amplitude")
-        bad("header starts " $1 "," $2 "," $3 "," $4 "," $5 "," $6)
+    if ($1 != "capacity" || $2 != "config" || $3 != "clutter" || $4 != "seeds" || $5 != "scans" || $6 != "amplitude" ||
+        $7 != "family")
+        bad("header starts " $1 "," $2 "," $3 "," $4 "," $5 "," $6 "," $7)
     ncol = NF
     for (i = 1; i <= NF; i++) col[$i] = i
     n = split(want_metrics, w, " ")
@@ -39,7 +49,7 @@ NR == 1 {
             c = w[k] (p == 1 ? "_mean" : p == 2 ? "_lo" : "_hi")
             if (!(c in col)) bad("no column " c)
         }
-    if ((NF - 6) % 3 != 0) bad("metric columns not in threes: " NF " columns")
+    if ((NF - 7) % 3 != 0) bad("metric columns not in threes: " NF " columns")
     next
 }
 {
@@ -49,10 +59,11 @@ NR == 1 {
     if (cap == "") cap = $1
     if ($1 != cap) bad("two capacities in one run")
     if ($4 != 2 || $5 != 30 || $6 != 1) bad("row " NR ": seeds/scans/amplitude " $4 "/" $5 "/" $6)
+    if ($7 != family) bad("row " NR ": family " $7 ", want " family)
     key = $2 "/" $3
     if (key in seen) bad("row " key " twice")
     seen[key] = 1
-    for (i = 7; i + 2 <= NF; i += 3) {
+    for (i = 8; i + 2 <= NF; i += 3) {
         if ($i == "nan" || $i == "-nan") continue
         if (!($(i + 1) <= $i + 1e-9 * (1 + ($i < 0 ? -$i : $i)) && $i <= $(i + 2) + 1e-9 * (1 + ($i < 0 ? -$i : $i))))
             bad("row " key ": column " i " mean " $i " not in [" $(i + 1) ", " $(i + 2) "]")
@@ -69,6 +80,8 @@ NR == 1 {
     np = $(col["targets_present_per_scan_mean"]); ntg = $(col["targets_per_run_mean"])
     if (!(np > 0 && np <= 8)) bad(key ": targets present per scan " np ", want (0, 8]")
     if (ntg < 8) bad(key ": " ntg " targets per run, want >= 8 (one per slot at least)")
+    if (family == "fixed" && (ntg != 8 || np < 7 || np > 8))
+        bad(key ": fixed family: " ntg " targets per run, " np " present per scan, want 8 and [7, 8]")
     if ($3 == 0) {
         if ($(col["coverage_mean"]) <= 0.3) bad(key ": coverage " $(col["coverage_mean"]))
         if ($(col["never_confirmed_mean"]) != 0) bad(key ": targets never confirmed " $(col["never_confirmed_mean"]))
@@ -79,7 +92,10 @@ END {
     if (rows != 4) bad(rows " rows, want 4")
     if (!("new/0" in seen) || !("new/50" in seen) || !("old/0" in seen) || !("old/50" in seen))
         bad("rows are not {new, old} x {0, 50}")
-}' "$csv" || exit 1
+}' "$1" || exit 1
+}
+check "$d/m1.csv" transit
+check "$d/f1.csv" fixed
 # the same with 2 threads, except the CPU time (the columns named cpu_*)
 strip() {
     awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) keep[i] = $i !~ /^cpu_/ }
@@ -87,5 +103,18 @@ strip() {
 }
 strip "$d/m1.csv" >"$d/s1" && strip "$d/m2.csv" >"$d/s2" || fail "cannot read the CSV files"
 cmp -s "$d/s1" "$d/s2" || fail "the CSV depends on the thread count (cpu_* columns aside)"
-grep -q ' new  *50 ' "$d/out1.txt" && grep -q ' old  *0 ' "$d/out1.txt" || fail "no table on stdout"
-echo "mtt-smoke: trk-sim mtt: 4 rows (new, old x clutter 0, 50) checked; identical with 1 and 2 threads"
+grep -q ' transit new  *50 ' "$d/out1.txt" && grep -q ' transit old  *0 ' "$d/out1.txt" || fail "no table on stdout"
+grep -q '^== trk-sim mtt: family transit,' "$d/out1.txt" || fail "no family in the header line (transit)"
+grep -q ' fixed  *new  *50 ' "$d/outf.txt" && grep -q '^== trk-sim mtt: family fixed,' "$d/outf.txt" ||
+    fail "no fixed-family table or header line on stdout"
+# mtt-compare: the family is part of the key
+"$sim" mtt-compare "$d/m1.csv" "$d/f1.csv" --no-plot --out "$d/c" >"$d/outc.txt" 2>&1 ||
+    { cat "$d/outc.txt"; fail "trk-sim mtt-compare of a transit and a fixed CSV exited with $?"; }
+[ "$(awk -F, 'NR > 1' "$d/c.csv" | wc -l)" -eq 8 ] || fail "mtt-compare: not 8 rows merged"
+[ "$(awk -F, 'NR > 1 && $7 == "fixed"' "$d/c.csv" | wc -l)" -eq 4 ] || fail "mtt-compare: not 4 fixed rows"
+if "$sim" mtt-compare "$d/m1.csv" "$d/m2.csv" --no-plot --out "$d/c2" >"$d/outc2.txt" 2>&1; then
+    fail "mtt-compare merged two CSVs of one family and capacity"
+fi
+grep -q 'appears twice' "$d/outc2.txt" || { cat "$d/outc2.txt"; fail "mtt-compare: no 'appears twice' message"; }
+echo "mtt-smoke: trk-sim mtt: 4 rows (new, old x clutter 0, 50) checked per family (transit, fixed); transit" \
+    "identical with 1 and 2 threads; mtt-compare keys rows by family"

@@ -1,5 +1,5 @@
-/* test_mtt_scenario.c - the multi-target scenario family of trk-sim mtt
- * (tools/sim/mtt_scenario.h): determinism (same seed, same targets and the
+/* test_mtt_scenario.c - the multi-target scenario families of trk-sim mtt
+ * (tools/sim/mtt_scenario.h). The transit family (the default): determinism (same seed, same targets and the
  * same detections bit for bit, in any scan order; common random numbers
  * across clutter counts and with or without amplitudes), the targets present
  * per scan (a target present while inside, born when it enters or at its
@@ -9,9 +9,15 @@
  * 5-20 m/s), the geometry (the X, the pair 60 m apart present together for
  * 40 scans, the turn, each structure target present where its feature
  * happens), the scan capacity (clutter never makes a scan exceed
- * TRK_MAX_DETECTIONS, the tracker accepts every scan); and the helpers the
- * experiment uses: Student t intervals (mc_stats.h), the per-target
- * assignment of mtt_eval.h, the pre-issue-14 defaults. */
+ * TRK_MAX_DETECTIONS, the tracker accepts every scan). The fixed family
+ * (b9ce836's): the scenario b9ce836 produced (seed 1, values kept from it),
+ * 8 targets, all alive but BIRTH before its birth and DEATH after its death,
+ * speeds drawn in [5, 15] m/s and kept where the path stays inside, else
+ * the largest that keeps it in, the X and the pair 60 m apart, determinism,
+ * the scan capacity; what the two families share (the structure's draws,
+ * the clutter). And the helpers the experiment uses: Student t intervals
+ * (mc_stats.h), the per-target assignment of mtt_eval.h, the pre-issue-14
+ * defaults. */
 #include "trk_test.h"
 
 #include "mc_stats.h"
@@ -23,10 +29,11 @@
 static struct trk_detection det_a[TRK_MAX_DETECTIONS], det_b[TRK_MAX_DETECTIONS];
 static long org_a[TRK_MAX_DETECTIONS], org_b[TRK_MAX_DETECTIONS];
 
-static void init_speeds(struct mtt_scenario *s, uint64_t seed, long scans, double vmin, double vmax)
+static void init_family(struct mtt_scenario *s, int family, uint64_t seed, long scans, double vmin, double vmax)
 {
     struct mtt_scen_params p;
     mtt_scen_defaults(&p);
+    p.family = family;
     p.seed = seed;
     p.n_scans = scans;
     p.speed_min_mps = vmin;
@@ -35,17 +42,21 @@ static void init_speeds(struct mtt_scenario *s, uint64_t seed, long scans, doubl
     if (mtt_scen_init(s, &p, err, sizeof err) != 0) fail_msg("mtt_scen_init: %s", err);
 }
 
+static void init_speeds(struct mtt_scenario *s, uint64_t seed, long scans, double vmin, double vmax)
+{
+    init_family(s, MTT_FAMILY_TRANSIT, seed, scans, vmin, vmax);
+}
+
 static void init_seed(struct mtt_scenario *s, uint64_t seed, long scans) { init_speeds(s, seed, scans, 5, 15); }
 
 /* Same seed: the same targets and the same scans, bit for bit, whatever
  * the order the scans are asked in; another seed: other ones. */
-static void test_determinism(void **state)
+static void determinism(int family)
 {
-    (void)state;
     struct mtt_scenario a, b, c;
-    init_seed(&a, 7, 200);
-    init_seed(&b, 7, 200);
-    init_seed(&c, 8, 200);
+    init_family(&a, family, 7, 200, 5, 15);
+    init_family(&b, family, 7, 200, 5, 15);
+    init_family(&c, family, 8, 200, 5, 15);
     assert_int_equal(a.n_targets, b.n_targets);
     assert_memory_equal(a.tg, b.tg, a.n_targets * sizeof a.tg[0]);
     assert_memory_equal(a.slot_first, b.slot_first, sizeof a.slot_first);
@@ -72,6 +83,12 @@ static void test_determinism(void **state)
     mtt_scen_free(&a);
     mtt_scen_free(&b);
     mtt_scen_free(&c);
+}
+
+static void test_determinism(void **state)
+{
+    (void)state;
+    determinism(MTT_FAMILY_TRANSIT);
 }
 
 /* 1 when detection d's position is among det[0..n) with origin o. */
@@ -350,11 +367,10 @@ static void test_geometry(void **state)
 /* Clutter never makes a scan exceed the capacity: the targets' detections
  * first, then as much clutter as fits (the rest counted); the tracker
  * accepts every scan. */
-static void test_capacity(void **state)
+static void capacity(int family)
 {
-    (void)state;
     struct mtt_scenario s;
-    init_seed(&s, 11, 200);
+    init_family(&s, family, 11, 200, 5, 15);
     static struct trk_tracker tk;
     struct trk_tracker_params tp;
     trk_tracker_default_params(&tp);
@@ -408,6 +424,321 @@ static void test_capacity(void **state)
     p.max_det = TRK_MAX_DETECTIONS + 1;
     assert_int_equal(mtt_scen_init(&small, &p, err, sizeof err), -1); /* nothing to free */
     mtt_scen_free(&s);
+}
+
+static void test_capacity(void **state)
+{
+    (void)state;
+    capacity(MTT_FAMILY_TRANSIT);
+}
+
+/* ---------------------------------------------------------------- the fixed family */
+
+/* The fixed family is b9ce836's: seed 1 at the defaults (200 scans) gives
+ * the targets b9ce836 gave (its mtt_scenario.c printed with %.17g) and the
+ * same scans (the count, the targets detected in shuffled order, the sums
+ * of the positions and amplitudes at 37 clutter). Bit for bit on the
+ * machine that took them (x86-64, glibc); the tolerances leave room for
+ * another libm. */
+static void test_fixed_b9ce836(void **state)
+{
+    (void)state;
+    static const struct {
+        long birth, death;
+        double speed, drawn, ax, ay, at, heading, turn, rate;
+    } want[MTT_N_SLOTS] = {
+        {0, 200, 3.962969591802076, 12.641987834629838, 1617.0777518927132, 1525.7177845140409, 360.38519788251267,
+         0.68863520737594397, 0, 0},
+        {0, 200, 3.749378819894432, 13.138423250430716, 1617.0777518927132, 1525.7177845140409, 360.38519788251267,
+         2.0822470663830908, 0, 0},
+        {0, 200, 3.8137470397798587, 10.445518197965617, 1811.3219533693755, 1173.7763638589963, 398,
+         0.76285409799193393, 0, 0},
+        {0, 200, 3.8137470397798587, 10.445518197965617, 1852.7811967317225, 1130.4043551457526, 398,
+         0.76285409799193393, 0, 0},
+        {39, 200, 4.0586563087250322, 6.1135479245842346, 1244.8175620824793, 1682.792496573913, 476,
+         4.4914775782063856, 0, 0},
+        {0, 138, 6.0366014557731651, 11.579266922080802, 2005.4490909277479, 1564.2913429663497, 274,
+         2.148392055109754, 0, 0},
+        {0, 200, 4.2654496809504812, 11.924471679900506, 957.38122272955059, 1282.336074482243, 360.71597419874007,
+         2.6944036325946406, -1.5707963267948966, 0.054436753742191923},
+        {0, 200, 3.0724902107050251, 11.324829736642595, 1105.3840362882579, 956.01348665694479, 398,
+         5.4487721055222025, 0, 0},
+    };
+    static const struct {
+        long k;
+        size_t n;
+        long targets[8];
+        size_t n_targets;
+        double sx, sy, sa;
+    } scans[] = {
+        {0, 42, {6, 1, 5, 2, 0}, 5, 63391.784252330173, 59962.304413524595, 109.93093990631661},
+        {57, 43, {3, 7, 2, 1, 6, 0}, 6, 59538.959195981675, 54910.486605861377, 111.51455562627604},
+        {150, 42, {2, 0, 3, 7, 4}, 5, 63771.137817185714, 61220.121728936276, 103.99649483551201},
+        {199, 41, {0, 2, 1, 4}, 4, 66320.037673180355, 51995.56948966856, 104.37578213044495},
+    };
+    struct mtt_scenario s;
+    init_family(&s, MTT_FAMILY_FIXED, 1, 200, 5, 15);
+    assert_int_equal(s.n_targets, MTT_N_SLOTS);
+    assert_int_equal(s.cross_scan, 90);
+    assert_true(s.turn_first_scan == 91 && s.turn_last_scan == 97);
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        const struct mtt_target *g = &s.tg[i];
+        assert_int_equal(g->birth_scan, want[i].birth);
+        assert_int_equal(g->death_scan, want[i].death);
+        TRK_ASSERT_NEAR(g->speed_mps, want[i].speed, 1e-9, 0);
+        TRK_ASSERT_NEAR(g->speed_drawn_mps, want[i].drawn, 1e-12, 0);
+        TRK_ASSERT_NEAR(g->ax_m, want[i].ax, 1e-9, 0);
+        TRK_ASSERT_NEAR(g->ay_m, want[i].ay, 1e-9, 0);
+        TRK_ASSERT_NEAR(g->at_s, want[i].at, 1e-9, 0);
+        TRK_ASSERT_NEAR(g->heading_rad, want[i].heading, 1e-12, 0);
+        TRK_ASSERT_NEAR(g->turn_rad, want[i].turn, 1e-12, 0);
+        TRK_ASSERT_NEAR(g->turn_rate_rps, want[i].rate, 1e-12, 0);
+    }
+    for (size_t q = 0; q < sizeof scans / sizeof scans[0]; q++) {
+        struct trk_scan sc;
+        mtt_scen_scan(&s, scans[q].k, 37, det_a, TRK_MAX_DETECTIONS, org_a, &sc, NULL);
+        assert_int_equal(sc.n_detections, scans[q].n);
+        double sx = 0, sy = 0, sa = 0;
+        size_t nt = 0;
+        for (size_t j = 0; j < sc.n_detections; j++) {
+            sx += (double)det_a[j].x_m;
+            sy += (double)det_a[j].y_m;
+            sa += (double)det_a[j].amplitude;
+            if (org_a[j] >= 0) {
+                assert_true(nt < scans[q].n_targets);
+                assert_int_equal(org_a[j], scans[q].targets[nt]);
+                nt++;
+            }
+        }
+        assert_int_equal(nt, scans[q].n_targets);
+        TRK_ASSERT_NEAR(sx, scans[q].sx, 1e-6, 0);
+        TRK_ASSERT_NEAR(sy, scans[q].sy, 1e-6, 0);
+        TRK_ASSERT_NEAR(sa, scans[q].sa, 1e-9, 0);
+    }
+    mtt_scen_free(&s);
+}
+
+/* The fixed family's targets over 20 seeds: the eight structure targets
+ * alone (slot j holds target j), every one present the whole run but BIRTH
+ * before its birth (~20 %) and DEATH from its death (~70 %) on: 7, 8, 7
+ * present; inside while present; detections from the targets present, near
+ * them, at the rate P_D. */
+static void test_fixed_presence(void **state)
+{
+    (void)state;
+    long hits = 0, tries = 0;
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        struct mtt_scenario s;
+        init_family(&s, MTT_FAMILY_FIXED, seed, 200, 5, 15);
+        const long ns = 200, b = s.tg[MTT_BIRTH].birth_scan, d = s.tg[MTT_DEATH].death_scan;
+        assert_int_equal(s.n_targets, MTT_N_SLOTS);
+        assert_true(b >= 37 && b <= 43);
+        assert_true(d >= 137 && d <= 143);
+        assert_int_equal(s.par_scans, ns);
+        for (int j = 0; j <= MTT_N_SLOTS; j++) assert_int_equal(s.slot_first[j], j);
+        for (int i = 0; i < MTT_N_SLOTS; i++) {
+            assert_int_equal(s.by_slot[i], i);
+            assert_int_equal(s.tg[i].role, i);
+            assert_int_equal(s.tg[i].slot, i);
+            assert_int_equal(s.tg[i].birth_scan, i == MTT_BIRTH ? b : 0);
+            assert_int_equal(s.tg[i].death_scan, i == MTT_DEATH ? d : ns);
+        }
+        for (long k = 0; k < ns; k++) {
+            int n = 0;
+            for (int i = 0; i < MTT_N_SLOTS; i++) {
+                const int pr = mtt_scen_present(&s, i, k);
+                n += pr;
+                assert_int_equal(mtt_scen_slot_target(&s, i, k), pr ? i : -1);
+                if (pr) assert_true(inside(&s, i, k));
+            }
+            assert_int_equal(n, k < b || k >= d ? 7 : 8);
+            assert_int_equal(mtt_scen_n_present(&s, k), n);
+            assert_int_equal(mtt_scen_present(&s, MTT_BIRTH, k), k >= b);
+            assert_int_equal(mtt_scen_present(&s, MTT_DEATH, k), k < d);
+            struct trk_scan sc;
+            struct mtt_scan_info info;
+            mtt_scen_scan(&s, k, 0, det_a, TRK_MAX_DETECTIONS, org_a, &sc, &info);
+            assert_int_equal(info.n_target, sc.n_detections);
+            int seen[MTT_N_SLOTS] = {0};
+            for (size_t j = 0; j < sc.n_detections; j++) {
+                const long o = org_a[j];
+                assert_true(o >= 0 && o < MTT_N_SLOTS && mtt_scen_present(&s, o, k) && !seen[o]);
+                seen[o] = 1;
+                double x[4];
+                mtt_scen_truth(&s, o, (double)k * 4, x);
+                assert_true(hypot((double)det_a[j].x_m - x[TRK_CV2_X], (double)det_a[j].y_m - x[TRK_CV2_Y]) < 35);
+            }
+            hits += (long)sc.n_detections;
+            tries += n;
+        }
+        mtt_scen_free(&s);
+    }
+    /* 31 000 target-scans: se of the rate 0.0023 */
+    TRK_ASSERT_NEAR((double)hits / (double)tries, 0.8, 0.012, 0);
+}
+
+/* 1 when target i is inside at every scan of its life at speed v. */
+static int life_inside(const struct mtt_scenario *s, long i, double v)
+{
+    struct mtt_scenario t = *s; /* shallow: the targets are copied below */
+    struct mtt_target g = s->tg[i];
+    g.speed_mps = v;
+    t.tg = &g;
+    for (long k = g.birth_scan; k < g.death_scan; k++)
+        if (!inside(&t, 0, k)) return 0;
+    return 1;
+}
+
+/* The fixed family's geometry over 20 seeds, two run lengths and two speed
+ * ranges: the X (both at the crossing point together, 70-110 deg), the pair
+ * 60 m apart side by side with one velocity at every scan, the turn, and the
+ * speeds: drawn in [5, vmax] m/s, kept where the path stays inside over the
+ * life (every one in runs of 40 scans), else reduced to the largest that
+ * keeps it in (a little faster leaves; every one in runs of 200 scans). */
+static void test_fixed_geometry(void **state)
+{
+    (void)state;
+    for (int len = 0; len < 2; len++)
+        for (int sp = 0; sp < 2; sp++)
+            for (uint64_t seed = 1; seed <= 20; seed++) {
+                const long ns = len ? 200 : 40;
+                const double vmax = sp ? 20 : 15;
+                struct mtt_scenario s;
+                init_family(&s, MTT_FAMILY_FIXED, seed, ns, 5, vmax);
+                const struct mtt_target *a = &s.tg[MTT_CROSS_A], *b = &s.tg[MTT_CROSS_B];
+                double xa[4], xb[4];
+                assert_true(a->at_s == b->at_s);
+                mtt_scen_truth(&s, MTT_CROSS_A, a->at_s, xa);
+                mtt_scen_truth(&s, MTT_CROSS_B, b->at_s, xb);
+                TRK_ASSERT_NEAR(xa[TRK_CV2_X], s.cross_x_m, 1e-9, 0);
+                TRK_ASSERT_NEAR(xa[TRK_CV2_Y], s.cross_y_m, 1e-9, 0);
+                TRK_ASSERT_NEAR(xb[TRK_CV2_X], s.cross_x_m, 1e-9, 0);
+                TRK_ASSERT_NEAR(xb[TRK_CV2_Y], s.cross_y_m, 1e-9, 0);
+                assert_true(fabs(s.cross_x_m - 1500) <= 150 && fabs(s.cross_y_m - 1500) <= 150);
+                const double cross =
+                    fabs(ang_diff(atan2(xb[TRK_CV2_VY], xb[TRK_CV2_VX]), atan2(xa[TRK_CV2_VY], xa[TRK_CV2_VX])));
+                const double acute = cross > 90 * DEG ? 180 * DEG - cross : cross;
+                assert_true(acute >= 70 * DEG - 1e-9 && acute <= 90 * DEG + 1e-9);
+                const long kc = s.cross_scan;
+                assert_true(kc > ns / 2 - ns / 20 - 1 && kc < ns / 2 + ns / 20 + 1);
+                assert_true(mtt_scen_present(&s, MTT_CROSS_A, kc) && mtt_scen_present(&s, MTT_CROSS_B, kc));
+                mtt_scen_truth(&s, MTT_CROSS_A, (double)kc * 4, xa);
+                mtt_scen_truth(&s, MTT_CROSS_B, (double)kc * 4, xb);
+                assert_true(hypot(xa[TRK_CV2_X] - xb[TRK_CV2_X], xa[TRK_CV2_Y] - xb[TRK_CV2_Y]) <=
+                            (a->speed_mps + b->speed_mps) * 2 + 1e-9);
+                /* the pair: 60 m apart side by side, one velocity, present
+                 * together the whole run; its line 300-500 m from the centre */
+                for (long k = 0; k < ns; k++) {
+                    double pa[4], pb[4];
+                    mtt_scen_truth(&s, MTT_PAR_A, (double)k * 4, pa);
+                    mtt_scen_truth(&s, MTT_PAR_B, (double)k * 4, pb);
+                    const double dx = pa[TRK_CV2_X] - pb[TRK_CV2_X], dy = pa[TRK_CV2_Y] - pb[TRK_CV2_Y];
+                    TRK_ASSERT_NEAR(hypot(dx, dy), 60, 1e-9, 0);
+                    TRK_ASSERT_NEAR(pa[TRK_CV2_VX], pb[TRK_CV2_VX], 1e-12, 0);
+                    TRK_ASSERT_NEAR(pa[TRK_CV2_VY], pb[TRK_CV2_VY], 1e-12, 0);
+                    TRK_ASSERT_NEAR(dx * pa[TRK_CV2_VX] + dy * pa[TRK_CV2_VY], 0, 1e-9, 0);
+                    assert_true(mtt_scen_present(&s, MTT_PAR_A, k) && mtt_scen_present(&s, MTT_PAR_B, k));
+                    if (k == 0) {
+                        /* distance of the pair's centre line from the region's centre */
+                        const double mx = 0.5 * (pa[TRK_CV2_X] + pb[TRK_CV2_X]) - 1500;
+                        const double my = 0.5 * (pa[TRK_CV2_Y] + pb[TRK_CV2_Y]) - 1500;
+                        const double off = fabs(mx * dx + my * dy) / 60;
+                        assert_true(off >= 300 - 1e-6 && off <= 500 + 1e-6);
+                    }
+                }
+                /* the turn: 90 deg at 2.4-3.6 deg/s within the run, started
+                 * 500-700 m from the centre (where drawn) */
+                const struct mtt_target *t = &s.tg[MTT_TURN];
+                TRK_ASSERT_NEAR(fabs(t->turn_rad), 90 * DEG, 1e-12, 0);
+                assert_true(t->turn_rate_rps >= 2.4 * DEG - 1e-12 && t->turn_rate_rps <= 3.6 * DEG + 1e-12);
+                assert_true(s.turn_first_scan >= 1 && s.turn_first_scan <= s.turn_last_scan &&
+                            s.turn_last_scan < ns);
+                const double rq = hypot(t->ax_m - 1500, t->ay_m - 1500);
+                assert_true(rq >= 500 - 1e-9 && rq <= 700 + 1e-9);
+                /* speeds: drawn in [5, vmax], kept or fitted */
+                for (long i = 0; i < MTT_N_SLOTS; i++) {
+                    const struct mtt_target *g = &s.tg[i];
+                    assert_true(g->speed_drawn_mps >= 5 && g->speed_drawn_mps <= vmax);
+                    assert_true(g->speed_mps > 0.5 && g->speed_mps <= g->speed_drawn_mps);
+                    assert_true(life_inside(&s, i, g->speed_mps));
+                    if (g->speed_mps < g->speed_drawn_mps) /* the largest that stays in */
+                        assert_false(life_inside(&s, i, g->speed_mps * (1 + 1e-6)) &&
+                                     (i != MTT_PAR_A || life_inside(&s, MTT_PAR_B, g->speed_mps * (1 + 1e-6))) &&
+                                     (i != MTT_PAR_B || life_inside(&s, MTT_PAR_A, g->speed_mps * (1 + 1e-6))));
+                    if (ns == 40 && !sp) { /* short runs at 5-15 m/s: every draw kept */
+                        assert_true(g->speed_mps == g->speed_drawn_mps);
+                        assert_true(g->speed_mps >= 5 && g->speed_mps <= 15);
+                    }
+                    if (ns == 200) assert_true(g->speed_mps < g->speed_drawn_mps); /* 796 s: all fitted */
+                    mtt_scen_truth(&s, i, 100, xa);
+                    TRK_ASSERT_NEAR(hypot(xa[TRK_CV2_VX], xa[TRK_CV2_VY]), g->speed_mps, 1e-9, 0);
+                }
+                TRK_ASSERT_NEAR(s.tg[MTT_PAR_A].speed_mps, s.tg[MTT_PAR_B].speed_mps, 0, 0);
+                mtt_scen_free(&s);
+            }
+}
+
+static void test_fixed_determinism(void **state)
+{
+    (void)state;
+    determinism(MTT_FAMILY_FIXED);
+}
+
+static void test_fixed_capacity(void **state)
+{
+    (void)state;
+    capacity(MTT_FAMILY_FIXED);
+}
+
+/* One code path: the two families of a seed draw the structure alike (the
+ * crossing, the headings, the turn, the designated birth and death, the
+ * speed draws) and have the same clutter in every scan; they differ in the
+ * targets (the fixed family has no transit ones, its speeds are fitted).
+ * The family is checked. */
+static void test_families_share(void **state)
+{
+    (void)state;
+    for (uint64_t seed = 1; seed <= 10; seed++) {
+        struct mtt_scenario tr, fx;
+        init_family(&tr, MTT_FAMILY_TRANSIT, seed, 200, 5, 15);
+        init_family(&fx, MTT_FAMILY_FIXED, seed, 200, 5, 15);
+        assert_true(tr.cross_x_m == fx.cross_x_m && tr.cross_y_m == fx.cross_y_m && tr.cross_scan == fx.cross_scan);
+        assert_true(tr.turn_first_scan == fx.turn_first_scan && tr.turn_last_scan == fx.turn_last_scan);
+        assert_true(tr.tg[MTT_BIRTH].birth_scan == fx.tg[MTT_BIRTH].birth_scan);
+        assert_true(tr.tg[MTT_DEATH].death_scan == fx.tg[MTT_DEATH].death_scan);
+        assert_true(tr.n_targets > fx.n_targets && fx.n_targets == MTT_N_SLOTS);
+        for (int i = 0; i < MTT_N_SLOTS; i++) {
+            assert_true(tr.tg[i].speed_drawn_mps == fx.tg[i].speed_drawn_mps);
+            if (i != MTT_PAR_A && i != MTT_PAR_B) assert_true(tr.tg[i].heading_rad == fx.tg[i].heading_rad);
+            assert_true(tr.tg[i].turn_rad == fx.tg[i].turn_rad && tr.tg[i].turn_rate_rps == fx.tg[i].turn_rate_rps);
+        }
+        for (long k = 0; k < 200; k += 17) {
+            struct trk_scan a, b;
+            mtt_scen_scan(&tr, k, 30, det_a, TRK_MAX_DETECTIONS, org_a, &a, NULL);
+            mtt_scen_scan(&fx, k, 30, det_b, TRK_MAX_DETECTIONS, org_b, &b, NULL);
+            size_t nc = 0;
+            for (size_t j = 0; j < a.n_detections; j++)
+                if (org_a[j] < 0) {
+                    nc++;
+                    assert_true(has_pos(&det_a[j], det_b, org_b, b.n_detections, -1));
+                }
+            assert_int_equal(nc, 30);
+        }
+        mtt_scen_free(&tr);
+        mtt_scen_free(&fx);
+    }
+    assert_true(strcmp(mtt_family_name(MTT_FAMILY_TRANSIT), "transit") == 0);
+    assert_true(strcmp(mtt_family_name(MTT_FAMILY_FIXED), "fixed") == 0);
+    assert_int_equal(mtt_family_parse("fixed"), MTT_FAMILY_FIXED);
+    assert_int_equal(mtt_family_parse("transit"), MTT_FAMILY_TRANSIT);
+    assert_int_equal(mtt_family_parse("fix"), -1);
+    struct mtt_scen_params p;
+    mtt_scen_defaults(&p);
+    assert_int_equal(p.family, MTT_FAMILY_TRANSIT);
+    p.family = MTT_N_FAMILIES;
+    struct mtt_scenario s;
+    char err[256];
+    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
 }
 
 /* Student t quantiles and intervals (R: qt(0.975, df)). */
@@ -473,7 +804,10 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_determinism), cmocka_unit_test(test_common_random_numbers),
         cmocka_unit_test(test_presence),    cmocka_unit_test(test_geometry),
-        cmocka_unit_test(test_capacity),    cmocka_unit_test(test_student_t),
+        cmocka_unit_test(test_capacity),    cmocka_unit_test(test_fixed_b9ce836),
+        cmocka_unit_test(test_fixed_presence), cmocka_unit_test(test_fixed_geometry),
+        cmocka_unit_test(test_fixed_determinism), cmocka_unit_test(test_fixed_capacity),
+        cmocka_unit_test(test_families_share), cmocka_unit_test(test_student_t),
         cmocka_unit_test(test_eval_assign), cmocka_unit_test(test_old_defaults),
     };
     return trk_run_tests("mtt_scenario", tests, NULL, NULL);

@@ -1,5 +1,5 @@
-/* mtt_scenario.c - the multi-target scenario family of trk-sim mtt
- * (mtt_scenario.h). */
+/* mtt_scenario.c - the multi-target scenario families of trk-sim mtt
+ * (mtt_scenario.h): transit (the default) and fixed. */
 #include "mtt_scenario.h"
 
 #include <math.h>
@@ -20,6 +20,7 @@
 void mtt_scen_defaults(struct mtt_scen_params *p)
 {
     memset(p, 0, sizeof *p);
+    p->family = MTT_FAMILY_TRANSIT;
     p->seed = 1;
     p->n_scans = 200;
     p->scan_period_s = 4;
@@ -44,6 +45,19 @@ const char *mtt_role_name(int role)
     static const char *const names[MTT_N_SLOTS + 1] = {"cross_a", "cross_b", "parallel_a", "parallel_b", "birth",
                                                        "death",   "turn",    "straight",   "transit"};
     return role >= 0 && role <= MTT_TRANSIT ? names[role] : "?";
+}
+
+const char *mtt_family_name(int family)
+{
+    static const char *const names[MTT_N_FAMILIES] = {"transit", "fixed"};
+    return family >= 0 && family < MTT_N_FAMILIES ? names[family] : "?";
+}
+
+int mtt_family_parse(const char *name)
+{
+    for (int f = 0; f < MTT_N_FAMILIES; f++)
+        if (strcmp(name, mtt_family_name(f)) == 0) return f;
+    return -1;
 }
 
 void mtt_scen_free(struct mtt_scenario *s)
@@ -201,9 +215,30 @@ static int chord(const struct mtt_scenario *s, double x0, double y0, double ux, 
     return a < b;
 }
 
-/* The pair (targets a, b) on lines off_m from the centre, heading hp, the
- * pair's middle at mid-run along_m from the middle of the part of its lines
- * inside, at speed v; their lives. Returns the scans with both present. */
+/* The pair (targets a, b) side by side, heading hp, parallel_sep_m apart
+ * about the line through (px, py) + shift (ux, uy) at time at_s: a on the
+ * left (+ normal), b on the right. Both families place the pair here; only
+ * its point differs (transit: the middle of the chord, fixed: the drawn
+ * offset along the line, shift 0). */
+static void set_pair(const struct mtt_scenario *s, struct mtt_target *a, struct mtt_target *b, double px, double py,
+                     double shift, double hp, double at_s)
+{
+    const double ux = cos(hp), uy = sin(hp), nx = cos(hp + 90 * DEG), ny = sin(hp + 90 * DEG);
+    const double h = 0.5 * s->p.parallel_sep_m;
+    for (int i = 0; i < 2; i++) {
+        struct mtt_target *g = i ? b : a;
+        const double o = i ? -h : h;
+        g->ax_m = px + o * nx + shift * ux;
+        g->ay_m = py + o * ny + shift * uy;
+        g->at_s = at_s;
+        g->heading_rad = hp;
+    }
+}
+
+/* Transit: the pair (targets a, b) on lines off_m from the centre, heading
+ * hp, the pair's middle at mid-run along_m from the middle of the part of
+ * its lines inside, at speed v; their lives. Returns the scans with both
+ * present. */
 static long place_pair(const struct mtt_scenario *s, struct mtt_target *a, struct mtt_target *b, double side,
                        double off_m, double hp, double along_m, double v)
 {
@@ -213,13 +248,9 @@ static long place_pair(const struct mtt_scenario *s, struct mtt_target *a, struc
     double a0, a1, b0, b1, m = 0;
     if (chord(s, px + h * nx, py + h * ny, ux, uy, &a0, &a1) && chord(s, px - h * nx, py - h * ny, ux, uy, &b0, &b1))
         m = 0.5 * (fmax(a0, b0) + fmin(a1, b1));
+    set_pair(s, a, b, px, py, m + along_m, hp, t_mid);
     for (int i = 0; i < 2; i++) {
         struct mtt_target *g = i ? b : a;
-        const double o = i ? -h : h;
-        g->ax_m = px + o * nx + (m + along_m) * ux;
-        g->ay_m = py + o * ny + (m + along_m) * uy;
-        g->at_s = t_mid;
-        g->heading_rad = hp;
         g->speed_mps = v;
         set_life(s, g, 0, s->p.n_scans);
     }
@@ -317,6 +348,203 @@ static long draw_gap(const struct mtt_scenario *s, struct rng *r)
     return g > s->p.gap_max_scans ? s->p.gap_max_scans : g;
 }
 
+/* ---------------------------------------------------------------- the structure's draws */
+
+/* The structure's random numbers, drawn from stream 0 in this order by both
+ * families (a seed gives both the same crossing, headings, offsets, birth
+ * and death scans, turn and speed draws; the families differ in what they
+ * make of them: place_transit, place_fixed). */
+struct structure {
+    double tc, ha, hb;                 /* the X: the crossing's time, A's and B's headings */
+    double hp, p_side, p_off, p_along; /* the pair: heading, side, offset from the centre, jitter along */
+    long kb, kd;                       /* the designated birth scan and death scan */
+    double t_phi, t_rq, t_sg, t_dh;    /* the turn: bearing and distance of its start from the centre,
+                                          left (+1) or right, the legs' heading jitter */
+    double t_w, t_th, tau, ts;         /* its rate, angle, duration and start time */
+};
+
+/* The draws (stream 0: the X, the pair, birth, death, turn, straight, the
+ * speeds), the X placed, the straight targets (BIRTH, DEATH, STRAIGHT)
+ * anchored, every speed drawn (speed_mps = speed_drawn_mps; the pair one
+ * velocity). The anchor times of BIRTH and DEATH are the family's: transit
+ * its designated birth or last scan, fixed its mid-life. */
+static void draw_structure(struct mtt_scenario *s, struct rng *r, struct mtt_target dg[MTT_N_SLOTS],
+                           struct structure *st)
+{
+    const struct mtt_scen_params *p = &s->p;
+    const int fixed = p->family == MTT_FAMILY_FIXED;
+    const long ns = p->n_scans;
+    const double T = p->scan_period_s, t_end = (double)(ns - 1) * T;
+    const double cx = 0.5 * p->region_m, cy = 0.5 * p->region_m;
+    memset(dg, 0, MTT_N_SLOTS * sizeof *dg);
+    memset(st, 0, sizeof *st);
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        dg[i].role = i;
+        dg[i].slot = i;
+    }
+    /* the X */
+    s->cross_x_m = cx + unif(r, -150, 150);
+    s->cross_y_m = cy + unif(r, -150, 150);
+    st->tc = (0.5 + unif(r, -0.05, 0.05)) * t_end;
+    st->ha = 45 * DEG + unif(r, -10 * DEG, 10 * DEG) + (rng_uniform(r) < 0.5 ? 180 * DEG : 0);
+    st->hb = st->ha + 90 * DEG + unif(r, -20 * DEG, 20 * DEG) + (rng_uniform(r) < 0.5 ? 180 * DEG : 0);
+    for (int i = MTT_CROSS_A; i <= MTT_CROSS_B; i++) {
+        struct mtt_target *g = &dg[i];
+        g->ax_m = s->cross_x_m;
+        g->ay_m = s->cross_y_m;
+        g->at_s = st->tc;
+        g->heading_rad = i == MTT_CROSS_A ? st->ha : st->hb;
+    }
+    s->cross_scan = lround(st->tc / T);
+    /* the pair, along A's line (placed by the family) */
+    st->hp = st->ha + unif(r, -5 * DEG, 5 * DEG) + (rng_uniform(r) < 0.5 ? 180 * DEG : 0);
+    st->p_side = rng_uniform(r) < 0.5 ? -1 : 1;
+    st->p_off = unif(r, 300, 500);
+    st->p_along = unif(r, -150, 150);
+    /* birth and death */
+    st->kb = clamp_l(lround((0.2 + unif(r, -0.015, 0.015)) * (double)ns), 1, ns - 2);
+    straight(&dg[MTT_BIRTH], r, cx, cy, fixed ? 0.5 * (double)(st->kb + ns - 1) * T : (double)st->kb * T);
+    st->kd = clamp_l(lround((0.7 + unif(r, -0.015, 0.015)) * (double)ns), 2, ns - 1);
+    straight(&dg[MTT_DEATH], r, cx, cy, fixed ? 0.5 * (double)(st->kd - 1) * T : (double)(st->kd - 1) * T);
+    /* the turn (placed by the family) */
+    st->t_phi = unif(r, 0, 360 * DEG);
+    st->t_rq = unif(r, 500, 700);
+    st->t_sg = rng_uniform(r) < 0.5 ? -1 : 1;
+    st->t_dh = unif(r, -10 * DEG, 10 * DEG);
+    st->t_w = p->turn_rate_dps * DEG * unif(r, 0.8, 1.2);
+    st->t_th = p->turn_deg * DEG;
+    st->tau = st->t_th / st->t_w;
+    double ts = 0.5 * t_end - 0.5 * st->tau + unif(r, -0.05, 0.05) * t_end;
+    if (ts > t_end - st->tau - T) ts = t_end - st->tau - T;
+    if (ts < T) ts = T;
+    st->ts = ts;
+    straight(&dg[MTT_STRAIGHT], r, cx, cy, 0.5 * t_end);
+    /* the speeds, drawn */
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        const double v = unif(r, p->speed_min_mps, p->speed_max_mps);
+        dg[i].speed_mps = dg[i].speed_drawn_mps = v;
+    }
+    dg[MTT_PAR_B].speed_mps = dg[MTT_PAR_B].speed_drawn_mps = dg[MTT_PAR_A].speed_mps; /* one velocity */
+}
+
+/* The turn target g, its turn starting rq from the centre (bearing t_phi). */
+static void set_turn(const struct mtt_scenario *s, struct mtt_target *g, const struct structure *st, double rq)
+{
+    const double cx = 0.5 * s->p.region_m, cy = 0.5 * s->p.region_m;
+    g->ax_m = cx + rq * cos(st->t_phi);
+    g->ay_m = cy + rq * sin(st->t_phi);
+    g->at_s = st->ts;
+    g->heading_rad = st->t_phi + st->t_sg * 0.5 * (180 * DEG - st->t_th) + st->t_dh;
+    g->turn_rad = st->t_sg * st->t_th;
+    g->turn_rate_rps = st->t_w;
+}
+
+/* ---------------------------------------------------------------- transit family */
+
+/* Lives from the path inside, the pair adapted to be present together
+ * min(PAR_SCANS, n) scans, the turn's start pulled in until its arc is
+ * inside; speeds kept (but the pair's last resort). */
+static void place_transit(struct mtt_scenario *s, struct mtt_target dg[MTT_N_SLOTS], const struct structure *st)
+{
+    const long ns = s->p.n_scans;
+    set_life(s, &dg[MTT_CROSS_A], 0, ns);
+    set_life(s, &dg[MTT_CROSS_B], 0, ns);
+    set_life(s, &dg[MTT_BIRTH], st->kb, ns);
+    set_life(s, &dg[MTT_DEATH], 0, st->kd);
+    set_life(s, &dg[MTT_STRAIGHT], 0, ns);
+    {
+        /* the pair: present together for min(PAR_SCANS, n) scans, the
+         * geometry adapted if need be, then the speed */
+        const long need = ns < PAR_SCANS ? ns : PAR_SCANS;
+        struct mtt_target *a = &dg[MTT_PAR_A], *b = &dg[MTT_PAR_B];
+        const double hp = st->hp, p_off = st->p_off, p_side = st->p_side;
+        double v = a->speed_mps, off = p_off, h = hp;
+        const double hdiag = 45 * DEG + 90 * DEG * floor((hp - 45 * DEG) / (90 * DEG) + 0.5);
+        long got = place_pair(s, a, b, p_side, off, h, st->p_along, v);
+        for (int k = 1; k <= 20 && got < need; k++) {
+            if (k <= 10) off = p_off - (p_off - PAR_OFF_MIN_M) * k / 10.0;
+            else h = hp + (hdiag - hp) * (k - 10) / 10.0;
+            got = place_pair(s, a, b, p_side, off, h, 0, v);
+        }
+        if (got < need) { /* the largest speed that gives it */
+            double lo = 0, hi = v;
+            for (int it = 0; it < 50; it++) {
+                const double mid = 0.5 * (lo + hi);
+                if (place_pair(s, a, b, p_side, off, h, 0, mid) >= need) lo = mid;
+                else hi = mid;
+            }
+            v = lo > 0 ? lo : 1e-3;
+            got = place_pair(s, a, b, p_side, off, h, 0, v);
+        }
+        s->par_scans = got;
+    }
+    {
+        struct mtt_target *g = &dg[MTT_TURN];
+        double rq = st->t_rq;
+        for (int it = 0; it < 40; it++) {
+            set_turn(s, g, st, rq);
+            if (turn_inside(s, g)) break;
+            rq *= 0.9;
+        }
+        set_life(s, g, 0, ns);
+    }
+}
+
+/* ---------------------------------------------------------------- fixed family */
+
+/* Every scan of g's life inside at speed v. */
+static int life_inside_at(const struct mtt_scenario *s, struct mtt_target g, double v)
+{
+    g.speed_mps = v;
+    for (long k = g.birth_scan; k < g.death_scan; k++)
+        if (!inside_k(s, &g, k)) return 0;
+    return 1;
+}
+
+/* The largest speed <= v whose path stays inside over the life (the path
+ * shrinks towards the anchor, inside by construction, as the speed falls:
+ * bisection). With a second target b (the pair: one velocity) both must. */
+static double fit_speed(const struct mtt_scenario *s, const struct mtt_target *a, const struct mtt_target *b,
+                        double v)
+{
+    if (life_inside_at(s, *a, v) && (!b || life_inside_at(s, *b, v))) return v;
+    double lo = 0, hi = v;
+    for (int it = 0; it < 60; it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (life_inside_at(s, *a, mid) && (!b || life_inside_at(s, *b, mid))) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* Lives fixed (the whole run; BIRTH from its birth, DEATH to its death),
+ * the pair at its drawn offsets, the turn where drawn, then each speed
+ * reduced until the path stays inside over its life (b9ce836). */
+static void place_fixed(struct mtt_scenario *s, struct mtt_target dg[MTT_N_SLOTS], const struct structure *st)
+{
+    const long ns = s->p.n_scans;
+    const double cx = 0.5 * s->p.region_m, cy = cx, t_mid = 0.5 * (double)(ns - 1) * s->p.scan_period_s;
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        dg[i].birth_scan = i == MTT_BIRTH ? st->kb : 0;
+        dg[i].death_scan = i == MTT_DEATH ? st->kd : ns;
+    }
+    {
+        const double hp = st->hp, off = st->p_off, side = st->p_side;
+        const double nx = cos(hp + 90 * DEG), ny = sin(hp + 90 * DEG);
+        const double px = cx + side * off * nx + st->p_along * cos(hp);
+        const double py = cy + side * off * ny + st->p_along * sin(hp);
+        set_pair(s, &dg[MTT_PAR_A], &dg[MTT_PAR_B], px, py, 0, hp, t_mid);
+    }
+    set_turn(s, &dg[MTT_TURN], st, st->t_rq);
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        struct mtt_target *g = &dg[i];
+        if (i == MTT_PAR_B) continue;
+        g->speed_mps = fit_speed(s, g, i == MTT_PAR_A ? &dg[MTT_PAR_B] : NULL, g->speed_drawn_mps);
+        if (i == MTT_PAR_A) dg[MTT_PAR_B].speed_mps = g->speed_mps;
+    }
+    s->par_scans = overlap(&dg[MTT_PAR_A], &dg[MTT_PAR_B]);
+}
+
 /* ---------------------------------------------------------------- init */
 
 int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char *err, size_t n)
@@ -347,7 +575,13 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
                          "(0, 180] deg at (0, 90] deg/s");
         return -1;
     }
-    if (p->min_life_scans < 1 || p->gap_max_scans < 1 || p->gap_max_scans > p->n_scans) {
+    if (p->family != MTT_FAMILY_TRANSIT && p->family != MTT_FAMILY_FIXED) {
+        snprintf(err, n, "family %d is neither transit (%d) nor fixed (%d)", p->family, MTT_FAMILY_TRANSIT,
+                 MTT_FAMILY_FIXED);
+        return -1;
+    }
+    if (p->family == MTT_FAMILY_TRANSIT &&
+        (p->min_life_scans < 1 || p->gap_max_scans < 1 || p->gap_max_scans > p->n_scans)) {
         snprintf(err, n, "transit targets: min life must be >= 1 scan, gaps 1 .. [1, scans]");
         return -1;
     }
@@ -362,105 +596,23 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         mtt_scen_free(s);
         return -1;
     }
+    const long ns = p->n_scans;
+    const int transit_on = p->family == MTT_FAMILY_TRANSIT;
     struct mtt_target dg[MTT_N_SLOTS]; /* the designated targets */
-    memset(dg, 0, sizeof dg);
-    /* ---- the geometry: stream 0, in this order */
+    struct structure st;
     struct rng r;
     rng_init(&r, p->seed, 0);
-    const long ns = p->n_scans;
-    const double T = p->scan_period_s, t_end = (double)(ns - 1) * T;
-    const double cx = 0.5 * p->region_m, cy = 0.5 * p->region_m;
-    for (int i = 0; i < MTT_N_SLOTS; i++) {
-        dg[i].role = i;
-        dg[i].slot = i;
-    }
-    /* the X */
-    s->cross_x_m = cx + unif(&r, -150, 150);
-    s->cross_y_m = cy + unif(&r, -150, 150);
-    const double tc = (0.5 + unif(&r, -0.05, 0.05)) * t_end;
-    const double ha = 45 * DEG + unif(&r, -10 * DEG, 10 * DEG) + (rng_uniform(&r) < 0.5 ? 180 * DEG : 0);
-    const double hb = ha + 90 * DEG + unif(&r, -20 * DEG, 20 * DEG) + (rng_uniform(&r) < 0.5 ? 180 * DEG : 0);
-    for (int i = MTT_CROSS_A; i <= MTT_CROSS_B; i++) {
-        struct mtt_target *g = &dg[i];
-        g->ax_m = s->cross_x_m;
-        g->ay_m = s->cross_y_m;
-        g->at_s = tc;
-        g->heading_rad = i == MTT_CROSS_A ? ha : hb;
-    }
-    s->cross_scan = lround(tc / T);
-    /* the pair, along A's line (placed once the speed is known) */
-    const double hp = ha + unif(&r, -5 * DEG, 5 * DEG) + (rng_uniform(&r) < 0.5 ? 180 * DEG : 0);
-    const double p_side = rng_uniform(&r) < 0.5 ? -1 : 1, p_off = unif(&r, 300, 500), p_along = unif(&r, -150, 150);
-    /* birth and death */
-    const long kb = clamp_l(lround((0.2 + unif(&r, -0.015, 0.015)) * (double)ns), 1, ns - 2);
-    straight(&dg[MTT_BIRTH], &r, cx, cy, (double)kb * T);
-    const long kd = clamp_l(lround((0.7 + unif(&r, -0.015, 0.015)) * (double)ns), 2, ns - 1);
-    straight(&dg[MTT_DEATH], &r, cx, cy, (double)(kd - 1) * T);
-    /* the turn (its start pulled in, if need be, once the speed is known) */
-    const double t_phi = unif(&r, 0, 360 * DEG), t_rq = unif(&r, 500, 700);
-    const double t_sg = rng_uniform(&r) < 0.5 ? -1 : 1, t_dh = unif(&r, -10 * DEG, 10 * DEG);
-    const double t_w = p->turn_rate_dps * DEG * unif(&r, 0.8, 1.2), t_th = p->turn_deg * DEG;
-    const double tau = t_th / t_w;
-    double ts = 0.5 * t_end - 0.5 * tau + unif(&r, -0.05, 0.05) * t_end;
-    if (ts > t_end - tau - T) ts = t_end - tau - T;
-    if (ts < T) ts = T;
-    straight(&dg[MTT_STRAIGHT], &r, cx, cy, 0.5 * t_end);
-    /* ---- the speeds: drawn, and kept */
-    for (int i = 0; i < MTT_N_SLOTS; i++) {
-        const double v = unif(&r, p->speed_min_mps, p->speed_max_mps);
-        dg[i].speed_mps = dg[i].speed_drawn_mps = v;
-    }
-    dg[MTT_PAR_B].speed_mps = dg[MTT_PAR_B].speed_drawn_mps = dg[MTT_PAR_A].speed_mps; /* one velocity */
-    /* ---- lives of the designated targets */
-    set_life(s, &dg[MTT_CROSS_A], 0, ns);
-    set_life(s, &dg[MTT_CROSS_B], 0, ns);
-    set_life(s, &dg[MTT_BIRTH], kb, ns);
-    set_life(s, &dg[MTT_DEATH], 0, kd);
-    set_life(s, &dg[MTT_STRAIGHT], 0, ns);
+    draw_structure(s, &r, dg, &st);
+    if (p->family == MTT_FAMILY_FIXED) place_fixed(s, dg, &st);
+    else place_transit(s, dg, &st);
     {
-        /* the pair: present together for min(PAR_SCANS, n) scans, the
-         * geometry adapted if need be, then the speed */
-        const long need = ns < PAR_SCANS ? ns : PAR_SCANS;
-        struct mtt_target *a = &dg[MTT_PAR_A], *b = &dg[MTT_PAR_B];
-        double v = a->speed_mps, off = p_off, h = hp;
-        const double hdiag = 45 * DEG + 90 * DEG * floor((hp - 45 * DEG) / (90 * DEG) + 0.5);
-        long got = place_pair(s, a, b, p_side, off, h, p_along, v);
-        for (int st = 1; st <= 20 && got < need; st++) {
-            if (st <= 10) off = p_off - (p_off - PAR_OFF_MIN_M) * st / 10.0;
-            else h = hp + (hdiag - hp) * (st - 10) / 10.0;
-            got = place_pair(s, a, b, p_side, off, h, 0, v);
-        }
-        if (got < need) { /* the largest speed that gives it */
-            double lo = 0, hi = v;
-            for (int it = 0; it < 50; it++) {
-                const double mid = 0.5 * (lo + hi);
-                if (place_pair(s, a, b, p_side, off, h, 0, mid) >= need) lo = mid;
-                else hi = mid;
-            }
-            v = lo > 0 ? lo : 1e-3;
-            got = place_pair(s, a, b, p_side, off, h, 0, v);
-        }
-        s->par_scans = got;
-    }
-    {
-        struct mtt_target *g = &dg[MTT_TURN];
-        double rq = t_rq;
-        for (int it = 0; it < 40; it++) {
-            g->ax_m = cx + rq * cos(t_phi);
-            g->ay_m = cy + rq * sin(t_phi);
-            g->at_s = ts;
-            g->heading_rad = t_phi + t_sg * 0.5 * (180 * DEG - t_th) + t_dh;
-            g->turn_rad = t_sg * t_th;
-            g->turn_rate_rps = t_w;
-            if (turn_inside(s, g)) break;
-            rq *= 0.9;
-        }
-        set_life(s, g, 0, ns);
-        s->turn_first_scan = (long)ceil(ts / T - 1e-9);
-        s->turn_last_scan = (long)floor((ts + tau) / T + 1e-9);
+        const double T = p->scan_period_s;
+        s->turn_first_scan = (long)ceil(st.ts / T - 1e-9);
+        s->turn_last_scan = (long)floor((st.ts + st.tau) / T + 1e-9);
         if (s->turn_last_scan > ns - 1) s->turn_last_scan = ns - 1;
     }
-    /* ---- the slots: transit targets before and after the designated one */
+    /* ---- the slots: transit targets before and after the designated one
+     * (the transit family; the fixed one has the designated ones alone) */
     struct tg_list all = {NULL, 0, 0}, before = {NULL, 0, 0};
     long *ord = NULL;
     int oom = 0;
@@ -468,8 +620,8 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
     size_t n_ord = 0, cap_ord = 0;
     for (int j = 0; j < MTT_N_SLOTS && !oom; j++) {
         before.n = 0;
-        long gap = draw_gap(s, &r);
-        for (long kb0 = dg[j].birth_scan; !oom;) { /* backwards: the earlier ones, latest first */
+        long gap = transit_on ? draw_gap(s, &r) : 0;
+        for (long kb0 = dg[j].birth_scan; transit_on && !oom;) { /* backwards: the earlier ones, latest first */
             const long x = kb0 - gap;
             if (x < p->min_life_scans) break;
             const double v = unif(&r, p->speed_min_mps, p->speed_max_mps);
@@ -482,8 +634,8 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         const size_t first = all.n;
         for (size_t q = before.n; q-- > 0 && !oom;) oom = tg_push(&all, &before.v[q]) != 0;
         const size_t mid = all.n;
-        gap = draw_gap(s, &r);
-        for (long kd0 = dg[j].death_scan; !oom;) { /* forwards: the later ones */
+        gap = transit_on ? draw_gap(s, &r) : 0;
+        for (long kd0 = dg[j].death_scan; transit_on && !oom;) { /* forwards: the later ones */
             const long e = kd0 + gap;
             if (e + p->min_life_scans > ns) break;
             const double v = unif(&r, p->speed_min_mps, p->speed_max_mps);

@@ -1,29 +1,72 @@
-/* mtt_scenario.h - the multi-target scenario family of `trk-sim mtt` (issue
- * 14 item 7): targets in a square region, at most eight at a time, seeded,
- * deterministic.
+/* mtt_scenario.h - the multi-target scenario families of `trk-sim mtt`
+ * (issue 14 item 7): targets in a square region, at most eight at a time,
+ * seeded, deterministic. Two families (mtt_scen_params.family, `trk-sim mtt
+ * --family transit|fixed`):
+ *   transit  (MTT_FAMILY_TRANSIT, the default) targets enter and leave the
+ *            region at their own speeds (5-15 m/s, kept); a slot whose target
+ *            has gone takes a new one: ~25 targets in a run of 200 scans,
+ *            6-8 present
+ *   fixed    (MTT_FAMILY_FIXED) the eight structure targets alone, alive the
+ *            whole run but the birth (present from its birth on) and the
+ *            death (gone from its death on); speeds drawn in 5-15 m/s and
+ *            reduced until each path stays inside. The family of commit
+ *            b9ce836, issue 14's 8-target scenario against which the peer
+ *            (Stone Soup JPDA) was measured: the same parameters and seed
+ *            give the same scenario as b9ce836 did, bit for bit (targets,
+ *            truth and every scan's detections).
+ * What the families share is one code path: the region, the slots and
+ * roles, the structure's random draws and its geometry (the X, the pair's
+ * side-by-side placement, the straight targets, the turn), the motion, the
+ * detections, the clutter, the amplitudes, the random streams. They differ
+ * in the targets' lives, where the pair, BIRTH and DEATH are anchored, the
+ * turn's pull-in, the speeds (kept or fitted) and the transit targets.
+ *
+ * ---- Both families
  *
  * Region [0, S]^2 (S = region_m, 3 km), a scan every T s (4 s), scans
  * 0 .. n_scans-1 at t_k = k T. "Inside" is the region less margin_m (50 m):
- * [m, S - m]^2. Every target moves at its own speed, drawn uniformly in
- * [speed_min_mps, speed_max_mps] (5-15 m/s) and kept (one exception: the
- * pair, below), so a target crosses the region in 200-600 s at the default
- * speeds: targets enter and leave during a run.
+ * [m, S - m]^2. Speeds are drawn uniformly in [speed_min_mps,
+ * speed_max_mps] (5-15 m/s), one per structure target (the pair one for
+ * both).
  *
  * Slots. The scenario has MTT_N_SLOTS (8) slots; a slot holds one target at
  * a time, so that at most eight are present. Each slot has one designated
  * target, its structure role (enum mtt_role, = the slot index and the
- * target's index in tg[]):
+ * target's index in tg[]). The structure, drawn alike by both families (a
+ * seed gives both the same crossing, headings, offsets, designated birth and
+ * death scans, turn and speed draws):
  *   CROSS_A, CROSS_B  an X: both pass the crossing point (the centre + up to
  *                     +-150 m per axis) at the same time, scan n/2 +- 5 %;
  *                     A heads 45 deg +- 10 deg (or the opposite way), B A's
- *                     heading + 90 deg +- 20 deg (crossing angle 70-110 deg);
- *                     both are inside for >= ~1400 m of path either side of
- *                     the crossing (>= 22 scans at 15 m/s, 16 at 20 m/s)
+ *                     heading + 90 deg +- 20 deg (crossing angle 70-110 deg)
  *   PAR_A, PAR_B      a pair moving together, parallel_sep_m (60 m) apart
  *                     side by side (same velocity at every time): heading
  *                     along CROSS_A's line +- 5 deg (either way), the pair's
- *                     centre line 300-500 m from the centre (either side); at
- *                     mid-run the pair is at the middle of the part of its
+ *                     centre line 300-500 m from the centre (either side),
+ *                     +- 150 m along the line at mid-run (from what: below)
+ *   BIRTH             designated birth at scan round(0.2 n) + j (j up to
+ *                     +-1.5 % of n); straight, through a point 300-700 m from
+ *                     the centre, heading tangential +- 30 deg (either way)
+ *   DEATH             designated death at scan round(0.7 n) + j (gone from
+ *                     it on); straight like BIRTH
+ *   TURN              a coordinated turn of turn_deg (90 deg, left or right)
+ *                     at turn_rate_dps (3 deg/s) x [0.8, 1.2], centred on
+ *                     mid-run +- 5 %; the turn starts 500-700 m from the
+ *                     centre, the legs before and after point 45 deg off the
+ *                     direction to the centre (+- 10 deg)
+ *   STRAIGHT          straight, through a point 300-700 m from the centre at
+ *                     mid-run, heading tangential +- 30 deg (either way)
+ * Motion is deterministic (no process noise): straight legs and the turn's
+ * arc (radius v / omega; 0.52 m/s^2 at 10 m/s and 3 deg/s).
+ *
+ * ---- The transit family (MTT_FAMILY_TRANSIT)
+ *
+ * Every target keeps its drawn speed (one exception: the pair, below), so a
+ * target crosses the region in 200-600 s at the default speeds: targets
+ * enter and leave during a run. The structure's anchors:
+ *   CROSS_A, CROSS_B  both inside for >= ~1400 m of path either side of the
+ *                     crossing (>= 22 scans at 15 m/s, 16 at 20 m/s)
+ *   PAR_A, PAR_B      at mid-run the pair is at the middle of the part of its
  *                     lines inside the region +- 150 m along them. Both are
  *                     present together for at least min(40, n) scans: where
  *                     the draw does not give that, the jitter along the line
@@ -32,23 +75,13 @@
  *                     only beyond that (a pair speed above ~22 m/s at 4 s
  *                     scans) is the pair's speed reduced to what the
  *                     longest chord allows (speed_mps < speed_drawn_mps)
- *   BIRTH             born inside at scan round(0.2 n) + j (j up to +-1.5 %
- *                     of n): at that scan at a point 300-700 m from the
- *                     centre, heading tangential +- 30 deg (either way)
- *   DEATH             dies inside at scan round(0.7 n) + j (gone from it
- *                     on): at its last scan at a point 300-700 m from the
- *                     centre, heading tangential +- 30 deg
- *   TURN              a coordinated turn of turn_deg (90 deg, left or right)
- *                     at turn_rate_dps (3 deg/s) x [0.8, 1.2], centred on
- *                     mid-run +- 5 %; the turn starts 500-700 m from the
- *                     centre (nearer where its arc would leave the region),
- *                     the legs before and after point 45 deg off the
- *                     direction to the centre (+- 10 deg); present for the
- *                     whole turn and before and after it
- *   STRAIGHT          straight, through a point 300-700 m from the centre at
- *                     mid-run, heading tangential +- 30 deg (either way)
- * Motion is deterministic (no process noise): straight legs and the turn's
- * arc (radius v / omega; 0.52 m/s^2 at 10 m/s and 3 deg/s).
+ *   BIRTH             born inside at its designated scan, there at its
+ *                     300-700 m point
+ *   DEATH             dies inside at its designated scan, at its 300-700 m
+ *                     point at its last scan
+ *   TURN              the turn's start pulled nearer the centre where its arc
+ *                     would leave the region; present for the whole turn and
+ *                     before and after it
  *
  * Life. A target's life is the part of its path inside: the longest run of
  * consecutive scans around its anchor scan (the crossing, mid-run, the
@@ -80,6 +113,34 @@
  * scans (17-29), 7.4 present per scan on average, 6-8 in 96 % of the scans
  * (fewer near the run's ends and where several slots change at once).
  *
+ * ---- The fixed family (MTT_FAMILY_FIXED; commit b9ce836)
+ *
+ * The eight structure targets and no others (n_targets = 8, slot j holds
+ * target j alone; min_life_scans and gap_max_scans unused).
+ *   Lives        fixed, not from the path: every target present from scan 0
+ *                to the run's end, but BIRTH from its designated birth scan
+ *                on and DEATH up to its designated death scan: 7 present
+ *                before the birth, 8 from it to the death, 7 after
+ *   Anchors      the mid-life points: the X at the crossing; the pair at
+ *                mid-run at its centre line's point nearest the region's
+ *                centre + the drawn 150 m along it; BIRTH, DEATH and
+ *                STRAIGHT through their 300-700 m point at mid-life (scan
+ *                (birth_scan + death_scan - 1) / 2); the turn's start where
+ *                drawn (not pulled in)
+ *   Speeds       the draw, then, where the target's path over its life would
+ *                leave the inside, reduced (bisection) to the largest speed
+ *                that keeps it in: the path is anchored at its mid-life
+ *                point, so a lower speed shrinks it towards that point
+ *                (speed_drawn_mps keeps the draw; the pair one speed for
+ *                both). A straight target crosses 3 km at 15 m/s in 200 s:
+ *                runs of up to ~40 scans of 4 s keep the draws, runs of more
+ *                than ~70 bring every target down to what its chord allows
+ *                (at the default 200 scans, 796 s: 2.7-6.3 m/s, median
+ *                4.2, over 40 seeds; below the draw's 5 m/s floor)
+ *   par_scans    = n (the pair present together the whole run)
+ *
+ * ---- Detections, random numbers (both families)
+ *
  * Detections of scan k: per slot, its target present at k with probability
  * pd, at its position + N(0, sigma^2 I); with amplitudes (amplitude = 1) a
  * Swerling I target of snr_db in thresholded Rayleigh clutter
@@ -91,17 +152,19 @@
  * (n_clutter_capped counts the clutter left out). The scan is shuffled.
  *
  * Random numbers (rng.h, philox, keyed by seed): stream 0 draws the
- * geometry (the structure, the speeds, then slot by slot the transit
- * targets, earlier ones then later ones); scan k uses stream 4k+1 for the
- * targets' detections (four draws per slot whether a target is present or
- * detected or not), 4k+2 for the clutter (the same draws per point, so the
- * first N points are the same at every clutter count: scans at 50 clutter
- * hold the first 50 points of the scan at 100, and the targets' detections
- * are the same at every level; with or without amplitudes the positions are
- * the same), 4k+3 for the shuffle. A scan depends only on (seed, k,
- * clutter_count, amplitude) and the geometry parameters: same seed, same
- * scenario bit for bit, in any scan order and from any thread (the scenario
- * is read-only after mtt_scen_init). */
+ * geometry (the structure and the speeds, in that order in both families;
+ * then, transit only, slot by slot the transit targets, earlier ones then
+ * later ones); scan k uses stream 4k+1 for the targets' detections (four
+ * draws per slot whether a target is present or detected or not), 4k+2 for
+ * the clutter (the same draws per point, so the first N points are the same
+ * at every clutter count: scans at 50 clutter hold the first 50 points of
+ * the scan at 100, and the targets' detections are the same at every level;
+ * with or without amplitudes the positions are the same), 4k+3 for the
+ * shuffle. So the two families of one seed have the same clutter, the same
+ * shuffle draws and the same detection draws per slot. A scan depends only
+ * on (family, seed, k, clutter_count, amplitude) and the geometry
+ * parameters: same seed, same scenario bit for bit, in any scan order and
+ * from any thread (the scenario is read-only after mtt_scen_init). */
 #ifndef TRK_SIM_MTT_SCENARIO_H
 #define TRK_SIM_MTT_SCENARIO_H
 
@@ -110,6 +173,12 @@
 
 #include "amp_sample.h"
 #include "trk/tracker.h"
+
+enum mtt_family {
+    MTT_FAMILY_TRANSIT = 0,     /* targets enter and leave, slots re-used (the default) */
+    MTT_FAMILY_FIXED,           /* the eight structure targets alone (b9ce836) */
+    MTT_N_FAMILIES
+};
 
 enum mtt_role {
     MTT_CROSS_A = 0,
@@ -125,6 +194,7 @@ enum mtt_role {
 };
 
 struct mtt_scen_params {
+    int family;                 /* enum mtt_family */
     uint64_t seed;
     long n_scans;               /* [10, 1e6] */
     double scan_period_s;       /* > 0 */
@@ -139,11 +209,11 @@ struct mtt_scen_params {
     double parallel_sep_m;      /* (0, 500) */
     double turn_deg;            /* (0, 180] */
     double turn_rate_dps;       /* (0, 90] */
-    long min_life_scans;        /* transit targets: present at least this long, >= 1 */
-    long gap_max_scans;         /* scans between a slot's targets: 1 .. this, >= 1 */
+    long min_life_scans;        /* transit targets: present at least this long, >= 1 (transit only) */
+    long gap_max_scans;         /* scans between a slot's targets: 1 .. this, >= 1 (transit only) */
 };
 
-/* Defaults: seed 1, 200 scans of 4 s, 3 km region, margin 50 m, pd 0.8,
+/* Defaults: the transit family, seed 1, 200 scans of 4 s, 3 km region, margin 50 m, pd 0.8,
  * sigma 5 m, amplitudes at 13 dB, capacity TRK_MAX_DETECTIONS, speeds
  * 5-15 m/s, pair 60 m apart, a 90 deg turn at 3 deg/s, transit targets
  * present >= 25 scans, gaps of 1-10 scans. */
@@ -154,7 +224,7 @@ struct mtt_target {
     int slot;                   /* 0 .. MTT_N_SLOTS-1 */
     long birth_scan;            /* present for birth_scan <= k < death_scan */
     long death_scan;
-    double speed_mps, speed_drawn_mps; /* equal but for the pair's fallback (above) */
+    double speed_mps, speed_drawn_mps; /* transit: equal but for the pair's fallback; fixed: the fit */
     double ax_m, ay_m, at_s;    /* anchor: position at time at_s */
     double heading_rad;         /* direction of motion (from +x, counter-clockwise);
                                    TURN: before the turn, which starts at the anchor */
@@ -209,6 +279,9 @@ void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, str
                    size_t max, long *origin, struct trk_scan *scan, struct mtt_scan_info *info);
 
 const char *mtt_role_name(int role);
+/* "transit", "fixed" ("?" for another value); the family of a name, or -1. */
+const char *mtt_family_name(int family);
+int mtt_family_parse(const char *name);
 
 /* The tracker defaults as they were before issue 14 (the `old`
  * configuration of trk-sim mtt): trk_tracker_mn_kn_params (M/N 3 of 5, K/N

@@ -1,11 +1,14 @@
 /* exp_mtt.c - trk-sim mtt and mtt-compare: the multi-target evaluation of
  * issue 14 (item 7).
  *
- * mtt: the scenario family of tools/sim/mtt_scenario.h (eight slots of one
- * target at a time: an X, a pair 60 m apart, a birth, a death, a 90 deg
- * turn, one straight, and targets crossing the region in the slots freed by
- * those that left; speeds in [--speed-min, --speed-max], 5-15 m/s; 3 km x
- * 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes),
+ * mtt: a scenario family of tools/sim/mtt_scenario.h (--family): transit
+ * (the default; eight slots of one target at a time: an X, a pair 60 m
+ * apart, a birth, a death, a 90 deg turn, one straight, and targets crossing
+ * the region in the slots freed by those that left; speeds in [--speed-min,
+ * --speed-max], 5-15 m/s) or fixed (the eight structure targets of commit
+ * b9ce836 alone, alive the whole run but the birth and the death, speeds
+ * reduced to keep each path inside; the scenario the peer was measured on);
+ * 3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes,
  * seeds S, S+1, ..., S+seeds-1, each at every clutter count of the list
  * (exactly N uniform clutter detections per scan, capped so that a scan never
  * exceeds TRK_MAX_DETECTIONS) through each configuration (common random
@@ -22,10 +25,14 @@
  * thread's (CLOCK_THREAD_CPUTIME_ID) around trk_tracker_process_scan only:
  * the process clock would add the other OpenMP threads' time.
  *
+ * The CSV's rows are keyed by (capacity, config, clutter, family).
+ *
  * mtt-compare: the CSV files of several builds (TRK_MAX_TRACKS differs)
  * merged into one table and one set of plots, and per metric the ratio of
  * the smallest capacity's mean to the largest's and whether it is within
- * the largest's interval. */
+ * the largest's interval; rows of different families are kept apart (a
+ * ratio pairs rows of one family; a file without the family column, from
+ * before --family, has family "unknown"). */
 #define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <math.h>
@@ -94,11 +101,13 @@ struct run_result {
     double v[M_N];
 };
 
-/* One (capacity, configuration, clutter) cell: mean and interval over seeds. */
+/* One (capacity, configuration, clutter, family) cell: mean and interval
+ * over seeds. */
 struct mtt_row {
     long capacity;
     char config[16];
     double clutter;
+    char family[16];            /* mtt_family_name(), "unknown" in an older CSV */
     long seeds, scans;
     int amplitude;
     double mean[M_N], lo[M_N], hi[M_N];
@@ -325,7 +334,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
 
 static void csv_header(FILE *f)
 {
-    fprintf(f, "capacity,config,clutter,seeds,scans,amplitude");
+    fprintf(f, "capacity,config,clutter,seeds,scans,amplitude,family");
     for (int m = 0; m < M_N; m++)
         fprintf(f, ",%s_mean,%s_lo,%s_hi", metric_name[m], metric_name[m], metric_name[m]);
     fprintf(f, "\n");
@@ -333,7 +342,8 @@ static void csv_header(FILE *f)
 
 static void csv_row(FILE *f, const struct mtt_row *r)
 {
-    fprintf(f, "%ld,%s,%g,%ld,%ld,%d", r->capacity, r->config, r->clutter, r->seeds, r->scans, r->amplitude);
+    fprintf(f, "%ld,%s,%g,%ld,%ld,%d,%s", r->capacity, r->config, r->clutter, r->seeds, r->scans, r->amplitude,
+            r->family);
     for (int m = 0; m < M_N; m++) fprintf(f, ",%.6g,%.6g,%.6g", r->mean[m], r->lo[m], r->hi[m]);
     fprintf(f, "\n");
 }
@@ -366,11 +376,12 @@ static void put_v(const struct mtt_row *r, int m, int w, int prec)
 static void print_tables(const struct mtt_row *rows, int n)
 {
     printf("-- accuracy (mean +- half the 95%% interval over seeds; GOSPA parts in m^2 per scan)\n");
-    printf("%5s %-4s %7s %13s %8s %8s %8s %12s %5s %12s %6s %6s %6s %7s\n", "slots", "cfg", "clutter", "GOSPA m",
-           "loc", "missed", "false", "to-confirm", "never", "coverage", "turn", "pair2", "cross2", "RMSE m");
+    printf("%5s %-7s %-4s %7s %13s %8s %8s %8s %12s %5s %12s %6s %6s %6s %7s\n", "slots", "family", "cfg",
+           "clutter", "GOSPA m", "loc", "missed", "false", "to-confirm", "never", "coverage", "turn", "pair2",
+           "cross2", "RMSE m");
     for (int i = 0; i < n; i++) {
         const struct mtt_row *r = &rows[i];
-        printf("%5ld %-4s %7g", r->capacity, r->config, r->clutter);
+        printf("%5ld %-7s %-4s %7g", r->capacity, r->family, r->config, r->clutter);
         put_ci(r, M_GOSPA, 13, 1);
         put_v(r, M_LOC, 8, 0);
         put_v(r, M_MISSED, 8, 0);
@@ -385,12 +396,12 @@ static void print_tables(const struct mtt_row *rows, int n)
         printf("\n");
     }
     printf("-- track management and cost (per run of %ld scans unless noted)\n", n ? rows[0].scans : 0L);
-    printf("%5s %-4s %7s %13s %9s %8s %6s %6s %10s %7s %6s %6s %9s %8s %7s\n", "slots", "cfg", "clutter",
-           "falseT/1000sc", "falseTS%", "dupTS%", "frag", "idsw", "cpu us/scan", "live", "full%", "conf",
+    printf("%5s %-7s %-4s %7s %13s %9s %8s %6s %6s %10s %7s %6s %6s %9s %8s %7s\n", "slots", "family", "cfg",
+           "clutter", "falseT/1000sc", "falseTS%", "dupTS%", "frag", "idsw", "cpu us/scan", "live", "full%", "conf",
            "refused", "replaced", "merged");
     for (int i = 0; i < n; i++) {
         const struct mtt_row *r = &rows[i];
-        printf("%5ld %-4s %7g", r->capacity, r->config, r->clutter);
+        printf("%5ld %-7s %-4s %7g", r->capacity, r->family, r->config, r->clutter);
         put_ci(r, M_FALSE_TRK, 13, 1);
         put_v(r, M_FALSE_TS, 9, 1);
         put_v(r, M_DUP_TS, 8, 1);
@@ -409,20 +420,26 @@ static void print_tables(const struct mtt_row *rows, int n)
 }
 
 /* Plots against clutter count, one line (with its interval) per (capacity,
- * configuration); the data go into the scripts as datablocks. */
+ * configuration, family; the family in the key when there are several);
+ * the data go into the scripts as datablocks. */
 static void plot_all(const struct sim_common *com, const struct mtt_row *rows, int n, const char *title)
 {
     if (com->no_plot || n == 0) return;
-    long caps[MAX_ROWS];
-    char cfgs[MAX_ROWS][16];
-    int ng = 0, grp[MAX_ROWS];
+    static long caps[MAX_ROWS];
+    static char cfgs[MAX_ROWS][40];
+    static int grp[MAX_ROWS];
+    int ng = 0, multi_family = 0;
     double xmax = 0;
+    for (int i = 1; i < n; i++) multi_family |= strcmp(rows[i].family, rows[0].family) != 0;
     for (int i = 0; i < n; i++) {
+        char cfg[40];
+        if (multi_family) snprintf(cfg, sizeof cfg, "%s, %s", rows[i].config, rows[i].family);
+        else snprintf(cfg, sizeof cfg, "%s", rows[i].config);
         int g = 0;
-        while (g < ng && !(caps[g] == rows[i].capacity && strcmp(cfgs[g], rows[i].config) == 0)) g++;
+        while (g < ng && !(caps[g] == rows[i].capacity && strcmp(cfgs[g], cfg) == 0)) g++;
         if (g == ng) {
             caps[ng] = rows[i].capacity;
-            snprintf(cfgs[ng], sizeof cfgs[ng], "%s", rows[i].config);
+            snprintf(cfgs[ng], sizeof cfgs[ng], "%s", cfg);
             ng++;
         }
         grp[i] = g;
@@ -550,14 +567,22 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+static const int family_values[] = {MTT_FAMILY_TRANSIT, MTT_FAMILY_FIXED};
+
 SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track maintenance) over clutter levels")
 {
     long scans, seeds;
     double levels[MAX_LEVELS], c_m, pd, snr_db, q, v_min, v_max;
-    int n_levels, no_amp = 0;
+    int n_levels, no_amp = 0, family;
     const char *configs;
     struct mtt_settings set = {{NULL}, 0};
     const struct sim_opt opts[] = {
+        SIM_OPT_CHOICE("--family", &family, "transit|fixed", family_values, "transit",
+                       "the scenario family (mtt_scenario.h): transit,\n"
+                       "targets entering and leaving, slots re-used; fixed, the 8\n"
+                       "targets of b9ce836 alive the whole run but the birth and the\n"
+                       "death, speeds reduced to keep each path inside (the scenario\n"
+                       "the peer was measured on)"),
         SIM_OPT_LONG("--scans", &scans, "N", "200", SIM_IN, 10, 100000, "scans per run, one every 4 s"),
         SIM_OPT_LONG("--seeds", &seeds, "N", "10", SIM_IN, 1, 100000,
                      "scenarios of the family: seeds S .. S+N-1 (S = --seed)"),
@@ -585,20 +610,25 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         SIM_OPT_END};
     const struct sim_cli cli = {
         "mtt", "[options] [--set key=value ...]",
-        "Issue 14's multi-target evaluation: the scenario family of tools/sim/mtt_scenario.h\n"
+        "Issue 14's multi-target evaluation: a scenario family of tools/sim/mtt_scenario.h\n"
         "(3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes; eight\n"
         "slots, each holding one target at a time: an X through the centre, a pair 60 m\n"
         "apart, a birth at ~20 % of the run, a death at ~70 %, a 90 deg turn at ~3 deg/s\n"
-        "mid-run, one straight; speeds drawn in [--speed-min, --speed-max], 5-15 m/s; a\n"
-        "target is present while inside the region, and a slot whose target has left or\n"
-        "died takes a new target entering at the edge 1-10 scans later: 6-8 present), each\n"
-        "seed at every clutter count through every configuration (the same scenarios: common\n"
-        "random numbers). Scored per scan on the confirmed tracks (GOSPA p = 2, alpha = 2,\n"
-        "cut-off c; tools/sim/mtt_eval.h); mean and 95 % Student t interval over seeds.",
+        "mid-run, one straight; speeds drawn in [--speed-min, --speed-max], 5-15 m/s).\n"
+        "--family transit (the default): a target is present while inside the region and\n"
+        "keeps its speed, and a slot whose target has left or died takes a new target\n"
+        "entering at the edge 1-10 scans later: 6-8 present. --family fixed (commit\n"
+        "b9ce836's family, the issue's 8-target scenario the peer was measured on): the\n"
+        "eight alone, alive the whole run but the birth and the death, each speed reduced\n"
+        "until its path stays inside (at 200 scans about 3-6 m/s). Each seed at every\n"
+        "clutter count through every configuration (the same scenarios: common random\n"
+        "numbers). Scored per scan on the confirmed tracks (GOSPA p = 2, alpha = 2, cut-off\n"
+        "c; tools/sim/mtt_eval.h); mean and 95 % Student t interval over seeds.",
         opts, "build/results/mtt", NULL, SIM_UNUSED_RUNS,
-        "Writes PREFIX.csv: one row per (TRK_MAX_TRACKS, config, clutter), columns\n"
-        "<metric>_mean, _lo, _hi; and PREFIX_gospa.png, _gospa_parts.png, _confirm.png,\n"
-        "_false.png (gnuplot). Compare builds with `trk-sim mtt-compare A.csv B.csv`.\n"
+        "Writes PREFIX.csv: one row per (TRK_MAX_TRACKS, config, clutter), the family in\n"
+        "the column family, then columns <metric>_mean, _lo, _hi; and PREFIX_gospa.png,\n"
+        "_gospa_parts.png, _confirm.png, _false.png (gnuplot). Compare builds with\n"
+        "`trk-sim mtt-compare A.csv B.csv`.\n"
         "--set key=value: tracker settings (the keys below), applied after each\n"
         "configuration's own and the scenario's sensor (sensor.0.*, process_noise_q).\n",
         NULL, NULL};
@@ -637,6 +667,7 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
     for (long i = 0; i < seeds; i++) {
         struct mtt_scen_params sp;
         mtt_scen_defaults(&sp);
+        sp.family = family;
         sp.seed = com.seed + (uint64_t)i;
         sp.n_scans = scans;
         sp.pd = pd;
@@ -688,16 +719,24 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
     struct run_result *res = calloc((size_t)n_jobs, sizeof *res);
     if (!res) return 1;
     const int threads = sim_threads(&com);
-    printf("== trk-sim mtt: %ld seeds (%llu..%llu) x %ld scans of %g s, region %g km x %g km, TRK_MAX_TRACKS %d, "
-           "TRK_MAX_DETECTIONS %d, %d threads\n",
-           seeds, (unsigned long long)com.seed, (unsigned long long)(com.seed + (uint64_t)seeds - 1), scans,
+    printf("== trk-sim mtt: family %s, %ld seeds (%llu..%llu) x %ld scans of %g s, region %g km x %g km, "
+           "TRK_MAX_TRACKS %d, TRK_MAX_DETECTIONS %d, %d threads\n",
+           mtt_family_name(family), seeds, (unsigned long long)com.seed,
+           (unsigned long long)(com.seed + (uint64_t)seeds - 1), scans,
            sc[0].p.scan_period_s, sc[0].p.region_m / 1000, sc[0].p.region_m / 1000, TRK_MAX_TRACKS,
            TRK_MAX_DETECTIONS, threads);
-    printf("   8 slots: %.1f targets per run (%ld-%ld), %.2f present per scan (%d-%d); speeds %.1f-%.1f m/s (drawn "
-           "in [%g, %g]%s)\n",
-           n_tg_sum / (double)seeds, n_tg_min, n_tg_max, pres_sum / ((double)seeds * (double)scans), pres_min,
-           pres_max, vmin, vmax, sc[0].p.speed_min_mps, sc[0].p.speed_max_mps,
-           reduced ? "; the pair's reduced to keep 40 scans together" : "");
+    if (family == MTT_FAMILY_FIXED)
+        printf("   fixed family (b9ce836): 8 targets, alive the whole run but the birth (from ~20 %%) and the death "
+               "(to ~70 %%), %.2f present per scan (%d-%d); speeds %.1f-%.1f m/s (drawn in [%g, %g]; %ld of %ld "
+               "reduced to keep the path inside)\n",
+               pres_sum / ((double)seeds * (double)scans), pres_min, pres_max, vmin, vmax, sc[0].p.speed_min_mps,
+               sc[0].p.speed_max_mps, reduced, (long)n_tg_sum);
+    else
+        printf("   transit family, 8 slots: %.1f targets per run (%ld-%ld), %.2f present per scan (%d-%d); speeds "
+               "%.1f-%.1f m/s (drawn in [%g, %g]%s)\n",
+               n_tg_sum / (double)seeds, n_tg_min, n_tg_max, pres_sum / ((double)seeds * (double)scans), pres_min,
+               pres_max, vmin, vmax, sc[0].p.speed_min_mps, sc[0].p.speed_max_mps,
+               reduced ? "; the pair's reduced to keep 40 scans together" : "");
     printf("   P_D %g, sigma %g m, %s, q %g; GOSPA c %g m\n", pd, sc[0].p.meas_sigma_m,
            no_amp ? "no amplitudes" : "Rayleigh amplitudes", q, c_m);
     if (!no_amp)
@@ -761,6 +800,7 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
             struct mtt_row *r = &rows[nr++];
             r->capacity = TRK_MAX_TRACKS;
             snprintf(r->config, sizeof r->config, "%s", cfg_name[kinds[c]]);
+            snprintf(r->family, sizeof r->family, "%s", mtt_family_name(family));
             r->clutter = levels[l];
             r->seeds = seeds;
             r->scans = scans;
@@ -778,7 +818,8 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
     if (write_csv(&com, ".csv", rows, nr, path, sizeof path) != 0) return 1;
     print_tables(rows, nr);
     char title[256];
-    snprintf(title, sizeof title, "trk-sim mtt: %ld seeds x %ld scans, %d slots", seeds, scans, TRK_MAX_TRACKS);
+    snprintf(title, sizeof title, "trk-sim mtt: %s family, %ld seeds x %ld scans, %d slots", mtt_family_name(family),
+             seeds, scans, TRK_MAX_TRACKS);
     plot_all(&com, rows, nr, title);
     printf("-- %ld runs in %.1f s wall on %d threads; CSV %s%s\n", n_jobs, wall, threads, path,
            com.no_plot ? "" : " and PNG plots beside it");
@@ -824,7 +865,7 @@ static int split(char *line, char **fld, int max)
     return n;
 }
 
-#define MAX_COLS (6 + 3 * M_N + 64)
+#define MAX_COLS (7 + 3 * M_N + 64)
 
 /* Rows of one mtt CSV appended to rows[*n]. 0, or -1 with a message. */
 static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, size_t errlen)
@@ -883,8 +924,10 @@ static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, s
         r->capacity = strtol(v[0], NULL, 10);
         snprintf(r->config, sizeof r->config, "%s", v[1]);
         r->clutter = strtod(v[2], NULL);
+        snprintf(r->family, sizeof r->family, "unknown"); /* a CSV from before --family */
         for (int j = 3; j < nh; j++) {
-            if (strcmp(h[j], "seeds") == 0) r->seeds = strtol(v[j], NULL, 10);
+            if (strcmp(h[j], "family") == 0) snprintf(r->family, sizeof r->family, "%s", v[j]);
+            else if (strcmp(h[j], "seeds") == 0) r->seeds = strtol(v[j], NULL, 10);
             else if (strcmp(h[j], "scans") == 0) r->scans = strtol(v[j], NULL, 10);
             else if (strcmp(h[j], "amplitude") == 0) r->amplitude = (int)strtol(v[j], NULL, 10);
             else if (col_m[j] >= 0) {
@@ -899,13 +942,28 @@ static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, s
     return 0;
 }
 
+/* Rows by capacity, family, configuration, clutter. */
 static int cmp_row(const void *a, const void *b)
 {
     const struct mtt_row *x = a, *y = b;
     if (x->capacity != y->capacity) return x->capacity < y->capacity ? -1 : 1;
+    const int f = strcmp(x->family, y->family);
+    if (f) return f;
     const int c = strcmp(x->config, y->config);
     if (c) return c; /* "new" before "old" */
     return x->clutter < y->clutter ? -1 : x->clutter > y->clutter;
+}
+
+/* The same (family, configuration, clutter): rows a ratio may pair. */
+static int same_cell(const struct mtt_row *x, const struct mtt_row *y)
+{
+    return strcmp(x->family, y->family) == 0 && strcmp(x->config, y->config) == 0 && x->clutter == y->clutter;
+}
+
+/* The same (family, configuration): one line of the ratio table. */
+static int same_group(const struct mtt_row *x, const struct mtt_row *y)
+{
+    return strcmp(x->family, y->family) == 0 && strcmp(x->config, y->config) == 0;
 }
 
 SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of builds with other TRK_MAX_TRACKS, ratios")
@@ -916,13 +974,16 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
         "mtt-compare", "A.csv B.csv ... [--out PREFIX]",
         "Merges the PREFIX.csv files of `trk-sim mtt` run by builds with different\n"
         "TRK_MAX_TRACKS (e.g. 64 and 1024, `make mtt`) into one table and one set of plots,\n"
-        "and prints per metric, configuration and clutter count the ratio of the smallest\n"
-        "capacity's mean to the largest's, marked when it is outside the largest build's\n"
-        "95 % interval.",
+        "and prints per metric, family, configuration and clutter count the ratio of the\n"
+        "smallest capacity's mean to the largest's, marked when it is outside the largest\n"
+        "build's 95 % interval. Rows are keyed by (capacity, family, config, clutter): files\n"
+        "of both families may be merged, a ratio pairs rows of one family (a CSV without\n"
+        "the family column, written before --family, counts as family \"unknown\").",
         opts, "build/results/mtt", NULL, SIM_UNUSED_RUNS | SIM_UNUSED_THREADS,
         "Writes PREFIX.csv (the merged rows, the columns of trk-sim mtt), PREFIX_ratio.csv\n"
-        "(config, clutter, metric, the two means, the large build's interval, ratio,\n"
-        "within) and the plots of trk-sim mtt with one line per (capacity, config).\n",
+        "(family, config, clutter, metric, the two means, the large build's interval,\n"
+        "ratio, within) and the plots of trk-sim mtt with one line per (capacity, config,\n"
+        "family).\n",
         take_file, &files};
     struct sim_common com;
     const int parsed = sim_parse(&cli, &com, argc, argv);
@@ -947,10 +1008,9 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
         }
     qsort(rows, (size_t)n, sizeof *rows, cmp_row);
     for (int i = 1; i < n; i++)
-        if (rows[i].capacity == rows[i - 1].capacity && strcmp(rows[i].config, rows[i - 1].config) == 0 &&
-            rows[i].clutter == rows[i - 1].clutter) {
-            fprintf(stderr, "trk-sim mtt-compare: (%ld slots, %s, clutter %g) appears twice\n", rows[i].capacity,
-                    rows[i].config, rows[i].clutter);
+        if (rows[i].capacity == rows[i - 1].capacity && same_cell(&rows[i], &rows[i - 1])) {
+            fprintf(stderr, "trk-sim mtt-compare: (%ld slots, family %s, %s, clutter %g) appears twice\n",
+                    rows[i].capacity, rows[i].family, rows[i].config, rows[i].clutter);
             free(rows);
             return 2;
         }
@@ -966,6 +1026,21 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
         return 1;
     }
     printf("== trk-sim mtt-compare: %d files, %d rows, capacities %ld .. %ld\n", files.n, n, small, large);
+    {
+        /* the families present (rows are sorted by capacity first: look at all) */
+        char fams[256] = "";
+        int nf = 0;
+        for (int i = 0; i < n; i++) {
+            int seen = 0;
+            for (int j = 0; j < i && !seen; j++) seen = strcmp(rows[j].family, rows[i].family) == 0;
+            if (seen) continue;
+            const size_t len = strlen(fams);
+            snprintf(fams + len, sizeof fams - len, "%s%s", nf ? ", " : "", rows[i].family);
+            nf++;
+        }
+        printf("   famil%s %s%s\n", nf > 1 ? "ies" : "y", fams,
+               nf > 1 ? " (kept apart: a ratio pairs rows of one family)" : "");
+    }
     for (int i = 1; i < n; i++)
         if (rows[i].scans != rows[0].scans || rows[i].seeds != rows[0].seeds ||
             rows[i].amplitude != rows[0].amplitude) {
@@ -974,8 +1049,11 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
         }
     print_tables(rows, n);
     char title[256];
-    snprintf(title, sizeof title, "trk-sim mtt: %ld seeds x %ld scans, %ld vs %ld slots", rows[0].seeds,
-             rows[0].scans, small, large);
+    int one_family = 1;
+    for (int i = 1; i < n; i++) one_family &= strcmp(rows[i].family, rows[0].family) == 0;
+    snprintf(title, sizeof title, "trk-sim mtt: %s%s%ld seeds x %ld scans, %ld vs %ld slots",
+             one_family ? rows[0].family : "", one_family ? " family, " : "", rows[0].seeds, rows[0].scans, small,
+             large);
     plot_all(&com, rows, n, title);
     if (small == large) {
         printf("-- one capacity only: no ratios. CSV %s\n", path);
@@ -984,8 +1062,8 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
     }
     /* ---- ratios small / large per (config, clutter) and metric */
     FILE *fr = sim_csv_open(&com, "_ratio.csv", NULL, 0,
-                            "config,clutter,metric,small_capacity,large_capacity,small_mean,large_mean,large_lo,"
-                            "large_hi,ratio,within");
+                            "family,config,clutter,metric,small_capacity,large_capacity,small_mean,large_mean,"
+                            "large_lo,large_hi,ratio,within");
     if (!fr) {
         free(rows);
         return 1;
@@ -994,8 +1072,7 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
     for (int i = 0; i < n; i++) {
         if (rows[i].capacity != small) continue;
         for (int j = 0; j < n; j++)
-            if (rows[j].capacity == large && strcmp(rows[j].config, rows[i].config) == 0 &&
-                rows[j].clutter == rows[i].clutter) {
+            if (rows[j].capacity == large && same_cell(&rows[j], &rows[i])) {
                 pair_s[np] = i;
                 pair_l[np] = j;
                 np++;
@@ -1004,15 +1081,15 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
     printf("-- %ld slots / %ld slots: ratio of the means; '*' = the %ld-slot mean is outside the %ld-slot 95%% "
            "interval ('-': undefined)\n",
            small, large, small, large);
-    printf("%-30s %-4s", "metric", "cfg");
-    for (int k = 0; k < np && strcmp(rows[pair_s[k]].config, rows[pair_s[0]].config) == 0; k++)
+    printf("%-30s %-7s %-4s", "metric", "family", "cfg");
+    for (int k = 0; k < np && same_group(&rows[pair_s[k]], &rows[pair_s[0]]); k++)
         printf(" %8g", rows[pair_s[k]].clutter);
     printf("   within\n");
     for (int m = 0; m < M_N; m++) {
         for (int k0 = 0; k0 < np;) {
             int k1 = k0;
-            while (k1 < np && strcmp(rows[pair_s[k1]].config, rows[pair_s[k0]].config) == 0) k1++;
-            printf("%-30s %-4s", metric_name[m], rows[pair_s[k0]].config);
+            while (k1 < np && same_group(&rows[pair_s[k1]], &rows[pair_s[k0]])) k1++;
+            printf("%-30s %-7s %-4s", metric_name[m], rows[pair_s[k0]].family, rows[pair_s[k0]].config);
             int within_n = 0, defined = 0;
             for (int k = k0; k < k1; k++) {
                 const struct mtt_row *a = &rows[pair_s[k]], *b = &rows[pair_l[k]];
@@ -1020,8 +1097,8 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
                 const double ratio = lm != 0 ? sm / lm : sm == 0 ? 1 : INFINITY;
                 const int ok = !isnan(sm) && !isnan(lm);
                 const int within = ok && sm >= b->lo[m] && sm <= b->hi[m];
-                fprintf(fr, "%s,%g,%s,%ld,%ld,%.6g,%.6g,%.6g,%.6g,%.6g,%d\n", a->config, a->clutter, metric_name[m],
-                        small, large, sm, lm, b->lo[m], b->hi[m], ok ? ratio : NAN, within);
+                fprintf(fr, "%s,%s,%g,%s,%ld,%ld,%.6g,%.6g,%.6g,%.6g,%.6g,%d\n", a->family, a->config, a->clutter,
+                        metric_name[m], small, large, sm, lm, b->lo[m], b->hi[m], ok ? ratio : NAN, within);
                 if (!ok) {
                     printf(" %8s", "-");
                     continue;
