@@ -271,6 +271,8 @@ static int covariance_bound_delay(const struct trk_track *tr, const struct trk_t
     return 1000;
 }
 
+#define LAST_DET 19 /* the target's last detected scan */
+
 enum term_case { T_EXISTENCE, T_KN, T_PAGE, T_SHIRYAEV, T_VISIBILITY, N_TERM_CASES };
 
 static void set_term(struct trk_tracker_params *p, enum term_case c)
@@ -308,7 +310,7 @@ static void set_term(struct trk_tracker_params *p, enum term_case c)
     }
 }
 
-/* One target detected for 12 scans (every scan), then gone; uniform
+/* One target detected for 20 scans (every scan), then gone; uniform
  * clutter from none to the scan capacity. Every termination method ends the
  * track within its design delay: the scans its test needs on empty gates
  * (measured at lambda = 0, where K/N 0/5 needs exactly 5), and at any
@@ -333,11 +335,11 @@ static void test_vanished_target_every_method(void **state)
             for (int k = 0; k < 400 && ended < 0; k++) {
                 size_t n = 0;
                 const double tx = -300 + 8.0 * SCAN_S * k, ty = 100 + 3.0 * SCAN_S * k;
-                if (k < 12) d[n++] = det_at(tx + 5 * nrand(), ty + 5 * nrand());
+                if (k < LAST_DET + 1) d[n++] = det_at(tx + 5 * nrand(), ty + 5 * nrand());
                 n = add_clutter(d, n, lambda);
                 struct trk_scan_report rep;
                 TRK_ASSERT_OK(run_scan(k, d, n, &rep));
-                if (k == 11) { /* the target's confirmed track */
+                if (k == LAST_DET) { /* the target's confirmed track */
                     for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
                         const struct trk_track *a = trk_tracker_track(&tk, i);
                         if (a && a->status == TRK_TRACK_CONFIRMED && fabs(a->x[X] - tx) < 30 && fabs(a->x[Y] - ty) < 30)
@@ -346,7 +348,7 @@ static void test_vanished_target_every_method(void **state)
                     assert_non_null(tr);
                     delay_cov = covariance_bound_delay(tr, &p);
                 }
-                if (k > 11 && (tr->id != id || tr->status == TRK_TRACK_TERMINATED)) ended = k - 11;
+                if (k > LAST_DET && (tr->id != id || tr->status == TRK_TRACK_TERMINATED)) ended = k - LAST_DET;
             }
             print_message("term %d lambda %.1e: ended %d scans after the last detection (covariance bound %d)\n", c,
                           lambda, ended, delay_cov);
