@@ -226,16 +226,20 @@ static int stronger(const struct trk_track *a, const struct trk_track *b)
     return a->id < b->id;
 }
 
-/* Do live tracks a and b follow one target: d2 = dx' (P_a + P_b)^-1 dx <= g
- * over [x, vx, y, vy] (the track-to-track test without the common
- * process-noise cross-covariance, which would only make d2 larger)? A
- * cheap test on the positions first: d2 >= dx^2 / (Pa_xx + Pb_xx) for the x
- * (and y) component alone. */
-static int duplicates(const struct trk_track *a, const struct trk_track *b, trk_real g)
+/* Can live tracks a and b follow one target? The cheap test on the
+ * positions alone (inlined in the pair loop): d2 >= dx^2 / (Pa_xx + Pb_xx)
+ * for the x (and y) component, so a pair failing it is not a duplicate. */
+static int may_duplicate(const struct trk_track *a, const struct trk_track *b, trk_real g)
 {
     const trk_real ex = a->x[X] - b->x[X], ey = a->x[Y] - b->x[Y];
-    if (ex * ex > g * (a->p[P(X, X)] + b->p[P(X, X)]) || ey * ey > g * (a->p[P(Y, Y)] + b->p[P(Y, Y)]))
-        return 0;
+    return ex * ex <= g * (a->p[P(X, X)] + b->p[P(X, X)]) && ey * ey <= g * (a->p[P(Y, Y)] + b->p[P(Y, Y)]);
+}
+
+/* Do live tracks a and b follow one target: d2 = dx' (P_a + P_b)^-1 dx <= g
+ * over [x, vx, y, vy] (the track-to-track test without the common
+ * process-noise cross-covariance, which would only make d2 larger)? */
+static TRK_NOINLINE int duplicates(const struct trk_track *a, const struct trk_track *b, trk_real g)
+{
     trk_real c[NX * NX], l[NX * NX], li[NX * NX], dx[NX], y[NX], d2 = 0;
     for (int k = 0; k < NX * NX; k++) c[k] = a->p[k] + b->p[k];
     for (int k = 0; k < NX; k++) dx[k] = a->x[k] - b->x[k];
@@ -255,7 +259,9 @@ static TRK_NOINLINE void merge_duplicates(struct trk_tracker *t, struct trk_scan
         if (!is_live(a)) continue;
         for (size_t j = i + 1; j < TRK_MAX_TRACKS; j++) {
             struct trk_track *b = &t->track[j];
-            if (!is_live(b) || !duplicates(a, b, t->params.merge_gate_d2)) continue;
+            if (!is_live(b) || !may_duplicate(a, b, t->params.merge_gate_d2) ||
+                !duplicates(a, b, t->params.merge_gate_d2))
+                continue;
             if (stronger(a, b)) {
                 end_track(b, TRK_END_MERGED, rep);
             } else {

@@ -27,9 +27,10 @@ struct cand_reach {
 };
 
 static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n);
+static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep);
 static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
                                            size_t n);
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, const trk_real *r_j,
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real *r_j,
                            size_t from, trk_real reach_m);
 static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t c, size_t j,
                       const trk_real *r_j, struct trk_scan_report *rep);
@@ -72,12 +73,17 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
         sort_by_x(t, idx, n);
         const struct cand_reach reach = expire_candidates(t, scan, idx, n);
         size_t lo = 0, n_new = 0;
+        if (!slot_possible(t, &sl, NULL)) { /* every slot confirmed: no pair could start */
+            rep->n_init_refused_full += (uint32_t)n;
+            store_candidates(t, scan, idx, n, rep);
+            rep->n_candidates = (uint32_t)t->n_cand;
+            return;
+        }
         for (size_t k = 0; k < n; k++) { /* idx[k] by increasing x: lo only moves up */
             const size_t j = idx[k];
             while (lo < t->n_cand && t->cand[lo].x_m < t->ws.x[j] - reach.reach_m) lo++;
             if (lo < t->n_cand && t->cand[lo].x_m <= t->ws.x[j] + reach.reach_m) { /* a candidate in reach */
                 trk_real r_j[NZ * NZ];
-                detection_r(t, scan, j, r_j);
                 const long c = best_candidate(t, scan, j, r_j, lo, reach.reach_m);
                 if (c >= 0 && start_pair(t, &sl, scan, (size_t)c, j, r_j, rep)) continue;
             }
@@ -110,11 +116,16 @@ static trk_real quality(const struct trk_tracker *t, const struct trk_track *tr)
 }
 
 /* Can a new track get a slot at all? (Cheap: before its existence is
- * computed.) Counts the refusal when not. */
-static int slot_possible(const struct trk_tracker *t, const struct slots *sl, struct trk_scan_report *rep)
+ * computed.) Counts the refusal in rep (unless NULL) when not. */
+static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep)
 {
-    if (t->n_live < TRK_MAX_TRACKS || !sl->no_tentative) return 1;
-    rep->n_init_refused_full++;
+    if (t->n_live < TRK_MAX_TRACKS) return 1;
+    if (!sl->no_tentative) { /* not known yet: look */
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+            if (t->track[i].status == TRK_TRACK_TENTATIVE) return 1;
+        sl->no_tentative = 1;
+    }
+    if (rep) rep->n_init_refused_full++;
     return 0;
 }
 
@@ -276,17 +287,21 @@ static struct cand_reach expire_candidates(struct trk_tracker *t, const struct t
 
 /* The candidate detection j pairs with (trk_init_params: within the velocity
  * gate; highest ln l^a, then nearest), or -1, from the store's entries from
- * `from` on (x >= x_j - reach) up to x_j + reach. */
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, const trk_real *r_j,
+ * `from` on (x >= x_j - reach) up to x_j + reach. r_j gets the detection's
+ * covariance once a candidate is near enough in y to need it (it is set
+ * whenever the result is not -1). */
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real *r_j,
                            size_t from, trk_real reach)
 {
     const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
     const trk_real xj = t->ws.x[j], yj = t->ws.y[j];
     long best = -1;
+    int have_r = 0;
     trk_real best_llr = 0, best_d2 = 0;
     for (size_t i = from; i < t->n_cand && t->cand[i].x_m <= xj + reach; i++) {
         const struct trk_candidate *c = &t->cand[i];
         if (c->used || trk_fabs(yj - c->y_m) > reach) continue;
+        if (!have_r) detection_r(t, scan, j, r_j), have_r = 1;
         const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
         if (!(dt > 0)) continue;
         trk_real r_sum[NZ * NZ];
@@ -374,7 +389,10 @@ static void make_room(struct trk_tracker *t, size_t n_new)
 {
     size_t n = 0;
     for (size_t i = 0; i < t->n_cand; i++)
-        if (!t->cand[i].used) t->cand[n++] = t->cand[i];
+        if (!t->cand[i].used) {
+            if (n != i) t->cand[n] = t->cand[i];
+            n++;
+        }
     t->n_cand = n;
     while (t->n_cand > 0 && t->n_cand + n_new > TRK_MAX_CANDIDATES) {
         uint32_t oldest = t->cand[0].scan_no;
@@ -382,7 +400,10 @@ static void make_room(struct trk_tracker *t, size_t n_new)
             if (t->scan_no - t->cand[i].scan_no > t->scan_no - oldest) oldest = t->cand[i].scan_no;
         n = 0;
         for (size_t i = 0; i < t->n_cand; i++)
-            if (t->cand[i].scan_no != oldest) t->cand[n++] = t->cand[i];
+            if (t->cand[i].scan_no != oldest) {
+                if (n != i) t->cand[n] = t->cand[i];
+                n++;
+            }
         t->n_cand = n;
     }
 }

@@ -362,7 +362,10 @@ struct trk_scan_report {
     uint32_t n_started;             /* new tentative tracks */
     uint32_t n_confirmed;           /* tentative -> confirmed */
     uint32_t n_terminated;          /* tracks ended this scan (any reason) */
-    uint32_t n_init_refused_full;   /* initiations refused: table full */
+    uint32_t n_init_refused_full;   /* initiations refused: table full (single point: each
+                                       detection that could not start; two points: each pair
+                                       without a slot, or, while every slot holds a confirmed
+                                       track, each unexplained detection: no pairing runs) */
     uint32_t n_numerical;           /* tracks ended for a numerical failure */
     uint32_t n_merged;              /* tracks ended as duplicates of another */
     uint32_t n_replaced;            /* tentative tracks whose slot a new track took */
