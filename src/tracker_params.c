@@ -29,7 +29,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->max_tentative_scans = 0;
     p->init.method = TRK_INIT_TWO_POINT;
     p->init.max_speed_mps = 15; /* 30 knots */
-    p->init.max_gap_scans = 1;
+    p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
     p->max_pos_sigma_ratio = 20;
     p->merge_gate_d2 = 4;

@@ -118,12 +118,13 @@ static void test_two_point_start(void **state)
 
 /* The velocity gate: |dz| <= v_max dt + sqrt(gamma lambda_max(R1 + R2)),
  * gamma = -2 ln(1 - P_G) = 9.21 for P_G 0.99: 60 + 21.46 = 81.46 m. A
- * candidate lives max_gap_scans scans. */
+ * candidate lives max_gap_scans scans (1 here, then 2). */
 static void test_velocity_gate_and_lifetime(void **state)
 {
     (void)state;
     struct trk_tracker_params p;
     sonar_params(&p, 1e-5);
+    p.init.max_gap_scans = 1; /* candidates of the previous scan only */
     const double limit = 60 + sqrt(-2 * log(0.01) * 50);
     for (int inside = 0; inside <= 1; inside++) {
         TRK_ASSERT_OK(trk_tracker_init(&tk, &p));

@@ -755,7 +755,7 @@ void tcfg_help(FILE *f)
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
             "  init.method = two_point|single_point   how tracks start (two_point)\n"
             "    init.max_speed_mps               two-point velocity gate, > 0 (15)\n"
-            "    init.max_gap_scans               candidate lifetime in scans, >= 1 (1)\n"
+            "    init.max_gap_scans               candidate lifetime in scans, >= 1 (2)\n"
             "    init.birth_density_per_m2        new targets per m^2 per scan: the initial existence,\n"
             "                                     >= 0, 0 = visibility.pv0 (1e-9)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
