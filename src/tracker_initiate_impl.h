@@ -286,7 +286,7 @@ static struct cand_reach expire_candidates(struct trk_tracker *t, const struct t
 }
 
 /* The candidate detection j pairs with (trk_init_params: within the velocity
- * gate; highest ln l^a, then nearest), or -1, from the store's entries from
+ * gate, the highest ln l^a - ln r), or -1, from the store's entries from
  * `from` on (x >= x_j - reach) up to x_j + reach. r_j gets the detection's
  * covariance once a candidate is near enough in y to need it (it is set
  * whenever the result is not -1). */
@@ -297,7 +297,7 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
     const trk_real xj = t->ws.x[j], yj = t->ws.y[j];
     long best = -1;
     int have_r = 0;
-    trk_real best_llr = 0, best_d2 = 0;
+    trk_real best_score = 0;
     for (size_t i = from; i < t->n_cand && t->cand[i].x_m <= xj + reach; i++) {
         const struct trk_candidate *c = &t->cand[i];
         if (c->used || trk_fabs(yj - c->y_m) > reach) continue;
@@ -310,8 +310,12 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
         const trk_real dx = xj - c->x_m, dy = yj - c->y_m, d2 = dx * dx + dy * dy;
         const trk_real lim = vmax * dt + trk_sqrt(gamma * lambda_max2(r_sum));
         if (d2 > lim * lim) continue;
-        if (best < 0 || c->log_lr > best_llr || (c->log_lr == best_llr && d2 < best_d2))
-            best = (long)i, best_llr = c->log_lr, best_d2 = d2;
+        /* ln l^a - ln r: a speed uniform in [0, v_max] puts the displacement r
+         * at density 1 / (2 pi r v_max dt), so nearer partners weigh more (r
+         * no smaller than the noise) */
+        const trk_real noise2 = r_sum[S(ZX, ZX)] + r_sum[S(ZY, ZY)];
+        const trk_real score = c->log_lr - TRK_REAL_C(0.5) * trk_log(d2 > noise2 ? d2 : noise2);
+        if (best < 0 || score > best_score) best = (long)i, best_score = score;
     }
     return best;
 }

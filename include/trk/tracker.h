@@ -215,8 +215,12 @@ enum trk_init_method {
  *   |z - z_c| <= max_speed_mps dt + sqrt(gamma lambda_max(R_c + R))
  * (gamma the sensor's gate); the track starts at x = z, v = (z - z_c) / dt,
  * P_pp = R, P_pv = R / dt, P_vv = (R_c + R) / dt^2 (per axis pair, with the
- * xy terms). A detection pairs with the candidate of the highest amplitude
- * likelihood ratio, then the nearest; a candidate serves one track. A
+ * xy terms). A detection pairs with the candidate of the highest
+ * ln l^a(z_c) - ln max(r, sqrt(tr(R_c + R))), r = |z - z_c| (a speed uniform
+ * in [0, v_max] puts r at density 1 / (2 pi r v_max dt): nearer partners
+ * weigh more; measured against "highest l^a, then nearest" and "nearest",
+ * within the seeds' intervals on both trk-sim mtt families); a candidate
+ * serves one track. Detections are taken in x order. A
  * candidate pairs with detections of the next max_gap_scans scans (scans
  * processed by this tracker, any sensor), then it is dropped.
  *
