@@ -61,6 +61,14 @@ TRK_INLINE trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
     return TRK_OK;
 }
 
+/* Is the symmetric A (n x n, its lower triangle read) positive definite?
+ * TRK_OK or TRK_E_NOT_SPD, by an LDL' factorisation without square roots:
+ * every pivot d_i > 0 and finite (the test trk_mat_check_spd runs after its
+ * symmetry and finiteness scans), for the tracker's and the PDA's posterior
+ * checks. Out of line (linalg.c): its workspace stays off the callers'
+ * frames. */
+trk_status trk_i_spd(int n, const trk_real *a);
+
 TRK_INLINE void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)
 {
     for (int i = 0; i < n; i++) {

@@ -279,8 +279,8 @@ TRK_INLINE trk_status trk_i_pda_check(int nx, const trk_real *x, const trk_real 
  * or m_G / V_G), beta (into s->w), and the posterior written over the
  * prediction pr->x, pr->p, with *o. With m_G = 0 the prediction is the
  * posterior (left as the caller made it). TRK_E_NAN / TRK_E_NOT_SPD for a
- * posterior that is not finite or has a variance <= 0: pr->x, pr->p are
- * then untouched. */
+ * posterior that is not finite or not positive definite (its Cholesky
+ * fails): pr->x, pr->p are then untouched. */
 TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
                                            struct trk_i_pda_set *s, struct trk_i_pda_out *o)
 {
@@ -297,7 +297,8 @@ TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const stru
     trk_real x[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
     o->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, o->lambda), s->n, s->w, &o->log_sum_e);
     trk_i_pda_combine(pr, s, o->beta0, x, acc);
-    const trk_status st = trk_i_pda_check(nx, x, acc);
+    trk_status st = trk_i_pda_check(nx, x, acc);
+    if (st == TRK_OK) st = trk_i_spd(nx, acc); /* a factorisation that can fail (out of line) */
     if (st != TRK_OK) return st;
     for (int a = 0; a < nx; a++) pr->x[a] = x[a];
     for (int a = 0; a < nx * nx; a++) pr->p[a] = acc[a];

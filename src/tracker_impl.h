@@ -28,12 +28,16 @@
 
 /* A packed covariance [xx, xy, yy] (TRK_COV2_*) as the 2x2 matrix r
  * (TRK_CV2_S), checked: TRK_E_NAN non-finite, TRK_E_NOT_SPD not positive
- * definite (r is then not usable). The one place that unpacks one. */
+ * definite or too ill-conditioned for the arithmetic (TRK_COV2_MIN_REL_DET,
+ * trk/tracker.h; xx yy must not overflow): r is then not usable. The one
+ * place that unpacks one. */
 TRK_INLINE trk_status trk_i_cov2_unpack(const trk_real c[3], trk_real r[NZ * NZ])
 {
     const trk_real xx = c[TRK_COV2_XX], xy = c[TRK_COV2_XY], yy = c[TRK_COV2_YY];
     if (!isfinite(xx) || !isfinite(xy) || !isfinite(yy)) return TRK_E_NAN;
-    if (!(xx > 0 && yy > 0 && xx * yy - xy * xy > 0)) return TRK_E_NOT_SPD;
+    const trk_real xxyy = xx * yy;
+    if (!(xx > 0 && yy > 0 && xxyy <= TRK_REAL_MAX && xxyy - xy * xy > TRK_COV2_MIN_REL_DET * xxyy))
+        return TRK_E_NOT_SPD;
     r[S(ZX, ZX)] = xx;
     r[S(ZX, ZY)] = r[S(ZY, ZX)] = xy;
     r[S(ZY, ZY)] = yy;

@@ -322,7 +322,8 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
 
 /* A track from candidate c and workspace detection j (two-point
  * differencing, trk_init_params): x = z_j, v = (z_j - z_c) / dt,
- * P_pp = R_j, P_pv = R_j / dt, P_vv = (R_c + R_j) / dt^2. 0 when no slot. */
+ * P_pp = R_j, P_pv = R_j / dt, P_vv = (R_c + R_j) / dt^2. 0 when no slot,
+ * or when that P is not positive definite in this arithmetic. */
 static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t ci, size_t j,
                       const trk_real *r_j, struct trk_scan_report *rep)
 {
@@ -336,21 +337,29 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
                               trk_log(t->pda[scan->sensor_id].params.pd) - trk_log(pi * vdt * vdt) +
                               log_lr_over_clutter(t, scan->sensor_id, t->ws.log_lr[j]);
     const trk_real psi0 = initial_existence(t, log_odds);
-    struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
-    if (!tr) return 0;
-    trk_real r_c[NZ * NZ];
+    trk_real r_c[NZ * NZ], x[NX], p[NX * NX];
     candidate_r(c, r_c);
     const int pos[NZ] = {X, Y}, vel[NZ] = {VX, VY};
     for (int a = 0; a < NZ; a++) {
-        tr->x[pos[a]] = a == ZX ? t->ws.x[j] : t->ws.y[j];
-        tr->x[vel[a]] = (tr->x[pos[a]] - (a == ZX ? c->x_m : c->y_m)) / dt;
+        x[pos[a]] = a == ZX ? t->ws.x[j] : t->ws.y[j];
+        x[vel[a]] = (x[pos[a]] - (a == ZX ? c->x_m : c->y_m)) / dt;
         for (int b = 0; b < NZ; b++) {
             const trk_real rj = r_j[S(a, b)];
-            tr->p[P(pos[a], pos[b])] = rj;
-            tr->p[P(pos[a], vel[b])] = tr->p[P(vel[a], pos[b])] = rj / dt;
-            tr->p[P(vel[a], vel[b])] = (r_c[S(a, b)] + rj) / (dt * dt);
+            p[P(pos[a], pos[b])] = rj;
+            p[P(pos[a], vel[b])] = p[P(vel[a], pos[b])] = rj / dt;
+            p[P(vel[a], vel[b])] = (r_c[S(a, b)] + rj) / (dt * dt);
         }
     }
+    /* SPD in exact arithmetic; rounding can break it when R_c is tiny
+     * against R_j (the Schur complement is R_c / dt^2): then no track, the
+     * detection stays a candidate */
+    for (int k = 0; k < NX; k++)
+        if (!isfinite(x[k])) return 0;
+    if (trk_i_spd(NX, p) != TRK_OK) return 0;
+    struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
+    if (!tr) return 0;
+    for (int k = 0; k < NX; k++) tr->x[k] = x[k];
+    for (int k = 0; k < NX * NX; k++) tr->p[k] = p[k];
     c->used = 1;
     new_track(t, tr, scan, psi0, 2, rep);
     return 1;

@@ -126,6 +126,16 @@ static trk_status check_real(trk_real v, trk_real lo, int lo_open, trk_real hi, 
     return TRK_OK;
 }
 
+/* The velocity prior's sigma: its square (the prior variance) must be a
+ * positive finite number, so sigma in [sqrt(smallest normal), sqrt(max)]. */
+static trk_status check_speed_sigma(trk_real v, const char **field)
+{
+    const trk_status st = check_real(v, 0, 1, TRK_REAL_MAX, "init_speed_sigma_mps", field);
+    if (st != TRK_OK) return st;
+    const trk_real vv = v * v;
+    return vv <= TRK_REAL_MAX && vv >= 1 / TRK_REAL_MAX ? TRK_OK : refuse(field, "init_speed_sigma_mps", TRK_E_RANGE);
+}
+
 /* How tracks start (trk_init_params). */
 static trk_status check_init(const struct trk_init_params *in, const char **field)
 {
@@ -147,7 +157,7 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
     if (p->clutter != TRK_CLUTTER_PARAMETRIC && p->clutter != TRK_CLUTTER_NONPARAMETRIC)
         return refuse(field, "clutter", TRK_E_ARG);
     if ((st = check_real(p->process_noise_q, 0, 0, TRK_REAL_MAX, "process_noise_q", field)) != TRK_OK ||
-        (st = check_real(p->init_speed_sigma_mps, 0, 1, TRK_REAL_MAX, "init_speed_sigma_mps", field)) != TRK_OK ||
+        (st = check_speed_sigma(p->init_speed_sigma_mps, field)) != TRK_OK ||
         (st = check_real(p->max_dt_s, 0, 1, TRK_REAL_C(1e9), "max_dt_s", field)) != TRK_OK ||
         (st = check_real(p->merge_gate_d2, 0, 0, TRK_REAL_MAX, "merge_gate_d2", field)) != TRK_OK ||
         (st = check_real(p->init_exclusion_d2, 0, 0, TRK_REAL_MAX, "init_exclusion_d2", field)) != TRK_OK)

@@ -59,8 +59,8 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     return 0;
 }
 
-/* CV prediction to the scan time, checked (finite, variances > 0: it is
- * the posterior when no detection is gated), and its innovation (S = H P H'
+/* CV prediction to the scan time, checked (finite and positive definite:
+ * it is the posterior when no detection is gated), and its innovation (S = H P H'
  * + R of the scan's sensor; TRK_E_NOT_SPD when S is not positive definite). */
 static trk_status predict(const struct trk_tracker *t, const struct trk_track *tr,
                           const struct trk_scan *scan, struct pred *pr)
@@ -69,7 +69,8 @@ static trk_status predict(const struct trk_tracker *t, const struct trk_track *t
     for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
     for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
     trk_i_cv2_predict(dt, t->params.process_noise_q, pr->x, pr->p);
-    const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
+    trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
+    if (st == TRK_OK) st = trk_i_spd(NX, pr->p); /* it is the posterior when nothing is gated */
     if (st != TRK_OK) return st;
     return trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
                                 &pr->inn);

@@ -35,7 +35,9 @@ void trk_chol_solve(int n, const trk_real *l, const trk_real *b, trk_real *x);
 trk_real trk_chol_logdet(int n, const trk_real *l);
 
 /* TRK_OK when A is symmetric (relative tolerance rel_tol on each pair, against
- * the larger diagonal) and positive definite; TRK_E_NAN for a non-finite entry. */
+ * the larger diagonal) and positive definite (every pivot of its LDL'
+ * factorisation positive; the tracker and the PDA check their posteriors
+ * with the same factorisation); TRK_E_NAN for a non-finite entry. */
 TRK_NODISCARD trk_status trk_mat_check_spd(int n, const trk_real *a, trk_real rel_tol);
 
 #endif /* TRK_LINALG_H */

@@ -77,10 +77,18 @@ struct trk_detection {
 #define TRK_COV2_XY 1
 #define TRK_COV2_YY 2
 
+/* A covariance [xx, xy, yy] is usable when it is SPD, xx yy does not
+ * overflow, and det >= TRK_COV2_MIN_REL_DET xx yy, i.e. its correlation
+ * |xy| / sqrt(xx yy) is at most sqrt(1 - 64 eps) (eps the trk_real epsilon:
+ * 0.999999999999993 in double, 0.999996 in float): nearer to singular, the
+ * gate and the update lose every digit. Refused as not SPD (detections:
+ * n_rejected_cov; sensors: TRK_E_NOT_SPD at init). */
+#define TRK_COV2_MIN_REL_DET (64 * TRK_REAL_EPS)
+
 /* One scan of one sensor. The detections are read, never written. */
-/* Largest |time_us| of a scan: 2^62 us (146,000 years), so that any two
- * times subtract without overflow. */
-#define TRK_TIME_US_MAX (INT64_C(1) << 62)
+/* Largest |time_us| of a scan: 2^62 - 1 us (146,000 years), so that any two
+ * times subtract without overflow (the difference stays below 2^63 - 1). */
+#define TRK_TIME_US_MAX ((INT64_C(1) << 62) - 1)
 
 struct trk_scan {
     int64_t time_us;                        /* scan time (microseconds, any epoch);

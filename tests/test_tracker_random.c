@@ -1,0 +1,216 @@
+/* test_tracker_random.c - the track table under long random and hostile
+ * input (issue 17, library items 1-3): after every scan of a long random
+ * run every live track's covariance is symmetric and positive definite (its
+ * Cholesky succeeds) and finite, ids are unique, the live count and the
+ * report agree; near-singular, overflowing and tiny covariances, squared
+ * parameters that overflow or underflow, and time differences that would
+ * overflow are refused or end the track as numerical. Runs in double and
+ * float (make test's configurations). */
+#include "trk_test.h"
+#include "trk/linalg.h"
+#include "trk/tracker.h"
+
+static struct trk_tracker tk;
+
+/* splitmix64 */
+static uint64_t rng_state;
+static double urand(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Invariants of the table after a scan; returns the numerical ends seen. */
+static unsigned check_table(const struct trk_scan_report *rep)
+{
+    size_t live = 0;
+    unsigned numerical = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *a = trk_tracker_track(&tk, i);
+        if (!a) continue;
+        live++;
+        assert_true(a->id > 0);
+        for (size_t j = i + 1; j < TRK_MAX_TRACKS; j++) {
+            const struct trk_track *b = trk_tracker_track(&tk, j);
+            if (b) assert_true(a->id != b->id);
+        }
+        if (a->status == TRK_TRACK_TERMINATED && a->end_reason == TRK_END_NUMERICAL) {
+            numerical++;
+            continue;
+        }
+        for (int k = 0; k < 4; k++) assert_true(isfinite(a->x[k]));
+        for (int r = 0; r < 4; r++)
+            for (int c = 0; c < 4; c++) assert_true(a->p[r * 4 + c] == a->p[c * 4 + r]);
+        TRK_ASSERT_OK(trk_mat_check_spd(4, a->p, 0));
+        assert_true(a->vis.pv >= 0 && a->vis.pv <= 1);
+    }
+    assert_int_equal(live, trk_tracker_live_count(&tk));
+    assert_true(rep->n_tracks_hit <= rep->n_tracks_updated);
+    assert_int_equal(rep->n_numerical, numerical);
+    return numerical;
+}
+
+/* A random detection: position in a 2 km square, one in four with its own
+ * covariance, sometimes nearly singular (correlation up to 1 - 1e-6) or
+ * tiny (1e-20 m^2) or huge (1e12 m^2). */
+static struct trk_detection random_detection(void)
+{
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    d.x_m = (trk_real)(2000 * urand() - 1000);
+    d.y_m = (trk_real)(2000 * urand() - 1000);
+    if (urand() < 0.25) {
+        const double u = urand();
+        const double var = u < 0.1 ? 1e-20 : u < 0.2 ? 1e12 : 0.5 + 50 * urand();
+        const double rho = (urand() < 0.3 ? 1 - 1e-6 : 0.9) * (2 * urand() - 1);
+        d.has_cov = 1;
+        d.cov_m2[TRK_COV2_XX] = (trk_real)var;
+        d.cov_m2[TRK_COV2_YY] = (trk_real)(var * (0.5 + urand()));
+        d.cov_m2[TRK_COV2_XY] =
+            (trk_real)(rho * sqrt((double)d.cov_m2[TRK_COV2_XX] * (double)d.cov_m2[TRK_COV2_YY]));
+    }
+    return d;
+}
+
+/* Random scans (random gaps, counts, covariances) through configurations
+ * that stress the arithmetic: the defaults, q = 0 (P becomes singular
+ * along the tiny own covariances), and M/N with single-point initiation
+ * and a huge velocity prior. Every scan: the invariants. */
+static void test_random_scans(void **state)
+{
+    (void)state;
+    static struct trk_detection det[TRK_MAX_DETECTIONS];
+    const int n_scans = 4000;
+    unsigned numerical = 0;
+    for (int cfg = 0; cfg < 3; cfg++) {
+        struct trk_tracker_params p;
+        if (cfg == 2) trk_tracker_mn_kn_params(&p);
+        else trk_tracker_default_params(&p);
+        p.sensor[0].meas_cov_m2[0] = p.sensor[0].meas_cov_m2[2] = 4;
+        p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-5);
+        if (cfg == 1) p.process_noise_q = 0;
+        if (cfg == 2) p.init_speed_sigma_mps = TRK_REAL_C(1e7);
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        rng_state = 77 + (uint64_t)cfg;
+        int64_t t_us = 0;
+        for (int k = 0; k < n_scans; k++) {
+            const size_t cap = TRK_MAX_DETECTIONS < 40 ? TRK_MAX_DETECTIONS : 40;
+            const size_t n = (size_t)(urand() * (double)(cap + 1)) % (cap + 1);
+            for (size_t i = 0; i < n; i++) det[i] = random_detection();
+            /* a few detections repeat a previous position: tracks form */
+            for (size_t i = 0; i + 1 < n && i < 4; i++) {
+                det[i].x_m = (trk_real)(100.0 * (double)i + 3 * urand());
+                det[i].y_m = (trk_real)(-50.0 * (double)i + 3 * urand());
+            }
+            t_us += 1 + (int64_t)(urand() * 8e6);
+            const struct trk_scan scan = {t_us, 0, n, det};
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+            assert_int_equal(rep.n_detections, n);
+            numerical += check_table(&rep);
+        }
+    }
+    print_message("%u tracks ended as numerical in %d random scans\n", numerical, 3 * n_scans);
+}
+
+/* Covariances too near singular for the arithmetic, or whose xx yy
+ * overflows, are refused (TRK_COV2_MIN_REL_DET); tiny ones with q = 0 end
+ * their track as numerical rather than leaving a rank-deficient P. */
+static void test_hostile_covariances(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d[3];
+    memset(d, 0, sizeof d);
+    d[0].has_cov = 1; /* det 2.2e-16: passes a plain det > 0 test */
+    d[0].cov_m2[TRK_COV2_XX] = d[0].cov_m2[TRK_COV2_YY] = 1;
+    d[0].cov_m2[TRK_COV2_XY] = (trk_real)0.99999999999999989;
+    d[1].has_cov = 1; /* xx yy overflows */
+    d[1].cov_m2[TRK_COV2_XX] = d[1].cov_m2[TRK_COV2_YY] = TRK_REAL_IS_FLOAT ? (trk_real)1e30 : (trk_real)1e200;
+    d[2].has_cov = 1; /* correlation 0.5: fine */
+    d[2].cov_m2[TRK_COV2_XX] = d[2].cov_m2[TRK_COV2_YY] = 4;
+    d[2].cov_m2[TRK_COV2_XY] = 2;
+    const struct trk_scan scan = {0, 0, 3, d};
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    assert_int_equal(rep.n_rejected_cov, 2);
+    /* the same for a sensor's covariance */
+    const char *field = NULL;
+    p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = TRK_REAL_IS_FLOAT ? (trk_real)1e30 : (trk_real)1e200;
+    p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_NOT_SPD);
+    assert_string_equal(field, "sensor[0].meas_cov_m2");
+    /* q = 0 and detections of variance 1e-20 m^2 at one place: P loses
+     * rank, the track ends as numerical (never an indefinite P) */
+    trk_tracker_mn_kn_params(&p);
+    p.process_noise_q = 0;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    unsigned numerical = 0;
+    for (int k = 0; k < 20; k++) {
+        struct trk_detection one;
+        memset(&one, 0, sizeof one);
+        one.has_cov = 1;
+        one.cov_m2[TRK_COV2_XX] = one.cov_m2[TRK_COV2_YY] = (trk_real)1e-20;
+        one.x_m = 1000;
+        const struct trk_scan s1 = {(int64_t)k * 1000000, 0, 1, &one};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &rep));
+        numerical += check_table(&rep);
+    }
+    print_message("q = 0, 1e-20 m^2 detections: %u numerical ends\n", numerical);
+}
+
+/* Parameters whose square overflows or underflows are refused with the
+ * field named. */
+static void test_squared_parameters(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const char *field = NULL;
+    const trk_real bad[] = {TRK_REAL_IS_FLOAT ? (trk_real)1e20 : (trk_real)1.4e154,
+                            TRK_REAL_IS_FLOAT ? (trk_real)1e-20 : (trk_real)1e-160};
+    for (int i = 0; i < 2; i++) {
+        trk_tracker_default_params(&p);
+        p.init_speed_sigma_mps = bad[i];
+        TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+        assert_string_equal(field, "init_speed_sigma_mps");
+        TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+    }
+    trk_tracker_default_params(&p);
+    p.init_speed_sigma_mps = TRK_REAL_C(1e7); /* large but representable squared */
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+}
+
+/* The two extreme times in range are a gap the tracker refuses, never an
+ * overflowing difference (TRK_TIME_US_MAX = 2^62 - 1). */
+static void test_extreme_times(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p);
+    p.max_dt_s = TRK_REAL_C(1e9);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_scan_report rep;
+    const struct trk_scan first = {-TRK_TIME_US_MAX, 0, 0, NULL};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &first, &rep));
+    const struct trk_scan last = {TRK_TIME_US_MAX, 0, 0, NULL};
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &last, &rep), TRK_E_RANGE);
+    const struct trk_scan beyond = {TRK_TIME_US_MAX + 1, 0, 0, NULL};
+    TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &beyond, &rep), TRK_E_RANGE);
+    assert_true((double)TRK_TIME_US_MAX - (double)(-TRK_TIME_US_MAX) < 9.3e18); /* below 2^63 */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_hostile_covariances),
+        cmocka_unit_test(test_squared_parameters),
+        cmocka_unit_test(test_extreme_times),
+        cmocka_unit_test(test_random_scans),
+    };
+    return trk_run_tests("tracker_random", tests, NULL, NULL);
+}
