@@ -2,6 +2,8 @@
  * (trk/amplitude.h): Rayleigh closed forms and table lookup. */
 #include "trk/amplitude.h"
 
+#include "internal.h"
+
 trk_status trk_amplitude_init_rayleigh(struct trk_amplitude *m, trk_real clutter_power, trk_real snr_db,
                                        trk_real pfa)
 {
@@ -29,7 +31,17 @@ trk_status trk_amplitude_init_rayleigh(struct trk_amplitude *m, trk_real clutter
     r.sqrt_p = trk_sqrt(clutter_power);
     r.ln_sqrt_p = TRK_REAL_C(0.5) * trk_log(clutter_power);
     if (!isfinite(r.lr0) || !isfinite(r.lr1) || !(r.threshold > 0) || !(r.pd > 0)) return TRK_E_RANGE;
+    r.built = TRK_I_AMP_BUILT;
     *m = r;
+    return TRK_OK;
+}
+
+trk_status trk_amplitude_check(const struct trk_amplitude *m)
+{
+    if (!m || m->built != TRK_I_AMP_BUILT) return TRK_E_ARG;
+    if (m->model != TRK_AMP_RAYLEIGH && m->model != TRK_AMP_K) return TRK_E_ARG;
+    if (!(m->threshold > 0 && m->t2 <= TRK_REAL_MAX) || !(m->pd > 0 && m->pd <= 1)) return TRK_E_ARG;
+    if (m->tabulated && (!m->llr || m->llr_n < 2)) return TRK_E_ARG;
     return TRK_OK;
 }
 

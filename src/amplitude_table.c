@@ -2,6 +2,7 @@
  * `trk-tablegen amp` (trk/amplitude.h "AMPLITUDE TABLE"). Every parameter and
  * section is checked before the model is written. */
 #include "trk/amplitude.h"
+#include "internal.h"
 
 /* Relative agreement of values the tool derived from one another (threshold,
  * first nodes): loose enough for float tables, tight enough to catch a table
@@ -129,6 +130,10 @@ trk_status trk_amplitude_init_table(struct trk_amplitude *m, const struct trk_ta
     if (!(power > 0 && power <= TRK_REAL_C(1e30)) || !(pfa > 0 && pfa < 1) || !(thr > 0) || !(pd > 0 && pd <= 1) ||
         !(snr_db >= -100 && snr_db <= 100))
         return TRK_E_TABLE_CORRUPT;
+    /* the threshold over the clutter amplitude scale, t / sqrt(P), is at most
+     * TRK_AMP_MAX_NORM_THRESHOLD (Rayleigh at P_FA 1e-300: 26): a larger one
+     * (whose square may overflow) is not a detection threshold */
+    if (!(thr <= TRK_AMP_MAX_NORM_THRESHOLD * trk_sqrt(power))) return TRK_E_TABLE_CORRUPT;
     struct trk_amplitude r;
     if (model == TRK_AMP_RAYLEIGH) {
         /* closed form from the parameters; the table must agree with it */
@@ -159,6 +164,7 @@ trk_status trk_amplitude_init_table(struct trk_amplitude *m, const struct trk_ta
     if ((st = load_log_lr(t, &r)) != TRK_OK) return st;
     if ((st = load_inv(t, TRK_AMP_SECTION_INV_SF_CLUTTER, u_t, &r.inv[0])) != TRK_OK) return st;
     if ((st = load_inv(t, TRK_AMP_SECTION_INV_SF_TARGET, u_t, &r.inv[1])) != TRK_OK) return st;
+    r.built = TRK_I_AMP_BUILT;
     *m = r;
     return TRK_OK;
 }

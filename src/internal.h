@@ -13,6 +13,9 @@
         (void)trk_checked_;               \
     } while (0)
 
+/* trk_amplitude.built of a model made by its init functions (amplitude.h). */
+#define TRK_I_AMP_BUILT 0x616d706cu /* "ampl" */
+
 /* Small kernels in *_impl.h are forced inline unless TRK_SIZE_OPT (config.h:
  * default 1 under -Os) leaves the inlining decision to the compiler. */
 #if (defined(__GNUC__) || defined(__clang__)) && !TRK_SIZE_OPT

@@ -72,12 +72,27 @@ static trk_real q_finite(int dof, trk_real y)
 
 static int args_ok(int dof, trk_real x) { return dof >= 1 && x >= 0; }
 
+/* ln of the smallest positive trk_real, minus a margin: an upper tail whose
+ * bound e^-y y^a falls below it is 0 in this arithmetic. */
+#if TRK_REAL_IS_FLOAT
+#define LOG_TAIL_ZERO TRK_REAL_C(-110.0)
+#else
+#define LOG_TAIL_ZERO (-750.0)
+#endif
+
+/* Is the upper tail Q(a, y) below every positive trk_real (y >= a + 1)?
+ * Q <= e^-y y^(a-1) / Gamma(a) (1 + (a-1)/(y-a+1) + ...) <= e^-y y^a for
+ * y >= a + 1; x = +inf or a huge x would otherwise overflow the finite
+ * sums' terms into inf - inf = NaN. */
+static int tail_is_zero(trk_real a, trk_real y) { return !(y <= TRK_REAL_MAX) || -y + a * trk_log(y) < LOG_TAIL_ZERO; }
+
 trk_real trk_chi2_cdf(int dof, trk_real x)
 {
     if (!args_ok(dof, x)) return (trk_real)NAN;
     if (x == 0) return 0;
     trk_real a = (trk_real)dof / 2, y = x / 2;
     if (y < a + 1) return trk_exp(log_p_series(a, y));
+    if (tail_is_zero(a, y)) return 1;
     return 1 - q_finite(dof, y);
 }
 
@@ -87,6 +102,7 @@ trk_real trk_chi2_sf(int dof, trk_real x)
     if (x == 0) return 1;
     trk_real a = (trk_real)dof / 2, y = x / 2;
     if (y < a + 1) return 1 - trk_exp(log_p_series(a, y));
+    if (tail_is_zero(a, y)) return 0;
     return q_finite(dof, y);
 }
 

@@ -176,10 +176,8 @@ static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, c
     const struct trk_sensor_params *sp = &p->sensor[s];
     const char *const *name = sensor_field[s];
     if (sp->use_amplitude != 0 && sp->use_amplitude != 1) return refuse(field, name[F_USE_AMP], TRK_E_ARG);
-    if (sp->use_amplitude) {
-        const trk_real t_a = trk_amplitude_threshold(&sp->amplitude);
-        if (!(t_a >= 0 && t_a <= TRK_REAL_MAX)) return refuse(field, name[F_AMP], TRK_E_ARG); /* not initialised */
-    }
+    if (sp->use_amplitude && trk_amplitude_check(&sp->amplitude) != TRK_OK) /* not built by its init */
+        return refuse(field, name[F_AMP], TRK_E_ARG);
     const struct trk_pda_params pp = {NZ, sp->use_amplitude ? trk_amplitude_pd(&sp->amplitude) : sp->pd,
                                       p->gate_prob, p->clutter, sp->clutter_density_per_m2, 1};
     const char *pf;

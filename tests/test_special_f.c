@@ -134,6 +134,22 @@ static void test_chi2_large_x(void **state)
     }
 }
 
+/* Huge and infinite x: the upper tail is 0 and the cdf 1 at every dof,
+ * never NaN (issue 17 item 4: x = +inf at dof >= 3 and x = 1e300 or the
+ * largest real at odd dof >= 5 gave NaN). */
+static void test_chi2_huge_x(void **state)
+{
+    (void)state;
+    const trk_real xs[] = {(trk_real)INFINITY, TRK_REAL_MAX, TRK_TEST_IS_FLOAT ? (trk_real)1e30 : (trk_real)1e300,
+                           TRK_TEST_IS_FLOAT ? (trk_real)1e6 : (trk_real)1e5};
+    for (int dof = 1; dof <= 25; dof++)
+        for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++) {
+            const trk_real c = trk_chi2_cdf(dof, xs[i]), q = trk_chi2_sf(dof, xs[i]);
+            if (!(c == 1 && q == 0)) fail_msg("dof %d x %g: cdf %g sf %g", dof, (double)xs[i], (double)c, (double)q);
+        }
+    assert_true(isnan(trk_chi2_cdf(3, (trk_real)NAN)) && isnan(trk_chi2_sf(0, 1)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -142,6 +158,7 @@ int main(void)
         cmocka_unit_test(test_f_quantile),
         cmocka_unit_test(test_f_bad),
         cmocka_unit_test(test_chi2_large_x),
+        cmocka_unit_test(test_chi2_huge_x),
     };
     return trk_run_tests("special_f", tests, NULL, NULL);
 }

@@ -330,7 +330,18 @@ static void test_check_params(void **state)
         REFUSE_SENSOR(meas_cov_m2[TRK_COV2_YY], NAN, "meas_cov_m2", TRK_E_NAN);
         REFUSE_SENSOR(clutter_density_per_m2, -1, "clutter_density_per_m2", TRK_E_RANGE);
         REFUSE_SENSOR(use_amplitude, 2, "use_amplitude", TRK_E_ARG);
-        REFUSE_SENSOR(use_amplitude, 1, "amplitude", TRK_E_RANGE); /* a zero model: its P_D is 0 */
+        REFUSE_SENSOR(use_amplitude, 1, "amplitude", TRK_E_ARG); /* a zero model: not built by its init */
+        /* a model filled by hand (issue 17 item 6): a copy of a built one with
+         * its table pointer cleared, or one that never went through an init */
+        base_params(&p);
+        p.sensor[0].use_amplitude = 1;
+        TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, 15, TRK_REAL_C(1e-2)));
+        TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+        p.sensor[0].amplitude.tabulated = 1; /* claims a table it does not have */
+        expect_refused(&p, "sensor[0].amplitude", TRK_E_ARG);
+        p.sensor[0].amplitude.tabulated = 0;
+        p.sensor[0].amplitude.built = 0;
+        expect_refused(&p, "sensor[0].amplitude", TRK_E_ARG);
         base_params(&p);
         p.sensor[0].amplitude.threshold = NAN; /* no model is used without use_amplitude */
         TRK_ASSERT_OK(trk_tracker_check_params(&p, NULL));

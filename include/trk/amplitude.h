@@ -63,6 +63,11 @@
 
 #define TRK_AMP_TABLE_VERSION 1u
 
+/* Largest threshold over the clutter amplitude scale, t / sqrt(P), an
+ * amplitude table may carry (Rayleigh at P_FA 1e-300 is 26; K tails need
+ * more): a larger one is refused as corrupt. */
+#define TRK_AMP_MAX_NORM_THRESHOLD TRK_REAL_C(1e6)
+
 enum trk_amp_model {
     TRK_AMP_RAYLEIGH = 1,   /* Rayleigh clutter, Swerling I target */
     TRK_AMP_K = 2           /* K-distributed clutter (shape nu), Swerling I target */
@@ -113,7 +118,15 @@ struct trk_amplitude {
     trk_real llr_lo, llr_hi, llr_h, llr_inv_h;
     trk_real llr_limit, llr_tail_rate;
     struct trk_amp_inv_curve inv[2];
+    uint32_t built;             /* set by the init functions only (trk_amplitude_check) */
 };
+
+/* TRK_OK when *m was built by trk_amplitude_init_rayleigh or
+ * trk_amplitude_init_table (and not changed since in a way that breaks its
+ * invariants); TRK_E_ARG for NULL or a model filled by hand, whose use could
+ * read through its table pointers. The tracker checks every sensor's model
+ * with it at init. */
+TRK_NODISCARD trk_status trk_amplitude_check(const struct trk_amplitude *m);
 
 /* Rayleigh clutter of power clutter_power > 0 and a Swerling I target of
  * snr_db in [-100, 100] dB, threshold at false-alarm probability pfa in
