@@ -50,6 +50,9 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     struct trk_i_pda_out out;
     struct trk_visibility vis = tr->vis;
     if (trk_i_pda_run(pda, &pp, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
+    /* the PDA checked a posterior it formed; with nothing gated it is the
+     * prediction: check that one here (one factorisation per track) */
+    if (set.m_gated == 0 && trk_i_spd(NX, pr.p) != TRK_OK) return -1;
     if (t->params.track_visibility && update_visibility(t, pda, &set, &out, &vis) != TRK_OK) return -1;
     /* accepted: from here on the track changes */
     tr->vis = vis;
@@ -59,8 +62,9 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     return 0;
 }
 
-/* CV prediction to the scan time, checked (finite and positive definite:
- * it is the posterior when no detection is gated), and its innovation (S = H P H'
+/* CV prediction to the scan time, checked (finite, variances > 0; its
+ * positive definiteness is checked once it is known to be the posterior),
+ * and its innovation (S = H P H'
  * + R of the scan's sensor; TRK_E_NOT_SPD when S is not positive definite). */
 static trk_status predict(const struct trk_tracker *t, const struct trk_track *tr,
                           const struct trk_scan *scan, struct pred *pr)
@@ -69,8 +73,7 @@ static trk_status predict(const struct trk_tracker *t, const struct trk_track *t
     for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
     for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
     trk_i_cv2_predict(dt, t->params.process_noise_q, pr->x, pr->p);
-    trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
-    if (st == TRK_OK) st = trk_i_spd(NX, pr->p); /* it is the posterior when nothing is gated */
+    const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
     if (st != TRK_OK) return st;
     return trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
                                 &pr->inn);
