@@ -11,7 +11,13 @@
 
 #include "trk/table.h"
 
-/* Bytes in the file. TRK_E_ARG NULL pointer, TRK_E_IO not readable. */
+/* Largest table file: one array of TRK_TABLE_MAX_REALS 8-byte reals (the
+ * format's own limit, trk/table.h) plus its header and sections. */
+#define TRK_TABLE_FILE_MAX_BYTES ((size_t)TRK_TABLE_MAX_REALS * 8u + ((size_t)1 << 20))
+
+/* Bytes in the file, counted up to TRK_TABLE_FILE_MAX_BYTES (a longer file,
+ * or an endless one such as /dev/zero, is no table: TRK_E_CAPACITY after
+ * reading that much). TRK_E_ARG NULL pointer, TRK_E_IO not readable. */
 TRK_NODISCARD trk_status trk_table_file_size(const char *path, size_t *size);
 
 /* Read the whole file into buf (cap bytes, aligned to TRK_TABLE_ALIGN) and

@@ -13,6 +13,10 @@ trk_status trk_table_file_size(const char *path, size_t *size)
     for (;;) {
         size_t got = fread(chunk, 1, sizeof chunk, fp);
         n += got;
+        if (n > TRK_TABLE_FILE_MAX_BYTES) { /* bounded: /dev/zero never ends */
+            fclose(fp);
+            return TRK_E_CAPACITY;
+        }
         if (got < sizeof chunk) break;
     }
     const int bad = ferror(fp);

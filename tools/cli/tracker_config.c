@@ -428,6 +428,11 @@ static int check_table(const char *path, const char *what, const uint32_t *kinds
 {
     size_t len;
     trk_status st = trk_table_file_size(path, &len);
+    if (st == TRK_E_CAPACITY) {
+        snprintf(err, n, "%s '%s': longer than any table (%zu bytes at most)", what, path,
+                 (size_t)TRK_TABLE_FILE_MAX_BYTES);
+        return -1;
+    }
     if (st != TRK_OK) {
         snprintf(err, n, "%s '%s': cannot open: %s", what, path, strerror(errno));
         return -1;
