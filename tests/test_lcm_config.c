@@ -219,6 +219,31 @@ static void test_file(void **state)
     assert_int_equal(kv_parse_file("/nonexistent/trk.conf", tcfg_set, &c, err, sizeof err), -1);
     assert_non_null(strstr(err, "cannot open"));
 
+    /* issue 17 items 7 and 10: a NUL byte hid the rest of its line (and
+     * /dev/zero, all NULs, never returned); a comment of 1 020 bytes with a
+     * setting after it, NUL-padded so that the old line test missed it */
+    const char nul[] = "gate_prob = 0.9\0 trailing text\nsensor.0.pd = 0.8\n";
+    path = tmp_file("nul.conf", nul, sizeof nul - 1);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":1: a NUL byte"));
+    remove(path);
+    static char crafted[2 * KV_MAX_LINE];
+    memset(crafted, 0, sizeof crafted);
+    crafted[0] = '#';
+    memset(crafted + 1, 'x', 1018);
+    memcpy(crafted + 1020, "gate_prob = 0.5\n", 16); /* after a NUL at 1019: the hidden setting */
+    path = tmp_file("crafted.conf", crafted, 1036);
+    tcfg_defaults(&c);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    assert_true(c.params.gate_prob != TRK_REAL_C(0.5));
+    remove(path);
+    FILE *zero = fopen("/dev/zero", "r");
+    if (zero) {
+        fclose(zero);
+        assert_int_equal(kv_parse_file("/dev/zero", tcfg_set, &c, err, sizeof err), -1);
+        assert_non_null(strstr(err, "NUL"));
+    }
+
     /* command-line form */
     assert_int_equal(kv_parse_assignment("term.kn.n = 9", tcfg_set, &c, err, sizeof err), 0);
     assert_int_equal(c.kn.n, 9);

@@ -43,6 +43,23 @@ static int apply(kv_setter set, void *ctx, const char *key, const char *value, c
     return -1;
 }
 
+/* One line of f into line (at most cap - 2 characters, without its '\n'),
+ * byte by byte so that a NUL byte cannot hide the rest of a line: 1 a line,
+ * 0 end of file, -1 longer than cap - 2, -2 a NUL byte. */
+static int read_line(FILE *f, char *line, size_t cap)
+{
+    size_t n = 0;
+    int c = EOF;
+    while ((c = getc(f)) != EOF && c != '\n') {
+        if (c == '\0') return -2;
+        if (n + 2 > cap) return -1;
+        line[n++] = (char)c;
+    }
+    if (c == EOF && n == 0) return 0;
+    line[n] = 0;
+    return 1;
+}
+
 int kv_parse_file(const char *path, kv_setter set, void *ctx, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "r");
@@ -52,13 +69,17 @@ int kv_parse_file(const char *path, kv_setter set, void *ctx, char *err, size_t 
     }
     char line[KV_MAX_LINE];
     long lineno = 0;
-    int rc = 0;
-    while (fgets(line, sizeof line, f)) {
+    int rc = 0, got;
+    while ((got = read_line(f, line, sizeof line)) != 0) {
         lineno++;
-        size_t n = strlen(line);
-        if (n == sizeof line - 1 && line[n - 1] != '\n' && !feof(f)) {
+        if (got == -1) {
             snprintf(err, errlen, "%s:%ld: line longer than %d characters", path, lineno,
                      KV_MAX_LINE - 2);
+            rc = -1;
+            break;
+        }
+        if (got == -2) {
+            snprintf(err, errlen, "%s:%ld: a NUL byte (not a text file?)", path, lineno);
             rc = -1;
             break;
         }
