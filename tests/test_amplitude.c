@@ -382,7 +382,7 @@ static void test_bad_tables(void **state)
                  {NULL, "pfa", 0},          {NULL, "pd", 0},             {NULL, "pd", 1.5},
                  {NULL, "threshold", -1},   {NULL, "threshold", 7},      {NULL, "clutter_power", 0},
                  {NULL, "nu", 0},           {NULL, "snr_db", 200},
-                 {NULL, "threshold", 1e160}}; /* far beyond any detection threshold */
+                 {NULL, "threshold", 1e30}}; /* far beyond any detection threshold (float-representable) */
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         b = with_param(TRK_AMP_K, cases[i].skip, cases[i].name, cases[i].value, &len);
         trk_status st = init_from(b, len);
