@@ -246,6 +246,20 @@ static void test_fields(void **state)
     make_msg(&msg);
     msg.utime = INT64_MIN;
     expect_reject(&msg, 2, LCMC_FIELD);
+    /* beyond the tracker's time range: a field error, not "gap since the
+     * previous scan" (issue 17 item 9) */
+    make_msg(&msg);
+    msg.utime = TRK_TIME_US_MAX + 1;
+    expect_reject(&msg, 2, LCMC_FIELD);
+    make_msg(&msg);
+    msg.utime = INT64_MAX;
+    expect_reject(&msg, 2, LCMC_FIELD);
+    make_msg(&msg);
+    msg.utime = TRK_TIME_US_MAX;
+    struct lcmc_scan *ok = calloc(1, sizeof *ok);
+    assert_non_null(ok);
+    assert_int_equal(lcmc_scan_from_msg(&msg, 2, ok, NULL, 0), LCMC_OK);
+    free(ok);
 }
 
 static void test_sensor(void **state)

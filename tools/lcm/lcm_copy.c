@@ -70,8 +70,8 @@ enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_se
                TRK_MAX_DETECTIONS);
         return LCMC_CAPACITY;
     }
-    if (m->utime < 0) {
-        DETAIL("utime = %lld", (long long)m->utime);
+    if (m->utime < 0 || m->utime > TRK_TIME_US_MAX) { /* the tracker's range, not a gap */
+        DETAIL("utime = %lld, outside 0 .. 2^62 - 1", (long long)m->utime);
         return LCMC_FIELD;
     }
     if (m->sensor_id < 0 || (unsigned)m->sensor_id >= n_sensors) {
