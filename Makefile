@@ -316,7 +316,7 @@ test-gcc-float:
 	+@$(MAKE) --no-print-directory BUILD=build/test-gcc-float CC=gcc $(SAN_CHECK) $(SAN_SIZE_OPT) REAL=float check-run
 test-small:
 	+@$(MAKE) --no-print-directory BUILD=build/test-small CC=gcc OPT=-O1 DEBUG=-g1 VEC_SLOW=1 \
-	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2 -DTRK_MAX_MODELS=4' check-run
+	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2' check-run
 test-default:
 	+@$(MAKE) --no-print-directory BUILD=build test-extra
 

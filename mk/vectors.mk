@@ -1,7 +1,7 @@
 # mk/vectors.mk - `trk-vectors --emit` writes only what the library computed
 # (a step of `make test`): a case of a kind this build does not implement,
-# and a case it cannot answer (a 4-model IMM case above TRK_MAX_MODELS = 3 in
-# the default build, when the shared vectors are present), come back with
+# and a case it cannot answer (e.g. a 4-model IMM case in a build with
+# TRK_MAX_MODELS = 3; the shared imm.vec is checked too when present), come back with
 # their in and tol lines and a "# not computed" comment per output, and no
 # out line copied from the expected values.
 .PHONY: vectors-emit

@@ -90,12 +90,14 @@
 
 /* Models of one IMM estimator (imm.h): struct trk_imm_state holds
  * TRK_MAX_MODELS mode-conditioned estimates (20 reals each) and probabilities.
- * Default 3 (CV and a left and a right turn). */
+ * Default 4: the largest IMM of the reference vectors (CV, two turns and a
+ * high-noise CV), so that the default build computes every case; 3 (CV and a
+ * left and a right turn) saves 20 reals per IMM state. */
 #ifndef TRK_MAX_MODELS
-#define TRK_MAX_MODELS 3
+#define TRK_MAX_MODELS 4
 #endif
 #if TRK_MAX_MODELS < 1 || TRK_MAX_MODELS > 8
-#error "TRK_MAX_MODELS must be in 1..8 (models of one IMM, imm.h); set -DTRK_MAX_MODELS=3"
+#error "TRK_MAX_MODELS must be in 1..8 (models of one IMM, imm.h); set -DTRK_MAX_MODELS=4"
 #endif
 
 /* Joint association (jpda.h): a cluster is solved exactly by a programme over
