@@ -89,22 +89,24 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
         break;
 #endif
     case TRK_CONFIRM_VISIBILITY: tr->confirm_stat = tr->vis.pcv; break;
-    case TRK_CONFIRM_EXISTENCE: tr->confirm_stat = tr->vis.pv; break;
+    case TRK_CONFIRM_EXISTENCE: {
+        /* odds(pv) < r odds(e0)  <=>  pv < r e0 / (1 - e0 + r e0): once per track */
+        const trk_real r = t->params.confirm.u.existence.reject_odds_ratio, e0 = tr->existence0;
+        c->existence.reject_below = r > 0 && e0 < 1 ? r * e0 / (1 - e0 + r * e0) : 0;
+        tr->confirm_stat = tr->vis.pv;
+        break;
+    }
     default: break;
     }
 }
 
-/* ln(p / (1 - p)), +inf at p = 1 */
-static trk_real log_odds(trk_real p) { return trk_log(p) - trk_log1p(-p); }
-
-/* TRK_CONFIRM_EXISTENCE on the existence the scan's update left in tr->vis */
+/* TRK_CONFIRM_EXISTENCE on the existence the scan's update left in tr->vis
+ * (the rejection threshold was derived at the track's start) */
 static enum trk_decision existence_confirm(const struct trk_existence_confirm_params *x,
                                            const struct trk_track *tr)
 {
     if (tr->vis.pv >= x->p_confirm) return TRK_DECISION_CONFIRM;
-    if (x->reject_odds_ratio > 0 && tr->existence0 < 1 &&
-        log_odds(tr->vis.pv) < log_odds(tr->existence0) + trk_log(x->reject_odds_ratio))
-        return TRK_DECISION_TERMINATE;
+    if (tr->vis.pv < tr->test.confirm.existence.reject_below) return TRK_DECISION_TERMINATE;
     return TRK_DECISION_CONTINUE;
 }
 

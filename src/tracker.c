@@ -293,6 +293,9 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
         t->pda[s] = pda[s];
         for (int i = 0; i < NZ * NZ; i++) t->r[s][i] = r[s][i];
         t->max_pos_var_m2[s] = p->max_pos_sigma_ratio * p->max_pos_sigma_ratio * (r[s][S(ZX, ZX)] + r[s][S(ZY, ZY)]);
+        const trk_real lambda = pda[s].params.clutter_density, beta = p->init.birth_density_per_m2;
+        t->init_log_odds[s].first = lambda > 0 ? trk_log(beta) - trk_log(lambda) : (trk_real)INFINITY;
+        t->init_log_odds[s].second = lambda > 0 ? trk_log(pda[s].params.pd) - trk_log(lambda) : (trk_real)INFINITY;
     }
     t->scan_no = 0;
     t->n_cand = 0;

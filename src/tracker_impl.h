@@ -27,10 +27,18 @@
 #define S(i, j) TRK_CV2_S(i, j)
 
 /* A packed covariance [xx, xy, yy] (TRK_COV2_*) as the 2x2 matrix r
- * (TRK_CV2_S), checked: TRK_E_NAN non-finite, TRK_E_NOT_SPD not positive
+ * (TRK_CV2_S), unchecked: for one trk_i_cov2_unpack accepted before (a
+ * detection loaded, a candidate stored). The one place of the layout. */
+TRK_INLINE void trk_i_cov2_matrix(const trk_real c[3], trk_real r[NZ * NZ])
+{
+    r[S(ZX, ZX)] = c[TRK_COV2_XX];
+    r[S(ZX, ZY)] = r[S(ZY, ZX)] = c[TRK_COV2_XY];
+    r[S(ZY, ZY)] = c[TRK_COV2_YY];
+}
+
+/* The same, checked: TRK_E_NAN non-finite, TRK_E_NOT_SPD not positive
  * definite or too ill-conditioned for the arithmetic (TRK_COV2_MIN_REL_DET,
- * trk/tracker.h; xx yy must not overflow): r is then not usable. The one
- * place that unpacks one. */
+ * trk/tracker.h; xx yy must not overflow): r is then not written. */
 TRK_INLINE trk_status trk_i_cov2_unpack(const trk_real c[3], trk_real r[NZ * NZ])
 {
     const trk_real xx = c[TRK_COV2_XX], xy = c[TRK_COV2_XY], yy = c[TRK_COV2_YY];
@@ -38,9 +46,7 @@ TRK_INLINE trk_status trk_i_cov2_unpack(const trk_real c[3], trk_real r[NZ * NZ]
     const trk_real xxyy = xx * yy;
     if (!(xx > 0 && yy > 0 && xxyy <= TRK_REAL_MAX && xxyy - xy * xy > TRK_COV2_MIN_REL_DET * xxyy))
         return TRK_E_NOT_SPD;
-    r[S(ZX, ZX)] = xx;
-    r[S(ZX, ZY)] = r[S(ZY, ZX)] = xy;
-    r[S(ZY, ZY)] = yy;
+    trk_i_cov2_matrix(c, r);
     return TRK_OK;
 }
 

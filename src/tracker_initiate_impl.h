@@ -46,7 +46,7 @@ static void detection_r(const struct trk_tracker *t, const struct trk_scan *scan
 {
     const struct trk_detection *d = &scan->detections[t->ws.src[j]];
     if (d->has_cov) {
-        TRK_CHECKED(trk_i_cov2_unpack(d->cov_m2, r)); /* checked at load */
+        trk_i_cov2_matrix(d->cov_m2, r); /* checked at load */
     } else {
         for (int i = 0; i < NZ * NZ; i++) r[i] = t->r[scan->sensor_id][i];
     }
@@ -102,12 +102,6 @@ static trk_real logistic(trk_real lo)
     return lo >= 0 ? 1 / (1 + trk_exp(-lo)) : trk_exp(lo) / (1 + trk_exp(lo));
 }
 
-/* ln(l^a / lambda) of a detection of sensor s (+inf when lambda = 0). */
-static trk_real log_lr_over_clutter(const struct trk_tracker *t, unsigned s, trk_real log_lr)
-{
-    const trk_real lambda = t->pda[s].params.clutter_density;
-    return lambda > 0 ? log_lr - trk_log(lambda) : (trk_real)INFINITY;
-}
 
 /* The ranking of replacement: existence, or n_hits / n_scans without it. */
 static trk_real quality(const struct trk_tracker *t, const struct trk_track *tr)
@@ -198,12 +192,12 @@ static void new_track(struct trk_tracker *t, struct trk_track *tr, const struct 
     }
 }
 
-/* The existence a new track starts with from ln O (trk_init_params), or NaN
+/* The existence a new track starts with from its ln O (trk_init_params;
+ * the per-sensor constants of struct trk_tracker init_log_odds), or NaN
  * (pv0) when birth_density_per_m2 is 0. */
-static trk_real initial_existence(const struct trk_tracker *t, trk_real log_odds_without_beta)
+static trk_real initial_existence(const struct trk_tracker *t, trk_real log_odds)
 {
-    const trk_real beta = t->params.init.birth_density_per_m2;
-    return beta > 0 ? logistic(trk_log(beta) + log_odds_without_beta) : (trk_real)NAN;
+    return t->params.init.birth_density_per_m2 > 0 ? logistic(log_odds) : (trk_real)NAN;
 }
 
 /* The quality take_slot compares for a new track of existence psi0. */
@@ -221,7 +215,7 @@ static int start_single(struct trk_tracker *t, struct slots *sl, const struct tr
                         const trk_real *r_j, struct trk_scan_report *rep)
 {
     if (!slot_possible(t, sl, rep)) return 0;
-    const trk_real psi0 = initial_existence(t, log_lr_over_clutter(t, scan->sensor_id, t->ws.log_lr[j]));
+    const trk_real psi0 = initial_existence(t, t->init_log_odds[scan->sensor_id].first + t->ws.log_lr[j]);
     struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
     if (!tr) return 0;
     const trk_real vv = t->params.init_speed_sigma_mps * t->params.init_speed_sigma_mps;
@@ -249,7 +243,7 @@ static trk_real lambda_max2(const trk_real *a)
 
 static void candidate_r(const struct trk_candidate *c, trk_real *r)
 {
-    TRK_CHECKED(trk_i_cov2_unpack(c->cov_m2, r)); /* stored from a checked detection */
+    trk_i_cov2_matrix(c->cov_m2, r); /* stored from a checked detection */
 }
 
 /* Drop the candidates older than max_gap_scans (the store stays sorted);
@@ -331,11 +325,10 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
     struct trk_candidate *c = &t->cand[ci];
     const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
     const trk_real vdt = t->params.init.max_speed_mps * dt;
-    /* ln O without beta: ln(l_c / lambda_c) + ln(P_D l_j / (lambda_j A_v)) */
+    /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v */
     const trk_real pi = TRK_REAL_C(3.14159265358979323846);
-    const trk_real log_odds = log_lr_over_clutter(t, c->sensor_id, c->log_lr) +
-                              trk_log(t->pda[scan->sensor_id].params.pd) - trk_log(pi * vdt * vdt) +
-                              log_lr_over_clutter(t, scan->sensor_id, t->ws.log_lr[j]);
+    const trk_real log_odds = t->init_log_odds[c->sensor_id].first + c->log_lr +
+                              t->init_log_odds[scan->sensor_id].second + t->ws.log_lr[j] - trk_log(pi * vdt * vdt);
     const trk_real psi0 = initial_existence(t, log_odds);
     trk_real r_c[NZ * NZ], x[NX], p[NX * NX];
     candidate_r(c, r_c);

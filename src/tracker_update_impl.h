@@ -123,7 +123,7 @@ static int own_box(const struct trk_tracker *t, const struct trk_scan *scan, con
                    size_t j, trk_real g, const trk_real *nu, trk_real *r_j, trk_real *l_inv, trk_real *log_det)
 {
     trk_real s[NZ * NZ];
-    TRK_CHECKED(trk_i_cov2_unpack(scan->detections[t->ws.src[j]].cov_m2, r_j)); /* checked at load */
+    trk_i_cov2_matrix(scan->detections[t->ws.src[j]].cov_m2, r_j); /* checked at load */
     trk_i_pda_own_s(pp, r_j, s);
     if (trk_fabs(nu[ZX]) > trk_sqrt(g * s[S(ZX, ZX)]) || trk_fabs(nu[ZY]) > trk_sqrt(g * s[S(ZY, ZY)]))
         return 0;

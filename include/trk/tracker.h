@@ -183,6 +183,9 @@ struct trk_term_params {
 union trk_confirm_state {
     struct trk_mn mn;
     struct trk_sprt sprt;
+    struct {
+        trk_real reject_below; /* TRK_CONFIRM_EXISTENCE: pv below this rejects (set at start) */
+    } existence;
 #if TRK_WITH_CLUTTER_TESTS
     struct trk_clutter_chi2 chi2;
     struct trk_clutter_amp amp;
@@ -413,6 +416,11 @@ struct trk_tracker {
     union trk_term_model term_model;            /* derived constants, shared by all tracks */
     struct trk_track track[TRK_MAX_TRACKS];
     trk_real max_pos_var_m2[TRK_MAX_SENSORS];   /* covariance bound per sensor (0: none) */
+    struct {                                    /* initial existence terms per sensor
+                                                   (trk_init_params; +inf when lambda = 0): */
+        trk_real first;                         /* ln(beta / lambda), a track's first point */
+        trk_real second;                        /* ln(P_D / lambda), its second point */
+    } init_log_odds[TRK_MAX_SENSORS];
     uint32_t scan_no;                           /* scans processed (initiation ages) */
     size_t n_cand;                              /* initiation candidates, sorted by x */
     struct trk_candidate cand[TRK_MAX_CANDIDATES];
