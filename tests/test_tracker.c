@@ -19,22 +19,9 @@ static struct trk_tracker tk; /* ~40 KB: static, as in firmware */
 #define VY TRK_CV2_VY
 #define P(i, j) TRK_CV2_P(i, j)
 
-/* splitmix64: a small deterministic generator for the test scenario */
-static uint64_t rng_state;
-static double urand(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
-}
-static double nrand(void)
-{
-    double u1 = urand(), u2 = urand();
-    if (u1 < 1e-300) u1 = 1e-300;
-    return sqrt(-2 * log(u1)) * cos(6.283185307179586 * u2);
-}
+static uint64_t rng_state; /* the generator of trk_test.h */
+static double urand(void) { return trk_test_urand(&rng_state); }
+static double nrand(void) { return trk_test_nrand(&rng_state); }
 
 static void check_invariants(const struct trk_tracker *t)
 {

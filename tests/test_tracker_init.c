@@ -20,22 +20,9 @@ static struct trk_tracker tk; /* static, as in firmware */
 #define P(i, j) TRK_CV2_P(i, j)
 #define AREA_M2 9e6 /* the 3 km x 3 km region of the clutter */
 
-/* splitmix64 */
-static uint64_t rng_state;
-static double urand(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
-}
-static double nrand(void)
-{
-    double u1 = urand(), u2 = urand();
-    if (u1 < 1e-300) u1 = 1e-300;
-    return sqrt(-2 * log(u1)) * cos(6.283185307179586 * u2);
-}
+static uint64_t rng_state; /* the generator of trk_test.h */
+static double urand(void) { return trk_test_urand(&rng_state); }
+static double nrand(void) { return trk_test_nrand(&rng_state); }
 
 /* The sonar-like sensor of issue 14: P_D 0.8, R = 25 I, clutter density lambda. */
 static void sonar_params(struct trk_tracker_params *p, double lambda)

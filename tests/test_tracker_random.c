@@ -12,16 +12,8 @@
 
 static struct trk_tracker tk;
 
-/* splitmix64 */
-static uint64_t rng_state;
-static double urand(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
-}
+static uint64_t rng_state; /* the generator of trk_test.h */
+static double urand(void) { return trk_test_urand(&rng_state); }
 
 /* Invariants of the table after a scan; returns the numerical ends seen. */
 static unsigned check_table(const struct trk_scan_report *rep)

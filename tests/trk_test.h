@@ -50,6 +50,23 @@
 #endif
 #define TRK_TOL(dbl, flt) (TRK_TEST_IS_FLOAT ? (flt) : (dbl))
 
+/* The tests' small deterministic generator (splitmix64): uniform in
+ * [0, 1) and standard normal (Box-Muller), on a state the test owns. */
+static inline double trk_test_urand(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+static inline double trk_test_nrand(uint64_t *state)
+{
+    double u1 = trk_test_urand(state), u2 = trk_test_urand(state);
+    if (u1 < 1e-300) u1 = 1e-300;
+    return sqrt(-2 * log(u1)) * cos(6.283185307179586 * u2);
+}
+
 /* Every test program's main ends with
  *     return trk_run_tests("name", tests, setup, teardown);
  * which runs the group under cmocka. With TRK_TEST_CASE set in the
