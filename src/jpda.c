@@ -1,7 +1,7 @@
 /* jpda.c - JPDA / JIPDA marginal association probabilities (trk/jpda.h;
- * CONVENTIONS "Joint association"): clusters by union-find, an exact
- * subset dynamic programme per cluster, loopy belief propagation beyond the
- * exact bound. */
+ * CONVENTIONS "Joint association"): clusters by union-find over the gated
+ * pairs, a closed form for a lone track, an exact subset dynamic programme
+ * per cluster, loopy belief propagation beyond the exact bound. */
 #include "trk/jpda.h"
 
 #include <math.h>
@@ -12,54 +12,91 @@
 #include "pda_impl.h"
 
 #if TRK_MAX_TRACKS > 65535 || TRK_MAX_DETECTIONS > 65535
-#error "jpda.c indexes tracks and detections with unsigned short"
+#error "jpda.c indexes tracks and detections with uint16_t"
 #endif
 
+#define NONE 0xFFFFu
+
 /* A cluster being solved: its tracks and gated detections (indices into the
- * scan), and the scaled linear weights read from the scan on the fly. */
+ * scan: tracks[0, nt), dets[0, nd)); det_local maps a detection to its index
+ * in dets. The scaled linear weights are read from the pairs on the fly. */
 struct cluster {
-    const struct trk_jpda_scan *scan;
-    struct trk_jpda_work *w;
+    const struct trk_jpda_pairs *s;
+    struct trk_jpda_solver *w;
+    const uint16_t *tracks, *dets;
     size_t nt, nd;
 };
 
-static trk_status check_scan(const struct trk_jpda_scan *s, const trk_real *p_assoc, const trk_real *p_miss);
-static void form_clusters(const struct trk_jpda_scan *s, struct trk_jpda_work *w);
-static size_t cluster_root(struct trk_jpda_work *w, size_t t);
-static void gather_cluster(const struct trk_jpda_scan *s, struct trk_jpda_work *w, size_t root, struct cluster *c);
-static int solve_exact(const struct cluster *c, trk_real *p_assoc, trk_real *p_miss);
-static int solve_lbp(const struct cluster *c, trk_real *p_assoc, trk_real *p_miss, int *converged);
+static trk_status check_pairs(const struct trk_jpda_pairs *s, const trk_real *p_pair, const trk_real *p_miss);
+static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solver *w);
+static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
+static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
+static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged);
 
 /* ------------------------------------------------------------------ API */
 
-trk_status trk_jpda_marginals(const struct trk_jpda_scan *scan, struct trk_jpda_work *work, trk_real *p_assoc,
-                              trk_real *p_miss, struct trk_jpda_report *rep)
+trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_solver *solver, trk_real *p_pair,
+                          trk_real *p_miss, struct trk_jpda_report *rep)
 {
-    if (!work) return TRK_E_ARG;
-    trk_status st = check_scan(scan, p_assoc, p_miss);
+    if (!solver) return TRK_E_ARG;
+    const trk_status st = check_pairs(pairs, p_pair, p_miss);
     if (st != TRK_OK) return st;
     struct trk_jpda_report r = {0, 0, 0, 0, 0, 0, 1};
-    const size_t nt = scan->n_tracks, nd = scan->n_dets;
-    if (nt > 0 && nd > 0) memset(p_assoc, 0, nt * nd * sizeof *p_assoc);
-    form_clusters(scan, work);
-    for (size_t t = 0; t < nt; t++) {
-        if (cluster_root(work, t) != t) continue;
-        struct cluster c;
-        gather_cluster(scan, work, t, &c);
+    const size_t n_clusters = form_clusters(pairs, solver);
+    for (size_t k = 0; k < n_clusters; k++) {
+        const struct cluster c = {pairs, solver, solver->tracks + solver->tr_first[k],
+                                  solver->dets + solver->det_first[k],
+                                  (size_t)(solver->tr_first[k + 1] - solver->tr_first[k]),
+                                  (size_t)(solver->det_first[k + 1] - solver->det_first[k])};
         r.n_clusters++;
         if (c.nt > r.largest_tracks) r.largest_tracks = c.nt;
         if (c.nd > r.largest_dets) r.largest_dets = c.nd;
-        if (solve_exact(&c, p_assoc, p_miss)) {
+        if (c.nt == 1) {
+            solve_lone(&c, p_pair, p_miss);
+            r.n_exact++;
+        } else if (solve_exact(&c, p_pair, p_miss)) {
             r.n_exact++;
         } else {
             int conv = 0;
-            const int it = solve_lbp(&c, p_assoc, p_miss, &conv);
+            const int it = solve_lbp(&c, p_pair, p_miss, &conv);
             r.n_approx++;
             if (it > r.lbp_iterations) r.lbp_iterations = it;
             if (!conv) r.lbp_converged = 0;
         }
     }
     if (rep) *rep = r;
+    return TRK_OK;
+}
+
+/* The dense scan as pairs (gated: ln w finite), solved, and scattered back. */
+trk_status trk_jpda_marginals(const struct trk_jpda_scan *scan, struct trk_jpda_work *work, trk_real *p_assoc,
+                              trk_real *p_miss, struct trk_jpda_report *rep)
+{
+    if (!work || !scan) return TRK_E_ARG;
+    const size_t nt = scan->n_tracks, nd = scan->n_dets;
+    if (nt > TRK_MAX_TRACKS || nd > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
+    if (nt > 0 && (!scan->log_w_miss || !p_miss)) return TRK_E_ARG;
+    if (nt > 0 && nd > 0 && (!scan->log_w || !p_assoc)) return TRK_E_ARG;
+    size_t n = 0;
+    work->first[0] = 0;
+    for (size_t t = 0; t < nt; t++) {
+        for (size_t j = 0; j < nd; j++) {
+            const trk_real v = scan->log_w[t * nd + j];
+            if (isnan(v)) return TRK_E_NAN;
+            if (v > 0 && isinf(v)) return TRK_E_RANGE;
+            if (!isfinite(v)) continue;
+            if (n == TRK_MAX_GATED_PAIRS) return TRK_E_CAPACITY;
+            work->det[n] = (uint16_t)j;
+            work->log_w[n++] = v;
+        }
+        work->first[t + 1] = (uint16_t)n;
+    }
+    const struct trk_jpda_pairs pairs = {nt, nd, work->first, work->det, work->log_w, scan->log_w_miss};
+    const trk_status st = trk_jpda_solve(&pairs, &work->solver, work->p_pair, p_miss, rep);
+    if (st != TRK_OK) return st;
+    if (nt > 0 && nd > 0) memset(p_assoc, 0, nt * nd * sizeof *p_assoc);
+    for (size_t t = 0; t < nt; t++)
+        for (size_t k = work->first[t]; k < work->first[t + 1]; k++) p_assoc[t * nd + work->det[k]] = work->p_pair[k];
     return TRK_OK;
 }
 
@@ -113,91 +150,131 @@ trk_status trk_jpda_track_weights(const struct trk_pda *pda, trk_real psi, const
 
 /* ------------------------------------------------------------------ checks and clusters */
 
-static trk_status check_scan(const struct trk_jpda_scan *s, const trk_real *p_assoc, const trk_real *p_miss)
+static trk_status check_pairs(const struct trk_jpda_pairs *s, const trk_real *p_pair, const trk_real *p_miss)
 {
     if (!s) return TRK_E_ARG;
     if (s->n_tracks > TRK_MAX_TRACKS || s->n_dets > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
-    if (s->n_tracks > 0 && (!s->log_w_miss || !p_miss)) return TRK_E_ARG;
-    if (s->n_tracks > 0 && s->n_dets > 0 && (!s->log_w || !p_assoc)) return TRK_E_ARG;
+    if (s->n_tracks == 0) return TRK_OK;
+    if (!s->first || !s->log_w_miss || !p_miss || s->first[0] != 0) return TRK_E_ARG;
+    const size_t n_pairs = s->first[s->n_tracks];
+    if (n_pairs > TRK_MAX_GATED_PAIRS) return TRK_E_CAPACITY;
+    if (n_pairs > 0 && (!s->det || !s->log_w || !p_pair)) return TRK_E_ARG;
     for (size_t t = 0; t < s->n_tracks; t++) {
+        if (s->first[t + 1] < s->first[t]) return TRK_E_ARG;
         if (!isfinite(s->log_w_miss[t])) return TRK_E_NAN;
-        for (size_t j = 0; j < s->n_dets; j++) {
-            const trk_real v = s->log_w[t * s->n_dets + j];
-            if (isnan(v)) return TRK_E_NAN;
-            if (v > 0 && isinf(v)) return TRK_E_RANGE;
+        for (size_t k = s->first[t]; k < s->first[t + 1]; k++) {
+            if (s->det[k] >= s->n_dets || (k > s->first[t] && s->det[k] <= s->det[k - 1])) return TRK_E_ARG;
+            if (!isfinite(s->log_w[k])) return TRK_E_NAN;
         }
     }
     return TRK_OK;
 }
 
-static int gated(const struct trk_jpda_scan *s, size_t t, size_t j)
-{
-    return isfinite(s->log_w[t * s->n_dets + j]);
-}
-
 /* root with path halving (iterative: no recursion) */
-static size_t cluster_root(struct trk_jpda_work *w, size_t t)
+static size_t cluster_root(uint16_t *parent, size_t t)
 {
-    while (w->parent[t] != t) {
-        w->parent[t] = w->parent[w->parent[t]];
-        t = w->parent[t];
+    while (parent[t] != t) {
+        parent[t] = parent[parent[t]];
+        t = parent[t];
     }
     return t;
 }
 
-/* Tracks gating a common detection are joined; the smaller index is the root,
- * so a cluster is met at its first track by the caller's loop. */
-static void form_clusters(const struct trk_jpda_scan *s, struct trk_jpda_work *w)
+/* Clusters of tracks gating a common detection, in O(tracks + pairs):
+ * union-find (det_local first holds each detection's first gating track),
+ * then the members of cluster c listed in scan order at tracks[tr_first[c]
+ * ..] and dets[det_first[c] ..] (counting sort), det_local then each
+ * detection's index in its cluster. Each track's scale (its largest ln w)
+ * makes every scaled weight at most 1. Returns the number of clusters. */
+static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solver *w)
 {
-    const unsigned short none = 0xFFFFu;
-    for (size_t t = 0; t < s->n_tracks; t++) w->parent[t] = (unsigned short)t;
-    for (size_t j = 0; j < s->n_dets; j++) w->det_owner[j] = none;
-    for (size_t t = 0; t < s->n_tracks; t++)
-        for (size_t j = 0; j < s->n_dets; j++) {
-            if (!gated(s, t, j)) continue;
-            if (w->det_owner[j] == none) {
-                w->det_owner[j] = (unsigned short)t;
+    const size_t nt = s->n_tracks, nd = s->n_dets;
+    uint16_t *parent = w->parent, *owner = w->det_local;
+    for (size_t t = 0; t < nt; t++) parent[t] = (uint16_t)t;
+    for (size_t j = 0; j < nd; j++) owner[j] = NONE;
+    for (size_t t = 0; t < nt; t++) {
+        trk_real m = s->log_w_miss[t];
+        for (size_t k = s->first[t]; k < s->first[t + 1]; k++) {
+            const size_t j = s->det[k];
+            if (s->log_w[k] > m) m = s->log_w[k];
+            if (owner[j] == NONE) {
+                owner[j] = (uint16_t)t;
                 continue;
             }
-            size_t a = cluster_root(w, w->det_owner[j]), b = cluster_root(w, t);
-            if (a == b) continue;
-            if (a < b) w->parent[b] = (unsigned short)a;
-            else w->parent[a] = (unsigned short)b;
+            const size_t a = cluster_root(parent, owner[j]), b = cluster_root(parent, t);
+            if (a < b) parent[b] = (uint16_t)a;
+            else if (b < a) parent[a] = (uint16_t)b;
         }
-}
-
-/* The members of root's cluster, and each member track's scale (its largest
- * ln w), so that every scaled weight is at most 1. */
-static void gather_cluster(const struct trk_jpda_scan *s, struct trk_jpda_work *w, size_t root, struct cluster *c)
-{
-    c->scan = s;
-    c->w = w;
-    c->nt = c->nd = 0;
-    for (size_t t = root; t < s->n_tracks; t++) {
-        if (cluster_root(w, t) != root) continue;
-        w->cl_tracks[c->nt++] = (unsigned short)t;
-        trk_real m = s->log_w_miss[t];
-        for (size_t j = 0; j < s->n_dets; j++)
-            if (gated(s, t, j) && s->log_w[t * s->n_dets + j] > m) m = s->log_w[t * s->n_dets + j];
         w->scale[t] = m;
     }
-    for (size_t j = 0; j < s->n_dets; j++)
-        if (w->det_owner[j] != 0xFFFFu && cluster_root(w, w->det_owner[j]) == root)
-            w->cl_dets[c->nd++] = (unsigned short)j;
+    /* number the clusters by their first track; parent[t] becomes t's cluster */
+    size_t n = 0;
+    for (size_t t = 0; t < nt; t++) parent[t] = (uint16_t)cluster_root(parent, t); /* a root is its cluster's
+                                                                                     smallest track */
+    for (size_t t = 0; t < nt; t++) parent[t] = (uint16_t)(parent[t] == t ? n++ : parent[parent[t]]);
+    for (size_t c = 0; c <= n; c++) w->tr_first[c] = w->det_first[c] = 0;
+    for (size_t t = 0; t < nt; t++) w->tr_first[parent[t] + 1]++;
+    for (size_t j = 0; j < nd; j++)
+        if (owner[j] != NONE) w->det_first[parent[owner[j]] + 1]++;
+    for (size_t c = 0; c < n; c++) {
+        w->tr_first[c + 1] = (uint16_t)(w->tr_first[c + 1] + w->tr_first[c]);
+        w->det_first[c + 1] = (uint16_t)(w->det_first[c + 1] + w->det_first[c]);
+    }
+    /* fill, with tr_first / det_first advanced as cursors, then restored */
+    for (size_t t = 0; t < nt; t++) w->tracks[w->tr_first[parent[t]]++] = (uint16_t)t;
+    for (size_t j = 0; j < nd; j++) {
+        if (owner[j] == NONE) continue;
+        const size_t c = parent[owner[j]], pos = w->det_first[c]++;
+        w->dets[pos] = (uint16_t)j;
+    }
+    for (size_t c = n; c > 0; c--) {
+        w->tr_first[c] = w->tr_first[c - 1];
+        w->det_first[c] = w->det_first[c - 1];
+    }
+    w->tr_first[0] = w->det_first[0] = 0;
+    for (size_t c = 0; c < n; c++)
+        for (size_t b = w->det_first[c]; b < w->det_first[c + 1]; b++)
+            owner[w->dets[b]] = (uint16_t)(b - w->det_first[c]); /* det_local */
+    return n;
 }
 
 /* scaled weights of cluster track a (index into the cluster) */
 static trk_real wmiss(const struct cluster *c, size_t a)
 {
-    const size_t t = c->w->cl_tracks[a];
-    return trk_exp(c->scan->log_w_miss[t] - c->w->scale[t]);
+    const size_t t = c->tracks[a];
+    return trk_exp(c->s->log_w_miss[t] - c->w->scale[t]);
 }
 
-static trk_real wdet(const struct cluster *c, size_t a, size_t b)
+static trk_real wpair(const struct cluster *c, size_t t, size_t k)
 {
-    const size_t t = c->w->cl_tracks[a], j = c->w->cl_dets[b];
-    const trk_real v = c->scan->log_w[t * c->scan->n_dets + j];
-    return isfinite(v) ? trk_exp(v - c->w->scale[t]) : 0;
+    return trk_exp(c->s->log_w[k] - c->w->scale[t]);
+}
+
+/* the pair of scan track t and detection j, or NONE (binary search: a
+ * track's detections increase) */
+static size_t pair_of(const struct trk_jpda_pairs *s, size_t t, size_t j)
+{
+    size_t lo = s->first[t], hi = s->first[t + 1];
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (s->det[mid] < j) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo < s->first[t + 1] && s->det[lo] == j ? lo : NONE;
+}
+
+/* ------------------------------------------------------------------ one track */
+
+/* A track alone in its cluster: P(t <- j) = w_tj / (w_t0 + sum_j w_tj), the
+ * PDA weights. */
+static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_miss)
+{
+    const struct trk_jpda_pairs *s = c->s;
+    const size_t t = c->tracks[0];
+    trk_real z = wmiss(c, 0);
+    for (size_t k = s->first[t]; k < s->first[t + 1]; k++) z += p_pair[k] = wpair(c, t, k);
+    for (size_t k = s->first[t]; k < s->first[t + 1]; k++) p_pair[k] /= z;
+    p_miss[t] = wmiss(c, 0) / z;
 }
 
 /* ------------------------------------------------------------------ exact */
@@ -216,23 +293,31 @@ static trk_real rescale(trk_real *f, size_t n)
     return m;
 }
 
+/* track a's scaled weights over the cluster's detections (nd <= bits) */
+static void track_row(const struct cluster *c, size_t a, trk_real *row)
+{
+    const size_t t = c->tracks[a];
+    for (size_t b = 0; b < c->nd; b++) row[b] = 0;
+    for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) row[c->w->det_local[c->s->det[k]]] = wpair(c, t, k);
+}
+
 /* Subsets of the cluster's detections (nd <= bits): f(S) sums the events of
  * the tracks processed so far that use exactly the detections S. Track a's
  * marginals come from the programme over the other tracks:
  *   P(a <- b) ~ w_ab sum_{S not containing b} f(S),  P(a <- none) ~ w_a0 sum_S f(S).
  * Work: nt (nt - 1) 2^nd nd multiply-adds. */
-static void exact_by_detections(const struct cluster *c, trk_real *p_assoc, trk_real *p_miss)
+static void exact_by_detections(const struct cluster *c, trk_real *p_pair, trk_real *p_miss)
 {
-    trk_real *f = c->w->dp;
-    trk_real row[TRK_JPDA_EXACT_BITS];
-    const size_t ns = (size_t)1 << c->nd, n_dets = c->scan->n_dets;
+    trk_real *f = c->w->u.dp;
+    trk_real row[TRK_JPDA_EXACT_BITS], free_sum[TRK_JPDA_EXACT_BITS];
+    const size_t ns = (size_t)1 << c->nd;
     for (size_t a = 0; a < c->nt; a++) {
         for (size_t s = 0; s < ns; s++) f[s] = 0;
         f[0] = 1;
         for (size_t o = 0; o < c->nt; o++) {
             if (o == a) continue;
             const trk_real w0 = wmiss(c, o);
-            for (size_t b = 0; b < c->nd; b++) row[b] = wdet(c, o, b);
+            track_row(c, o, row);
             for (size_t s = ns; s-- > 0;) { /* high to low: f(S \ b) is still the old layer */
                 trk_real v = f[s] * w0;
                 for (size_t b = 0; b < c->nd; b++)
@@ -242,24 +327,19 @@ static void exact_by_detections(const struct cluster *c, trk_real *p_assoc, trk_
             (void)rescale(f, ns);
         }
         trk_real total = 0;
-        for (size_t s = 0; s < ns; s++) total += f[s];
-        const size_t t = c->w->cl_tracks[a];
+        for (size_t b = 0; b < c->nd; b++) free_sum[b] = 0;
+        for (size_t s = 0; s < ns; s++) {
+            total += f[s];
+            for (size_t b = 0; b < c->nd; b++)
+                if (!(s & ((size_t)1 << b))) free_sum[b] += f[s];
+        }
+        const size_t t = c->tracks[a];
         const trk_real pm = wmiss(c, a) * total;
         trk_real z = pm;
-        for (size_t b = 0; b < c->nd; b++) {
-            const trk_real wb = wdet(c, a, b);
-            trk_real v = 0;
-            if (wb != 0) {
-                trk_real free_sum = 0;
-                for (size_t s = 0; s < ns; s++)
-                    if (!(s & ((size_t)1 << b))) free_sum += f[s];
-                v = wb * free_sum;
-            }
-            row[b] = v;
-            z += v;
-        }
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
+            z += p_pair[k] = wpair(c, t, k) * free_sum[c->w->det_local[c->s->det[k]]];
         p_miss[t] = pm / z;
-        for (size_t b = 0; b < c->nd; b++) p_assoc[t * n_dets + c->w->cl_dets[b]] = row[b] / z;
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) p_pair[k] /= z;
     }
 }
 
@@ -270,7 +350,7 @@ static void exact_by_detections(const struct cluster *c, trk_real *p_assoc, trk_
  * factor, excluded from S) when skip_a < nt, as total * exp(*ln_scale). */
 static trk_real exact_tracks_sum(const struct cluster *c, size_t skip_b, size_t skip_a, trk_real *ln_scale)
 {
-    trk_real *g = c->w->dp;
+    trk_real *g = c->w->u.dp;
     trk_real col[TRK_JPDA_EXACT_BITS], miss[TRK_JPDA_EXACT_BITS];
     const size_t ns = (size_t)1 << c->nt;
     for (size_t s = 0; s < ns; s++) g[s] = 0;
@@ -278,7 +358,10 @@ static trk_real exact_tracks_sum(const struct cluster *c, size_t skip_b, size_t 
     *ln_scale = 0;
     for (size_t b = 0; b < c->nd; b++) {
         if (b == skip_b) continue;
-        for (size_t o = 0; o < c->nt; o++) col[o] = o == skip_a ? 0 : wdet(c, o, b);
+        for (size_t o = 0; o < c->nt; o++) {
+            const size_t k = o == skip_a ? NONE : pair_of(c->s, c->tracks[o], c->dets[b]);
+            col[o] = k == NONE ? 0 : wpair(c, c->tracks[o], k);
+        }
         for (size_t s = ns; s-- > 0;) {
             trk_real v = g[s];
             for (size_t o = 0; o < c->nt; o++)
@@ -302,28 +385,26 @@ static trk_real exact_tracks_sum(const struct cluster *c, size_t skip_b, size_t 
  * same detections (all but b) so that their rescalings agree:
  * Z(-b, b free) = Z(b clutter) + sum_a w_ab Z(-a, -b). P(a <- none) is what
  * is left of track a's unit row. Work: nd (nt + 1) (nd - 1) 2^nt nt. */
-static void exact_by_tracks(const struct cluster *c, trk_real *p_assoc, trk_real *p_miss)
+static void exact_by_tracks(const struct cluster *c, trk_real *p_pair, trk_real *p_miss)
 {
-    const size_t n_dets = c->scan->n_dets;
     for (size_t b = 0; b < c->nd; b++) {
         trk_real ln0, lna;
         trk_real z = exact_tracks_sum(c, b, (size_t)-1, &ln0);
+        size_t k_of[TRK_JPDA_EXACT_BITS];
         for (size_t a = 0; a < c->nt; a++) {
-            const trk_real wb = wdet(c, a, b);
-            trk_real v = 0;
-            if (wb != 0) {
-                v = exact_tracks_sum(c, b, a, &lna);
-                v *= wb * trk_exp(lna - ln0);
-            }
-            p_assoc[c->w->cl_tracks[a] * n_dets + c->w->cl_dets[b]] = v;
+            const size_t t = c->tracks[a], k = k_of[a] = pair_of(c->s, t, c->dets[b]);
+            if (k == NONE) continue;
+            const trk_real v = exact_tracks_sum(c, b, a, &lna) * wpair(c, t, k) * trk_exp(lna - ln0);
+            p_pair[k] = v;
             z += v;
         }
-        for (size_t a = 0; a < c->nt; a++) p_assoc[c->w->cl_tracks[a] * n_dets + c->w->cl_dets[b]] /= z;
+        for (size_t a = 0; a < c->nt; a++)
+            if (k_of[a] != NONE) p_pair[k_of[a]] /= z;
     }
     for (size_t a = 0; a < c->nt; a++) {
-        const size_t t = c->w->cl_tracks[a];
+        const size_t t = c->tracks[a];
         trk_real sum = 0;
-        for (size_t b = 0; b < c->nd; b++) sum += p_assoc[t * n_dets + c->w->cl_dets[b]];
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) sum += p_pair[k];
         p_miss[t] = sum < 1 ? 1 - sum : 0;
     }
 }
@@ -343,73 +424,68 @@ static uint64_t work_by_tracks(const struct cluster *c)
 }
 
 /* 1 when solved exactly (the cheaper method within TRK_JPDA_MAX_WORK) */
-static int solve_exact(const struct cluster *c, trk_real *p_assoc, trk_real *p_miss)
+static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss)
 {
     const uint64_t wd = work_by_detections(c), wt = work_by_tracks(c);
     const int use_d = wd > 0 && (wt == 0 || wd <= wt);
     const uint64_t w = use_d ? wd : wt;
     if (w == 0 || w > (uint64_t)TRK_JPDA_MAX_WORK) return 0;
-    if (use_d) exact_by_detections(c, p_assoc, p_miss);
-    else exact_by_tracks(c, p_assoc, p_miss);
+    if (use_d) exact_by_detections(c, p_pair, p_miss);
+    else exact_by_tracks(c, p_pair, p_miss);
     return 1;
 }
 
 /* ------------------------------------------------------------------ loopy belief propagation */
 
 /* Williams & Lau 2014, eqs (29)-(30), with the messages mu_ab (track ->
- * detection) kept in p_assoc and the detection sums S_b = sum_a mu_ab in
- * work->det_sum:
+ * detection) kept in p_pair and the detection sums S_b = sum_a mu_ab in
+ * the solver's det_sum:
  *   nu_ab = 1 / (1 + S_b - mu_ab),   T_a = w_a0 + sum_b w_ab nu_ab,
  *   mu_ab <- w_ab / (T_a - w_ab nu_ab).
  * Marginals: P(a <- b) = w_ab nu_ab / T_a, P(a <- none) = w_a0 / T_a. */
-#define MU(a, b) p_assoc[(size_t)c->w->cl_tracks[a] * c->scan->n_dets + c->w->cl_dets[b]]
 
 /* S_b = sum_a mu_ab of every detection of the cluster */
-static void lbp_sums(const struct cluster *c, const trk_real *p_assoc, trk_real *sum)
+static void lbp_sums(const struct cluster *c, const trk_real *mu, trk_real *sum)
 {
-    for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] = 0;
-    for (size_t a = 0; a < c->nt; a++)
-        for (size_t b = 0; b < c->nd; b++) sum[c->w->cl_dets[b]] += MU(a, b);
-}
-
-/* nu_ab = 1 / (1 + S_b - mu_ab) (0 outside the gate) */
-static trk_real lbp_nu(const struct cluster *c, const trk_real *p_assoc, const trk_real *sum, size_t a, size_t b,
-                       trk_real wb)
-{
-    return wb != 0 ? 1 / (1 + sum[c->w->cl_dets[b]] - MU(a, b)) : 0;
-}
-
-/* T_a = w_a0 + sum_b w_ab nu_ab */
-static trk_real lbp_total(const struct cluster *c, const trk_real *p_assoc, const trk_real *sum, size_t a)
-{
-    trk_real ta = wmiss(c, a);
-    for (size_t b = 0; b < c->nd; b++) {
-        const trk_real wb = wdet(c, a, b);
-        ta += wb * lbp_nu(c, p_assoc, sum, a, b, wb);
+    for (size_t b = 0; b < c->nd; b++) sum[c->dets[b]] = 0;
+    for (size_t a = 0; a < c->nt; a++) {
+        const size_t t = c->tracks[a];
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) sum[c->s->det[k]] += mu[k];
     }
+}
+
+/* T_a = w_a0 + sum_b w_ab nu_ab, nu_ab = 1 / (1 + S_b - mu_ab) */
+static trk_real lbp_total(const struct cluster *c, const trk_real *mu, const trk_real *sum, size_t a)
+{
+    const size_t t = c->tracks[a];
+    trk_real ta = wmiss(c, a);
+    for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
+        ta += wpair(c, t, k) / (1 + sum[c->s->det[k]] - mu[k]);
     return ta;
 }
 
-static int solve_lbp(const struct cluster *c, trk_real *p_assoc, trk_real *p_miss, int *converged)
+static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged)
 {
-    trk_real *sum = c->w->det_sum;
-    for (size_t a = 0; a < c->nt; a++)
-        for (size_t b = 0; b < c->nd; b++) MU(a, b) = wdet(c, a, b);
+    trk_real *sum = c->w->u.det_sum, *mu = p_pair;
+    for (size_t a = 0; a < c->nt; a++) {
+        const size_t t = c->tracks[a];
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) mu[k] = wpair(c, t, k);
+    }
     int it = 0;
     *converged = 0;
     while (it < TRK_JPDA_LBP_MAX_ITER) {
         it++;
-        lbp_sums(c, p_assoc, sum);
+        lbp_sums(c, mu, sum);
         trk_real change = 0;
         for (size_t a = 0; a < c->nt; a++) {
-            const trk_real ta = lbp_total(c, p_assoc, sum, a);
-            for (size_t b = 0; b < c->nd; b++) {
-                const trk_real wb = wdet(c, a, b);
-                if (wb == 0) continue;
-                const trk_real mu = wb / (ta - wb * lbp_nu(c, p_assoc, sum, a, b, wb));
-                const trk_real d = trk_fabs(mu - MU(a, b)) / (mu > 0 ? mu : 1);
+            const size_t t = c->tracks[a];
+            const trk_real ta = lbp_total(c, mu, sum, a);
+            for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) {
+                const trk_real wb = wpair(c, t, k);
+                const trk_real m = wb / (ta - wb / (1 + sum[c->s->det[k]] - mu[k]));
+                const trk_real d = trk_fabs(m - mu[k]) / (m > 0 ? m : 1);
                 if (d > change) change = d;
-                MU(a, b) = mu;
+                mu[k] = m;
             }
         }
         if (change <= TRK_REAL_C(1e-6)) {
@@ -419,15 +495,13 @@ static int solve_lbp(const struct cluster *c, trk_real *p_assoc, trk_real *p_mis
     }
     /* marginals from the final messages; each row's nu from the sums taken
      * before any row is overwritten */
-    lbp_sums(c, p_assoc, sum);
+    lbp_sums(c, mu, sum);
     for (size_t a = 0; a < c->nt; a++) {
-        const trk_real ta = lbp_total(c, p_assoc, sum, a);
-        for (size_t b = 0; b < c->nd; b++) {
-            const trk_real wb = wdet(c, a, b);
-            MU(a, b) = wb * lbp_nu(c, p_assoc, sum, a, b, wb) / ta;
-        }
-        p_miss[c->w->cl_tracks[a]] = wmiss(c, a) / ta;
+        const size_t t = c->tracks[a];
+        const trk_real ta = lbp_total(c, mu, sum, a);
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
+            mu[k] = wpair(c, t, k) / (1 + sum[c->s->det[k]] - mu[k]) / ta;
+        p_miss[t] = wmiss(c, a) / ta;
     }
     return it;
 }
-#undef MU

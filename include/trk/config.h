@@ -114,6 +114,16 @@
 #ifndef TRK_JPDA_MAX_WORK
 #define TRK_JPDA_MAX_WORK (1L << 22)
 #endif
+/* Gated track-detection pairs one scan may hold (the tracker's joint
+ * association, and trk_jpda_marginals' sparse copy): at least
+ * TRK_MAX_DETECTIONS (one track's gated set), at most 65535. A scan with more
+ * is counted in the tracker's report (n_assoc_overflow, trk/tracker.h). */
+#ifndef TRK_MAX_GATED_PAIRS
+#define TRK_MAX_GATED_PAIRS (2 * TRK_MAX_DETECTIONS < 65535 ? 2 * TRK_MAX_DETECTIONS : 65535)
+#endif
+#if TRK_MAX_GATED_PAIRS < TRK_MAX_DETECTIONS || TRK_MAX_GATED_PAIRS > 65535
+#error "TRK_MAX_GATED_PAIRS must be in TRK_MAX_DETECTIONS..65535 (trk/jpda.h); set -DTRK_MAX_GATED_PAIRS=512"
+#endif
 #ifndef TRK_JPDA_LBP_MAX_ITER
 #define TRK_JPDA_LBP_MAX_ITER 200
 #endif

@@ -11,8 +11,9 @@
  * joint events, P(t <- j) and P(t <- none); each track's row sums to 1.
  *
  * Method. Tracks that share no gated detection are independent: clusters are
- * formed by union-find over the gate matrix, and each cluster is solved on
- * its own. A cluster of n_t tracks and n_d detections is solved EXACTLY by a
+ * formed by union-find over the gated pairs (work in proportion to the pairs,
+ * not to tracks x detections), and each cluster is solved on its own; a
+ * cluster of one track in closed form (its PDA weights). A cluster of n_t tracks and n_d detections is solved EXACTLY by a
  * dynamic programme over the subsets of one side (2^k states, k = n_d or
  * n_t, at most TRK_JPDA_EXACT_BITS), processing the other side one element
  * at a time (the sum over joint events factorises that way; the idea of
@@ -38,32 +39,60 @@
 #define TRK_JPDA_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "trk/config.h"
 #include "trk/kalman.h"
 #include "trk/pda.h"
 #include "trk/types.h"
 
-/* Capacities TRK_JPDA_EXACT_BITS, TRK_JPDA_MAX_WORK, TRK_JPDA_LBP_MAX_ITER:
- * trk/config.h. */
+/* Capacities TRK_JPDA_EXACT_BITS, TRK_JPDA_MAX_WORK, TRK_JPDA_LBP_MAX_ITER,
+ * TRK_MAX_GATED_PAIRS: trk/config.h. */
 
-/* One scan's association weights (see the top of this file). */
+/* One scan's association weights, sparse (the form a tracker has): track t's
+ * gated detections are the pairs [first[t], first[t+1]), each with its
+ * detection det[k] (strictly increasing within a track, < n_dets) and its
+ * ln w_tj = log_w[k] (finite). n_pairs = first[n_tracks] <= TRK_MAX_GATED_PAIRS. */
+struct trk_jpda_pairs {
+    size_t n_tracks;            /* 0 .. TRK_MAX_TRACKS */
+    size_t n_dets;              /* 0 .. TRK_MAX_DETECTIONS */
+    const uint16_t *first;      /* n_tracks + 1 offsets, first[0] = 0 */
+    const uint16_t *det;        /* n_pairs */
+    const trk_real *log_w;      /* n_pairs: ln w_tj */
+    const trk_real *log_w_miss; /* n_tracks: ln w_t0, finite (psi_t P_D P_G < 1) */
+};
+
+/* The solver's caller-owned scratch (uninitialised is fine; nothing persists
+ * between calls): clusters and the exact programme or the LBP sums. */
+struct trk_jpda_solver {
+    union {
+        trk_real dp[(size_t)1 << TRK_JPDA_EXACT_BITS]; /* exact: the subset programme */
+        trk_real det_sum[TRK_MAX_DETECTIONS];          /* LBP: sum of track -> detection messages */
+    } u;
+    trk_real scale[TRK_MAX_TRACKS];               /* per track: max ln w */
+    uint16_t parent[TRK_MAX_TRACKS];              /* union-find over tracks, then each track's cluster */
+    uint16_t tr_first[TRK_MAX_TRACKS + 1];        /* cluster c's tracks: tracks[tr_first[c] ..] */
+    uint16_t det_first[TRK_MAX_TRACKS + 1];       /* and its detections: dets[det_first[c] ..] */
+    uint16_t tracks[TRK_MAX_TRACKS];
+    uint16_t dets[TRK_MAX_DETECTIONS];
+    uint16_t det_local[TRK_MAX_DETECTIONS];       /* first gating track, then index in its cluster */
+};
+
+/* The dense interface's workspace: the solver and the sparse copy of the scan. */
+struct trk_jpda_work {
+    struct trk_jpda_solver solver;
+    uint16_t first[TRK_MAX_TRACKS + 1];
+    uint16_t det[TRK_MAX_GATED_PAIRS];
+    trk_real log_w[TRK_MAX_GATED_PAIRS];
+    trk_real p_pair[TRK_MAX_GATED_PAIRS];
+};
+
+/* One scan's association weights, dense (the reference vectors' form). */
 struct trk_jpda_scan {
     size_t n_tracks;            /* 0 .. TRK_MAX_TRACKS */
     size_t n_dets;              /* 0 .. TRK_MAX_DETECTIONS */
     const trk_real *log_w_miss; /* n_tracks: ln w_t0, finite (psi_t P_D P_G < 1) */
     const trk_real *log_w;      /* n_tracks x n_dets, row-major: ln w_tj; -inf outside the gate */
-};
-
-/* Caller-owned workspace (uninitialised is fine; nothing persists between calls). */
-struct trk_jpda_work {
-    trk_real dp[(size_t)1 << TRK_JPDA_EXACT_BITS];
-    trk_real scale[TRK_MAX_TRACKS];             /* per track: max ln w */
-    trk_real det_sum[TRK_MAX_DETECTIONS];       /* LBP: sum of track -> detection messages */
-    unsigned short parent[TRK_MAX_TRACKS];      /* union-find over tracks */
-    unsigned short cl_tracks[TRK_MAX_TRACKS];   /* members of the cluster being solved */
-    unsigned short cl_dets[TRK_MAX_DETECTIONS];
-    unsigned short det_owner[TRK_MAX_DETECTIONS]; /* first track gating each detection */
 };
 
 struct trk_jpda_report {
@@ -76,13 +105,26 @@ struct trk_jpda_report {
     int lbp_converged;      /* 1 when every LBP cluster met its tolerance */
 };
 
+/* Marginal association probabilities of every gated pair and track, from
+ * the sparse weights: p_pair[k] = P(t <- det[k]) for pair k of track t,
+ * p_miss[t] = P(t <- none); each track's values sum to 1. rep may be NULL.
+ * TRK_E_ARG NULL pointer (arrays may be NULL when their length is 0), or
+ * offsets that do not increase from 0, or detections not strictly
+ * increasing within a track or >= n_dets; TRK_E_CAPACITY n_tracks >
+ * TRK_MAX_TRACKS, n_dets > TRK_MAX_DETECTIONS or n_pairs >
+ * TRK_MAX_GATED_PAIRS; TRK_E_NAN a non-finite weight. Outputs untouched on
+ * error. The tracker's joint association (trk/tracker.h) calls this. */
+TRK_NODISCARD trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_solver *solver,
+                                        trk_real *p_pair, trk_real *p_miss, struct trk_jpda_report *rep);
+
 /* Marginal association probabilities of every track:
  *   p_assoc[t * n_dets + j] = P(t <- j)   (0 outside t's gate)
  *   p_miss[t]               = P(t <- none)
  * rep may be NULL. TRK_E_ARG NULL pointer (arrays may be NULL when their
  * length is 0), TRK_E_CAPACITY n_tracks > TRK_MAX_TRACKS or n_dets >
- * TRK_MAX_DETECTIONS, TRK_E_NAN a NaN weight or a non-finite ln w_t0, TRK_E_RANGE
- * ln w_tj = +inf. Outputs untouched on error. */
+ * TRK_MAX_DETECTIONS or more gated pairs than TRK_MAX_GATED_PAIRS, TRK_E_NAN a
+ * NaN weight or a non-finite ln w_t0, TRK_E_RANGE ln w_tj = +inf. Outputs
+ * untouched on error. The sparse copy into work, then trk_jpda_solve. */
 TRK_NODISCARD trk_status trk_jpda_marginals(const struct trk_jpda_scan *scan, struct trk_jpda_work *work,
                                             trk_real *p_assoc, trk_real *p_miss,
                                             struct trk_jpda_report *rep);
