@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "jpda_impl.h"
 #include "pda_impl.h"
 
 #if TRK_MAX_TRACKS > 65535 || TRK_MAX_DETECTIONS > 65535
@@ -104,21 +105,28 @@ trk_status trk_jpda_existence(trk_real psi, trk_real pd_pg, const trk_real *p_as
                               trk_real *psi_post, trk_real *beta)
 {
     if (!psi_post || !beta || (n_dets > 0 && !p_assoc)) return TRK_E_ARG;
+    for (size_t j = 0; j < n_dets; j++) beta[j + 1] = p_assoc[j];
+    return trk_i_jpda_condition(psi, pd_pg, n_dets, beta + 1, p_miss, beta, psi_post);
+}
+
+trk_status trk_i_jpda_condition(trk_real psi, trk_real pd_pg, size_t n, trk_real *p, trk_real p_miss,
+                                trk_real *beta0, trk_real *psi_post)
+{
     if (!isfinite(psi) || !isfinite(pd_pg) || !isfinite(p_miss)) return TRK_E_NAN;
     if (!(psi > 0 && psi <= 1) || !(pd_pg > 0 && pd_pg <= 1)) return TRK_E_RANGE;
     const trk_real den = 1 - pd_pg * psi;
     if (!(den > 0) && psi < 1) return TRK_E_RANGE;
     trk_real assoc = 0;
-    for (size_t j = 0; j < n_dets; j++) {
-        if (!isfinite(p_assoc[j])) return TRK_E_NAN;
-        assoc += p_assoc[j];
+    for (size_t j = 0; j < n; j++) {
+        if (!isfinite(p[j])) return TRK_E_NAN;
+        assoc += p[j];
     }
     /* P(t exists and took nothing): with psi = 1 the factor is 1 exactly */
     const trk_real miss_exists = psi < 1 ? p_miss * psi * (1 - pd_pg) / den : p_miss;
     const trk_real post = assoc + miss_exists;
     if (!(post > 0)) return TRK_E_RANGE;
-    beta[0] = miss_exists / post;
-    for (size_t j = 0; j < n_dets; j++) beta[j + 1] = p_assoc[j] / post;
+    *beta0 = miss_exists / post;
+    for (size_t j = 0; j < n; j++) p[j] /= post;
     *psi_post = post;
     return TRK_OK;
 }

@@ -58,6 +58,12 @@ trk_status trk_i_pda_update_set_rt(const struct trk_pda *pda, const struct trk_i
     return trk_i_pda_update_set(pda, pr, s, o);
 }
 
+trk_status trk_i_pda_update_beta_rt(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                    trk_real beta0)
+{
+    return trk_i_pda_update_beta(pr, s, beta0);
+}
+
 /* The update for given dimensions; called with constants for the 2-D CV
  * model so the compiler unrolls it, and with run-time dimensions otherwise.
  * inn_in: the caller's innovation, or NULL to compute it here. */
@@ -175,7 +181,7 @@ trk_status trk_pda_update_weights(int nx, const trk_real *h, const trk_real *r, 
     if (!(trk_fabs(sum - 1) <= TRK_REAL_C(1e-3))) return TRK_E_RANGE;
     for (size_t i = 0; i < m * (size_t)nz; i++)
         if (!isfinite(z[i])) return TRK_E_NAN;
-    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS], xn[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
+    trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
     int sel_idx[TRK_MAX_MEAS];
     const int *sel = trk_i_h_select(nx, nz, h, sel_idx) ? sel_idx : NULL;
     trk_i_mul_ht(nx, nx, nz, p, h, sel, pht);
@@ -183,10 +189,5 @@ trk_status trk_pda_update_weights(int nx, const trk_real *h, const trk_real *r, 
     /* the combination only reads the weights (s->w is not const for the
      * update that normalises them in place) */
     const struct trk_i_pda_set set = {m, m, m, z, (trk_real *)(uintptr_t)(beta + 1), NULL};
-    trk_i_pda_combine(&pred, &set, beta[0], xn, acc);
-    const trk_status st = trk_i_pda_check(nx, xn, acc);
-    if (st != TRK_OK) return st;
-    for (int a = 0; a < nx; a++) x[a] = xn[a];
-    for (int a = 0; a < nx * nx; a++) p[a] = acc[a];
-    return TRK_OK;
+    return trk_i_pda_update_beta_rt(&pred, &set, beta[0]);
 }

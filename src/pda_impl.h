@@ -275,28 +275,29 @@ TRK_INLINE trk_status trk_i_pda_check(int nx, const trk_real *x, const trk_real 
     return !finite ? TRK_E_NAN : positive ? TRK_OK : TRK_E_NOT_SPD;
 }
 
-/* One track's PDA over its gated set *s (CONVENTIONS "PDA"): lambda (given,
- * or m_G / V_G), beta (into s->w), and the posterior written over the
- * prediction pr->x, pr->p, with *o. With m_G = 0 the prediction is the
- * posterior (left as the caller made it). TRK_E_NAN / TRK_E_NOT_SPD for a
- * posterior that is not finite or not positive definite (its Cholesky
- * fails): pr->x, pr->p are then untouched. */
-TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
-                                           struct trk_i_pda_set *s, struct trk_i_pda_out *o)
+/* V_G of the shared S and the clutter density (given, or m_G / V_G) into *o,
+ * with beta0 = 1 and no detection weight yet. */
+TRK_INLINE void trk_i_pda_clutter(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                  const struct trk_i_pda_set *s, struct trk_i_pda_out *o)
 {
-    const int nx = pr->nx;
     o->gate_volume = trk_i_gate_volume(pr->nz, pda->gamma, pr->inn->sqrt_det_s, pr->inn->log_det_s);
     o->lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->params.clutter_density
                                                              : (trk_real)s->m_gated / o->gate_volume;
     o->beta0 = 1;
     o->log_sum_e = -(trk_real)INFINITY;
-    if (s->m_gated == 0) { /* nothing to associate (also nonparametric m_G = 0): x, P = prediction */
-        for (size_t i = 0; i < s->n; i++) s->w[i] = 0;
-        return TRK_OK;
-    }
+}
+
+/* The posterior for given weights (s->w = beta_i, beta0), checked, written
+ * over the prediction pr->x, pr->p: TRK_E_NAN / TRK_E_NOT_SPD for a
+ * posterior that is not finite or not positive definite (its factorisation
+ * fails), pr->x, pr->p then untouched. The PDA's last stage, and the whole
+ * of a joint (JPDA) update, whose weights come from the joint events. */
+TRK_INLINE trk_status trk_i_pda_update_beta(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                            trk_real beta0)
+{
+    const int nx = pr->nx;
     trk_real x[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
-    o->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, o->lambda), s->n, s->w, &o->log_sum_e);
-    trk_i_pda_combine(pr, s, o->beta0, x, acc);
+    trk_i_pda_combine(pr, s, beta0, x, acc);
     trk_status st = trk_i_pda_check(nx, x, acc);
     if (st == TRK_OK) st = trk_i_spd(nx, acc); /* a factorisation that can fail (out of line) */
     if (st != TRK_OK) return st;
@@ -305,9 +306,28 @@ TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const stru
     return TRK_OK;
 }
 
-/* The same, out of line with run-time dimensions (pda.c). */
+/* One track's PDA over its gated set *s (CONVENTIONS "PDA"): lambda (given,
+ * or m_G / V_G), beta (into s->w), and the posterior written over the
+ * prediction pr->x, pr->p, with *o. With m_G = 0 the prediction is the
+ * posterior (left as the caller made it). Statuses as
+ * trk_i_pda_update_beta. */
+TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                           struct trk_i_pda_set *s, struct trk_i_pda_out *o)
+{
+    trk_i_pda_clutter(pda, pr, s, o);
+    if (s->m_gated == 0) { /* nothing to associate (also nonparametric m_G = 0): x, P = prediction */
+        for (size_t i = 0; i < s->n; i++) s->w[i] = 0;
+        return TRK_OK;
+    }
+    o->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, o->lambda), s->n, s->w, &o->log_sum_e);
+    return trk_i_pda_update_beta(pr, s, o->beta0);
+}
+
+/* The same two, out of line with run-time dimensions (pda.c). */
 trk_status trk_i_pda_update_set_rt(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
                                    struct trk_i_pda_set *s, struct trk_i_pda_out *o);
+trk_status trk_i_pda_update_beta_rt(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                    trk_real beta0);
 
 /* What callers call: inlined where speed counts (the caller's constant
  * dimensions unroll it), the one out-of-line copy in size-optimised builds
@@ -319,6 +339,16 @@ TRK_INLINE trk_status trk_i_pda_run(const struct trk_pda *pda, const struct trk_
     return trk_i_pda_update_set_rt(pda, pr, s, o);
 #else
     return trk_i_pda_update_set(pda, pr, s, o);
+#endif
+}
+
+TRK_INLINE trk_status trk_i_pda_run_beta(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                         trk_real beta0)
+{
+#if TRK_SIZE_OPT
+    return trk_i_pda_update_beta_rt(pr, s, beta0);
+#else
+    return trk_i_pda_update_beta(pr, s, beta0);
 #endif
 }
 

@@ -8,16 +8,22 @@
 
 #include "tracker_impl.h"
 #include "tracker_initiate_impl.h"
+#include "tracker_joint_impl.h"
 #include "tracker_update_impl.h"
 
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
-static void update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
+static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
+static void update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t joint_k,
                          struct trk_scan_report *rep);
 static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
                        struct trk_scan_report *rep);
 static void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep);
+
+/* update_track's joint_k of a track updated by its own PDA */
+#define JOINT_NONE ((size_t)-1)
 
 static int is_live(const struct trk_track *tr)
 {
@@ -25,7 +31,8 @@ static int is_live(const struct trk_track *tr)
 }
 
 /* Check the scan; load its detections; per live track (confirmed ones
- * first), update (predict, gate, PDA) then step its test; merge; initiate. */
+ * first), update (predict, gate, PDA or joint association) then step its
+ * test; merge; initiate. */
 trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,
                                     struct trk_scan_report *report)
 {
@@ -38,12 +45,8 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     t->scan_no++;
     free_terminated(t);
     load_detections(t, scan, &rep);
-    /* confirmed tracks first: a tentative track may not use the detections
-     * in a confirmed track's gate (it would become its duplicate) */
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
-        if (t->track[i].status == TRK_TRACK_CONFIRMED) update_track(t, &t->track[i], scan, &rep);
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
-        if (t->track[i].status == TRK_TRACK_TENTATIVE) update_track(t, &t->track[i], scan, &rep);
+    if (t->params.association == TRK_ASSOC_JOINT) update_joint(t, scan, &rep);
+    else update_each(t, scan, &rep);
     if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
     initiate(t, scan, &rep);
     t->last_time_us = scan->time_us;
@@ -167,14 +170,43 @@ static int over_covariance_bound(const struct trk_tracker *t, const struct trk_t
     return bound > 0 && tr->p[P(X, X)] + tr->p[P(Y, Y)] > bound;
 }
 
-/* One live track: update (predict, gate, PDA), the covariance bound, count
- * the look, step its test. */
-static void update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+/* Per-track PDA: confirmed tracks first, since a tentative track may not
+ * use the detections in a confirmed track's gate (it would become its
+ * duplicate). */
+static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
+{
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+        if (t->track[i].status == TRK_TRACK_CONFIRMED) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+        if (t->track[i].status == TRK_TRACK_TENTATIVE) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
+}
+
+/* Joint association (tracker_joint_impl.h): gate every live track, solve
+ * the clusters, then update each track in the order it was gated; a track
+ * left out of the joint problem is updated by its own PDA. */
+static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
+{
+    joint_gate(t, scan, rep);
+    joint_solve(t, rep);
+    size_t k = 0;
+    for (int confirmed = 1; confirmed >= 0; confirmed--)
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            if (t->track[i].status != (confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE)) continue;
+            const int joint = k < t->ws.n_joint && t->ws.joint_slot[k] == i;
+            update_track(t, &t->track[i], scan, joint ? k++ : JOINT_NONE, rep);
+        }
+}
+
+/* One live track: update (predict, gate, PDA; or, as joint track joint_k,
+ * the joint association's update), the covariance bound, count the look,
+ * step its test. */
+static void update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t joint_k,
                          struct trk_scan_report *rep)
 {
     struct trk_look look;
     rep->n_tracks_updated++;
-    if (track_update(t, tr, scan, &look) != 0) {
+    if ((joint_k == JOINT_NONE ? track_update(t, tr, scan, &look)
+                               : track_update_joint(t, tr, scan, joint_k, &look)) != 0) {
         end_track(tr, TRK_END_NUMERICAL, rep);
         return;
     }

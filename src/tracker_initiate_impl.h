@@ -374,7 +374,7 @@ static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n)
     }
     const trk_real scale = (trk_real)(n - 1) / (hi - lo); /* inf when all equal: skipped */
     if (hi > lo && isfinite(scale)) {
-        uint16_t *count = t->ws.sort_count, *tmp = t->ws.sort_tmp;
+        uint16_t *count = t->ws.u.sort.count, *tmp = t->ws.u.sort.tmp;
         for (size_t b = 0; b <= n; b++) count[b] = 0;
         for (size_t i = 0; i < n; i++) count[(size_t)((x[idx[i]] - lo) * scale) + 1]++; /* bucket <= n - 1 */
         for (size_t b = 1; b <= n; b++) count[b] = (uint16_t)(count[b] + count[b - 1]);

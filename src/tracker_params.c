@@ -149,6 +149,18 @@ static trk_status check_init(const struct trk_init_params *in, const char **fiel
     return in->max_gap_scans >= 1 ? TRK_OK : refuse(field, "init.max_gap_scans", TRK_E_RANGE);
 }
 
+/* Joint association weighs events by 1 / lambda: parametric clutter with a
+ * density > 0 at every sensor. */
+static trk_status check_association(const struct trk_tracker_params *p, const char **field)
+{
+    if (p->association == TRK_ASSOC_PDA) return TRK_OK;
+    if (p->association != TRK_ASSOC_JOINT) return refuse(field, "association", TRK_E_ARG);
+    if (p->clutter != TRK_CLUTTER_PARAMETRIC) return refuse(field, "association", TRK_E_UNSUPPORTED);
+    for (unsigned s = 0; s < p->n_sensors; s++)
+        if (!(p->sensor[s].clutter_density_per_m2 > 0)) return refuse(field, "association", TRK_E_UNSUPPORTED);
+    return TRK_OK;
+}
+
 /* The scalars (gate_prob with the sensors' PDA). */
 static trk_status check_scalars(const struct trk_tracker_params *p, const char **field)
 {
@@ -249,6 +261,7 @@ trk_status trk_i_tracker_check(const struct trk_tracker_params *p, const char **
     if (st != TRK_OK) return st;
     for (unsigned s = 0; s < p->n_sensors; s++)
         if ((st = check_sensor(p, s, field, b)) != TRK_OK) return st;
+    if ((st = check_association(p, field)) != TRK_OK) return st;
     if (p->track_visibility && (st = trk_visibility_model_init(b->vis, &p->visibility)) != TRK_OK)
         return refuse(field, "visibility", st);
     st = trk_i_tests_init(p, b->confirm, b->term);

@@ -24,13 +24,13 @@ struct pred {
 
 static trk_status predict(const struct trk_tracker *t, const struct trk_track *tr,
                           const struct trk_scan *scan, struct pred *pr);
-static void gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
-                 const struct trk_i_pda_pred *pp, struct trk_i_pda_set *set);
+static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set);
 static trk_status update_visibility(const struct trk_tracker *t, const struct trk_pda *pda,
                                     const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
                                     struct trk_visibility *vis);
 static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
-                   const struct trk_i_pda_set *set, const trk_real *x, const trk_real *p);
+                   const struct trk_i_pda_set *set, const uint16_t *cand, const trk_real *x, const trk_real *p);
 static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                        const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look);
 
@@ -46,7 +46,7 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
                                       pr.x, pr.p, pr.pht, &pr.inn};
     struct trk_i_pda_set set;
-    gate(t, tr, scan, &pp, &set);
+    (void)gate(t, tr, scan, &pp, 0, &set); /* one track's set fits: TRK_MAX_GATED_PAIRS >= TRK_MAX_DETECTIONS */
     struct trk_i_pda_out out;
     struct trk_visibility vis = tr->vis;
     if (trk_i_pda_run(pda, &pp, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
@@ -57,7 +57,7 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     /* accepted: from here on the track changes */
     tr->vis = vis;
     tr->beta0_last = out.beta0;
-    commit(t, tr, scan, &set, pr.x, pr.p);
+    commit(t, tr, scan, &set, t->ws.cand, pr.x, pr.p);
     build_look(t, tr, scan, &pr.inn, &out, look);
     return 0;
 }
@@ -84,7 +84,10 @@ struct gate {
     const struct trk_pda *pda;
     trk_real gamma;            /* the gate d2 <= gamma */
     trk_real g;                /* and the exclusion zone d2 <= g */
-    struct trk_i_pda_set *set; /* the gated set being filled */
+    struct trk_i_pda_set *set; /* the gated set being filled, */
+    uint16_t *cand;            /* its detections' workspace indices */
+    size_t cap;                /* room for at most cap of them */
+    int full;                  /* one more was gated */
 };
 
 /* Workspace marks (ws.used) of a detection: no track gated it, a
@@ -105,13 +108,17 @@ static void gate_ellipse(struct trk_tracker *t, struct gate *gt, size_t j, const
         return;
     }
     struct trk_i_pda_set *set = gt->set;
+    if (set->n == gt->cap) {
+        gt->full = 1;
+        return;
+    }
     const size_t n = set->n++;
-    t->ws.cand[n] = (uint16_t)j;
-    t->ws.w[n] = trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]);
-    t->ws.z[NZ * n + ZX] = t->ws.x[j];
-    t->ws.z[NZ * n + ZY] = t->ws.y[j];
+    gt->cand[n] = (uint16_t)j;
+    set->w[n] = trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]);
+    t->ws.u.set.z[NZ * n + ZX] = t->ws.x[j];
+    t->ws.u.set.z[NZ * n + ZY] = t->ws.y[j];
     if (r_j)
-        for (int i = 0; i < NZ * NZ; i++) t->ws.r_own[NZ * NZ * (n - set->n_shared) + i] = r_j[i];
+        for (int i = 0; i < NZ * NZ; i++) t->ws.u.set.r_own[NZ * NZ * (n - set->n_shared) + i] = r_j[i];
     else
         set->n_shared = n + 1;
 }
@@ -130,29 +137,31 @@ static int own_box(const struct trk_tracker *t, const struct trk_scan *scan, con
     return trk_i_pda_factor(NZ, s, l_inv, log_det) == TRK_OK;
 }
 
-/* Gate the valid detections into the track's gated set (workspace cand, z,
- * w = ln e_i, r_own): the bounding box of the ellipse d2 <= g (cheap: the
- * detections with the sensor's covariance share S and its box), then the
- * ellipse (gate_ellipse). g = init_exclusion_d2 for a confirmed track, else
- * gamma. The set holds the shared-covariance detections first (n_shared),
- * then the own-covariance ones. */
-static void gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
-                 const struct trk_i_pda_pred *pp, struct trk_i_pda_set *set)
+/* Gate the valid detections into the track's gated set (workspace pairs
+ * cand, w = ln e_i from pair off on, z and r_own from 0): the bounding box of
+ * the ellipse d2 <= g (cheap: the detections with the sensor's covariance
+ * share S and its box), then the ellipse (gate_ellipse). g =
+ * init_exclusion_d2 for a confirmed track, else gamma. The set holds the
+ * shared-covariance detections first (n_shared), then the own-covariance
+ * ones, each in workspace order. 1 when the pairs from off on could not hold
+ * the whole set (the set is then cut), else 0. */
+static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set)
 {
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
     const struct trk_innovation *inn = pp->inn;
     const trk_real excl = t->params.init_exclusion_d2;
     struct gate gt = {pda, pda->gamma, tr->status == TRK_TRACK_CONFIRMED && excl > pda->gamma ? excl : pda->gamma,
-                      set};
+                      set, t->ws.cand + off, TRK_MAX_GATED_PAIRS - off, 0};
     const trk_real wx = trk_sqrt(gt.g * inn->s[S(ZX, ZX)]), wy = trk_sqrt(gt.g * inn->s[S(ZY, ZY)]);
     const trk_real zx = inn->z_pred[ZX], zy = inn->z_pred[ZY];
     const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;
     const uint8_t *used = t->ws.used;
     const int tentative = tr->status == TRK_TRACK_TENTATIVE;
     set->n = set->n_shared = 0;
-    set->z = t->ws.z;
-    set->w = t->ws.w;
-    set->r_own = t->ws.r_own;
+    set->z = t->ws.u.set.z;
+    set->w = t->ws.w + off;
+    set->r_own = t->ws.u.set.r_own;
     for (size_t j = 0; j < n_shared; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
         if (trk_fabs(nu[ZX]) <= wx && trk_fabs(nu[ZY]) <= wy && !(tentative && used[j] == USED_CONFIRMED))
@@ -165,6 +174,7 @@ static void gate(struct trk_tracker *t, const struct trk_track *tr, const struct
         if (own_box(t, scan, pp, j, gt.g, nu, r_j, l_inv, &log_det)) gate_ellipse(t, &gt, j, nu, l_inv, log_det, r_j);
     }
     set->m_gated = set->n;
+    return gt.full;
 }
 
 /* Kennedy eqs 21-24 with the PDA weights: ln sum_i (g_D,i / rho) l_i =
@@ -183,11 +193,11 @@ static trk_status update_visibility(const struct trk_tracker *t, const struct tr
 
 /* The posterior into the track; its gated detections start no track. */
 static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
-                   const struct trk_i_pda_set *set, const trk_real *x, const trk_real *p)
+                   const struct trk_i_pda_set *set, const uint16_t *cand, const trk_real *x, const trk_real *p)
 {
     const uint8_t mark = tr->status == TRK_TRACK_CONFIRMED ? USED_CONFIRMED : USED_NO_START;
     for (size_t i = 0; i < set->n; i++)
-        if (t->ws.used[t->ws.cand[i]] < mark) t->ws.used[t->ws.cand[i]] = mark;
+        if (t->ws.used[cand[i]] < mark) t->ws.used[cand[i]] = mark;
     for (int i = 0; i < NX; i++) tr->x[i] = x[i];
     for (int i = 0; i < NX * NX; i++) tr->p[i] = p[i];
     tr->time_us = scan->time_us;

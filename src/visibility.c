@@ -49,6 +49,41 @@ static trk_real log_add(trk_real a, trk_real b)
     return a + trk_log1p(trk_exp(b - a));
 }
 
+trk_real trk_visibility_predict(const struct trk_visibility_model *m, const struct trk_visibility *v)
+{
+    /* eq 1: Markov prediction */
+    return m->params.delta_stay * v->pv + m->params.delta_become * (1 - v->pv);
+}
+
+/* The scan's posterior pv into v, then eq 2 and the decision. */
+static void commit(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pv_pred, trk_real pv)
+{
+    const struct trk_visibility_params *p = &m->params;
+    /* eq 2: smoothed confidence */
+    const trk_real pcv = (1 - p->omega_c) * pv + p->omega_c * v->pcv;
+    v->pv_pred = pv_pred;
+    v->pv = pv;
+    v->pcv = pcv;
+    /* sticky decision (visibility.h): CONTINUE -> CONFIRM -> TERMINATE or
+     * CONTINUE -> TERMINATE; TERMINATE is final (p_term < p_con: at most one
+     * of the two rules fires in a scan) */
+    if (v->decision != TRK_DECISION_TERMINATE) {
+        if (pcv < p->p_term) v->decision = TRK_DECISION_TERMINATE;
+        else if (v->decision == TRK_DECISION_CONTINUE && pcv >= p->p_con) v->decision = TRK_DECISION_CONFIRM;
+    }
+    if (v->scans < INT_MAX) v->scans++;
+}
+
+trk_status trk_visibility_update_posterior(const struct trk_visibility_model *m, struct trk_visibility *v,
+                                           trk_real pv_post)
+{
+    if (!m || !v) return TRK_E_ARG;
+    if (!isfinite(pv_post)) return TRK_E_NAN;
+    if (!(pv_post >= 0 && pv_post <= 1)) return TRK_E_RANGE;
+    commit(m, v, trk_visibility_predict(m, v), pv_post);
+    return TRK_OK;
+}
+
 trk_status trk_visibility_update_log(const struct trk_visibility_model *m, struct trk_visibility *v,
                                      trk_real pd, trk_real pg, trk_real log_sum)
 {
@@ -57,9 +92,7 @@ trk_status trk_visibility_update_log(const struct trk_visibility_model *m, struc
      * certain detection: Lam = inf, pv = 1 unless pv_pred = 0 */
     if (!isfinite(pd) || !isfinite(pg) || isnan(log_sum)) return TRK_E_NAN;
     if (!(pd > 0 && pd <= 1) || !(pg > 0 && pg <= 1)) return TRK_E_RANGE;
-    const struct trk_visibility_params *p = &m->params;
-    /* eq 1: Markov prediction */
-    const trk_real pv_pred = p->delta_stay * v->pv + p->delta_become * (1 - v->pv);
+    const trk_real pv_pred = trk_visibility_predict(m, v);
     /* ln Lam = ln((1 - pd pg) + pd e^log_sum) */
     const trk_real miss = 1 - pd * pg;
     const trk_real ln_det = trk_log(pd) + log_sum;
@@ -74,19 +107,7 @@ trk_status trk_visibility_update_log(const struct trk_visibility_model *m, struc
         const trk_real z = trk_log(pv_pred) - trk_log1p(-pv_pred) + ln_lam;
         pv = z >= 0 ? 1 / (1 + trk_exp(-z)) : trk_exp(z) / (1 + trk_exp(z));
     }
-    /* eq 2: smoothed confidence */
-    const trk_real pcv = (1 - p->omega_c) * pv + p->omega_c * v->pcv;
-    v->pv_pred = pv_pred;
-    v->pv = pv;
-    v->pcv = pcv;
-    /* sticky decision (visibility.h): CONTINUE -> CONFIRM -> TERMINATE or
-     * CONTINUE -> TERMINATE; TERMINATE is final (p_term < p_con: at most one
-     * of the two rules fires in a scan) */
-    if (v->decision != TRK_DECISION_TERMINATE) {
-        if (pcv < p->p_term) v->decision = TRK_DECISION_TERMINATE;
-        else if (v->decision == TRK_DECISION_CONTINUE && pcv >= p->p_con) v->decision = TRK_DECISION_CONFIRM;
-    }
-    if (v->scans < INT_MAX) v->scans++;
+    commit(m, v, pv_pred, pv);
     return TRK_OK;
 }
 

@@ -104,7 +104,7 @@ TRK_NODISCARD trk_status trk_pda_update_inn(const struct trk_pda *pda, int nx, c
  * one of trk_pda_update (CONVENTIONS "PDA"), so a detection with weight 0
  * does not enter. TRK_E_ARG, TRK_E_CAPACITY m > TRK_MAX_DETECTIONS,
  * TRK_E_NAN / TRK_E_RANGE bad weights or z, TRK_E_NOT_SPD a posterior
- * variance <= 0; x and P untouched on error. */
+ * that is not positive definite; x and P untouched on error. */
 TRK_NODISCARD trk_status trk_pda_update_weights(int nx, const trk_real *h, const trk_real *r, trk_real *x,
                                                 trk_real *p, const struct trk_innovation *inn, size_t m,
                                                 const trk_real *z, const trk_real *beta);

@@ -16,10 +16,20 @@
  *   2. validate each detection (finite position, SPD covariance); bad ones are
  *      counted in the report and skipped, the rest of the scan is processed
  *   3. every live track: predict to the scan time, gate (a cheap bounding box
- *      of the gate ellipse first, then d2 <= gamma), PDA update over every
- *      detection in its gate (a detection may serve several tracks), its
- *      existence (IPDA), the covariance bound, then its confirmation test
- *      (tentative) or termination test (confirmed)
+ *      of the gate ellipse first, then d2 <= gamma), then the association
+ *      (params.association):
+ *      - TRK_ASSOC_PDA: each track's own PDA over every detection in its
+ *        gate (a detection may serve several tracks; confirmed tracks go
+ *        first and a tentative track may not use a detection a confirmed
+ *        track gated) and its existence by IPDA;
+ *      - TRK_ASSOC_JOINT: JIPDA (trk/jpda.h): the gated pairs of all live
+ *        tracks form clusters of tracks that share detections; each
+ *        cluster's joint events give every track its association weights
+ *        and posterior existence; each track's state is the PDA combination
+ *        with those weights. A track alone in its cluster gets exactly its
+ *        PDA/IPDA update;
+ *      then the covariance bound, then its confirmation test (tentative) or
+ *      termination test (confirmed)
  *   4. tracks that have converged onto one target (PDA tracks sharing
  *      detections do) are merged: of two live tracks whose 4-D states are
  *      within merge_gate_d2, the confirmed (else the one with more hits,
@@ -51,6 +61,7 @@
 #include "trk/clutter_test.h"
 #include "trk/confirm_mn.h"
 #include "trk/confirm_sprt.h"
+#include "trk/jpda.h"
 #include "trk/kalman.h"
 #include "trk/pda.h"
 #include "trk/term_kn.h"
@@ -257,6 +268,14 @@ struct trk_init_params {
     trk_real birth_density_per_m2;    /* new targets per m^2 per scan, >= 0 (0: pv0) */
 };
 
+/* How the live tracks share a scan's detections (step 3 above). */
+enum trk_assoc_method {
+    TRK_ASSOC_PDA = 0,  /* per-track PDA (IPDA existence) */
+    TRK_ASSOC_JOINT = 1 /* joint: JPDA, or JIPDA with track_visibility (the track's
+                           existence trk_track.vis.pv is then the JIPDA existence);
+                           needs parametric clutter with a density > 0 per sensor */
+};
+
 struct trk_tracker_params {
     unsigned n_sensors;                               /* 1 .. TRK_MAX_SENSORS */
     struct trk_sensor_params sensor[TRK_MAX_SENSORS];
@@ -293,6 +312,7 @@ struct trk_tracker_params {
                                                          trace of its position covariance
                                                          > ratio^2 trace R of the scan's
                                                          sensor; >= 0, 0 = no bound */
+    enum trk_assoc_method association;                /* per-track PDA or joint (JIPDA) */
 };
 
 /* Tests and their inputs per scan (CONVENTIONS "Track confirmation and
@@ -387,6 +407,12 @@ struct trk_scan_report {
     uint32_t n_covariance;          /* tracks ended by the covariance bound */
     uint32_t n_candidates;          /* initiation candidates held after the scan */
     uint32_t n_candidates_dropped;  /* unexplained detections the store could not hold */
+    /* joint association (TRK_ASSOC_JOINT) */
+    uint32_t n_clusters;            /* clusters of tracks sharing detections */
+    uint32_t n_clusters_approx;     /* ... solved by loopy belief propagation (jpda.h), not exactly */
+    uint32_t largest_cluster;       /* tracks in the largest cluster */
+    uint32_t n_assoc_overflow;      /* tracks left out of the joint problem, updated by their own
+                                       PDA: the scan's gated pairs exceeded TRK_MAX_GATED_PAIRS */
 };
 
 /* ---------------------------------------------------------------- tracker */
@@ -433,18 +459,35 @@ struct trk_tracker {
         trk_real log_lr[TRK_MAX_DETECTIONS];                   /* amplitude ln l^a */
         uint16_t src[TRK_MAX_DETECTIONS];                      /* index in the scan */
         uint8_t used[TRK_MAX_DETECTIONS];                      /* gated by some track */
-        uint16_t cand[TRK_MAX_DETECTIONS];                     /* one track's gated set */
-        trk_real w[TRK_MAX_DETECTIONS];                        /* its weights */
-        trk_real z[TRK_CV2_NZ * TRK_MAX_DETECTIONS];           /* its detections */
-        trk_real r_own[TRK_CV2_NZ * TRK_CV2_NZ * TRK_MAX_DETECTIONS]; /* their own R_j */
+        uint16_t cand[TRK_MAX_GATED_PAIRS];                    /* gated pairs: one track's set
+                                                                  (per-track PDA), or every
+                                                                  track's (joint) */
+        trk_real w[TRK_MAX_GATED_PAIRS];                       /* their weights */
+        uint16_t joint_slot[TRK_MAX_TRACKS];                   /* joint: the slot of joint track k, */
+        uint16_t pair_first[TRK_MAX_TRACKS + 1];               /* its pairs [pair_first[k], k + 1) */
+        trk_real miss[TRK_MAX_TRACKS];                         /* ln w_k0, then P(k <- none) */
+        size_t n_joint;
         trk_real amp_db[2 * TRK_MAX_DETECTIONS];               /* amplitudes (dB) of the
                                                                   detections that have one,
                                                                   twice over: the others of
                                                                   entry k are k+1 .. k+n-1 */
         int16_t amp_pos[TRK_MAX_DETECTIONS];                   /* index in amp_db, -1 none */
-        uint16_t sort_tmp[TRK_MAX_DETECTIONS];                 /* initiation's x-order sort */
-        uint16_t sort_count[TRK_MAX_DETECTIONS + 1];
         size_t n_amp;
+        union {                                                /* used one at a time: */
+            struct {                                           /* one track's update: */
+                trk_real z[TRK_CV2_NZ * TRK_MAX_DETECTIONS];   /* its gated detections */
+                trk_real r_own[TRK_CV2_NZ * TRK_CV2_NZ * TRK_MAX_DETECTIONS]; /* their own R_j */
+            } set;
+            struct {                                           /* the joint marginals: */
+                struct trk_jpda_solver solver;
+                trk_real p_pair[TRK_MAX_GATED_PAIRS];
+                trk_real p_miss[TRK_MAX_TRACKS];
+            } joint;
+            struct {                                           /* initiation's x-order sort */
+                uint16_t tmp[TRK_MAX_DETECTIONS];
+                uint16_t count[TRK_MAX_DETECTIONS + 1];
+            } sort;
+        } u;
     } ws;
 };
 
@@ -455,7 +498,8 @@ struct trk_tracker {
  *   "init_speed_sigma_mps", "max_dt_s", "merge_gate_d2", "init_exclusion_d2",
  *   "track_visibility", "visibility" (its model refused the parameters),
  *   "init.method", "init.max_speed_mps", "init.max_gap_scans",
- *   "init.birth_density_per_m2", "max_pos_sigma_ratio",
+ *   "init.birth_density_per_m2", "max_pos_sigma_ratio", "association"
+ *   (unknown, or joint without parametric clutter of density > 0),
  *   "sensor[i].pd", "sensor[i].meas_cov_m2", "sensor[i].clutter_density_per_m2",
  *   "sensor[i].use_amplitude", "sensor[i].amplitude" (no usable model, or its
  *   P_D), i the sensor index;

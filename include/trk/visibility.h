@@ -95,6 +95,20 @@ TRK_NODISCARD trk_status trk_visibility_update_log(const struct trk_visibility_m
                                                    struct trk_visibility *v, trk_real pd,
                                                    trk_real pg, trk_real log_sum);
 
+/* Eq 1: the predicted visibility pv_pred = Delta pv + Delta_bar (1 - pv) of
+ * the coming scan (m and v not NULL): the existence psi a joint association
+ * weighs the track's events with (trk/jpda.h). */
+trk_real trk_visibility_predict(const struct trk_visibility_model *m, const struct trk_visibility *v);
+
+/* One scan whose posterior pv_post in [0, 1] was formed elsewhere (the
+ * JIPDA existence of trk_jpda_existence, from pv_pred = trk_visibility_predict):
+ * pv_pred, pv, pcv (eq 2) and the decision as trk_visibility_update_log.
+ * With the track alone in its cluster, JIPDA's posterior is the pv of
+ * trk_visibility_update_log (CONVENTIONS). TRK_E_ARG NULL m or v, TRK_E_NAN
+ * non-finite pv_post, TRK_E_RANGE outside [0, 1]; *v untouched on error. */
+TRK_NODISCARD trk_status trk_visibility_update_posterior(const struct trk_visibility_model *m,
+                                                         struct trk_visibility *v, trk_real pv_post);
+
 /* The step's log_sum from the n gated detections: spatial likelihoods
  * gd[i] >= 0 and the clutter density rho > 0 (same units), and
  * log_la[i] = ln l_i (NULL: no amplitude, l_i = 1), by log-sum-exp
