@@ -32,6 +32,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
     p->max_pos_sigma_ratio = 20;
+    p->association = TRK_ASSOC_JOINT; /* JIPDA: README "Joint association" */
     p->merge_gate_d2 = 4;
     p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
                                                               detections */

@@ -107,6 +107,13 @@ static void test_set_keys(void **state)
     tcfg_params(&c, &pp);
     assert_true(p->sensor[0].meas_cov_m2[0] == 9 && p->sensor[0].meas_cov_m2[1] == 0 &&
                 p->sensor[0].meas_cov_m2[2] == 9);
+    /* the default joint association needs parametric clutter: refused,
+     * naming the field, until the per-track PDA is chosen */
+    assert_int_equal(tcfg_check(&c, err, sizeof err), -1);
+    assert_non_null(strstr(err, "association"));
+    assert_int_equal(set("association", "pda"), 0);
+    tcfg_params(&c, &pp);
+    assert_int_equal(p->association, TRK_ASSOC_PDA);
     assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
     /* pending methods' parameters are parsed into their module structs */
     assert_int_equal(set("confirm.sprt.alpha", "0.05"), 0);

@@ -106,10 +106,10 @@
  * the work stays under TRK_JPDA_MAX_WORK multiply-adds; beyond, loopy belief
  * propagation runs at most TRK_JPDA_LBP_MAX_ITER iterations. */
 #ifndef TRK_JPDA_EXACT_BITS
-#define TRK_JPDA_EXACT_BITS 10
+#define TRK_JPDA_EXACT_BITS 9 /* 2 KB of float workspace in the tracker; 10 doubles it */
 #endif
 #if TRK_JPDA_EXACT_BITS < 1 || TRK_JPDA_EXACT_BITS > 16
-#error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=10"
+#error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=9"
 #endif
 #ifndef TRK_JPDA_MAX_WORK
 #define TRK_JPDA_MAX_WORK (1L << 22)

@@ -193,6 +193,7 @@ static const char *const CONFIRM_NAMES[] = {"mn", "sprt", "clutter_density", "cl
                                             "visibility", "existence", NULL};
 static const char *const TERM_NAMES[] = {"kn", "page", "shiryaev", "visibility", "existence", NULL};
 static const char *const INIT_NAMES[] = {"single_point", "two_point", NULL}; /* enum trk_init_method */
+static const char *const ASSOC_NAMES[] = {"pda", "joint", NULL};               /* enum trk_assoc_method */
 static const char *const SPRT_MODEL_NAMES[] = {"fixed_pd", "hmm", NULL};
 static const char *const EVENTS_NAMES[] = {"complete", "paper", NULL}; /* enum trk_event_model */
 static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
@@ -289,6 +290,11 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     }
     if (strcmp(key, "merge_gate_d2") == 0) return get_real(v, R_NONNEG, &p->merge_gate_d2, err, n);
     if (strcmp(key, "init_exclusion_d2") == 0) return get_real(v, R_NONNEG, &p->init_exclusion_d2, err, n);
+    if (strcmp(key, "association") == 0) {
+        if (get_name(v, ASSOC_NAMES, &e, err, n) != 0) return -1;
+        p->association = e ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA;
+        return 0;
+    }
     /* initiation and the covariance bound */
     if (strcmp(key, "init.method") == 0) {
         if (get_name(v, INIT_NAMES, &e, err, n) != 0) return -1;
@@ -681,6 +687,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     fprintf(f, "max_tentative_scans = %lu\n", (unsigned long)p->max_tentative_scans);
     put_num(f, "merge_gate_d2", (double)p->merge_gate_d2);
     put_num(f, "init_exclusion_d2", (double)p->init_exclusion_d2);
+    fprintf(f, "association = %s\n", ASSOC_NAMES[p->association == TRK_ASSOC_JOINT]);
     fprintf(f, "init.method = %s\n", INIT_NAMES[p->init.method == TRK_INIT_TWO_POINT]);
     put_num(f, "init.max_speed_mps", (double)p->init.max_speed_mps);
     fprintf(f, "init.max_gap_scans = %lu\n", (unsigned long)p->init.max_gap_scans);
@@ -758,6 +765,7 @@ void tcfg_help(FILE *f)
             "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
+            "  association = pda|joint           per-track PDA, or joint association (JPDA / JIPDA) (pda)\n"
             "  init.method = two_point|single_point   how tracks start (two_point)\n"
             "    init.max_speed_mps               two-point velocity gate, > 0 (15)\n"
             "    init.max_gap_scans               candidate lifetime in scans, >= 1 (2)\n"

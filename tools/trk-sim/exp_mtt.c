@@ -56,6 +56,7 @@
 #define MAX_FILES 16
 #define MAX_ROWS 4096
 #define CROSS_WINDOW 5 /* scans either side of the crossing */
+#define CROSS_AFTER 20 /* the crossing's duplicates and coalescence: to 20 scans after it */
 
 /* ---------------------------------------------------------------- metrics */
 
@@ -63,10 +64,12 @@
 #define MTT_REPORT_COUNTERS(X)                                                                             \
     X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_below_threshold) \
     X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_terminated) X(n_init_refused_full) \
-    X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)
+    X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)       \
+    X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
 
 enum {
-    M_GOSPA, M_LOC, M_MISSED, M_FALSE, M_STC, M_NEVER, M_COV, M_TURN, M_PAR, M_CROSS, M_FALSE_TRK,
+    M_GOSPA, M_LOC, M_MISSED, M_FALSE, M_STC, M_NEVER, M_COV, M_TURN, M_PAR, M_CROSS,
+    M_CROSS_IDSW, M_CROSS_DUP, M_CROSS_COAL, M_PAR_IDSW, M_PAR_DUP, M_PAR_COAL, M_FALSE_TRK,
     M_FALSE_TS, M_DUP_TS, M_FRAG, M_IDSW, M_RMSE, M_CPU, M_CONF, M_LIVE, M_FULL, M_CLUTTER, M_CAPPED,
     M_TARGETS, M_PRESENT,
 #define X(f) M_REP_##f,
@@ -79,7 +82,9 @@ enum {
 
 static const char *const metric_name[M_N] = {
     "gospa_m", "gospa_loc_m2", "gospa_missed_m2", "gospa_false_m2", "scans_to_confirm", "never_confirmed",
-    "coverage", "turn_coverage", "parallel_both", "cross_both", "false_tracks_per_1000_scans",
+    "coverage", "turn_coverage", "parallel_both", "cross_both", "cross_id_switches", "cross_duplicate_per_100",
+    "cross_coalesced_per_100", "parallel_id_switches", "parallel_duplicate_per_100", "parallel_coalesced_per_100",
+    "false_tracks_per_1000_scans",
     "false_track_scans_per_100", "duplicate_track_scans_per_100", "fragmentations", "id_switches", "rmse_m",
     "cpu_us_per_scan", "confirmed_per_scan", "live_per_scan", "table_full_frac", "clutter_per_scan",
     "clutter_capped_scans",
@@ -115,8 +120,8 @@ struct mtt_row {
 
 /* ---------------------------------------------------------------- configurations */
 
-enum { CFG_NEW, CFG_OLD, N_CFG_KINDS };
-static const char *const cfg_name[N_CFG_KINDS] = {"new", "old"};
+enum { CFG_NEW, CFG_JOINT, CFG_OLD, N_CFG_KINDS };
+static const char *const cfg_name[N_CFG_KINDS] = {"new", "joint", "old"};
 
 struct mtt_settings {
     const char *kv[MAX_SETTINGS];
@@ -130,14 +135,18 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
                         struct tcfg_runtime *rt, char *err, size_t n)
 {
     struct trk_tracker_params p;
-    if (kind == CFG_NEW) trk_tracker_default_params(&p);
-    else mtt_old_defaults(&p);
+    if (kind == CFG_OLD) mtt_old_defaults(&p);
+    else trk_tracker_default_params(&p);
+    if (kind == CFG_JOINT) p.association = TRK_ASSOC_JOINT;
     const double sg = sc->p.meas_sigma_m;
     p.n_sensors = 1;
     p.sensor[0].pd = (trk_real)sc->p.pd;
     p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = (trk_real)(sg * sg);
     p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
-    p.sensor[0].clutter_density_per_m2 = (trk_real)lambda;
+    /* joint association weighs events by 1 / lambda: without clutter it
+     * assumes one clutter detection per scan in the region */
+    const double lambda_floor = 1 / (sc->p.region_m * sc->p.region_m);
+    p.sensor[0].clutter_density_per_m2 = (trk_real)(kind == CFG_JOINT && lambda < lambda_floor ? lambda_floor : lambda);
     p.sensor[0].use_amplitude = sc->p.amplitude;
     if (sc->p.amplitude &&
         trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, (trk_real)sc->p.snr_db, (trk_real)sc->pfa) != TRK_OK) {
@@ -216,9 +225,44 @@ static double thread_cpu_s(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* One pair of targets (the X, the parallel pair) while both are present:
+ * identity switches of either target's assigned track (all such scans),
+ * and, over the scans counted (the X: its window), target-scans with two or
+ * more confirmed tracks within c nearest it (duplicates) and scans where one
+ * target has two or more and the other none (coalesced: the other's track
+ * went over to it). */
+struct pair_stats {
+    long last_id[2];
+    long idsw, dup, coal, n;
+};
+
+static void pair_scan(struct pair_stats *ps, const struct mtt_obj *truth, int ia, int ib, const struct mtt_obj *est,
+                      size_t ne, const long *assign, double c_m, int counted)
+{
+    const struct mtt_obj *a = &truth[ia], *b = &truth[ib];
+    const int idx[2] = {ia, ib};
+    for (int w = 0; w < 2; w++) {
+        const long as = assign[idx[w]];
+        if (as < 0) continue;
+        if (ps->last_id[w] >= 0 && ps->last_id[w] != est[as].id) ps->idsw++;
+        ps->last_id[w] = est[as].id;
+    }
+    if (!counted) return;
+    long near[2] = {0, 0};
+    for (size_t i = 0; i < ne; i++) {
+        const double da = hypot(est[i].x_m - a->x_m, est[i].y_m - a->y_m);
+        const double db = hypot(est[i].x_m - b->x_m, est[i].y_m - b->y_m);
+        if (fmin(da, db) <= c_m) near[db < da]++;
+    }
+    ps->n++;
+    ps->dup += (near[0] >= 2) + (near[1] >= 2);
+    ps->coal += (near[0] >= 2 && near[1] == 0) || (near[1] >= 2 && near[0] == 0);
+}
+
 static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk_tracker_params *tp, double c_m,
                    struct run_ws *ws, struct run_result *res)
 {
+    struct pair_stats cross = {{-1, -1}, 0, 0, 0, 0}, par = {{-1, -1}, 0, 0, 0, 0};
     struct mtt_eval ev;
     mtt_eval_init(&ev, c_m);
     if (trk_tracker_init(ws->tk, tp) != TRK_OK) return -1;
@@ -288,7 +332,11 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
         if (mtt_scen_present(sc, MTT_PAR_A, k) && mtt_scen_present(sc, MTT_PAR_B, k)) {
             par_n++;
             par_hit += assign[idx[MTT_PAR_A]] >= 0 && assign[idx[MTT_PAR_B]] >= 0;
+            pair_scan(&par, truth, idx[MTT_PAR_A], idx[MTT_PAR_B], ws->est, ne, assign, c_m, 1);
         }
+        if (mtt_scen_present(sc, MTT_CROSS_A, k) && mtt_scen_present(sc, MTT_CROSS_B, k))
+            pair_scan(&cross, truth, idx[MTT_CROSS_A], idx[MTT_CROSS_B], ws->est, ne, assign, c_m,
+                      k >= sc->cross_scan - CROSS_WINDOW && k <= sc->cross_scan + CROSS_AFTER);
         if (labs(k - sc->cross_scan) <= CROSS_WINDOW && mtt_scen_present(sc, MTT_CROSS_A, k) &&
             mtt_scen_present(sc, MTT_CROSS_B, k)) {
             cross_n++;
@@ -310,6 +358,12 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
         v[M_TURN] = turn_n ? (double)turn_hit / (double)turn_n : NAN;
         v[M_PAR] = par_n ? (double)par_hit / (double)par_n : NAN;
         v[M_CROSS] = cross_n ? (double)cross_hit / (double)cross_n : NAN;
+        v[M_CROSS_IDSW] = (double)cross.idsw;
+        v[M_CROSS_DUP] = cross.n ? 100.0 * (double)cross.dup / (double)cross.n : NAN;
+        v[M_CROSS_COAL] = cross.n ? 100.0 * (double)cross.coal / (double)cross.n : NAN;
+        v[M_PAR_IDSW] = (double)par.idsw;
+        v[M_PAR_DUP] = par.n ? 100.0 * (double)par.dup / (double)par.n : NAN;
+        v[M_PAR_COAL] = par.n ? 100.0 * (double)par.coal / (double)par.n : NAN;
         v[M_FALSE_TRK] = 1000.0 * (double)su.n_false_tracks / dn;
         v[M_FALSE_TS] = su.false_track_scans_per_100;
         v[M_DUP_TS] = su.duplicate_track_scans_per_100;
@@ -376,12 +430,12 @@ static void put_v(const struct mtt_row *r, int m, int w, int prec)
 static void print_tables(const struct mtt_row *rows, int n)
 {
     printf("-- accuracy (mean +- half the 95%% interval over seeds; GOSPA parts in m^2 per scan)\n");
-    printf("%5s %-7s %-4s %7s %13s %8s %8s %8s %12s %5s %12s %6s %6s %6s %7s\n", "slots", "family", "cfg",
+    printf("%5s %-7s %-5s %7s %13s %8s %8s %8s %12s %5s %12s %6s %6s %6s %7s\n", "slots", "family", "cfg",
            "clutter", "GOSPA m", "loc", "missed", "false", "to-confirm", "never", "coverage", "turn", "pair2",
            "cross2", "RMSE m");
     for (int i = 0; i < n; i++) {
         const struct mtt_row *r = &rows[i];
-        printf("%5ld %-7s %-4s %7g", r->capacity, r->family, r->config, r->clutter);
+        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
         put_ci(r, M_GOSPA, 13, 1);
         put_v(r, M_LOC, 8, 0);
         put_v(r, M_MISSED, 8, 0);
@@ -396,12 +450,12 @@ static void print_tables(const struct mtt_row *rows, int n)
         printf("\n");
     }
     printf("-- track management and cost (per run of %ld scans unless noted)\n", n ? rows[0].scans : 0L);
-    printf("%5s %-7s %-4s %7s %13s %9s %8s %6s %6s %10s %7s %6s %6s %9s %8s %7s\n", "slots", "family", "cfg",
+    printf("%5s %-7s %-5s %7s %13s %9s %8s %6s %6s %10s %7s %6s %6s %9s %8s %7s\n", "slots", "family", "cfg",
            "clutter", "falseT/1000sc", "falseTS%", "dupTS%", "frag", "idsw", "cpu us/scan", "live", "full%", "conf",
            "refused", "replaced", "merged");
     for (int i = 0; i < n; i++) {
         const struct mtt_row *r = &rows[i];
-        printf("%5ld %-7s %-4s %7g", r->capacity, r->family, r->config, r->clutter);
+        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
         put_ci(r, M_FALSE_TRK, 13, 1);
         put_v(r, M_FALSE_TS, 9, 1);
         put_v(r, M_DUP_TS, 8, 1);
@@ -415,6 +469,24 @@ static void print_tables(const struct mtt_row *rows, int n)
         put_v(r, M_REP_n_init_refused_full, 9, 0);
         put_v(r, M_REP_n_replaced, 8, 0);
         put_v(r, M_REP_n_merged, 7, 0);
+        printf("\n");
+    }
+    printf("-- the crossing (X) and the parallel pair: both held (fraction of scans), identity switches per run,\n"
+           "   duplicate target-scans and coalesced scans per 100 (X: from %d scans before to %d after)\n",
+           CROSS_WINDOW, CROSS_AFTER);
+    printf("%5s %-7s %-5s %7s %7s %7s %7s %7s %8s %8s %8s %8s\n", "slots", "family", "cfg", "clutter", "X both",
+           "X idsw", "X dup%", "X coal%", "par both", "par idsw", "par dup%", "par coal%");
+    for (int i = 0; i < n; i++) {
+        const struct mtt_row *r = &rows[i];
+        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
+        put_v(r, M_CROSS, 7, 2);
+        put_v(r, M_CROSS_IDSW, 7, 2);
+        put_v(r, M_CROSS_DUP, 7, 1);
+        put_v(r, M_CROSS_COAL, 7, 1);
+        put_v(r, M_PAR, 8, 2);
+        put_v(r, M_PAR_IDSW, 8, 2);
+        put_v(r, M_PAR_DUP, 8, 1);
+        put_v(r, M_PAR_COAL, 8, 1);
         printf("\n");
     }
 }
@@ -542,7 +614,7 @@ static int take_configs(const char *s, int *kinds, int *n, char *err, size_t err
         for (int i = 0; i < N_CFG_KINDS; i++)
             if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
         if (k < 0 || *n >= N_CFG_KINDS) {
-            snprintf(err, errlen, "--config: '%.*s' is not one of new, old (each once)", (int)len, s);
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, joint, old (each once)", (int)len, s);
             return -1;
         }
         for (int i = 0; i < *n; i++)
@@ -572,7 +644,7 @@ static const int family_values[] = {MTT_FAMILY_TRANSIT, MTT_FAMILY_FIXED};
 SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track maintenance) over clutter levels")
 {
     long scans, seeds;
-    double levels[MAX_LEVELS], c_m, pd, snr_db, q, v_min, v_max;
+    double levels[MAX_LEVELS], c_m, pd, snr_db, q, v_min, v_max, par_sep;
     int n_levels, no_amp = 0, family;
     const char *configs;
     struct mtt_settings set = {{NULL}, 0};
@@ -590,9 +662,10 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
                      100000,
                      "clutter detections per scan (exactly N, uniform over the region),\n"
                      "each capped at TRK_MAX_DETECTIONS minus the scan's target detections"),
-        SIM_OPT_STRING("--config", &configs, "LIST", "new,old",
-                       "configurations: new (trk_tracker_default_params), old (the\n"
-                       "defaults before issue 14)"),
+        SIM_OPT_STRING("--config", &configs, "LIST", "new,joint,old",
+                       "configurations: new (trk_tracker_default_params), joint (the\n"
+                       "same with association = joint: JIPDA), old (the defaults before\n"
+                       "issue 14)"),
         SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
                         "a tracker setting for every configuration (the keys below)"),
         SIM_OPT_FLAG("--no-amplitude", &no_amp, "no amplitudes: positions only, use_amplitude off"),
@@ -607,6 +680,8 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         SIM_OPT_DOUBLE("--speed-max", &v_max, "V", "15", SIM_GT, 0, 0,
                        "upper end of the speed range, e.g. 20 to go past the tracker's\n"
                        "two-point velocity gate (its own: --set init.max_speed_mps=V)"),
+        SIM_OPT_DOUBLE("--parallel-sep", &par_sep, "M", "60", SIM_OPEN, 0, 500,
+                       "the parallel pair's separation (m): closer pairs share detections"),
         SIM_OPT_END};
     const struct sim_cli cli = {
         "mtt", "[options] [--set key=value ...]",
@@ -675,6 +750,7 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         sp.amplitude = !no_amp;
         sp.speed_min_mps = v_min;
         sp.speed_max_mps = v_max;
+        sp.parallel_sep_m = par_sep;
         if (mtt_scen_init(&sc[i], &sp, err, sizeof err) != 0) {
             fprintf(stderr, "trk-sim mtt: scenario: %s\n", err);
             while (i-- > 0) mtt_scen_free(&sc[i]);
