@@ -88,11 +88,11 @@ trk_status trk_jpda_marginals(const struct trk_jpda_scan *scan, struct trk_jpda_
             if (!isfinite(v)) continue;
             if (n == TRK_MAX_GATED_PAIRS) return TRK_E_CAPACITY;
             work->det[n] = (uint16_t)j;
-            work->log_w[n++] = v;
+            work->w[n++] = v;
         }
         work->first[t + 1] = (uint16_t)n;
     }
-    const struct trk_jpda_pairs pairs = {nt, nd, work->first, work->det, work->log_w, scan->log_w_miss};
+    const struct trk_jpda_pairs pairs = {nt, nd, work->first, work->det, work->w, scan->log_w_miss};
     const trk_status st = trk_jpda_solve(&pairs, &work->solver, work->p_pair, p_miss, rep);
     if (st != TRK_OK) return st;
     if (nt > 0 && nd > 0) memset(p_assoc, 0, nt * nd * sizeof *p_assoc);
@@ -166,13 +166,13 @@ static trk_status check_pairs(const struct trk_jpda_pairs *s, const trk_real *p_
     if (!s->first || !s->log_w_miss || !p_miss || s->first[0] != 0) return TRK_E_ARG;
     const size_t n_pairs = s->first[s->n_tracks];
     if (n_pairs > TRK_MAX_GATED_PAIRS) return TRK_E_CAPACITY;
-    if (n_pairs > 0 && (!s->det || !s->log_w || !p_pair)) return TRK_E_ARG;
+    if (n_pairs > 0 && (!s->det || !s->w || !p_pair)) return TRK_E_ARG;
     for (size_t t = 0; t < s->n_tracks; t++) {
         if (s->first[t + 1] < s->first[t]) return TRK_E_ARG;
         if (!isfinite(s->log_w_miss[t])) return TRK_E_NAN;
         for (size_t k = s->first[t]; k < s->first[t + 1]; k++) {
             if (s->det[k] >= s->n_dets || (k > s->first[t] && s->det[k] <= s->det[k - 1])) return TRK_E_ARG;
-            if (!isfinite(s->log_w[k])) return TRK_E_NAN;
+            if (!isfinite(s->w[k])) return TRK_E_NAN;
         }
     }
     return TRK_OK;
@@ -193,7 +193,8 @@ static size_t cluster_root(uint16_t *parent, size_t t)
  * then the members of cluster c listed in scan order at tracks[tr_first[c]
  * ..] and dets[det_first[c] ..] (counting sort), det_local then each
  * detection's index in its cluster. Each track's scale (its largest ln w)
- * makes every scaled weight at most 1. Returns the number of clusters. */
+ * makes every scaled weight w_tj exp(-scale) at most 1: the pairs' w become
+ * these. Returns the number of clusters. */
 static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solver *w)
 {
     const size_t nt = s->n_tracks, nd = s->n_dets;
@@ -204,7 +205,7 @@ static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solv
         trk_real m = s->log_w_miss[t];
         for (size_t k = s->first[t]; k < s->first[t + 1]; k++) {
             const size_t j = s->det[k];
-            if (s->log_w[k] > m) m = s->log_w[k];
+            if (s->w[k] > m) m = s->w[k];
             if (owner[j] == NONE) {
                 owner[j] = (uint16_t)t;
                 continue;
@@ -214,6 +215,7 @@ static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solv
             else if (b < a) parent[a] = (uint16_t)b;
         }
         w->scale[t] = m;
+        for (size_t k = s->first[t]; k < s->first[t + 1]; k++) s->w[k] = trk_exp(s->w[k] - m);
     }
     /* number the clusters by their first track; parent[t] becomes t's cluster */
     size_t n = 0;
@@ -253,9 +255,10 @@ static trk_real wmiss(const struct cluster *c, size_t a)
     return trk_exp(c->s->log_w_miss[t] - c->w->scale[t]);
 }
 
-static trk_real wpair(const struct cluster *c, size_t t, size_t k)
+/* the scaled weight of pair k (form_clusters made them linear in place) */
+static trk_real wpair(const struct cluster *c, size_t k)
 {
-    return trk_exp(c->s->log_w[k] - c->w->scale[t]);
+    return c->s->w[k];
 }
 
 /* the pair of scan track t and detection j, or NONE (binary search: a
@@ -280,7 +283,7 @@ static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_mi
     const struct trk_jpda_pairs *s = c->s;
     const size_t t = c->tracks[0];
     trk_real z = wmiss(c, 0);
-    for (size_t k = s->first[t]; k < s->first[t + 1]; k++) z += p_pair[k] = wpair(c, t, k);
+    for (size_t k = s->first[t]; k < s->first[t + 1]; k++) z += p_pair[k] = wpair(c, k);
     for (size_t k = s->first[t]; k < s->first[t + 1]; k++) p_pair[k] /= z;
     p_miss[t] = wmiss(c, 0) / z;
 }
@@ -306,7 +309,7 @@ static void track_row(const struct cluster *c, size_t a, trk_real *row)
 {
     const size_t t = c->tracks[a];
     for (size_t b = 0; b < c->nd; b++) row[b] = 0;
-    for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) row[c->w->det_local[c->s->det[k]]] = wpair(c, t, k);
+    for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) row[c->w->det_local[c->s->det[k]]] = wpair(c, k);
 }
 
 /* Subsets of the cluster's detections (nd <= bits): f(S) sums the events of
@@ -345,7 +348,7 @@ static void exact_by_detections(const struct cluster *c, trk_real *p_pair, trk_r
         const trk_real pm = wmiss(c, a) * total;
         trk_real z = pm;
         for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
-            z += p_pair[k] = wpair(c, t, k) * free_sum[c->w->det_local[c->s->det[k]]];
+            z += p_pair[k] = wpair(c, k) * free_sum[c->w->det_local[c->s->det[k]]];
         p_miss[t] = pm / z;
         for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) p_pair[k] /= z;
     }
@@ -360,16 +363,21 @@ static trk_real exact_tracks_sum(const struct cluster *c, size_t skip_b, size_t 
 {
     trk_real *g = c->w->u.dp;
     trk_real col[TRK_JPDA_EXACT_BITS], miss[TRK_JPDA_EXACT_BITS];
+    size_t next[TRK_JPDA_EXACT_BITS]; /* per track, its first pair not yet passed */
     const size_t ns = (size_t)1 << c->nt;
     for (size_t s = 0; s < ns; s++) g[s] = 0;
     g[0] = 1;
     *ln_scale = 0;
+    for (size_t o = 0; o < c->nt; o++) next[o] = c->s->first[c->tracks[o]];
     for (size_t b = 0; b < c->nd; b++) {
-        if (b == skip_b) continue;
+        /* the column of detection b: the tracks' pairs in detection order */
         for (size_t o = 0; o < c->nt; o++) {
-            const size_t k = o == skip_a ? NONE : pair_of(c->s, c->tracks[o], c->dets[b]);
-            col[o] = k == NONE ? 0 : wpair(c, c->tracks[o], k);
+            const size_t end = c->s->first[c->tracks[o] + 1];
+            col[o] = 0;
+            if (next[o] < end && c->s->det[next[o]] == c->dets[b]) col[o] = wpair(c, next[o]++);
+            if (o == skip_a) col[o] = 0;
         }
+        if (b == skip_b) continue;
         for (size_t s = ns; s-- > 0;) {
             trk_real v = g[s];
             for (size_t o = 0; o < c->nt; o++)
@@ -402,7 +410,7 @@ static void exact_by_tracks(const struct cluster *c, trk_real *p_pair, trk_real 
         for (size_t a = 0; a < c->nt; a++) {
             const size_t t = c->tracks[a], k = k_of[a] = pair_of(c->s, t, c->dets[b]);
             if (k == NONE) continue;
-            const trk_real v = exact_tracks_sum(c, b, a, &lna) * wpair(c, t, k) * trk_exp(lna - ln0);
+            const trk_real v = exact_tracks_sum(c, b, a, &lna) * wpair(c, k) * trk_exp(lna - ln0);
             p_pair[k] = v;
             z += v;
         }
@@ -468,7 +476,7 @@ static trk_real lbp_total(const struct cluster *c, const trk_real *mu, const trk
     const size_t t = c->tracks[a];
     trk_real ta = wmiss(c, a);
     for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
-        ta += wpair(c, t, k) / (1 + sum[c->s->det[k]] - mu[k]);
+        ta += wpair(c, k) / (1 + sum[c->s->det[k]] - mu[k]);
     return ta;
 }
 
@@ -477,7 +485,7 @@ static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss
     trk_real *sum = c->w->u.det_sum, *mu = p_pair;
     for (size_t a = 0; a < c->nt; a++) {
         const size_t t = c->tracks[a];
-        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) mu[k] = wpair(c, t, k);
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) mu[k] = wpair(c, k);
     }
     int it = 0;
     *converged = 0;
@@ -489,7 +497,7 @@ static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss
             const size_t t = c->tracks[a];
             const trk_real ta = lbp_total(c, mu, sum, a);
             for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) {
-                const trk_real wb = wpair(c, t, k);
+                const trk_real wb = wpair(c, k);
                 const trk_real m = wb / (ta - wb / (1 + sum[c->s->det[k]] - mu[k]));
                 const trk_real d = trk_fabs(m - mu[k]) / (m > 0 ? m : 1);
                 if (d > change) change = d;
@@ -508,7 +516,7 @@ static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss
         const size_t t = c->tracks[a];
         const trk_real ta = lbp_total(c, mu, sum, a);
         for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
-            mu[k] = wpair(c, t, k) / (1 + sum[c->s->det[k]] - mu[k]) / ta;
+            mu[k] = wpair(c, k) / (1 + sum[c->s->det[k]] - mu[k]) / ta;
         p_miss[t] = wmiss(c, a) / ta;
     }
     return it;

@@ -63,6 +63,7 @@ void trk_tracker_mn_kn_params(struct trk_tracker_params *p)
     p->init.birth_density_per_m2 = 0;
     p->max_pos_sigma_ratio = 0;
     p->visibility.delta_become = TRK_REAL_C(0.01);
+    p->association = TRK_ASSOC_PDA;
 }
 
 /* ------------------------------------------------------------------ field names */

@@ -5,7 +5,7 @@
 # their CSVs checked:
 #   - the header: the key columns (capacity,config,clutter,seeds,scans,amplitude,family),
 #     then <metric>_mean,_lo,_hi for the metrics below
-#   - exactly the rows (capacity, config, clutter) = (one capacity) x {new, old} x {0, 50},
+#   - exactly the rows (capacity, config, clutter) = (one capacity) x {new, pda, old} x {0, 50},
 #     seeds 2, scans 30, amplitude 1, family the one asked for
 #   - per row and metric lo <= mean <= hi; coverage, turn/pair/cross fractions in [0, 1];
 #     GOSPA and its parts >= 0; clutter per scan = the count asked for unless capped;
@@ -13,10 +13,10 @@
 #     targets present per scan in (0, 8] (eight slots), at least 8 targets per run;
 #     fixed: exactly 8 targets per run, 7-8 present per scan (7 before the birth and
 #     after the death, 8 between)
-#   - at clutter 0 the two configurations hold the targets: coverage > 0.3, every
+#   - at clutter 0 the three configurations hold the targets: coverage > 0.3, every
 #     target confirmed at some scan
 #   - every column but the CPU time identical with 1 and 2 threads
-#   - trk-sim mtt-compare merges the transit and the fixed CSV (8 rows: the family is
+#   - trk-sim mtt-compare merges the transit and the fixed CSV (12 rows: the family is
 #     part of the key) and refuses two CSVs of the same family and capacity
 set -u
 sim=$1
@@ -89,9 +89,10 @@ NR == 1 {
 }
 END {
     if (err) exit 1
-    if (rows != 4) bad(rows " rows, want 4")
-    if (!("new/0" in seen) || !("new/50" in seen) || !("old/0" in seen) || !("old/50" in seen))
-        bad("rows are not {new, old} x {0, 50}")
+    if (rows != 6) bad(rows " rows, want 6")
+    if (!("new/0" in seen) || !("new/50" in seen) || !("pda/0" in seen) || !("pda/50" in seen) ||
+        !("old/0" in seen) || !("old/50" in seen))
+        bad("rows are not {new, pda, old} x {0, 50}")
 }' "$1" || exit 1
 }
 check "$d/m1.csv" transit
@@ -110,11 +111,11 @@ grep -q ' fixed  *new  *50 ' "$d/outf.txt" && grep -q '^== trk-sim mtt: family f
 # mtt-compare: the family is part of the key
 "$sim" mtt-compare "$d/m1.csv" "$d/f1.csv" --no-plot --out "$d/c" >"$d/outc.txt" 2>&1 ||
     { cat "$d/outc.txt"; fail "trk-sim mtt-compare of a transit and a fixed CSV exited with $?"; }
-[ "$(awk -F, 'NR > 1' "$d/c.csv" | wc -l)" -eq 8 ] || fail "mtt-compare: not 8 rows merged"
-[ "$(awk -F, 'NR > 1 && $7 == "fixed"' "$d/c.csv" | wc -l)" -eq 4 ] || fail "mtt-compare: not 4 fixed rows"
+[ "$(awk -F, 'NR > 1' "$d/c.csv" | wc -l)" -eq 12 ] || fail "mtt-compare: not 12 rows merged"
+[ "$(awk -F, 'NR > 1 && $7 == "fixed"' "$d/c.csv" | wc -l)" -eq 6 ] || fail "mtt-compare: not 6 fixed rows"
 if "$sim" mtt-compare "$d/m1.csv" "$d/m2.csv" --no-plot --out "$d/c2" >"$d/outc2.txt" 2>&1; then
     fail "mtt-compare merged two CSVs of one family and capacity"
 fi
 grep -q 'appears twice' "$d/outc2.txt" || { cat "$d/outc2.txt"; fail "mtt-compare: no 'appears twice' message"; }
-echo "mtt-smoke: trk-sim mtt: 4 rows (new, old x clutter 0, 50) checked per family (transit, fixed); transit" \
+echo "mtt-smoke: trk-sim mtt: 6 rows (new, pda, old x clutter 0, 50) checked per family (transit, fixed); transit" \
     "identical with 1 and 2 threads; mtt-compare keys rows by family"

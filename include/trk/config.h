@@ -112,7 +112,7 @@
 #error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=9"
 #endif
 #ifndef TRK_JPDA_MAX_WORK
-#define TRK_JPDA_MAX_WORK (1L << 22)
+#define TRK_JPDA_MAX_WORK (1L << 20) /* about 1 ms of a host core, tens on a Cortex-M4F */
 #endif
 /* Gated track-detection pairs one scan may hold (the tracker's joint
  * association, and trk_jpda_marginals' sparse copy): at least

@@ -52,13 +52,15 @@
 /* One scan's association weights, sparse (the form a tracker has): track t's
  * gated detections are the pairs [first[t], first[t+1]), each with its
  * detection det[k] (strictly increasing within a track, < n_dets) and its
- * ln w_tj = log_w[k] (finite). n_pairs = first[n_tracks] <= TRK_MAX_GATED_PAIRS. */
+ * ln w_tj = w[k] (finite). n_pairs = first[n_tracks] <= TRK_MAX_GATED_PAIRS.
+ * The solver overwrites w (with the scaled linear weights: one exponential
+ * per pair, and no copy). */
 struct trk_jpda_pairs {
     size_t n_tracks;            /* 0 .. TRK_MAX_TRACKS */
     size_t n_dets;              /* 0 .. TRK_MAX_DETECTIONS */
     const uint16_t *first;      /* n_tracks + 1 offsets, first[0] = 0 */
     const uint16_t *det;        /* n_pairs */
-    const trk_real *log_w;      /* n_pairs: ln w_tj */
+    trk_real *w;                /* n_pairs: in ln w_tj, then overwritten */
     const trk_real *log_w_miss; /* n_tracks: ln w_t0, finite (psi_t P_D P_G < 1) */
 };
 
@@ -83,7 +85,7 @@ struct trk_jpda_work {
     struct trk_jpda_solver solver;
     uint16_t first[TRK_MAX_TRACKS + 1];
     uint16_t det[TRK_MAX_GATED_PAIRS];
-    trk_real log_w[TRK_MAX_GATED_PAIRS];
+    trk_real w[TRK_MAX_GATED_PAIRS];
     trk_real p_pair[TRK_MAX_GATED_PAIRS];
 };
 
@@ -112,8 +114,9 @@ struct trk_jpda_report {
  * offsets that do not increase from 0, or detections not strictly
  * increasing within a track or >= n_dets; TRK_E_CAPACITY n_tracks >
  * TRK_MAX_TRACKS, n_dets > TRK_MAX_DETECTIONS or n_pairs >
- * TRK_MAX_GATED_PAIRS; TRK_E_NAN a non-finite weight. Outputs untouched on
- * error. The tracker's joint association (trk/tracker.h) calls this. */
+ * TRK_MAX_GATED_PAIRS; TRK_E_NAN a non-finite weight. Outputs and
+ * pairs->w untouched on error. The tracker's joint association
+ * (trk/tracker.h) calls this. */
 TRK_NODISCARD trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_solver *solver,
                                         trk_real *p_pair, trk_real *p_miss, struct trk_jpda_report *rep);
 

@@ -335,7 +335,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p);
  * (kept for comparison and for users of M/N): the defaults with M/N 3-of-5
  * confirmation, termination after 5 consecutive misses (K/N 0/5),
  * single-point initiation at the visibility's pv0, no covariance bound,
- * and Delta_bar 0.01. */
+ * Delta_bar 0.01 and the per-track PDA (TRK_ASSOC_PDA). */
 void trk_tracker_mn_kn_params(struct trk_tracker_params *p);
 
 /* ---------------------------------------------------------------- tracks */

@@ -547,7 +547,11 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
                           : strcmp(f, "track_visibility") == 0 ? "visibility"
                           : strcmp(f, "visibility") == 0       ? "visibility.*"
                                                                : f;
-        snprintf(err, n, "%s: refused by the tracker (%s): %s", key, f, trk_status_str(st));
+        const char *hint = strcmp(f, "association") == 0 && st == TRK_E_UNSUPPORTED
+                               ? " (association = joint needs clutter = parametric and every sensor's "
+                                 "clutter_density_per_m2 > 0; or set association = pda)"
+                               : "";
+        snprintf(err, n, "%s: refused by the tracker (%s): %s%s", key, f, trk_status_str(st), hint);
     }
 }
 

@@ -4,7 +4,10 @@
  *                     trk_pda_update)
  *   scan_64x256       ns per trk_tracker_process_scan with 64 confirmed tracks
  *                     and 256 detections (64 targets + 192 clutter), the
- *                     default configuration (two-point initiation, existence)
+ *                     default configuration (two-point initiation, existence,
+ *                     joint association); scan_64x256_pda the same with the
+ *                     per-track PDA, alternating with it in the same run, and
+ *                     the ratio scan_64x256_vs_scan_64x256_pda
  *   scan_64x256_mn_kn the same scans with trk_tracker_mn_kn_params (M/N 2/3
  *                     here, single-point initiation): the path before issue 14,
  *                     for the ratio in the same run
@@ -95,25 +98,29 @@ struct scan_job {
     double n_updated; /* track updates in the timed scans (all repetitions) */
 };
 
-static void scan_bench(const char *name, int mn_kn)
+/* The scans' configurations: the defaults (joint association), the same
+ * with the per-track PDA, and the M/N path. */
+enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN };
+
+static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
 {
-    if (TRK_MAX_TRACKS < N_TGT || TRK_MAX_DETECTIONS < N_DET) {
-        bench_print("scan_64x256_skipped_capacity", 0, "-");
-        return;
-    }
-    struct scan_job *j = calloc(1, sizeof *j);
-    if (!j) return;
-    struct trk_tracker_params p;
-    if (mn_kn) {
-        trk_tracker_mn_kn_params(&p);
-        p.confirm.u.mn.m = 2;
-        p.confirm.u.mn.n = 3;
+    if (cfg == SCAN_MN_KN) {
+        trk_tracker_mn_kn_params(p);
+        p->confirm.u.mn.m = 2;
+        p->confirm.u.mn.n = 3;
     } else {
-        trk_tracker_default_params(&p);
+        trk_tracker_default_params(p);
     }
-    p.sensor[0].pd = TRK_REAL_C(0.9);
-    p.sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
-    p.process_noise_q = TRK_REAL_C(0.01);
+    if (cfg == SCAN_PDA) p->association = TRK_ASSOC_PDA;
+    p->sensor[0].pd = TRK_REAL_C(0.9);
+    p->sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
+    p->process_noise_q = TRK_REAL_C(0.01);
+}
+
+static struct scan_job *scan_job_new(void)
+{
+    struct scan_job *j = calloc(1, sizeof *j);
+    if (!j) return NULL;
     rs = 42;
     double tx[N_TGT], ty[N_TGT], vx[N_TGT], vy[N_TGT];
     for (int i = 0; i < N_TGT; i++) {
@@ -138,42 +145,87 @@ static void scan_bench(const char *name, int mn_kn)
         j->scan[k].n_detections = N_DET;
         j->scan[k].detections = j->det[k];
     }
-    double best = 1e300;
-    int n_conf = 0;
-    for (int rep = 0; rep < 5; rep++) {
-        if (trk_tracker_init(&j->tk, &p) != TRK_OK) break;
-        /* warm up: targets first (so all 64 tracks exist), then full scans */
-        for (int k = 0; k < 4; k++) {
-            j->scan[k].time_us = (int64_t)k * 1000000;
-            j->scan[k].n_detections = N_TGT;
-            if (trk_tracker_process_scan(&j->tk, &j->scan[k], NULL) != TRK_OK) break;
-            j->scan[k].n_detections = N_DET;
+    return j;
+}
+
+/* One repetition: init, warm up (targets first, so all 64 tracks exist),
+ * then the timed full scans; ns per scan, or -1. *n_conf: confirmed tracks
+ * at the end. */
+static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, int *n_conf)
+{
+    if (trk_tracker_init(&j->tk, p) != TRK_OK) return -1;
+    for (int k = 0; k < 4; k++) {
+        j->scan[k].time_us = (int64_t)k * 1000000;
+        j->scan[k].n_detections = N_TGT;
+        const trk_status st = trk_tracker_process_scan(&j->tk, &j->scan[k], NULL);
+        j->scan[k].n_detections = N_DET;
+        if (st != TRK_OK) return -1;
+    }
+    double t0 = bench_now_ns();
+    for (int k = 4; k < N_SCANS; k++) {
+        j->scan[k].time_us = (int64_t)k * 1000000;
+        if (trk_tracker_process_scan(&j->tk, &j->scan[k], &j->rep) != TRK_OK) return -1;
+        j->n_updated += j->rep.n_tracks_updated;
+    }
+    const double per = (bench_now_ns() - t0) / (N_SCANS - 4);
+    *n_conf = 0;
+    for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
+        const struct trk_track *t = trk_tracker_track(&j->tk, s);
+        *n_conf += t && t->status == TRK_TRACK_CONFIRMED;
+    }
+    return per;
+}
+
+/* The configurations cfg[0..n) alternating, 5 repetitions each: the
+ * fastest of each (printed as names[c]), and cfg[c] / cfg[0] ratios. */
+static void scan_bench(const char *const *names, const enum scan_cfg *cfg, int n)
+{
+    if (TRK_MAX_TRACKS < N_TGT || TRK_MAX_DETECTIONS < N_DET) {
+        bench_print("scan_64x256_skipped_capacity", 0, "-");
+        return;
+    }
+    struct scan_job *j = scan_job_new();
+    if (!j) return;
+    double best[3] = {1e300, 1e300, 1e300}, updated[3] = {0, 0, 0};
+    int n_conf[3] = {0, 0, 0};
+    for (int rep = 0; rep < 5; rep++)
+        for (int c = 0; c < n; c++) {
+            struct trk_tracker_params p;
+            scan_params(cfg[c], &p);
+            j->n_updated = 0;
+            const double per = scan_rep(j, &p, &n_conf[c]);
+            if (per >= 0 && per < best[c]) best[c] = per;
+            updated[c] += j->n_updated;
         }
-        double t0 = bench_now_ns();
-        for (int k = 4; k < N_SCANS; k++) {
-            j->scan[k].time_us = (int64_t)k * 1000000;
-            if (trk_tracker_process_scan(&j->tk, &j->scan[k], &j->rep) != TRK_OK) break;
-            j->n_updated += j->rep.n_tracks_updated;
-        }
-        double per = (bench_now_ns() - t0) / (N_SCANS - 4);
-        if (per < best) best = per;
-        n_conf = 0;
-        for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
-            const struct trk_track *t = trk_tracker_track(&j->tk, s);
-            n_conf += t && t->status == TRK_TRACK_CONFIRMED;
+    for (int c = 0; c < n; c++) {
+        char what[96];
+        bench_print(names[c], best[c], "ns");
+        snprintf(what, sizeof what, "%s_confirmed_tracks", names[c]);
+        bench_print(what, n_conf[c], "tracks");
+        snprintf(what, sizeof what, "%s_tracks_per_scan", names[c]);
+        bench_print(what, updated[c] / (5.0 * (N_SCANS - 4)), "tracks");
+        if (c > 0) {
+            snprintf(what, sizeof what, "%s_vs_%s", names[0], names[c]);
+            bench_print(what, best[0] / best[c], "x");
         }
     }
-    char what[64];
-    bench_print(name, best, "ns");
-    snprintf(what, sizeof what, "%s_confirmed_tracks", name);
-    bench_print(what, n_conf, "tracks");
-    snprintf(what, sizeof what, "%s_tracks_per_scan", name);
-    bench_print(what, j->n_updated / (5.0 * (N_SCANS - 4)), "tracks");
     free(j);
 }
 
-TRK_BENCH(scan_64x256) { scan_bench("scan_64x256", 0); }
-TRK_BENCH(scan_64x256_mn_kn) { scan_bench("scan_64x256_mn_kn", 1); }
+/* The default (joint association) against the per-track PDA, same run. */
+TRK_BENCH(scan_64x256)
+{
+    static const char *const names[] = {"scan_64x256", "scan_64x256_pda"};
+    static const enum scan_cfg cfg[] = {SCAN_DEFAULT, SCAN_PDA};
+    scan_bench(names, cfg, 2);
+}
+
+TRK_BENCH(scan_64x256_mn_kn)
+{
+    static const char *const names[] = {"scan_64x256_mn_kn"};
+    static const enum scan_cfg cfg[] = {SCAN_MN_KN};
+    scan_bench(names, cfg, 1);
+}
 
 TRK_BENCH(sizeof_tracker) { bench_print("sizeof_tracker", (double)sizeof(struct trk_tracker), "bytes"); }
 

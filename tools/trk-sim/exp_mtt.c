@@ -120,8 +120,8 @@ struct mtt_row {
 
 /* ---------------------------------------------------------------- configurations */
 
-enum { CFG_NEW, CFG_JOINT, CFG_OLD, N_CFG_KINDS };
-static const char *const cfg_name[N_CFG_KINDS] = {"new", "joint", "old"};
+enum { CFG_NEW, CFG_PDA, CFG_OLD, N_CFG_KINDS };
+static const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old"};
 
 struct mtt_settings {
     const char *kv[MAX_SETTINGS];
@@ -137,16 +137,13 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
     struct trk_tracker_params p;
     if (kind == CFG_OLD) mtt_old_defaults(&p);
     else trk_tracker_default_params(&p);
-    if (kind == CFG_JOINT) p.association = TRK_ASSOC_JOINT;
+    if (kind == CFG_PDA) p.association = TRK_ASSOC_PDA;
     const double sg = sc->p.meas_sigma_m;
     p.n_sensors = 1;
     p.sensor[0].pd = (trk_real)sc->p.pd;
     p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = (trk_real)(sg * sg);
     p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
-    /* joint association weighs events by 1 / lambda: without clutter it
-     * assumes one clutter detection per scan in the region */
-    const double lambda_floor = 1 / (sc->p.region_m * sc->p.region_m);
-    p.sensor[0].clutter_density_per_m2 = (trk_real)(kind == CFG_JOINT && lambda < lambda_floor ? lambda_floor : lambda);
+    p.sensor[0].clutter_density_per_m2 = (trk_real)lambda;
     p.sensor[0].use_amplitude = sc->p.amplitude;
     if (sc->p.amplitude &&
         trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, (trk_real)sc->p.snr_db, (trk_real)sc->pfa) != TRK_OK) {
@@ -197,6 +194,11 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
         p = t;
         free(c);
     }
+    /* joint association weighs events by 1 / lambda: without clutter it
+     * assumes one clutter detection per scan in the region */
+    const double lambda_floor = 1 / (sc->p.region_m * sc->p.region_m);
+    if (p.association == TRK_ASSOC_JOINT && lambda < lambda_floor)
+        p.sensor[0].clutter_density_per_m2 = (trk_real)lambda_floor;
     const char *field = NULL;
     const trk_status st = trk_tracker_check_params(&p, &field);
     if (st != TRK_OK) {
@@ -614,7 +616,7 @@ static int take_configs(const char *s, int *kinds, int *n, char *err, size_t err
         for (int i = 0; i < N_CFG_KINDS; i++)
             if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
         if (k < 0 || *n >= N_CFG_KINDS) {
-            snprintf(err, errlen, "--config: '%.*s' is not one of new, joint, old (each once)", (int)len, s);
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old (each once)", (int)len, s);
             return -1;
         }
         for (int i = 0; i < *n; i++)
@@ -662,10 +664,12 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
                      100000,
                      "clutter detections per scan (exactly N, uniform over the region),\n"
                      "each capped at TRK_MAX_DETECTIONS minus the scan's target detections"),
-        SIM_OPT_STRING("--config", &configs, "LIST", "new,joint,old",
-                       "configurations: new (trk_tracker_default_params), joint (the\n"
-                       "same with association = joint: JIPDA), old (the defaults before\n"
-                       "issue 14)"),
+        SIM_OPT_STRING("--config", &configs, "LIST", "new,pda,old",
+                       "configurations: new (trk_tracker_default_params: joint\n"
+                       "association), pda (the same with association = pda: each\n"
+                       "track's own PDA), old (the defaults before issue 14, per-track\n"
+                       "PDA); with association = joint and no clutter, the tracker\n"
+                       "assumes one clutter detection per scan in the region"),
         SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
                         "a tracker setting for every configuration (the keys below)"),
         SIM_OPT_FLAG("--no-amplitude", &no_amp, "no amplitudes: positions only, use_amplitude off"),
