@@ -67,7 +67,12 @@ TARGET_cortex-m4f-inline_FLOAT := 1
 TARGET_cortex-m4f-sizeopt_CC := $(ARM_CC)
 TARGET_cortex-m4f-sizeopt_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_SIZE_OPT=1
 TARGET_cortex-m4f-sizeopt_FLOAT := 1
-CROSS_TARGETS_KNOWN := $(CROSS_TARGETS_ARM) riscv cortex-m4f-inline cortex-m4f-sizeopt
+# the M4F library without joint association in the tracker (size-check's
+# typical image of a firmware that leaves it out), not in the default list
+TARGET_cortex-m4f-nojoint_CC := $(ARM_CC)
+TARGET_cortex-m4f-nojoint_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_WITH_JOINT=0
+TARGET_cortex-m4f-nojoint_FLOAT := 1
+CROSS_TARGETS_KNOWN := $(CROSS_TARGETS_ARM) riscv cortex-m4f-inline cortex-m4f-sizeopt cortex-m4f-nojoint
 
 # binutils of a target: arm-none-eabi-gcc -> arm-none-eabi-nm
 cross_tool = $(patsubst %gcc,%$(2),$(TARGET_$(1)_CC))

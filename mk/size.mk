@@ -19,9 +19,13 @@
 #                         TRK_MAX_DETECTIONS detections + that stack exceed
 #                         RAM_LIMIT (65536) at the default capacities
 #                       - the libtrk code a typical firmware image links
-#                         (fw_footprint.c) exceeds TEXT_LIMIT (32768)
+#                         (fw_footprint.c) exceeds TEXT_LIMIT_JOINT (36864) with
+#                         the defaults (joint association, issue 15: +5.5 KB), or
+#                         TEXT_LIMIT (32768, issue 9's goal) in a build without
+#                         joint association (TRK_WITH_JOINT=0, target
+#                         cortex-m4f-nojoint)
 #                       - the whole libtrk.a's .text exceeds LIB_TEXT_LIMIT
-#                         (40960): every firmware module, including the joint
+#                         (49152): every firmware module, including the joint
 #                         association (jpda.c) and IMM (imm.c) estimators a
 #                         firmware links only when it calls them. The
 #                         design-time analysis code (q2 lookup, MRE, TOC, ROC,
@@ -46,10 +50,12 @@
 SIZE_SMALL_DEFS := -DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2
 STACK_LIMIT ?= 2048
 TEXT_LIMIT ?= 32768
+TEXT_LIMIT_JOINT ?= 36864
 RAM_LIMIT ?= 65536
 # 40 KB until issue 14's initiation, existence tests and complete detection
-# model (+3.8 KB); the goal stays 32 KB (issue 13)
-LIB_TEXT_LIMIT ?= 45056
+# model (+3.8 KB), 44 KB until the tracker's joint association (issue 15,
+# +3.5 KB); the goal stays 32 KB (issue 13)
+LIB_TEXT_LIMIT ?= 49152
 SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
 TARGET_cortex-m4f_ARCH := arm
 TARGET_cortex-m4f-O2_ARCH := arm
@@ -57,6 +63,7 @@ TARGET_cortex-m7d_ARCH := arm
 TARGET_cortex-m7d-O2_ARCH := arm
 TARGET_cortex-m4f-inline_ARCH := arm
 TARGET_cortex-m4f-sizeopt_ARCH := arm
+TARGET_cortex-m4f-nojoint_ARCH := arm
 TARGET_riscv_ARCH := riscv
 
 define SIZE_template
@@ -102,14 +109,17 @@ size-report: cross
 	@sh tools/scripts/size_report.sh build/cross $(CROSS_TARGETS)
 
 TEST_EXTRA += size-check
-TEST_EXTRA_DEPS_size-check := build/cross/cortex-m4f/libtrk.a size-files-cortex-m4f
+TEST_EXTRA_DEPS_size-check := build/cross/cortex-m4f/libtrk.a size-files-cortex-m4f \
+  build/cross/cortex-m4f-nojoint/fw-footprint.txt
 size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	@awk '/^\.s?(data|bss)/ && $$2 > 0 { print "size-check: static data in libtrk: " $$0; bad = 1 } END { exit bad }' \
 	  build/cross/cortex-m4f/size-A.txt
-	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) -v llim=$(LIB_TEXT_LIMIT) ' \
+	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) -v tjlim=$(TEXT_LIMIT_JOINT) \
+	  -v llim=$(LIB_TEXT_LIMIT) ' \
 	  function hex(s,   i, v) { v = 0; s = tolower(s); for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v } \
 	  FILENAME ~ /stack.txt$$/ { split($$0, f, "\t"); if (f[1] == "trk_tracker_process_scan") { st = f[2] + 0; path = f[5] } next } \
 	  FILENAME ~ /sizeof-default/ && NF == 4 { sz[$$4] = hex($$2); next } \
+	  FILENAME ~ /nojoint\/fw-footprint/ && $$1 == "libtrk" { fwn = $$2 + 0; next } \
 	  FILENAME ~ /fw-footprint/ && $$1 == "libtrk" { fw = $$2 + 0; next } \
 	  FILENAME ~ /size-A/ && $$1 ~ /^\.text/ { lib += $$2; next } \
 	  END { bad = 0; \
@@ -118,11 +128,14 @@ size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	    printf "size-check cortex-m4f: stack of trk_tracker_process_scan %d B (limit %d)\n", st, slim; \
 	    printf "size-check cortex-m4f: RAM for the default capacities %d B = tracker %d + scan %d + stack %d (limit %d)\n", \
 	      ram, sz["trk_sizeof_tracker"], sz["trk_sizeof_scan_detections"], st, rlim; \
-	    printf "size-check cortex-m4f: libtrk .text in a typical firmware image %d B (limit %d); no .data/.bss\n", fw, tlim; \
+	    printf "size-check cortex-m4f: libtrk .text in a typical firmware image %d B (limit %d); no .data/.bss\n", fw, tjlim; \
+	    printf "size-check cortex-m4f: the same without joint association (TRK_WITH_JOINT=0) %d B (limit %d)\n", fwn, tlim; \
 	    printf "size-check cortex-m4f: the whole libtrk.a .text %d B (limit %d; analysis modules in libtrk_perf.a)\n", lib, llim; \
 	    if (st > slim) { print "size-check: FAILED stack, worst path: " path; bad = 1 } \
 	    if (ram > rlim) { print "size-check: FAILED RAM"; bad = 1 } \
-	    if (fw > tlim) { print "size-check: FAILED .text"; bad = 1 } \
+	    if (fw > tjlim) { print "size-check: FAILED .text"; bad = 1 } \
+	    if (fwn > tlim) { print "size-check: FAILED .text without joint association"; bad = 1 } \
 	    if (lib > llim) { print "size-check: FAILED .text of libtrk.a"; bad = 1 } \
 	    exit bad }' build/cross/cortex-m4f/stack.txt build/cross/cortex-m4f/sizeof-default.txt \
-	  build/cross/cortex-m4f/fw-footprint.txt build/cross/cortex-m4f/size-A.txt
+	  build/cross/cortex-m4f/fw-footprint.txt build/cross/cortex-m4f-nojoint/fw-footprint.txt \
+	  build/cross/cortex-m4f/size-A.txt

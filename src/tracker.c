@@ -8,14 +8,18 @@
 
 #include "tracker_impl.h"
 #include "tracker_initiate_impl.h"
-#include "tracker_joint_impl.h"
 #include "tracker_update_impl.h"
+#if TRK_WITH_JOINT
+#include "tracker_joint_impl.h"
+#endif
 
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
+#if TRK_WITH_JOINT
 static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
+#endif
 static void update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t joint_k,
                          struct trk_scan_report *rep);
 static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
@@ -45,8 +49,11 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     t->scan_no++;
     free_terminated(t);
     load_detections(t, scan, &rep);
+#if TRK_WITH_JOINT
     if (t->params.association == TRK_ASSOC_JOINT) update_joint(t, scan, &rep);
-    else update_each(t, scan, &rep);
+    else
+#endif
+        update_each(t, scan, &rep);
     if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
     initiate(t, scan, &rep);
     t->last_time_us = scan->time_us;
@@ -181,6 +188,7 @@ static void update_each(struct trk_tracker *t, const struct trk_scan *scan, stru
         if (t->track[i].status == TRK_TRACK_TENTATIVE) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
 }
 
+#if TRK_WITH_JOINT
 /* Joint association (tracker_joint_impl.h): gate every live track, solve
  * the clusters, then update each track in the order it was gated; a track
  * left out of the joint problem is updated by its own PDA. */
@@ -196,6 +204,7 @@ static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, str
             update_track(t, &t->track[i], scan, joint ? k++ : JOINT_NONE, rep);
         }
 }
+#endif
 
 /* One live track: update (predict, gate, PDA; or, as joint track joint_k,
  * the joint association's update), the covariance bound, count the look,
@@ -205,8 +214,14 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
 {
     struct trk_look look;
     rep->n_tracks_updated++;
-    if ((joint_k == JOINT_NONE ? track_update(t, tr, scan, &look)
-                               : track_update_joint(t, tr, scan, joint_k, &look)) != 0) {
+#if TRK_WITH_JOINT
+    const int failed = joint_k == JOINT_NONE ? track_update(t, tr, scan, &look)
+                                             : track_update_joint(t, tr, scan, joint_k, &look);
+#else
+    const int failed = track_update(t, tr, scan, &look);
+    (void)joint_k;
+#endif
+    if (failed != 0) {
         end_track(tr, TRK_END_NUMERICAL, rep);
         return;
     }

@@ -32,7 +32,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
     p->max_pos_sigma_ratio = 20;
-    p->association = TRK_ASSOC_JOINT; /* JIPDA: README "Joint association" */
+    p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: README "Association" */
     p->merge_gate_d2 = 4;
     p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
                                                               detections */
@@ -157,6 +157,7 @@ static trk_status check_association(const struct trk_tracker_params *p, const ch
 {
     if (p->association == TRK_ASSOC_PDA) return TRK_OK;
     if (p->association != TRK_ASSOC_JOINT) return refuse(field, "association", TRK_E_ARG);
+    if (!TRK_WITH_JOINT) return refuse(field, "association", TRK_E_UNSUPPORTED);
     if (p->clutter != TRK_CLUTTER_PARAMETRIC) return refuse(field, "association", TRK_E_UNSUPPORTED);
     for (unsigned s = 0; s < p->n_sensors; s++)
         if (!(p->sensor[s].clutter_density_per_m2 > 0)) return refuse(field, "association", TRK_E_UNSUPPORTED);

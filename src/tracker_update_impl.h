@@ -46,7 +46,7 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
                                       pr.x, pr.p, pr.pht, &pr.inn};
     struct trk_i_pda_set set;
-    (void)gate(t, tr, scan, &pp, 0, &set); /* one track's set fits: TRK_MAX_GATED_PAIRS >= TRK_MAX_DETECTIONS */
+    (void)gate(t, tr, scan, &pp, 0, &set); /* one track's set fits: TRK_I_PAIRS >= TRK_MAX_DETECTIONS */
     struct trk_i_pda_out out;
     struct trk_visibility vis = tr->vis;
     if (trk_i_pda_run(pda, &pp, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
@@ -152,7 +152,7 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
     const struct trk_innovation *inn = pp->inn;
     const trk_real excl = t->params.init_exclusion_d2;
     struct gate gt = {pda, pda->gamma, tr->status == TRK_TRACK_CONFIRMED && excl > pda->gamma ? excl : pda->gamma,
-                      set, t->ws.cand + off, TRK_MAX_GATED_PAIRS - off, 0};
+                      set, t->ws.cand + off, TRK_I_PAIRS - off, 0};
     const trk_real wx = trk_sqrt(gt.g * inn->s[S(ZX, ZX)]), wy = trk_sqrt(gt.g * inn->s[S(ZY, ZY)]);
     const trk_real zx = inn->z_pred[ZX], zy = inn->z_pred[ZY];
     const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;

@@ -145,6 +145,20 @@
 #define TRK_WITH_CLUTTER_TESTS 1
 #endif
 
+/* Joint association (JIPDA) in the track table (trk/tracker.h,
+ * TRK_ASSOC_JOINT, the default association). 0 leaves it out of the tracker:
+ * its pair store shrinks to one track's gated set and its code (the cluster
+ * solver, about 5 KB on a Cortex-M4F) is not linked; the default association
+ * is then the per-track PDA, and TRK_ASSOC_JOINT makes trk_tracker_init
+ * return TRK_E_UNSUPPORTED. The jpda module itself is always built. 1
+ * (default) keeps it. */
+#ifndef TRK_WITH_JOINT
+#define TRK_WITH_JOINT 1
+#endif
+#if TRK_WITH_JOINT != 0 && TRK_WITH_JOINT != 1
+#error "TRK_WITH_JOINT must be 0 or 1 (joint association in the tracker); set -DTRK_WITH_JOINT=1"
+#endif
+
 /* The library's small kernels (the *_impl.h headers of src) are forced
  * inline so that a caller passing constant dimensions (the 2-D CV model) gets
  * fully unrolled code. TRK_SIZE_OPT = 1 leaves the inlining decision to the

@@ -273,7 +273,8 @@ enum trk_assoc_method {
     TRK_ASSOC_PDA = 0,  /* per-track PDA (IPDA existence) */
     TRK_ASSOC_JOINT = 1 /* joint: JPDA, or JIPDA with track_visibility (the track's
                            existence trk_track.vis.pv is then the JIPDA existence);
-                           needs parametric clutter with a density > 0 per sensor */
+                           needs parametric clutter with a density > 0 per sensor,
+                           and TRK_WITH_JOINT (config.h) */
 };
 
 struct trk_tracker_params {
@@ -428,6 +429,14 @@ struct trk_candidate {
     uint8_t used;            /* paired this scan */
 };
 
+/* The pair store: every track's gated pairs with joint association, else
+ * one track's gated set. */
+#if TRK_WITH_JOINT
+#define TRK_I_PAIRS TRK_MAX_GATED_PAIRS
+#else
+#define TRK_I_PAIRS TRK_MAX_DETECTIONS
+#endif
+
 struct trk_tracker {
     struct trk_tracker_params params;
     struct trk_pda pda[TRK_MAX_SENSORS];        /* per sensor: pd, gate, clutter */
@@ -459,14 +468,16 @@ struct trk_tracker {
         trk_real log_lr[TRK_MAX_DETECTIONS];                   /* amplitude ln l^a */
         uint16_t src[TRK_MAX_DETECTIONS];                      /* index in the scan */
         uint8_t used[TRK_MAX_DETECTIONS];                      /* gated by some track */
-        uint16_t cand[TRK_MAX_GATED_PAIRS];                    /* gated pairs: one track's set
+        uint16_t cand[TRK_I_PAIRS];                            /* gated pairs: one track's set
                                                                   (per-track PDA), or every
                                                                   track's (joint) */
-        trk_real w[TRK_MAX_GATED_PAIRS];                       /* their weights */
+        trk_real w[TRK_I_PAIRS];                               /* their weights */
+#if TRK_WITH_JOINT
         uint16_t joint_slot[TRK_MAX_TRACKS];                   /* joint: the slot of joint track k, */
         uint16_t pair_first[TRK_MAX_TRACKS + 1];               /* its pairs [pair_first[k], k + 1) */
         trk_real miss[TRK_MAX_TRACKS];                         /* ln w_k0, then P(k <- none) */
         size_t n_joint;
+#endif
         trk_real amp_db[2 * TRK_MAX_DETECTIONS];               /* amplitudes (dB) of the
                                                                   detections that have one,
                                                                   twice over: the others of
@@ -478,11 +489,13 @@ struct trk_tracker {
                 trk_real z[TRK_CV2_NZ * TRK_MAX_DETECTIONS];   /* its gated detections */
                 trk_real r_own[TRK_CV2_NZ * TRK_CV2_NZ * TRK_MAX_DETECTIONS]; /* their own R_j */
             } set;
+#if TRK_WITH_JOINT
             struct {                                           /* the joint marginals: */
                 struct trk_jpda_solver solver;
                 trk_real p_pair[TRK_MAX_GATED_PAIRS];
                 trk_real p_miss[TRK_MAX_TRACKS];
             } joint;
+#endif
             struct {                                           /* initiation's x-order sort */
                 uint16_t tmp[TRK_MAX_DETECTIONS];
                 uint16_t count[TRK_MAX_DETECTIONS + 1];
