@@ -105,7 +105,7 @@ $(foreach t,$(CROSS_TARGETS_KNOWN),$(eval $(call SIZE_template,$(t))))
 
 .PHONY: size-report size-check $(addprefix size-files-,$(CROSS_TARGETS_KNOWN))
 size-report: cross
-	@$(MAKE) --no-print-directory $(addprefix size-files-,$(CROSS_TARGETS)) >/dev/null
+	@$(MAKE) --no-print-directory $(addprefix size-files-,$(CROSS_TARGETS)) build/cross/cortex-m4f-nojoint/fw-footprint.txt >/dev/null
 	@sh tools/scripts/size_report.sh build/cross $(CROSS_TARGETS)
 
 TEST_EXTRA += size-check

@@ -159,6 +159,9 @@ if [ -f "$dir/$m4/size-A.txt" ]; then
     [ -s "$dir/$m4/fw-footprint.txt" ] && awk '$1 == "libtrk" {
             printf "   .text cortex-m4f (typical image)        %6d B  (goal <= 32768: %s): libtrk code linked by fw_footprint.c\n",
                 $2, $2 <= 32768 ? "met" : "NOT MET" }' "$dir/$m4/fw-footprint.txt"
+    [ -s "$dir/$m4-nojoint/fw-footprint.txt" ] && awk '$1 == "libtrk" {
+            printf "   .text cortex-m4f (typical image, TRK_WITH_JOINT=0) %6d B  (goal <= 32768: %s): without joint association\n",
+                $2, $2 <= 32768 ? "met" : "NOT MET" }' "$dir/$m4-nojoint/fw-footprint.txt"
     tr=$(hexsize "$dir/$m4/sizeof-default.txt" | awk '$1 == "trk_sizeof_tracker" { print $2 }')
     sd=$(hexsize "$dir/$m4/sizeof-default.txt" | awk '$1 == "trk_sizeof_scan_detections" { print $2 }')
     st=$(awk -F '\t' '$1 == "trk_tracker_process_scan" { print $2 }' "$dir/$m4/stack.txt")
