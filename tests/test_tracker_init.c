@@ -6,6 +6,7 @@
  * every termination method ending a vanished target's track within its
  * design delay at every clutter level. */
 #include "trk_test.h"
+#include "trk_test_sonar.h"
 #include "trk/kalman.h"
 #include "trk/tracker.h"
 
@@ -25,24 +26,8 @@ static double urand(void) { return trk_test_urand(&rng_state); }
 static double nrand(void) { return trk_test_nrand(&rng_state); }
 
 /* The sonar-like sensor of issue 14: P_D 0.8, R = 25 I, clutter density lambda. */
-static void sonar_params(struct trk_tracker_params *p, double lambda)
-{
-    trk_tracker_default_params(p);
-    p->sensor[0].pd = TRK_REAL_C(0.8);
-    p->sensor[0].meas_cov_m2[0] = p->sensor[0].meas_cov_m2[2] = 25;
-    p->sensor[0].meas_cov_m2[1] = 0;
-    p->sensor[0].clutter_density_per_m2 = (trk_real)lambda;
-    p->process_noise_q = TRK_REAL_C(1e-3);
-}
-
-static struct trk_detection det_at(double x, double y)
-{
-    struct trk_detection d;
-    memset(&d, 0, sizeof d);
-    d.x_m = (trk_real)x;
-    d.y_m = (trk_real)y;
-    return d;
-}
+#define sonar_params trk_test_sonar_params
+#define det_at trk_test_det_at
 
 static trk_status run_scan(int k, const struct trk_detection *d, size_t n, struct trk_scan_report *rep)
 {

@@ -7,6 +7,7 @@
  * store's overflow falls back to the track's own PDA and is counted; the
  * parameter check. */
 #include "trk_test.h"
+#include "trk_test_sonar.h"
 #include "trk/jpda.h"
 #include "trk/kalman.h"
 #include "trk/tracker.h"
@@ -19,26 +20,14 @@ static uint64_t rng_state; /* the generator of trk_test.h */
 static double urand(void) { return trk_test_urand(&rng_state); }
 static double nrand(void) { return trk_test_nrand(&rng_state); }
 
-/* issue 14's sonar: P_D 0.8, R = 25 I, clutter density lambda */
+/* issue 14's sonar (trk_test_sonar.h) with association a */
 static void sonar_params(struct trk_tracker_params *p, double lambda, enum trk_assoc_method a)
 {
-    trk_tracker_default_params(p);
-    p->sensor[0].pd = TRK_REAL_C(0.8);
-    p->sensor[0].meas_cov_m2[0] = p->sensor[0].meas_cov_m2[2] = 25;
-    p->sensor[0].meas_cov_m2[1] = 0;
-    p->sensor[0].clutter_density_per_m2 = (trk_real)lambda;
-    p->process_noise_q = TRK_REAL_C(1e-3);
+    trk_test_sonar_params(p, lambda);
     p->association = a;
 }
 
-static struct trk_detection det_at(double x, double y)
-{
-    struct trk_detection d;
-    memset(&d, 0, sizeof d);
-    d.x_m = (trk_real)x;
-    d.y_m = (trk_real)y;
-    return d;
-}
+#define det_at trk_test_det_at
 
 static trk_status run(struct trk_tracker *t, int k, const struct trk_detection *d, size_t n,
                       struct trk_scan_report *rep)

@@ -1,0 +1,30 @@
+/* trk_test_sonar.h - what the track-table tests of issues 14 and 15 share:
+ * the sonar-like sensor (P_D 0.8, R = 25 I, clutter density lambda, q 1e-3
+ * on the library defaults) and a detection at a point. */
+#ifndef TRK_TEST_SONAR_H
+#define TRK_TEST_SONAR_H
+
+#include <string.h>
+
+#include "trk/tracker.h"
+
+static inline void trk_test_sonar_params(struct trk_tracker_params *p, double lambda)
+{
+    trk_tracker_default_params(p);
+    p->sensor[0].pd = TRK_REAL_C(0.8);
+    p->sensor[0].meas_cov_m2[0] = p->sensor[0].meas_cov_m2[2] = 25;
+    p->sensor[0].meas_cov_m2[1] = 0;
+    p->sensor[0].clutter_density_per_m2 = (trk_real)lambda;
+    p->process_noise_q = TRK_REAL_C(1e-3);
+}
+
+static inline struct trk_detection trk_test_det_at(double x, double y)
+{
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    d.x_m = (trk_real)x;
+    d.y_m = (trk_real)y;
+    return d;
+}
+
+#endif
