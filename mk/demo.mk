@@ -31,3 +31,11 @@ demo-main: $(BUILD)/bin/trk-sim $(DEMO_TABLES)
 ifneq ($(filter demo,$(MAKECMDGOALS)),)
 demo-lcm: | demo-main
 endif
+
+# the firmware-style example as a `make test` step: it exits non-zero unless
+# every target has a confirmed track and no confirmed track is false
+TEST_EXTRA += example-firmware-loop
+TEST_EXTRA_DEPS_example-firmware-loop := $(BUILD)/bin/example-firmware_loop
+example-firmware-loop: $(TEST_EXTRA_DEPS_example-firmware-loop)
+	@out=$$($(BUILD)/bin/example-firmware_loop) || { echo "$$out"; echo "example-firmware-loop: FAILED"; exit 1; }; \
+	  echo "$$out" | tail -1

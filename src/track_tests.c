@@ -38,9 +38,7 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
         const struct trk_existence_confirm_params *x = &p->confirm.u.existence;
         if (!p->track_visibility) return TRK_E_ARG;
         if (!isfinite(x->p_confirm) || !isfinite(x->reject_odds_ratio)) return TRK_E_NAN;
-        st = x->p_confirm > 0 && x->p_confirm < 1 && x->reject_odds_ratio >= 0 && x->reject_odds_ratio < 1
-                 ? TRK_OK
-                 : TRK_E_RANGE;
+        st = trk_i_existence_confirm_ok(x) ? TRK_OK : TRK_E_RANGE;
         break;
     }
     default: return TRK_E_ARG;
@@ -55,7 +53,10 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
         const trk_real pt = p->term.u.existence.p_terminate;
         if (!p->track_visibility) return TRK_E_ARG;
         if (!isfinite(pt)) return TRK_E_NAN;
-        st = pt > 0 && pt < 1 ? TRK_OK : TRK_E_RANGE;
+        st = pt >= TRK_REAL_MIN && pt < 1 &&
+                     !(p->confirm.method == TRK_CONFIRM_EXISTENCE && pt >= p->confirm.u.existence.p_confirm)
+                 ? TRK_OK
+                 : TRK_E_RANGE;
         break;
     }
     default: return TRK_E_ARG;

@@ -27,6 +27,15 @@ struct trk_look {
     const trk_real *a_others_db;
 };
 
+/* Existence confirmation's parameters usable (trk/tracker.h): p_confirm
+ * in [0.5, 1) (a normal number, so a value punned through another union
+ * member is refused), reject_odds_ratio in [0, 1). */
+static inline int trk_i_existence_confirm_ok(const struct trk_existence_confirm_params *x)
+{
+    return x->p_confirm >= TRK_REAL_C(0.5) && x->p_confirm < 1 && x->reject_odds_ratio >= 0 &&
+           x->reject_odds_ratio < 1;
+}
+
 /* Does the confirmation method need the nearest detection (clutter tests)? */
 int trk_i_confirm_needs_nearest(const struct trk_tracker_params *p);
 

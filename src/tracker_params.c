@@ -224,8 +224,7 @@ static int confirm_builds(const struct trk_tracker_params *p)
     case TRK_CONFIRM_VISIBILITY: return p->track_visibility;
     case TRK_CONFIRM_EXISTENCE: {
         const struct trk_existence_confirm_params *x = &p->confirm.u.existence;
-        return p->track_visibility && x->p_confirm > 0 && x->p_confirm < 1 && x->reject_odds_ratio >= 0 &&
-               x->reject_odds_ratio < 1;
+        return p->track_visibility && trk_i_existence_confirm_ok(x);
     }
     default: return 0;
     }

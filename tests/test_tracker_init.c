@@ -400,6 +400,35 @@ static void test_candidate_store(void **state)
     }
 }
 
+/* The example's old mistake: M/N and K/N members written while the methods
+ * are existence (the defaults) pun the probabilities into subnormals, which
+ * confirmed clutter at once and never ended it. Refused, naming the field. */
+static void test_existence_params_punned(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const char *field = NULL;
+    sonar_params(&p, 1e-6);
+    p.confirm.u.mn.m = 4;
+    p.confirm.u.mn.n = 5;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "confirm.u.existence");
+    sonar_params(&p, 1e-6);
+    p.term.u.kn.k = 1;
+    p.term.u.kn.n = 6;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "term.u.existence");
+    sonar_params(&p, 1e-6);
+    p.confirm.u.existence.p_confirm = TRK_REAL_C(0.4); /* confirm what more likely does not exist */
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    sonar_params(&p, 1e-6);
+    p.term.u.existence.p_terminate = TRK_REAL_C(0.9995); /* above p_confirm 0.999 */
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "term.u.existence");
+    sonar_params(&p, 1e-6);
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -410,6 +439,7 @@ int main(void)
         cmocka_unit_test(test_full_table_replaces_weakest),
         cmocka_unit_test(test_no_duplicates),
         cmocka_unit_test(test_vanished_target_every_method),
+        cmocka_unit_test(test_existence_params_punned),
     };
     return trk_run_tests("tracker_init", tests, NULL, NULL);
 }

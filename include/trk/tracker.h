@@ -148,8 +148,11 @@ enum trk_confirm_method {
                                     track_visibility */
 };
 
+/* The existence methods' probabilities must be normal numbers: a value
+ * written through another member of the method union (e.g. confirm.u.mn.m = 4
+ * while the method is existence) reads as a subnormal and is refused. */
 struct trk_existence_confirm_params {
-    trk_real p_confirm;          /* (0, 1) */
+    trk_real p_confirm;          /* [0.5, 1): confirm what more likely exists than not */
     trk_real reject_odds_ratio;  /* [0, 1), 0 = never reject */
 };
 
@@ -174,7 +177,8 @@ enum trk_term_method {
 };
 
 struct trk_existence_term_params {
-    trk_real p_terminate;        /* (0, 1) */
+    trk_real p_terminate;        /* normal, in (0, 1); below p_confirm with existence
+                                    confirmation */
 };
 
 struct trk_term_params {

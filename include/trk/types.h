@@ -19,6 +19,7 @@ typedef float trk_real;
 #define TRK_REAL_C(x) x##f
 #define TRK_REAL_EPS 1.1920929e-07f
 #define TRK_REAL_MAX 3.40282347e+38f
+#define TRK_REAL_MIN 1.17549435e-38f /* smallest normal */
 #define TRK_REAL_IS_FLOAT 1
 #define trk_sqrt sqrtf
 #define trk_exp expf
@@ -39,6 +40,7 @@ typedef double trk_real;
 #define TRK_REAL_C(x) x
 #define TRK_REAL_EPS 2.2204460492503131e-16
 #define TRK_REAL_MAX 1.7976931348623157e+308
+#define TRK_REAL_MIN 2.2250738585072014e-308 /* smallest normal */
 #define TRK_REAL_IS_FLOAT 0
 #define trk_sqrt sqrt
 #define trk_exp exp
