@@ -161,12 +161,11 @@ static struct bad make_bad(int kind, int k)
     case 5: m.n_detections = -1, r.want = LCMC_COUNT, r.what = "count -1"; break;
     case 6: m.n_detections = 257, r.want = LCMC_COUNT, r.what = "count 257"; break;
     case 7: m.n_detections = 0x40000001, r.want = LCMC_COUNT, r.what = "count 2^30+1"; break;
-    case 8: m.detections[0].y_m = NAN, r.want = LCMC_NONFINITE, r.what = "NaN"; break;
-    case 9:
-        m.detections[1].has_amplitude = 1, m.detections[1].amplitude = INFINITY;
-        r.want = LCMC_NONFINITE, r.what = "inf amplitude";
-        break;
-    case 10: m.detections[0].has_cov = 2, r.want = LCMC_FIELD, r.what = "flag 2"; break;
+    /* a NaN, an infinite amplitude or a flag 2 in one detection no longer
+     * rejects the scan (issue 17 item 9): test_bad_detection_dropped_alone */
+    case 8: m.utime = INT64_MAX, r.want = LCMC_FIELD, r.what = "utime INT64_MAX"; break;
+    case 9: m.n_detections = INT32_MIN, r.want = LCMC_COUNT, r.what = "count INT32_MIN"; break;
+    case 10: m.sensor_id = -1, r.want = LCMC_SENSOR, r.what = "sensor -1"; break;
     case 11: m.utime = -5, r.want = LCMC_FIELD, r.what = "negative utime"; break;
     case 12: m.sensor_id = 3, r.want = LCMC_SENSOR, r.what = "sensor 3"; break;
     case 13: /* before the last accepted scan (k - 1) */
@@ -232,9 +231,10 @@ static void test_bad_messages_counted_and_harmless(void **state)
         if (b->c.by_reason[r] != want[r])
             fail_msg("%s: %llu rejections, want %llu", lcmc_reason_name((enum lcmc_reason)r),
                      (unsigned long long)b->c.by_reason[r], (unsigned long long)want[r]);
-    /* every category occurred */
-    assert_true(want[LCMC_DECODE] && want[LCMC_COUNT] && want[LCMC_NONFINITE] && want[LCMC_FIELD] &&
-                want[LCMC_SENSOR] && want[LCMC_TIME] && want[LCMC_GAP]);
+    /* every scan-level category occurred (NONFINITE is a detection's only) */
+    assert_true(want[LCMC_DECODE] && want[LCMC_COUNT] && want[LCMC_FIELD] && want[LCMC_SENSOR] &&
+                want[LCMC_TIME] && want[LCMC_GAP]);
+    assert_true(want[LCMC_NONFINITE] == 0 && b->c.det_rejected == 0);
     assert_true((TRK_MAX_DETECTIONS >= 256) == (want[LCMC_CAPACITY] == 0));
     /* the status message says the same */
     const void *sb;
@@ -248,7 +248,6 @@ static void test_bad_messages_counted_and_harmless(void **state)
     assert_true(st.n_rejected_decode == (int64_t)want[LCMC_DECODE]);
     assert_true(st.n_rejected_count == (int64_t)want[LCMC_COUNT]);
     assert_true(st.n_rejected_capacity == (int64_t)want[LCMC_CAPACITY]);
-    assert_true(st.n_rejected_nonfinite == (int64_t)want[LCMC_NONFINITE]);
     assert_true(st.n_rejected_field == (int64_t)want[LCMC_FIELD]);
     assert_true(st.n_rejected_sensor == (int64_t)want[LCMC_SENSOR]);
     assert_true(st.n_rejected_time == (int64_t)want[LCMC_TIME]);
@@ -259,6 +258,89 @@ static void test_bad_messages_counted_and_harmless(void **state)
     bridge_free(b);
 }
 
+/* A bad detection is dropped alone and counted; the other detections of its
+ * scan are processed: every scan's track list equals the direct run on the
+ * scan without it, except the list's two detection counts. */
+static void test_bad_detection_dropped_alone(void **state)
+{
+    (void)state;
+    struct bridge_opts o = opts;
+    o.quiet = 0;
+    o.log_interval_s = 1e6;
+    o.log = tmpfile();
+    assert_non_null(o.log);
+    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
+    assert_non_null(b);
+    static trk_detection_scan_t m;
+    static trk_track_list_t want_tl;
+    static uint8_t buf[LCMC_SCAN_WIRE_SIZE], want[1 << 15];
+    uint64_t n_nonfinite = 0, n_field = 0;
+    for (int k = 0; k < N_SCANS; k++) {
+        m = scan_msg[k];
+        const size_t n = (size_t)m.n_detections;
+        if (n + 1 > TRK_MAX_DETECTIONS) { /* no room for one more: unchanged */
+            handle_good(b, k, k);
+            continue;
+        }
+        /* insert a bad detection at position p */
+        const size_t p = (size_t)k % (n + 1);
+        memmove(&m.detections[p + 1], &m.detections[p], (n - p) * sizeof m.detections[0]);
+        m.n_detections = (int32_t)(n + 1);
+        trk_detection_t *d = &m.detections[p];
+        memset(d, 0, sizeof *d);
+        d->x_m = 10, d->y_m = 20;
+        switch (k % 5) {
+        case 0: d->y_m = NAN, n_nonfinite++; break;
+        case 1: d->has_amplitude = 1, d->amplitude = INFINITY, n_nonfinite++; break;
+        case 2: d->has_cov = 2, n_field++; break;
+        case 3: d->has_amplitude = 1, d->amplitude = -1, n_field++; break;
+        default: d->has_cov = 1, d->cov_m2[0] = NAN, n_nonfinite++; break;
+        }
+        assert_int_equal(trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m), LCMC_SCAN_WIRE_SIZE);
+        const void *out;
+        size_t len;
+        assert_int_equal(bridge_handle(b, buf, sizeof buf, k, &out, &len), LCMC_OK);
+        /* the direct run's list, with the message's count and the drop */
+        assert_int_equal(trk_track_list_t_decode(expect_bytes[k], 0, (int)expect_len[k], &want_tl),
+                         (int)expect_len[k]);
+        want_tl.n_detections++;
+        want_tl.n_detections_rejected++;
+        const int wn = trk_track_list_t_encode(want, 0, (int)sizeof want, &want_tl);
+        assert_int_equal(len, (size_t)wn);
+        assert_memory_equal(out, want, len);
+    }
+    assert_true(b->c.processed == N_SCANS && b->c.rejected == 0);
+    assert_true(b->c.det_nonfinite == n_nonfinite && b->c.det_field == n_field);
+    assert_true(b->c.det_rejected == n_nonfinite + n_field && n_nonfinite + n_field > 0);
+    assert_true(b->c.det_cov == 0 && b->c.det_amplitude == 0);
+    const void *sb;
+    size_t sl;
+    bridge_status(b, 1, &sb, &sl);
+    static trk_bridge_status_t st;
+    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    assert_true(st.n_detections_rejected == (int64_t)(n_nonfinite + n_field));
+    assert_true(st.n_detections_nonfinite == (int64_t)n_nonfinite);
+    assert_true(st.n_detections_field == (int64_t)n_field);
+    assert_true(st.n_rejected == 0 && st.n_processed == N_SCANS);
+    /* logged once (naming the detection), the rest counted at the flush */
+    bridge_log_flush(b);
+    rewind(o.log);
+    static char text[4096];
+    size_t tn = fread(text, 1, sizeof text - 1, o.log);
+    text[tn] = 0;
+    fclose(o.log);
+    assert_non_null(strstr(text, "dropped 1 bad detection(s)"));
+    assert_non_null(strstr(text, "detections[0]: position (10, nan)"));
+    char more[96];
+    snprintf(more, sizeof more, "%llu more 'dropped detection' messages not shown",
+             (unsigned long long)(n_nonfinite + n_field - 1));
+    assert_non_null(strstr(text, more));
+    bridge_free(b);
+}
+
+/* Sequence numbers: a small forward step counts the missing scans; a repeat,
+ * a step back or a step above BRIDGE_SEQ_GAP_MAX + 1 is one jump (seq 2^63-1
+ * after 4 used to add 9.2e18 "gaps", issue 17 item 9). */
 static void test_seq_gaps(void **state)
 {
     (void)state;
@@ -266,8 +348,10 @@ static void test_seq_gaps(void **state)
     assert_non_null(b);
     static trk_detection_scan_t m;
     static uint8_t buf[LCMC_SCAN_WIRE_SIZE];
-    const int64_t seqs[] = {5, 6, 9, 10, 10, 4, INT64_MAX};
-    for (int i = 0; i < 7; i++) {
+    const int64_t seqs[] = {5,         6, 9, 10, 10, 4, INT64_MAX, 0, BRIDGE_SEQ_GAP_MAX + 2,
+                            2 * BRIDGE_SEQ_GAP_MAX + 3, INT64_MIN, INT64_MIN + 3};
+    const int n = (int)(sizeof seqs / sizeof seqs[0]);
+    for (int i = 0; i < n; i++) {
         m = scan_msg[i];
         m.seq = seqs[i];
         trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m);
@@ -275,8 +359,67 @@ static void test_seq_gaps(void **state)
         size_t len;
         assert_int_equal(bridge_handle(b, buf, sizeof buf, i, &out, &len), LCMC_OK);
     }
-    /* 7, 8 missing; then 4 -> INT64_MAX counts INT64_MAX - 5 */
-    assert_true(b->c.seq_gaps == 2 + (uint64_t)(INT64_MAX - 5));
+    /* gaps: 7, 8; BRIDGE_SEQ_GAP_MAX between the two large numbers; 2 at the end.
+     * jumps: 10 -> 10, 10 -> 4, 4 -> INT64_MAX, INT64_MAX -> 0, 0 -> GAP_MAX + 2
+     * (GAP_MAX + 1 missing), 2 GAP_MAX + 3 -> INT64_MIN */
+    assert_true(b->c.seq_gaps == 2 + BRIDGE_SEQ_GAP_MAX + 2);
+    assert_true(b->c.seq_jumps == 6);
+    const void *sb;
+    size_t sl;
+    bridge_status(b, 1, &sb, &sl);
+    static trk_bridge_status_t st;
+    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    assert_true(st.n_seq_gaps == 2 + BRIDGE_SEQ_GAP_MAX + 2 && st.n_seq_jumps == 6);
+    bridge_free(b);
+}
+
+/* Detections below the amplitude threshold are counted (status, summary):
+ * with sensor.0.pfa 1e-9 the demo log lost most detections while the
+ * summary said "detections dropped 0" (issue 17 item 9). */
+static void test_below_threshold_counted(void **state)
+{
+    (void)state;
+    struct tcfg c2 = cfg;
+    assert_int_equal(tcfg_set(&c2, "sensor.0.amplitude", "rayleigh", err, sizeof err), 0);
+    assert_int_equal(tcfg_set(&c2, "sensor.0.pfa", "1e-3", err, sizeof err), 0); /* t = 2.63 */
+    struct bridge *b = bridge_new(&c2, &opts, err, sizeof err);
+    assert_non_null(b);
+    static trk_detection_scan_t m;
+    static uint8_t buf[LCMC_SCAN_WIRE_SIZE];
+    memset(&m, 0, sizeof m);
+    m.utime = 1000000;
+    m.n_detections = 4;
+    const double amp[4] = {0.5, 2.5, 3.0, 10.0}; /* two below, two above */
+    for (int i = 0; i < 4; i++) {
+        m.detections[i].x_m = 100.0 * i;
+        m.detections[i].y_m = 50;
+        m.detections[i].has_amplitude = 1;
+        m.detections[i].amplitude = amp[i];
+    }
+    trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m);
+    const void *out;
+    size_t len;
+    assert_int_equal(bridge_handle(b, buf, sizeof buf, 0, &out, &len), LCMC_OK);
+    m.utime += 1000000;
+    trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m);
+    assert_int_equal(bridge_handle(b, buf, sizeof buf, 1, &out, &len), LCMC_OK);
+    assert_true(b->c.det_below_threshold == 4);
+    assert_true(b->c.det_rejected == 0);
+    const void *sb;
+    size_t sl;
+    bridge_status(b, 1, &sb, &sl);
+    static trk_bridge_status_t st;
+    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    assert_true(st.n_detections_below_threshold == 4);
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    bridge_summary(b, f);
+    rewind(f);
+    static char text[2048];
+    size_t tn = fread(text, 1, sizeof text - 1, f);
+    text[tn] = 0;
+    fclose(f);
+    assert_non_null(strstr(text, "below the amplitude threshold 4"));
     bridge_free(b);
 }
 
@@ -335,6 +478,11 @@ static void test_refuses_bad_config(void **state)
     assert_int_equal(tcfg_set(&bad, "sensor.0.amplitude", "k", err, sizeof err), 0); /* no table */
     assert_null(bridge_new(&bad, &opts, err, sizeof err));
     assert_non_null(strstr(err, "amp_table"));
+    /* its square overflows: refused at init, the field named (issue 17 item 2) */
+    bad = cfg;
+    assert_int_equal(tcfg_set(&bad, "init_speed_sigma_mps", "1e160", err, sizeof err), 0);
+    assert_null(bridge_new(&bad, &opts, err, sizeof err));
+    assert_non_null(strstr(err, "init_speed_sigma_mps"));
 }
 
 /* The other confirmation / termination methods run through the bridge the
@@ -700,7 +848,9 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_handle_matches_direct),
         cmocka_unit_test(test_bad_messages_counted_and_harmless),
+        cmocka_unit_test(test_bad_detection_dropped_alone),
         cmocka_unit_test(test_seq_gaps),
+        cmocka_unit_test(test_below_threshold_counted),
         cmocka_unit_test(test_rate_limited_log),
         cmocka_unit_test(test_refuses_bad_config),
         cmocka_unit_test(test_other_methods),
