@@ -798,6 +798,139 @@ static void test_replay_damaged_log(void **state)
     remove(out);
 }
 
+/* One log record written byte by byte (the channel may hold NULs). */
+static void raw_record(FILE *f, int64_t ts, const char *ch, size_t chlen, const void *data, size_t len)
+{
+    uint8_t h[28];
+    put_be32(h, LCMLOG_SYNC);
+    put_be32(h + 4, 0), put_be32(h + 8, 0);
+    put_be32(h + 12, (uint32_t)((uint64_t)ts >> 32)), put_be32(h + 16, (uint32_t)ts);
+    put_be32(h + 20, (uint32_t)chlen), put_be32(h + 24, (uint32_t)len);
+    assert_int_equal(fwrite(h, 1, sizeof h, f), sizeof h);
+    assert_int_equal(fwrite(ch, 1, chlen, f), chlen);
+    assert_int_equal(fwrite(data, 1, len, f), len);
+}
+
+/* "TRK_DETECTIONS\0hidden" is another channel: channels are compared by
+ * their full length (issue 17 item 9); --keep-input copies it exactly.
+ * (--summarize: tests/lcm_udpm_netns.sh) */
+static void test_replay_channel_full_length(void **state)
+{
+    (void)state;
+    const char *in = tmp_path("nul.lcmlog"), *out = tmp_path("nul_out.lcmlog");
+    static const char hidden[] = "TRK_DETECTIONS\0hidden";
+    FILE *f = fopen(in, "wb");
+    assert_non_null(f);
+    raw_record(f, scans[0].time_us, hidden, sizeof hidden - 1, scan_bytes[0], LCMC_SCAN_WIRE_SIZE);
+    raw_record(f, scans[1].time_us, "TRK_DETECTIONS", 14, scan_bytes[0], LCMC_SCAN_WIRE_SIZE);
+    assert_int_equal(fclose(f), 0);
+    struct bridge *b = bridge_new(&cfg, &opts, err, sizeof err);
+    struct replay_stats st;
+    assert_int_equal(bridge_replay(b, in, out, 1, NULL, &st, err, sizeof err), 0);
+    assert_true(st.events == 2 && st.scans == 1);
+    assert_true(b->c.received == 1 && b->c.processed == 1);
+    bridge_free(b);
+    /* the copy keeps the full channel */
+    struct lcmlog_reader r;
+    struct lcmlog_event ev;
+    assert_int_equal(lcmlog_open_read(&r, out, 1 << 20), 0);
+    int n_hidden = 0, n_det = 0;
+    while (lcmlog_read(&r, &ev) > 0) {
+        n_hidden += ev.channellen == sizeof hidden - 1 && memcmp(ev.channel, hidden, sizeof hidden - 1) == 0;
+        n_det += lcmlog_channel_is(&ev, "TRK_DETECTIONS");
+    }
+    lcmlog_close_read(&r);
+    assert_int_equal(n_hidden, 1);
+    assert_int_equal(n_det, 1);
+    remove(in);
+    remove(out);
+}
+
+/* Log times near INT64_MAX: the next status time saturates instead of
+ * overflowing (issue 17 item 3), so no status is due before the end. */
+static void test_replay_time_near_int64_max(void **state)
+{
+    (void)state;
+    const char *in = tmp_path("tmax.lcmlog"), *out = tmp_path("tmax_out.lcmlog");
+    FILE *f = fopen(in, "wb");
+    assert_non_null(f);
+    for (int i = 10; i >= 1; i--) raw_record(f, INT64_MAX - i, "OTHER", 5, "x", 1);
+    assert_int_equal(fclose(f), 0);
+    struct bridge_opts o = opts;
+    o.status_period_s = 1;
+    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
+    struct replay_stats st;
+    assert_int_equal(bridge_replay(b, in, out, 0, NULL, &st, err, sizeof err), 0);
+    assert_true(st.events == 10);
+    assert_true(st.written == 1); /* the final status only */
+    bridge_free(b);
+    remove(in);
+    remove(out);
+}
+
+/* Inputs that are no log end with a clear error instead of spinning or
+ * "0 events" (issue 17 items 7 and 10): zeros, a first record cut short, a
+ * directory; /dev/zero stops at the resynchronisation bound or at once on
+ * the stop flag. (--summarize and SIGTERM: tests/lcm_udpm_netns.sh) */
+static void test_not_a_log(void **state)
+{
+    (void)state;
+    const char *zeros = tmp_path("zeros.lcmlog"), *cut = tmp_path("cut.lcmlog"),
+               *out = tmp_path("na_out.lcmlog");
+    FILE *f = fopen(zeros, "wb");
+    assert_non_null(f);
+    static uint8_t block[1 << 16];
+    for (int i = 0; i < 48; i++) assert_int_equal(fwrite(block, 1, sizeof block, f), sizeof block); /* 3 MiB */
+    assert_int_equal(fclose(f), 0);
+    f = fopen(cut, "wb");
+    assert_non_null(f);
+    raw_record(f, 1, "TRK_DETECTIONS", 14, scan_bytes[0], LCMC_SCAN_WIRE_SIZE);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(truncate(cut, 28 + 14 + 100), 0); /* the only record cut short */
+    struct bridge *b = bridge_new(&cfg, &opts, err, sizeof err);
+    struct replay_stats st;
+    const char *not_logs[] = {zeros, cut};
+    for (int i = 0; i < 2; i++) {
+        assert_int_equal(bridge_replay(b, not_logs[i], out, 0, NULL, &st, err, sizeof err), -1);
+        assert_non_null(strstr(err, "not an LCM log"));
+        assert_non_null(strstr(err, not_logs[i]));
+    }
+    /* /dev/zero: the bounded resync ends it */
+    assert_int_equal(bridge_replay(b, "/dev/zero", out, 0, NULL, &st, err, sizeof err), -1);
+    assert_non_null(strstr(err, "no LCM log record found"));
+    assert_true(st.bytes_skipped > LCMLOG_MAX_RESYNC - 4);
+    /* a directory is not a log either */
+    const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    assert_int_equal(bridge_replay(b, dir, out, 0, NULL, &st, err, sizeof err), -1);
+    assert_non_null(strstr(err, "Is a directory"));
+    bridge_free(b);
+    /* the reader: a lower bound, and the stop flag checked while skipping */
+    struct lcmlog_reader r;
+    struct lcmlog_event ev;
+    assert_int_equal(lcmlog_open_read(&r, "/dev/zero", 1024), 0);
+    r.max_resync = 1000;
+    assert_int_equal(lcmlog_read(&r, &ev), -1);
+    assert_int_equal(r.error, LCMLOG_E_NO_SYNC);
+    assert_true(r.n_events == 0);
+    lcmlog_close_read(&r);
+    volatile sig_atomic_t stop = 1;
+    assert_int_equal(lcmlog_open_read(&r, "/dev/zero", 1024), 0);
+    r.stop = &stop;
+    assert_int_equal(lcmlog_read(&r, &ev), -1);
+    assert_int_equal(r.error, LCMLOG_E_STOPPED);
+    lcmlog_close_read(&r);
+    /* an empty file is an empty log */
+    f = fopen(cut, "wb");
+    assert_non_null(f);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(lcmlog_open_read(&r, cut, 1024), 0);
+    assert_int_equal(lcmlog_read(&r, &ev), 0);
+    lcmlog_close_read(&r);
+    remove(zeros);
+    remove(cut);
+    remove(out);
+}
+
 /* Our log files and liblcm's agree in both directions. */
 static void test_log_compat_with_liblcm(void **state)
 {
@@ -857,6 +990,9 @@ int main(void)
         cmocka_unit_test(test_memq_round_trip),
         cmocka_unit_test(test_replay),
         cmocka_unit_test(test_replay_damaged_log),
+        cmocka_unit_test(test_replay_channel_full_length),
+        cmocka_unit_test(test_replay_time_near_int64_max),
+        cmocka_unit_test(test_not_a_log),
         cmocka_unit_test(test_log_compat_with_liblcm),
     };
     return trk_run_tests("lcm_bridge", tests, setup, teardown);

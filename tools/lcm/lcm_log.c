@@ -109,8 +109,11 @@ static int sync_stream(struct lcmlog_reader *r, uint64_t *gap)
     uint32_t w = 0;
     uint64_t n = 0;
     for (;;) {
-        if (r->stop && *r->stop) return fail(r, LCMLOG_E_STOPPED);
-        if (*gap > r->max_resync) return fail(r, LCMLOG_E_NO_SYNC);
+        const int stop = r->stop && *r->stop;
+        if (stop || *gap > r->max_resync) {
+            r->n_bytes_skipped += n;
+            return fail(r, stop ? LCMLOG_E_STOPPED : LCMLOG_E_NO_SYNC);
+        }
         const int c = fgetc(r->f);
         if (c == EOF) {
             if (n > 0) r->n_bytes_skipped += n, r->truncated = 1;
