@@ -126,6 +126,41 @@ static void handle_good(struct bridge *b, int k, int64_t now)
     assert_memory_equal(out, expect_bytes[k], len);
 }
 
+/* The bridge's status message now, decoded. */
+static const trk_bridge_status_t *status_now(struct bridge *b, int64_t utime)
+{
+    static trk_bridge_status_t st;
+    const void *sb;
+    size_t sl;
+    bridge_status(b, utime, &sb, &sl);
+    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    return &st;
+}
+
+/* A bridge that logs its rejections into a temporary file. */
+static struct bridge *logging_bridge(double log_interval_s, FILE **log)
+{
+    struct bridge_opts o = opts;
+    o.quiet = 0;
+    o.log_interval_s = log_interval_s;
+    o.log = *log = tmpfile();
+    assert_non_null(o.log);
+    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
+    assert_non_null(b);
+    return b;
+}
+
+/* What was written to f (closed), NUL-terminated. */
+static char *text_of(FILE *f)
+{
+    static char text[8192];
+    rewind(f);
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = 0;
+    fclose(f);
+    return text;
+}
+
 static void test_handle_matches_direct(void **state)
 {
     (void)state;
@@ -237,11 +272,7 @@ static void test_bad_messages_counted_and_harmless(void **state)
     assert_true(want[LCMC_NONFINITE] == 0 && b->c.det_rejected == 0);
     assert_true((TRK_MAX_DETECTIONS >= 256) == (want[LCMC_CAPACITY] == 0));
     /* the status message says the same */
-    const void *sb;
-    size_t sl;
-    bridge_status(b, 123, &sb, &sl);
-    static trk_bridge_status_t st;
-    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    const trk_bridge_status_t st = *status_now(b, 123);
     assert_true(st.utime == 123);
     assert_true(st.n_received == (int64_t)b->c.received && st.n_processed == N_SCANS);
     assert_true(st.n_rejected == (int64_t)n_bad);
@@ -264,13 +295,8 @@ static void test_bad_messages_counted_and_harmless(void **state)
 static void test_bad_detection_dropped_alone(void **state)
 {
     (void)state;
-    struct bridge_opts o = opts;
-    o.quiet = 0;
-    o.log_interval_s = 1e6;
-    o.log = tmpfile();
-    assert_non_null(o.log);
-    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
-    assert_non_null(b);
+    FILE *log;
+    struct bridge *b = logging_bridge(1e6, &log);
     static trk_detection_scan_t m;
     static trk_track_list_t want_tl;
     static uint8_t buf[LCMC_SCAN_WIRE_SIZE], want[1 << 15];
@@ -313,22 +339,14 @@ static void test_bad_detection_dropped_alone(void **state)
     assert_true(b->c.det_nonfinite == n_nonfinite && b->c.det_field == n_field);
     assert_true(b->c.det_rejected == n_nonfinite + n_field && n_nonfinite + n_field > 0);
     assert_true(b->c.det_cov == 0 && b->c.det_amplitude == 0);
-    const void *sb;
-    size_t sl;
-    bridge_status(b, 1, &sb, &sl);
-    static trk_bridge_status_t st;
-    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    const trk_bridge_status_t st = *status_now(b, 1);
     assert_true(st.n_detections_rejected == (int64_t)(n_nonfinite + n_field));
     assert_true(st.n_detections_nonfinite == (int64_t)n_nonfinite);
     assert_true(st.n_detections_field == (int64_t)n_field);
     assert_true(st.n_rejected == 0 && st.n_processed == N_SCANS);
     /* logged once (naming the detection), the rest counted at the flush */
     bridge_log_flush(b);
-    rewind(o.log);
-    static char text[4096];
-    size_t tn = fread(text, 1, sizeof text - 1, o.log);
-    text[tn] = 0;
-    fclose(o.log);
+    const char *text = text_of(log);
     assert_non_null(strstr(text, "dropped 1 bad detection(s)"));
     assert_non_null(strstr(text, "detections[0]: position (10, nan)"));
     char more[96];
@@ -364,11 +382,7 @@ static void test_seq_gaps(void **state)
      * (GAP_MAX + 1 missing), 2 GAP_MAX + 3 -> INT64_MIN */
     assert_true(b->c.seq_gaps == 2 + BRIDGE_SEQ_GAP_MAX + 2);
     assert_true(b->c.seq_jumps == 6);
-    const void *sb;
-    size_t sl;
-    bridge_status(b, 1, &sb, &sl);
-    static trk_bridge_status_t st;
-    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    const trk_bridge_status_t st = *status_now(b, 1);
     assert_true(st.n_seq_gaps == 2 + BRIDGE_SEQ_GAP_MAX + 2 && st.n_seq_jumps == 6);
     bridge_free(b);
 }
@@ -405,34 +419,20 @@ static void test_below_threshold_counted(void **state)
     assert_int_equal(bridge_handle(b, buf, sizeof buf, 1, &out, &len), LCMC_OK);
     assert_true(b->c.det_below_threshold == 4);
     assert_true(b->c.det_rejected == 0);
-    const void *sb;
-    size_t sl;
-    bridge_status(b, 1, &sb, &sl);
-    static trk_bridge_status_t st;
-    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    const trk_bridge_status_t st = *status_now(b, 1);
     assert_true(st.n_detections_below_threshold == 4);
     FILE *f = tmpfile();
     assert_non_null(f);
     bridge_summary(b, f);
-    rewind(f);
-    static char text[2048];
-    size_t tn = fread(text, 1, sizeof text - 1, f);
-    text[tn] = 0;
-    fclose(f);
-    assert_non_null(strstr(text, "below the amplitude threshold 4"));
+    assert_non_null(strstr(text_of(f), "below the amplitude threshold 4"));
     bridge_free(b);
 }
 
 static void test_rate_limited_log(void **state)
 {
     (void)state;
-    struct bridge_opts o = opts;
-    o.quiet = 0;
-    o.log_interval_s = 10;
-    o.log = tmpfile();
-    assert_non_null(o.log);
-    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
-    assert_non_null(b);
+    FILE *log;
+    struct bridge *b = logging_bridge(10, &log);
     const void *out;
     size_t len;
     const uint8_t junk[10] = {0};
@@ -449,11 +449,7 @@ static void test_rate_limited_log(void **state)
     assert_int_equal(bridge_handle(b, junk, sizeof junk, 11000000, &out, &len), LCMC_DECODE);
     assert_int_equal(bridge_handle(b, junk, sizeof junk, 12000000, &out, &len), LCMC_DECODE);
     bridge_log_flush(b);
-    rewind(o.log);
-    static char text[8192];
-    size_t n = fread(text, 1, sizeof text - 1, o.log);
-    text[n] = 0;
-    fclose(o.log);
+    char *text = text_of(log);
     int lines = 0, decode_lines = 0;
     for (char *l = strtok(text, "\n"); l; l = strtok(NULL, "\n")) {
         lines++;

@@ -93,15 +93,21 @@ static void test_round_trip(void **state)
     assert_memory_equal(wire, wire2, n);
 }
 
+/* As many detections as the build and the message hold, at (i, -i). */
+static void make_max_msg(trk_detection_scan_t *m)
+{
+    make_msg(m);
+    m->n_detections = TRK_MAX_DETECTIONS < 256 ? TRK_MAX_DETECTIONS : 256;
+    for (int i = 0; i < m->n_detections; i++) {
+        m->detections[i].x_m = i;
+        m->detections[i].y_m = -i;
+    }
+}
+
 static void test_max_count_accepted(void **state)
 {
     (void)state;
-    make_msg(&msg);
-    msg.n_detections = TRK_MAX_DETECTIONS < 256 ? TRK_MAX_DETECTIONS : 256;
-    for (int i = 0; i < msg.n_detections; i++) {
-        msg.detections[i].x_m = i;
-        msg.detections[i].y_m = -i;
-    }
+    make_max_msg(&msg);
     size_t n = encode(&msg, wire);
     assert_int_equal(from_bytes(wire, n, 2), LCMC_OK);
     assert_int_equal(out.scan.n_detections, (size_t)msg.n_detections);
@@ -255,13 +261,7 @@ static void test_nonfinite(void **state)
 static void test_one_bad_among_max(void **state)
 {
     (void)state;
-    make_msg(&msg);
-    msg.n_detections = TRK_MAX_DETECTIONS < 256 ? TRK_MAX_DETECTIONS : 256;
-    for (int i = 0; i < msg.n_detections; i++) {
-        msg.detections[i].x_m = i;
-        msg.detections[i].y_m = -i;
-        msg.detections[i].has_cov = msg.detections[i].has_amplitude = 0;
-    }
+    make_max_msg(&msg); /* detections 1 and 2 carry a covariance and an amplitude */
     const size_t bad = (size_t)msg.n_detections / 2;
     msg.detections[bad].y_m = NAN;
     expect_dropped(&msg, bad, LCMC_NONFINITE);
