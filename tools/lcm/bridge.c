@@ -1,7 +1,6 @@
 /* bridge.c - the transport-free core of trk-lcm-bridge (bridge.h). */
 #include "bridge.h"
 
-#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -194,8 +193,6 @@ static void count_seq(struct bridge *b, unsigned s, int64_t seq)
     b->has_seq[s] = 1;
 }
 
-static int32_t clamp32(uint64_t v) { return v > INT32_MAX ? INT32_MAX : (int32_t)v; }
-
 enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, int64_t now_us,
                                const void **out, size_t *out_len)
 {
@@ -239,9 +236,7 @@ enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, i
     b->c.refused_full += rep.n_init_refused_full;
 
     lcmc_tracks_to_msg(&b->tk, &b->scan.scan, b->scan.seq, &rep, &b->out);
-    /* the list counts the message's detections, the dropped ones as rejected */
-    b->out.n_detections = clamp32(b->scan.n_msg_detections);
-    b->out.n_detections_rejected = clamp32((uint64_t)b->out.n_detections_rejected + dropped);
+    lcmc_count_dropped(&b->scan, &b->out);
     int n = trk_track_list_t_encode(b->out_buf, 0, (int)b->out_cap, &b->out);
     if (n < 0) { /* cannot happen: constant size */
         return reject(b, LCMC_OTHER, now_us, "track list encoding failed", b->scan.seq);

@@ -212,6 +212,13 @@ static int8_t term_code(const struct trk_tracker_params *p)
 
 static int32_t clamp32(uint32_t v) { return v > INT32_MAX ? INT32_MAX : (int32_t)v; }
 
+void lcmc_count_dropped(const struct lcmc_scan *s, trk_track_list_t *m)
+{
+    const uint32_t dropped = s->n_dropped_nonfinite + s->n_dropped_field;
+    m->n_detections = clamp32((uint32_t)s->n_msg_detections);
+    m->n_detections_rejected = clamp32((uint32_t)m->n_detections_rejected + dropped);
+}
+
 void lcmc_track_to_msg(const struct trk_tracker *t, const struct trk_track *tr, trk_track_t *m)
 {
     memset(m, 0, sizeof *m);

@@ -93,6 +93,10 @@ enum lcmc_reason lcmc_scan_to_msg(const struct trk_scan *s, int64_t seq, trk_det
 void lcmc_tracks_to_msg(const struct trk_tracker *t, const struct trk_scan *scan, int64_t seq,
                         const struct trk_scan_report *rep, trk_track_list_t *m);
 
+/* After lcmc_tracks_to_msg of s's scan: the list counts the message's
+ * detections, and the ones the copy dropped as rejected. */
+void lcmc_count_dropped(const struct lcmc_scan *s, trk_track_list_t *m);
+
 /* One track -> message element (used by lcmc_tracks_to_msg; also by tests
  * to compare a direct tracker run with the bridge's output). */
 void lcmc_track_to_msg(const struct trk_tracker *t, const struct trk_track *tr, trk_track_t *m);
