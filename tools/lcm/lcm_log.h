@@ -63,7 +63,8 @@ struct lcmlog_reader {
     int sys_errno;                  /* LCMLOG_E_READ: errno */
 };
 
-/* 0, or -1 with errno set (cannot open, a directory: EISDIR, out of memory). */
+/* 0, or -1 with errno set (cannot open, out of memory). A directory opens
+ * and fails at the first read (LCMLOG_E_READ, EISDIR). */
 int lcmlog_open_read(struct lcmlog_reader *r, const char *path, size_t max_data);
 /* The same over an open stream (the reader closes it). */
 int lcmlog_open_stream(struct lcmlog_reader *r, FILE *f, size_t max_data);
