@@ -11,9 +11,10 @@
 #                       (part of `make test`; skips with a reason when the
 #                       machine cannot create one)
 #   fuzzing: tests/fuzz/fuzz_lcm_copy.c (the message -> struct copy and the
-#                       tracker behind it) with its corpus tests/fuzz/corpus/
-#                       lcm_copy, run by mk/fuzz.mk (make fuzz FUZZ_TARGETS=
-#                       lcm_copy; replayed by make test)
+#                       tracker behind it) and tests/fuzz/fuzz_lcm_log.c (the
+#                       log reader) with their corpora tests/fuzz/corpus/
+#                       lcm_copy and lcm_log, run by mk/fuzz.mk (make fuzz
+#                       FUZZ_TARGETS='lcm_copy lcm_log'; replayed by make test)
 #   make install        also installs the .lcm files to $(PREFIX)/share/trk/lcm
 #                       (generate bindings for other languages from them)
 

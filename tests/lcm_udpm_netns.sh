@@ -35,6 +35,7 @@ expect_refusal "unknown setting" --set no-such-setting=1
 expect_refusal "confirm.mn" --set confirm=mn --set confirm.mn.m=9
 expect_refusal "term = page" --set term=page --set hmm.p_low_high=0 --set hmm.q_high_low=0
 expect_refusal "amp_table" --set sensor.0.amplitude=k   # K clutter needs a table
+expect_refusal "init_speed_sigma_mps" --set init_speed_sigma_mps=1e160   # its square overflows
 expect_refusal "cannot open" --set q2_table="$T/missing.tbl"
 head -c 300 /dev/urandom > "$T/junk.tbl"
 expect_refusal "TRK_E_TABLE" --set sensor.0.amp_table="$T/junk.tbl"
@@ -68,6 +69,38 @@ for sig in INT TERM; do
 done
 ok "SIGINT and SIGTERM stop the bridge cleanly with a summary"
 
+# --- inputs that are no log: a clear error, never a spin or "0 events"
+timeout -s KILL 20 "$B/trk-lcm-bridge" --summarize "$T" > "$T/o" 2> "$T/e"
+rc=$?
+[ $rc -eq 1 ] && grep -q "Is a directory" "$T/e" || fail "--summarize DIR exited $rc: $(cat "$T/o" "$T/e")"
+timeout -s KILL 60 "$B/trk-lcm-bridge" --replay /dev/zero --out "$T/z.lcmlog" > "$T/o" 2> "$T/e"
+rc=$?
+[ $rc -eq 1 ] && grep -q "no LCM log record found" "$T/e" ||
+    fail "--replay /dev/zero exited $rc: $(cat "$T/o" "$T/e")"
+# SIGTERM while the replay resynchronises (zeros trickling through a FIFO)
+mkfifo "$T/fifo"
+(while :; do head -c 4096 /dev/zero; sleep 0.01; done) > "$T/fifo" 2> /dev/null &
+feed=$!
+"$B/trk-lcm-bridge" --replay "$T/fifo" --out "$T/z.lcmlog" > "$T/o" 2> "$T/e" &
+pid=$!
+(sleep 30; kill -KILL $pid) > /dev/null 2>&1 &
+wd=$!
+sleep 0.5
+kill -TERM $pid
+wait $pid
+rc=$?
+kill $wd $feed 2> /dev/null
+wait $feed 2> /dev/null
+[ $rc -eq 0 ] && grep -q "(interrupted)" "$T/o" || fail "replay exited $rc after SIGTERM: $(cat "$T/o" "$T/e")"
+ok "a directory, /dev/zero and SIGTERM during a resync end the bridge with a message"
+
+# --- channels compare by their full length: a NUL inside is no end
+printf '\355\241\332\001\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\001\0\0\0\025\0\0\0\001TRK_TRACKS\000hidden1234x' > "$T/nul.lcmlog"
+timeout 20 "$B/trk-lcm-bridge" --summarize "$T/nul.lcmlog" > "$T/o" 2> "$T/e" || fail "--summarize exited $?: $(cat "$T/e")"
+grep -q 'TRK_TRACKS\\0hidden1234 ' "$T/o" && grep -q "^track lists: 0 (undecodable 0)" "$T/o" ||
+    fail "a channel with a NUL was taken for TRK_TRACKS: $(cat "$T/o")"
+ok "a channel with a NUL inside is not the track channel"
+
 # --- determinism of the log path
 for i in 1 2; do
     timeout 60 "$B/trk-sonar-sim" --out "$T/d$i.lcmlog" --scans 40 --seed 9 --bad-every 7 --quiet > /dev/null ||
@@ -79,6 +112,14 @@ cmp -s "$T/d1.lcmlog" "$T/d2.lcmlog" || fail "trk-sonar-sim --log is not determi
 cmp -s "$T/t1.lcmlog" "$T/t2.lcmlog" || fail "trk-lcm-bridge --replay is not deterministic"
 grep -q "processed 40, rejected 5" "$T/r1.out" || fail "replay counts: $(cat "$T/r1.out")"
 ok "sonar-sim --log and bridge --replay are byte-identical across runs"
+# detections below the amplitude threshold are counted (they used to be in no counter)
+timeout 60 "$B/trk-lcm-bridge" --replay "$T/d1.lcmlog" --out "$T/t3.lcmlog" --quiet \
+    --set sensor.0.amplitude=rayleigh --set sensor.0.pfa=1e-9 > "$T/r3.out" || fail "replay exited $?"
+grep -q "below the amplitude threshold [1-9]" "$T/r3.out" || fail "below-threshold count: $(cat "$T/r3.out")"
+timeout 20 "$B/trk-lcm-bridge" --summarize "$T/t3.lcmlog" > "$T/s3.out" || fail "--summarize exited $?"
+grep -q "^  detections dropped 0 .*below the amplitude threshold [1-9]" "$T/s3.out" ||
+    fail "the status in the log lacks the below-threshold count: $(cat "$T/s3.out")"
+ok "detections below the amplitude threshold are counted in the summary and the status"
 
 # --- UDP multicast in a private network namespace
 if ! command -v unshare > /dev/null 2>&1 || ! command -v ip > /dev/null 2>&1; then

@@ -126,6 +126,41 @@ static void handle_good(struct bridge *b, int k, int64_t now)
     assert_memory_equal(out, expect_bytes[k], len);
 }
 
+/* The bridge's status message now, decoded. */
+static const trk_bridge_status_t *status_now(struct bridge *b, int64_t utime)
+{
+    static trk_bridge_status_t st;
+    const void *sb;
+    size_t sl;
+    bridge_status(b, utime, &sb, &sl);
+    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    return &st;
+}
+
+/* A bridge that logs its rejections into a temporary file. */
+static struct bridge *logging_bridge(double log_interval_s, FILE **log)
+{
+    struct bridge_opts o = opts;
+    o.quiet = 0;
+    o.log_interval_s = log_interval_s;
+    o.log = *log = tmpfile();
+    assert_non_null(o.log);
+    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
+    assert_non_null(b);
+    return b;
+}
+
+/* What was written to f (closed), NUL-terminated. */
+static char *text_of(FILE *f)
+{
+    static char text[8192];
+    rewind(f);
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = 0;
+    fclose(f);
+    return text;
+}
+
 static void test_handle_matches_direct(void **state)
 {
     (void)state;
@@ -161,12 +196,11 @@ static struct bad make_bad(int kind, int k)
     case 5: m.n_detections = -1, r.want = LCMC_COUNT, r.what = "count -1"; break;
     case 6: m.n_detections = 257, r.want = LCMC_COUNT, r.what = "count 257"; break;
     case 7: m.n_detections = 0x40000001, r.want = LCMC_COUNT, r.what = "count 2^30+1"; break;
-    case 8: m.detections[0].y_m = NAN, r.want = LCMC_NONFINITE, r.what = "NaN"; break;
-    case 9:
-        m.detections[1].has_amplitude = 1, m.detections[1].amplitude = INFINITY;
-        r.want = LCMC_NONFINITE, r.what = "inf amplitude";
-        break;
-    case 10: m.detections[0].has_cov = 2, r.want = LCMC_FIELD, r.what = "flag 2"; break;
+    /* a NaN, an infinite amplitude or a flag 2 in one detection no longer
+     * rejects the scan (issue 17 item 9): test_bad_detection_dropped_alone */
+    case 8: m.utime = INT64_MAX, r.want = LCMC_FIELD, r.what = "utime INT64_MAX"; break;
+    case 9: m.n_detections = INT32_MIN, r.want = LCMC_COUNT, r.what = "count INT32_MIN"; break;
+    case 10: m.sensor_id = -1, r.want = LCMC_SENSOR, r.what = "sensor -1"; break;
     case 11: m.utime = -5, r.want = LCMC_FIELD, r.what = "negative utime"; break;
     case 12: m.sensor_id = 3, r.want = LCMC_SENSOR, r.what = "sensor 3"; break;
     case 13: /* before the last accepted scan (k - 1) */
@@ -232,23 +266,19 @@ static void test_bad_messages_counted_and_harmless(void **state)
         if (b->c.by_reason[r] != want[r])
             fail_msg("%s: %llu rejections, want %llu", lcmc_reason_name((enum lcmc_reason)r),
                      (unsigned long long)b->c.by_reason[r], (unsigned long long)want[r]);
-    /* every category occurred */
-    assert_true(want[LCMC_DECODE] && want[LCMC_COUNT] && want[LCMC_NONFINITE] && want[LCMC_FIELD] &&
-                want[LCMC_SENSOR] && want[LCMC_TIME] && want[LCMC_GAP]);
+    /* every scan-level category occurred (NONFINITE is a detection's only) */
+    assert_true(want[LCMC_DECODE] && want[LCMC_COUNT] && want[LCMC_FIELD] && want[LCMC_SENSOR] &&
+                want[LCMC_TIME] && want[LCMC_GAP]);
+    assert_true(want[LCMC_NONFINITE] == 0 && b->c.det_rejected == 0);
     assert_true((TRK_MAX_DETECTIONS >= 256) == (want[LCMC_CAPACITY] == 0));
     /* the status message says the same */
-    const void *sb;
-    size_t sl;
-    bridge_status(b, 123, &sb, &sl);
-    static trk_bridge_status_t st;
-    assert_int_equal(trk_bridge_status_t_decode(sb, 0, (int)sl, &st), (int)sl);
+    const trk_bridge_status_t st = *status_now(b, 123);
     assert_true(st.utime == 123);
     assert_true(st.n_received == (int64_t)b->c.received && st.n_processed == N_SCANS);
     assert_true(st.n_rejected == (int64_t)n_bad);
     assert_true(st.n_rejected_decode == (int64_t)want[LCMC_DECODE]);
     assert_true(st.n_rejected_count == (int64_t)want[LCMC_COUNT]);
     assert_true(st.n_rejected_capacity == (int64_t)want[LCMC_CAPACITY]);
-    assert_true(st.n_rejected_nonfinite == (int64_t)want[LCMC_NONFINITE]);
     assert_true(st.n_rejected_field == (int64_t)want[LCMC_FIELD]);
     assert_true(st.n_rejected_sensor == (int64_t)want[LCMC_SENSOR]);
     assert_true(st.n_rejected_time == (int64_t)want[LCMC_TIME]);
@@ -259,6 +289,76 @@ static void test_bad_messages_counted_and_harmless(void **state)
     bridge_free(b);
 }
 
+/* A bad detection is dropped alone and counted; the other detections of its
+ * scan are processed: every scan's track list equals the direct run on the
+ * scan without it, except the list's two detection counts. */
+static void test_bad_detection_dropped_alone(void **state)
+{
+    (void)state;
+    FILE *log;
+    struct bridge *b = logging_bridge(1e6, &log);
+    static trk_detection_scan_t m;
+    static trk_track_list_t want_tl;
+    static uint8_t buf[LCMC_SCAN_WIRE_SIZE], want[1 << 15];
+    uint64_t n_nonfinite = 0, n_field = 0;
+    for (int k = 0; k < N_SCANS; k++) {
+        m = scan_msg[k];
+        const size_t n = (size_t)m.n_detections;
+        if (n + 1 > TRK_MAX_DETECTIONS) { /* no room for one more: unchanged */
+            handle_good(b, k, k);
+            continue;
+        }
+        /* insert a bad detection at position p */
+        const size_t p = (size_t)k % (n + 1);
+        memmove(&m.detections[p + 1], &m.detections[p], (n - p) * sizeof m.detections[0]);
+        m.n_detections = (int32_t)(n + 1);
+        trk_detection_t *d = &m.detections[p];
+        memset(d, 0, sizeof *d);
+        d->x_m = 10, d->y_m = 20;
+        switch (k % 5) {
+        case 0: d->y_m = NAN, n_nonfinite++; break;
+        case 1: d->has_amplitude = 1, d->amplitude = INFINITY, n_nonfinite++; break;
+        case 2: d->has_cov = 2, n_field++; break;
+        case 3: d->has_amplitude = 1, d->amplitude = -1, n_field++; break;
+        default: d->has_cov = 1, d->cov_m2[0] = NAN, n_nonfinite++; break;
+        }
+        assert_int_equal(trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m), LCMC_SCAN_WIRE_SIZE);
+        const void *out;
+        size_t len;
+        assert_int_equal(bridge_handle(b, buf, sizeof buf, k, &out, &len), LCMC_OK);
+        /* the direct run's list, with the message's count and the drop */
+        assert_int_equal(trk_track_list_t_decode(expect_bytes[k], 0, (int)expect_len[k], &want_tl),
+                         (int)expect_len[k]);
+        want_tl.n_detections++;
+        want_tl.n_detections_rejected++;
+        const int wn = trk_track_list_t_encode(want, 0, (int)sizeof want, &want_tl);
+        assert_int_equal(len, (size_t)wn);
+        assert_memory_equal(out, want, len);
+    }
+    assert_true(b->c.processed == N_SCANS && b->c.rejected == 0);
+    assert_true(b->c.det_nonfinite == n_nonfinite && b->c.det_field == n_field);
+    assert_true(b->c.det_rejected == n_nonfinite + n_field && n_nonfinite + n_field > 0);
+    assert_true(b->c.det_cov == 0 && b->c.det_amplitude == 0);
+    const trk_bridge_status_t st = *status_now(b, 1);
+    assert_true(st.n_detections_rejected == (int64_t)(n_nonfinite + n_field));
+    assert_true(st.n_detections_nonfinite == (int64_t)n_nonfinite);
+    assert_true(st.n_detections_field == (int64_t)n_field);
+    assert_true(st.n_rejected == 0 && st.n_processed == N_SCANS);
+    /* logged once (naming the detection), the rest counted at the flush */
+    bridge_log_flush(b);
+    const char *text = text_of(log);
+    assert_non_null(strstr(text, "dropped 1 bad detection(s)"));
+    assert_non_null(strstr(text, "detections[0]: position (10, nan)"));
+    char more[96];
+    snprintf(more, sizeof more, "%llu more 'dropped detection' messages not shown",
+             (unsigned long long)(n_nonfinite + n_field - 1));
+    assert_non_null(strstr(text, more));
+    bridge_free(b);
+}
+
+/* Sequence numbers: a small forward step counts the missing scans; a repeat,
+ * a step back or a step above BRIDGE_SEQ_GAP_MAX + 1 is one jump (seq 2^63-1
+ * after 4 used to add 9.2e18 "gaps", issue 17 item 9). */
 static void test_seq_gaps(void **state)
 {
     (void)state;
@@ -266,8 +366,10 @@ static void test_seq_gaps(void **state)
     assert_non_null(b);
     static trk_detection_scan_t m;
     static uint8_t buf[LCMC_SCAN_WIRE_SIZE];
-    const int64_t seqs[] = {5, 6, 9, 10, 10, 4, INT64_MAX};
-    for (int i = 0; i < 7; i++) {
+    const int64_t seqs[] = {5,         6, 9, 10, 10, 4, INT64_MAX, 0, BRIDGE_SEQ_GAP_MAX + 2,
+                            2 * BRIDGE_SEQ_GAP_MAX + 3, INT64_MIN, INT64_MIN + 3};
+    const int n = (int)(sizeof seqs / sizeof seqs[0]);
+    for (int i = 0; i < n; i++) {
         m = scan_msg[i];
         m.seq = seqs[i];
         trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m);
@@ -275,21 +377,62 @@ static void test_seq_gaps(void **state)
         size_t len;
         assert_int_equal(bridge_handle(b, buf, sizeof buf, i, &out, &len), LCMC_OK);
     }
-    /* 7, 8 missing; then 4 -> INT64_MAX counts INT64_MAX - 5 */
-    assert_true(b->c.seq_gaps == 2 + (uint64_t)(INT64_MAX - 5));
+    /* gaps: 7, 8; BRIDGE_SEQ_GAP_MAX between the two large numbers; 2 at the end.
+     * jumps: 10 -> 10, 10 -> 4, 4 -> INT64_MAX, INT64_MAX -> 0, 0 -> GAP_MAX + 2
+     * (GAP_MAX + 1 missing), 2 GAP_MAX + 3 -> INT64_MIN */
+    assert_true(b->c.seq_gaps == 2 + BRIDGE_SEQ_GAP_MAX + 2);
+    assert_true(b->c.seq_jumps == 6);
+    const trk_bridge_status_t st = *status_now(b, 1);
+    assert_true(st.n_seq_gaps == 2 + BRIDGE_SEQ_GAP_MAX + 2 && st.n_seq_jumps == 6);
+    bridge_free(b);
+}
+
+/* Detections below the amplitude threshold are counted (status, summary):
+ * with sensor.0.pfa 1e-9 the demo log lost most detections while the
+ * summary said "detections dropped 0" (issue 17 item 9). */
+static void test_below_threshold_counted(void **state)
+{
+    (void)state;
+    struct tcfg c2 = cfg;
+    assert_int_equal(tcfg_set(&c2, "sensor.0.amplitude", "rayleigh", err, sizeof err), 0);
+    assert_int_equal(tcfg_set(&c2, "sensor.0.pfa", "1e-3", err, sizeof err), 0); /* t = 2.63 */
+    struct bridge *b = bridge_new(&c2, &opts, err, sizeof err);
+    assert_non_null(b);
+    static trk_detection_scan_t m;
+    static uint8_t buf[LCMC_SCAN_WIRE_SIZE];
+    memset(&m, 0, sizeof m);
+    m.utime = 1000000;
+    m.n_detections = 4;
+    const double amp[4] = {0.5, 2.5, 3.0, 10.0}; /* two below, two above */
+    for (int i = 0; i < 4; i++) {
+        m.detections[i].x_m = 100.0 * i;
+        m.detections[i].y_m = 50;
+        m.detections[i].has_amplitude = 1;
+        m.detections[i].amplitude = amp[i];
+    }
+    trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m);
+    const void *out;
+    size_t len;
+    assert_int_equal(bridge_handle(b, buf, sizeof buf, 0, &out, &len), LCMC_OK);
+    m.utime += 1000000;
+    trk_detection_scan_t_encode(buf, 0, LCMC_SCAN_WIRE_SIZE, &m);
+    assert_int_equal(bridge_handle(b, buf, sizeof buf, 1, &out, &len), LCMC_OK);
+    assert_true(b->c.det_below_threshold == 4);
+    assert_true(b->c.det_rejected == 0);
+    const trk_bridge_status_t st = *status_now(b, 1);
+    assert_true(st.n_detections_below_threshold == 4);
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    bridge_summary(b, f);
+    assert_non_null(strstr(text_of(f), "below the amplitude threshold 4"));
     bridge_free(b);
 }
 
 static void test_rate_limited_log(void **state)
 {
     (void)state;
-    struct bridge_opts o = opts;
-    o.quiet = 0;
-    o.log_interval_s = 10;
-    o.log = tmpfile();
-    assert_non_null(o.log);
-    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
-    assert_non_null(b);
+    FILE *log;
+    struct bridge *b = logging_bridge(10, &log);
     const void *out;
     size_t len;
     const uint8_t junk[10] = {0};
@@ -306,11 +449,7 @@ static void test_rate_limited_log(void **state)
     assert_int_equal(bridge_handle(b, junk, sizeof junk, 11000000, &out, &len), LCMC_DECODE);
     assert_int_equal(bridge_handle(b, junk, sizeof junk, 12000000, &out, &len), LCMC_DECODE);
     bridge_log_flush(b);
-    rewind(o.log);
-    static char text[8192];
-    size_t n = fread(text, 1, sizeof text - 1, o.log);
-    text[n] = 0;
-    fclose(o.log);
+    char *text = text_of(log);
     int lines = 0, decode_lines = 0;
     for (char *l = strtok(text, "\n"); l; l = strtok(NULL, "\n")) {
         lines++;
@@ -335,6 +474,14 @@ static void test_refuses_bad_config(void **state)
     assert_int_equal(tcfg_set(&bad, "sensor.0.amplitude", "k", err, sizeof err), 0); /* no table */
     assert_null(bridge_new(&bad, &opts, err, sizeof err));
     assert_non_null(strstr(err, "amp_table"));
+    /* its square overflows trk_real: refused at init, the field named (issue
+     * 17 item 2; 1e160 is beyond float itself, so the float build squares 1e20) */
+    bad = cfg;
+    assert_int_equal(tcfg_set(&bad, "init_speed_sigma_mps", TRK_TEST_IS_FLOAT ? "1e20" : "1e160", err,
+                              sizeof err),
+                     0);
+    assert_null(bridge_new(&bad, &opts, err, sizeof err));
+    assert_non_null(strstr(err, "init_speed_sigma_mps"));
 }
 
 /* The other confirmation / termination methods run through the bridge the
@@ -650,6 +797,139 @@ static void test_replay_damaged_log(void **state)
     remove(out);
 }
 
+/* One log record written byte by byte (the channel may hold NULs). */
+static void raw_record(FILE *f, int64_t ts, const char *ch, size_t chlen, const void *data, size_t len)
+{
+    uint8_t h[28];
+    put_be32(h, LCMLOG_SYNC);
+    put_be32(h + 4, 0), put_be32(h + 8, 0);
+    put_be32(h + 12, (uint32_t)((uint64_t)ts >> 32)), put_be32(h + 16, (uint32_t)ts);
+    put_be32(h + 20, (uint32_t)chlen), put_be32(h + 24, (uint32_t)len);
+    assert_int_equal(fwrite(h, 1, sizeof h, f), sizeof h);
+    assert_int_equal(fwrite(ch, 1, chlen, f), chlen);
+    assert_int_equal(fwrite(data, 1, len, f), len);
+}
+
+/* "TRK_DETECTIONS\0hidden" is another channel: channels are compared by
+ * their full length (issue 17 item 9); --keep-input copies it exactly.
+ * (--summarize: tests/lcm_udpm_netns.sh) */
+static void test_replay_channel_full_length(void **state)
+{
+    (void)state;
+    const char *in = tmp_path("nul.lcmlog"), *out = tmp_path("nul_out.lcmlog");
+    static const char hidden[] = "TRK_DETECTIONS\0hidden";
+    FILE *f = fopen(in, "wb");
+    assert_non_null(f);
+    raw_record(f, scans[0].time_us, hidden, sizeof hidden - 1, scan_bytes[0], LCMC_SCAN_WIRE_SIZE);
+    raw_record(f, scans[1].time_us, "TRK_DETECTIONS", 14, scan_bytes[0], LCMC_SCAN_WIRE_SIZE);
+    assert_int_equal(fclose(f), 0);
+    struct bridge *b = bridge_new(&cfg, &opts, err, sizeof err);
+    struct replay_stats st;
+    assert_int_equal(bridge_replay(b, in, out, 1, NULL, &st, err, sizeof err), 0);
+    assert_true(st.events == 2 && st.scans == 1);
+    assert_true(b->c.received == 1 && b->c.processed == 1);
+    bridge_free(b);
+    /* the copy keeps the full channel */
+    struct lcmlog_reader r;
+    struct lcmlog_event ev;
+    assert_int_equal(lcmlog_open_read(&r, out, 1 << 20), 0);
+    int n_hidden = 0, n_det = 0;
+    while (lcmlog_read(&r, &ev) > 0) {
+        n_hidden += ev.channellen == sizeof hidden - 1 && memcmp(ev.channel, hidden, sizeof hidden - 1) == 0;
+        n_det += lcmlog_channel_is(&ev, "TRK_DETECTIONS");
+    }
+    lcmlog_close_read(&r);
+    assert_int_equal(n_hidden, 1);
+    assert_int_equal(n_det, 1);
+    remove(in);
+    remove(out);
+}
+
+/* Log times near INT64_MAX: the next status time saturates instead of
+ * overflowing (issue 17 item 3), so no status is due before the end. */
+static void test_replay_time_near_int64_max(void **state)
+{
+    (void)state;
+    const char *in = tmp_path("tmax.lcmlog"), *out = tmp_path("tmax_out.lcmlog");
+    FILE *f = fopen(in, "wb");
+    assert_non_null(f);
+    for (int i = 10; i >= 1; i--) raw_record(f, INT64_MAX - i, "OTHER", 5, "x", 1);
+    assert_int_equal(fclose(f), 0);
+    struct bridge_opts o = opts;
+    o.status_period_s = 1;
+    struct bridge *b = bridge_new(&cfg, &o, err, sizeof err);
+    struct replay_stats st;
+    assert_int_equal(bridge_replay(b, in, out, 0, NULL, &st, err, sizeof err), 0);
+    assert_true(st.events == 10);
+    assert_true(st.written == 1); /* the final status only */
+    bridge_free(b);
+    remove(in);
+    remove(out);
+}
+
+/* Inputs that are no log end with a clear error instead of spinning or
+ * "0 events" (issue 17 items 7 and 10): zeros, a first record cut short, a
+ * directory; /dev/zero stops at the resynchronisation bound or at once on
+ * the stop flag. (--summarize and SIGTERM: tests/lcm_udpm_netns.sh) */
+static void test_not_a_log(void **state)
+{
+    (void)state;
+    const char *zeros = tmp_path("zeros.lcmlog"), *cut = tmp_path("cut.lcmlog"),
+               *out = tmp_path("na_out.lcmlog");
+    FILE *f = fopen(zeros, "wb");
+    assert_non_null(f);
+    static uint8_t block[1 << 16];
+    for (int i = 0; i < 48; i++) assert_int_equal(fwrite(block, 1, sizeof block, f), sizeof block); /* 3 MiB */
+    assert_int_equal(fclose(f), 0);
+    f = fopen(cut, "wb");
+    assert_non_null(f);
+    raw_record(f, 1, "TRK_DETECTIONS", 14, scan_bytes[0], LCMC_SCAN_WIRE_SIZE);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(truncate(cut, 28 + 14 + 100), 0); /* the only record cut short */
+    struct bridge *b = bridge_new(&cfg, &opts, err, sizeof err);
+    struct replay_stats st;
+    const char *not_logs[] = {zeros, cut};
+    for (int i = 0; i < 2; i++) {
+        assert_int_equal(bridge_replay(b, not_logs[i], out, 0, NULL, &st, err, sizeof err), -1);
+        assert_non_null(strstr(err, "not an LCM log"));
+        assert_non_null(strstr(err, not_logs[i]));
+    }
+    /* /dev/zero: the bounded resync ends it */
+    assert_int_equal(bridge_replay(b, "/dev/zero", out, 0, NULL, &st, err, sizeof err), -1);
+    assert_non_null(strstr(err, "no LCM log record found"));
+    assert_true(st.bytes_skipped > LCMLOG_MAX_RESYNC - 4);
+    /* a directory is not a log either */
+    const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    assert_int_equal(bridge_replay(b, dir, out, 0, NULL, &st, err, sizeof err), -1);
+    assert_non_null(strstr(err, "Is a directory"));
+    bridge_free(b);
+    /* the reader: a lower bound, and the stop flag checked while skipping */
+    struct lcmlog_reader r;
+    struct lcmlog_event ev;
+    assert_int_equal(lcmlog_open_read(&r, "/dev/zero", 1024), 0);
+    r.max_resync = 1000;
+    assert_int_equal(lcmlog_read(&r, &ev), -1);
+    assert_int_equal(r.error, LCMLOG_E_NO_SYNC);
+    assert_true(r.n_events == 0);
+    lcmlog_close_read(&r);
+    volatile sig_atomic_t stop = 1;
+    assert_int_equal(lcmlog_open_read(&r, "/dev/zero", 1024), 0);
+    r.stop = &stop;
+    assert_int_equal(lcmlog_read(&r, &ev), -1);
+    assert_int_equal(r.error, LCMLOG_E_STOPPED);
+    lcmlog_close_read(&r);
+    /* an empty file is an empty log */
+    f = fopen(cut, "wb");
+    assert_non_null(f);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(lcmlog_open_read(&r, cut, 1024), 0);
+    assert_int_equal(lcmlog_read(&r, &ev), 0);
+    lcmlog_close_read(&r);
+    remove(zeros);
+    remove(cut);
+    remove(out);
+}
+
 /* Our log files and liblcm's agree in both directions. */
 static void test_log_compat_with_liblcm(void **state)
 {
@@ -700,13 +980,18 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_handle_matches_direct),
         cmocka_unit_test(test_bad_messages_counted_and_harmless),
+        cmocka_unit_test(test_bad_detection_dropped_alone),
         cmocka_unit_test(test_seq_gaps),
+        cmocka_unit_test(test_below_threshold_counted),
         cmocka_unit_test(test_rate_limited_log),
         cmocka_unit_test(test_refuses_bad_config),
         cmocka_unit_test(test_other_methods),
         cmocka_unit_test(test_memq_round_trip),
         cmocka_unit_test(test_replay),
         cmocka_unit_test(test_replay_damaged_log),
+        cmocka_unit_test(test_replay_channel_full_length),
+        cmocka_unit_test(test_replay_time_near_int64_max),
+        cmocka_unit_test(test_not_a_log),
         cmocka_unit_test(test_log_compat_with_liblcm),
     };
     return trk_run_tests("lcm_bridge", tests, setup, teardown);

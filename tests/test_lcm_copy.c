@@ -1,8 +1,9 @@
 /* test_lcm_copy.c - LCM message <-> library struct copy (tools/lcm/lcm_copy.c):
  * round trips are exact, every rejection category gives its reason and leaves
  * the output untouched (truncation at every length, trailing bytes, wrong
- * hash, counts, capacity, non-finite used fields, ignored unused fields,
- * flags, negative values, sensors), and the track list mirrors the tracker. */
+ * hash, counts, capacity, utime, sensors), a bad detection (non-finite used
+ * field, flag, negative amplitude) is dropped alone and counted, unused
+ * fields are ignored, and the track list mirrors the tracker. */
 #include "trk_test.h"
 
 #include <limits.h>
@@ -92,15 +93,21 @@ static void test_round_trip(void **state)
     assert_memory_equal(wire, wire2, n);
 }
 
+/* As many detections as the build and the message hold, at (i, -i). */
+static void make_max_msg(trk_detection_scan_t *m)
+{
+    make_msg(m);
+    m->n_detections = TRK_MAX_DETECTIONS < 256 ? TRK_MAX_DETECTIONS : 256;
+    for (int i = 0; i < m->n_detections; i++) {
+        m->detections[i].x_m = i;
+        m->detections[i].y_m = -i;
+    }
+}
+
 static void test_max_count_accepted(void **state)
 {
     (void)state;
-    make_msg(&msg);
-    msg.n_detections = TRK_MAX_DETECTIONS < 256 ? TRK_MAX_DETECTIONS : 256;
-    for (int i = 0; i < msg.n_detections; i++) {
-        msg.detections[i].x_m = i;
-        msg.detections[i].y_m = -i;
-    }
+    make_max_msg(&msg);
     size_t n = encode(&msg, wire);
     assert_int_equal(from_bytes(wire, n, 2), LCMC_OK);
     assert_int_equal(out.scan.n_detections, (size_t)msg.n_detections);
@@ -191,6 +198,29 @@ static void test_capacity(void **state)
     expect_reject(&msg, 2, LCMC_CAPACITY);
 }
 
+/* A bad detection is dropped alone (issue 17 item 9): the scan is accepted,
+ * the other detections are copied in order, the drop is counted by reason
+ * and detail names it. */
+static void expect_dropped(const trk_detection_scan_t *m, size_t bad, enum lcmc_reason why)
+{
+    char detail[160], want[32];
+    size_t n = encode(m, wire);
+    enum lcmc_reason r = lcmc_scan_from_bytes(wire, n, 2, &work, &out, detail, sizeof detail);
+    if (r != LCMC_OK) fail_msg("reason %s (%s), want the detection dropped", lcmc_reason_name(r), detail);
+    assert_int_equal(out.n_msg_detections, (size_t)m->n_detections);
+    assert_int_equal(out.scan.n_detections, (size_t)m->n_detections - 1);
+    assert_int_equal(out.n_dropped_nonfinite, why == LCMC_NONFINITE);
+    assert_int_equal(out.n_dropped_field, why == LCMC_FIELD);
+    snprintf(want, sizeof want, "detections[%zu]", bad);
+    assert_non_null(strstr(detail, want));
+    for (size_t i = 0, j = 0; i < (size_t)m->n_detections; i++) {
+        if (i == bad) continue;
+        assert_true(out.det[j].x_m == (trk_real)m->detections[i].x_m);
+        assert_true(out.det[j].y_m == (trk_real)m->detections[i].y_m);
+        j++;
+    }
+}
+
 static void test_nonfinite(void **state)
 {
     (void)state;
@@ -198,18 +228,18 @@ static void test_nonfinite(void **state)
     for (int v = 0; v < 3; v++) {
         make_msg(&msg);
         msg.detections[0].x_m = vals[v];
-        expect_reject(&msg, 2, LCMC_NONFINITE);
+        expect_dropped(&msg, 0, LCMC_NONFINITE);
         make_msg(&msg);
         msg.detections[2].y_m = vals[v];
-        expect_reject(&msg, 2, LCMC_NONFINITE);
+        expect_dropped(&msg, 2, LCMC_NONFINITE);
         for (int k = 0; k < 3; k++) {
             make_msg(&msg);
             msg.detections[1].cov_m2[k] = vals[v];
-            expect_reject(&msg, 2, LCMC_NONFINITE);
+            expect_dropped(&msg, 1, LCMC_NONFINITE);
         }
         make_msg(&msg);
         msg.detections[2].amplitude = vals[v];
-        expect_reject(&msg, 2, LCMC_NONFINITE);
+        expect_dropped(&msg, 2, LCMC_NONFINITE);
     }
     /* unused fields are ignored (and not copied) */
     make_msg(&msg);
@@ -218,11 +248,33 @@ static void test_nonfinite(void **state)
     msg.detections[5].x_m = NAN;           /* beyond n_detections */
     assert_int_equal(lcmc_scan_from_msg(&msg, 2, &out, NULL, 0), LCMC_OK);
     assert_true(out.det[0].cov_m2[1] == 0 && out.det[0].amplitude == 0);
-    /* beyond trk_real: only the float build refuses */
+    assert_int_equal(out.scan.n_detections, 3);
+    assert_int_equal(out.n_dropped_nonfinite + out.n_dropped_field, 0);
+    /* beyond trk_real: only the float build drops it */
     make_msg(&msg);
     msg.detections[0].x_m = 1e300;
-    if (TRK_REAL_IS_FLOAT) expect_reject(&msg, 2, LCMC_NONFINITE);
+    if (TRK_REAL_IS_FLOAT) expect_dropped(&msg, 0, LCMC_NONFINITE);
     else assert_int_equal(lcmc_scan_from_msg(&msg, 2, &out, NULL, 0), LCMC_OK);
+}
+
+/* One NaN among the most detections a scan can hold loses that one only. */
+static void test_one_bad_among_max(void **state)
+{
+    (void)state;
+    make_max_msg(&msg); /* detections 1 and 2 carry a covariance and an amplitude */
+    const size_t bad = (size_t)msg.n_detections / 2;
+    msg.detections[bad].y_m = NAN;
+    expect_dropped(&msg, bad, LCMC_NONFINITE);
+    /* and a second bad one of the other kind: both counted, detail names the first */
+    msg.detections[0].has_amplitude = 1;
+    msg.detections[0].amplitude = -1;
+    char detail[160];
+    assert_int_equal(lcmc_scan_from_msg(&msg, 2, &out, detail, sizeof detail), LCMC_OK);
+    assert_int_equal(out.scan.n_detections, (size_t)msg.n_detections - 2);
+    assert_int_equal(out.n_dropped_nonfinite, 1);
+    assert_int_equal(out.n_dropped_field, 1);
+    assert_non_null(strstr(detail, "detections[0]"));
+    assert_true(out.det[0].x_m == 1);
 }
 
 static void test_fields(void **state)
@@ -232,14 +284,14 @@ static void test_fields(void **state)
     for (int i = 0; i < 3; i++) {
         make_msg(&msg);
         msg.detections[0].has_cov = flags[i];
-        expect_reject(&msg, 2, LCMC_FIELD);
+        expect_dropped(&msg, 0, LCMC_FIELD);
         make_msg(&msg);
         msg.detections[1].has_amplitude = flags[i];
-        expect_reject(&msg, 2, LCMC_FIELD);
+        expect_dropped(&msg, 1, LCMC_FIELD);
     }
     make_msg(&msg);
     msg.detections[2].amplitude = -0.5;
-    expect_reject(&msg, 2, LCMC_FIELD);
+    expect_dropped(&msg, 2, LCMC_FIELD);
     make_msg(&msg);
     msg.utime = -1;
     expect_reject(&msg, 2, LCMC_FIELD);
@@ -385,6 +437,7 @@ int main(void)
         cmocka_unit_test(test_counts),
         cmocka_unit_test(test_capacity),
         cmocka_unit_test(test_nonfinite),
+        cmocka_unit_test(test_one_bad_among_max),
         cmocka_unit_test(test_fields),
         cmocka_unit_test(test_sensor),
         cmocka_unit_test(test_to_msg_refusals),

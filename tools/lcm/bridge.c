@@ -156,8 +156,10 @@ void bridge_log_flush(struct bridge *b)
         if (!b->log_suppressed[s]) continue;
         fprintf(b->o.log, "trk-lcm-bridge: %llu more '%s' %s not shown\n",
                 (unsigned long long)b->log_suppressed[s],
-                s < LCMC_N_REASONS ? lcmc_reason_name((enum lcmc_reason)s) : "send",
-                s < LCMC_N_REASONS ? "rejections" : "errors");
+                s < LCMC_N_REASONS         ? lcmc_reason_name((enum lcmc_reason)s)
+                : s == BRIDGE_LOG_PUBLISH ? "send"
+                                          : "dropped detection",
+                s < LCMC_N_REASONS ? "rejections" : s == BRIDGE_LOG_PUBLISH ? "errors" : "messages");
         b->log_suppressed[s] = 0;
     }
     fflush(b->o.log);
@@ -174,6 +176,21 @@ static enum lcmc_reason reject(struct bridge *b, enum lcmc_reason r, int64_t now
     snprintf(what, sizeof what, "rejected scan: %s", lcmc_reason_text(r));
     log_event(b, (int)r, now_us, what, detail, seq);
     return r;
+}
+
+/* Sequence numbers of one sensor, +1 per scan: a forward step of up to
+ * BRIDGE_SEQ_GAP_MAX + 1 counts the scans in between as lost; a repeat, a
+ * step back or a larger step is one jump. The unsigned difference cannot
+ * overflow on any int64 values. */
+static void count_seq(struct bridge *b, unsigned s, int64_t seq)
+{
+    if (b->has_seq[s]) {
+        const uint64_t step = (uint64_t)seq - (uint64_t)b->last_seq[s];
+        if (seq > b->last_seq[s] && step - 1 <= BRIDGE_SEQ_GAP_MAX) b->c.seq_gaps += step - 1;
+        else b->c.seq_jumps++;
+    }
+    b->last_seq[s] = seq;
+    b->has_seq[s] = 1;
 }
 
 enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, int64_t now_us,
@@ -194,26 +211,32 @@ enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, i
         return reject(b, lcmc_reason_of_status(st), now_us, detail, b->scan.seq);
     }
     /* accepted */
-    const unsigned s = b->scan.scan.sensor_id;
-    if (b->has_seq[s] && b->scan.seq > b->last_seq[s]) {
-        /* modular difference: no signed overflow on hostile sequence numbers */
-        const uint64_t missing = (uint64_t)b->scan.seq - (uint64_t)b->last_seq[s] - 1;
-        b->c.seq_gaps = missing > UINT64_MAX - b->c.seq_gaps ? UINT64_MAX : b->c.seq_gaps + missing;
-    }
-    b->last_seq[s] = b->scan.seq;
-    b->has_seq[s] = 1;
+    count_seq(b, b->scan.scan.sensor_id, b->scan.seq);
     b->last_accepted_seq = b->scan.seq;
     b->last_accepted_utime = b->scan.scan.time_us;
     b->last_report = rep;
     b->c.processed++;
-    b->c.det_rejected +=
-        (uint64_t)rep.n_rejected_nonfinite + rep.n_rejected_cov + rep.n_rejected_amplitude;
+    const uint32_t dropped = b->scan.n_dropped_nonfinite + b->scan.n_dropped_field;
+    if (dropped) {
+        char what[96];
+        snprintf(what, sizeof what, "dropped %lu bad detection(s), processed the other %lu",
+                 (unsigned long)dropped, (unsigned long)b->scan.scan.n_detections);
+        log_event(b, BRIDGE_LOG_DETECTION, now_us, what, detail, b->scan.seq);
+    }
+    b->c.det_nonfinite += (uint64_t)b->scan.n_dropped_nonfinite + rep.n_rejected_nonfinite;
+    b->c.det_field += b->scan.n_dropped_field;
+    b->c.det_cov += rep.n_rejected_cov;
+    b->c.det_amplitude += rep.n_rejected_amplitude;
+    b->c.det_rejected += (uint64_t)dropped + rep.n_rejected_nonfinite + rep.n_rejected_cov +
+                         rep.n_rejected_amplitude;
+    b->c.det_below_threshold += rep.n_below_threshold;
     b->c.started += rep.n_started;
     b->c.confirmed += rep.n_confirmed;
     b->c.terminated += rep.n_terminated;
     b->c.refused_full += rep.n_init_refused_full;
 
     lcmc_tracks_to_msg(&b->tk, &b->scan.scan, b->scan.seq, &rep, &b->out);
+    lcmc_count_dropped(&b->scan, &b->out);
     int n = trk_track_list_t_encode(b->out_buf, 0, (int)b->out_cap, &b->out);
     if (n < 0) { /* cannot happen: constant size */
         return reject(b, LCMC_OTHER, now_us, "track list encoding failed", b->scan.seq);
@@ -237,14 +260,19 @@ void bridge_status(struct bridge *b, int64_t utime, const void **out, size_t *ou
     m->n_rejected_decode = sat64(c->by_reason[LCMC_DECODE]);
     m->n_rejected_count = sat64(c->by_reason[LCMC_COUNT]);
     m->n_rejected_capacity = sat64(c->by_reason[LCMC_CAPACITY]);
-    m->n_rejected_nonfinite = sat64(c->by_reason[LCMC_NONFINITE]);
     m->n_rejected_field = sat64(c->by_reason[LCMC_FIELD]);
     m->n_rejected_sensor = sat64(c->by_reason[LCMC_SENSOR]);
     m->n_rejected_time = sat64(c->by_reason[LCMC_TIME]);
     m->n_rejected_gap = sat64(c->by_reason[LCMC_GAP]);
     m->n_rejected_other = sat64(c->by_reason[LCMC_OTHER]);
     m->n_seq_gaps = sat64(c->seq_gaps);
+    m->n_seq_jumps = sat64(c->seq_jumps);
     m->n_detections_rejected = sat64(c->det_rejected);
+    m->n_detections_nonfinite = sat64(c->det_nonfinite);
+    m->n_detections_field = sat64(c->det_field);
+    m->n_detections_covariance = sat64(c->det_cov);
+    m->n_detections_amplitude = sat64(c->det_amplitude);
+    m->n_detections_below_threshold = sat64(c->det_below_threshold);
     m->n_tracks_started = sat64(c->started);
     m->n_tracks_confirmed = sat64(c->confirmed);
     m->n_tracks_terminated = sat64(c->terminated);
@@ -288,8 +316,14 @@ void bridge_summary(const struct bridge *b, FILE *f)
         }
         fputc(')', f);
     }
-    fprintf(f, "; sequence gaps %llu; detections dropped %llu\n", (unsigned long long)c->seq_gaps,
-            (unsigned long long)c->det_rejected);
+    fprintf(f, "; sequence gaps %llu, jumps %llu\n", (unsigned long long)c->seq_gaps,
+            (unsigned long long)c->seq_jumps);
+    fprintf(f,
+            "detections: dropped %llu (nonfinite %llu, field %llu, covariance %llu, amplitude "
+            "%llu), below the amplitude threshold %llu\n",
+            (unsigned long long)c->det_rejected, (unsigned long long)c->det_nonfinite,
+            (unsigned long long)c->det_field, (unsigned long long)c->det_cov,
+            (unsigned long long)c->det_amplitude, (unsigned long long)c->det_below_threshold);
     fprintf(f,
             "tracks: started %llu, confirmed %llu, ended %llu, initiations refused (table full) "
             "%llu; now %d live, %d confirmed\n",

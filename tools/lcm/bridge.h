@@ -9,7 +9,11 @@
  * Any rejection (the message, or the tracker's refusal of the scan) leaves
  * the tracker untouched, is counted by cause, and is logged: the first time
  * a cause occurs at once, then at most once per log_interval_s with the
- * number suppressed in between. The next message is processed normally. */
+ * number suppressed in between. The next message is processed normally.
+ * A bad detection drops only itself (counted by reason, logged the same
+ * way); the rest of its scan is processed. Detections the tracker drops
+ * (non-SPD own covariance, bad amplitude) and those below the amplitude
+ * threshold are counted too. */
 #ifndef TRK_LCM_BRIDGE_H
 #define TRK_LCM_BRIDGE_H
 
@@ -26,7 +30,12 @@
 #define BRIDGE_CHANNEL_MAX 256
 
 /* Rate-limited log slots: one per rejection reason, then these. */
-enum { BRIDGE_LOG_PUBLISH = LCMC_N_REASONS, BRIDGE_LOG_SLOTS };
+enum { BRIDGE_LOG_PUBLISH = LCMC_N_REASONS, BRIDGE_LOG_DETECTION, BRIDGE_LOG_SLOTS };
+
+/* A forward step of a sensor's seq by more than this many missing scans
+ * (hours of pings) is a restart or a corrupt number: one jump, not lost
+ * scans. */
+#define BRIDGE_SEQ_GAP_MAX 10000
 
 struct bridge_opts {
     char lcm_url[512];                          /* "" = LCM_DEFAULT_URL / LCM default */
@@ -54,8 +63,16 @@ struct bridge_counts {
     uint64_t processed;                   /* scans accepted by the tracker */
     uint64_t rejected;                    /* sum of by_reason[1..] */
     uint64_t by_reason[LCMC_N_REASONS];
-    uint64_t seq_gaps;                    /* scans missing by sequence number */
-    uint64_t det_rejected;                /* detections dropped inside accepted scans */
+    uint64_t seq_gaps;                    /* scans missing by sequence number (steps of
+                                             2 .. BRIDGE_SEQ_GAP_MAX + 1) */
+    uint64_t seq_jumps;                   /* seq repeated, went back or jumped further */
+    uint64_t det_rejected;                /* detections dropped inside accepted scans:
+                                             the sum of the four below */
+    uint64_t det_nonfinite;               /* NaN/inf or out-of-range used field */
+    uint64_t det_field;                   /* boolean not 0/1, negative amplitude */
+    uint64_t det_cov;                     /* own covariance not SPD (tracker) */
+    uint64_t det_amplitude;               /* amplitude refused by the tracker */
+    uint64_t det_below_threshold;         /* below the sensor's amplitude threshold */
     uint64_t started, confirmed, terminated, refused_full;
     uint64_t publish_errors;              /* transport: failed publishes / writes */
 };

@@ -57,6 +57,37 @@ static int representable(double d) { return isfinite(d) && fabs(d) <= (double)TR
         if (detail && detail_len) snprintf(detail, detail_len, __VA_ARGS__);         \
     } while (0)
 
+/* One detection: LCMC_OK, LCMC_FIELD (a boolean not 0/1, a negative
+ * amplitude) or LCMC_NONFINITE (a used field NaN, infinite or beyond
+ * trk_real), with the reason in detail (may be NULL). */
+static enum lcmc_reason check_detection(const trk_detection_t *d, size_t i, char *detail,
+                                        size_t detail_len)
+{
+    if ((d->has_cov != 0 && d->has_cov != 1) || (d->has_amplitude != 0 && d->has_amplitude != 1)) {
+        DETAIL("detections[%zu]: boolean has_cov = %d, has_amplitude = %d", i, d->has_cov,
+               d->has_amplitude);
+        return LCMC_FIELD;
+    }
+    if (!representable(d->x_m) || !representable(d->y_m)) {
+        DETAIL("detections[%zu]: position (%g, %g)", i, d->x_m, d->y_m);
+        return LCMC_NONFINITE;
+    }
+    for (int k = 0; d->has_cov && k < 3; k++)
+        if (!representable(d->cov_m2[k])) {
+            DETAIL("detections[%zu]: cov_m2[%d] = %g", i, k, d->cov_m2[k]);
+            return LCMC_NONFINITE;
+        }
+    if (d->has_amplitude && !representable(d->amplitude)) {
+        DETAIL("detections[%zu]: amplitude = %g", i, d->amplitude);
+        return LCMC_NONFINITE;
+    }
+    if (d->has_amplitude && d->amplitude < 0) {
+        DETAIL("detections[%zu]: amplitude = %g < 0", i, d->amplitude);
+        return LCMC_FIELD;
+    }
+    return LCMC_OK;
+}
+
 enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_sensors,
                                     struct lcmc_scan *out, char *detail, size_t detail_len)
 {
@@ -78,38 +109,19 @@ enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_se
         DETAIL("sensor_id = %ld, configured 0 .. %u", (long)m->sensor_id, n_sensors - 1);
         return LCMC_SENSOR;
     }
+    /* each detection alone: a bad one is dropped and counted, the rest copied
+     * in order (every conversion is then exact or rounding only) */
     const size_t n = (size_t)m->n_detections;
-    /* pass 1: validate everything (out is not touched on a rejection) */
+    size_t kept = 0;
+    out->n_dropped_nonfinite = out->n_dropped_field = 0;
     for (size_t i = 0; i < n; i++) {
         const trk_detection_t *d = &m->detections[i];
-        if ((d->has_cov != 0 && d->has_cov != 1) ||
-            (d->has_amplitude != 0 && d->has_amplitude != 1)) {
-            DETAIL("detections[%zu]: boolean has_cov = %d, has_amplitude = %d", i, d->has_cov,
-                   d->has_amplitude);
-            return LCMC_FIELD;
-        }
-        if (!representable(d->x_m) || !representable(d->y_m)) {
-            DETAIL("detections[%zu]: position (%g, %g)", i, d->x_m, d->y_m);
-            return LCMC_NONFINITE;
-        }
-        for (int k = 0; d->has_cov && k < 3; k++)
-            if (!representable(d->cov_m2[k])) {
-                DETAIL("detections[%zu]: cov_m2[%d] = %g", i, k, d->cov_m2[k]);
-                return LCMC_NONFINITE;
-            }
-        if (d->has_amplitude && !representable(d->amplitude)) {
-            DETAIL("detections[%zu]: amplitude = %g", i, d->amplitude);
-            return LCMC_NONFINITE;
-        }
-        if (d->has_amplitude && d->amplitude < 0) {
-            DETAIL("detections[%zu]: amplitude = %g < 0", i, d->amplitude);
-            return LCMC_FIELD;
-        }
-    }
-    /* pass 2: copy (every conversion is now exact or rounding only) */
-    for (size_t i = 0; i < n; i++) {
-        const trk_detection_t *d = &m->detections[i];
-        struct trk_detection *o = &out->det[i];
+        const int first = out->n_dropped_nonfinite + out->n_dropped_field == 0;
+        const enum lcmc_reason why = check_detection(d, i, first ? detail : NULL, detail_len);
+        if (why == LCMC_NONFINITE) out->n_dropped_nonfinite++;
+        if (why == LCMC_FIELD) out->n_dropped_field++;
+        if (why != LCMC_OK) continue;
+        struct trk_detection *o = &out->det[kept++];
         o->x_m = (trk_real)d->x_m;
         o->y_m = (trk_real)d->y_m;
         o->has_cov = (uint8_t)d->has_cov;
@@ -117,9 +129,10 @@ enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_se
         for (int k = 0; k < 3; k++) o->cov_m2[k] = d->has_cov ? (trk_real)d->cov_m2[k] : 0;
         o->amplitude = d->has_amplitude ? (trk_real)d->amplitude : 0;
     }
+    out->n_msg_detections = n;
     out->scan.time_us = m->utime;
     out->scan.sensor_id = (unsigned)m->sensor_id;
-    out->scan.n_detections = n;
+    out->scan.n_detections = kept;
     out->scan.detections = out->det;
     out->seq = m->seq;
     return LCMC_OK;
@@ -198,6 +211,13 @@ static int8_t term_code(const struct trk_tracker_params *p)
 }
 
 static int32_t clamp32(uint32_t v) { return v > INT32_MAX ? INT32_MAX : (int32_t)v; }
+
+void lcmc_count_dropped(const struct lcmc_scan *s, trk_track_list_t *m)
+{
+    const uint32_t dropped = s->n_dropped_nonfinite + s->n_dropped_field;
+    m->n_detections = clamp32((uint32_t)s->n_msg_detections);
+    m->n_detections_rejected = clamp32((uint32_t)m->n_detections_rejected + dropped);
+}
 
 void lcmc_track_to_msg(const struct trk_tracker *t, const struct trk_track *tr, trk_track_t *m)
 {

@@ -6,8 +6,11 @@
  * of variable-length arrays is unsafe on hostile input (TOOLCHAIN.md 3):
  * decoding a fixed-size type allocates nothing and checks one constant size.
  * This file then validates every field before anything reaches the tracker:
- * a scan is either copied whole into struct trk_scan / trk_detection or
- * rejected with one reason. Pure C: no I/O, no allocation, no globals.
+ * a scan whose header is bad (decode, count, capacity, utime, sensor) is
+ * rejected whole with one reason; a bad detection (NaN/inf or out-of-range
+ * used field, boolean not 0/1, negative amplitude) is dropped alone and
+ * counted by reason, the other detections are copied in order. Pure C: no
+ * I/O, no allocation, no globals.
  *
  * lcmc_scan_from_bytes() is the fuzz target (tests/fuzz/fuzz_lcm_copy.c). */
 #ifndef TRK_TOOLS_LCM_COPY_H
@@ -21,16 +24,20 @@
 #include "lcm/trk_track_list_t.h"
 #include "trk/tracker.h"
 
-/* Why a scan message was rejected (LCMC_OK: accepted). The first five come
- * from the message alone (lcmc_scan_from_*); SENSOR from the configuration;
- * TIME, GAP and OTHER from the tracker's refusal of the scan. */
+/* Why a scan message was rejected (LCMC_OK: accepted). DECODE, COUNT,
+ * CAPACITY and FIELD (utime) come from the message alone (lcmc_scan_from_*);
+ * SENSOR from the configuration; TIME, GAP and OTHER from the tracker's
+ * refusal of the scan. NONFINITE and FIELD are also the reasons a single
+ * detection is dropped (struct lcmc_scan counts them); NONFINITE never
+ * rejects a scan. */
 enum lcmc_reason {
     LCMC_OK = 0,
     LCMC_DECODE,    /* not a detection_scan_t: wrong hash, truncated, trailing bytes */
     LCMC_COUNT,     /* n_detections outside [0, MAX_DETECTIONS] */
     LCMC_CAPACITY,  /* n_detections above this build's TRK_MAX_DETECTIONS */
-    LCMC_NONFINITE, /* NaN/inf in a used field, or a value beyond trk_real's range */
-    LCMC_FIELD,     /* boolean not 0/1, negative amplitude, utime < 0 */
+    LCMC_NONFINITE, /* a detection: NaN/inf in a used field, or beyond trk_real's range */
+    LCMC_FIELD,     /* utime outside 0 .. 2^62-1; a detection: boolean not 0/1,
+                       negative amplitude */
     LCMC_SENSOR,    /* sensor_id not in 0 .. n_sensors-1 */
     LCMC_TIME,      /* utime before the previous accepted scan (TRK_E_TIME) */
     LCMC_GAP,       /* utime more than max_dt_s after it (TRK_E_RANGE) */
@@ -48,8 +55,11 @@ enum lcmc_reason lcmc_reason_of_status(trk_status st);
 /* A validated scan in the library's structs. scan.detections points into det
  * (so the struct must not be copied by value while scan is in use). */
 struct lcmc_scan {
-    struct trk_scan scan;
+    struct trk_scan scan;               /* the valid detections only */
     int64_t seq;
+    size_t n_msg_detections;            /* n_detections of the message */
+    uint32_t n_dropped_nonfinite;       /* detections dropped: LCMC_NONFINITE */
+    uint32_t n_dropped_field;           /* ... LCMC_FIELD */
     struct trk_detection det[TRK_MAX_DETECTIONS];
 };
 
@@ -58,8 +68,9 @@ struct lcmc_scan {
 
 /* Validate a decoded message and copy it into out (n_sensors: the tracker's
  * sensor count; sensor ids 0 .. n_sensors-1 are accepted). detail (may be
- * NULL) receives a human-readable explanation of a rejection. out is
- * written only on LCMC_OK. */
+ * NULL) receives a human-readable explanation of a rejection, or on LCMC_OK
+ * of the first dropped detection ("" when none was dropped). out is written
+ * only on LCMC_OK. */
 enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_sensors,
                                     struct lcmc_scan *out, char *detail, size_t detail_len);
 
@@ -81,6 +92,10 @@ enum lcmc_reason lcmc_scan_to_msg(const struct trk_scan *s, int64_t seq, trk_det
  * n_omitted. rep may be NULL (counts 0). Unused entries are zeroed. */
 void lcmc_tracks_to_msg(const struct trk_tracker *t, const struct trk_scan *scan, int64_t seq,
                         const struct trk_scan_report *rep, trk_track_list_t *m);
+
+/* After lcmc_tracks_to_msg of s's scan: the list counts the message's
+ * detections, and the ones the copy dropped as rejected. */
+void lcmc_count_dropped(const struct lcmc_scan *s, trk_track_list_t *m);
 
 /* One track -> message element (used by lcmc_tracks_to_msg; also by tests
  * to compare a direct tracker run with the bridge's output). */

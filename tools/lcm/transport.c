@@ -3,6 +3,7 @@
 #include "transport.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -105,6 +106,9 @@ static int same_file(const char *a, const char *b)
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
+/* t + d (d >= 0) without overflow: log times may be anything up to INT64_MAX. */
+static int64_t add_sat(int64_t t, int64_t d) { return t > INT64_MAX - d ? INT64_MAX : t + d; }
+
 /* Largest message the replay reads into memory; larger ones (images, ...)
  * are skipped without being read. A detection scan is 12,832 bytes. */
 #define REPLAY_MAX_DATA (1u << 20)
@@ -128,6 +132,7 @@ int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_in
         lcmlog_close_read(&r);
         return -1;
     }
+    r.stop = stop;
     const struct bridge_opts *o = &b->o;
     const int64_t period_us = (int64_t)(o->status_period_s * 1e6);
     int have_next = 0, rc = 0;
@@ -138,10 +143,11 @@ int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_in
         st->events++;
         last_ts = ev.timestamp;
         if (keep_input && ev.data) {
-            if (lcmlog_write(&w, ev.timestamp, ev.channel, ev.data, ev.datalen) != 0) break;
+            if (lcmlog_write_channel(&w, ev.timestamp, ev.channel, ev.channellen, ev.data, ev.datalen) != 0)
+                break;
             st->written++;
         }
-        if (strcmp(ev.channel, o->detection_channel) == 0) {
+        if (lcmlog_channel_is(&ev, o->detection_channel)) {
             const void *buf;
             size_t len;
             st->scans++;
@@ -153,7 +159,7 @@ int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_in
         }
         if (o->status_channel[0] && period_us > 0) {
             if (!have_next) {
-                next_status = ev.timestamp + period_us;
+                next_status = add_sat(ev.timestamp, period_us);
                 have_next = 1;
             } else if (ev.timestamp >= next_status) {
                 const void *buf;
@@ -161,12 +167,12 @@ int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_in
                 bridge_status(b, ev.timestamp, &buf, &len);
                 if (lcmlog_write(&w, ev.timestamp, o->status_channel, buf, len) != 0) break;
                 st->written++;
-                next_status = ev.timestamp + period_us;
+                next_status = add_sat(ev.timestamp, period_us);
             }
         }
     }
-    if (k < 0) {
-        snprintf(err, n, "%s: read error: %s", in, strerror(errno));
+    if (k < 0 && r.error != LCMLOG_E_STOPPED) { /* a stop is an interruption, not a failure */
+        snprintf(err, n, "%s: %s", in, lcmlog_strerror(&r));
         rc = -1;
     }
     if (o->status_channel[0] && !w.error) {

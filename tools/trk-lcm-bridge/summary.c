@@ -1,4 +1,5 @@
 /* summary.c - trk-lcm-bridge --summarize LOG (transport.h). */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,21 +11,44 @@
 #define MAX_TRUTH 64
 
 struct chan_count {
-    char name[64];
+    char name[64];          /* the first bytes of the channel (may hold NULs) */
+    size_t len;             /* its full length */
     uint64_t n;
 };
 
-static void count_channel(struct chan_count *cc, int *ncc, const char *name)
+/* Channels are told apart by their full bytes, NULs included. */
+static void count_channel(struct chan_count *cc, int *ncc, const struct lcmlog_event *ev)
 {
+    const size_t keep = ev->channellen < sizeof cc[0].name ? ev->channellen : sizeof cc[0].name - 1;
     for (int i = 0; i < *ncc; i++)
-        if (strncmp(cc[i].name, name, sizeof cc[i].name - 1) == 0) {
+        if (cc[i].len == ev->channellen && memcmp(cc[i].name, ev->channel, keep) == 0) {
             cc[i].n++;
             return;
         }
     if (*ncc == MAX_CHANNELS) return;
-    snprintf(cc[*ncc].name, sizeof cc[*ncc].name, "%s", name);
+    memcpy(cc[*ncc].name, ev->channel, keep);
+    cc[*ncc].name[keep] = 0;
+    cc[*ncc].len = ev->channellen;
     cc[*ncc].n = 1;
     (*ncc)++;
+}
+
+/* A channel name for the listing: a NUL shows as \0. */
+static void print_channel(FILE *f, const struct chan_count *c)
+{
+    const size_t keep = c->len < sizeof c->name ? c->len : sizeof c->name - 1;
+    int w = 0;
+    fputs("  ", f);
+    for (size_t i = 0; i < keep; i++) {
+        if (!c->name[i]) {
+            w += fprintf(f, "\\0");
+            continue;
+        }
+        fputc(c->name[i], f);
+        w++;
+    }
+    fprintf(f, "%s%*s %llu\n", keep < c->len ? "..." : "", w < 24 ? 24 - w : 0, "",
+            (unsigned long long)c->n);
 }
 
 /* Per truth target: is there a confirmed track within 25 m of it? */
@@ -58,7 +82,7 @@ int bridge_summarize(const char *path, const struct bridge_opts *o, const char *
 {
     struct lcmlog_reader r;
     if (lcmlog_open_read(&r, path, 1u << 20) != 0) {
-        fprintf(stderr, "trk-lcm-bridge: %s: cannot open\n", path);
+        fprintf(stderr, "trk-lcm-bridge: %s: cannot open: %s\n", path, strerror(errno));
         return -1;
     }
     struct chan_count cc[MAX_CHANNELS];
@@ -82,9 +106,10 @@ int bridge_summarize(const char *path, const struct bridge_opts *o, const char *
         return -1;
     }
     struct lcmlog_event ev;
-    while (lcmlog_read(&r, &ev) > 0) {
-        count_channel(cc, &ncc, ev.channel);
-        if (truth_channel && truth_channel[0] && strcmp(ev.channel, truth_channel) == 0) {
+    int got;
+    while ((got = lcmlog_read(&r, &ev)) > 0) {
+        count_channel(cc, &ncc, &ev);
+        if (truth_channel && truth_channel[0] && lcmlog_channel_is(&ev, truth_channel)) {
             if (decode_list(&ev, truth) == 0) {
                 have_truth = 1;
                 /* truth after the track list of the same time */
@@ -95,14 +120,14 @@ int bridge_summarize(const char *path, const struct bridge_opts *o, const char *
             }
             continue;
         }
-        if (o->status_channel[0] && strcmp(ev.channel, o->status_channel) == 0) {
+        if (o->status_channel[0] && lcmlog_channel_is(&ev, o->status_channel)) {
             int k = ev.data && ev.datalen <= INT32_MAX
                         ? trk_bridge_status_t_decode(ev.data, 0, (int)ev.datalen, &status)
                         : -1;
             if (k >= 0) have_status = 1;
             continue;
         }
-        if (strcmp(ev.channel, o->track_channel) != 0) continue;
+        if (!lcmlog_channel_is(&ev, o->track_channel)) continue;
         if (decode_list(&ev, m) != 0) {
             n_bad++;
             continue;
@@ -123,13 +148,18 @@ int bridge_summarize(const char *path, const struct bridge_opts *o, const char *
         *last = *m;
         have_last = 1;
     }
+    if (got < 0) { /* a directory, a read error, not a log */
+        fprintf(stderr, "trk-lcm-bridge: %s: %s\n", path, lcmlog_strerror(&r));
+        free(m), free(truth), free(last), free(ids);
+        lcmlog_close_read(&r);
+        return -1;
+    }
     fprintf(f, "log %s: %llu events", path, (unsigned long long)r.n_events);
     if (r.n_corrupt || r.truncated)
         fprintf(f, " (%llu corrupt records skipped%s)", (unsigned long long)r.n_corrupt,
                 r.truncated ? ", truncated at the end" : "");
     fputc('\n', f);
-    for (int i = 0; i < ncc; i++)
-        fprintf(f, "  %-24s %llu\n", cc[i].name, (unsigned long long)cc[i].n);
+    for (int i = 0; i < ncc; i++) print_channel(f, &cc[i]);
     fprintf(f, "track lists: %llu (undecodable %llu), at most %llu tracks in one list\n",
             (unsigned long long)n_lists, (unsigned long long)n_bad, (unsigned long long)max_live);
     fprintf(f, "confirmed track ids (%zu):", n_ids);
@@ -178,15 +208,22 @@ int bridge_summarize(const char *path, const struct bridge_opts *o, const char *
     if (have_status) {
         fprintf(f,
                 "last bridge status: received %lld, processed %lld, rejected %lld (decode %lld, "
-                "count %lld, capacity %lld, nonfinite %lld, field %lld, sensor %lld, time %lld, "
-                "gap %lld, other %lld), sequence gaps %lld\n",
+                "count %lld, capacity %lld, field %lld, sensor %lld, time %lld, gap %lld, "
+                "other %lld), sequence gaps %lld, jumps %lld\n",
                 (long long)status.n_received, (long long)status.n_processed,
                 (long long)status.n_rejected, (long long)status.n_rejected_decode,
                 (long long)status.n_rejected_count, (long long)status.n_rejected_capacity,
-                (long long)status.n_rejected_nonfinite, (long long)status.n_rejected_field,
-                (long long)status.n_rejected_sensor, (long long)status.n_rejected_time,
-                (long long)status.n_rejected_gap, (long long)status.n_rejected_other,
-                (long long)status.n_seq_gaps);
+                (long long)status.n_rejected_field, (long long)status.n_rejected_sensor,
+                (long long)status.n_rejected_time, (long long)status.n_rejected_gap,
+                (long long)status.n_rejected_other, (long long)status.n_seq_gaps,
+                (long long)status.n_seq_jumps);
+        fprintf(f,
+                "  detections dropped %lld (nonfinite %lld, field %lld, covariance %lld, "
+                "amplitude %lld), below the amplitude threshold %lld\n",
+                (long long)status.n_detections_rejected, (long long)status.n_detections_nonfinite,
+                (long long)status.n_detections_field, (long long)status.n_detections_covariance,
+                (long long)status.n_detections_amplitude,
+                (long long)status.n_detections_below_threshold);
     }
     free(m);
     free(truth);

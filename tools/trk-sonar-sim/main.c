@@ -62,10 +62,8 @@ static size_t make_bad(unsigned k, const trk_detection_scan_t *good, trk_detecti
     switch (k % 6) {
     case 0: return encode_scan(m, buf, cap) - 100; /* truncated */
     case 1: m->n_detections = 100000; break;       /* count above the maximum */
-    case 2:                                        /* NaN position */
-        m->n_detections = m->n_detections ? m->n_detections : 1;
-        m->detections[0].x_m = NAN;
-        break;
+    case 2: m->utime = INT64_MAX; break;             /* beyond the time range (a NaN
+                                                        detection would drop alone) */
     case 3: m->utime = good->utime - 1000000; break; /* before the scan just sent */
     case 4: m->sensor_id = 99; break;                /* unknown sensor */
     default:                                         /* garbage */
@@ -167,8 +165,8 @@ int main(int argc, char **argv)
                      "time of the first scan (live: now; --out: 1700000000000000)"),
         CLI_OPT_LONG("--bad-every", &bad_every, "N", NULL, CLI_IN, 0, 2000000000.0,
                      "after every N-th scan also send one malformed message,\n"
-                     "cycling: truncated, count too large, NaN position, time\n"
-                     "going backwards, unknown sensor, garbage (0 = never)"),
+                     "cycling: truncated, count too large, utime out of range,\n"
+                     "time going backwards, unknown sensor, garbage (0 = never)"),
         CLI_OPT_FLAG("--quiet", &quiet, "no start-up line on stderr"),
         CLI_OPT_HEADING("Scenario:"),
         CLI_OPT_LONG("--seed", &seed, "N", NULL, CLI_IN, 0, 9e18, "(1)"),
