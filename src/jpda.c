@@ -105,6 +105,11 @@ trk_status trk_jpda_existence(trk_real psi, trk_real pd_pg, const trk_real *p_as
                               trk_real *psi_post, trk_real *beta)
 {
     if (!psi_post || !beta || (n_dets > 0 && !p_assoc)) return TRK_E_ARG;
+    trk_real beta0, post;
+    const trk_status st = trk_i_jpda_condition(psi, pd_pg, 0, NULL, p_miss, &beta0, &post); /* the checks */
+    if (st != TRK_OK) return st;
+    for (size_t j = 0; j < n_dets; j++)
+        if (!isfinite(p_assoc[j])) return TRK_E_NAN;
     for (size_t j = 0; j < n_dets; j++) beta[j + 1] = p_assoc[j];
     return trk_i_jpda_condition(psi, pd_pg, n_dets, beta + 1, p_miss, beta, psi_post);
 }
@@ -123,11 +128,20 @@ trk_status trk_i_jpda_condition(trk_real psi, trk_real pd_pg, size_t n, trk_real
     }
     /* P(t exists and took nothing): with psi = 1 the factor is 1 exactly */
     const trk_real miss_exists = psi < 1 ? p_miss * psi * (1 - pd_pg) / den : p_miss;
-    const trk_real post = assoc + miss_exists;
-    if (!(post > 0)) return TRK_E_RANGE;
-    *beta0 = miss_exists / post;
-    for (size_t j = 0; j < n; j++) p[j] /= post;
-    *psi_post = post;
+    const trk_real sum = assoc + miss_exists; /* beta's normaliser: they sum to 1 */
+    if (!(sum > 0)) { /* every term underflowed (psi tiny): the track does not exist */
+        for (size_t j = 0; j < n; j++) p[j] = 0;
+        *beta0 = 1;
+        *psi_post = 0;
+        return TRK_OK;
+    }
+    *beta0 = miss_exists / sum;
+    for (size_t j = 0; j < n; j++) p[j] /= sum;
+    /* psi' = sum = 1 - P(t <- none) (1 - psi) / (1 - P_D P_G psi) (the marginals
+     * sum to 1): the second form cannot exceed 1 by rounding, the first keeps a
+     * small psi' accurate */
+    const trk_real from_one = psi < 1 ? 1 - p_miss * (1 - psi) / den : 1;
+    *psi_post = sum < TRK_REAL_C(0.5) ? sum : from_one;
     return TRK_OK;
 }
 

@@ -190,19 +190,19 @@ static void update_each(struct trk_tracker *t, const struct trk_scan *scan, stru
 
 #if TRK_WITH_JOINT
 /* Joint association (tracker_joint_impl.h): gate every live track, solve
- * the clusters, then update each track in the order it was gated; a track
- * left out of the joint problem is updated by its own PDA. */
+ * the clusters, update each joint track in the order it was gated; then the
+ * tracks left out of the joint problem, each by its own PDA (confirmed ones
+ * first), whose gated sets take the pair store from its start. */
 static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
     joint_gate(t, scan, rep);
     joint_solve(t, rep);
-    size_t k = 0;
-    for (int confirmed = 1; confirmed >= 0; confirmed--)
-        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
-            if (t->track[i].status != (confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE)) continue;
-            const int joint = k < t->ws.n_joint && t->ws.joint_slot[k] == i;
-            update_track(t, &t->track[i], scan, joint ? k++ : JOINT_NONE, rep);
-        }
+    for (size_t k = 0; k < t->ws.n_joint; k++) update_track(t, &t->track[t->ws.joint_slot[k]], scan, k, rep);
+    for (int confirmed = 1; confirmed >= 0; confirmed--) {
+        const uint8_t want = confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+            if (!t->ws.in_joint[i] && t->track[i].status == want) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
+    }
 }
 #endif
 

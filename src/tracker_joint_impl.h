@@ -14,8 +14,12 @@
  * track_visibility, else 1 (plain JPDA). A track alone in its cluster gets
  * its IPDA (PDA) update: the same weights, the same existence.
  * A track whose gated pairs do not fit the store (TRK_MAX_GATED_PAIRS), or
- * whose prediction fails, is left out and updated by its own PDA (counted:
+ * whose prediction fails, is left out and updated by its own PDA after every
+ * joint track (its gated set then takes the store from its start; counted:
  * n_assoc_overflow; a failed prediction ends the track as numerical there).
+ * Joint tracks compete for every detection: the per-track rule that a
+ * tentative track may not use a detection a confirmed track gated applies
+ * only to the left-out tracks.
  *
  * Included by tracker.c only, after tracker_update_impl.h. */
 #ifndef TRK_TRACKER_JOINT_IMPL_H
@@ -53,6 +57,7 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
         t->ws.miss[k] = 0;
     }
     t->ws.joint_slot[k] = (uint16_t)(tr - t->track);
+    t->ws.in_joint[tr - t->track] = 1;
     t->ws.pair_first[k + 1] = (uint16_t)(off + set.n);
     t->ws.n_joint = k + 1;
     return 0;
@@ -63,6 +68,7 @@ static TRK_NOINLINE void joint_gate(struct trk_tracker *t, const struct trk_scan
 {
     t->ws.n_joint = 0;
     t->ws.pair_first[0] = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) t->ws.in_joint[i] = 0;
     for (int confirmed = 1; confirmed >= 0; confirmed--)
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             struct trk_track *tr = &t->track[i];
@@ -81,6 +87,7 @@ static TRK_NOINLINE void joint_solve(struct trk_tracker *t, struct trk_scan_repo
     struct trk_jpda_report jr;
     if (trk_jpda_solve(&pairs, &t->ws.u.joint.solver, t->ws.u.joint.p_pair, t->ws.u.joint.p_miss, &jr) != TRK_OK) {
         rep->n_assoc_overflow += (uint32_t)n;
+        for (size_t k = 0; k < n; k++) t->ws.in_joint[t->ws.joint_slot[k]] = 0;
         t->ws.n_joint = 0;
         return;
     }

@@ -150,8 +150,11 @@ TRK_NODISCARD trk_status trk_jpda_track_weights(const struct trk_pda *pda, trk_r
  *   beta_j = P(t <- j) / psi',  beta_0 = P(t <- none) psi (1 - P_D P_G) / (1 - P_D P_G psi) / psi'
  * p_assoc is the track's row (n_dets values), beta gets n_dets + 1 values
  * ([beta_0, beta_1..beta_m]); psi = 1 gives plain JPDA (psi' = 1, beta = the
- * marginals). TRK_E_ARG NULL, TRK_E_NAN non-finite input, TRK_E_RANGE psi
- * outside (0, 1] or pd_pg outside (0, 1] or psi pd_pg = 1 with psi < 1. */
+ * marginals). psi' is computed as 1 - P(t <- none) (1 - psi) / (1 - P_D P_G
+ * psi) when it is 1/2 or more, so rounding never takes it above 1; when every
+ * term underflows (psi tiny) psi' = 0 and beta_0 = 1. TRK_E_ARG NULL,
+ * TRK_E_NAN non-finite input, TRK_E_RANGE psi outside (0, 1] or pd_pg outside
+ * (0, 1] or psi pd_pg = 1 with psi < 1; outputs untouched on error. */
 TRK_NODISCARD trk_status trk_jpda_existence(trk_real psi, trk_real pd_pg, const trk_real *p_assoc, size_t n_dets,
                                             trk_real p_miss, trk_real *psi_post, trk_real *beta);
 

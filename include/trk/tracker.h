@@ -27,7 +27,10 @@
  *        cluster's joint events give every track its association weights
  *        and posterior existence; each track's state is the PDA combination
  *        with those weights. A track alone in its cluster gets exactly its
- *        PDA/IPDA update;
+ *        PDA/IPDA update. Every live track competes for every detection (the
+ *        per-track rule for tentative tracks does not apply); a track whose
+ *        gated pairs do not fit TRK_MAX_GATED_PAIRS is updated after the
+ *        joint ones by its own PDA (n_assoc_overflow);
  *      then the covariance bound, then its confirmation test (tentative) or
  *      termination test (confirmed)
  *   4. tracks that have converged onto one target (PDA tracks sharing
@@ -413,11 +416,15 @@ struct trk_scan_report {
     uint32_t n_candidates;          /* initiation candidates held after the scan */
     uint32_t n_candidates_dropped;  /* unexplained detections the store could not hold */
     /* joint association (TRK_ASSOC_JOINT) */
-    uint32_t n_clusters;            /* clusters of tracks sharing detections */
+    uint32_t n_clusters;            /* clusters of the joint problem (a track alone, with or
+                                       without gated detections, is a cluster of one) */
     uint32_t n_clusters_approx;     /* ... solved by loopy belief propagation (jpda.h), not exactly */
     uint32_t largest_cluster;       /* tracks in the largest cluster */
-    uint32_t n_assoc_overflow;      /* tracks left out of the joint problem, updated by their own
-                                       PDA: the scan's gated pairs exceeded TRK_MAX_GATED_PAIRS */
+    uint32_t n_assoc_overflow;      /* tracks left out of the joint problem and updated by their
+                                       own PDA after the joint tracks: the scan's gated pairs
+                                       exceeded TRK_MAX_GATED_PAIRS, or (cannot happen) the
+                                       solver refused; also a track whose prediction failed
+                                       (it then ends as numerical) */
 };
 
 /* ---------------------------------------------------------------- tracker */
@@ -478,8 +485,10 @@ struct trk_tracker {
         trk_real w[TRK_I_PAIRS];                               /* their weights */
 #if TRK_WITH_JOINT
         uint16_t joint_slot[TRK_MAX_TRACKS];                   /* joint: the slot of joint track k, */
-        uint16_t pair_first[TRK_MAX_TRACKS + 1];               /* its pairs [pair_first[k], k + 1) */
+        uint16_t pair_first[TRK_MAX_TRACKS + 1];               /* its pairs [pair_first[k],
+                                                                  pair_first[k + 1]) */
         trk_real miss[TRK_MAX_TRACKS];                         /* ln w_k0, then P(k <- none) */
+        uint8_t in_joint[TRK_MAX_TRACKS];                      /* per slot: a joint track */
         size_t n_joint;
 #endif
         trk_real amp_db[2 * TRK_MAX_DETECTIONS];               /* amplitudes (dB) of the
