@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fileio.h"
+
 struct tw_param {
     char name[TRK_TABLE_NAME_MAX];
     uint32_t type;
@@ -254,18 +256,14 @@ int tablew_finish(struct tablew *w, unsigned char **bytes, size_t *len)
 
 int tablew_write_bin(const char *path, const unsigned char *bytes, size_t len)
 {
-    FILE *fp = fopen(path, "wb");
-    if (!fp) return -1;
-    size_t n = fwrite(bytes, 1, len, fp);
-    int bad = ferror(fp);
-    if (fclose(fp) != 0) bad = 1;
-    return n == len && !bad ? 0 : -1;
+    return fileio_write(path, bytes, len); /* atomic: a failed write keeps the old file */
 }
 
 int tablew_write_c(const char *path, const char *name, const unsigned char *bytes, size_t len,
                    const char *comment)
 {
-    FILE *fp = fopen(path, "w");
+    struct fileio_out o;
+    FILE *fp = fileio_create(&o, path, 0);
     if (!fp) return -1;
     char upper[128];
     size_t n = strlen(name);
@@ -288,7 +286,5 @@ int tablew_write_c(const char *path, const char *name, const unsigned char *byte
         fputc(i % 12 == 11 || i + 1 == len ? '\n' : ' ', fp);
     }
     fprintf(fp, "}};\n\n#endif\n");
-    int bad = ferror(fp);
-    if (fclose(fp) != 0) bad = 1;
-    return bad ? -1 : 0;
+    return fileio_commit(&o); /* every write checked, renamed into place */
 }

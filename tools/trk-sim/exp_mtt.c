@@ -351,11 +351,12 @@ static void csv_row(FILE *f, const struct mtt_row *r)
 static int write_csv(const struct sim_common *com, const char *suffix, const struct mtt_row *rows, int n,
                      char *path, size_t pathlen)
 {
-    FILE *f = sim_csv_open(com, suffix, path, pathlen, NULL);
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(com, &f_out, suffix, path, pathlen, NULL);
     if (!f) return -1;
     csv_header(f);
     for (int i = 0; i < n; i++) csv_row(f, &rows[i]);
-    return fclose(f) == 0 ? 0 : -1;
+    return sim_csv_close(&f_out);
 }
 
 /* "12.3+-0.4" (mean and the interval's half width) in w characters. */
@@ -1061,7 +1062,8 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
         return 0;
     }
     /* ---- ratios small / large per (config, clutter) and metric */
-    FILE *fr = sim_csv_open(&com, "_ratio.csv", NULL, 0,
+    struct fileio_out fr_out;
+    FILE *fr = sim_csv_open(&com, &fr_out, "_ratio.csv", NULL, 0,
                             "family,config,clutter,metric,small_capacity,large_capacity,small_mean,large_mean,"
                             "large_lo,large_hi,ratio,within");
     if (!fr) {
@@ -1113,7 +1115,10 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
             k0 = k1;
         }
     }
-    fclose(fr);
+    if (sim_csv_close(&fr_out) != 0) {
+        free(rows);
+        return 1;
+    }
     printf("-- CSV %s, %s_ratio.csv%s\n", path, com.out, com.no_plot ? "" : "; PNG plots beside them");
     free(rows);
     return 0;
