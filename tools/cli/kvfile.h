@@ -28,8 +28,18 @@ int kv_parse_file(const char *path, kv_setter set, void *ctx, char *err, size_t 
 /* Split "key=value" (command-line form) and call set. 0 / -1 with message. */
 int kv_parse_assignment(const char *kv, kv_setter set, void *ctx, char *err, size_t errlen);
 
-/* Value parsers: 0 on success, -1 when s is not entirely one finite number
- * (or integer in [lo, hi]). */
+/* One decimal number at the start of s (blanks before it skipped), the
+ * number syntax of every tool: strtod's, but no hex ("0x10"); subnormals
+ * (4.9e-324) are finite and accepted. *end after it. 0 with *v, or
+ * KV_NUM_BAD (no number; *end = s), KV_NUM_NONFINITE (inf, nan) or
+ * KV_NUM_RANGE (overflow, or an underflow to 0 such as 1e-400). */
+enum { KV_NUM_BAD = -1, KV_NUM_NONFINITE = -2, KV_NUM_RANGE = -3 };
+int kv_strtod(const char *s, char **end, double *v);
+/* The message of a KV_NUM_ code ("not a finite number", ...). */
+const char *kv_num_error(int code);
+
+/* Value parsers: 0 on success, else (not entirely one finite number) a
+ * KV_NUM_ code; kv_parse_long: -1 unless an integer in [lo, hi]. */
 int kv_parse_double(const char *s, double *v);
 int kv_parse_long(const char *s, long lo, long hi, long *v);
 /* Comma- or space-separated list of exactly n finite numbers. */
