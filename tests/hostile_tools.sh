@@ -13,6 +13,8 @@
 #     the old table byte-identical, with no temporary file left; demo prints
 #     no "files:" line; `trk-sonar-sim --scan-period-s 1e13` is refused (it
 #     wrote 1 of 3 scans and exited 0)
+#   item 7 also: trk-sim mtt-compare refuses a CSV line longer than its
+#     buffer, naming it (the rest was read as a line of its own)
 #   item 10 (parsing): `trk-tablegen amp --clutter-power 1e31 --no-measure`
 #     exits 1 without a table (the library refused what it wrote); `info` on a
 #     table of unknown kind 99 says DEFECT (it said OK); `kennedy-null --runs
@@ -121,5 +123,17 @@ out=$("$bin/trk-sim" kennedy-null --runs 2147483648 --quiet --no-plot --out "$d/
 rc=$?
 [ $rc -ne 0 ] || fail "kennedy-null --runs 2147483648: exit 0"
 [ -n "$out" ] || fail "kennedy-null --runs 2147483648: exit $rc without a message"
+ok
+# every line reader refuses a line longer than its buffer (the rest was read as a line of
+# its own: here a comment's tail would have been a row); config files: test_lcm_config
+{
+    echo "capacity,config,clutter,seeds,scans,amplitude,family"
+    printf '#'
+    head -c 70000 /dev/zero | tr '\0' x
+    echo "64,new,0,2,30,1,transit"
+} > "$d/long.csv"
+out=$("$bin/trk-sim" mtt-compare "$d/long.csv" --out "$d/cmp" 2>&1)
+[ $? -ne 0 ] || fail "mtt-compare, a 70 000-byte line: exit 0"
+echo "$out" | grep -q 'long.csv:2: line longer than' || fail "mtt-compare, a 70 000-byte line: $out"
 ok
 echo "hostile-tools: $n checks passed"

@@ -868,6 +868,18 @@ static int split(char *line, char **fld, int max)
 
 #define MAX_COLS (7 + 3 * M_N + 64)
 
+/* Did fgets read a whole line (its '\n', or the file's last line)? A
+ * longer line fills the buffer without one (issue 17 item 7). */
+static int whole_line(const char *line, FILE *f)
+{
+    const size_t n = strlen(line);
+    if (n > 0 && line[n - 1] == '\n') return 1;
+    const int c = getc(f);
+    if (c == EOF) return 1;
+    ungetc(c, f);
+    return 0;
+}
+
 /* Rows of one mtt CSV appended to rows[*n]. 0, or -1 with a message. */
 static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, size_t errlen)
 {
@@ -882,6 +894,11 @@ static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, s
     if (!fgets(head, sizeof head, f)) {
         fclose(f);
         snprintf(err, errlen, "%s: empty", path);
+        return -1;
+    }
+    if (!whole_line(head, f)) {
+        fclose(f);
+        snprintf(err, errlen, "%s:1: line longer than %d characters", path, (int)sizeof head - 2);
         return -1;
     }
     const int nh = split(head, h, MAX_COLS);
@@ -907,6 +924,11 @@ static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, s
     int lineno = 1;
     while (fgets(line, sizeof line, f)) {
         lineno++;
+        if (!whole_line(line, f)) { /* the rest must not be read as a line of its own */
+            fclose(f);
+            snprintf(err, errlen, "%s:%d: line longer than %d characters", path, lineno, (int)sizeof line - 2);
+            return -1;
+        }
         if (line[0] == '#' || line[0] == '\n') continue;
         if (*n >= MAX_ROWS) {
             fclose(f);
