@@ -475,12 +475,12 @@ static void test_numbers_issue17(void **state)
     assert_true(d > 0 && d < 1e-323);
     assert_int_equal(kv_parse_double("2.2e-310", &d), 0);
     TRK_ASSERT_NEAR(d, 2.2e-310, 0, 1e-9);
-    assert_int_equal(kv_parse_double("1e-400", &d), KV_NUM_RANGE);
-    assert_int_equal(kv_parse_double("1e400", &d), KV_NUM_RANGE);
-    assert_int_equal(kv_parse_double("-inf", &d), KV_NUM_NONFINITE);
-    assert_int_equal(kv_parse_double("0x10", &d), KV_NUM_BAD);
-    assert_int_equal(kv_parse_double("-0X1p3", &d), KV_NUM_BAD);
-    assert_int_equal(kv_parse_double(" ", &d), KV_NUM_BAD);
+    assert_int_equal(kv_parse_number("1e-400", &d), KV_NUM_RANGE);
+    assert_int_equal(kv_parse_number("1e400", &d), KV_NUM_RANGE);
+    assert_int_equal(kv_parse_number("-inf", &d), KV_NUM_NONFINITE);
+    assert_int_equal(kv_parse_number("0x10", &d), KV_NUM_BAD);
+    assert_int_equal(kv_parse_number("-0X1p3", &d), KV_NUM_BAD);
+    assert_int_equal(kv_parse_number(" ", &d), KV_NUM_BAD);
     assert_int_equal(kv_strtod("0x10", &end, &d), KV_NUM_BAD);
     assert_int_equal(cli_parse_double("0x10", &d), -1);
     assert_int_equal(cli_parse_long("0x10", &l), -1);

@@ -192,7 +192,7 @@ static void bad_value(const char *prog, const char *name, const struct cli_opt *
         case CLI_LONG: snprintf(what, sizeof what, "an integer%s", r); break;
         case CLI_DOUBLE: {
             double d;
-            const int e = kv_parse_double(v, &d);
+            const int e = kv_parse_number(v, &d);
             snprintf(what, sizeof what, "%s%s%s", e ? kv_num_error(e) : "", e ? "; " : "", "a number");
             snprintf(what + strlen(what), sizeof what - strlen(what), "%s", r);
             break;

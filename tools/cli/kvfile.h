@@ -12,6 +12,7 @@
 #define TRK_TOOLS_KVFILE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #define KV_MAX_LINE 1024
 
@@ -24,6 +25,9 @@ typedef int (*kv_setter)(void *ctx, const char *key, const char *value, char *er
  * with "PATH:LINE: message" in err (unreadable file, syntax error, unknown
  * key, bad value, over-long line) at the first problem. */
 int kv_parse_file(const char *path, kv_setter set, void *ctx, char *err, size_t errlen);
+/* The same on an open stream (read to its end or the first problem; not
+ * closed), `name` in the messages instead of PATH. */
+int kv_parse_stream(FILE *f, const char *name, kv_setter set, void *ctx, char *err, size_t errlen);
 
 /* Split "key=value" (command-line form) and call set. 0 / -1 with message. */
 int kv_parse_assignment(const char *kv, kv_setter set, void *ctx, char *err, size_t errlen);
@@ -38,9 +42,11 @@ int kv_strtod(const char *s, char **end, double *v);
 /* The message of a KV_NUM_ code ("not a finite number", ...). */
 const char *kv_num_error(int code);
 
-/* Value parsers: 0 on success, else (not entirely one finite number) a
- * KV_NUM_ code; kv_parse_long: -1 unless an integer in [lo, hi]. */
+/* Value parsers: 0 on success, -1 when s is not entirely one finite number
+ * (or integer in [lo, hi]). kv_parse_number: the same with the KV_NUM_ code
+ * of the failure (for the message, kv_num_error). */
 int kv_parse_double(const char *s, double *v);
+int kv_parse_number(const char *s, double *v);
 int kv_parse_long(const char *s, long lo, long hi, long *v);
 /* Comma- or space-separated list of exactly n finite numbers. */
 int kv_parse_doubles(const char *s, double *v, int n);

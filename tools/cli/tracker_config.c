@@ -121,7 +121,7 @@ static void range_text(struct range r, char *buf, size_t n)
 static int get_double(const char *v, struct range r, double *out, char *err, size_t n)
 {
     double d;
-    const int bad = kv_parse_double(v, &d);
+    const int bad = kv_parse_number(v, &d);
     if (bad != 0) {
         snprintf(err, n, "%s", kv_num_error(bad));
         return -1;
@@ -260,12 +260,12 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         char *end;
         errno = 0;
         /* digits only: strtoul took "-1" as 18446744073709551615 (issue 17 item 10) */
-        if (!isdigit((unsigned char)key[7])) {
+        if (key[7] == '-' || key[7] == '+') {
             snprintf(err, n, "sensor index '%.*s': must be an integer >= 0", (int)strcspn(key + 7, "."), key + 7);
             return -1;
         }
-        unsigned long s = strtoul(key + 7, &end, 10);
-        if (*end != '.' || errno) return 1;
+        unsigned long s = isdigit((unsigned char)key[7]) ? strtoul(key + 7, &end, 10) : 0;
+        if (!isdigit((unsigned char)key[7]) || *end != '.' || errno) return 1;
         if (s >= TRK_MAX_SENSORS) {
             snprintf(err, n, "sensor index %lu: this build has TRK_MAX_SENSORS = %d", s,
                      TRK_MAX_SENSORS);
