@@ -502,6 +502,15 @@ static void test_numbers_issue17(void **state)
     assert_non_null(strstr(err, "beyond the range of a double"));
     assert_int_equal(kv_parse_assignment("gate_prob=0x1p-1", tcfg_set, &cfg, err, sizeof err), -1);
     assert_non_null(strstr(err, "not a decimal number"));
+    /* fuzz_kvfile: meas_sigma_m squared skipped the covariance check of meas_cov_m2 (8.9e118^2:
+     * xx yy overflows), and the configuration written back was refused */
+    assert_int_equal(kv_parse_assignment("sensor.0.meas_sigma_m=8.9e118", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_non_null(strstr(err, "TRK_E_NOT_SPD"));
+    assert_int_equal(kv_parse_assignment("sensor.0.meas_sigma_m=1e200", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_int_equal(kv_parse_assignment("sensor.0.meas_sigma_m=3", tcfg_set, &cfg, err, sizeof err), 0);
+    TRK_ASSERT_NEAR(cfg.params.sensor[0].meas_cov_m2[0], 9, 0, 0);
+    TRK_ASSERT_NEAR(cfg.params.sensor[0].meas_cov_m2[1], 0, 0, 0);
+    TRK_ASSERT_NEAR(cfg.params.sensor[0].meas_cov_m2[2], 9, 0, 0);
 
     /* blank values through the option table: refused, never 0 */
     long scans = 7;

@@ -201,6 +201,26 @@ static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
 
 /* ------------------------------------------------------------------ set */
 
+/* sp->meas_cov_m2 = m after the tracker's own check (the authority), on its
+ * defaults with this covariance for sensor s: 0, or -1 with the reason. */
+static int set_meas_cov(struct trk_sensor_params *sp, unsigned s, const double m[3], char *err, size_t n)
+{
+    struct trk_tracker_params t;
+    const char *field;
+    trk_tracker_default_params(&t);
+    t.n_sensors = s + 1;
+    for (unsigned k = 1; k <= s; k++) t.sensor[k] = t.sensor[0];
+    for (int i = 0; i < 3; i++) t.sensor[s].meas_cov_m2[i] = (trk_real)m[i];
+    const trk_status st = trk_tracker_check_params(&t, &field);
+    if (st != TRK_OK) {
+        snprintf(err, n, "refused by the tracker (%s): %s%s", field, trk_status_str(st),
+                 st == TRK_E_NOT_SPD ? " (not positive definite: need xx > 0, yy > 0, xx yy > xy^2)" : "");
+        return -1;
+    }
+    for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = t.sensor[s].meas_cov_m2[i];
+    return 0;
+}
+
 static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v, char *err,
                       size_t n)
 {
@@ -215,28 +235,15 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v
             snprintf(err, n, "expected three numbers xx, xy, yy (m^2)");
             return -1;
         }
-        /* the tracker's check (the authority), on its defaults with this covariance */
-        struct trk_tracker_params t;
-        const char *field;
-        trk_tracker_default_params(&t);
-        t.n_sensors = s + 1;
-        for (unsigned k = 1; k <= s; k++) t.sensor[k] = t.sensor[0];
-        for (int i = 0; i < 3; i++) t.sensor[s].meas_cov_m2[i] = (trk_real)m[i];
-        const trk_status st = trk_tracker_check_params(&t, &field);
-        if (st != TRK_OK) {
-            snprintf(err, n, "refused by the tracker (%s): %s%s", field, trk_status_str(st),
-                     st == TRK_E_NOT_SPD ? " (not positive definite: need xx > 0, yy > 0, xx yy > xy^2)" : "");
-            return -1;
-        }
-        for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = t.sensor[s].meas_cov_m2[i];
-        return 0;
+        return set_meas_cov(sp, s, m, err, n);
     }
     if (strcmp(key, "meas_sigma_m") == 0) {
         double sg;
         if (get_double(v, R_POS, &sg, err, n) != 0) return -1;
-        sp->meas_cov_m2[0] = sp->meas_cov_m2[2] = (trk_real)(sg * sg);
-        sp->meas_cov_m2[1] = 0;
-        return 0;
+        /* the same check as meas_cov_m2 (fuzz_kvfile: 8.9e118 squared passed unchecked and the
+         * configuration written back was refused) */
+        const double m[3] = {sg * sg, 0, sg * sg};
+        return set_meas_cov(sp, s, m, err, n);
     }
     if (strcmp(key, "amplitude") == 0) return get_name(v, AMP_NAMES, &a->model, err, n);
     if (strcmp(key, "k_shape") == 0) return get_double(v, R_POS, &a->k_shape, err, n);
