@@ -218,6 +218,7 @@ static void test_lookup_explicit_gain(void **state)
     static const double shorts[] = {0.01, 1e-3, 1e-6, 1e-12};
     for (size_t k = 0; k < sizeof shorts / sizeof shorts[0]; k++) {
         /* 0.1 apart, but 0.5 -> 0.5 + short; the values jump across the short interval */
+        if (TRK_REAL_IS_FLOAT && shorts[k] < 1e-6) continue; /* no such float interval at 0.5 */
         const double pd[8] = {0.2, 0.3, 0.4, 0.5, 0.5 + shorts[k], 0.6, 0.7, 0.8};
         static const double v[8] = {0, 0, 0, 0, 1, 1, 1, 1};
         TRK_ASSERT_STATUS(load_explicit_pd(pd, 8, v, &q, &b), TRK_E_TABLE_CORRUPT);
@@ -250,7 +251,7 @@ static void test_lookup_explicit_gain(void **state)
     memset(&g, 0, sizeof g);
     static trk_real nodes[8] = {TRK_REAL_C(0.2), TRK_REAL_C(0.3), TRK_REAL_C(0.4), TRK_REAL_C(0.5),
                                 TRK_REAL_C(0.501), TRK_REAL_C(0.6), TRK_REAL_C(0.7), TRK_REAL_C(0.8)};
-    static const trk_real lv[2] = {TRK_REAL_C(0.1), TRK_REAL_C(10)};
+    static const trk_real lv[2] = {TRK_REAL_C(0.1), TRK_REAL_C(10.0)};
     static trk_real gvals[16];
     g.detector = TRK_Q2_PDAF;
     g.axis[0] = (struct trk_q2_axis){8, nodes, 0, 0, 0, TRK_Q2_CUBIC};

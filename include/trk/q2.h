@@ -71,7 +71,7 @@
 
 #define TRK_Q2_MAX_AXES 3
 /* Largest noise gain sum|w| of one axis's interpolation weights (see above). */
-#define TRK_Q2_MAX_AXIS_GAIN TRK_REAL_C(3)
+#define TRK_Q2_MAX_AXIS_GAIN TRK_REAL_C(3.0)
 
 enum trk_q2_detector {
     TRK_Q2_PDAF = 1,   /* axes (pd, lambda_vg) */

@@ -14,6 +14,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "number.h"
+
 #define KV_MAX_LINE 1024
 
 /* Set one key. Return 0 on success, 1 for an unknown key, -1 for a bad value
@@ -32,21 +34,8 @@ int kv_parse_stream(FILE *f, const char *name, kv_setter set, void *ctx, char *e
 /* Split "key=value" (command-line form) and call set. 0 / -1 with message. */
 int kv_parse_assignment(const char *kv, kv_setter set, void *ctx, char *err, size_t errlen);
 
-/* One decimal number at the start of s (blanks before it skipped), the
- * number syntax of every tool: strtod's, but no hex ("0x10"); subnormals
- * (4.9e-324) are finite and accepted. *end after it. 0 with *v, or
- * KV_NUM_BAD (no number; *end = s), KV_NUM_NONFINITE (inf, nan) or
- * KV_NUM_RANGE (overflow, or an underflow to 0 such as 1e-400). */
-enum { KV_NUM_BAD = -1, KV_NUM_NONFINITE = -2, KV_NUM_RANGE = -3 };
-int kv_strtod(const char *s, char **end, double *v);
-/* The message of a KV_NUM_ code ("not a finite number", ...). */
-const char *kv_num_error(int code);
-
-/* Value parsers: 0 on success, -1 when s is not entirely one finite number
- * (or integer in [lo, hi]). kv_parse_number: the same with the KV_NUM_ code
- * of the failure (for the message, kv_num_error). */
-int kv_parse_double(const char *s, double *v);
-int kv_parse_number(const char *s, double *v);
+/* Value parsers (kv_parse_double, kv_parse_number, kv_strtod: number.h):
+ * 0 on success, -1 unless s is entirely one integer in [lo, hi]. */
 int kv_parse_long(const char *s, long lo, long hi, long *v);
 /* Comma- or space-separated list of exactly n finite numbers. */
 int kv_parse_doubles(const char *s, double *v, int n);

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "kvfile.h"
+#include "number.h"
 
 void vec_file_init(struct vec_file *f, const char *buf, size_t len)
 {
