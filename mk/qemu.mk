@@ -58,7 +58,7 @@ FW_VEC_FILES = $(sort $(wildcard $(VECTORS_DIR)/*.vec))
 FW_KIND_SRC = $(sort $(wildcard tools/vec/kind_*.c))
 # the kinds registered VEC_SLOW: not in the image's registry
 FW_SKIP_KINDS := $(shell sed -n 's/^TRK_VEC_KIND(\([a-z0-9_]*\),.*VEC_SLOW).*/\1/p' $(sort $(wildcard tools/vec/kind_*.c)))
-FW_COMMON_SRC := tools/gen/amp_table.c tools/gen/kdist.c tools/gen/q2_amp.c tools/gen/table_writer.c
+FW_COMMON_SRC := tools/gen/amp_table.c tools/gen/kdist.c tools/gen/q2_amp.c tools/gen/table_writer.c tools/cli/number.c
 FW_RANDOM123 ?= /usr/include/Random123
 FW_TABLEGEN = $(BUILD)/bin/trk-tablegen
 # newlib-nano + semihosting. Neither nano nor Debian's full newlib printf
@@ -69,7 +69,7 @@ FW_SPECS ?= --specs=nano.specs --specs=rdimon.specs
 define QEMU_template
 FW_DIR_$(1) := build/qemu/$(1)
 FW_CFLAGS_$(1) = $$(FW_WARN) $$(TARGET_$(1)_CFLAGS) $$(FW_VEC_DEFS) -ffunction-sections -fdata-sections -g \
-  -Iinclude -Itools/vec -Itools/gen -I$$(FW_DIR_$(1))/gen -isystem $$(FW_DIR_$(1))/inc \
+  -Iinclude -Itools/vec -Itools/gen -Itools/cli -I$$(FW_DIR_$(1))/gen -isystem $$(FW_DIR_$(1))/inc \
   -DFW_TARGET='"$(1) on $$(QEMU_MACHINE_$(1))"' -DFW_SKIP_KINDS='"$$(strip $$(FW_SKIP_KINDS))"' \
   -DFW_AMP_K_DIRECT=$$(if $$(TARGET_$(1)_FLOAT),0,1)
 FW_HARNESS_SRC_$(1) = tools/vec/vec.c tools/vec/registry.c $$(FW_KIND_SRC) $$(FW_COMMON_SRC) tests/qemu/startup.c \
@@ -109,7 +109,7 @@ $$(FW_DIR_$(1))/obj/vec_data.o: $$(FW_DIR_$(1))/vec_data.c
 	$$(call say,CC,$$< ($(1)))
 	$$(Q)$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -Wno-overlength-strings -c $$< -o $$@
 $$(FW_DIR_$(1))/obj/%.o: %.c $$(FW_DIR_$(1))/gen/vec_kinds.inc $$(FW_DIR_$(1))/inc/.stamp \
-  $$(wildcard include/trk/*.h tools/vec/*.h tools/gen/*.h) mk/qemu.mk
+  $$(wildcard include/trk/*.h tools/vec/*.h tools/gen/*.h tools/cli/number.h) mk/qemu.mk
 	@mkdir -p $$(@D)
 	$$(call say,CC,$$< ($(1)))
 	$$(Q)$$(TARGET_$(1)_CC) $$(FW_CFLAGS_$(1)) -c $$< -o $$@

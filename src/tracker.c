@@ -123,7 +123,10 @@ static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, s
     trk_real llr = 0; /* positions only: l^a = 1 */
     if (au->sp->use_amplitude && d->has_amplitude) {
         st = trk_amplitude_log_lr(&au->sp->amplitude, d->amplitude, &llr);
-        if (st == TRK_E_RANGE) rep->n_below_threshold++;
+        /* TRK_E_RANGE at or above the threshold: ln l^a beyond the real type (a Rayleigh
+         * amplitude above ~1e154 sqrt(P)), a bad amplitude, not one below the threshold */
+        if (st == TRK_E_RANGE && d->amplitude < trk_amplitude_threshold(&au->sp->amplitude))
+            rep->n_below_threshold++;
         else if (st != TRK_OK) rep->n_rejected_amplitude++;
         if (st != TRK_OK) return;
     }

@@ -404,6 +404,49 @@ static void test_bad_tables(void **state)
     TRK_ASSERT_STATUS(trk_amplitude_init_table(&m, &empty), TRK_E_ARG);
 }
 
+/* A K table built by hand whose nodes are consistent with its threshold t
+ * (ln l^a axis from ln(t/sqrt P), inverse-survival curves u(x) from t/sqrt P,
+ * explicit x nodes, all within the node bounds): only the bound t/sqrt(P) <=
+ * TRK_AMP_MAX_NORM_THRESHOLD can refuse it (issue 17 item 6: t = 1e160 passed
+ * every check and dropped every detection as below threshold). */
+static trk_status consistent_k_table(double thr, double power)
+{
+    struct tablew *w = tablew_new(TRK_TABLE_KIND_AMP, TRK_AMP_TABLE_VERSION, sizeof(trk_real));
+    assert_non_null(w);
+    const double ut = thr / sqrt(power);
+    assert_false(tablew_param_int(w, "model", TRK_AMP_K) || tablew_param_real(w, "nu", 1) ||
+                 tablew_param_real(w, "snr_db", 15) || tablew_param_real(w, "pfa", 1e-3) ||
+                 tablew_param_real(w, "clutter_power", power) || tablew_param_real(w, "threshold", thr) ||
+                 tablew_param_real(w, "pd", 0.5) || tablew_param_real(w, "log_lr_limit", 20));
+    const double llr[8] = {1, 1, 2, 1, 3, 1, 4, 1}; /* (L, dL/ds) */
+    const struct tablew_axis la = {4, TRK_TABLE_SPACING_LINEAR, TRK_TABLE_VAR_LN_AMP, log(ut), log(ut) + 3, 0, NULL};
+    static const double xs[4] = {0, 1, 2, 3};
+    const double u[4] = {ut, ut * 1.5, ut * 2, ut * 2.5};
+    const struct tablew_axis xa = {4, TRK_TABLE_SPACING_EXPLICIT, TRK_TABLE_VAR_X, 0, 3, 0, xs};
+    assert_false(tablew_section(w, TRK_AMP_SECTION_LOG_LR, 1, &la, 2, TRK_TABLE_INTERP_HERMITE, llr) ||
+                 tablew_section(w, TRK_AMP_SECTION_INV_SF_CLUTTER, 1, &xa, 1, TRK_TABLE_INTERP_LINEAR, u) ||
+                 tablew_section(w, TRK_AMP_SECTION_INV_SF_TARGET, 1, &xa, 1, TRK_TABLE_INTERP_LINEAR, u));
+    unsigned char *b;
+    size_t len;
+    if (tablew_finish(w, &b, &len) != 0) fail_msg("tablew: %s", tablew_error(w));
+    tablew_free(w);
+    const trk_status st = init_from(b, len);
+    free(b);
+    return st;
+}
+
+static void test_threshold_bound(void **state)
+{
+    (void)state;
+    TRK_ASSERT_OK(consistent_k_table(3, 1)); /* the hand-made table is sound */
+    TRK_ASSERT_OK(consistent_k_table(9e5, 1));
+    TRK_ASSERT_OK(consistent_k_table(0.9 * (double)TRK_AMP_MAX_NORM_THRESHOLD * 1e3, 1e6));
+    TRK_ASSERT_STATUS(consistent_k_table(1.1 * (double)TRK_AMP_MAX_NORM_THRESHOLD, 1), TRK_E_TABLE_CORRUPT);
+    TRK_ASSERT_STATUS(consistent_k_table(2e6 * 1e3, 1e6), TRK_E_TABLE_CORRUPT);
+    if (!TRK_REAL_IS_FLOAT) /* 1e160 is no float */
+        TRK_ASSERT_STATUS(consistent_k_table(1e160, 1), TRK_E_TABLE_CORRUPT);
+}
+
 /* The tools' texture integrals (kdist) against the half-integer closed forms
  * of K clutter, z = 2 a sqrt(nu) (clutter power 1), from K_{n+1/2}:
  *   nu = 1/2: S0 = e^-z,   nu = 3/2: S0 = (1 + z) e^-z,
@@ -541,6 +584,7 @@ int main(void)
         cmocka_unit_test(test_tail),
         cmocka_unit_test(test_rayleigh_and_geometric_tables),
         cmocka_unit_test(test_bad_tables),
+        cmocka_unit_test(test_threshold_bound),
         cmocka_unit_test(test_kennedy),
         cmocka_unit_test(test_sample_log_lr),
         cmocka_unit_test(test_kdist_closed_forms),

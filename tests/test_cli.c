@@ -460,6 +460,85 @@ static void test_set(void **state)
     assert_int_equal(kv_parse_assignment("gate_prob= ", tcfg_set, &cfg, err, sizeof err), -1);
 }
 
+/* Issue 17 item 10: one number syntax everywhere (kv_strtod): decimal only
+ * (strtod took "0x10" as 16), subnormals are finite and accepted (4.9e-324
+ * was "not a finite number"), overflow and total underflow named as such;
+ * blank values refused; "sensor.-1" named as a negative index (it was
+ * "sensor index 18446744073709551615"). */
+static void test_numbers_issue17(void **state)
+{
+    (void)state;
+    double d, v[4];
+    long l;
+    char *end;
+    assert_int_equal(cli_parse_double("4.9e-324", &d), 0);
+    assert_true(d > 0 && d < 1e-323);
+    assert_int_equal(kv_parse_double("2.2e-310", &d), 0);
+    TRK_ASSERT_NEAR(d, 2.2e-310, 0, 1e-9);
+    assert_int_equal(kv_parse_number("1e-400", &d), KV_NUM_RANGE);
+    assert_int_equal(kv_parse_number("1e400", &d), KV_NUM_RANGE);
+    assert_int_equal(kv_parse_number("-inf", &d), KV_NUM_NONFINITE);
+    assert_int_equal(kv_parse_number("0x10", &d), KV_NUM_BAD);
+    assert_int_equal(kv_parse_number("-0X1p3", &d), KV_NUM_BAD);
+    assert_int_equal(kv_parse_number(" ", &d), KV_NUM_BAD);
+    assert_int_equal(kv_strtod("0x10", &end, &d), KV_NUM_BAD);
+    assert_int_equal(cli_parse_double("0x10", &d), -1);
+    assert_int_equal(cli_parse_long("0x10", &l), -1);
+    assert_int_equal(cli_parse_list("1,0x2", v, 4), -1);
+    assert_int_equal(kv_parse_doubles("1 0x2", v, 2), -1);
+    assert_int_equal(kv_parse_doubles("1 4.9e-324", v, 2), 0);
+    assert_true(v[1] > 0);
+    assert_string_equal(kv_num_error(KV_NUM_RANGE), "beyond the range of a double (overflow, or underflow to 0)");
+
+    static struct tcfg cfg;
+    char err[512];
+    tcfg_defaults(&cfg);
+    assert_int_equal(kv_parse_assignment("sensor.-1.pd=0.5", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_non_null(strstr(err, "sensor index '-1': must be an integer >= 0"));
+    assert_null(strstr(err, "18446744073709551615"));
+    assert_int_equal(kv_parse_assignment("sensor.+0.pd=0.5", tcfg_set, &cfg, err, sizeof err), -1);
+    const int sub = kv_parse_assignment("process_noise_q=4.9e-324", tcfg_set, &cfg, err, sizeof err);
+    if (TRK_REAL_IS_FLOAT) { /* no float holds it: refused, not silently 0 */
+        assert_int_equal(sub, -1);
+        if (!strstr(err, "outside the float range of this build")) fail_msg("message: %s", err);
+    } else {
+        if (sub != 0) fail_msg("4.9e-324 refused: %s", err);
+    }
+    assert_int_equal(kv_parse_assignment("process_noise_q=1e-400", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_non_null(strstr(err, "beyond the range of a double"));
+    assert_int_equal(kv_parse_assignment("gate_prob=0x1p-1", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not a decimal number"));
+    /* fuzz_kvfile: meas_sigma_m squared skipped the covariance check of meas_cov_m2 (8.9e118^2:
+     * xx yy overflows), and the configuration written back was refused */
+    assert_int_equal(kv_parse_assignment(TRK_REAL_IS_FLOAT ? "sensor.0.meas_sigma_m=1e19" : "sensor.0.meas_sigma_m=8.9e118",
+                                         tcfg_set, &cfg, err, sizeof err),
+                     -1);
+    assert_non_null(strstr(err, "TRK_E_NOT_SPD"));
+    assert_int_equal(kv_parse_assignment("sensor.0.meas_sigma_m=1e200", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_int_equal(kv_parse_assignment("sensor.0.meas_sigma_m=3", tcfg_set, &cfg, err, sizeof err), 0);
+    TRK_ASSERT_NEAR(cfg.params.sensor[0].meas_cov_m2[0], 9, 0, 0);
+    TRK_ASSERT_NEAR(cfg.params.sensor[0].meas_cov_m2[1], 0, 0, 0);
+    TRK_ASSERT_NEAR(cfg.params.sensor[0].meas_cov_m2[2], 9, 0, 0);
+
+    /* blank values through the option table: refused, never 0 */
+    long scans = 7;
+    double snr = 3;
+    const struct cli_opt opts[] = {CLI_OPT_LONG("--max-scans", &scans, "N", NULL, CLI_GE, 0, 0, "scans"),
+                                   CLI_OPT_DOUBLE("--snr-db", &snr, "D", NULL, 0, 0, 0, "snr"), CLI_OPT_END};
+    const struct cli cli = {.prog = "t", .opts = opts};
+    char *a1[] = {"t", "--max-scans", " ", NULL}, *a2[] = {"t", "--snr-db= ", NULL}, *a3[] = {"t", "--snr-db", "1e-400", NULL};
+    struct capture c;
+    capture_begin(&c, 2);
+    const int r1 = cli_parse(&cli, ARGC(a1), a1), r2 = cli_parse(&cli, ARGC(a2), a2), r3 = cli_parse(&cli, ARGC(a3), a3);
+    capture_end(&c);
+    assert_int_equal(r1, 2);
+    assert_int_equal(r2, 2);
+    assert_int_equal(r3, 2);
+    assert_int_equal(scans, 7);
+    TRK_ASSERT_NEAR(snr, 3, 0, 0);
+    assert_non_null(strstr(c.text, "'1e-400' (beyond the range of a double"));
+}
+
 /* ---------------------------------------------------------------- subcommands */
 
 static int cmd_a(int argc, char **argv)
@@ -536,7 +615,8 @@ int main(void)
         cmocka_unit_test(test_value_parsers), cmocka_unit_test(test_aliases),
         cmocka_unit_test(test_refused_values), cmocka_unit_test(test_usage_errors),
         cmocka_unit_test(test_help),         cmocka_unit_test(test_common_table),
-        cmocka_unit_test(test_set),          cmocka_unit_test(test_dispatch),
+        cmocka_unit_test(test_set),
+        cmocka_unit_test(test_numbers_issue17),          cmocka_unit_test(test_dispatch),
         cmocka_unit_test(test_internal_errors), cmocka_unit_test(test_stop_signals),
     };
     return trk_run_tests("cli", tests, NULL, NULL);

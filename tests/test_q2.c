@@ -176,6 +176,92 @@ static void test_lookup_uniform_equals_explicit(void **state)
     }
 }
 
+/* Issue 17 item 5: a PDAF table that passes every other check (values in
+ * [0, 1], pd nodes in (0, 1], CRC) with cubic interpolation and an explicit
+ * pd axis holding one short interval returned 1.30, 6.61, 5 927 and 5.9e9:
+ * the interpolation gain bound was not enforced for explicit axes. Such a
+ * table is refused at load; the default explicit pd axis of trk-tablegen
+ * (intervals 0.05 / 0.02 / 0.01 / 0.005 side by side: gain 1.61) loads, and
+ * its lookups of values in [0, 1] stay within that gain. */
+static trk_status load_explicit_pd(const double *pd, uint32_t npd, const double *node_vals, struct trk_q2_lookup *q,
+                                   unsigned char **bytes)
+{
+    struct tablew *w = tablew_new(TRK_TABLE_KIND_Q2_PDAF, TRK_Q2_TABLE_VERSION, sizeof(trk_real));
+    assert_non_null(w);
+    const double gamma = -2 * log1p(-0.99);
+    assert_false(tablew_param_int(w, "detector", TRK_Q2_PDAF) || tablew_param_int(w, "nz", 2) ||
+                 tablew_param_real(w, "gate_gamma", gamma) || tablew_param_real(w, "gate_prob", 0.99) ||
+                 tablew_param_real(w, "max_se", 1e-4));
+    const struct tablew_axis ax[2] = {
+        {npd, TRK_TABLE_SPACING_EXPLICIT, TRK_TABLE_VAR_PD, pd[0], pd[npd - 1], 0, pd},
+        {2, TRK_TABLE_SPACING_LOG, TRK_TABLE_VAR_LAMBDA_VG, 0.1, 10, 0, NULL}};
+    static double data[2 * 2 * 64];
+    for (uint32_t c = 0; c < 2 * npd; c++) {
+        data[2 * c] = node_vals[c / 2];
+        data[2 * c + 1] = 1e-5;
+    }
+    assert_int_equal(tablew_section(w, TRK_Q2_SECTION_VALUES, 2, ax, 2, TRK_TABLE_INTERP_CUBIC, data), 0);
+    size_t len;
+    if (tablew_finish(w, bytes, &len) != 0) fail_msg("tablew: %s", tablew_error(w));
+    tablew_free(w);
+    struct trk_table t;
+    trk_status st = trk_table_parse(&t, *bytes, len);
+    if (st == TRK_OK) st = trk_q2_lookup_init_table(q, &t, TRK_Q2_PDAF, 2);
+    return st;
+}
+
+static void test_lookup_explicit_gain(void **state)
+{
+    (void)state;
+    struct trk_q2_lookup q;
+    unsigned char *b;
+    static const double shorts[] = {0.01, 1e-3, 1e-6, 1e-12};
+    for (size_t k = 0; k < sizeof shorts / sizeof shorts[0]; k++) {
+        /* 0.1 apart, but 0.5 -> 0.5 + short; the values jump across the short interval */
+        if (TRK_REAL_IS_FLOAT && shorts[k] < 1e-6) continue; /* no such float interval at 0.5 */
+        const double pd[8] = {0.2, 0.3, 0.4, 0.5, 0.5 + shorts[k], 0.6, 0.7, 0.8};
+        static const double v[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+        TRK_ASSERT_STATUS(load_explicit_pd(pd, 8, v, &q, &b), TRK_E_TABLE_CORRUPT);
+        free(b);
+    }
+    /* the default pd axis (Q2_TABLE_DEFAULT_PD), alternating values 0, 1: the worst noise */
+    static const double pd[30] = {0.02, 0.04, 0.06, 0.08, 0.1,  0.15, 0.2,  0.25,  0.3,  0.35,
+                                  0.4,  0.45, 0.5,  0.55, 0.6,  0.65, 0.7,  0.75,  0.8,  0.85,
+                                  0.87, 0.89, 0.91, 0.93, 0.95, 0.97, 0.98, 0.99, 0.995, 1};
+    double v[30];
+    for (int i = 0; i < 30; i++) v[i] = i % 2;
+    TRK_ASSERT_OK(load_explicit_pd(pd, 30, v, &q, &b));
+    trk_real lo = 1, hi = 0;
+    for (int i = 0; i + 1 < 30; i++)
+        for (int k = 0; k <= 50; k++) {
+            trk_real x;
+            TRK_ASSERT_OK(trk_q2_pdaf(&q, (trk_real)(pd[i] + (pd[i + 1] - pd[i]) * k / 50.0), 1, &x));
+            lo = x < lo ? x : lo;
+            hi = x > hi ? x : hi;
+        }
+    /* at the nodes exactly 0 and 1; between them within the gain 1.61 of the axis */
+    assert_true(lo >= TRK_REAL_C(-0.62) && lo < TRK_REAL_C(-0.1));
+    assert_true(hi <= TRK_REAL_C(1.62) && hi > TRK_REAL_C(1.1));
+    trk_real at;
+    TRK_ASSERT_OK(trk_q2_pdaf(&q, TRK_REAL_C(0.97), 1, &at));
+    TRK_ASSERT_NEAR(at, 1, TRK_TOL(1e-12, 1e-5), 0);
+    free(b);
+    /* the grid API refuses the same axis */
+    struct trk_q2_grid g;
+    memset(&g, 0, sizeof g);
+    static trk_real nodes[8] = {TRK_REAL_C(0.2), TRK_REAL_C(0.3), TRK_REAL_C(0.4), TRK_REAL_C(0.5),
+                                TRK_REAL_C(0.501), TRK_REAL_C(0.6), TRK_REAL_C(0.7), TRK_REAL_C(0.8)};
+    static const trk_real lv[2] = {TRK_REAL_C(0.1), TRK_REAL_C(10.0)};
+    static trk_real gvals[16];
+    g.detector = TRK_Q2_PDAF;
+    g.axis[0] = (struct trk_q2_axis){8, nodes, 0, 0, 0, TRK_Q2_CUBIC};
+    g.axis[1] = (struct trk_q2_axis){2, lv, 0, 0, 0, TRK_Q2_LINEAR};
+    g.values = gvals;
+    TRK_ASSERT_STATUS(trk_q2_lookup_init(&q, &g), TRK_E_TABLE_CORRUPT);
+    g.axis[0].interp = TRK_Q2_LINEAR; /* linear weights: gain 1 on any nodes */
+    TRK_ASSERT_OK(trk_q2_lookup_init(&q, &g));
+}
+
 static void test_lookup_bad_grids(void **state)
 {
     (void)state;
@@ -693,6 +779,7 @@ int main(void)
         cmocka_unit_test(test_lookup_error_bound),
         cmocka_unit_test(test_lookup_3d_uniform),
         cmocka_unit_test(test_lookup_uniform_equals_explicit),
+        cmocka_unit_test(test_lookup_explicit_gain),
         cmocka_unit_test(test_lookup_bad_grids),
         cmocka_unit_test(test_roc_table),
         cmocka_unit_test(test_q2_table),

@@ -656,6 +656,14 @@ static void test_two_sensors(void **state)
 }
 
 
+/* A scan's amplitude counters; no track started from it. */
+static void assert_amplitude_counts(const struct trk_scan_report *r, uint32_t below, uint32_t rejected)
+{
+    assert_int_equal(r->n_below_threshold, below);
+    assert_int_equal(r->n_rejected_amplitude, rejected);
+    assert_int_equal(r->n_started, 0);
+}
+
 /* PDAFAI inside the tracker: a sensor with a Rayleigh amplitude model. The
  * track update equals trk_cv2_predict + trk_pda_update with the model's P_D
  * and each detection's ln l^a; detections below the threshold and with bad
@@ -695,9 +703,27 @@ static void test_amplitude_pdafai(void **state)
     struct trk_scan s1 = {SEC(1), 0, 5, d};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &rep));
-    assert_int_equal(rep.n_below_threshold, 1);
-    assert_int_equal(rep.n_rejected_amplitude, 2);
-    assert_int_equal(rep.n_started, 0);
+    assert_amplitude_counts(&rep, 1, 2);
+    /* issue 17 item 6: finite amplitudes whose ln l^a = lr0 + lr1 a^2 overflows (1e155 .. 1e308
+     * in double) are bad amplitudes, not ones below the threshold (they were counted so) */
+    {
+        static struct trk_tracker tk2;
+        TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+        struct trk_detection h[3];
+        memset(h, 0, sizeof h);
+        const trk_real huge[3] = {TRK_REAL_C(1.01) * trk_sqrt(TRK_REAL_MAX), TRK_REAL_MAX / 4, TRK_REAL_MAX};
+        for (int i = 0; i < 3; i++) {
+            h[i].has_amplitude = 1;
+            h[i].amplitude = huge[i];
+            h[i].x_m = (trk_real)(1000 * i);
+            trk_real llr;
+            TRK_ASSERT_STATUS(trk_amplitude_log_lr(&p.sensor[0].amplitude, huge[i], &llr), TRK_E_RANGE);
+        }
+        struct trk_scan sh = {SEC(0), 0, 3, h};
+        struct trk_scan_report rh;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &sh, &rh));
+        assert_amplitude_counts(&rh, 0, 3);
+    }
     /* reference: the public one-track functions */
     struct trk_pda pda;
     struct trk_pda_params pp = {2, trk_amplitude_pd(&p.sensor[0].amplitude), p.gate_prob,

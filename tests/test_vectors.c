@@ -48,6 +48,16 @@ static int run_text(const char *text, size_t len, struct tally *t, int verbose)
     return r < 0 ? -1 : 0;
 }
 
+/* Read every case of text into *f: vec_next's last value (0 end, -1 malformed). */
+static int read_all(const char *text, struct vec_file *f)
+{
+    vec_file_init(f, text, strlen(text));
+    int r;
+    while ((r = vec_next(f, &cs)) == 1) {
+    }
+    return r;
+}
+
 /* The kind registry: every kind has a name, a function and a speed; the Monte
  * Carlo q2 kinds are the slow ones (`trk-vectors --skip-slow`, `make check`),
  * the fast ones include the library's kernels. */
@@ -153,14 +163,14 @@ static void test_malformed(void **state)
         "case kn a\ncase kn b\nend\n",
         "case kn aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\nend\n",
         "case kn a\nin nnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnnn 1\nend\n",
+        "case kn a\nin k 0x0\nin n 2\nin delta 1 0\nend\n", /* hex numbers (issue 17 item 10) */
+        "case kn a\nin k 0\nin n 2\nin delta 1 0x1p0\nend\n",
+        "case kn a\nin k 0\nin n 2\nin delta -0X1\nend\n",
+        "case kn a\ntol count 0x0 0\nend\n",
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         struct vec_file f;
-        vec_file_init(&f, bad[i], strlen(bad[i]));
-        int r;
-        while ((r = vec_next(&f, &cs)) == 1) {
-        }
-        if (r != -1) fail_msg("malformed text %zu accepted", i);
+        if (read_all(bad[i], &f) != -1) fail_msg("malformed text %zu accepted", i);
         assert_true(f.err[0] != '\0');
     }
     /* an array longer than 1024 values */
@@ -177,6 +187,55 @@ static void test_malformed(void **state)
     assert_int_equal(vec_next(&f, &cs), -1);
 }
 
+/* Issue 17 items 7 and 10: a name given twice, hex numbers refused (a
+ * subnormal accepted); the K-distribution direct evaluation outside its range
+ * (clutter power 1e-300, a/sqrt(P) = 1e50 or 1e100, x = 1e300) fails with a
+ * message instead of returning 0 or NaN or hanging. */
+static void test_hostile_issue17(void **state)
+{
+    (void)state;
+    struct vec_file f;
+    assert_int_equal(read_all("case kn a\nin k 0\nin k 1\nin n 2\nin delta 1 0\nend\n", &f), -1);
+    assert_non_null(strstr(f.err, "duplicate in name"));
+    assert_int_equal(read_all("case kn a\nin k 0\nin n 2\nin delta 1 0\nout count 1 1\nout count 1 1\nend\n", &f),
+                     -1);
+    assert_non_null(strstr(f.err, "duplicate out name"));
+    /* hex numbers: in test_malformed */
+    static const char sub[] = "case kn a\nin k 4.9e-324\nend\n";
+    vec_file_init(&f, sub, strlen(sub));
+    assert_int_equal(vec_next(&f, &cs), 1);
+    assert_true(cs.pool[0] > 0 && cs.pool[0] < 1e-323);
+
+    static const char *const far[] = {
+        "case amp_loglr a\nin model k\nin nu 1\nin clutter_power 1e-300\nin snr_db 15\nin pfa 1e-3\n"
+        "in a 1\nout log_lr 0\nend\n",
+        "case amp_loglr b\nin model k\nin nu 1\nin clutter_power 1\nin snr_db 15\nin pfa 1e-3\n"
+        "in a 1e50\nout log_lr 0\nend\n",
+        "case amp_loglr c\nin model k\nin nu 1\nin clutter_power 1\nin snr_db 15\nin pfa 1e-3\n"
+        "in a 1e100\nout log_lr 0\nend\n",
+        "case amp_inv_sf d\nin model k\nin nu 1\nin clutter_power 1\nin snr_db 15\nin pfa 1e-3\n"
+        "in which 0\nin x 1e300\nout a 0\nend\n",
+    };
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++) {
+        struct tally t = {0, 0, 0, 0};
+        assert_int_equal(run_text(far[i], strlen(far[i]), &t, 0), 0);
+        if (t.failed != 1) fail_msg("far case %zu: %ld failed, %ld passed", i, t.failed, t.passed);
+        if (!strstr(out.err, "failed")) fail_msg("far case %zu: '%s'", i, out.err);
+    }
+    /* inside the range the direct value stands: at a/sqrt(P) = 1e4 and 1e8 ln l^a is at its
+     * limit (1/a convergence; the quadrature's rounding grows with a) */
+    static const char near_limit[] = "case amp_loglr e\nin model k\nin nu 1\nin clutter_power 1\nin snr_db 15\n"
+                                     "in pfa 1e-3\nin a 1e4 1e8\nend\n";
+    vec_file_init(&f, near_limit, strlen(near_limit));
+    assert_int_equal(vec_next(&f, &cs), 1);
+    vec_out_reset(&out);
+    assert_int_equal(vec_kind_find("amp_loglr")->fn(&cs, &out), 0);
+    const struct vec_entry *lr = vec_out_find(&out, "log_lr");
+    assert_non_null(lr);
+    assert_int_equal(lr->n, 2);
+    TRK_ASSERT_NEAR(out.pool[lr->off + 1], out.pool[lr->off], 1e-7, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -184,6 +243,7 @@ int main(void)
         cmocka_unit_test(test_checks_can_fail),
         cmocka_unit_test(test_tolerance_rules),
         cmocka_unit_test(test_malformed),
+        cmocka_unit_test(test_hostile_issue17),
     };
     return trk_run_tests("vectors", tests, NULL, NULL);
 }

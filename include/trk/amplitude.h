@@ -145,7 +145,8 @@ trk_real trk_amplitude_pd(const struct trk_amplitude *m);
 
 /* ln l^a(a) of a detection with amplitude a (Brekke eqs 19-20).
  * TRK_E_NAN a NaN or infinite, TRK_E_RANGE a < 0 or a < threshold (not a
- * detection of this model), TRK_E_ARG NULL pointers. */
+ * detection of this model) or ln l^a beyond the real type (Rayleigh:
+ * a^2 / P above ~1e308 in double, 3e38 in float), TRK_E_ARG NULL pointers. */
 TRK_NODISCARD trk_status trk_amplitude_log_lr(const struct trk_amplitude *m, trk_real a, trk_real *log_lr);
 
 /* Inverse-CDF sampling (Brekke eqs 41-47): the amplitude a >= t with

@@ -25,7 +25,14 @@
  * up to 64 cubic). Both schemes return the node values exactly at nodes.
  * Truncation error (smooth q2, node spacing h in u): linear <= h^2/8 max|q2''|,
  * cubic O(h^3). Monte Carlo noise of the nodes passes through with gain
- * sum|w| <= 1 (linear) or <= 1.25 per axis (cubic).
+ * sum|w| <= 1 (linear) or <= 1.25 per axis (cubic, uniform nodes). On
+ * explicit nodes the cubic slopes divide by the neighbouring intervals, and
+ * the gain grows with the ratio of neighbouring intervals (2: 1.67, 4: 2.6,
+ * 10: 5.5; the default tables' pd axis 1.61, snr_db 1.36): an axis whose
+ * gain exceeds TRK_Q2_MAX_AXIS_GAIN anywhere is refused by
+ * trk_q2_lookup_init (TRK_E_TABLE_CORRUPT), so values in [0, 1] never
+ * interpolate to more than TRK_Q2_MAX_AXIS_GAIN^axes in magnitude (an
+ * interval of 1e-12 beside ones of 0.1 had given 5.9e9).
  * Measured with `trk-tablegen q2 --measure-interp` (q2 estimated at the centre
  * of every grid cell with the same random numbers, compared with this
  * lookup; part of the difference is Monte Carlo noise where the cells' se
@@ -63,6 +70,8 @@
 #include "trk/types.h"
 
 #define TRK_Q2_MAX_AXES 3
+/* Largest noise gain sum|w| of one axis's interpolation weights (see above). */
+#define TRK_Q2_MAX_AXIS_GAIN TRK_REAL_C(3.0)
 
 enum trk_q2_detector {
     TRK_Q2_PDAF = 1,   /* axes (pd, lambda_vg) */

@@ -398,7 +398,8 @@ struct trk_scan_report {
     uint32_t n_detections;          /* in the scan */
     uint32_t n_rejected_nonfinite;  /* NaN/inf position or covariance */
     uint32_t n_rejected_cov;        /* own covariance not SPD */
-    uint32_t n_rejected_amplitude;  /* amplitude NaN, infinite or negative */
+    uint32_t n_rejected_amplitude;  /* amplitude NaN, infinite or negative, or one whose
+                                       ln l^a overflows the real type */
     uint32_t n_below_threshold;     /* amplitude below the sensor's detection threshold */
     uint32_t n_tracks_updated;      /* live tracks predicted and updated */
     uint32_t n_tracks_hit;          /* ... with at least one detection gated */

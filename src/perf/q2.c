@@ -60,6 +60,8 @@ static trk_status check_axis(const struct trk_q2_axis *a, enum axis_kind k)
     return TRK_OK;
 }
 
+static trk_real axis_max_gain(const struct trk_q2_axis *a);
+
 trk_status trk_q2_lookup_init(struct trk_q2_lookup *q, const struct trk_q2_grid *grid)
 {
     const enum axis_kind *kinds;
@@ -70,6 +72,8 @@ trk_status trk_q2_lookup_init(struct trk_q2_lookup *q, const struct trk_q2_grid 
     for (int i = 0; i < n_axes; i++) {
         trk_status st = check_axis(&grid->axis[i], kinds[i]);
         if (st != TRK_OK) return st;
+        /* the documented bound on the noise gain of the interpolation (q2.h) */
+        if (!(axis_max_gain(&grid->axis[i]) <= TRK_Q2_MAX_AXIS_GAIN)) return TRK_E_TABLE_CORRUPT;
         if (grid->axis[i].count > (size_t)-1 / total) return TRK_E_TABLE_CORRUPT;
         total *= grid->axis[i].count;
     }
@@ -329,6 +333,32 @@ static trk_status axis_weights(const struct trk_q2_axis *a, trk_real x, struct a
     slope_stencil(a, i + 1, &s0, c);
     for (int j = 0; j < 3; j++) aw->w[s0 + (size_t)j - j0] += h11 * h * c[j];
     return TRK_OK;
+}
+
+/* The largest noise gain sum|w| of one axis's interpolation weights, over
+ * every cell at TRK_Q2_GAIN_SAMPLES + 1 points (the ends included). Linear
+ * weights sum to 1; uniform cubic ones (Catmull-Rom) to at most 1.25; on
+ * explicit nodes the slopes divide by the neighbouring intervals, so a short
+ * interval next to a long one gives a large gain (issue 17 item 5: pd nodes
+ * 0.01 and 1e-12 apart returned 5.9e9 from values in [0, 1]). */
+#define TRK_Q2_GAIN_SAMPLES 64
+static trk_real axis_max_gain(const struct trk_q2_axis *a)
+{
+    trk_real g = 1;
+    if (a->interp != TRK_Q2_CUBIC || a->count < 4) return g;
+    for (size_t i = 0; i + 1 < a->count; i++) {
+        const trk_real u0 = node_u(a, i), u1 = node_u(a, i + 1);
+        for (int k = 0; k <= TRK_Q2_GAIN_SAMPLES; k++) {
+            const trk_real f = (trk_real)k / TRK_Q2_GAIN_SAMPLES;
+            const trk_real u = k == TRK_Q2_GAIN_SAMPLES ? u1 : u0 + f * (u1 - u0);
+            struct axis_weights aw;
+            if (axis_weights(a, a->log_spacing ? trk_exp(u) : u, &aw) != TRK_OK) return (trk_real)INFINITY;
+            trk_real s = 0;
+            for (int j = 0; j < aw.n; j++) s += trk_fabs(aw.w[j]);
+            if (!(s <= g)) g = isnan(s) ? (trk_real)INFINITY : s;
+        }
+    }
+    return g;
 }
 
 trk_status trk_q2_lookup_eval(const struct trk_q2_lookup *q, const trk_real *x, trk_real *q2)

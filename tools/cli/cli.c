@@ -38,9 +38,8 @@ int cli_parse_long(const char *s, long *v)
         *v = l;
         return 0;
     }
-    errno = 0;
-    const double d = strtod(s, &end); /* "1e6"; exact below 2^53 */
-    if (errno || end == s || *end || !(fabs(d) <= 9007199254740992.0) || d < (double)LONG_MIN ||
+    double d; /* "1e6"; exact below 2^53 */
+    if (kv_strtod(s, &end, &d) != 0 || *end || !(fabs(d) <= 9007199254740992.0) || d < (double)LONG_MIN ||
         d > (double)LONG_MAX || d != floor(d))
         return -1;
     *v = (long)d;
@@ -51,9 +50,8 @@ int cli_parse_double(const char *s, double *v)
 {
     if (!*s || has_blank(s)) return -1;
     char *end;
-    errno = 0;
-    const double d = strtod(s, &end);
-    if (errno || end == s || *end || !isfinite(d)) return -1;
+    double d;
+    if (kv_strtod(s, &end, &d) != 0 || *end) return -1;
     *v = d;
     return 0;
 }
@@ -77,9 +75,7 @@ int cli_parse_list(const char *s, double *v, int max)
     while (*p) {
         char *end;
         if (n == max) return -1; /* more values than the list holds */
-        errno = 0;
-        v[n] = strtod(p, &end);
-        if (end == p || errno || !isfinite(v[n])) return -1;
+        if (kv_strtod(p, &end, &v[n]) != 0) return -1;
         n++;
         if (*end == ',' && end[1]) end++;
         else if (*end) return -1;
@@ -194,7 +190,13 @@ static void bad_value(const char *prog, const char *name, const struct cli_opt *
     else if (cli_blank(v)) snprintf(what, sizeof what, "blank");
     else switch (o->type) {
         case CLI_LONG: snprintf(what, sizeof what, "an integer%s", r); break;
-        case CLI_DOUBLE: snprintf(what, sizeof what, "a number%s", r); break;
+        case CLI_DOUBLE: {
+            double d;
+            const int e = kv_parse_number(v, &d);
+            snprintf(what, sizeof what, "%s%s%s", e ? kv_num_error(e) : "", e ? "; " : "", "a number");
+            snprintf(what + strlen(what), sizeof what - strlen(what), "%s", r);
+            break;
+        }
         case CLI_LIST:
             snprintf(what, sizeof what, "a list a,b,c or from:to:step%s%s", r[0] ? ", each" : "", r);
             break;

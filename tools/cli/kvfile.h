@@ -12,6 +12,9 @@
 #define TRK_TOOLS_KVFILE_H
 
 #include <stddef.h>
+#include <stdio.h>
+
+#include "number.h"
 
 #define KV_MAX_LINE 1024
 
@@ -24,13 +27,15 @@ typedef int (*kv_setter)(void *ctx, const char *key, const char *value, char *er
  * with "PATH:LINE: message" in err (unreadable file, syntax error, unknown
  * key, bad value, over-long line) at the first problem. */
 int kv_parse_file(const char *path, kv_setter set, void *ctx, char *err, size_t errlen);
+/* The same on an open stream (read to its end or the first problem; not
+ * closed), `name` in the messages instead of PATH. */
+int kv_parse_stream(FILE *f, const char *name, kv_setter set, void *ctx, char *err, size_t errlen);
 
 /* Split "key=value" (command-line form) and call set. 0 / -1 with message. */
 int kv_parse_assignment(const char *kv, kv_setter set, void *ctx, char *err, size_t errlen);
 
-/* Value parsers: 0 on success, -1 when s is not entirely one finite number
- * (or integer in [lo, hi]). */
-int kv_parse_double(const char *s, double *v);
+/* Value parsers (kv_parse_double, kv_parse_number, kv_strtod: number.h):
+ * 0 on success, -1 unless s is entirely one integer in [lo, hi]. */
 int kv_parse_long(const char *s, long lo, long hi, long *v);
 /* Comma- or space-separated list of exactly n finite numbers. */
 int kv_parse_doubles(const char *s, double *v, int n);

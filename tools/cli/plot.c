@@ -2,24 +2,17 @@
 #define _POSIX_C_SOURCE 200809L
 #include "plot.h"
 
+#include <errno.h>
+
 #include <spawn.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-extern char **environ;
+#include "fileio.h"
 
-FILE *plot_csv_open(const char *path, const char *header)
-{
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        fprintf(stderr, "cannot write %s\n", path);
-        return NULL;
-    }
-    if (header) fprintf(f, "%s\n", header);
-    return f;
-}
+extern char **environ;
 
 int plot_have_gnuplot(void)
 {
@@ -45,7 +38,8 @@ int plot_gnuplot(const char *base, const char *body)
     if (snprintf(gp, sizeof gp, "%s.gp", base) >= (int)sizeof gp ||
         snprintf(png, sizeof png, "%s.png", base) >= (int)sizeof png)
         return -1;
-    FILE *f = fopen(gp, "w");
+    struct fileio_out o;
+    FILE *f = fileio_create(&o, gp, 0);
     if (!f) {
         fprintf(stderr, "cannot write %s\n", gp);
         return -1;
@@ -59,7 +53,10 @@ int plot_gnuplot(const char *base, const char *body)
             "}\n"
             "set output '%s'\n%s\n",
             gp, png, body);
-    if (fclose(f) != 0) return -1;
+    if (fileio_commit(&o) != 0) {
+        fprintf(stderr, "cannot write %s: %s\n", gp, strerror(errno));
+        return -1;
+    }
     if (!plot_have_gnuplot()) {
         fprintf(stderr, "gnuplot not found on PATH: wrote %s (run `gnuplot %s` to draw %s)\n", gp,
                 gp, png);

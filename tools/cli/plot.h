@@ -1,7 +1,5 @@
-/* plot.h - CSV + gnuplot output for the tools.
+/* plot.h - gnuplot output for the tools (CSV files: fileio.h).
  *
- * plot_csv_open(path, header) opens a CSV file and writes its header line
- * (NULL and a message on stderr on failure).
  * plot_gnuplot(base, body) writes base.gp: a preamble choosing the pngcairo
  * terminal (png when pngcairo is missing) with output base.png, then `body`
  * (gnuplot commands, e.g. "plot 'x.csv' using 1:2 with lines"). If gnuplot
@@ -13,7 +11,6 @@
 
 #include <stdio.h>
 
-FILE *plot_csv_open(const char *path, const char *header);
 int plot_gnuplot(const char *base, const char *body);
 /* 1 when an executable `gnuplot` is on PATH. */
 int plot_have_gnuplot(void);

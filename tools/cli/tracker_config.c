@@ -2,6 +2,7 @@
  * (tracker_config.h). */
 #include "tracker_config.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -120,8 +121,9 @@ static void range_text(struct range r, char *buf, size_t n)
 static int get_double(const char *v, struct range r, double *out, char *err, size_t n)
 {
     double d;
-    if (kv_parse_double(v, &d) != 0) {
-        snprintf(err, n, "not a finite number");
+    const int bad = kv_parse_number(v, &d);
+    if (bad != 0) {
+        snprintf(err, n, "%s", kv_num_error(bad));
         return -1;
     }
     if (!in_range(d, r)) {
@@ -200,6 +202,26 @@ static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
 
 /* ------------------------------------------------------------------ set */
 
+/* sp->meas_cov_m2 = m after the tracker's own check (the authority), on its
+ * defaults with this covariance for sensor s: 0, or -1 with the reason. */
+static int set_meas_cov(struct trk_sensor_params *sp, unsigned s, const double m[3], char *err, size_t n)
+{
+    struct trk_tracker_params t;
+    const char *field;
+    trk_tracker_default_params(&t);
+    t.n_sensors = s + 1;
+    for (unsigned k = 1; k <= s; k++) t.sensor[k] = t.sensor[0];
+    for (int i = 0; i < 3; i++) t.sensor[s].meas_cov_m2[i] = (trk_real)m[i];
+    const trk_status st = trk_tracker_check_params(&t, &field);
+    if (st != TRK_OK) {
+        snprintf(err, n, "refused by the tracker (%s): %s%s", field, trk_status_str(st),
+                 st == TRK_E_NOT_SPD ? " (not positive definite: need xx > 0, yy > 0, xx yy > xy^2)" : "");
+        return -1;
+    }
+    for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = t.sensor[s].meas_cov_m2[i];
+    return 0;
+}
+
 static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v, char *err,
                       size_t n)
 {
@@ -214,28 +236,15 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v
             snprintf(err, n, "expected three numbers xx, xy, yy (m^2)");
             return -1;
         }
-        /* the tracker's check (the authority), on its defaults with this covariance */
-        struct trk_tracker_params t;
-        const char *field;
-        trk_tracker_default_params(&t);
-        t.n_sensors = s + 1;
-        for (unsigned k = 1; k <= s; k++) t.sensor[k] = t.sensor[0];
-        for (int i = 0; i < 3; i++) t.sensor[s].meas_cov_m2[i] = (trk_real)m[i];
-        const trk_status st = trk_tracker_check_params(&t, &field);
-        if (st != TRK_OK) {
-            snprintf(err, n, "refused by the tracker (%s): %s%s", field, trk_status_str(st),
-                     st == TRK_E_NOT_SPD ? " (not positive definite: need xx > 0, yy > 0, xx yy > xy^2)" : "");
-            return -1;
-        }
-        for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = t.sensor[s].meas_cov_m2[i];
-        return 0;
+        return set_meas_cov(sp, s, m, err, n);
     }
     if (strcmp(key, "meas_sigma_m") == 0) {
         double sg;
         if (get_double(v, R_POS, &sg, err, n) != 0) return -1;
-        sp->meas_cov_m2[0] = sp->meas_cov_m2[2] = (trk_real)(sg * sg);
-        sp->meas_cov_m2[1] = 0;
-        return 0;
+        /* the same check as meas_cov_m2 (fuzz_kvfile: 8.9e118 squared passed unchecked and the
+         * configuration written back was refused) */
+        const double m[3] = {sg * sg, 0, sg * sg};
+        return set_meas_cov(sp, s, m, err, n);
     }
     if (strcmp(key, "amplitude") == 0) return get_name(v, AMP_NAMES, &a->model, err, n);
     if (strcmp(key, "k_shape") == 0) return get_double(v, R_POS, &a->k_shape, err, n);
@@ -258,8 +267,13 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strncmp(key, "sensor.", 7) == 0) {
         char *end;
         errno = 0;
-        unsigned long s = strtoul(key + 7, &end, 10);
-        if (end == key + 7 || *end != '.' || errno) return 1;
+        /* digits only: strtoul took "-1" as 18446744073709551615 (issue 17 item 10) */
+        if (key[7] == '-' || key[7] == '+') {
+            snprintf(err, n, "sensor index '%.*s': must be an integer >= 0", (int)strcspn(key + 7, "."), key + 7);
+            return -1;
+        }
+        unsigned long s = isdigit((unsigned char)key[7]) ? strtoul(key + 7, &end, 10) : 0;
+        if (!isdigit((unsigned char)key[7]) || *end != '.' || errno) return 1;
         if (s >= TRK_MAX_SENSORS) {
             snprintf(err, n, "sensor index %lu: this build has TRK_MAX_SENSORS = %d", s,
                      TRK_MAX_SENSORS);

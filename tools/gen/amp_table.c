@@ -364,6 +364,21 @@ int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, 
                       err, errlen))
             goto out;
     }
+    /* the library must accept what is written (issue 17 item 10: a clutter power of 1e31 gave a
+     * table trk_amplitude_init_table refuses); tables of the other real width cannot be loaded here */
+    if (rs == sizeof(trk_real)) {
+        struct trk_table t;
+        struct trk_amplitude m;
+        trk_status st = trk_table_parse(&t, r->bytes, r->len);
+        if (st == TRK_OK) st = trk_amplitude_init_table(&m, &t);
+        if (st != TRK_OK) {
+            snprintf(err, errlen, "the library refuses the generated table (clutter power %g, threshold %g): %s",
+                     power, g.d.t, trk_status_str(st));
+            free(r->bytes);
+            r->bytes = NULL;
+            goto out;
+        }
+    }
     rc = 0;
 out:
     free(llr);

@@ -184,6 +184,8 @@ static double log_integral(const struct integrand *f)
         const double d2 = phi2(f, ss[i]);
         double w = d2 < 0 ? 1 / sqrt(-d2) : 1;
         if (w > 1e3) w = 1e3;
+        /* the walk below doubles w: never from 0 (phi2 = -inf; it looped forever) */
+        if (!(w >= 1e-12)) w = 1e-12;
         static const double off[] = {-8, -3, -1, 0, 1, 3, 8};
         for (int j = 0; j < 7; j++) brk[nb++] = ss[i] + off[j] * w;
         if (ss[i] < s_left) {
@@ -255,6 +257,7 @@ static double log_integral(const struct integrand *f)
 
 double kdist_log_moment(const struct kdist *k, int target, int m, double A)
 {
+    if (!(A >= 0 && A <= KDIST_MAX_A)) return NAN; /* outside the direct evaluation's range */
     struct integrand f;
     f.nu = k->nu;
     f.c_nu = k->c_nu;

@@ -32,7 +32,15 @@ struct kdist {
 /* 0 on success, -1 for nu <= 0, nu > 1e6, non-finite or snr_db out of [-50, 80]. */
 int kdist_init(struct kdist *k, double nu, double snr_db);
 
-/* ln E[w^-m exp(-A/w)], w = v (target == 0) or v + D (target == 1), m in 0..3, A >= 0. */
+/* The direct evaluation's range: A = (a/sqrt(P))^2 <= KDIST_MAX_A, i.e. a
+ * normalised amplitude up to 1e8. Beyond it the log-moments are of order
+ * 2 sqrt(nu A) > 2e8 and their difference (ln l^a) keeps no digits (at 1e20
+ * it came out 0, at 1e50 NaN, and at 1e100 the quadrature hung: issue 17
+ * item 7): every function below returns NaN (or -1) there instead. */
+#define KDIST_MAX_A 1e16
+
+/* ln E[w^-m exp(-A/w)], w = v (target == 0) or v + D (target == 1), m in 0..3,
+ * 0 <= A <= KDIST_MAX_A (else NaN). */
 double kdist_log_moment(const struct kdist *k, int target, int m, double A);
 
 /* ln S(a) and ln p(a) (a > 0 for the density), normalised units. */

@@ -39,7 +39,9 @@ void tablew_free(struct tablew *w);
 
 /* Write bytes to a file (binary), or as C source: a union with a double
  * member (8-byte alignment in C99) named `name`, and NAME_SIZE. `comment`
- * (may be NULL) goes into the file's leading comment. 0 or -1 (errno). */
+ * (may be NULL) goes into the file's leading comment. 0 or -1 (errno).
+ * Both replace path atomically (fileio.h fileio_create): on a failed write
+ * an existing file is left byte-identical (table_write.c). */
 int tablew_write_bin(const char *path, const unsigned char *bytes, size_t len);
 int tablew_write_c(const char *path, const char *name, const unsigned char *bytes, size_t len,
                    const char *comment);

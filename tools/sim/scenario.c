@@ -68,6 +68,17 @@ int scen_init(struct scenario *s, const struct scen_params *p, char *err, size_t
         snprintf(err, n, "clutter density must be >= 0");
         return -1;
     }
+    /* bounded work per scan (issue 17 item 7: a 1e9 m region drew 5e12 clutter points a scan) */
+    const double mean_clutter =
+        p->clutter_density_per_m2 * (p->x_max_m - p->x_min_m) * (p->y_max_m - p->y_min_m);
+    if (p->clutter_count > SCEN_MAX_CLUTTER || (p->clutter_count < 0 && p->clutter_around_m <= 0 &&
+                                                !(mean_clutter <= SCEN_MAX_CLUTTER))) {
+        snprintf(err, n,
+                 "%.6g clutter detections per scan (density x region area) is more than %.0f: "
+                 "a smaller region or density",
+                 p->clutter_count >= 0 ? (double)p->clutter_count : mean_clutter, (double)SCEN_MAX_CLUTTER);
+        return -1;
+    }
     if (!(p->meas_sigma_m > 0) || !isfinite(p->meas_sigma_m) || !(p->process_noise_q >= 0) ||
         !isfinite(p->process_noise_q)) {
         snprintf(err, n, "measurement sigma must be > 0 and process noise q >= 0");
@@ -423,7 +434,11 @@ void scen_next(struct scenario *s, struct trk_detection *det, size_t max_det, st
         det[i - 1] = det[j < i ? j : i - 1];
         det[j < i ? j : i - 1] = tmp;
     }
-    scan->time_us = s->p.t0_us + (int64_t)llround((double)s->k * s->p.scan_period_s * 1e6);
+    /* beyond the tracker's time range: INT64_MAX, which every consumer refuses (no llround overflow) */
+    const double t_us = (double)s->p.t0_us + (double)s->k * s->p.scan_period_s * 1e6;
+    scan->time_us = t_us <= (double)TRK_TIME_US_MAX
+                        ? s->p.t0_us + (int64_t)llround((double)s->k * s->p.scan_period_s * 1e6)
+                        : INT64_MAX;
     scan->sensor_id = s->p.sensor_id;
     scan->n_detections = n;
     scan->detections = det;

@@ -129,6 +129,9 @@ void scen_next(struct scenario *s, struct trk_detection *det, size_t max_det, st
  * against the cost of points outside the window: auto (tile_m = 0) is
  * sqrt(4 / density), about 4 points per tile. */
 #define SCEN_FIELD_SALT UINT64_C(0x5DEECE66D1F2B3A7)
+/* Clutter detections per scan (clutter_count, or the mean density x region
+ * area): at most this many, else scen_init refuses the parameters. */
+#define SCEN_MAX_CLUTTER 1000000L
 #define SCEN_FIELD_MAX_TILES 65536u   /* a window over more tiles is refused */
 
 struct scen_field {

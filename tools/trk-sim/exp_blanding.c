@@ -297,7 +297,8 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
 
     /* ---------------------------------------------------------------- results */
     char path[1024];
-    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
                            "# blanding-add-arl: ADD (H0) and ARL (H1) in scan cycles of 4 looks; "
                            "censored = runs not terminated within max_scans (counted at the cap)");
     if (!f) return 1;
@@ -318,7 +319,7 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
         fprintf(f, ",%.6g,%.3g,%.6g,%.3g,%ld,%ld\n", p->add, p->add_se, p->arl, p->arl_se, p->cens0,
                 p->cens1);
     }
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
     /* K/N upper envelope: best ARL for an ADD no larger */
     static int order[MAX_KN];
     const struct bl_point *kp = pts + c.n_page + c.n_shir;
@@ -343,11 +344,11 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
             nfr++;
         }
     }
-    f = sim_csv_open(&com, "_front.csv", path, sizeof path, "k,n,add_cycles,arl_cycles");
+    f = sim_csv_open(&com, &f_out, "_front.csv", path, sizeof path, "k,n,add_cycles,arl_cycles");
     if (!f) return 1;
     for (int a = 0; a < nfr; a++)
         fprintf(f, "%d,%d,%.6g,%.6g\n", c.kn_k[fr_j[a]], c.kn_n[fr_j[a]], fr_add[a], fr_arl[a]);
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
 
     /* stdout summary */
     printf("# blanding-add-arl: %ld runs per hypothesis, seed %llu, %.1f s wall, %d threads\n", runs,

@@ -161,7 +161,8 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     }
     /* ---- reduce in run order, print, write */
     char path[1024];
-    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
                            "# brekke-toc: Brekke 2011 Fig. 2, TOC: simulated RMSE (bad tracks removed) vs MRE");
     if (!f) return 1;
     fprintf(f, "# Table I model (T 1 s, q 0.0125^2, R I/12, g 6), K clutter, SNR %g dB, cell %g m^2 (lambda = pfa / cell), "
@@ -213,12 +214,18 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
                    opt[a][fl].pd, opt[a][fl].rmse_m);
     }
     free(v);
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
     char mpath[1024], opath[1024];
-    FILE *fm = sim_csv_open(&com, "_mre.csv", mpath, sizeof mpath,
+    struct fileio_out fm_out;
+    FILE *fm = sim_csv_open(&com, &fm_out, "_mre.csv", mpath, sizeof mpath,
                             "nu,pfa,pd,rmse_pdaf,rmse_pdafai,q2_pdaf,q2_pdafai,lambda_vg_pdaf,lambda_vg_pdafai");
-    FILE *fo = sim_csv_open(&com, "_optimum.csv", opath, sizeof opath, "nu,filter,pfa,pd,rmse_m,q2,lambda_vg");
-    if (!fm || !fo) return 1;
+    struct fileio_out fo_out;
+    FILE *fo = sim_csv_open(&com, &fo_out, "_optimum.csv", opath, sizeof opath, "nu,filter,pfa,pd,rmse_m,q2,lambda_vg");
+    if (!fm || !fo) {
+        sim_csv_discard(&fm_out);
+        sim_csv_discard(&fo_out);
+        return 1;
+    }
     for (int a = 0; a < nnu; a++) {
         for (int i = 0; i < NCURVE; i++) {
             const struct toc_point *c = &curve[a * NCURVE + i];
@@ -231,8 +238,8 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
             fprintf(fo, "%g,%s,%.6g,%.6g,%.6g,%.6g,%.6g\n", nus[a], fl ? "PDAFAI" : "PDAF", opt[a][fl].pfa, opt[a][fl].pd,
                     opt[a][fl].rmse_m, opt[a][fl].q2, opt[a][fl].lambda_vg);
     }
-    fclose(fm);
-    fclose(fo);
+    const int bad_fm = sim_csv_close(&fm_out) != 0;
+    if (sim_csv_close(&fo_out) != 0 || bad_fm) return 1;
     printf("\n# wall %.1f s on %d threads (+ MRE %.1f s); %ld track updates, %.3g updates/s\n", wall, threads, mre_s,
            total_scans, (double)total_scans / wall);
     printf("# files: %s, %s, %s\n", path, mpath, opath);

@@ -145,7 +145,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     }
     /* reduce in run order */
     char path[1024];
-    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
                            "# brekke-trackloss: Brekke 2011 Tables II-III, lost tracks per scenario and filter");
     if (!f) return 1;
     fprintf(f, "# Table I: T 1 s, %ld scans, q 0.0125^2 m^2/s^3, R I/12 m^2, gate g 6 (gamma 36; used %.6g), c1 5 m, c2 15 m\n",
@@ -165,7 +166,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         hiv[fl] = calloc((size_t)nmod, sizeof(double));
         if (!lostv[fl] || !lov[fl] || !hiv[fl]) {
             fprintf(stderr, "brekke-trackloss: out of memory\n");
-            fclose(f);
+            sim_csv_discard(&f_out);
             return 1;
         }
     }
@@ -228,7 +229,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                    amp[s].pd, gate_mean, p0, cell_txt[0], p1, cell_txt[1], only[1], only[0]);
         }
     }
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
     printf("\n# %d of %d paper values lie outside our 95%% interval (see the notes on the cell area)\n", outside_ci,
            n_cmp);
     printf("# wall %.1f s on %d threads (+ %.1f s amplitude tables); %ld track updates, %.3g updates/s\n", wall,
@@ -237,7 +238,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     if (!com.no_plot) {
         /* per cell: ours (points with error bars) and the paper (open symbols), one panel per filter */
         char dat[1024];
-        FILE *g = sim_csv_open(&com, "_plot.csv", dat, sizeof dat,
+        struct fileio_out g_out;
+    FILE *g = sim_csv_open(&com, &g_out, "_plot.csv", dat, sizeof dat,
                                "index,label,cell_m2,pdaf,pdaf_lo,pdaf_hi,pdafai,pdafai_lo,pdafai_hi,paper_pdaf,paper_pdafai");
         if (!g) return 1;
         for (int c = 0; c < ncell; c++)
@@ -251,7 +253,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                         fmax(lostv[1][idx], 0.5), fmax(lov[1][idx], 0.5), fmax(hiv[1][idx], 0.5),
                         p0 < 0 ? NAN : fmax(p0, 0.5), p1 < 0 ? NAN : fmax(p1, 0.5));
             }
-        fclose(g);
+        if (sim_csv_close(&g_out) != 0) return 1;
         struct sim_text t = {NULL, 0, 0, 0};
         sim_text_add(&t,
                      "set datafile separator ','\nset datafile missing 'nan'\nset logscale y\nset yrange [0.4:20000]\n"

@@ -165,7 +165,8 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
     long lo, hi;
     binom_interval(runs, alpha, 0.005, &lo, &hi);
     char path[1024];
-    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
                            "# clutter-null: per update t, rejections of H0 (track on clutter) over runs");
     if (!f) return 1;
     fprintf(f, "# runs %ld alpha %g kmax %ld mean_peaks %g a_min %g theta %g seed %llu; 99%% binomial interval [%ld, %ld]\n",
@@ -184,7 +185,7 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
                 (double)rej_a[t] / (double)runs, (double)lo / (double)runs, (double)hi / (double)runs,
                 in_c, in_a, (double)dec_c[t] / (double)runs, (double)dec_a[t] / (double)runs);
     }
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
     printf("# clutter-null: %ld tracks x %ld updates, alpha %g, kmax %ld, %.1f s wall, %d threads\n", runs,
            scans, alpha, kmax, wall, threads);
     printf("# exact 99%% interval of Binomial(%ld, %g): [%ld, %ld] = rate [%.5f, %.5f]\n", runs, alpha,

@@ -231,12 +231,20 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         return 1;
     }
     /* ---- run */
-    FILE *fd = sim_csv_open(&com, "/detections.csv", path, sizeof path, "scan,time_s,x_m,y_m,amplitude");
-    FILE *ft = sim_csv_open(&com, "/truth.csv", path, sizeof path,
+    struct fileio_out fd_out;
+    FILE *fd = sim_csv_open(&com, &fd_out, "/detections.csv", path, sizeof path, "scan,time_s,x_m,y_m,amplitude");
+    struct fileio_out ft_out;
+    FILE *ft = sim_csv_open(&com, &ft_out, "/truth.csv", path, sizeof path,
                             "scan,time_s,target,x_m,y_m,vx_mps,vy_mps,present,high");
-    FILE *fk = sim_csv_open(&com, "/tracks.csv", path, sizeof path,
+    struct fileio_out fk_out;
+    FILE *fk = sim_csv_open(&com, &fk_out, "/tracks.csv", path, sizeof path,
                             "scan,time_s,id,status,x_m,y_m,vx_mps,vy_mps,sd_x_m,sd_y_m,target,err_m");
-    if (!fd || !ft || !fk) return 1;
+    if (!fd || !ft || !fk) {
+        sim_csv_discard(&fd_out);
+        sim_csv_discard(&ft_out);
+        sim_csv_discard(&fk_out);
+        return 1;
+    }
     static struct trk_detection det[TRK_MAX_DETECTIONS];
     struct trk_rec *rec = NULL;
     size_t n_rec = 0, cap_rec = 0;
@@ -325,9 +333,8 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         }
         if (live > max_live) max_live = live;
     }
-    fclose(fd);
-    fclose(ft);
-    fclose(fk);
+    const int bad_fd = sim_csv_close(&fd_out) != 0, bad_ft = sim_csv_close(&ft_out) != 0;
+    if (sim_csv_close(&fk_out) != 0 || bad_fd || bad_ft) return 1;
     /* ---- score */
     long n_conf = 0, n_true = 0, n_false = 0, n_dup = 0, false_scans = 0;
     long first_cover[N_TG], cover[N_TG], n_lost[N_TG], last_end[N_TG];
@@ -385,7 +392,8 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     /* RMSE: true tracks on their target, from 10 scans after confirmation */
     double sse = 0;
     long nse = 0;
-    FILE *fe = sim_csv_open(&com, "/errors.csv", path, sizeof path, "scan,time_s,id,target,err_m,in_rmse");
+    struct fileio_out fe_out;
+    FILE *fe = sim_csv_open(&com, &fe_out, "/errors.csv", path, sizeof path, "scan,time_s,id,target,err_m,in_rmse");
     if (!fe) return 1;
     uint32_t prev_id = 0;
     for (size_t i = 0; i < n_er; i++) {
@@ -396,7 +404,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         (void)prev_id;
         fprintf(fe, "%ld,%.1f,%u,%d,%.4f,%d\n", e->scan, (double)e->scan * dt, e->id, e->target, e->err, use);
     }
-    fclose(fe);
+    if (sim_csv_close(&fe_out) != 0) return 1;
     const double rmse = nse ? sqrt(sse / (double)nse) : NAN;
     /* ---- the MRE's prediction (toc.h: q2 of this scenario by importance sampling) */
     double mre[2] = {NAN, NAN};
@@ -427,7 +435,8 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     }
     const double mre_s = progress_now_s() - t_mre0;
     /* ---- summary */
-    FILE *fs = sim_csv_open(&com, "/summary.csv", path, sizeof path, "key,value");
+    struct fileio_out fs_out;
+    FILE *fs = sim_csv_open(&com, &fs_out, "/summary.csv", path, sizeof path, "key,value");
     if (!fs) return 1;
     const struct trk_amplitude *am = &rt.amp[0];
     printf("\n== trk demo: %ld sonar scans (%.0f s), 2 km x 2 km, seed %llu\n", scans, (double)scans * dt,
@@ -472,8 +481,6 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
            mre[0]);
     printf("-- cost: %ld track updates in %.3f s of tracker time (%.3g updates/s); total %.1f s (MRE %.1f s)\n", updates,
            t_track, (double)updates / (t_track > 0 ? t_track : 1e-9), progress_now_s() - t_start, mre_s);
-    printf("   files: %s/{detections,truth,tracks,errors,summary}.csv%s\n", com.out,
-           com.no_plot ? "" : ", demo_tracks.png, demo_error.png");
     fprintf(fs, "scans,%ld\nseed,%llu\nclutter_per_scan,%g\npd,%.6f\npfa,%g\nnu,%g\nsnr_db,%g\ntargets,%d\n", scans,
             (unsigned long long)com.seed, clutter_per_scan, pd, (double)am->pfa, (double)am->nu, (double)am->snr_db,
             N_TG);
@@ -485,8 +492,10 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     fprintf(fs, "target4_end_delay_scans,%ld\nrmse_m,%.6g\nrmse_samples,%ld\nmre_pdafai_m,%.6g\nmre_pdaf_m,%.6g\n",
             tg_end[3] > 0 && last_end[3] >= tg_end[3] && last_end[3] < scans ? last_end[3] - tg_end[3] : -1, rmse, nse,
             mre[1], mre[0]);
-    fclose(fs);
-    sim_plotf(&com, "/demo_tracks",
+    if (sim_csv_close(&fs_out) != 0) return 1;
+    printf("   files: %s/{detections,truth,tracks,errors,summary}.csv%s\n", com.out,
+           com.no_plot ? "" : ", demo_tracks.png, demo_error.png");
+    const int plot_tracks = sim_plotf(&com, "/demo_tracks",
               "set datafile separator ','\nset size ratio -1\nset grid\n"
               "set key bottom right opaque box font ',9'\n"
               "set title 'trk demo: tracks over detections (%ld scans, K clutter nu %g, %.0f per scan)'\n"
@@ -505,7 +514,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         snprintf(mre_line, sizeof mre_line,
                  ", \\\n     %.6g with lines lw 2 lc rgb '#d62728' title 'MRE prediction %.2f m (PDAFAI)'", mre[1],
                  mre[1]);
-    sim_plotf(&com, "/demo_error",
+    const int plot_error = sim_plotf(&com, "/demo_error",
               "set datafile separator ','\nset grid\nset key top right opaque box\n"
               "set title 'trk demo: position error of the tracks on targets'\n"
               "set xlabel 'time (s)'\nset ylabel 'position error (m)'\nset yrange [0:*]\n"
@@ -518,5 +527,5 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     free(er);
     tcfg_unload(&rt);
     scen_free(&sc);
-    return 0;
+    return plot_tracks < 0 || plot_error < 0 ? 1 : 0; /* a .gp script not written */
 }

@@ -407,11 +407,12 @@ static void csv_row(FILE *f, const struct mtt_row *r)
 static int write_csv(const struct sim_common *com, const char *suffix, const struct mtt_row *rows, int n,
                      char *path, size_t pathlen)
 {
-    FILE *f = sim_csv_open(com, suffix, path, pathlen, NULL);
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(com, &f_out, suffix, path, pathlen, NULL);
     if (!f) return -1;
     csv_header(f);
     for (int i = 0; i < n; i++) csv_row(f, &rows[i]);
-    return fclose(f) == 0 ? 0 : -1;
+    return sim_csv_close(&f_out);
 }
 
 /* "12.3+-0.4" (mean and the interval's half width) in w characters. */
@@ -947,6 +948,18 @@ static int split(char *line, char **fld, int max)
 
 #define MAX_COLS (7 + 3 * M_N + 64)
 
+/* Did fgets read a whole line (its '\n', or the file's last line)? A
+ * longer line fills the buffer without one (issue 17 item 7). */
+static int whole_line(const char *line, FILE *f)
+{
+    const size_t n = strlen(line);
+    if (n > 0 && line[n - 1] == '\n') return 1;
+    const int c = getc(f);
+    if (c == EOF) return 1;
+    ungetc(c, f);
+    return 0;
+}
+
 /* Rows of one mtt CSV appended to rows[*n]. 0, or -1 with a message. */
 static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, size_t errlen)
 {
@@ -961,6 +974,11 @@ static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, s
     if (!fgets(head, sizeof head, f)) {
         fclose(f);
         snprintf(err, errlen, "%s: empty", path);
+        return -1;
+    }
+    if (!whole_line(head, f)) {
+        fclose(f);
+        snprintf(err, errlen, "%s:1: line longer than %d characters", path, (int)sizeof head - 2);
         return -1;
     }
     const int nh = split(head, h, MAX_COLS);
@@ -986,6 +1004,11 @@ static int read_csv(const char *path, struct mtt_row *rows, int *n, char *err, s
     int lineno = 1;
     while (fgets(line, sizeof line, f)) {
         lineno++;
+        if (!whole_line(line, f)) { /* the rest must not be read as a line of its own */
+            fclose(f);
+            snprintf(err, errlen, "%s:%d: line longer than %d characters", path, lineno, (int)sizeof line - 2);
+            return -1;
+        }
         if (line[0] == '#' || line[0] == '\n') continue;
         if (*n >= MAX_ROWS) {
             fclose(f);
@@ -1141,7 +1164,8 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
         return 0;
     }
     /* ---- ratios small / large per (config, clutter) and metric */
-    FILE *fr = sim_csv_open(&com, "_ratio.csv", NULL, 0,
+    struct fileio_out fr_out;
+    FILE *fr = sim_csv_open(&com, &fr_out, "_ratio.csv", NULL, 0,
                             "family,config,clutter,metric,small_capacity,large_capacity,small_mean,large_mean,"
                             "large_lo,large_hi,ratio,within");
     if (!fr) {
@@ -1193,7 +1217,10 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of 
             k0 = k1;
         }
     }
-    fclose(fr);
+    if (sim_csv_close(&fr_out) != 0) {
+        free(rows);
+        return 1;
+    }
     printf("-- CSV %s, %s_ratio.csv%s\n", path, com.out, com.no_plot ? "" : "; PNG plots beside them");
     free(rows);
     return 0;

@@ -127,7 +127,8 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
     const double dt = progress_now_s() - t0;
 
     char path[1024];
-    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path, "lambda,pd,lambda_vg,q2_paper,q2,se,rel_dev,dev_in_se");
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path, "lambda,pd,lambda_vg,q2_paper,q2,se,rel_dev,dev_in_se");
     if (!f) return 1;
     printf("Willett Table I (nz 2, R = I, V = 400: gamma = 400/pi, P_G = 1, lambda_vg = 400 lambda)\n"
            "q2 by importance sampling: %llu scenes, %llu points in %.2f s on %d thread%s; seed %llu\n"
@@ -147,7 +148,7 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
             s1[j] += d, s2[j] += d * d, s1[3] += d, s2[3] += d * d;
             if (se[c] > maxse) maxse = se[c];
         }
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
     printf("%-6s %10s %24s   (our largest se %.1e: the deviations are the paper's own Monte Carlo scatter)\n",
            "P_D", "rms dev", "mean dev (bias) +- se", maxse);
     for (int j = 0; j < 4; j++) {
@@ -156,16 +157,16 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
         printf("%-6s %9.2f%% %+13.2f%% +- %.2f%%\n", j == 0 ? "0.7" : j == 1 ? "0.8" : j == 2 ? "0.9" : "all",
                100 * rms, 100 * m, 100 * sd / sqrt(n));
     }
-    f = sim_csv_open(&com, "_curve.csv", path, sizeof path, "lambda,q2_pd07,se_pd07,q2_pd08,se_pd08,q2_pd09,se_pd09");
+    f = sim_csv_open(&com, &f_out, "_curve.csv", path, sizeof path, "lambda,q2_pd07,se_pd07,q2_pd08,se_pd08,q2_pd09,se_pd09");
     if (!f) return 1;
     for (int i = 0; i < W_NCURVE; i++) {
         const double *cq = q + NT + 3 * i, *cs = se + NT + 3 * i;
         fprintf(f, "%.6g,%.6f,%.2e,%.6f,%.2e,%.6f,%.2e\n", curve_l[i], cq[0], cs[0], cq[1], cs[1], cq[2], cs[2]);
     }
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
 
     /* CRLB (Willett eq 37) with the paper's q2 and ours; the MRE for contrast */
-    f = sim_csv_open(&com, "_crlb.csv", path, sizeof path,
+    f = sim_csv_open(&com, &f_out, "_crlb.csv", path, sizeof path,
                      "lambda,pd,q2_paper,crlb11_paper_m2,q2,crlb11_m2,crlb_pos_rmse_m,mre11_m2");
     if (!f) return 1;
     printf("\nCRLB with IRF (Willett eq 37), q = 1 m^2/s^3, R = I m^2, T = 1 s: (1,1) element of J^-1 (m^2);\n"
@@ -179,7 +180,7 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
             double jp, rp, jo, ro, mo;
             if (willett_crlb(cli.name, willett_q2[i][j], &jp, &rp) || willett_crlb(cli.name, q[c], &jo, &ro) ||
                 mre_of(q[c], &mo)) {
-                fclose(f);
+                sim_csv_discard(&f_out);
                 return 1;
             }
             if (fabs(jo / jp - 1) > max_rel) max_rel = fabs(jo / jp - 1);
@@ -188,7 +189,7 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
             printf("%-8.4f %4.1f  %8.4f %10.5f  %8.4f %10.5f %10.5f  %10.5f\n", willett_lambda[i], willett_pd[j],
                    willett_q2[i][j], jp, q[c], jo, ro, mo);
         }
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
     printf("largest relative CRLB difference (paper q2 vs ours): %.2f%%\n", 100 * max_rel);
     printf("files: %s.csv, %s_curve.csv, %s_crlb.csv\n", com.out, com.out, com.out);
     int rc = sim_plotf(&com, "",

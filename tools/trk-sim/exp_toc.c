@@ -82,6 +82,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
     struct toc_point *pts = calloc((size_t)points, sizeof *pts);
     struct toc_optimum opt[N_MODELS][MAX_CELLS][TOC_N_DETECTORS];
     FILE *f = NULL, *fo = NULL;
+    struct fileio_out f_out, fo_out;
     if (!pts) goto out;
     struct toc_q2_source src;
     memset(&src, 0, sizeof src);
@@ -147,11 +148,11 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         }
     }
     char path[1024];
-    f = sim_csv_open(&com, ".csv", path, sizeof path,
+    f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
                      "model,nu,cell_m2,pfa,pd,lambda_per_m2,rmse_pdaf_m,status_pdaf,q2_pdaf,lambda_vg_pdaf,"
                      "rmse_pdafai_m,status_pdafai,q2_pdafai,lambda_vg_pdafai,rmse_bound_pdaf_m,"
                      "rmse_bound_pdafai_m");
-    fo = sim_csv_open(&com, "_optimum.csv", path, sizeof path,
+    fo = sim_csv_open(&com, &fo_out, "_optimum.csv", path, sizeof path,
                       "model,nu,cell_m2,detector,pfa,pd,rmse_m,q2,lambda_vg,mre_solves,without_steady_state,at_range_end,"
                       "table_limited,pfa_rmse_1pct_lo,pfa_rmse_1pct_hi");
     if (!f || !fo) goto out;
@@ -203,9 +204,9 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
                        o->table_limited ? "  (q2 table's edge nearby: --lambda-vg-max)" : "");
             }
         }
-    fclose(f);
-    fclose(fo);
     f = fo = NULL;
+    const int bad_f = sim_csv_close(&f_out) != 0;
+    if (sim_csv_close(&fo_out) != 0 || bad_f) goto out;
     printf("curves: %s.csv, optima: %s_optimum.csv\n", com.out, com.out);
     rc = 0;
     if (!com.no_plot) {
@@ -241,8 +242,8 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         sim_text_free(&b);
     }
 out:
-    if (f) fclose(f);
-    if (fo) fclose(fo);
+    if (f) sim_csv_discard(&f_out);
+    if (fo) sim_csv_discard(&fo_out);
     for (int m = 0; m < N_MODELS; m++) toc_free(toc[m]), free(ai_buf[m]);
     free(pdaf_buf);
     free(pdaf_bytes);

@@ -229,7 +229,8 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     const double wall = sim_st_runs(&com, cli.name, mod, np, runs, 1, from, keep, out, &bad_call);
     if (bad_call) return 1;
     char path[1024];
-    FILE *f = sim_csv_open(&com, ".csv", path, sizeof path,
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
                            "# willett-crlb: PDAF position RMSE (tracks not lost) vs CRLB with q2 (Willett eq 37)");
     if (!f) return 1;
     fprintf(f, "# T 1 s, q 1 m^2/s^3, R = I m^2; PDAF gate P_G %.6g (gamma %.6g), two-point start, %ld scans, RMSE over "
@@ -273,7 +274,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
                 (double)lost / (double)runs, llo, lhi, mre[k], mre_q2[k], mre_lvg[k]);
     }
     free(mses);
-    fclose(f);
+    if (sim_csv_close(&f_out) != 0) return 1;
     printf("# wall %.1f s on %d threads (+ %.1f s q2 and bounds); %ld track updates, %.3g updates/s\n", wall, threads,
            bound_s, total_scans, (double)total_scans / wall);
     printf("# file: %s\n", path);

@@ -9,6 +9,7 @@
 #include <omp.h>
 #endif
 
+#include "fileio.h"
 #include "plot.h"
 #include "single_target.h"
 #include "trk/table_file.h"
@@ -239,14 +240,32 @@ int sim_load_table(const char *exp, const char *dir, const char *file, struct tr
 
 /* ---------------------------------------------------------------- output */
 
-FILE *sim_csv_open(const struct sim_common *c, const char *suffix, char *path, size_t pathlen,
-                   const char *header)
+FILE *sim_csv_open(const struct sim_common *c, struct fileio_out *o, const char *suffix, char *path,
+                   size_t pathlen, const char *header)
 {
     char buf[1024];
     if (!path) path = buf, pathlen = sizeof buf;
-    snprintf(path, pathlen, "%s%s", c->out, suffix);
-    return plot_csv_open(path, header);
+    if (snprintf(path, pathlen, "%s%s", c->out, suffix) >= (int)pathlen) {
+        fprintf(stderr, "trk-sim: %s%s: path too long\n", c->out, suffix);
+        return NULL;
+    }
+    FILE *f = fileio_create(o, path, 0);
+    if (!f) {
+        fprintf(stderr, "trk-sim: cannot write %s: %s\n", path, strerror(errno));
+        return NULL;
+    }
+    if (header) fprintf(f, "%s\n", header);
+    return f;
 }
+
+int sim_csv_close(struct fileio_out *o)
+{
+    if (fileio_commit(o) == 0) return 0;
+    fprintf(stderr, "trk-sim: %s: write error: %s\n", o->path, strerror(errno));
+    return -1;
+}
+
+void sim_csv_discard(struct fileio_out *o) { fileio_discard(o); }
 
 static void text_vadd(struct sim_text *t, const char *fmt, va_list ap)
 {

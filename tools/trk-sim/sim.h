@@ -36,6 +36,7 @@
 #include <stdio.h>
 
 #include "cli.h"
+#include "fileio.h"
 #include "progress.h"
 
 #define SIM_EXPERIMENT(id, name, desc) int sim_exp_##id(int argc, char **argv)
@@ -176,10 +177,17 @@ int sim_load_table(const char *exp, const char *dir, const char *file, struct tr
 /* ---------------------------------------------------------------- output */
 
 /* Opens c->out + suffix (e.g. ".csv", "_front.csv") for writing with its
- * header line (plot.h plot_csv_open); the name goes to path[pathlen] when
- * path is not NULL. NULL (and a message) on failure. */
-FILE *sim_csv_open(const struct sim_common *c, const char *suffix, char *path, size_t pathlen,
-                   const char *header);
+ * header line, through o (fileio.h: a temporary file renamed into place by
+ * sim_csv_close, so a failed run never leaves a cut file); the name goes to
+ * path[pathlen] when path is not NULL. NULL (and a message) on failure. */
+FILE *sim_csv_open(const struct sim_common *c, struct fileio_out *o, const char *suffix, char *path,
+                   size_t pathlen, const char *header);
+/* Every write of o checked, flushed, closed and renamed into place: 0, or -1
+ * with a message "trk-sim: PATH: write error: ..." on stderr (issue 17 item 8:
+ * a full disk gave cut CSVs and exit status 0). */
+int sim_csv_close(struct fileio_out *o);
+/* An error elsewhere: o's temporary file removed, its PATH untouched. */
+void sim_csv_discard(struct fileio_out *o);
 
 /* A growing text (gnuplot script bodies): sim_text_add appends printf-style.
  * On out of memory the text is left as it was and t->failed set. */

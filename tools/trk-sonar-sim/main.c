@@ -236,8 +236,18 @@ int main(int argc, char **argv)
         fprintf(stderr, "trk-sonar-sim: --out needs --scans N > 0\n");
         return 2;
     }
-    if (rate_hz < 0) rate_hz = 1.0 / p.scan_period_s;
     if (start_utime < 0) start_utime = log_path ? 1700000000000000LL : wall_us();
+    /* every scan's time in the tracker's range (issue 17 item 8: --scan-period-s 1e13 wrote
+     * 1 of 3 scans and exited 0) */
+    const double last_us = (double)start_utime + (double)(scans > 0 ? scans - 1 : 0) * p.scan_period_s * 1e6;
+    if (!(last_us <= (double)TRK_TIME_US_MAX)) {
+        fprintf(stderr,
+                "trk-sonar-sim: scan %ld would be at %.6g us, beyond the tracker's time range (%.6g us): "
+                "a shorter --scan-period-s or fewer --scans\n",
+                scans > 0 ? scans - 1 : 0L, last_us, (double)TRK_TIME_US_MAX);
+        return 2;
+    }
+    if (rate_hz < 0) rate_hz = 1.0 / p.scan_period_s;
     p.t0_us = start_utime;
 
     struct scenario sc;
@@ -289,6 +299,7 @@ int main(int argc, char **argv)
     clock_gettime(CLOCK_MONOTONIC, &next);
     uint64_t n_sent = 0, n_bad = 0, n_det = 0, n_tdet = 0, n_drop = 0;
     unsigned bad_kind = 0;
+    int encode_failed = 0;
     for (long k = 0; (scans == 0 || k < scans) && !cli_stop_flag; k++) {
         struct trk_scan scan;
         size_t nt, nd;
@@ -297,7 +308,9 @@ int main(int argc, char **argv)
         n_tdet += nt;
         n_drop += nd;
         if (lcmc_scan_to_msg(&scan, (int64_t)k, msg) != LCMC_OK) {
-            fprintf(stderr, "trk-sonar-sim: scan %ld cannot be encoded\n", k);
+            fprintf(stderr, "trk-sonar-sim: scan %ld cannot be encoded (time %lld us)\n", k,
+                    (long long)scan.time_us);
+            encode_failed = 1;
             break;
         }
         size_t len = encode_scan(msg, buf, 65536);
@@ -323,7 +336,7 @@ int main(int argc, char **argv)
             }
         }
     }
-    int rc = 0;
+    int rc = encode_failed;
     if (log_path) {
         if (lcmlog_close_write(&sink.w) != 0) {
             fprintf(stderr, "trk-sonar-sim: %s: write error\n", log_path);

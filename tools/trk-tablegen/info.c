@@ -2,6 +2,7 @@
  * loader (trk_table_check, then trk_table_parse and the kind's init when the
  * real width is this build's), print its header, parameters and sections.
  * Exit status 0 when the table is sound, 1 on any defect, 2 on usage/IO. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 #include "trk/q2.h"
 #include "trk/amplitude.h"
 #include "trk/table.h"
+#include "trk/table_file.h"
 
 static uint32_t rd32(const unsigned char *p)
 {
@@ -149,10 +151,7 @@ static int check_kind(const unsigned char *b, size_t len, const struct trk_table
                (double)v_lo, (double)v_hi);
         return 0;
     }
-    if (in->kind != TRK_TABLE_KIND_AMP) {
-        printf("  (no kind-specific check for kind %s in this tool)\n", kind_name(in->kind));
-        return 0;
-    }
+    if (in->kind != TRK_TABLE_KIND_AMP) return 1; /* unknown kinds are refused by the caller */
     struct trk_amplitude m;
     st = trk_amplitude_init_table(&m, &t);
     if (st != TRK_OK) {
@@ -172,6 +171,22 @@ static int check_kind(const unsigned char *b, size_t len, const struct trk_table
     printf("    ln l^a(t) = %.10g, ln l^a(2t) = %.10g; a(x=1): clutter %.10g, target %.10g\n", (double)l_t,
            (double)l_2t, (double)a1, (double)a2);
     return 0;
+}
+
+/* How much of FILE to read: the size its header declares (+ 1 MiB, to count
+ * bytes after the table's end), 1 MiB when it starts with no table magic
+ * (enough for the check's own message), never more than the format's
+ * maximum (issue 17 item 7: /dev/zero was read until malloc failed). */
+static size_t read_bound(const char *file)
+{
+    unsigned char h[20];
+    size_t bound = (size_t)1 << 20;
+    FILE *f = fopen(file, "rb");
+    if (!f) return bound;
+    if (fread(h, 1, sizeof h, f) == sizeof h && memcmp(h, "TRKTABLE", 8) == 0)
+        bound = (size_t)rd32(h + 16) + bound;
+    fclose(f);
+    return bound < TRK_TABLE_FILE_MAX_BYTES ? bound : TRK_TABLE_FILE_MAX_BYTES;
 }
 
 /* The one FILE operand. */
@@ -209,9 +224,15 @@ TABLEGEN_CMD(info, "load a table through the library, print header and parameter
         return 2;
     }
     size_t len;
-    unsigned char *b = fileio_read(file, &len);
+    /* bounded by the format's maximum: /dev/zero is refused, not read forever */
+    const size_t bound = read_bound(file);
+    unsigned char *b = fileio_read_max(file, bound, &len);
     if (!b) {
-        perror(file);
+        if (errno == EFBIG)
+            fprintf(stderr, "trk-tablegen info: %s: more than %zu bytes (%s)\n", file, bound,
+                    bound == TRK_TABLE_FILE_MAX_BYTES ? "the largest table" : "its header's size + 1 MiB");
+        else
+            perror(file);
         return 2;
     }
     struct trk_table_info in;
@@ -224,13 +245,19 @@ TABLEGEN_CMD(info, "load a table through the library, print header and parameter
     }
     print_table(b, &in);
     int bad = 0;
+    const int unknown = strcmp(kind_name(in.kind), "unknown") == 0;
+    if (unknown) { /* the container is sound, its content unknown */
+        printf("  DEFECT: unknown table kind %u (known: amp %u, q2_pdaf %u, q2_pdafai %u)\n", in.kind,
+               TRK_TABLE_KIND_AMP, TRK_TABLE_KIND_Q2_PDAF, TRK_TABLE_KIND_Q2_PDAFAI);
+        bad = 1;
+    }
     if (in.size != len) {
         printf("  DEFECT: %zu bytes after the table's end\n", len - in.size);
         bad = 1;
     }
-    if (in.real_size == sizeof(trk_real)) {
+    if (!unknown && in.real_size == sizeof(trk_real)) {
         bad |= check_kind(b, len, &in);
-    } else {
+    } else if (!unknown) {
         printf("  (real width %u: this %s build checks the container only; use a %s build of trk-tablegen\n"
                "   for the kind's checks)\n",
                in.real_size, TRK_REAL_IS_FLOAT ? "float" : "double", in.real_size == 4 ? "float" : "double");

@@ -16,6 +16,7 @@
  * normwise (see tools/vec/vec.h and each kind's file), and a case whose answer
  * jumps within float rounding (a detection on the gate boundary) is counted
  * as "not resolvable in float" rather than compared. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -158,9 +159,10 @@ int main(int argc, char **argv)
     for (int fi = 0; fi < fl.n; fi++) {
         const char *path = fl.f[fi];
         size_t len;
-        char *buf = fileio_read(path, &len);
+        char *buf = fileio_read_max(path, VEC_MAX_FILE_BYTES, &len); /* bounded: /dev/zero */
         if (!buf) {
-            fprintf(stderr, "trk-vectors: cannot read %s\n", path);
+            fprintf(stderr, "trk-vectors: cannot read %s: %s\n", path,
+                    errno == EFBIG ? "larger than 256 MiB (VEC_MAX_FILE_BYTES)" : strerror(errno));
             bad_file = 1;
             failed++;
             continue;

@@ -69,7 +69,9 @@ TRK_VEC_KIND(amp_loglr, 1e-5, 2e-6, VEC_FAST)
     for (size_t i = 0; i < n; i++) {
         const double ai = a[i] < d.t && a[i] >= d.t * (1 - snap) ? d.t : a[i];
         if (amp_direct_log_lr(&d, ai, &out[i]) != 0)
-            return vec_fail(o, "log_lr at a[%zu] = %.17g failed (below the threshold %.17g?)", i, a[i], d.t);
+            return vec_fail(o, "log_lr at a[%zu] = %.17g failed (below the threshold %.17g, or a/sqrt(P) "
+                                "beyond the direct evaluation's 1e8?)",
+                            i, a[i], d.t);
     }
     return 0;
 }
@@ -86,7 +88,8 @@ TRK_VEC_KIND(amp_inv_sf, 0, 1e-6, VEC_FAST)
     if (!out) return -1;
     for (size_t i = 0; i < n; i++)
         if (amp_direct_inv_sf(&d, (int)which, x[i], &out[i]) != 0)
-            return vec_fail(o, "inverse survival at x[%zu] = %.17g failed", i, x[i]);
+            return vec_fail(o, "inverse survival at x[%zu] = %.17g failed (no solution a/sqrt(P) <= 1e8?)", i,
+                            x[i]);
     return 0;
 }
 

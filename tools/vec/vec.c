@@ -2,12 +2,15 @@
  * Fixed buffers; never reads past buf[len]; rejects what it does not know. */
 #include "vec.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "number.h"
 
 void vec_file_init(struct vec_file *f, const char *buf, size_t len)
 {
@@ -79,15 +82,18 @@ static int parse_entry(struct vec_file *f, struct vec_case *c, char *rest, struc
     char *t;
     while ((t = token(&rest)) != NULL) {
         char *end;
-        errno = 0;
-        double v = strtod(t, &end);
-        if (*end != '\0' || end == t) {
+        double v = 0;
+        const int bad = kv_strtod(t, &end, &v); /* decimal only: no hex (issue 17 item 10) */
+        const char *d = t + (t[0] == '+' || t[0] == '-');
+        const int numeric = isdigit((unsigned char)d[0]) || (d[0] == '.' && isdigit((unsigned char)d[1]));
+        if (numeric && (bad == KV_NUM_BAD || *end != '\0')) return perr(f, "bad number (decimal numbers only)");
+        if (bad == KV_NUM_BAD || *end != '\0') {
             /* a bare word: only as the single value */
             if (e->n > 0 || e->word[0] || token(&rest)) return perr(f, "bad number");
             if (copy_name(e->word, sizeof e->word, t)) return perr(f, "word too long");
             return 0;
         }
-        if (!isfinite(v)) return perr(f, "non-finite number");
+        if (bad) return perr(f, bad == KV_NUM_RANGE ? "number beyond the range of a double" : "non-finite number");
         if (e->n >= VEC_MAX_ARRAY) return perr(f, "array longer than 1024 values");
         if (c->pool_used >= VEC_POOL) return perr(f, "case too large");
         c->pool[c->pool_used++] = v;
@@ -101,10 +107,7 @@ static int parse_tol(struct vec_file *f, char *rest, struct vec_tol *t)
     char *name = token(&rest), *a = token(&rest), *r = token(&rest);
     if (!name || !a || !r || token(&rest)) return perr(f, "tol needs <name> <abs> <rel>");
     if (copy_name(t->name, sizeof t->name, name)) return perr(f, "tol name too long");
-    char *e1, *e2;
-    t->abs = strtod(a, &e1);
-    t->rel = strtod(r, &e2);
-    if (*e1 || *e2 || !(t->abs >= 0) || !(t->rel >= 0) || !isfinite(t->abs) || !isfinite(t->rel))
+    if (kv_parse_double(a, &t->abs) || kv_parse_double(r, &t->rel) || !(t->abs >= 0) || !(t->rel >= 0))
         return perr(f, "bad tolerance");
     return 0;
 }
@@ -138,6 +141,10 @@ int vec_next(struct vec_file *f, struct vec_case *c)
             if (*n >= VEC_MAX_ENTRIES) return perr(f, "too many entries in a case");
             struct vec_entry *e = (is_in ? c->in : c->out) + *n;
             if (parse_entry(f, c, rest, e)) return -1;
+            /* one value per name: a second one would silently win or lose (issue 17 item 10) */
+            for (size_t j = 0; j < *n; j++)
+                if (strcmp((is_in ? c->in : c->out)[j].name, e->name) == 0)
+                    return perr(f, is_in ? "duplicate in name" : "duplicate out name");
             (*n)++;
         } else if (strcmp(rec, "tol") == 0) {
             if (in_case) {

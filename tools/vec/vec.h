@@ -21,6 +21,7 @@
 #include "trk/types.h"
 
 #define VEC_MAX_LINE 65536
+#define VEC_MAX_FILE_BYTES (256u << 20) /* a vector file read by trk-vectors: at most 256 MiB */
 #define VEC_MAX_NAME 32      /* names are at most 31 characters */
 #define VEC_MAX_ID 64
 #define VEC_MAX_ARRAY 1024   /* values on one line */
