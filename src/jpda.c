@@ -31,7 +31,7 @@ struct cluster {
 static trk_status check_pairs(const struct trk_jpda_pairs *s, const trk_real *p_pair, const trk_real *p_miss);
 static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solver *w);
 static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
-static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
+static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget);
 static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged);
 
 /* ------------------------------------------------------------------ API */
@@ -43,6 +43,7 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
     const trk_status st = check_pairs(pairs, p_pair, p_miss);
     if (st != TRK_OK) return st;
     struct trk_jpda_report r = {0, 0, 0, 0, 0, 0, 1};
+    uint64_t budget = (uint64_t)TRK_JPDA_SCAN_WORK; /* the exact programmes' work this call */
     const size_t n_clusters = form_clusters(pairs, solver);
     for (size_t k = 0; k < n_clusters; k++) {
         const struct cluster c = {pairs, solver, solver->tracks + solver->tr_first[k],
@@ -55,7 +56,7 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
         if (c.nt == 1) {
             solve_lone(&c, p_pair, p_miss);
             r.n_exact++;
-        } else if (solve_exact(&c, p_pair, p_miss)) {
+        } else if (solve_exact(&c, p_pair, p_miss, &budget)) {
             r.n_exact++;
         } else {
             int conv = 0;
@@ -212,7 +213,7 @@ static size_t cluster_root(uint16_t *parent, size_t t)
 static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solver *w)
 {
     const size_t nt = s->n_tracks, nd = s->n_dets;
-    uint16_t *parent = w->parent, *owner = w->det_local;
+    uint16_t *parent = w->parent, *owner = w->det.local;
     for (size_t t = 0; t < nt; t++) parent[t] = (uint16_t)t;
     for (size_t j = 0; j < nd; j++) owner[j] = NONE;
     for (size_t t = 0; t < nt; t++) {
@@ -323,7 +324,7 @@ static void track_row(const struct cluster *c, size_t a, trk_real *row)
 {
     const size_t t = c->tracks[a];
     for (size_t b = 0; b < c->nd; b++) row[b] = 0;
-    for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) row[c->w->det_local[c->s->det[k]]] = wpair(c, k);
+    for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) row[c->w->det.local[c->s->det[k]]] = wpair(c, k);
 }
 
 /* Subsets of the cluster's detections (nd <= bits): f(S) sums the events of
@@ -362,7 +363,7 @@ static void exact_by_detections(const struct cluster *c, trk_real *p_pair, trk_r
         const trk_real pm = wmiss(c, a) * total;
         trk_real z = pm;
         for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
-            z += p_pair[k] = wpair(c, k) * free_sum[c->w->det_local[c->s->det[k]]];
+            z += p_pair[k] = wpair(c, k) * free_sum[c->w->det.local[c->s->det[k]]];
         p_miss[t] = pm / z;
         for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) p_pair[k] /= z;
     }
@@ -453,13 +454,15 @@ static uint64_t work_by_tracks(const struct cluster *c)
     return (uint64_t)c->nd * (uint64_t)(c->nt + 1) * (uint64_t)c->nd * ((uint64_t)1 << c->nt) * (uint64_t)c->nt + 1;
 }
 
-/* 1 when solved exactly (the cheaper method within TRK_JPDA_MAX_WORK) */
-static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss)
+/* 1 when solved exactly: the cheaper method, within TRK_JPDA_MAX_WORK and
+ * what is left of the call's TRK_JPDA_SCAN_WORK (*budget, reduced by it) */
+static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget)
 {
     const uint64_t wd = work_by_detections(c), wt = work_by_tracks(c);
     const int use_d = wd > 0 && (wt == 0 || wd <= wt);
     const uint64_t w = use_d ? wd : wt;
-    if (w == 0 || w > (uint64_t)TRK_JPDA_MAX_WORK) return 0;
+    if (w == 0 || w > (uint64_t)TRK_JPDA_MAX_WORK || w > *budget) return 0;
+    *budget -= w;
     if (use_d) exact_by_detections(c, p_pair, p_miss);
     else exact_by_tracks(c, p_pair, p_miss);
     return 1;
@@ -468,35 +471,83 @@ static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_mi
 /* ------------------------------------------------------------------ loopy belief propagation */
 
 /* Williams & Lau 2014, eqs (29)-(30), with the messages mu_ab (track ->
- * detection) kept in p_pair and the detection sums S_b = sum_a mu_ab in
- * the solver's det_sum:
- *   nu_ab = 1 / (1 + S_b - mu_ab),   T_a = w_a0 + sum_b w_ab nu_ab,
- *   mu_ab <- w_ab / (T_a - w_ab nu_ab).
- * Marginals: P(a <- b) = w_ab nu_ab / T_a, P(a <- none) = w_a0 / T_a. */
+ * detection) kept in p_pair:
+ *   nu_ab = 1 / (1 + sum_{a' != a} mu_a'b),   T_a = w_a0 + sum_b w_ab nu_ab,
+ *   mu_ab <- w_ab / (T_a - w_ab nu_ab),
+ * marginals P(a <- b) = w_ab nu_ab / T_a, P(a <- none) = w_a0 / T_a.
+ * Both leave-one-out sums are formed without subtracting a dominant term:
+ * per detection the largest message (its pair in the solver's lbp_top, its
+ * value in lbp.top) and the sum of the others (lbp.rest); per track the
+ * largest term w_ab nu_ab and the sum of the others. A strong detection (mu or w nu beyond 1/eps of
+ * the rest) would otherwise cancel to 0 in float and turn the cluster into
+ * NaN. */
 
-/* S_b = sum_a mu_ab of every detection of the cluster */
-static void lbp_sums(const struct cluster *c, const trk_real *mu, trk_real *sum)
+/* per detection of the cluster: lbp_top = the pair of its largest message
+ * and lbp.top its value, lbp.rest = the sum of its other messages (all from
+ * the messages as they are when called) */
+static void lbp_sums(const struct cluster *c, const trk_real *mu)
 {
-    for (size_t b = 0; b < c->nd; b++) sum[c->dets[b]] = 0;
+    trk_real *rest = c->w->u.lbp.rest, *top_val = c->w->u.lbp.top;
+    uint16_t *top = c->w->det.lbp_top;
+    for (size_t b = 0; b < c->nd; b++) {
+        rest[c->dets[b]] = 0;
+        top[c->dets[b]] = NONE;
+    }
     for (size_t a = 0; a < c->nt; a++) {
         const size_t t = c->tracks[a];
-        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) sum[c->s->det[k]] += mu[k];
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) {
+            const size_t j = c->s->det[k];
+            if (top[j] == NONE) {
+                top[j] = (uint16_t)k;
+            } else if (mu[k] > top_val[j]) {
+                rest[j] += top_val[j];
+                top[j] = (uint16_t)k;
+            } else {
+                rest[j] += mu[k];
+                continue;
+            }
+            top_val[j] = mu[k];
+        }
     }
 }
 
-/* T_a = w_a0 + sum_b w_ab nu_ab, nu_ab = 1 / (1 + S_b - mu_ab) */
-static trk_real lbp_total(const struct cluster *c, const trk_real *mu, const trk_real *sum, size_t a)
+/* nu of pair k = 1 / (1 + the messages to its detection but its own), with
+ * mu[k] as lbp_sums saw it */
+static trk_real lbp_nu(const struct cluster *c, const trk_real *mu, size_t k)
+{
+    const size_t j = c->s->det[k];
+    const trk_real rest = c->w->u.lbp.rest[j];
+    return 1 / (1 + (k == c->w->det.lbp_top[j] ? rest : rest - mu[k] + c->w->u.lbp.top[j]));
+}
+
+/* Track a's T_a = w_a0 + sum_b w_ab nu_ab, its largest term's pair and T_a
+ * less that term, summed directly. */
+struct lbp_row {
+    trk_real total, top_rest;
+    size_t top;
+};
+
+static struct lbp_row lbp_row(const struct cluster *c, const trk_real *mu, size_t a)
 {
     const size_t t = c->tracks[a];
-    trk_real ta = wmiss(c, a);
+    struct lbp_row r = {wmiss(c, a), wmiss(c, a), NONE};
+    trk_real top_term = 0;
+    for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) {
+        const trk_real term = wpair(c, k) * lbp_nu(c, mu, k);
+        r.total += term;
+        if (r.top == NONE || term > top_term) {
+            r.top = k;
+            top_term = term;
+        }
+    }
     for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
-        ta += wpair(c, k) / (1 + sum[c->s->det[k]] - mu[k]);
-    return ta;
+        if (k != r.top) r.top_rest += wpair(c, k) * lbp_nu(c, mu, k);
+    return r;
 }
 
 static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged)
 {
-    trk_real *sum = c->w->u.det_sum, *mu = p_pair;
+    trk_real *mu = p_pair;
     for (size_t a = 0; a < c->nt; a++) {
         const size_t t = c->tracks[a];
         for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) mu[k] = wpair(c, k);
@@ -505,16 +556,16 @@ static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss
     *converged = 0;
     while (it < TRK_JPDA_LBP_MAX_ITER) {
         it++;
-        lbp_sums(c, mu, sum);
+        lbp_sums(c, mu);
         trk_real change = 0;
         for (size_t a = 0; a < c->nt; a++) {
             const size_t t = c->tracks[a];
-            const trk_real ta = lbp_total(c, mu, sum, a);
+            const struct lbp_row r = lbp_row(c, mu, a);
             for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) {
                 const trk_real wb = wpair(c, k);
-                const trk_real m = wb / (ta - wb / (1 + sum[c->s->det[k]] - mu[k]));
+                const trk_real m = wb / (k == r.top ? r.top_rest : r.total - wb * lbp_nu(c, mu, k));
                 const trk_real d = trk_fabs(m - mu[k]) / (m > 0 ? m : 1);
-                if (d > change) change = d;
+                if (!(d <= change)) change = d; /* a NaN never passes for convergence */
                 mu[k] = m;
             }
         }
@@ -523,15 +574,15 @@ static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss
             break;
         }
     }
-    /* marginals from the final messages; each row's nu from the sums taken
-     * before any row is overwritten */
-    lbp_sums(c, mu, sum);
+    /* marginals from the final messages (each row's nu from the sums taken
+     * before any row is overwritten; a pair's own message is read before it
+     * is written) */
+    lbp_sums(c, mu);
     for (size_t a = 0; a < c->nt; a++) {
         const size_t t = c->tracks[a];
-        const trk_real ta = lbp_total(c, mu, sum, a);
-        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
-            mu[k] = wpair(c, k) / (1 + sum[c->s->det[k]] - mu[k]) / ta;
-        p_miss[t] = wmiss(c, a) / ta;
+        const struct lbp_row r = lbp_row(c, mu, a);
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) mu[k] = wpair(c, k) * lbp_nu(c, mu, k) / r.total;
+        p_miss[t] = wmiss(c, a) / r.total;
     }
     return it;
 }

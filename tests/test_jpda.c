@@ -202,17 +202,20 @@ static void test_symmetry(void **state)
 /* A cluster beyond the exact bound (12 tracks x 12 detections: both
  * orientations would need 2^12 states) takes belief propagation, counted in
  * the report. On a chain-shaped (acyclic) gate matrix belief propagation is
- * exact: checked against a transfer-matrix recursion written here. */
-static void test_lbp_fallback(void **state)
+ * exact: checked against a transfer-matrix recursion written here, with the
+ * detections' weights near the misses' (strength 0) and e^18.5 above them
+ * (a strong return in sparse clutter: the leave-one-out sums then cancelled
+ * to 0 in float and the cluster became NaN, reported as converged). */
+static void lbp_chain(double strength)
 {
-    (void)state;
     enum { N = 12 };
     static trk_real lw0[N], lw[N * N], pa[N * N], pm[N];
     if (TRK_MAX_TRACKS < N || TRK_MAX_DETECTIONS < N) skip(); /* a small-capacity build */
     /* a chain: track t gates detections t and t+1 (no cycle) */
     for (int t = 0; t < N; t++) {
         lw0[t] = (trk_real)log(0.2 + 0.05 * t);
-        for (int j = 0; j < N; j++) lw[t * N + j] = (j == t || j == t + 1) ? (trk_real)(0.3 * ((t + j) % 5) - 0.5) : -(trk_real)INFINITY;
+        for (int j = 0; j < N; j++)
+            lw[t * N + j] = (j == t || j == t + 1) ? (trk_real)(strength + 0.3 * ((t + j) % 5) - 0.5) : -(trk_real)INFINITY;
     }
     struct trk_jpda_scan s = {N, N, lw0, lw};
     struct trk_jpda_report rep;
@@ -250,6 +253,13 @@ static void test_lbp_fallback(void **state)
         for (int j = 0; j < N; j++) row += pa[t * N + j];
         TRK_ASSERT_NEAR(row, 1, 1e-5, 0);
     }
+}
+
+static void test_lbp_fallback(void **state)
+{
+    (void)state;
+    lbp_chain(0);
+    lbp_chain(18.5);
 }
 
 /* On a loopy dense cluster beyond the bound (14 x 14, half the pairs gated)

@@ -104,7 +104,8 @@
  * the subsets of its smaller side while that side has at most
  * TRK_JPDA_EXACT_BITS members (struct trk_jpda_work holds 2^bits reals) and
  * the work stays under TRK_JPDA_MAX_WORK multiply-adds; beyond, loopy belief
- * propagation runs at most TRK_JPDA_LBP_MAX_ITER iterations. */
+ * propagation runs at most TRK_JPDA_LBP_MAX_ITER iterations (each costing a
+ * few operations per gated pair). */
 #ifndef TRK_JPDA_EXACT_BITS
 #define TRK_JPDA_EXACT_BITS 9 /* 2 KB of float workspace in the tracker; 10 doubles it */
 #endif
@@ -112,7 +113,16 @@
 #error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=9"
 #endif
 #ifndef TRK_JPDA_MAX_WORK
-#define TRK_JPDA_MAX_WORK (1L << 20) /* about 1 ms of a host core, tens on a Cortex-M4F */
+#define TRK_JPDA_MAX_WORK (1L << 20) /* about 2 ms of a host core */
+#endif
+/* ... and all exact programmes of one call (one scan) together at most
+ * TRK_JPDA_SCAN_WORK: the clusters beyond take belief propagation, so a
+ * scan's exact work is bounded however many large clusters it has. */
+#ifndef TRK_JPDA_SCAN_WORK
+#define TRK_JPDA_SCAN_WORK (2L << 20)
+#endif
+#if TRK_JPDA_SCAN_WORK < TRK_JPDA_MAX_WORK
+#error "TRK_JPDA_SCAN_WORK must be at least TRK_JPDA_MAX_WORK (jpda.h); set -DTRK_JPDA_SCAN_WORK=2097152"
 #endif
 /* Gated track-detection pairs one scan may hold (the tracker's joint
  * association, and trk_jpda_marginals' sparse copy): at least

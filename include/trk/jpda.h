@@ -21,7 +21,8 @@
  * Over detection subsets, track t's marginals come from the programme over
  * the other tracks: n_t (n_t - 1) 2^n_d n_d multiply-adds; over track
  * subsets, one programme per gated pair: n_d^2 (n_t + 1) 2^n_t n_t. The
- * cheaper applicable one runs while it needs at most TRK_JPDA_MAX_WORK;
+ * cheaper applicable one runs while it needs at most TRK_JPDA_MAX_WORK and
+ * the call's exact programmes together at most TRK_JPDA_SCAN_WORK;
  * memory is 2^TRK_JPDA_EXACT_BITS reals of workspace.
  * Per track the weights are scaled so that the largest is 1, and every layer
  * of the programme is rescaled by its largest entry, so nothing overflows and
@@ -69,7 +70,10 @@ struct trk_jpda_pairs {
 struct trk_jpda_solver {
     union {
         trk_real dp[(size_t)1 << TRK_JPDA_EXACT_BITS]; /* exact: the subset programme */
-        trk_real det_sum[TRK_MAX_DETECTIONS];          /* LBP: sum of track -> detection messages */
+        struct {                                       /* LBP, per detection: */
+            trk_real top[TRK_MAX_DETECTIONS];          /* the largest track -> detection message */
+            trk_real rest[TRK_MAX_DETECTIONS];         /* the sum of the others */
+        } lbp;
     } u;
     trk_real scale[TRK_MAX_TRACKS];               /* per track: max ln w */
     uint16_t parent[TRK_MAX_TRACKS];              /* union-find over tracks, then each track's cluster */
@@ -77,7 +81,10 @@ struct trk_jpda_solver {
     uint16_t det_first[TRK_MAX_TRACKS + 1];       /* and its detections: dets[det_first[c] ..] */
     uint16_t tracks[TRK_MAX_TRACKS];
     uint16_t dets[TRK_MAX_DETECTIONS];
-    uint16_t det_local[TRK_MAX_DETECTIONS];       /* first gating track, then index in its cluster */
+    union {                                       /* per detection: */
+        uint16_t local[TRK_MAX_DETECTIONS];       /* first gating track, then index in its cluster */
+        uint16_t lbp_top[TRK_MAX_DETECTIONS];     /* LBP: the pair of its largest message */
+    } det;
 };
 
 /* The dense interface's workspace: the solver and the sparse copy of the scan. */

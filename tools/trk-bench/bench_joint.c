@@ -10,7 +10,8 @@
  *                       16 384 gated pairs, beyond TRK_MAX_GATED_PAIRS: the
  *                       tracks whose pairs do not fit are updated by their own
  *                       PDA (n_assoc_overflow), so the time stays bounded
- * with each scan's cluster figures. The tracks are made on a 1 km grid (8
+ * with each scan's cluster figures; jpda_solve_exact_worst the solver alone
+ * on its worst exact work (below). The tracks are made on a 1 km grid (8
  * scans), then moved into place in a copy of the table; each timed scan
  * starts from that copy. */
 #include <math.h>
@@ -19,6 +20,7 @@
 #include <string.h>
 
 #include "bench.h"
+#include "trk/jpda.h"
 #include "trk/tracker.h"
 
 #define N_TRK 64
@@ -107,3 +109,43 @@ static void joint_bench(const char *name, double spacing_m, double det_spacing_m
 TRK_BENCH(joint_chain_64x256) { joint_bench("joint_chain_64x256", 5, 1.25, 0); }
 
 TRK_BENCH(joint_dense_64x256) { joint_bench("joint_dense_64x256", 0.05, 3.2 / N_DETS, 0.3); }
+
+/* The exact solver's worst scan: 4 clusters of 14 tracks each gating all 9
+ * detections of its cluster (504 pairs), each cluster just under
+ * TRK_JPDA_MAX_WORK; TRK_JPDA_SCAN_WORK lets the first ones be solved
+ * exactly and sends the rest to belief propagation, so the scan's time
+ * stays bounded. trk_jpda_solve alone, ns per call. */
+TRK_BENCH(jpda_solve_exact_worst)
+{
+    enum { NC = 4, NT = 14, ND = 9 };
+    static uint16_t first[NC * NT + 1], det[NC * NT * ND];
+    static trk_real w0[NC * NT * ND], w[NC * NT * ND], miss[NC * NT], p[NC * NT * ND], pm[NC * NT];
+    static struct trk_jpda_solver solver;
+    if (TRK_MAX_TRACKS < NC * NT || TRK_MAX_GATED_PAIRS < NC * NT * ND || TRK_MAX_DETECTIONS < NC * ND) {
+        bench_print("jpda_solve_exact_worst_skipped_capacity", 0, "-");
+        return;
+    }
+    size_t n = 0;
+    for (int t = 0; t < NC * NT; t++) {
+        first[t] = (uint16_t)n;
+        miss[t] = (trk_real)log(0.3);
+        for (int j = 0; j < ND; j++) {
+            det[n] = (uint16_t)((t / NT) * ND + j);
+            w0[n++] = (trk_real)(0.1 * ((t * 7 + j * 3) % 11) - 0.5);
+        }
+    }
+    first[NC * NT] = (uint16_t)n;
+    struct trk_jpda_report rep;
+    double best = 1e300;
+    for (int r = 0; r < 10; r++) {
+        memcpy(w, w0, sizeof w); /* the solver overwrites the weights */
+        const struct trk_jpda_pairs pairs = {NC * NT, NC * ND, first, det, w, miss};
+        const double t0 = bench_now_ns();
+        if (trk_jpda_solve(&pairs, &solver, p, pm, &rep) != TRK_OK) return;
+        const double dt = bench_now_ns() - t0;
+        if (dt < best) best = dt;
+    }
+    bench_print("jpda_solve_exact_worst", best, "ns");
+    bench_print("jpda_solve_exact_worst_exact_clusters", rep.n_exact, "clusters");
+    bench_print("jpda_solve_exact_worst_approx_clusters", rep.n_approx, "clusters");
+}
