@@ -113,16 +113,17 @@
 #error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=9"
 #endif
 #ifndef TRK_JPDA_MAX_WORK
-#define TRK_JPDA_MAX_WORK (1L << 20) /* about 2 ms of a host core */
+#define TRK_JPDA_MAX_WORK (1L << 22) /* about 5 ms of a host core; a firmware with a tight
+                                        scan budget lowers it (and TRK_JPDA_SCAN_WORK) */
 #endif
 /* ... and all exact programmes of one call (one scan) together at most
  * TRK_JPDA_SCAN_WORK: the clusters beyond take belief propagation, so a
  * scan's exact work is bounded however many large clusters it has. */
 #ifndef TRK_JPDA_SCAN_WORK
-#define TRK_JPDA_SCAN_WORK (2L << 20)
+#define TRK_JPDA_SCAN_WORK (1L << 22)
 #endif
 #if TRK_JPDA_SCAN_WORK < TRK_JPDA_MAX_WORK
-#error "TRK_JPDA_SCAN_WORK must be at least TRK_JPDA_MAX_WORK (jpda.h); set -DTRK_JPDA_SCAN_WORK=2097152"
+#error "TRK_JPDA_SCAN_WORK must be at least TRK_JPDA_MAX_WORK (jpda.h); set -DTRK_JPDA_SCAN_WORK=4194304"
 #endif
 /* Gated track-detection pairs one scan may hold (the tracker's joint
  * association, and trk_jpda_marginals' sparse copy): at least
