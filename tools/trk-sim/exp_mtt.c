@@ -424,74 +424,65 @@ static void put_ci(const struct mtt_row *r, int m, int w, int prec)
     printf(" %*s", w, b);
 }
 
-static void put_v(const struct mtt_row *r, int m, int w, int prec)
+/* One column of the tables on stdout: a metric's mean (times scale), or
+ * with ci its mean and interval. */
+struct column {
+    const char *head;
+    int m, width, prec, ci;
+    double scale;
+};
+
+static void print_table(const struct mtt_row *rows, int n, const struct column *col, int n_col)
 {
-    if (isnan(r->mean[m])) printf(" %*s", w, "-");
-    else printf(" %*.*f", w, prec, r->mean[m]);
+    printf("%5s %-7s %-5s %7s", "slots", "family", "cfg", "clutter");
+    for (int c = 0; c < n_col; c++) printf(" %*s", col[c].width, col[c].head);
+    printf("\n");
+    for (int i = 0; i < n; i++) {
+        const struct mtt_row *r = &rows[i];
+        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
+        for (int c = 0; c < n_col; c++) {
+            if (col[c].ci) put_ci(r, col[c].m, col[c].width, col[c].prec);
+            else if (isnan(r->mean[col[c].m])) printf(" %*s", col[c].width, "-");
+            else printf(" %*.*f", col[c].width, col[c].prec, r->mean[col[c].m] * col[c].scale);
+        }
+        printf("\n");
+    }
 }
 
 static void print_tables(const struct mtt_row *rows, int n)
 {
+    static const struct column accuracy[] = {
+        {"GOSPA m", M_GOSPA, 13, 1, 1, 1},     {"loc", M_LOC, 8, 0, 0, 1},
+        {"missed", M_MISSED, 8, 0, 0, 1},      {"false", M_FALSE, 8, 0, 0, 1},
+        {"to-confirm", M_STC, 12, 1, 1, 1},    {"never", M_NEVER, 5, 1, 0, 1},
+        {"coverage", M_COV, 12, 3, 1, 1},      {"turn", M_TURN, 6, 2, 0, 1},
+        {"pair2", M_PAR, 6, 2, 0, 1},          {"cross2", M_CROSS, 6, 2, 0, 1},
+        {"RMSE m", M_RMSE, 7, 2, 0, 1},
+    };
+    static const struct column management[] = {
+        {"falseT/1000sc", M_FALSE_TRK, 13, 1, 1, 1}, {"falseTS%", M_FALSE_TS, 9, 1, 0, 1},
+        {"dupTS%", M_DUP_TS, 8, 1, 0, 1},            {"frag", M_FRAG, 6, 1, 0, 1},
+        {"idsw", M_IDSW, 6, 1, 0, 1},                {"cpu us/scan", M_CPU, 10, 0, 1, 1},
+        {"live", M_LIVE, 7, 1, 0, 1},                {"full%", M_FULL, 6, 1, 0, 100},
+        {"conf", M_CONF, 6, 1, 0, 1},                {"refused", M_REP_n_init_refused_full, 9, 0, 0, 1},
+        {"replaced", M_REP_n_replaced, 8, 0, 0, 1},  {"merged", M_REP_n_merged, 7, 0, 0, 1},
+    };
+    static const struct column pairs[] = {
+        {"X both", M_CROSS, 7, 2, 0, 1},        {"X idsw", M_CROSS_IDSW, 7, 2, 0, 1},
+        {"X dup%", M_CROSS_DUP, 7, 1, 0, 1},    {"X coal%", M_CROSS_COAL, 7, 1, 0, 1},
+        {"par both", M_PAR, 8, 2, 0, 1},        {"par idsw", M_PAR_IDSW, 8, 2, 0, 1},
+        {"par dup%", M_PAR_DUP, 8, 1, 0, 1},    {"par coal%", M_PAR_COAL, 8, 1, 0, 1},
+    };
+#define N_COLS(a) (int)(sizeof a / sizeof a[0])
     printf("-- accuracy (mean +- half the 95%% interval over seeds; GOSPA parts in m^2 per scan)\n");
-    printf("%5s %-7s %-5s %7s %13s %8s %8s %8s %12s %5s %12s %6s %6s %6s %7s\n", "slots", "family", "cfg",
-           "clutter", "GOSPA m", "loc", "missed", "false", "to-confirm", "never", "coverage", "turn", "pair2",
-           "cross2", "RMSE m");
-    for (int i = 0; i < n; i++) {
-        const struct mtt_row *r = &rows[i];
-        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
-        put_ci(r, M_GOSPA, 13, 1);
-        put_v(r, M_LOC, 8, 0);
-        put_v(r, M_MISSED, 8, 0);
-        put_v(r, M_FALSE, 8, 0);
-        put_ci(r, M_STC, 12, 1);
-        put_v(r, M_NEVER, 5, 1);
-        put_ci(r, M_COV, 12, 3);
-        put_v(r, M_TURN, 6, 2);
-        put_v(r, M_PAR, 6, 2);
-        put_v(r, M_CROSS, 6, 2);
-        put_v(r, M_RMSE, 7, 2);
-        printf("\n");
-    }
+    print_table(rows, n, accuracy, N_COLS(accuracy));
     printf("-- track management and cost (per run of %ld scans unless noted)\n", n ? rows[0].scans : 0L);
-    printf("%5s %-7s %-5s %7s %13s %9s %8s %6s %6s %10s %7s %6s %6s %9s %8s %7s\n", "slots", "family", "cfg",
-           "clutter", "falseT/1000sc", "falseTS%", "dupTS%", "frag", "idsw", "cpu us/scan", "live", "full%", "conf",
-           "refused", "replaced", "merged");
-    for (int i = 0; i < n; i++) {
-        const struct mtt_row *r = &rows[i];
-        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
-        put_ci(r, M_FALSE_TRK, 13, 1);
-        put_v(r, M_FALSE_TS, 9, 1);
-        put_v(r, M_DUP_TS, 8, 1);
-        put_v(r, M_FRAG, 6, 1);
-        put_v(r, M_IDSW, 6, 1);
-        put_ci(r, M_CPU, 10, 0);
-        put_v(r, M_LIVE, 7, 1);
-        const double full = r->mean[M_FULL] * 100;
-        printf(" %6.1f", full);
-        put_v(r, M_CONF, 6, 1);
-        put_v(r, M_REP_n_init_refused_full, 9, 0);
-        put_v(r, M_REP_n_replaced, 8, 0);
-        put_v(r, M_REP_n_merged, 7, 0);
-        printf("\n");
-    }
+    print_table(rows, n, management, N_COLS(management));
     printf("-- the crossing (X) and the parallel pair: both held (fraction of scans), identity switches per run,\n"
            "   duplicate target-scans and coalesced scans per 100 (X: from %d scans before to %d after)\n",
            CROSS_WINDOW, CROSS_AFTER);
-    printf("%5s %-7s %-5s %7s %7s %7s %7s %7s %8s %8s %8s %8s\n", "slots", "family", "cfg", "clutter", "X both",
-           "X idsw", "X dup%", "X coal%", "par both", "par idsw", "par dup%", "par coal%");
-    for (int i = 0; i < n; i++) {
-        const struct mtt_row *r = &rows[i];
-        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
-        put_v(r, M_CROSS, 7, 2);
-        put_v(r, M_CROSS_IDSW, 7, 2);
-        put_v(r, M_CROSS_DUP, 7, 1);
-        put_v(r, M_CROSS_COAL, 7, 1);
-        put_v(r, M_PAR, 8, 2);
-        put_v(r, M_PAR_IDSW, 8, 2);
-        put_v(r, M_PAR_DUP, 8, 1);
-        put_v(r, M_PAR_COAL, 8, 1);
-        printf("\n");
-    }
+    print_table(rows, n, pairs, N_COLS(pairs));
+#undef N_COLS
 }
 
 /* Plots against clutter count, one line (with its interval) per (capacity,
