@@ -379,6 +379,8 @@ static trk_real exact_tracks_sum(const struct cluster *c, size_t skip_b, size_t 
     trk_real *g = c->w->u.dp;
     trk_real col[TRK_JPDA_EXACT_BITS], miss[TRK_JPDA_EXACT_BITS];
     size_t next[TRK_JPDA_EXACT_BITS]; /* per track, its first pair not yet passed */
+    trk_real prod = 1;                /* rescaling factors not yet in *ln_scale */
+    int n_prod = 0;
     const size_t ns = (size_t)1 << c->nt;
     for (size_t s = 0; s < ns; s++) g[s] = 0;
     g[0] = 1;
@@ -399,8 +401,17 @@ static trk_real exact_tracks_sum(const struct cluster *c, size_t skip_b, size_t 
                 if (s & ((size_t)1 << o)) v += g[s ^ ((size_t)1 << o)] * col[o];
             g[s] = v;
         }
-        *ln_scale += trk_log(rescale(g, ns));
+        /* a layer only adds to the last (whose largest was 1) and each
+         * scaled weight is at most 1: its factor is in [1, nt + 1], so 16 of
+         * them multiply safely (<= 10^16) before one logarithm */
+        prod *= rescale(g, ns);
+        if (++n_prod == 16) {
+            *ln_scale += trk_log(prod);
+            prod = 1;
+            n_prod = 0;
+        }
     }
+    *ln_scale += trk_log(prod);
     for (size_t o = 0; o < c->nt; o++) miss[o] = o == skip_a ? 1 : wmiss(c, o);
     trk_real total = 0;
     for (size_t s = 0; s < ns; s++) {
@@ -440,18 +451,23 @@ static void exact_by_tracks(const struct cluster *c, trk_real *p_pair, trk_real 
     }
 }
 
-/* multiply-adds of each exact method (+1), 0 when it does not apply; at most
- * 256^2 * 65 * 2^16 * 64 < 2^63 */
+/* The work of each exact method (+1), 0 when it does not apply: its
+ * multiply-adds plus the per-layer costs (building a row or column, the
+ * rescaling), which dominate when the subset side is small (a 2-track
+ * cluster over 256 detections costs 22 operations per detection step, not
+ * the DP's 8). At most 256^2 * 65 * 2^16 * 80 < 2^63. */
 static uint64_t work_by_detections(const struct cluster *c)
 {
     if (c->nd > TRK_JPDA_EXACT_BITS) return 0;
-    return (uint64_t)c->nt * (uint64_t)(c->nt > 0 ? c->nt - 1 : 0) * ((uint64_t)1 << c->nd) * (uint64_t)c->nd + 1;
+    const uint64_t ns = (uint64_t)1 << c->nd, nt = c->nt;
+    return nt * (nt > 0 ? nt - 1 : 0) * (ns * (c->nd + 2) + c->nd) + 1;
 }
 
 static uint64_t work_by_tracks(const struct cluster *c)
 {
     if (c->nt > TRK_JPDA_EXACT_BITS) return 0;
-    return (uint64_t)c->nd * (uint64_t)(c->nt + 1) * (uint64_t)c->nd * ((uint64_t)1 << c->nt) * (uint64_t)c->nt + 1;
+    const uint64_t ns = (uint64_t)1 << c->nt, nd = c->nd;
+    return nd * (c->nt + 1) * nd * (ns * (c->nt + 1) + c->nt + 8) + 1;
 }
 
 /* 1 when solved exactly: the cheaper method, within TRK_JPDA_MAX_WORK and

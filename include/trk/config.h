@@ -103,7 +103,8 @@
 /* Joint association (jpda.h): a cluster is solved exactly by a programme over
  * the subsets of its smaller side while that side has at most
  * TRK_JPDA_EXACT_BITS members (struct trk_jpda_work holds 2^bits reals) and
- * the work stays under TRK_JPDA_MAX_WORK multiply-adds; beyond, loopy belief
+ * the work stays under TRK_JPDA_MAX_WORK operations (about a nanosecond each
+ * on a host core); beyond, loopy belief
  * propagation runs at most TRK_JPDA_LBP_MAX_ITER iterations (each costing a
  * few operations per gated pair). */
 #ifndef TRK_JPDA_EXACT_BITS

@@ -19,8 +19,9 @@
  * at a time (the sum over joint events factorises that way; the idea of
  * Maskell et al.'s efficient hypothesis management, without recursion).
  * Over detection subsets, track t's marginals come from the programme over
- * the other tracks: n_t (n_t - 1) 2^n_d n_d multiply-adds; over track
- * subsets, one programme per gated pair: n_d^2 (n_t + 1) 2^n_t n_t. The
+ * the other tracks: about n_t (n_t - 1) 2^n_d (n_d + 2) operations; over
+ * track subsets, one programme per gated pair: about n_d^2 (n_t + 1)
+ * (2^n_t (n_t + 1) + n_t + 8) (the per-layer costs counted). The
  * cheaper applicable one runs while it needs at most TRK_JPDA_MAX_WORK and
  * the call's exact programmes together at most TRK_JPDA_SCAN_WORK;
  * memory is 2^TRK_JPDA_EXACT_BITS reals of workspace.

@@ -111,7 +111,7 @@ TRK_BENCH(joint_chain_64x256) { joint_bench("joint_chain_64x256", 5, 1.25, 0); }
 TRK_BENCH(joint_dense_64x256) { joint_bench("joint_dense_64x256", 0.05, 3.2 / N_DETS, 0.3); }
 
 /* The exact solver's worst scan: 2 clusters of 25 tracks each gating all 9
- * detections of its cluster (450 pairs; 2.76 M multiply-adds each by the
+ * detections of its cluster (450 pairs; 3.4 M operations each by the
  * subsets of detections), more than TRK_JPDA_SCAN_WORK together: the
  * budget lets the first be solved exactly and sends the other to belief
  * propagation, so the scan's time stays bounded. trk_jpda_solve alone, ns
