@@ -209,7 +209,8 @@ static size_t cluster_root(uint16_t *parent, size_t t)
  * ..] and dets[det_first[c] ..] (counting sort), det_local then each
  * detection's index in its cluster. Each track's scale (its largest ln w)
  * makes every scaled weight w_tj exp(-scale) at most 1: the pairs' w become
- * these. Returns the number of clusters. */
+ * these, the solver's miss[t] the scaled w_t0 (one exponential each, not
+ * one per use). Returns the number of clusters. */
 static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solver *w)
 {
     const size_t nt = s->n_tracks, nd = s->n_dets;
@@ -229,7 +230,7 @@ static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solv
             if (a < b) parent[b] = (uint16_t)a;
             else if (b < a) parent[a] = (uint16_t)b;
         }
-        w->scale[t] = m;
+        w->miss[t] = trk_exp(s->log_w_miss[t] - m);
         for (size_t k = s->first[t]; k < s->first[t + 1]; k++) s->w[k] = trk_exp(s->w[k] - m);
     }
     /* number the clusters by their first track; parent[t] becomes t's cluster */
@@ -267,7 +268,7 @@ static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solv
 static trk_real wmiss(const struct cluster *c, size_t a)
 {
     const size_t t = c->tracks[a];
-    return trk_exp(c->s->log_w_miss[t] - c->w->scale[t]);
+    return c->w->miss[t];
 }
 
 /* the scaled weight of pair k (form_clusters made them linear in place) */

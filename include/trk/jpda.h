@@ -76,7 +76,7 @@ struct trk_jpda_solver {
             trk_real rest[TRK_MAX_DETECTIONS];         /* the sum of the others */
         } lbp;
     } u;
-    trk_real scale[TRK_MAX_TRACKS];               /* per track: max ln w */
+    trk_real miss[TRK_MAX_TRACKS];                /* per track: w_t0 scaled by its largest weight */
     uint16_t parent[TRK_MAX_TRACKS];              /* union-find over tracks, then each track's cluster */
     uint16_t tr_first[TRK_MAX_TRACKS + 1];        /* cluster c's tracks: tracks[tr_first[c] ..] */
     uint16_t det_first[TRK_MAX_TRACKS + 1];       /* and its detections: dets[det_first[c] ..] */
