@@ -346,6 +346,9 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
         const trk_real lambda = pda[s].params.clutter_density, beta = p->init.birth_density_per_m2;
         t->init_log_odds[s].first = lambda > 0 ? trk_log(beta) - trk_log(lambda) : (trk_real)INFINITY;
         t->init_log_odds[s].second = lambda > 0 ? trk_log(pda[s].params.pd) - trk_log(lambda) : (trk_real)INFINITY;
+#if TRK_WITH_JOINT
+        t->log_clutter_density[s] = lambda > 0 ? trk_log(lambda) : -(trk_real)INFINITY; /* joint needs > 0 */
+#endif
     }
     t->scan_no = 0;
     t->n_cand = 0;

@@ -43,13 +43,12 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
     const size_t k = t->ws.n_joint, off = t->ws.pair_first[k];
     struct pred pr;
     if (predict(t, tr, scan, &pr) != TRK_OK) return -1;
-    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
-                                      pr.x, pr.p, pr.pht, &pr.inn};
+    const struct trk_i_pda_pred *pp = &pr.pp;
     struct trk_i_pda_set set;
-    if (gate(t, tr, scan, &pp, off, &set)) return -1;
+    if (gate(t, tr, scan, pp, off, &set)) return -1;
     const trk_real psi = joint_psi(t, tr);
     if (psi > 0) {
-        const trk_real base = trk_log(psi) - trk_log(pda->params.clutter_density);
+        const trk_real base = trk_log(psi) - t->log_clutter_density[scan->sensor_id];
         for (size_t i = 0; i < set.n; i++) set.w[i] += base;
         t->ws.miss[k] = trk_log1p(-pda->params.pd * pda->params.gate_prob * psi);
     } else { /* a track that cannot exist takes nothing */
@@ -125,25 +124,21 @@ static int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
     struct pred pr;
     if (predict(t, tr, scan, &pr) != TRK_OK) return -1; /* cannot fail: it did in step 1 */
-    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
-                                      pr.x, pr.p, pr.pht, &pr.inn};
+    const struct trk_i_pda_pred *pp = &pr.pp;
     struct trk_i_pda_set set;
     joint_set(t, scan, k, &set);
     struct trk_i_pda_out out;
-    trk_i_pda_clutter(pda, &pp, &set, &out);
+    trk_i_pda_clutter(pda, pp, &set, &out);
     const trk_real psi = joint_psi(t, tr);
     trk_real psi_post = 0;
     if (psi > 0 && trk_i_jpda_condition(psi, pda->params.pd * pda->params.gate_prob, set.n, set.w,
                                         t->ws.miss[k], &out.beta0, &psi_post) != TRK_OK)
         return -1;
-    if (set.n > 0 ? trk_i_pda_run_beta(&pp, &set, out.beta0) != TRK_OK : trk_i_spd(NX, pr.p) != TRK_OK) return -1;
+    if (set.n > 0 ? trk_i_pda_run_beta(pp, &set, out.beta0) != TRK_OK : trk_i_spd(NX, pr.p) != TRK_OK) return -1;
     struct trk_visibility vis = tr->vis;
     if (t->params.track_visibility && trk_visibility_update_posterior(&t->vis_model, &vis, psi_post) != TRK_OK)
         return -1;
-    /* accepted: from here on the track changes */
-    tr->vis = vis;
-    tr->beta0_last = out.beta0;
-    commit(t, tr, scan, &set, t->ws.cand + t->ws.pair_first[k], pr.x, pr.p);
+    commit(t, tr, scan, &set, t->ws.cand + t->ws.pair_first[k], &pr, &vis, out.beta0);
     build_look(t, tr, scan, &pr.inn, &out, look);
     return 0;
 }

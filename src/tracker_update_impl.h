@@ -16,10 +16,12 @@
 /* The CV model's H picks x and y. */
 static const int cv2_sel[NZ] = {X, Y};
 
-/* One track's prediction for this scan. */
+/* One track's prediction for this scan, and the same as the PDA takes it
+ * (pp points into this struct: it is filled in place and never copied). */
 struct pred {
     trk_real x[NX], p[NX * NX], pht[NX * NZ];
     struct trk_innovation inn;
+    struct trk_i_pda_pred pp;
 };
 
 static trk_status predict(const struct trk_tracker *t, const struct trk_track *tr,
@@ -30,7 +32,8 @@ static trk_status update_visibility(const struct trk_tracker *t, const struct tr
                                     const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
                                     struct trk_visibility *vis);
 static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
-                   const struct trk_i_pda_set *set, const uint16_t *cand, const trk_real *x, const trk_real *p);
+                   const struct trk_i_pda_set *set, const uint16_t *cand, const struct pred *pr,
+                   const struct trk_visibility *vis, trk_real beta0);
 static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                        const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look);
 
@@ -43,21 +46,17 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
     struct pred pr;
     if (predict(t, tr, scan, &pr) != TRK_OK) return -1;
-    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
-                                      pr.x, pr.p, pr.pht, &pr.inn};
+    const struct trk_i_pda_pred *pp = &pr.pp;
     struct trk_i_pda_set set;
-    (void)gate(t, tr, scan, &pp, 0, &set); /* one track's set fits: TRK_I_PAIRS >= TRK_MAX_DETECTIONS */
+    (void)gate(t, tr, scan, pp, 0, &set); /* one track's set fits: TRK_I_PAIRS >= TRK_MAX_DETECTIONS */
     struct trk_i_pda_out out;
     struct trk_visibility vis = tr->vis;
-    if (trk_i_pda_run(pda, &pp, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
+    if (trk_i_pda_run(pda, pp, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
     /* the PDA checked a posterior it formed; with nothing gated it is the
      * prediction: check that one here (one factorisation per track) */
     if (set.m_gated == 0 && trk_i_spd(NX, pr.p) != TRK_OK) return -1;
     if (t->params.track_visibility && update_visibility(t, pda, &set, &out, &vis) != TRK_OK) return -1;
-    /* accepted: from here on the track changes */
-    tr->vis = vis;
-    tr->beta0_last = out.beta0;
-    commit(t, tr, scan, &set, t->ws.cand, pr.x, pr.p);
+    commit(t, tr, scan, &set, t->ws.cand, &pr, &vis, out.beta0);
     build_look(t, tr, scan, &pr.inn, &out, look);
     return 0;
 }
@@ -75,6 +74,9 @@ static trk_status predict(const struct trk_tracker *t, const struct trk_track *t
     trk_i_cv2_predict(dt, t->params.process_noise_q, pr->x, pr->p);
     const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
     if (st != TRK_OK) return st;
+    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
+                                      pr->x, pr->p, pr->pht, &pr->inn};
+    pr->pp = pp;
     return trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
                                 &pr->inn);
 }
@@ -191,15 +193,20 @@ static trk_status update_visibility(const struct trk_tracker *t, const struct tr
     return trk_visibility_update_log(&t->vis_model, vis, pda->params.pd, pda->params.gate_prob, log_sum);
 }
 
-/* The posterior into the track; its gated detections start no track. */
+/* The update is accepted: from here on the track changes. The posterior
+ * (pr->x, pr->p), its visibility and beta0 into the track; its gated
+ * detections (cand) start no track. */
 static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
-                   const struct trk_i_pda_set *set, const uint16_t *cand, const trk_real *x, const trk_real *p)
+                   const struct trk_i_pda_set *set, const uint16_t *cand, const struct pred *pr,
+                   const struct trk_visibility *vis, trk_real beta0)
 {
     const uint8_t mark = tr->status == TRK_TRACK_CONFIRMED ? USED_CONFIRMED : USED_NO_START;
     for (size_t i = 0; i < set->n; i++)
         if (t->ws.used[cand[i]] < mark) t->ws.used[cand[i]] = mark;
-    for (int i = 0; i < NX; i++) tr->x[i] = x[i];
-    for (int i = 0; i < NX * NX; i++) tr->p[i] = p[i];
+    for (int i = 0; i < NX; i++) tr->x[i] = pr->x[i];
+    for (int i = 0; i < NX * NX; i++) tr->p[i] = pr->p[i];
+    tr->vis = *vis;
+    tr->beta0_last = beta0;
     tr->time_us = scan->time_us;
     tr->n_gated_last = (uint16_t)set->n;
 }

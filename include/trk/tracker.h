@@ -468,6 +468,9 @@ struct trk_tracker {
         trk_real first;                         /* ln(beta / lambda), a track's first point */
         trk_real second;                        /* ln(P_D / lambda), its second point */
     } init_log_odds[TRK_MAX_SENSORS];
+#if TRK_WITH_JOINT
+    trk_real log_clutter_density[TRK_MAX_SENSORS]; /* ln lambda of the joint weights (lambda > 0) */
+#endif
     uint32_t scan_no;                           /* scans processed (initiation ages) */
     size_t n_cand;                              /* initiation candidates, sorted by x */
     struct trk_candidate cand[TRK_MAX_CANDIDATES];
