@@ -102,12 +102,21 @@ trk_status trk_jpda_marginals(const struct trk_jpda_scan *scan, struct trk_jpda_
     return TRK_OK;
 }
 
+/* The scalars of the existence update: TRK_E_NAN non-finite, TRK_E_RANGE psi
+ * outside (0, 1], pd_pg outside (0, 1], or psi pd_pg = 1 with psi < 1. */
+static trk_status check_condition(trk_real psi, trk_real pd_pg, trk_real p_miss)
+{
+    if (!isfinite(psi) || !isfinite(pd_pg) || !isfinite(p_miss)) return TRK_E_NAN;
+    if (!(psi > 0 && psi <= 1) || !(pd_pg > 0 && pd_pg <= 1)) return TRK_E_RANGE;
+    if (!(1 - pd_pg * psi > 0) && psi < 1) return TRK_E_RANGE;
+    return TRK_OK;
+}
+
 trk_status trk_jpda_existence(trk_real psi, trk_real pd_pg, const trk_real *p_assoc, size_t n_dets, trk_real p_miss,
                               trk_real *psi_post, trk_real *beta)
 {
     if (!psi_post || !beta || (n_dets > 0 && !p_assoc)) return TRK_E_ARG;
-    trk_real beta0, post;
-    const trk_status st = trk_i_jpda_condition(psi, pd_pg, 0, NULL, p_miss, &beta0, &post); /* the checks */
+    const trk_status st = check_condition(psi, pd_pg, p_miss);
     if (st != TRK_OK) return st;
     for (size_t j = 0; j < n_dets; j++)
         if (!isfinite(p_assoc[j])) return TRK_E_NAN;
@@ -118,10 +127,9 @@ trk_status trk_jpda_existence(trk_real psi, trk_real pd_pg, const trk_real *p_as
 trk_status trk_i_jpda_condition(trk_real psi, trk_real pd_pg, size_t n, trk_real *p, trk_real p_miss,
                                 trk_real *beta0, trk_real *psi_post)
 {
-    if (!isfinite(psi) || !isfinite(pd_pg) || !isfinite(p_miss)) return TRK_E_NAN;
-    if (!(psi > 0 && psi <= 1) || !(pd_pg > 0 && pd_pg <= 1)) return TRK_E_RANGE;
+    const trk_status st = check_condition(psi, pd_pg, p_miss);
+    if (st != TRK_OK) return st;
     const trk_real den = 1 - pd_pg * psi;
-    if (!(den > 0) && psi < 1) return TRK_E_RANGE;
     trk_real assoc = 0;
     for (size_t j = 0; j < n; j++) {
         if (!isfinite(p[j])) return TRK_E_NAN;
