@@ -38,6 +38,9 @@ static int start_single(struct trk_tracker *t, struct slots *sl, const struct tr
                         const trk_real *r_j, struct trk_scan_report *rep);
 static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
                              struct trk_scan_report *rep);
+#if TRK_WITH_IMM
+static void imm_start(const struct trk_tracker *t, struct trk_track *tr); /* tracker_imm_impl.h */
+#endif
 static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
                        struct trk_scan_report *rep);
 
@@ -181,6 +184,9 @@ static void new_track(struct trk_tracker *t, struct trk_track *tr, const struct 
         trk_visibility_reset_to(&t->vis_model, &tr->vis, psi0);
     }
     tr->existence0 = tr->vis.pv;
+#if TRK_WITH_IMM
+    imm_start(t, tr);
+#endif
     trk_i_confirm_start(t, tr);
     rep->n_started++;
     if (t->params.confirm.method == TRK_CONFIRM_MN) {
@@ -372,8 +378,10 @@ static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n)
         if (x[idx[i]] < lo) lo = x[idx[i]];
         if (x[idx[i]] > hi) hi = x[idx[i]];
     }
-    const trk_real scale = (trk_real)(n - 1) / (hi - lo); /* inf when all equal: skipped */
-    if (hi > lo && isfinite(scale)) {
+    /* skipped when all are equal, or the span overflows (hi - lo = inf
+     * would give scale 0 and bucket inf * 0 = NaN: found by fuzz_lcm_copy) */
+    const trk_real span = hi - lo, scale = (trk_real)(n - 1) / span;
+    if (span > 0 && span <= TRK_REAL_MAX && isfinite(scale)) {
         uint16_t *count = t->ws.u.sort.count, *tmp = t->ws.u.sort.tmp;
         for (size_t b = 0; b <= n; b++) count[b] = 0;
         for (size_t i = 0; i < n; i++) count[(size_t)((x[idx[i]] - lo) * scale) + 1]++; /* bucket <= n - 1 */

@@ -219,6 +219,28 @@ static void test_bad_input(void **state)
     check_invariants(&tk);
 }
 
+/* Finite positions whose span overflows the real type: initiation's sort
+ * by x must not form inf * 0 (UBSan trapped on the NaN bucket index; found
+ * by fuzz_lcm_copy). Every detection is kept as a candidate, in x order. */
+static void test_extreme_positions(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p); /* two-point initiation: candidates sorted by x */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d[3];
+    memset(d, 0, sizeof d);
+    d[0].x_m = TRK_REAL_MAX * TRK_REAL_C(0.9);
+    d[1].x_m = -TRK_REAL_MAX * TRK_REAL_C(0.9);
+    d[2].x_m = 10;
+    struct trk_scan_report rep;
+    const struct trk_scan scan = {SEC(1), 0, 3, d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    assert_int_equal(rep.n_candidates, 3);
+    assert_true(tk.cand[0].x_m < tk.cand[1].x_m && tk.cand[1].x_m < tk.cand[2].x_m);
+    check_invariants(&tk);
+}
+
 /* Bad parameters are refused at init, nothing half-initialised. */
 static void test_bad_params(void **state)
 {
@@ -902,6 +924,7 @@ int main(void)
         cmocka_unit_test(test_follow_target),
         cmocka_unit_test(test_termination_and_slot_reuse),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_extreme_positions),
         cmocka_unit_test(test_bad_params),
         cmocka_unit_test(test_check_params),
         cmocka_unit_test(test_full_table),
