@@ -316,7 +316,7 @@ test-gcc-float:
 	+@$(MAKE) --no-print-directory BUILD=build/test-gcc-float CC=gcc $(SAN_CHECK) $(SAN_SIZE_OPT) REAL=float check-run
 test-small:
 	+@$(MAKE) --no-print-directory BUILD=build/test-small CC=gcc OPT=-O1 DEBUG=-g1 VEC_SLOW=1 \
-	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2' check-run
+	  CONFIG_DEFS='-DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2 -DTRK_WITH_IMM=1' check-run
 test-default:
 	+@$(MAKE) --no-print-directory BUILD=build test-extra
 
@@ -327,11 +327,18 @@ check-bad-config:
 	  echo "check-bad-config: TRK_MAX_MEAS=4 compiled but must fail"; exit 1; fi
 	@echo "check-bad-config: an impossible configuration fails to compile, as it must"
 
+# (the IMM build: issue 16's per-track cost of three models against CV, and
+# the default build's scans against the IMM build's CV scans: IMM compiled in
+# but off)
+BENCH_IMM_DEFS := -DTRK_WITH_IMM=1 -DTRK_MAX_MODELS=3
 bench:
 	$(MAKE) --no-print-directory BUILD=build OPT=-O2 tools
 	$(MAKE) --no-print-directory BUILD=build/float OPT=-O2 REAL=float tools
+	$(MAKE) --no-print-directory BUILD=build/imm-float OPT=-O2 REAL=float CONFIG_DEFS='$(BENCH_IMM_DEFS)' \
+	  build/imm-float/bin/trk-bench
 	@echo "== double"; build/bin/trk-bench
 	@echo "== float";  build/float/bin/trk-bench
+	@echo "== float, TRK_WITH_IMM=1 (3 models)"; build/imm-float/bin/trk-bench scan_64x256 sizeof_tracker
 
 demo: all
 	$(BUILD)/bin/example-firmware_loop

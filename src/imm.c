@@ -257,9 +257,16 @@ static void normalise_log(int n, const trk_real *log_w, trk_real *p)
     for (int j = 0; j < n; j++) p[j] /= sum;
 }
 
-/* P += w d d' (a positive semi-definite spread term) */
+/* P += w d d' (a positive semi-definite spread term), each product once
+ * for both triangles: w d_a d_b and w d_b d_a round differently, and a
+ * symmetric P must stay exactly symmetric (found by test_tracker_random's
+ * IMM tracks) */
 static void spread_add(trk_real w, const trk_real *d, trk_real *p)
 {
     for (int a = 0; a < NX; a++)
-        for (int b = 0; b < NX; b++) p[a * NX + b] += w * d[a] * d[b];
+        for (int b = a; b < NX; b++) {
+            const trk_real v = w * d[a] * d[b];
+            p[a * NX + b] += v;
+            if (b != a) p[b * NX + a] += v;
+        }
 }

@@ -48,6 +48,7 @@ size_t trk_max_meas(void) { return TRK_MAX_MEAS; }
 size_t trk_clutter_kmax(void) { return TRK_CLUTTER_KMAX; }
 size_t trk_with_clutter_tests(void) { return TRK_WITH_CLUTTER_TESTS; }
 size_t trk_with_joint(void) { return TRK_WITH_JOINT; }
+size_t trk_with_imm(void) { return TRK_WITH_IMM; }
 size_t trk_max_models(void) { return TRK_MAX_MODELS; }
 size_t trk_jpda_exact_bits(void) { return TRK_JPDA_EXACT_BITS; }
 size_t trk_max_gated_pairs(void) { return TRK_MAX_GATED_PAIRS; }

@@ -42,10 +42,9 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
     const size_t k = t->ws.n_joint, off = t->ws.pair_first[k];
     struct pred pr;
-    if (predict(t, tr, scan, &pr) != TRK_OK) return -1;
-    const struct trk_i_pda_pred *pp = &pr.pp;
     struct trk_i_pda_set set;
-    if (gate(t, tr, scan, pp, off, &set)) return -1;
+    if (track_predict(t, tr, scan, &pr) != TRK_OK) return -1;
+    if (track_gate(t, tr, scan, &pr, off, &set) != 0) return -1;
     const trk_real psi = joint_psi(t, tr);
     if (psi > 0) {
         const trk_real base = trk_log(psi) - t->log_clutter_density[scan->sensor_id];
@@ -116,6 +115,20 @@ static void joint_set(struct trk_tracker *t, const struct trk_scan *scan, size_t
     }
 }
 
+/* The posterior for given weights (set->w = beta_i, beta0: the joint
+ * association's), over pr->x, pr->p, checked. */
+static trk_status track_update_beta(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
+                                    const struct trk_i_pda_set *set, trk_real beta0)
+{
+#if TRK_WITH_IMM
+    if (imm_on(t)) return imm_update(t, scan, set, beta0, pr);
+#else
+    (void)t;
+    (void)scan;
+#endif
+    return set->n > 0 ? trk_i_pda_run_beta(&pr->pp, set, beta0) : trk_i_spd(NX, pr->p);
+}
+
 /* Step 3 for joint track k (slot tr): as track_update, with the joint
  * weights. 0, or -1 on a numerical failure (tr untouched). */
 static int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t k,
@@ -123,18 +136,20 @@ static int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const
 {
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
     struct pred pr;
-    if (predict(t, tr, scan, &pr) != TRK_OK) return -1; /* cannot fail: it did in step 1 */
-    const struct trk_i_pda_pred *pp = &pr.pp;
+    if (track_predict(t, tr, scan, &pr) != TRK_OK) return -1; /* cannot fail: it did in step 1 */
     struct trk_i_pda_set set;
     joint_set(t, scan, k, &set);
+#if TRK_WITH_IMM
+    if (imm_on(t) && imm_weights(t, scan, &set, t->ws.cand + t->ws.pair_first[k], NULL) != TRK_OK) return -1;
+#endif
     struct trk_i_pda_out out;
-    trk_i_pda_clutter(pda, pp, &set, &out);
+    trk_i_pda_clutter(pda, &pr.pp, &set, &out);
     const trk_real psi = joint_psi(t, tr);
     trk_real psi_post = 0;
     if (psi > 0 && trk_i_jpda_condition(psi, pda->params.pd * pda->params.gate_prob, set.n, set.w,
                                         t->ws.miss[k], &out.beta0, &psi_post) != TRK_OK)
         return -1;
-    if (set.n > 0 ? trk_i_pda_run_beta(pp, &set, out.beta0) != TRK_OK : trk_i_spd(NX, pr.p) != TRK_OK) return -1;
+    if (track_update_beta(t, scan, &pr, &set, out.beta0) != TRK_OK) return -1;
     struct trk_visibility vis = tr->vis;
     if (t->params.track_visibility && trk_visibility_update_posterior(&t->vis_model, &vis, psi_post) != TRK_OK)
         return -1;

@@ -254,6 +254,21 @@ static const char *tests_field(const struct trk_tracker_params *p, trk_status st
     return tm < sizeof term / sizeof *term ? term[tm] : "term.method";
 }
 
+#if TRK_WITH_IMM
+void trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, trk_real p_stay)
+{
+    struct trk_imm_params *m = &p->imm;
+    memset(m, 0, sizeof *m);
+    m->n_models = 3;
+    const trk_real omega[3] = {0, omega_rad_s, -omega_rad_s};
+    for (int i = 0; i < 3; i++) {
+        m->omega_rad_s[i] = omega[i];
+        m->q_m2_per_s3[i] = p->process_noise_q;
+        for (int j = 0; j < 3; j++) m->p_switch[3 * i + j] = i == j ? p_stay : (1 - p_stay) / 2;
+    }
+}
+#endif
+
 trk_status trk_i_tracker_check(const struct trk_tracker_params *p, const char **field,
                                const struct trk_i_tracker_built *b)
 {
@@ -264,6 +279,9 @@ trk_status trk_i_tracker_check(const struct trk_tracker_params *p, const char **
     for (unsigned s = 0; s < p->n_sensors; s++)
         if ((st = check_sensor(p, s, field, b)) != TRK_OK) return st;
     if ((st = check_association(p, field)) != TRK_OK) return st;
+#if TRK_WITH_IMM
+    if (p->imm.n_models != 0 && (st = trk_imm_check_params(&p->imm)) != TRK_OK) return refuse(field, "imm", st);
+#endif
     if (p->track_visibility && (st = trk_visibility_model_init(b->vis, &p->visibility)) != TRK_OK)
         return refuse(field, "visibility", st);
     st = trk_i_tests_init(p, b->confirm, b->term);

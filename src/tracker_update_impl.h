@@ -24,8 +24,15 @@ struct pred {
     struct trk_i_pda_pred pp;
 };
 
+static trk_status track_predict(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                                struct pred *pr);
+static int track_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                      const struct pred *pr, size_t off, struct trk_i_pda_set *set);
+static trk_status track_pda(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
+                            struct trk_i_pda_set *set, struct trk_i_pda_out *out);
 static trk_status predict(const struct trk_tracker *t, const struct trk_track *tr,
                           const struct trk_scan *scan, struct pred *pr);
+static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr);
 static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                 const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set);
 static trk_status update_visibility(const struct trk_tracker *t, const struct trk_pda *pda,
@@ -37,6 +44,19 @@ static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk
 static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                        const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look);
 
+#if TRK_WITH_IMM
+static int imm_on(const struct trk_tracker *t);
+static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                              struct pred *pr);
+static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan, size_t off,
+                    struct trk_i_pda_set *set);
+static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_set *set,
+                              const uint16_t *cand, trk_real *w);
+static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_set *set,
+                             trk_real beta0, struct pred *pr);
+static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn, trk_real beta0);
+#endif
+
 /* Predict track tr to the scan time, gate the scan's valid detections (the
  * workspace), PDA-update it and mark the detections it used; *look gets what
  * the scan told its tests. 0, or -1 on a numerical failure (tr untouched). */
@@ -45,21 +65,63 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
 {
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
     struct pred pr;
-    if (predict(t, tr, scan, &pr) != TRK_OK) return -1;
-    const struct trk_i_pda_pred *pp = &pr.pp;
     struct trk_i_pda_set set;
-    (void)gate(t, tr, scan, pp, 0, &set); /* one track's set fits: TRK_I_PAIRS >= TRK_MAX_DETECTIONS */
     struct trk_i_pda_out out;
+    if (track_predict(t, tr, scan, &pr) != TRK_OK) return -1;
+    if (track_gate(t, tr, scan, &pr, 0, &set) < 0) return -1; /* one track's set fits: TRK_I_PAIRS >= TRK_MAX_DETECTIONS */
+    if (track_pda(t, scan, &pr, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
     struct trk_visibility vis = tr->vis;
-    if (trk_i_pda_run(pda, pp, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
-    /* the PDA checked a posterior it formed; with nothing gated it is the
-     * prediction: check that one here (one factorisation per track) */
-    if (set.m_gated == 0 && trk_i_spd(NX, pr.p) != TRK_OK) return -1;
     if (t->params.track_visibility && update_visibility(t, pda, &set, &out, &vis) != TRK_OK) return -1;
     commit(t, tr, scan, &set, t->ws.cand, &pr, &vis, out.beta0);
     build_look(t, tr, scan, &pr.inn, &out, look);
     return 0;
 }
+
+/* The track's prediction: predict(), or an IMM track's imm_predict(). */
+static trk_status track_predict(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                                struct pred *pr)
+{
+#if TRK_WITH_IMM
+    if (imm_on(t)) return imm_predict(t, tr, scan, pr);
+#endif
+    return predict(t, tr, scan, pr);
+}
+
+/* Its gated set with ln e_i from pair off on: gate(), or an IMM track's
+ * union of gates and mixture weights. 1 when cut (as gate()), -1 on a
+ * numerical failure (cannot happen), else 0. */
+static int track_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                      const struct pred *pr, size_t off, struct trk_i_pda_set *set)
+{
+#if TRK_WITH_IMM
+    if (imm_on(t)) {
+        if (imm_gate(t, tr, scan, off, set)) return 1;
+        return imm_weights(t, scan, set, t->ws.cand + off, set->w) == TRK_OK ? 0 : -1;
+    }
+#endif
+    return gate(t, tr, scan, &pr->pp, off, set);
+}
+
+/* The PDA over the gated set: *out, beta_i into set->w, the posterior over
+ * pr->x, pr->p (checked). */
+static trk_status track_pda(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
+                            struct trk_i_pda_set *set, struct trk_i_pda_out *out)
+{
+    const struct trk_pda *pda = &t->pda[scan->sensor_id];
+#if TRK_WITH_IMM
+    if (imm_on(t)) {
+        trk_i_pda_clutter(pda, &pr->pp, set, out);
+        if (set->m_gated > 0)
+            out->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, out->lambda), set->n, set->w, &out->log_sum_e);
+        return imm_update(t, scan, set, out->beta0, pr);
+    }
+#endif
+    const trk_status st = trk_i_pda_run(pda, &pr->pp, set, out);
+    /* the PDA checked a posterior it formed; with nothing gated it is the
+     * prediction: check that one here (one factorisation per track) */
+    return st == TRK_OK && set->m_gated == 0 ? trk_i_spd(NX, pr->p) : st;
+}
+
 
 /* CV prediction to the scan time, checked (finite, variances > 0; its
  * positive definiteness is checked once it is known to be the posterior),
@@ -72,6 +134,13 @@ static trk_status predict(const struct trk_tracker *t, const struct trk_track *t
     for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
     for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
     trk_i_cv2_predict(dt, t->params.process_noise_q, pr->x, pr->p);
+    return pred_finish(t, scan, pr);
+}
+
+/* The prediction pr->x, pr->p checked, its view for the PDA, and its
+ * innovation. */
+static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
+{
     const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
     if (st != TRK_OK) return st;
     const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
@@ -98,6 +167,17 @@ struct gate {
  * use it either). */
 enum { USED_NONE = 0, USED_NO_START = 1, USED_CONFIRMED = 2 };
 
+static size_t gate_add(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *r_j);
+
+/* Is detection j at d2 inside the gate (d2 <= gamma)? If not, and d2 <= g,
+ * the exclusion mark: it starts no track. */
+static int gate_inside(struct trk_tracker *t, const struct gate *gt, size_t j, trk_real d2)
+{
+    if (trk_gate_inside(d2, gt->gamma)) return 1;
+    if (d2 <= gt->g && t->ws.used[j] == USED_NONE) t->ws.used[j] = USED_NO_START;
+    return 0;
+}
+
 /* Detection j passed the bounding box: the ellipse d2 <= gamma adds it to
  * the gated set with its ln e_i (and its R_j when it has its own, r_j not
  * NULL); gamma < d2 <= g only marks it, so that it starts no track. */
@@ -105,24 +185,29 @@ static void gate_ellipse(struct trk_tracker *t, struct gate *gt, size_t j, const
                          const trk_real *l_inv, trk_real log_det, const trk_real *r_j)
 {
     const trk_real d2 = trk_i_mahalanobis2(NZ, l_inv, nu);
-    if (!trk_gate_inside(d2, gt->gamma)) {
-        if (d2 <= gt->g && t->ws.used[j] == USED_NONE) t->ws.used[j] = USED_NO_START; /* the exclusion mark */
-        return;
-    }
+    if (!gate_inside(t, gt, j, d2)) return;
+    const size_t n = gate_add(t, gt, j, r_j);
+    if (n < gt->cap) gt->set->w[n] = trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]);
+}
+
+/* Detection j (its R_j when r_j is not NULL) into the gated set: its index
+ * there, or gt->cap when the set is full (gt->full is then set). */
+static size_t gate_add(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *r_j)
+{
     struct trk_i_pda_set *set = gt->set;
     if (set->n == gt->cap) {
         gt->full = 1;
-        return;
+        return gt->cap;
     }
     const size_t n = set->n++;
     gt->cand[n] = (uint16_t)j;
-    set->w[n] = trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]);
     t->ws.u.set.z[NZ * n + ZX] = t->ws.x[j];
     t->ws.u.set.z[NZ * n + ZY] = t->ws.y[j];
     if (r_j)
         for (int i = 0; i < NZ * NZ; i++) t->ws.u.set.r_own[NZ * NZ * (n - set->n_shared) + i] = r_j[i];
     else
         set->n_shared = n + 1;
+    return n;
 }
 
 /* A detection with its own covariance: R_j and S_j = H P H' + R_j; 0 when
@@ -139,6 +224,22 @@ static int own_box(const struct trk_tracker *t, const struct trk_scan *scan, con
     return trk_i_pda_factor(NZ, s, l_inv, log_det) == TRK_OK;
 }
 
+/* An empty gated set for track tr in the workspace pairs from off on, and
+ * its gate: gamma, and g = init_exclusion_d2 for a confirmed track. */
+static struct gate gate_begin(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                              size_t off, struct trk_i_pda_set *set)
+{
+    const struct trk_pda *pda = &t->pda[scan->sensor_id];
+    const trk_real excl = t->params.init_exclusion_d2;
+    struct gate gt = {pda, pda->gamma, tr->status == TRK_TRACK_CONFIRMED && excl > pda->gamma ? excl : pda->gamma,
+                      set, t->ws.cand + off, TRK_I_PAIRS - off, 0};
+    set->n = set->n_shared = set->m_gated = 0;
+    set->z = t->ws.u.set.z;
+    set->w = t->ws.w + off;
+    set->r_own = t->ws.u.set.r_own;
+    return gt;
+}
+
 /* Gate the valid detections into the track's gated set (workspace pairs
  * cand, w = ln e_i from pair off on, z and r_own from 0): the bounding box of
  * the ellipse d2 <= g (cheap: the detections with the sensor's covariance
@@ -150,20 +251,13 @@ static int own_box(const struct trk_tracker *t, const struct trk_scan *scan, con
 static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                 const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set)
 {
-    const struct trk_pda *pda = &t->pda[scan->sensor_id];
     const struct trk_innovation *inn = pp->inn;
-    const trk_real excl = t->params.init_exclusion_d2;
-    struct gate gt = {pda, pda->gamma, tr->status == TRK_TRACK_CONFIRMED && excl > pda->gamma ? excl : pda->gamma,
-                      set, t->ws.cand + off, TRK_I_PAIRS - off, 0};
+    struct gate gt = gate_begin(t, tr, scan, off, set);
     const trk_real wx = trk_sqrt(gt.g * inn->s[S(ZX, ZX)]), wy = trk_sqrt(gt.g * inn->s[S(ZY, ZY)]);
     const trk_real zx = inn->z_pred[ZX], zy = inn->z_pred[ZY];
     const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;
     const uint8_t *used = t->ws.used;
     const int tentative = tr->status == TRK_TRACK_TENTATIVE;
-    set->n = set->n_shared = 0;
-    set->z = t->ws.u.set.z;
-    set->w = t->ws.w + off;
-    set->r_own = t->ws.u.set.r_own;
     for (size_t j = 0; j < n_shared; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
         if (trk_fabs(nu[ZX]) <= wx && trk_fabs(nu[ZY]) <= wy && !(tentative && used[j] == USED_CONFIRMED))
@@ -209,6 +303,10 @@ static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk
     tr->beta0_last = beta0;
     tr->time_us = scan->time_us;
     tr->n_gated_last = (uint16_t)set->n;
+#if TRK_WITH_IMM
+    tr->maneuver_d2 = maneuver_d2(set, &pr->inn, beta0);
+    if (imm_on(t)) tr->imm = t->ws.imm.s;
+#endif
 }
 
 /* The clutter tests' inputs (Kennedy eqs 5-9, 13-15): the scan's detection
@@ -261,5 +359,9 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     if (tr->status == TRK_TRACK_TENTATIVE && trk_i_confirm_needs_nearest(&t->params) && t->ws.n_valid > 0)
         clutter_look(t, inn, t->pda[scan->sensor_id].params.clutter_density, look);
 }
+
+#if TRK_WITH_IMM
+#include "tracker_imm_impl.h"
+#endif
 
 #endif

@@ -38,6 +38,17 @@ static unsigned check_table(const struct trk_scan_report *rep)
             for (int c = 0; c < 4; c++) assert_true(a->p[r * 4 + c] == a->p[c * 4 + r]);
         TRK_ASSERT_OK(trk_mat_check_spd(4, a->p, 0));
         assert_true(a->vis.pv >= 0 && a->vis.pv <= 1);
+#if TRK_WITH_IMM
+        double mu_sum = 0;
+        for (int m = 0; m < tk.params.imm.n_models; m++) {
+            for (int k = 0; k < 4; k++) assert_true(isfinite(a->imm.x[m][k]));
+            TRK_ASSERT_OK(trk_mat_check_spd(4, a->imm.p[m], 0));
+            assert_true(a->imm.mu[m] >= 0 && a->imm.mu[m] <= 1);
+            mu_sum += a->imm.mu[m];
+        }
+        if (tk.params.imm.n_models > 0) TRK_ASSERT_NEAR(mu_sum, 1, 1e-4, 0);
+        assert_true(a->maneuver_d2 >= 0);
+#endif
     }
     assert_int_equal(live, trk_tracker_live_count(&tk));
     assert_true(rep->n_tracks_hit <= rep->n_tracks_updated);
@@ -70,21 +81,28 @@ static struct trk_detection random_detection(void)
 /* Random scans (random gaps, counts, covariances) through configurations
  * that stress the arithmetic: the defaults, q = 0 (P becomes singular
  * along the tiny own covariances), and M/N with single-point initiation
- * and a huge velocity prior. Every scan: the invariants. */
+ * and a huge velocity prior; in a build with TRK_WITH_IMM also IMM tracks of
+ * three models (turns at 3 deg/s) with the per-track PDA and, with q = 0,
+ * joint association. Every scan: the invariants (every model's too). */
 static void test_random_scans(void **state)
 {
     (void)state;
     static struct trk_detection det[TRK_MAX_DETECTIONS];
     const int n_scans = 4000;
     unsigned numerical = 0;
-    for (int cfg = 0; cfg < 3; cfg++) {
+    const int n_cfg = TRK_WITH_IMM ? 5 : 3;
+    for (int cfg = 0; cfg < n_cfg; cfg++) {
         struct trk_tracker_params p;
         if (cfg == 2) trk_tracker_mn_kn_params(&p);
         else trk_tracker_default_params(&p);
         p.sensor[0].meas_cov_m2[0] = p.sensor[0].meas_cov_m2[2] = 4;
         p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-5);
-        if (cfg == 1) p.process_noise_q = 0;
+        if (cfg == 1 || cfg == 4) p.process_noise_q = 0;
         if (cfg == 2) p.init_speed_sigma_mps = TRK_REAL_C(1e7);
+#if TRK_WITH_IMM
+        if (cfg >= 3) trk_tracker_imm_params(&p, TRK_REAL_C(0.0524), TRK_REAL_C(0.9));
+        if (cfg == 3) p.association = TRK_ASSOC_PDA;
+#endif
         TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
         rng_state = 77 + (uint64_t)cfg;
         int64_t t_us = 0;
@@ -105,7 +123,7 @@ static void test_random_scans(void **state)
             numerical += check_table(&rep);
         }
     }
-    print_message("%u tracks ended as numerical in %d random scans\n", numerical, 3 * n_scans);
+    print_message("%u tracks ended as numerical in %d random scans\n", numerical, n_cfg * n_scans);
 }
 
 /* Covariances too near singular for the arithmetic, or whose xx yy

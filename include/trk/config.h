@@ -171,6 +171,22 @@
 #error "TRK_WITH_JOINT must be 0 or 1 (joint association in the tracker); set -DTRK_WITH_JOINT=1"
 #endif
 
+/* Manoeuvring targets: IMM tracks in the track table (trk/tracker.h,
+ * trk_tracker_params.imm; trk/imm.h). 1 gives every track slot its
+ * mode-conditioned estimates (TRK_MAX_MODELS x 20 reals and the mode
+ * probabilities) and the manoeuvre statistic, and the scan workspace the
+ * models' weights; a tracker then runs IMM tracks when imm.n_models >= 1.
+ * 0 (default) leaves them out: the table's memory and the scan's code and
+ * speed are those of the CV-only tracker (struct trk_tracker_params has no
+ * imm member then: code that sets it does not compile, rather than being
+ * refused at run time). The imm module itself is always built. */
+#ifndef TRK_WITH_IMM
+#define TRK_WITH_IMM 0
+#endif
+#if TRK_WITH_IMM != 0 && TRK_WITH_IMM != 1
+#error "TRK_WITH_IMM must be 0 or 1 (IMM tracks in the tracker); set -DTRK_WITH_IMM=1"
+#endif
+
 /* The library's small kernels (the *_impl.h headers of src) are forced
  * inline so that a caller passing constant dimensions (the 2-D CV model) gets
  * fully unrolled code. TRK_SIZE_OPT = 1 leaves the inlining decision to the

@@ -64,6 +64,7 @@
 #include "trk/clutter_test.h"
 #include "trk/confirm_mn.h"
 #include "trk/confirm_sprt.h"
+#include "trk/imm.h"
 #include "trk/jpda.h"
 #include "trk/kalman.h"
 #include "trk/pda.h"
@@ -321,6 +322,15 @@ struct trk_tracker_params {
                                                          > ratio^2 trace R of the scan's
                                                          sensor; >= 0, 0 = no bound */
     enum trk_assoc_method association;                /* per-track PDA or joint (JIPDA) */
+#if TRK_WITH_IMM
+    /* Manoeuvring targets (TRK_WITH_IMM, config.h; README "Manoeuvres"):
+     * imm.n_models = 0 (default) runs every track on the CV model of
+     * process_noise_q, as a build without IMM; 1 .. TRK_MAX_MODELS makes
+     * every track an IMM track on these models (trk/imm.h: turn rates, each
+     * model's own q, the switching matrix per scan; process_noise_q is then
+     * unused). trk_tracker_imm_params() fills a CV and two-turn set. */
+    struct trk_imm_params imm;
+#endif
 };
 
 /* Tests and their inputs per scan (CONVENTIONS "Track confirmation and
@@ -345,6 +355,15 @@ void trk_tracker_default_params(struct trk_tracker_params *p);
  * single-point initiation at the visibility's pv0, no covariance bound,
  * Delta_bar 0.01 and the per-track PDA (TRK_ASSOC_PDA). */
 void trk_tracker_mn_kn_params(struct trk_tracker_params *p);
+
+#if TRK_WITH_IMM
+/* The manoeuvre models of README "Manoeuvres" into p->imm: CV, and
+ * coordinated turns at +omega_rad_s (left) and -omega_rad_s (right), each
+ * with p->process_noise_q; the model stays with probability p_stay per scan
+ * and switches to each other one with (1 - p_stay) / 2. p_stay in [0, 1],
+ * 0 < omega_rad_s <= 1 (unchecked here: trk_tracker_init checks p->imm). */
+void trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, trk_real p_stay);
+#endif
 
 /* ---------------------------------------------------------------- tracks */
 
@@ -390,6 +409,17 @@ struct trk_track {
         union trk_confirm_state confirm; /* while tentative (params.confirm.method) */
         union trk_term_state term;       /* once confirmed (params.term.method) */
     } test;
+#if TRK_WITH_IMM
+    trk_real maneuver_d2;             /* the survey's manoeuvre statistic (eqs 3.11-3.13):
+                                         d2 = nu' S^-1 nu of the last scan's innovation
+                                         given a detection, nu = sum_i beta_i nu_i /
+                                         (1 - beta0), S that of the sensor's R; chi-square
+                                         with 2 degrees of freedom while the model fits
+                                         (e.g. > 9.21: 1 %); 0 when nothing was gated */
+    struct trk_imm_state imm;         /* an IMM track (params.imm.n_models >= 1): its
+                                         models' estimates and mode probabilities imm.mu;
+                                         x and P above are their combination */
+#endif
 };
 
 /* ---------------------------------------------------------------- report */
@@ -501,6 +531,16 @@ struct trk_tracker {
                                                                   entry k are k+1 .. k+n-1 */
         int16_t amp_pos[TRK_MAX_DETECTIONS];                   /* index in amp_db, -1 none */
         size_t n_amp;
+#if TRK_WITH_IMM
+        struct {                                               /* one IMM track's update: */
+            struct trk_imm_state s;                            /* mixed, predicted, posterior */
+            trk_real c[TRK_MAX_MODELS];                        /* predicted mode probabilities */
+            trk_real pht[TRK_MAX_MODELS][TRK_CV2_NX * TRK_CV2_NZ];
+            struct trk_innovation inn[TRK_MAX_MODELS];         /* per model, the sensor's R */
+            trk_real rho[TRK_MAX_MODELS][TRK_MAX_DETECTIONS];  /* ln e_mi, then P(model m |
+                                                                  detection i), then beta_mi */
+        } imm;
+#endif
         union {                                                /* used one at a time: */
             struct {                                           /* one track's update: */
                 trk_real z[TRK_CV2_NZ * TRK_MAX_DETECTIONS];   /* its gated detections */
@@ -529,7 +569,8 @@ struct trk_tracker {
  *   "track_visibility", "visibility" (its model refused the parameters),
  *   "init.method", "init.max_speed_mps", "init.max_gap_scans",
  *   "init.birth_density_per_m2", "max_pos_sigma_ratio", "association"
- *   (unknown, or joint without parametric clutter of density > 0),
+ *   (unknown, or joint without parametric clutter of density > 0), "imm"
+ *   (TRK_WITH_IMM: n_models not 0 and trk_imm_check_params refused it),
  *   "sensor[i].pd", "sensor[i].meas_cov_m2", "sensor[i].clutter_density_per_m2",
  *   "sensor[i].use_amplitude", "sensor[i].amplitude" (no usable model, or its
  *   P_D), i the sensor index;

@@ -156,6 +156,7 @@ size_t trk_max_meas(void);
 size_t trk_clutter_kmax(void);
 size_t trk_with_clutter_tests(void); /* TRK_WITH_CLUTTER_TESTS: 0 or 1 */
 size_t trk_with_joint(void);         /* TRK_WITH_JOINT: 0 or 1 */
+size_t trk_with_imm(void);           /* TRK_WITH_IMM: 0 or 1 */
 size_t trk_max_models(void);         /* TRK_MAX_MODELS (struct trk_imm_state) */
 size_t trk_jpda_exact_bits(void);    /* TRK_JPDA_EXACT_BITS (struct trk_jpda_work) */
 size_t trk_max_gated_pairs(void);    /* TRK_MAX_GATED_PAIRS (struct trk_jpda_work, trk_tracker) */
@@ -177,6 +178,7 @@ size_t trk_enum_size(void);          /* sizeof of an enum (-fshort-enums changes
       trk_clutter_kmax() == TRK_CLUTTER_KMAX &&                               \
       trk_with_clutter_tests() == TRK_WITH_CLUTTER_TESTS &&                   \
       trk_with_joint() == TRK_WITH_JOINT &&                                   \
+      trk_with_imm() == TRK_WITH_IMM &&                                       \
       trk_max_models() == TRK_MAX_MODELS &&                                   \
       trk_jpda_exact_bits() == TRK_JPDA_EXACT_BITS &&                         \
       trk_max_gated_pairs() == TRK_MAX_GATED_PAIRS &&                         \

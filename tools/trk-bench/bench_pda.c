@@ -11,6 +11,9 @@
  *   scan_64x256_mn_kn the same scans with trk_tracker_mn_kn_params (M/N 2/3
  *                     here, single-point initiation): the path before issue 14,
  *                     for the ratio in the same run
+ *   scan_64x256_imm   (TRK_WITH_IMM builds) scan_64x256_cv, the default scans
+ *                     of this build, against scan_64x256_imm3, every track an
+ *                     IMM track of three models, same run, and their ratio
  *   candidates_full   ns per scan of the initiation stage at full scan capacity
  *                     (TRK_MAX_DETECTIONS unexplained detections) and the store's bytes
  *   sizeof_tracker    bytes of struct trk_tracker at this build's capacities */
@@ -100,7 +103,7 @@ struct scan_job {
 
 /* The scans' configurations: the defaults (joint association), the same
  * with the per-track PDA, and the M/N path. */
-enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN };
+enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM };
 
 static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
 {
@@ -115,6 +118,9 @@ static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
     p->sensor[0].pd = TRK_REAL_C(0.9);
     p->sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
     p->process_noise_q = TRK_REAL_C(0.01);
+#if TRK_WITH_IMM
+    if (cfg == SCAN_IMM) trk_tracker_imm_params(p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)); /* CV, turns at 2 deg/s */
+#endif
 }
 
 static struct scan_job *scan_job_new(void)
@@ -225,6 +231,22 @@ TRK_BENCH(scan_64x256_mn_kn)
     static const char *const names[] = {"scan_64x256_mn_kn"};
     static const enum scan_cfg cfg[] = {SCAN_MN_KN};
     scan_bench(names, cfg, 1);
+}
+
+/* Issue 16's budget: the same scans with every track an IMM track of
+ * three models (CV and turns at +-2 deg/s, joint association) against the
+ * CV tracks of the same build, alternating in the same run; the per-track
+ * update is the scan over the tracks updated per scan (initiation and the
+ * joint solve included in both). A build without TRK_WITH_IMM says so. */
+TRK_BENCH(scan_64x256_imm)
+{
+#if TRK_WITH_IMM
+    static const char *const names[] = {"scan_64x256_cv", "scan_64x256_imm3"};
+    static const enum scan_cfg cfg[] = {SCAN_DEFAULT, SCAN_IMM};
+    scan_bench(names, cfg, 2);
+#else
+    bench_print("scan_64x256_imm_skipped_no_imm", 0, "-");
+#endif
 }
 
 TRK_BENCH(sizeof_tracker) { bench_print("sizeof_tracker", (double)sizeof(struct trk_tracker), "bytes"); }

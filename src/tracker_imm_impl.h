@@ -1,0 +1,236 @@
+/* tracker_imm_impl.h (private) - IMM tracks in the scan (TRK_WITH_IMM,
+ * params.imm.n_models >= 1; trk/imm.h, CONVENTIONS "Multiple models"; README
+ * "Manoeuvres"). A track's update keeps the stages of a CV track (predict,
+ * gate, weights, update, commit, look); at each stage an IMM track does:
+ *   predict  mixing and each model's prediction (trk_imm_mix,
+ *            trk_imm_predict), each model's innovation with the sensor's R,
+ *            and their combination with the predicted mode probabilities c_m
+ *            (moment matching), which the look, the clutter tests and the
+ *            gate volume of the PDA's clutter terms use;
+ *   gate     the union of the models' gates (CONVENTIONS IMM-PDA: d2_m <=
+ *            gamma for at least one model m); the exclusion zone likewise;
+ *   weights  per model and gated detection the PDA's ln e_mi with model m's
+ *            S (no gate of its own), and the track's weight of the
+ *            detection, the mixture e_i = sum_m c_m e_mi;
+ *   update   the association weights beta_i, beta0 come from the track's
+ *            e_i: the PDA's normalisation (alone), or the joint events'
+ *            marginals (TRK_ASSOC_JOINT: the mixture is then the
+ *            track-detection likelihood of an IMM track). Given detection i
+ *            the mode is m with rho_mi = c_m e_mi / e_i, given no detection
+ *            with c_m, so model m's posterior probability is
+ *            mu_m = sum_i beta_i rho_mi + beta0 c_m and its PDA update takes
+ *            beta_mi = beta_i rho_mi / mu_m, beta_m0 = beta0 c_m / mu_m
+ *            (the Gaussian mixture over association events and modes,
+ *            collapsed per mode). Alone this is the IMM-PDA of CONVENTIONS
+ *            (mu_m ~ c_m Lambda_m, each model's own PDA weights); with
+ *            one model the PDA. Then the combination into the track's x, P.
+ * Existence (IPDA/JIPDA) takes the mixture weights as a CV track takes its
+ * own. A model with mu_m = 0 (it underflowed) keeps its prediction.
+ *
+ * Included by tracker_update_impl.h only. */
+#ifndef TRK_TRACKER_IMM_IMPL_H
+#define TRK_TRACKER_IMM_IMPL_H
+
+#include <string.h>
+
+#include "tracker_impl.h"
+
+static int imm_on(const struct trk_tracker *t) { return t->params.imm.n_models > 0; }
+
+/* A new track (x, P set): every model starts there, with equal mode
+ * probabilities (as MATLAB trackingIMM's default). */
+static void imm_start(const struct trk_tracker *t, struct trk_track *tr)
+{
+    const int n = t->params.imm.n_models;
+    tr->maneuver_d2 = 0;
+    memset(&tr->imm, 0, sizeof tr->imm);
+    for (int m = 0; m < n; m++) {
+        for (int i = 0; i < NX; i++) tr->imm.x[m][i] = tr->x[i];
+        for (int i = 0; i < NX * NX; i++) tr->imm.p[m][i] = tr->p[i];
+        tr->imm.mu[m] = 1 / (trk_real)n;
+    }
+}
+
+/* Model m's prediction as the PDA takes it (the workspace's). */
+static struct trk_i_pda_pred imm_model_pred(struct trk_tracker *t, const struct trk_scan *scan, int m)
+{
+    const struct trk_i_pda_pred pp = {NX,
+                                      NZ,
+                                      trk_cv2_h,
+                                      cv2_sel,
+                                      t->r[scan->sensor_id],
+                                      t->ws.imm.s.x[m],
+                                      t->ws.imm.s.p[m],
+                                      t->ws.imm.pht[m],
+                                      &t->ws.imm.inn[m]};
+    return pp;
+}
+
+/* Mix and predict the models of tr into the workspace (ws.imm), each
+ * model's innovation, and their combination with c_m into *pr (with its
+ * innovation, as predict()). A gap of 0 (two sensors at one time) mixes
+ * without moving. */
+static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                              struct pred *pr)
+{
+    const struct trk_imm_params *mp = &t->params.imm;
+    const trk_real dt = (trk_real)(scan->time_us - tr->time_us) * TRK_REAL_C(1e-6);
+    struct trk_imm_state *s = &t->ws.imm.s;
+    *s = tr->imm;
+    trk_status st = trk_imm_mix(mp, s, t->ws.imm.c);
+    if (st == TRK_OK && dt > 0) st = trk_imm_predict(mp, dt, s);
+    for (int m = 0; m < mp->n_models && st == TRK_OK; m++) {
+        st = trk_i_pda_check(NX, s->x[m], s->p[m]);
+        if (st == TRK_OK)
+            st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], s->x[m], s->p[m],
+                                      t->ws.imm.pht[m], &t->ws.imm.inn[m]);
+    }
+    if (st != TRK_OK) return st;
+    for (int m = 0; m < mp->n_models; m++) s->mu[m] = t->ws.imm.c[m];
+    trk_imm_combine(mp, s, pr->x, pr->p);
+    return pred_finish(t, scan, pr);
+}
+
+/* Model m's d2 of workspace detection j with its own R_j, or +inf when it
+ * is outside model m's bounding box of d2 <= g. */
+static trk_real imm_d2_own(struct trk_tracker *t, const struct trk_scan *scan, int m, size_t j, trk_real g)
+{
+    const struct trk_innovation *inn = &t->ws.imm.inn[m];
+    const trk_real nu[NZ] = {t->ws.x[j] - inn->z_pred[ZX], t->ws.y[j] - inn->z_pred[ZY]};
+    const struct trk_i_pda_pred pp = imm_model_pred(t, scan, m);
+    trk_real r_own[NZ * NZ], l_inv[NZ * NZ], log_det;
+    if (!own_box(t, scan, &pp, j, g, nu, r_own, l_inv, &log_det)) return (trk_real)INFINITY;
+    return trk_i_mahalanobis2(NZ, l_inv, nu);
+}
+
+/* gate() for an IMM track: the union of its models' gates, into the set
+ * (no weights yet: imm_weights). A detection with the sensor's covariance
+ * is tested against the models' ellipses only inside the box that bounds
+ * all their bounding boxes of d2 <= g. */
+static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan, size_t off,
+                    struct trk_i_pda_set *set)
+{
+    struct gate gt = gate_begin(t, tr, scan, off, set);
+    const int n = t->params.imm.n_models, tentative = tr->status == TRK_TRACK_TENTATIVE;
+    const struct trk_innovation *inn = t->ws.imm.inn;
+    trk_real wx[TRK_MAX_MODELS], wy[TRK_MAX_MODELS];
+    trk_real lo_x = TRK_REAL_MAX, hi_x = -TRK_REAL_MAX, lo_y = TRK_REAL_MAX, hi_y = -TRK_REAL_MAX;
+    for (int m = 0; m < n; m++) {
+        wx[m] = trk_sqrt(gt.g * inn[m].s[S(ZX, ZX)]);
+        wy[m] = trk_sqrt(gt.g * inn[m].s[S(ZY, ZY)]);
+        if (inn[m].z_pred[ZX] - wx[m] < lo_x) lo_x = inn[m].z_pred[ZX] - wx[m];
+        if (inn[m].z_pred[ZX] + wx[m] > hi_x) hi_x = inn[m].z_pred[ZX] + wx[m];
+        if (inn[m].z_pred[ZY] - wy[m] < lo_y) lo_y = inn[m].z_pred[ZY] - wy[m];
+        if (inn[m].z_pred[ZY] + wy[m] > hi_y) hi_y = inn[m].z_pred[ZY] + wy[m];
+    }
+    for (size_t j = 0; j < t->ws.n_valid; j++) {
+        const trk_real x = t->ws.x[j], y = t->ws.y[j];
+        const int own = j >= t->ws.n_shared;
+        if ((tentative && t->ws.used[j] == USED_CONFIRMED) || (!own && (x < lo_x || x > hi_x || y < lo_y || y > hi_y)))
+            continue;
+        trk_real d2 = (trk_real)INFINITY;
+        for (int m = 0; m < n; m++) {
+            const trk_real nu[NZ] = {x - inn[m].z_pred[ZX], y - inn[m].z_pred[ZY]};
+            trk_real d2_m = (trk_real)INFINITY;
+            if (own) d2_m = imm_d2_own(t, scan, m, j, gt.g);
+            else if (trk_fabs(nu[ZX]) <= wx[m] && trk_fabs(nu[ZY]) <= wy[m])
+                d2_m = trk_i_mahalanobis2(NZ, inn[m].s_chol_inv, nu);
+            if (d2_m < d2) d2 = d2_m;
+        }
+        if (!gate_inside(t, &gt, j, d2)) continue;
+        trk_real r_j[NZ * NZ];
+        if (own) trk_i_cov2_matrix(scan->detections[t->ws.src[j]].cov_m2, r_j); /* checked at load */
+        (void)gate_add(t, &gt, j, own ? r_j : NULL);
+    }
+    set->m_gated = set->n;
+    return gt.full;
+}
+
+/* The models' weights of the gated set (detections cand[i]): ln e_mi (the
+ * PDA's, with model m's S_mi) into ws.imm.rho as rho_mi = c_m e_mi / e_i,
+ * and the track's ln e_i = ln sum_m c_m e_mi into w[i] (w may be NULL). An
+ * own-covariance S_mi that is not SPD (cannot happen: the gate factored it)
+ * gives TRK_E_NOT_SPD. */
+static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_set *set,
+                              const uint16_t *cand, trk_real *w)
+{
+    const struct trk_pda *pda = &t->pda[scan->sensor_id];
+    const int n = t->params.imm.n_models;
+    for (size_t i = 0; i < set->n; i++) {
+        trk_real le[TRK_MAX_MODELS], mx = -(trk_real)INFINITY;
+        const trk_real nz_i[NZ] = {set->z[NZ * i + ZX], set->z[NZ * i + ZY]};
+        for (int m = 0; m < n; m++) {
+            const struct trk_i_pda_pred pp = imm_model_pred(t, scan, m);
+            const struct trk_innovation *inn = pp.inn;
+            const trk_real nu[NZ] = {nz_i[ZX] - inn->z_pred[ZX], nz_i[ZY] - inn->z_pred[ZY]};
+            trk_real l_own[NZ * NZ], log_det = inn->log_det_s;
+            const trk_real *l_inv = inn->s_chol_inv;
+            if (i >= set->n_shared) {
+                trk_real s_own[NZ * NZ];
+                trk_i_pda_own_s(&pp, set->r_own + NZ * NZ * (i - set->n_shared), s_own);
+                if (trk_i_pda_factor(NZ, s_own, l_own, &log_det) != TRK_OK) return TRK_E_NOT_SPD;
+                l_inv = l_own;
+            }
+            const trk_real c = t->ws.imm.c[m];
+            le[m] = c > 0 ? trk_log(c) + trk_i_pda_log_e(pda, log_det, trk_i_mahalanobis2(NZ, l_inv, nu),
+                                                         t->ws.log_lr[cand[i]])
+                          : -(trk_real)INFINITY;
+            if (le[m] > mx) mx = le[m];
+        }
+        trk_real sum = 0;
+        for (int m = 0; m < n; m++) sum += (le[m] = mx > -TRK_REAL_MAX ? trk_exp(le[m] - mx) : 0);
+        for (int m = 0; m < n; m++) t->ws.imm.rho[m][i] = sum > 0 ? le[m] / sum : 0;
+        if (w) w[i] = sum > 0 ? mx + trk_log(sum) : -(trk_real)INFINITY;
+    }
+    return TRK_OK;
+}
+
+/* The models' PDA updates with the track's association weights (set->w =
+ * beta_i, beta0; the top of this file), their posterior mode probabilities,
+ * and the combination into pr->x, pr->p, checked (TRK_E_NAN, TRK_E_NOT_SPD;
+ * the track is then untouched: all of it is workspace). */
+static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_set *set,
+                             trk_real beta0, struct pred *pr)
+{
+    const struct trk_imm_params *mp = &t->params.imm;
+    struct trk_imm_state *s = &t->ws.imm.s;
+    trk_real total = 0;
+    for (int m = 0; m < mp->n_models; m++) {
+        trk_real *b = t->ws.imm.rho[m];
+        trk_real mu = beta0 * t->ws.imm.c[m];
+        for (size_t i = 0; i < set->n; i++) mu += (b[i] *= set->w[i]);
+        s->mu[m] = mu;
+        total += mu;
+        if (!(mu > 0)) continue; /* keeps its prediction */
+        for (size_t i = 0; i < set->n; i++) b[i] /= mu;
+        struct trk_i_pda_set sm = *set;
+        sm.w = b;
+        const struct trk_i_pda_pred pp = imm_model_pred(t, scan, m);
+        const trk_status st = set->n > 0 ? trk_i_pda_run_beta(&pp, &sm, beta0 * t->ws.imm.c[m] / mu)
+                                         : trk_i_spd(NX, s->p[m]);
+        if (st != TRK_OK) return st;
+    }
+    if (!(total > 0)) return TRK_E_NAN;
+    for (int m = 0; m < mp->n_models; m++) s->mu[m] /= total;
+    trk_imm_combine(mp, s, pr->x, pr->p);
+    const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
+    return st != TRK_OK ? st : trk_i_spd(NX, pr->p);
+}
+
+/* The survey's manoeuvre statistic (eqs 3.11-3.13) of the update: d2 of
+ * the innovation given a detection, sum_i beta_i nu_i / (1 - beta0), with
+ * the prediction's S of the sensor's R; 0 when nothing was gated. */
+static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn, trk_real beta0)
+{
+    if (set->n == 0 || !(beta0 < 1)) return 0;
+    trk_real nu[NZ] = {0, 0};
+    for (size_t i = 0; i < set->n; i++) {
+        nu[ZX] += set->w[i] * (set->z[NZ * i + ZX] - inn->z_pred[ZX]);
+        nu[ZY] += set->w[i] * (set->z[NZ * i + ZY] - inn->z_pred[ZY]);
+    }
+    nu[ZX] /= 1 - beta0;
+    nu[ZY] /= 1 - beta0;
+    return trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
+}
+
+#endif

@@ -1,0 +1,303 @@
+/* test_tracker_imm.c - IMM tracks in the track table (TRK_WITH_IMM = 1,
+ * config.h; src/tracker_imm_impl.h):
+ *   - parameters: IMM off by default, the three-model set, refusals "imm";
+ *   - one CV model through the IMM path is the CV tracker (two targets in
+ *     clutter, per-track PDA and joint association);
+ *   - a lone IMM track's update is the library's IMM-PDA
+ *     (trk_imm_mix, trk_imm_predict, trk_imm_pda_update, trk_imm_combine),
+ *     with either association;
+ *   - the manoeuvre statistic is nu' S^-1 nu of the one detection;
+ *   - a turning target: the turn model takes the mode probability, and the
+ *     IMM track's position error over the turn is below the CV track's.
+ * tests/test_tracker_imm.mk links this program with the library files whose
+ * layout depends on the knob compiled in the same configuration. */
+#undef TRK_WITH_IMM
+#define TRK_WITH_IMM 1
+#include "trk_test.h"
+#include "trk_test_sonar.h"
+#include "trk/gate.h"
+#include "trk/imm.h"
+#include "trk/tracker.h"
+
+static struct trk_tracker tk, tk2;
+
+#define DT_S 4.0
+#define SCAN_US(k) ((int64_t)(k) * 4000000)
+
+static void test_params(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const char *field = NULL;
+    TRK_ASSERT_OK(trk_tracker_abi_check());
+    trk_tracker_default_params(&p);
+    assert_int_equal(p.imm.n_models, 0);
+    trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95));
+    assert_int_equal(p.imm.n_models, 3);
+    TRK_ASSERT_NEAR(p.imm.omega_rad_s[1], 0.035, 1e-7, 0);
+    TRK_ASSERT_NEAR(p.imm.omega_rad_s[2], -0.035, 1e-7, 0);
+    TRK_ASSERT_NEAR(p.imm.p_switch[0 * 3 + 1], 0.025, 1e-7, 0);
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+    assert_null(field);
+    p.imm.p_switch[0] = TRK_REAL_C(0.9); /* row 0 sums to 0.95 */
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "imm");
+    trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95));
+    p.imm.n_models = TRK_MAX_MODELS + 1;
+    TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_ARG);
+    p.imm.n_models = 3;
+    p.imm.omega_rad_s[1] = (trk_real)NAN;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_NAN);
+    assert_string_equal(field, "imm");
+}
+
+/* Two targets 60 m apart crossing clutter; the same scans into tk (CV) and
+ * tk2 (IMM with one CV model of the same q). */
+static void run_pair(enum trk_assoc_method assoc)
+{
+    struct trk_tracker_params p;
+    trk_test_sonar_params(&p, 1e-5);
+    p.association = assoc;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    p.imm.n_models = 1;
+    p.imm.omega_rad_s[0] = 0;
+    p.imm.q_m2_per_s3[0] = p.process_noise_q;
+    p.imm.p_switch[0] = 1;
+    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    uint64_t rng = 7;
+    for (int k = 0; k < 30; k++) {
+        struct trk_detection d[8];
+        size_t n = 0;
+        for (int t = 0; t < 2; t++)
+            if (trk_test_urand(&rng) < 0.8)
+                d[n++] = trk_test_det_at(100 + 5 * DT_S * k + 5 * trk_test_nrand(&rng),
+                                         60 * t + 5 * trk_test_nrand(&rng));
+        for (int c = 0; c < 3; c++)
+            d[n++] = trk_test_det_at(1000 * trk_test_urand(&rng) - 200, 600 * trk_test_urand(&rng) - 300);
+        const struct trk_scan scan = {SCAN_US(k), 0, n, d};
+        struct trk_scan_report r1, r2;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &r1));
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &scan, &r2));
+        assert_int_equal(r1.n_started, r2.n_started);
+        assert_int_equal(r1.n_confirmed, r2.n_confirmed);
+        assert_int_equal(r1.n_terminated, r2.n_terminated);
+    }
+    size_t n_confirmed = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *a = trk_tracker_track(&tk, i), *b = trk_tracker_track(&tk2, i);
+        assert_true((a == NULL) == (b == NULL));
+        if (!a) continue;
+        assert_int_equal(a->id, b->id);
+        assert_int_equal(a->status, b->status);
+        n_confirmed += a->status == TRK_TRACK_CONFIRMED;
+        /* the same arithmetic but the prediction (trk_kalman_predict with F
+         * of omega = 0 against the CV kernel): rounding only */
+        for (int j = 0; j < TRK_CV2_NX; j++) TRK_ASSERT_NEAR(b->x[j], a->x[j], TRK_TOL(1e-8, 2e-2), TRK_TOL(1e-9, 1e-4));
+        for (int j = 0; j < TRK_CV2_NX * TRK_CV2_NX; j++)
+            TRK_ASSERT_NEAR(b->p[j], a->p[j], TRK_TOL(1e-8, 1e-2), TRK_TOL(1e-8, 1e-3));
+        TRK_ASSERT_NEAR(b->vis.pv, a->vis.pv, TRK_TOL(1e-9, 1e-4), 0);
+        TRK_ASSERT_NEAR(b->imm.mu[0], 1, 1e-12, 0);
+    }
+    assert_int_equal(n_confirmed, 2);
+}
+
+static void test_one_model_is_cv(void **state)
+{
+    (void)state;
+    run_pair(TRK_ASSOC_PDA);
+    run_pair(TRK_ASSOC_JOINT);
+}
+
+/* One target, no clutter detections, 8 scans: one confirmed IMM track. */
+static const struct trk_track *lone_track(enum trk_assoc_method assoc, struct trk_tracker_params *p)
+{
+    trk_test_sonar_params(p, 1e-6);
+    p->association = assoc;
+    p->sensor[0].pd = TRK_REAL_C(0.95);
+    trk_tracker_imm_params(p, TRK_REAL_C(0.05), TRK_REAL_C(0.9));
+    p->imm.q_m2_per_s3[1] = p->imm.q_m2_per_s3[2] = TRK_REAL_C(0.01); /* the turns' own q */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, p));
+    uint64_t rng = 11;
+    for (int k = 0; k < 8; k++) {
+        struct trk_detection d = trk_test_det_at(5 * DT_S * k + 3 * trk_test_nrand(&rng), 3 * trk_test_nrand(&rng));
+        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+    }
+    const struct trk_track *found = NULL;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *tr = trk_tracker_track(&tk, i);
+        if (!tr) continue;
+        assert_null(found);
+        found = tr;
+    }
+    assert_non_null(found);
+    assert_int_equal(found->status, TRK_TRACK_CONFIRMED);
+    return found;
+}
+
+static void lone_is_imm_pda(enum trk_assoc_method assoc)
+{
+    struct trk_tracker_params p;
+    const struct trk_track *tr = lone_track(assoc, &p);
+    /* the library's IMM-PDA on the track's state and the next scan */
+    struct trk_imm_state s = tr->imm;
+    trk_real c[TRK_MAX_MODELS];
+    TRK_ASSERT_OK(trk_imm_mix(&p.imm, &s, c));
+    TRK_ASSERT_OK(trk_imm_predict(&p.imm, (trk_real)DT_S, &s));
+    struct trk_innovation inn;
+    TRK_ASSERT_OK(trk_kalman_innovation(TRK_CV2_NX, TRK_CV2_NZ, trk_cv2_h, tk.r[0], s.x[0], s.p[0], &inn));
+    const double zx = inn.z_pred[TRK_CV2_ZX], zy = inn.z_pred[TRK_CV2_ZY];
+    struct trk_detection d[3] = {trk_test_det_at(zx + 4, zy - 2), trk_test_det_at(zx - 6, zy + 5),
+                                 trk_test_det_at(zx + 1, zy + 9)};
+    trk_real z[6];
+    for (int i = 0; i < 3; i++) {
+        z[2 * i] = d[i].x_m;
+        z[2 * i + 1] = d[i].y_m;
+    }
+    static struct trk_imm_work w;
+    unsigned char valid[3];
+    TRK_ASSERT_OK(trk_imm_pda_update(&p.imm, &tk.pda[0], tk.r[0], 3, z, NULL, c, &s, &w, valid, NULL));
+    assert_true(valid[0] && valid[1] && valid[2]);
+    trk_real x[TRK_CV2_NX], pc[TRK_CV2_NX * TRK_CV2_NX];
+    trk_imm_combine(&p.imm, &s, x, pc);
+    /* the tracker's */
+    const struct trk_scan scan = {SCAN_US(8), 0, 3, d};
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    assert_int_equal(rep.n_started, 0);
+    assert_int_equal(tr->n_gated_last, 3);
+    for (int m = 0; m < 3; m++) {
+        TRK_ASSERT_NEAR(tr->imm.mu[m], s.mu[m], TRK_TOL(1e-12, 1e-5), TRK_TOL(1e-10, 1e-4));
+        for (int j = 0; j < TRK_CV2_NX; j++)
+            TRK_ASSERT_NEAR(tr->imm.x[m][j], s.x[m][j], TRK_TOL(1e-9, 1e-3), TRK_TOL(1e-11, 1e-5));
+        for (int j = 0; j < TRK_CV2_NX * TRK_CV2_NX; j++)
+            TRK_ASSERT_NEAR(tr->imm.p[m][j], s.p[m][j], TRK_TOL(1e-9, 1e-3), TRK_TOL(1e-10, 1e-4));
+    }
+    for (int j = 0; j < TRK_CV2_NX; j++) TRK_ASSERT_NEAR(tr->x[j], x[j], TRK_TOL(1e-9, 1e-3), TRK_TOL(1e-11, 1e-5));
+    for (int j = 0; j < TRK_CV2_NX * TRK_CV2_NX; j++)
+        TRK_ASSERT_NEAR(tr->p[j], pc[j], TRK_TOL(1e-9, 1e-3), TRK_TOL(1e-10, 1e-4));
+    /* the turns' mode probabilities moved off the prior c */
+    TRK_ASSERT_NEAR(tr->imm.mu[0] + tr->imm.mu[1] + tr->imm.mu[2], 1, TRK_TOL(1e-12, 1e-6), 0);
+}
+
+static void test_lone_track_is_imm_pda(void **state)
+{
+    (void)state;
+    lone_is_imm_pda(TRK_ASSOC_PDA);
+    lone_is_imm_pda(TRK_ASSOC_JOINT);
+}
+
+/* The manoeuvre statistic of a CV track with one detection at nu from its
+ * prediction: nu' S^-1 nu; 0 after a scan without detection. */
+static void test_maneuver_d2(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_test_sonar_params(&p, 1e-6);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const struct trk_track *tr = NULL;
+    for (int k = 0; k < 8; k++) {
+        struct trk_detection d = trk_test_det_at(5 * DT_S * k, 0);
+        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+    }
+    for (size_t i = 0; i < TRK_MAX_TRACKS && !tr; i++) tr = trk_tracker_track(&tk, i);
+    assert_non_null(tr);
+    trk_real x[TRK_CV2_NX], pp[TRK_CV2_NX * TRK_CV2_NX];
+    memcpy(x, tr->x, sizeof x);
+    memcpy(pp, tr->p, sizeof pp);
+    TRK_ASSERT_OK(trk_cv2_predict((trk_real)DT_S, p.process_noise_q, x, pp));
+    struct trk_innovation inn;
+    TRK_ASSERT_OK(trk_kalman_innovation(TRK_CV2_NX, TRK_CV2_NZ, trk_cv2_h, tk.r[0], x, pp, &inn));
+    const trk_real nu[2] = {6, -4};
+    struct trk_detection d = trk_test_det_at(inn.z_pred[TRK_CV2_ZX] + nu[0], inn.z_pred[TRK_CV2_ZY] + nu[1]);
+    const struct trk_scan scan = {SCAN_US(8), 0, 1, &d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+    assert_int_equal(tr->n_gated_last, 1);
+    TRK_ASSERT_NEAR(tr->maneuver_d2, trk_gate_d2(&inn, nu), 0, TRK_TOL(1e-10, 1e-4));
+    assert_true(tr->maneuver_d2 > 0.5);
+    const struct trk_scan empty = {SCAN_US(9), 0, 0, NULL};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &empty, NULL));
+    assert_true(tr->maneuver_d2 == 0);
+}
+
+/* A target at 6 m/s: 15 scans straight east, 30 scans turning left at
+ * 1.5 deg/s, P_D 1, sigma 5 m, no clutter. Position errors of the one
+ * confirmed track of the CV tracker (tk) and of the IMM tracker (tk2). */
+static void test_turn(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_test_sonar_params(&p, 1e-6);
+    p.sensor[0].pd = TRK_REAL_C(0.99);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    trk_tracker_imm_params(&p, TRK_REAL_C(0.0262), TRK_REAL_C(0.95)); /* turns at 1.5 deg/s */
+    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    const double w = 1.5 * 3.14159265358979323846 / 180;
+    double px = 0, py = 0, heading = 0;
+    double se_cv = 0, se_imm = 0, mu_left = 0, mu_cv_straight = 0;
+    int n_turn = 0, n_late = 0, n_straight = 0, n_cv_lost = 0;
+    uint32_t id_imm = 0;
+    uint64_t rng = 5;
+    for (int k = 0; k < 45; k++) {
+        if (k > 0) {
+            if (k <= 15) {
+                px += 6 * DT_S;
+            } else { /* exact arc of the turn */
+                const double h1 = heading + w * DT_S;
+                px += 6 / w * (sin(h1) - sin(heading));
+                py += 6 / w * (cos(heading) - cos(h1));
+                heading = h1;
+            }
+        }
+        struct trk_detection d = trk_test_det_at(px + 5 * trk_test_nrand(&rng), py + 5 * trk_test_nrand(&rng));
+        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &scan, NULL));
+        if (k < 6) continue;
+        const struct trk_track *a = NULL, *b = NULL;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *t1 = trk_tracker_track(&tk, i), *t2 = trk_tracker_track(&tk2, i);
+            if (t1 && t1->status == TRK_TRACK_CONFIRMED) a = t1;
+            if (t2 && t2->status == TRK_TRACK_CONFIRMED) b = t2;
+        }
+        assert_non_null(b);
+        if (id_imm == 0) id_imm = b->id;
+        assert_int_equal(b->id, id_imm); /* one IMM track throughout */
+        if (k >= 8 && k <= 15) {
+            mu_cv_straight += b->imm.mu[0];
+            n_straight++;
+        }
+        if (k > 15) {
+            /* a CV track lost in the turn counts as an error of 100 m */
+            se_cv += a ? pow(a->x[TRK_CV2_X] - px, 2) + pow(a->x[TRK_CV2_Y] - py, 2) : 1e4;
+            n_cv_lost += !a;
+            se_imm += pow(b->x[TRK_CV2_X] - px, 2) + pow(b->x[TRK_CV2_Y] - py, 2);
+            n_turn++;
+            if (k >= 25) {
+                mu_left += b->imm.mu[1];
+                n_late++;
+            }
+        }
+    }
+    const double rmse_cv = sqrt(se_cv / n_turn), rmse_imm = sqrt(se_imm / n_turn);
+    print_message("turn: position RMSE CV %.2f m (no CV track in %d of %d scans), IMM %.2f m; mean mu CV "
+                  "(straight) %.3f, left (turn) %.3f\n",
+                  rmse_cv, n_cv_lost, n_turn, rmse_imm, mu_cv_straight / n_straight, mu_left / n_late);
+    assert_true(rmse_imm < 6);              /* sigma 5 m per axis: 3.6 m measured */
+    assert_true(rmse_imm < 0.5 * rmse_cv);
+    assert_true(mu_left / n_late > 0.7);    /* 0.90 */
+    assert_true(mu_cv_straight / n_straight > 0.6); /* 0.84 */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_params),
+        cmocka_unit_test(test_one_model_is_cv),
+        cmocka_unit_test(test_lone_track_is_imm_pda),
+        cmocka_unit_test(test_maneuver_d2),
+        cmocka_unit_test(test_turn),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
