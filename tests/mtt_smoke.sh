@@ -15,6 +15,11 @@
 #     after the death, 8 between)
 #   - at clutter 0 the three configurations hold the targets: coverage > 0.3, every
 #     target confirmed at some scan
+#   - the manoeuvres (issue 16 item 3): a run with a 120 deg turn at 1 deg/s and the
+#     straight target accelerating (--accel 0.1) passes the same checks, its
+#     turn_*/accel_* fractions in [0, 1], the acceleration's defined (not nan) and
+#     RMSE >= 0; without --accel the accel_* columns are nan; --config imm in a build
+#     without IMM tracks is refused (exit 2) with a message naming make mtt-imm
 #   - every column but the CPU time identical with 1 and 2 threads
 #   - trk-sim mtt-compare merges the transit and the fixed CSV (12 rows: the family is
 #     part of the key) and refuses two CSVs of the same family and capacity
@@ -32,10 +37,13 @@ for t in 1 2; do
 done
 "$sim" mtt --family fixed --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads 1 --quiet --no-plot \
     --out "$d/f1" >"$d/outf.txt" 2>&1 || { cat "$d/outf.txt"; fail "trk-sim mtt --family fixed exited with $?"; }
-# check CSV FAMILY
+"$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads 1 --quiet --no-plot --turn-rate 1 \
+    --turn-deg 120 --accel 0.1 --accel-s 60 --out "$d/a1" >"$d/outa.txt" 2>&1 ||
+    { cat "$d/outa.txt"; fail "trk-sim mtt --accel exited with $?"; }
+# check CSV FAMILY [ACCEL]
 check() {
     [ -f "$1" ] || fail "no CSV written ($1)"
-    awk -F, -v family="$2" -v want_metrics="targets_per_run targets_present_per_scan gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 scans_to_confirm never_confirmed coverage turn_coverage parallel_both cross_both false_tracks_per_1000_scans false_track_scans_per_100 duplicate_track_scans_per_100 fragmentations id_switches rmse_m cpu_us_per_scan rep_n_init_refused_full" '
+    awk -F, -v family="$2" -v accel="${3:-0}" -v want_metrics="turn_rmse_m turn_after_coverage turn_lost accel_coverage accel_rmse_m accel_lost targets_per_run targets_present_per_scan gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 scans_to_confirm never_confirmed coverage turn_coverage parallel_both cross_both false_tracks_per_1000_scans false_track_scans_per_100 duplicate_track_scans_per_100 fragmentations id_switches rmse_m cpu_us_per_scan rep_n_init_refused_full" '
 function bad(msg) { print "mtt-smoke: FAILED: " msg; err = 1; exit 1 }
 NR == 1 {
     if ($1 != "capacity" || $2 != "config" || $3 != "clutter" || $4 != "seeds" || $5 != "scans" || $6 != "amplitude" ||
@@ -68,10 +76,14 @@ NR == 1 {
         if (!($(i + 1) <= $i + 1e-9 * (1 + ($i < 0 ? -$i : $i)) && $i <= $(i + 2) + 1e-9 * (1 + ($i < 0 ? -$i : $i))))
             bad("row " key ": column " i " mean " $i " not in [" $(i + 1) ", " $(i + 2) "]")
     }
-    split("coverage turn_coverage parallel_both cross_both", f01, " ")
+    split("coverage turn_coverage turn_after_coverage turn_lost accel_coverage accel_after_coverage accel_lost " \
+          "parallel_both cross_both", f01, " ")
     for (k in f01) { v = $(col[f01[k] "_mean"]); if (v != "nan" && (v < 0 || v > 1)) bad(key ": " f01[k] " " v) }
-    split("gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 rmse_m", fpos, " ")
+    split("gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 rmse_m turn_rmse_m accel_rmse_m", fpos, " ")
     for (k in fpos) if ($(col[fpos[k] "_mean"]) < 0) bad(key ": " fpos[k] " < 0")
+    acc = $(col["accel_coverage_mean"])
+    if (accel && (acc == "nan" || acc == "-nan")) bad(key ": accel_coverage undefined with --accel")
+    if (!accel && acc != "nan" && acc != "-nan") bad(key ": accel_coverage " acc " without --accel")
     cl = $(col["clutter_per_scan_mean"])
     if ($(col["clutter_capped_scans_mean"]) == 0 && cl != $3) bad(key ": clutter per scan " cl ", asked " $3)
     if (cl > $3) bad(key ": clutter per scan " cl " > " $3)
@@ -97,6 +109,13 @@ END {
 }
 check "$d/m1.csv" transit
 check "$d/f1.csv" fixed
+check "$d/a1.csv" transit 1
+grep -q '^-- manoeuvres' "$d/outa.txt" && grep -q 'accel cov' "$d/outa.txt" || fail "no manoeuvre table on stdout"
+if "$sim" mtt --config imm --scans 30 --seeds 1 --no-plot --quiet --out "$d/i1" >"$d/outi.txt" 2>&1; then
+    grep -q 'imm' "$d/outi.txt" || fail "--config imm ran without an imm configuration"
+else
+    [ $? -eq 2 ] && grep -q 'make mtt-imm' "$d/outi.txt" || { cat "$d/outi.txt"; fail "--config imm: no clear refusal"; }
+fi
 # the same with 2 threads, except the CPU time (the columns named cpu_*)
 strip() {
     awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) keep[i] = $i !~ /^cpu_/ }
@@ -117,5 +136,5 @@ if "$sim" mtt-compare "$d/m1.csv" "$d/m2.csv" --no-plot --out "$d/c2" >"$d/outc2
     fail "mtt-compare merged two CSVs of one family and capacity"
 fi
 grep -q 'appears twice' "$d/outc2.txt" || { cat "$d/outc2.txt"; fail "mtt-compare: no 'appears twice' message"; }
-echo "mtt-smoke: trk-sim mtt: 6 rows (new, pda, old x clutter 0, 50) checked per family (transit, fixed); transit" \
-    "identical with 1 and 2 threads; mtt-compare keys rows by family"
+echo "mtt-smoke: trk-sim mtt: 6 rows (new, pda, old x clutter 0, 50) checked per family (transit, fixed) and with" \
+    "the manoeuvres (turn, acceleration); transit identical with 1 and 2 threads; mtt-compare keys rows by family"

@@ -15,7 +15,11 @@
  * speeds drawn in [5, 15] m/s and kept where the path stays inside, else
  * the largest that keeps it in, the X and the pair 60 m apart, determinism,
  * the scan capacity; what the two families share (the structure's draws,
- * the clutter). And the helpers the experiment uses: Student t intervals
+ * the clutter). Issue 16 item 3's manoeuvres: the straight target's
+ * acceleration (truth continuous, exact, the speed up by accel x accel_s,
+ * the life cut where it leaves; accel 0 the scenario unchanged, bit for
+ * bit; nothing else changes with it) and turns up to a full circle. And the
+ * helpers the experiment uses: Student t intervals
  * (mc_stats.h), the per-target assignment of mtt_eval.h, the pre-issue-14
  * defaults. */
 #include "trk_test.h"
@@ -744,6 +748,162 @@ static void test_families_share(void **state)
     assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
 }
 
+/* The straight target's acceleration (mtt_scenario.h STRAIGHT), both
+ * families, 10 seeds: accel 0 (any duration) gives the default scenario bit
+ * for bit (targets, slots, scans); 0.1 m/s^2 for 60 s changes STRAIGHT
+ * alone (and the later transit targets of its slot): the same path up to
+ * the acceleration's start at its mid-life, continuous position and
+ * velocity, the velocity the position's derivative, the speed up by
+ * 6 m/s, present while inside and gone where the faster path leaves. */
+static void test_accel(void **state)
+{
+    (void)state;
+    static const long ks[] = {0, 63, 99, 100, 131, 199};
+    for (int fam = 0; fam < MTT_N_FAMILIES; fam++)
+        for (uint64_t seed = 1; seed <= 10; seed++) {
+            struct mtt_scenario base, z, a;
+            struct mtt_scen_params p;
+            char err[256];
+            init_family(&base, fam, seed, 200, 5, 15);
+            p = base.p;
+            p.accel_mps2 = 0;
+            p.accel_s = 123;
+            assert_int_equal(mtt_scen_init(&z, &p, err, sizeof err), 0);
+            assert_int_equal(z.n_targets, base.n_targets);
+            assert_memory_equal(z.tg, base.tg, base.n_targets * sizeof base.tg[0]);
+            assert_memory_equal(z.slot_first, base.slot_first, sizeof base.slot_first);
+            assert_memory_equal(z.by_slot, base.by_slot, base.n_targets * sizeof base.by_slot[0]);
+            assert_true(z.accel_first_scan > z.accel_last_scan);
+            for (size_t q = 0; q < sizeof ks / sizeof ks[0]; q++) {
+                struct trk_scan s1, s2;
+                mtt_scen_scan(&base, ks[q], 40, det_a, TRK_MAX_DETECTIONS, org_a, &s1, NULL);
+                mtt_scen_scan(&z, ks[q], 40, det_b, TRK_MAX_DETECTIONS, org_b, &s2, NULL);
+                assert_int_equal(s1.n_detections, s2.n_detections);
+                assert_memory_equal(det_a, det_b, s1.n_detections * sizeof det_a[0]);
+            }
+            p.accel_mps2 = 0.1;
+            p.accel_s = 60;
+            assert_int_equal(mtt_scen_init(&a, &p, err, sizeof err), 0);
+            /* the other slots' targets as before */
+            for (int j = 0; j < MTT_N_SLOTS; j++) {
+                if (j == MTT_STRAIGHT) continue;
+                assert_true(a.slot_first[j + 1] - a.slot_first[j] == base.slot_first[j + 1] - base.slot_first[j]);
+                for (long q = a.slot_first[j]; q < a.slot_first[j + 1]; q++) {
+                    const long i = a.by_slot[q];
+                    assert_int_equal(i, base.by_slot[base.slot_first[j] + (q - a.slot_first[j])]);
+                    assert_memory_equal(&a.tg[i], &base.tg[i], sizeof a.tg[i]);
+                }
+            }
+            const struct mtt_target *g = &a.tg[MTT_STRAIGHT], *g0 = &base.tg[MTT_STRAIGHT];
+            const double T = 4, v = g->speed_mps, t0 = g->accel_t0_s, D = g->accel_dur_s;
+            assert_true(g->birth_scan == g0->birth_scan && g->speed_mps == g0->speed_mps &&
+                        g->heading_rad == g0->heading_rad && g->ax_m == g0->ax_m && g->at_s == g0->at_s);
+            assert_true(g->accel_mps2 == 0.1 && D == 60);
+            TRK_ASSERT_NEAR(t0, 0.5 * (double)(g0->birth_scan + g0->death_scan - 1) * T, 1e-12, 0);
+            assert_true(g->death_scan <= g0->death_scan && g->death_scan > (long)(t0 / T));
+            assert_int_equal(a.accel_first_scan, (long)ceil(t0 / T - 1e-9));
+            const long last = (long)floor((t0 + D) / T + 1e-9);
+            assert_int_equal(a.accel_last_scan, last < 199 ? last : 199);
+            /* the path up to t0 unchanged */
+            for (double t = (double)g->birth_scan * T; t <= t0; t += 3.7) {
+                double x[4], x0[4];
+                mtt_scen_truth(&a, MTT_STRAIGHT, t, x);
+                mtt_scen_truth(&base, MTT_STRAIGHT, t, x0);
+                assert_memory_equal(x, x0, sizeof x);
+            }
+            /* continuous at the start and the end, the velocity the
+             * derivative (central differences of a quadratic: exact but
+             * for rounding), the speed v, v + a (t - t0), v + a D */
+            const double tt[] = {t0, t0 + D, t0 + 0.3 * D, t0 + 2 * D, t0 - 10};
+            for (size_t q = 0; q < sizeof tt / sizeof tt[0]; q++) {
+                const double h = 1e-3;
+                double xm[4], xp[4], x[4];
+                mtt_scen_truth(&a, MTT_STRAIGHT, tt[q] - h, xm);
+                mtt_scen_truth(&a, MTT_STRAIGHT, tt[q] + h, xp);
+                mtt_scen_truth(&a, MTT_STRAIGHT, tt[q], x);
+                const double u = tt[q] - t0, want = v + 0.1 * (u < 0 ? 0 : u > D ? D : u);
+                assert_true(hypot(xp[TRK_CV2_X] - xm[TRK_CV2_X], xp[TRK_CV2_Y] - xm[TRK_CV2_Y]) <= 2 * h * (v + 6.1));
+                TRK_ASSERT_NEAR(hypot(x[TRK_CV2_VX], x[TRK_CV2_VY]), want, 1e-9, 0);
+                TRK_ASSERT_NEAR(hypot(xp[TRK_CV2_VX] - xm[TRK_CV2_VX], xp[TRK_CV2_VY] - xm[TRK_CV2_VY]), 0,
+                                2 * h * 0.1 + 1e-9, 0);
+                if (q >= 2) { /* away from the kinks */
+                    TRK_ASSERT_NEAR((xp[TRK_CV2_X] - xm[TRK_CV2_X]) / (2 * h), x[TRK_CV2_VX], 1e-5, 0);
+                    TRK_ASSERT_NEAR((xp[TRK_CV2_Y] - xm[TRK_CV2_Y]) / (2 * h), x[TRK_CV2_VY], 1e-5, 0);
+                }
+            }
+            {
+                /* the distance over the acceleration: v D + a D^2 / 2; the heading kept */
+                double x1[4], x2[4];
+                mtt_scen_truth(&a, MTT_STRAIGHT, t0, x1);
+                mtt_scen_truth(&a, MTT_STRAIGHT, t0 + D, x2);
+                TRK_ASSERT_NEAR(hypot(x2[TRK_CV2_X] - x1[TRK_CV2_X], x2[TRK_CV2_Y] - x1[TRK_CV2_Y]),
+                                v * D + 0.05 * D * D, 1e-8, 0);
+                TRK_ASSERT_NEAR(atan2(x2[TRK_CV2_VY], x2[TRK_CV2_VX]), atan2(x1[TRK_CV2_VY], x1[TRK_CV2_VX]), 1e-12,
+                                0);
+                TRK_ASSERT_NEAR(hypot(x2[TRK_CV2_VX], x2[TRK_CV2_VY]) - hypot(x1[TRK_CV2_VX], x1[TRK_CV2_VY]),
+                                0.1 * 60, 1e-9, 0);
+            }
+            /* present while inside, gone where it left */
+            for (long k = g->birth_scan; k < g->death_scan; k++) assert_true(inside(&a, MTT_STRAIGHT, k));
+            if (g->death_scan < 200) assert_false(inside(&a, MTT_STRAIGHT, g->death_scan));
+            mtt_scen_free(&base);
+            mtt_scen_free(&z);
+            mtt_scen_free(&a);
+        }
+    /* refused: a deceleration, a duration of 0 */
+    struct mtt_scen_params p;
+    struct mtt_scenario s;
+    char err[256];
+    mtt_scen_defaults(&p);
+    p.accel_mps2 = -0.1;
+    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
+    mtt_scen_defaults(&p);
+    p.accel_mps2 = 0.1;
+    p.accel_s = 0;
+    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
+}
+
+/* Turns of 120-360 deg (30 scans at 1-3 deg/s): the turning target present
+ * over the whole turn, at its speed, its heading turned by turn_deg, the
+ * turn's scans those of its duration. */
+static void test_long_turns(void **state)
+{
+    (void)state;
+    for (int r = 1; r <= 3; r++)
+        for (uint64_t seed = 1; seed <= 10; seed++) {
+            struct mtt_scen_params p;
+            struct mtt_scenario s;
+            char err[256];
+            mtt_scen_defaults(&p);
+            p.seed = seed;
+            p.turn_rate_dps = r;
+            p.turn_deg = 120 * r;
+            assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), 0);
+            const struct mtt_target *g = &s.tg[MTT_TURN];
+            const double tau = fabs(g->turn_rad) / g->turn_rate_rps;
+            TRK_ASSERT_NEAR(fabs(g->turn_rad), 120 * r * DEG, 1e-12, 0);
+            assert_true(g->turn_rate_rps >= 0.8 * r * DEG - 1e-12 && g->turn_rate_rps <= 1.2 * r * DEG + 1e-12);
+            const long n = s.turn_last_scan - s.turn_first_scan + 1;
+            assert_true(n >= 25 && n <= 38);
+            TRK_ASSERT_NEAR((double)n, tau / 4, 1.01, 0);
+            for (long k = s.turn_first_scan - 1; k <= s.turn_last_scan + 1; k++)
+                assert_true(mtt_scen_present(&s, MTT_TURN, k));
+            double x0[4], x1[4];
+            mtt_scen_truth(&s, MTT_TURN, g->at_s, x0);
+            mtt_scen_truth(&s, MTT_TURN, g->at_s + tau, x1);
+            const double turned = ang_diff(atan2(x1[TRK_CV2_VY], x1[TRK_CV2_VX]), atan2(x0[TRK_CV2_VY], x0[TRK_CV2_VX]));
+            TRK_ASSERT_NEAR(turned, ang_diff(g->turn_rad, 0), 1e-9, 0);
+            TRK_ASSERT_NEAR(hypot(x1[TRK_CV2_VX], x1[TRK_CV2_VY]), g->speed_mps, 1e-9, 0);
+            mtt_scen_free(&s);
+        }
+    struct mtt_scen_params p;
+    struct mtt_scenario s;
+    char err[256];
+    mtt_scen_defaults(&p);
+    p.turn_deg = 361;
+    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
+}
+
 /* Student t quantiles and intervals (R: qt(0.975, df)). */
 static void test_student_t(void **state)
 {
@@ -812,6 +972,7 @@ int main(void)
         cmocka_unit_test(test_fixed_determinism), cmocka_unit_test(test_fixed_capacity),
         cmocka_unit_test(test_families_share), cmocka_unit_test(test_student_t),
         cmocka_unit_test(test_eval_assign), cmocka_unit_test(test_old_defaults),
+        cmocka_unit_test(test_accel),       cmocka_unit_test(test_long_turns),
     };
     return trk_run_tests("mtt_scenario", tests, NULL, NULL);
 }

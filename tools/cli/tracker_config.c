@@ -57,6 +57,11 @@ void tcfg_defaults(struct tcfg *c)
         c->amp[s].snr_db = 15;
         c->amp[s].pfa = 1e-3;
     }
+#if TRK_WITH_IMM
+    c->imm_turn_rate_dps = 0;
+    c->imm_p_stay = 0.95;
+    c->imm_turn_q = 0;
+#endif
 }
 
 void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out)
@@ -94,7 +99,22 @@ void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out)
     case TRK_TERM_VISIBILITY: break; /* uses out->visibility */
     case TRK_TERM_EXISTENCE: out->term.u.existence = c->existence_term; break;
     }
+#if TRK_WITH_IMM
+    /* IMM tracks from the imm.* keys: CV (process_noise_q) and turns at
+     * +-imm.turn_rate_dps (imm.turn_q, 0 = process_noise_q) */
+    memset(&out->imm, 0, sizeof out->imm);
+    if (c->imm_turn_rate_dps > 0) tcfg_imm_models(out, c->imm_turn_rate_dps, c->imm_p_stay, c->imm_turn_q);
+#endif
 }
+
+#if TRK_WITH_IMM
+void tcfg_imm_models(struct trk_tracker_params *p, double turn_rate_dps, double p_stay, double turn_q)
+{
+    trk_tracker_imm_params(p, (trk_real)(turn_rate_dps * 3.14159265358979323846 / 180), (trk_real)p_stay);
+    if (turn_q > 0)
+        for (int m = 1; m < p->imm.n_models; m++) p->imm.q_m2_per_s3[m] = (trk_real)turn_q;
+}
+#endif
 
 /* ------------------------------------------------------------------ values */
 
@@ -434,6 +454,20 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         return get_real(v, R_PROB_CC, &c->hmm.pi0_high, err, n);
     }
     if (strcmp(key, "q2_table") == 0) return get_path(v, c->q2_table, err, n);
+    /* IMM tracks */
+#if TRK_WITH_IMM
+    if (strcmp(key, "imm.turn_rate_dps") == 0) {
+        const struct range r = {0, 57.29, 0, 0}; /* the library's |omega| <= 1 rad/s */
+        return get_double(v, r, &c->imm_turn_rate_dps, err, n);
+    }
+    if (strcmp(key, "imm.p_stay") == 0) return get_double(v, R_PROB_CC, &c->imm_p_stay, err, n);
+    if (strcmp(key, "imm.turn_q") == 0) return get_double(v, R_NONNEG, &c->imm_turn_q, err, n);
+#else
+    if (strcmp(key, "imm.turn_rate_dps") == 0 || strcmp(key, "imm.p_stay") == 0 || strcmp(key, "imm.turn_q") == 0) {
+        snprintf(err, n, "this build has no IMM tracks (TRK_WITH_IMM = 0): build with CONFIG_DEFS=-DTRK_WITH_IMM=1");
+        return -1;
+    }
+#endif
     return 1;
 }
 
@@ -560,6 +594,7 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
         const char *key = strcmp(f, "n_sensors") == 0          ? "sensors"
                           : strcmp(f, "track_visibility") == 0 ? "visibility"
                           : strcmp(f, "visibility") == 0       ? "visibility.*"
+                          : strcmp(f, "imm") == 0              ? "imm.*"
                                                                : f;
         const char *hint = strcmp(f, "association") == 0 && st == TRK_E_UNSUPPORTED
                                ? " (association = joint needs clutter = parametric and every sensor's "
@@ -750,6 +785,11 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     else put_num(f, "hmm.pi0_high", (double)c->hmm.pi0_high);
     fprintf(f, "hmm.events = %s\n", EVENTS_NAMES[c->hmm_events == TRK_EVENTS_PAPER]);
     if (c->q2_table[0]) fprintf(f, "q2_table = %s\n", c->q2_table);
+#if TRK_WITH_IMM
+    put_num(f, "imm.turn_rate_dps", c->imm_turn_rate_dps);
+    put_num(f, "imm.p_stay", c->imm_p_stay);
+    put_num(f, "imm.turn_q", c->imm_turn_q);
+#endif
     for (unsigned s = 0; s < p->n_sensors; s++) {
         const struct trk_sensor_params *sp = &p->sensor[s];
         char k[64];
@@ -831,4 +871,12 @@ void tcfg_help(FILE *f)
             "Amplitude tables and q2 tables are read and checked at start-up; a bad one\n"
             "stops the program (exit status 2).\n",
             TRK_MN_MAX_N);
+#if TRK_WITH_IMM
+    fprintf(f, "IMM tracks (this build: TRK_WITH_IMM = 1):\n"
+               "  imm.turn_rate_dps = W             CV and coordinated turns at +-W deg/s (trk_tracker_imm_params),\n"
+               "                                    [0, 57.29], 0 = CV only (0)\n"
+               "    imm.p_stay                       per-scan probability of keeping the model, [0,1] (0.95)\n"
+               "    imm.turn_q                       the turn models' q, m^2/s^3, >= 0, 0 = process_noise_q;\n"
+               "                                     the CV model's is process_noise_q (0)\n");
+#endif
 }

@@ -21,6 +21,10 @@
  *   hmm.events = complete | paper  (event model of SPRT (fixed_pd and hmm),
  *     Page, Shiryaev; trk/hmm_detect.h)
  *   q2_table
+ *   imm.{turn_rate_dps,p_stay,turn_q}  (TRK_WITH_IMM builds only: IMM tracks on
+ *     CV and coordinated turns at +-turn_rate_dps, trk_tracker_imm_params;
+ *     turn_rate_dps = 0, the default, is the CV-only tracker; a build without
+ *     IMM tracks refuses the keys)
  *   sensor.N.{pd,meas_cov_m2,meas_sigma_m,clutter_density_per_m2,
  *             amplitude,k_shape,snr_db,pfa,amp_table}   N = 0 .. sensors-1
  *
@@ -81,7 +85,23 @@ struct tcfg {
     /* amplitude and q2 */
     struct tcfg_amp amp[TRK_MAX_SENSORS];
     char q2_table[TCFG_PATH_MAX];
+#if TRK_WITH_IMM
+    /* IMM tracks: tcfg_params assembles params.imm from these (whatever
+     * params.imm held) */
+    double imm_turn_rate_dps;                     /* turn models at +-this; 0 = none, CV only (0) */
+    double imm_p_stay;                            /* per-scan probability of keeping the model (0.95) */
+    double imm_turn_q;                            /* the turn models' q; 0 = process_noise_q (0);
+                                                     the CV model's is process_noise_q */
+#endif
 };
+
+#if TRK_WITH_IMM
+/* p->imm from the imm.* keys' meaning: CV (p->process_noise_q) and turns at
+ * +-turn_rate_dps (trk_tracker_imm_params, p_stay), the turns' q turn_q
+ * (0: p->process_noise_q). The one mapping, shared by tcfg_params and
+ * trk-sim mtt's imm configuration. */
+void tcfg_imm_models(struct trk_tracker_params *p, double turn_rate_dps, double p_stay, double turn_q);
+#endif
 
 /* Defaults: trk_tracker_default_params() for the tracker, every sensor like
  * sensor 0, and the documented defaults of the other methods. */

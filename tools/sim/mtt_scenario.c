@@ -38,6 +38,8 @@ void mtt_scen_defaults(struct mtt_scen_params *p)
     p->turn_rate_dps = 3;
     p->min_life_scans = 25;
     p->gap_max_scans = 10;
+    p->accel_mps2 = 0;
+    p->accel_s = 60;
 }
 
 const char *mtt_role_name(int role)
@@ -77,6 +79,20 @@ static void truth_of(const struct mtt_target *g, double t, double x[4])
 {
     const double v = g->speed_mps, h = g->heading_rad;
     double px, py, hd;
+    if (g->accel_mps2 != 0 && t > g->accel_t0_s) {
+        /* straight, accelerating from accel_t0_s for accel_dur_s: the
+         * distance beyond the constant-speed path, exactly */
+        const double a = g->accel_mps2, D = g->accel_dur_s, u = t - g->accel_t0_s;
+        const double ds = u < D ? 0.5 * a * u * u : 0.5 * a * D * D + a * D * (u - D);
+        const double dv = a * (u < D ? u : D);
+        px = g->ax_m + (v * (t - g->at_s) + ds) * cos(h);
+        py = g->ay_m + (v * (t - g->at_s) + ds) * sin(h);
+        x[TRK_CV2_X] = px;
+        x[TRK_CV2_Y] = py;
+        x[TRK_CV2_VX] = (v + dv) * cos(h);
+        x[TRK_CV2_VY] = (v + dv) * sin(h);
+        return;
+    }
     if (g->turn_rad == 0 || g->turn_rate_rps <= 0 || v <= 0 || t <= g->at_s) {
         hd = h;
         px = g->ax_m + v * (t - g->at_s) * cos(h);
@@ -439,6 +455,24 @@ static void set_turn(const struct mtt_scenario *s, struct mtt_target *g, const s
     g->turn_rate_rps = st->t_w;
 }
 
+/* STRAIGHT's acceleration (p.accel_mps2 > 0; mtt_scenario.h): from g's
+ * mid-life (its life without the acceleration) for accel_s, the life then
+ * cut at the first scan from that mid-life on where the faster path is
+ * outside (the path before the acceleration is unchanged, and a faster one
+ * along a line leaves a convex region no later). */
+static void set_accel(const struct mtt_scenario *s, struct mtt_target *g)
+{
+    if (s->p.accel_mps2 == 0 || g->death_scan <= g->birth_scan) return;
+    const double T = s->p.scan_period_s;
+    g->accel_mps2 = s->p.accel_mps2;
+    g->accel_t0_s = 0.5 * (double)(g->birth_scan + g->death_scan - 1) * T;
+    g->accel_dur_s = s->p.accel_s;
+    long d = (long)floor(g->accel_t0_s / T) + 1; /* scans up to the start: unchanged */
+    if (d < g->birth_scan + 1) d = g->birth_scan + 1;
+    while (d < g->death_scan && inside_k(s, g, d)) d++;
+    g->death_scan = d;
+}
+
 /* ---------------------------------------------------------------- transit family */
 
 /* Lives from the path inside, the pair adapted to be present together
@@ -452,6 +486,7 @@ static void place_transit(struct mtt_scenario *s, struct mtt_target dg[MTT_N_SLO
     set_life(s, &dg[MTT_BIRTH], st->kb, ns);
     set_life(s, &dg[MTT_DEATH], 0, st->kd);
     set_life(s, &dg[MTT_STRAIGHT], 0, ns);
+    set_accel(s, &dg[MTT_STRAIGHT]);
     {
         /* the pair: present together for min(PAR_SCANS, n) scans, the
          * geometry adapted if need be, then the speed */
@@ -543,6 +578,7 @@ static void place_fixed(struct mtt_scenario *s, struct mtt_target dg[MTT_N_SLOTS
         if (i == MTT_PAR_A) dg[MTT_PAR_B].speed_mps = g->speed_mps;
     }
     s->par_scans = overlap(&dg[MTT_PAR_A], &dg[MTT_PAR_B]);
+    set_accel(s, &dg[MTT_STRAIGHT]); /* after the fit: the speed fitted without it */
 }
 
 /* ---------------------------------------------------------------- init */
@@ -569,10 +605,14 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         return -1;
     }
     if (!(p->speed_min_mps > 0) || !(p->speed_max_mps >= p->speed_min_mps) || !(p->speed_max_mps <= 1000) ||
-        !(p->parallel_sep_m > 0) || !(p->parallel_sep_m < 500) || !(p->turn_deg > 0 && p->turn_deg <= 180) ||
+        !(p->parallel_sep_m > 0) || !(p->parallel_sep_m < 500) || !(p->turn_deg > 0 && p->turn_deg <= 360) ||
         !(p->turn_rate_dps > 0 && p->turn_rate_dps <= 90)) {
         snprintf(err, n, "speeds must be 0 < min <= max <= 1000 m/s, pair separation in (0, 500) m, turn in "
-                         "(0, 180] deg at (0, 90] deg/s");
+                         "(0, 360] deg at (0, 90] deg/s");
+        return -1;
+    }
+    if (!(p->accel_mps2 >= 0 && p->accel_mps2 <= 10) || !(p->accel_s > 0 && p->accel_s <= 1e6)) {
+        snprintf(err, n, "the straight target's acceleration must be in [0, 10] m/s^2, its duration in (0, 1e6] s");
         return -1;
     }
     if (p->family != MTT_FAMILY_TRANSIT && p->family != MTT_FAMILY_FIXED) {
@@ -610,6 +650,14 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         s->turn_first_scan = (long)ceil(st.ts / T - 1e-9);
         s->turn_last_scan = (long)floor((st.ts + st.tau) / T + 1e-9);
         if (s->turn_last_scan > ns - 1) s->turn_last_scan = ns - 1;
+        const struct mtt_target *g = &dg[MTT_STRAIGHT];
+        s->accel_first_scan = 0;
+        s->accel_last_scan = -1;
+        if (g->accel_mps2 != 0) {
+            s->accel_first_scan = (long)ceil(g->accel_t0_s / T - 1e-9);
+            s->accel_last_scan = (long)floor((g->accel_t0_s + g->accel_dur_s) / T + 1e-9);
+            if (s->accel_last_scan > ns - 1) s->accel_last_scan = ns - 1;
+        }
     }
     /* ---- the slots: transit targets before and after the designated one
      * (the transit family; the fixed one has the designated ones alone) */

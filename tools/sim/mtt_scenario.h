@@ -55,7 +55,25 @@
  *                     centre, the legs before and after point 45 deg off the
  *                     direction to the centre (+- 10 deg)
  *   STRAIGHT          straight, through a point 300-700 m from the centre at
- *                     mid-run, heading tangential +- 30 deg (either way)
+ *                     mid-run, heading tangential +- 30 deg (either way);
+ *                     with accel_mps2 > 0 (issue 16 item 3: "a target that
+ *                     accelerates") it speeds up along its line at
+ *                     accel_mps2 from its mid-life for accel_s seconds
+ *                     (0.1 m/s^2 for 60 s: +6 m/s) and keeps the new speed;
+ *                     truth exact (position quadratic in t over the
+ *                     acceleration). Its mid-life is that of the path
+ *                     without the acceleration (scan (birth + death - 1) / 2,
+ *                     as a time), its life then cut where the faster path
+ *                     leaves the inside (no earlier than the acceleration's
+ *                     start: the path before it is unchanged). The fixed
+ *                     family fits STRAIGHT's speed on the path without the
+ *                     acceleration, so the accelerating target may leave
+ *                     before the run's end (its death_scan is then the first
+ *                     scan outside). accel_mps2 = 0 (the default) draws and
+ *                     computes nothing more: the scenario of every seed bit
+ *                     for bit as without the option. The draws are the same
+ *                     either way; only STRAIGHT's slot's later transit
+ *                     targets (placed after its death) may differ.
  * Motion is deterministic (no process noise): straight legs and the turn's
  * arc (radius v / omega; 0.52 m/s^2 at 10 m/s and 3 deg/s).
  *
@@ -207,16 +225,18 @@ struct mtt_scen_params {
     size_t max_det;             /* scan capacity, 1 .. TRK_MAX_DETECTIONS (0: TRK_MAX_DETECTIONS) */
     double speed_min_mps, speed_max_mps; /* 0 < min <= max <= 1000 */
     double parallel_sep_m;      /* (0, 500) */
-    double turn_deg;            /* (0, 180] */
+    double turn_deg;            /* (0, 360]: up to a full circle */
     double turn_rate_dps;       /* (0, 90] */
     long min_life_scans;        /* transit targets: present at least this long, >= 1 (transit only) */
     long gap_max_scans;         /* scans between a slot's targets: 1 .. this, >= 1 (transit only) */
+    double accel_mps2;          /* STRAIGHT: along-track acceleration, [0, 10]; 0 = none (the default) */
+    double accel_s;             /* ... for this long from its mid-life, (0, 1e6] (60) */
 };
 
 /* Defaults: the transit family, seed 1, 200 scans of 4 s, 3 km region, margin 50 m, pd 0.8,
  * sigma 5 m, amplitudes at 13 dB, capacity TRK_MAX_DETECTIONS, speeds
  * 5-15 m/s, pair 60 m apart, a 90 deg turn at 3 deg/s, transit targets
- * present >= 25 scans, gaps of 1-10 scans. */
+ * present >= 25 scans, gaps of 1-10 scans, no acceleration (accel_s 60). */
 void mtt_scen_defaults(struct mtt_scen_params *p);
 
 struct mtt_target {
@@ -230,6 +250,8 @@ struct mtt_target {
                                    TURN: before the turn, which starts at the anchor */
     double turn_rad;            /* TURN: signed turn (+ left); 0 otherwise */
     double turn_rate_rps;       /* TURN: |omega| */
+    double accel_mps2;          /* STRAIGHT with p.accel_mps2 > 0: along-track acceleration */
+    double accel_t0_s, accel_dur_s; /* ... from this time for this long; 0 otherwise */
 };
 
 struct mtt_scenario {
@@ -248,6 +270,7 @@ struct mtt_scenario {
     long cross_scan;            /* the scan nearest the crossing */
     double cross_x_m, cross_y_m;/* the crossing point */
     long turn_first_scan, turn_last_scan; /* scans within the turn [start, end] (first > last: none) */
+    long accel_first_scan, accel_last_scan; /* STRAIGHT's acceleration, the same (none: first > last) */
     long par_scans;             /* scans with both of the pair present */
 };
 
