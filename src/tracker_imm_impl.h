@@ -68,18 +68,26 @@ static struct trk_i_pda_pred imm_model_pred(struct trk_tracker *t, const struct 
 
 /* Mix and predict the models of tr into the workspace (ws.imm), each
  * model's innovation, and their combination with c_m into *pr (with its
- * innovation, as predict()). A gap of 0 (two sensors at one time) mixes
- * without moving. */
+ * innovation, as predict()). A gap of 0 (two sensors at one time) neither
+ * mixes nor moves: c = mu. A model with c_m = 0 (unreachable from the
+ * others this scan, e.g. p_stay = 1) is predicted (trk_imm_predict) but not
+ * checked, and gates nothing, weighs nothing and keeps its prediction. */
 static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                               struct pred *pr)
 {
     const struct trk_imm_params *mp = &t->params.imm;
     const trk_real dt = (trk_real)(scan->time_us - tr->time_us) * TRK_REAL_C(1e-6);
     struct trk_imm_state *s = &t->ws.imm.s;
+    trk_status st = TRK_OK;
     *s = tr->imm;
-    trk_status st = trk_imm_mix(mp, s, t->ws.imm.c);
-    if (st == TRK_OK && dt > 0) st = trk_imm_predict(mp, dt, s);
+    if (dt > 0) {
+        st = trk_imm_mix(mp, s, t->ws.imm.c);
+        if (st == TRK_OK) st = trk_imm_predict(mp, dt, s);
+    } else { /* p_ij is per scan interval: over no time, the identity */
+        for (int m = 0; m < mp->n_models; m++) t->ws.imm.c[m] = s->mu[m];
+    }
     for (int m = 0; m < mp->n_models && st == TRK_OK; m++) {
+        if (!(t->ws.imm.c[m] > 0)) continue; /* unreachable this scan: weight 0, never used */
         st = trk_i_pda_check(NX, s->x[m], s->p[m]);
         if (st == TRK_OK)
             st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], s->x[m], s->p[m],
@@ -113,9 +121,11 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
     struct gate gt = gate_begin(t, tr, scan, off, set);
     const int n = t->params.imm.n_models, tentative = tr->status == TRK_TRACK_TENTATIVE;
     const struct trk_innovation *inn = t->ws.imm.inn;
-    trk_real wx[TRK_MAX_MODELS], wy[TRK_MAX_MODELS];
+    trk_real wx[TRK_MAX_MODELS] = {0}, wy[TRK_MAX_MODELS] = {0};
     trk_real lo_x = TRK_REAL_MAX, hi_x = -TRK_REAL_MAX, lo_y = TRK_REAL_MAX, hi_y = -TRK_REAL_MAX;
     for (int m = 0; m < n; m++) {
+        wx[m] = wy[m] = -1; /* a model of weight 0 bounds nothing */
+        if (!(t->ws.imm.c[m] > 0)) continue;
         wx[m] = trk_sqrt(gt.g * inn[m].s[S(ZX, ZX)]);
         wy[m] = trk_sqrt(gt.g * inn[m].s[S(ZY, ZY)]);
         if (inn[m].z_pred[ZX] - wx[m] < lo_x) lo_x = inn[m].z_pred[ZX] - wx[m];
@@ -130,6 +140,7 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
             continue;
         trk_real d2 = (trk_real)INFINITY;
         for (int m = 0; m < n; m++) {
+            if (!(wx[m] >= 0)) continue;
             const trk_real nu[NZ] = {x - inn[m].z_pred[ZX], y - inn[m].z_pred[ZY]};
             trk_real d2_m = (trk_real)INFINITY;
             if (own) d2_m = imm_d2_own(t, scan, m, j, gt.g);
@@ -160,6 +171,9 @@ static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan
         trk_real le[TRK_MAX_MODELS], mx = -(trk_real)INFINITY;
         const trk_real nz_i[NZ] = {set->z[NZ * i + ZX], set->z[NZ * i + ZY]};
         for (int m = 0; m < n; m++) {
+            const trk_real c = t->ws.imm.c[m];
+            le[m] = -(trk_real)INFINITY;
+            if (!(c > 0)) continue;
             const struct trk_i_pda_pred pp = imm_model_pred(t, scan, m);
             const struct trk_innovation *inn = pp.inn;
             const trk_real nu[NZ] = {nz_i[ZX] - inn->z_pred[ZX], nz_i[ZY] - inn->z_pred[ZY]};
@@ -171,10 +185,8 @@ static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan
                 if (trk_i_pda_factor(NZ, s_own, l_own, &log_det) != TRK_OK) return TRK_E_NOT_SPD;
                 l_inv = l_own;
             }
-            const trk_real c = t->ws.imm.c[m];
-            le[m] = c > 0 ? trk_log(c) + trk_i_pda_log_e(pda, log_det, trk_i_mahalanobis2(NZ, l_inv, nu),
-                                                         t->ws.log_lr[cand[i]])
-                          : -(trk_real)INFINITY;
+            le[m] = trk_log(c) + trk_i_pda_log_e(pda, log_det, trk_i_mahalanobis2(NZ, l_inv, nu),
+                                                 t->ws.log_lr[cand[i]]);
             if (le[m] > mx) mx = le[m];
         }
         trk_real sum = 0;
@@ -218,18 +230,21 @@ static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan,
 }
 
 /* The survey's manoeuvre statistic (eqs 3.11-3.13) of the update: d2 of
- * the innovation given a detection, sum_i beta_i nu_i / (1 - beta0), with
- * the prediction's S of the sensor's R; 0 when nothing was gated. */
-static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn, trk_real beta0)
+ * the innovation given a detection, sum_i beta_i nu_i / sum_i beta_i (the
+ * sum, not 1 - beta0: beta0 near 1 keeps only its rounding), with the
+ * prediction's S of the sensor's R; 0 when nothing was gated or every
+ * detection's weight is 0. */
+static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn)
 {
-    if (set->n == 0 || !(beta0 < 1)) return 0;
-    trk_real nu[NZ] = {0, 0};
+    trk_real nu[NZ] = {0, 0}, sum = 0;
     for (size_t i = 0; i < set->n; i++) {
+        sum += set->w[i];
         nu[ZX] += set->w[i] * (set->z[NZ * i + ZX] - inn->z_pred[ZX]);
         nu[ZY] += set->w[i] * (set->z[NZ * i + ZY] - inn->z_pred[ZY]);
     }
-    nu[ZX] /= 1 - beta0;
-    nu[ZY] /= 1 - beta0;
+    if (!(sum > 0)) return 0;
+    nu[ZX] /= sum;
+    nu[ZY] /= sum;
     return trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
 }
 

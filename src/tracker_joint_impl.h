@@ -9,7 +9,11 @@
  *      so the same prediction: cheaper than keeping 64 of them), its
  *      posterior existence and conditional weights (trk_i_jpda_condition),
  *      the PDA combination with them, commit and look as the per-track
- *      update.
+ *      update. An IMM track (tracker_imm_impl.h) is mixed, predicted and
+ *      gated in step 1 with its mixture weights ln e_i; in step 3 it is
+ *      mixed and predicted again and imm_weights recomputes only its models'
+ *      rho_mi (w = NULL: the marginals in ws.w stay), then its models' updates
+ *      with the conditional weights.
  * psi_t is the predicted existence (trk_visibility_predict) with
  * track_visibility, else 1 (plain JPDA). A track alone in its cluster gets
  * its IPDA (PDA) update: the same weights, the same existence.

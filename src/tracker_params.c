@@ -255,8 +255,14 @@ static const char *tests_field(const struct trk_tracker_params *p, trk_status st
 }
 
 #if TRK_WITH_IMM
-void trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, trk_real p_stay)
+trk_status trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, trk_real p_stay)
 {
+    if (!p) return TRK_E_ARG;
+#if TRK_MAX_MODELS < 3
+    (void)omega_rad_s;
+    (void)p_stay;
+    return TRK_E_CAPACITY;
+#else
     struct trk_imm_params *m = &p->imm;
     memset(m, 0, sizeof *m);
     m->n_models = 3;
@@ -266,6 +272,8 @@ void trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, 
         m->q_m2_per_s3[i] = p->process_noise_q;
         for (int j = 0; j < 3; j++) m->p_switch[3 * i + j] = i == j ? p_stay : (1 - p_stay) / 2;
     }
+    return TRK_OK;
+#endif
 }
 #endif
 

@@ -5,9 +5,10 @@
  * matrix loops unroll (one shared copy in size-optimised builds).
  *
  * Included by tracker.c only: these functions use struct trk_tracker, whose
- * layout depends on TRK_WITH_CLUTTER_TESTS (config.h), and
- * tests/test_tracker_noclutter.mk rebuilds tracker.c alone in the other
- * configuration. */
+ * layout depends on TRK_WITH_CLUTTER_TESTS, TRK_WITH_JOINT and TRK_WITH_IMM
+ * (config.h), and tests/test_tracker_noclutter.mk, test_tracker_nojoint.mk
+ * and test_tracker_imm.mk rebuild tracker.c in another configuration. An
+ * IMM track's stages are tracker_imm_impl.h's, included at the end. */
 #ifndef TRK_TRACKER_UPDATE_IMPL_H
 #define TRK_TRACKER_UPDATE_IMPL_H
 
@@ -54,7 +55,7 @@ static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan
                               const uint16_t *cand, trk_real *w);
 static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_set *set,
                              trk_real beta0, struct pred *pr);
-static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn, trk_real beta0);
+static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn);
 #endif
 
 /* Predict track tr to the scan time, gate the scan's valid detections (the
@@ -95,8 +96,8 @@ static int track_gate(struct trk_tracker *t, const struct trk_track *tr, const s
 {
 #if TRK_WITH_IMM
     if (imm_on(t)) {
-        if (imm_gate(t, tr, scan, off, set)) return 1;
-        return imm_weights(t, scan, set, t->ws.cand + off, set->w) == TRK_OK ? 0 : -1;
+        const int cut = imm_gate(t, tr, scan, off, set);
+        return imm_weights(t, scan, set, t->ws.cand + off, set->w) != TRK_OK ? -1 : cut;
     }
 #endif
     return gate(t, tr, scan, &pr->pp, off, set);
@@ -306,7 +307,7 @@ static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk
     tr->time_us = scan->time_us;
     tr->n_gated_last = (uint16_t)set->n;
 #if TRK_WITH_IMM
-    tr->maneuver_d2 = maneuver_d2(set, &pr->inn, beta0);
+    tr->maneuver_d2 = maneuver_d2(set, &pr->inn);
     if (imm_on(t)) tr->imm = t->ws.imm.s;
 #endif
 }

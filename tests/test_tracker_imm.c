@@ -5,8 +5,12 @@
  *     clutter, per-track PDA and joint association);
  *   - a lone IMM track's update is the library's IMM-PDA
  *     (trk_imm_mix, trk_imm_predict, trk_imm_pda_update, trk_imm_combine),
- *     with either association;
- *   - the manoeuvre statistic is nu' S^-1 nu of the one detection;
+ *     with either association; it is confirmed, and terminated once its
+ *     target is gone;
+ *   - the manoeuvre statistic is nu' S^-1 nu of the one detection (a CV and
+ *     an IMM track);
+ *   - a second scan at the same time neither mixes nor moves; a model that
+ *     cannot be reached gates nothing;
  *   - a turning target: the turn model takes the mode probability, and the
  *     IMM track's position error over the turn is below the CV track's.
  * tests/test_tracker_imm.mk links this program with the library files whose
@@ -32,7 +36,7 @@ static void test_params(void **state)
     TRK_ASSERT_OK(trk_tracker_abi_check());
     trk_tracker_default_params(&p);
     assert_int_equal(p.imm.n_models, 0);
-    trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95));
+    TRK_ASSERT_OK(trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)));
     assert_int_equal(p.imm.n_models, 3);
     TRK_ASSERT_NEAR(p.imm.omega_rad_s[1], 0.035, 1e-7, 0);
     TRK_ASSERT_NEAR(p.imm.omega_rad_s[2], -0.035, 1e-7, 0);
@@ -42,7 +46,7 @@ static void test_params(void **state)
     p.imm.p_switch[0] = TRK_REAL_C(0.9); /* row 0 sums to 0.95 */
     TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
     assert_string_equal(field, "imm");
-    trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95));
+    TRK_ASSERT_OK(trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)));
     p.imm.n_models = TRK_MAX_MODELS + 1;
     TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_ARG);
     p.imm.n_models = 3;
@@ -114,7 +118,7 @@ static const struct trk_track *lone_track(enum trk_assoc_method assoc, struct tr
     trk_test_sonar_params(p, 1e-6);
     p->association = assoc;
     p->sensor[0].pd = TRK_REAL_C(0.95);
-    trk_tracker_imm_params(p, TRK_REAL_C(0.05), TRK_REAL_C(0.9));
+    TRK_ASSERT_OK(trk_tracker_imm_params(p, TRK_REAL_C(0.05), TRK_REAL_C(0.9)));
     p->imm.q_m2_per_s3[1] = p->imm.q_m2_per_s3[2] = TRK_REAL_C(0.01); /* the turns' own q */
     TRK_ASSERT_OK(trk_tracker_init(&tk, p));
     uint64_t rng = 11;
@@ -176,8 +180,19 @@ static void lone_is_imm_pda(enum trk_assoc_method assoc)
     for (int j = 0; j < TRK_CV2_NX; j++) TRK_ASSERT_NEAR(tr->x[j], x[j], TRK_TOL(1e-9, 1e-3), TRK_TOL(1e-11, 1e-5));
     for (int j = 0; j < TRK_CV2_NX * TRK_CV2_NX; j++)
         TRK_ASSERT_NEAR(tr->p[j], pc[j], TRK_TOL(1e-9, 1e-3), TRK_TOL(1e-10, 1e-4));
-    /* the turns' mode probabilities moved off the prior c */
     TRK_ASSERT_NEAR(tr->imm.mu[0] + tr->imm.mu[1] + tr->imm.mu[2], 1, TRK_TOL(1e-12, 1e-6), 0);
+    /* the target gone: the existence test ends the IMM track */
+    int ended = 0;
+    for (int k = 9; k < 40 && !ended; k++) {
+        const struct trk_scan empty = {SCAN_US(k), 0, 0, NULL};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &empty, &rep));
+        if (rep.n_terminated > 0) {
+            ended = k;
+            assert_int_equal(tr->status, TRK_TRACK_TERMINATED);
+            assert_int_equal(tr->end_reason, TRK_END_TERMINATED);
+        }
+    }
+    assert_true(ended > 9); /* not at once: it coasts on its models */
 }
 
 static void test_lone_track_is_imm_pda(void **state)
@@ -221,6 +236,68 @@ static void test_maneuver_d2(void **state)
     assert_true(tr->maneuver_d2 == 0);
 }
 
+/* An IMM track's manoeuvre statistic with one detection: nu' S^-1 nu with
+ * the S of its combined prediction (the models mixed, predicted and
+ * combined with the predicted mode probabilities). */
+static void test_maneuver_d2_imm(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const struct trk_track *tr = lone_track(TRK_ASSOC_PDA, &p);
+    struct trk_imm_state s = tr->imm;
+    trk_real c[TRK_MAX_MODELS], x[TRK_CV2_NX], pc[TRK_CV2_NX * TRK_CV2_NX];
+    TRK_ASSERT_OK(trk_imm_mix(&p.imm, &s, c));
+    TRK_ASSERT_OK(trk_imm_predict(&p.imm, (trk_real)DT_S, &s));
+    for (int m = 0; m < p.imm.n_models; m++) s.mu[m] = c[m];
+    trk_imm_combine(&p.imm, &s, x, pc);
+    struct trk_innovation inn;
+    TRK_ASSERT_OK(trk_kalman_innovation(TRK_CV2_NX, TRK_CV2_NZ, trk_cv2_h, tk.r[0], x, pc, &inn));
+    const trk_real nu[2] = {-5, 7};
+    struct trk_detection d = trk_test_det_at(inn.z_pred[TRK_CV2_ZX] + nu[0], inn.z_pred[TRK_CV2_ZY] + nu[1]);
+    const struct trk_scan scan = {SCAN_US(8), 0, 1, &d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+    assert_int_equal(tr->n_gated_last, 1);
+    TRK_ASSERT_NEAR(tr->maneuver_d2, trk_gate_d2(&inn, nu), 0, TRK_TOL(1e-9, 1e-4));
+}
+
+/* A second scan at the same time (another sensor, here empty) neither
+ * mixes nor moves: the mode probabilities and the models stay. A model that
+ * cannot be reached (p_stay = 1, mu_m = 0) gates nothing: a detection at its
+ * prediction, far from the others', is not the track's. */
+static void test_same_time_and_unreachable(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const struct trk_track *tr = lone_track(TRK_ASSOC_PDA, &p);
+    const struct trk_imm_state before = tr->imm;
+    const struct trk_scan again = {tr->time_us, 0, 0, NULL};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &again, NULL));
+    for (int m = 0; m < 3; m++) {
+        TRK_ASSERT_NEAR(tr->imm.mu[m], before.mu[m], TRK_TOL(1e-12, 1e-6), 0);
+        for (int j = 0; j < TRK_CV2_NX; j++) TRK_ASSERT_NEAR(tr->imm.x[m][j], before.x[m][j], 1e-9, 0);
+    }
+    for (int assoc = 0; assoc < 2; assoc++) {
+        tr = lone_track(assoc ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA, &p);
+        p.imm.p_switch[0] = p.imm.p_switch[4] = p.imm.p_switch[8] = 1;
+        p.imm.p_switch[1] = p.imm.p_switch[2] = p.imm.p_switch[3] = 0;
+        p.imm.p_switch[5] = p.imm.p_switch[6] = p.imm.p_switch[7] = 0;
+        tk.params.imm = p.imm; /* the same track, its switching made the identity */
+        struct trk_track *w = &tk.track[tr - tk.track];
+        w->imm.mu[0] = 1;
+        w->imm.mu[1] = w->imm.mu[2] = 0;
+        w->imm.x[1][TRK_CV2_X] += 8000; /* the left turn's estimate, stale and far away */
+        const double far_x = (double)w->imm.x[1][TRK_CV2_X] + (double)w->imm.x[1][TRK_CV2_VX] * DT_S;
+        const double far_y = (double)w->imm.x[1][TRK_CV2_Y] + (double)w->imm.x[1][TRK_CV2_VY] * DT_S;
+        struct trk_detection d = trk_test_det_at(far_x, far_y);
+        const struct trk_scan scan = {SCAN_US(8), 0, 1, &d};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+        assert_int_equal(tr->n_gated_last, 0);
+        assert_int_equal(tr->n_misses_in_row, 1);
+        assert_true(tr->imm.mu[1] == 0 && tr->imm.mu[2] == 0);
+    }
+}
+
 /* A target at 6 m/s: 15 scans straight east, 30 scans turning left at
  * 1.5 deg/s, P_D 1, sigma 5 m, no clutter. Position errors of the one
  * confirmed track of the CV tracker (tk) and of the IMM tracker (tk2). */
@@ -231,7 +308,7 @@ static void test_turn(void **state)
     trk_test_sonar_params(&p, 1e-6);
     p.sensor[0].pd = TRK_REAL_C(0.99);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    trk_tracker_imm_params(&p, TRK_REAL_C(0.0262), TRK_REAL_C(0.95)); /* turns at 1.5 deg/s */
+    TRK_ASSERT_OK(trk_tracker_imm_params(&p, TRK_REAL_C(0.0262), TRK_REAL_C(0.95))); /* turns at 1.5 deg/s */
     TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
     const double w = 1.5 * 3.14159265358979323846 / 180;
     double px = 0, py = 0, heading = 0;
@@ -256,12 +333,17 @@ static void test_turn(void **state)
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &scan, NULL));
         if (k < 6) continue;
         const struct trk_track *a = NULL, *b = NULL;
+        int n_imm = 0;
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             const struct trk_track *t1 = trk_tracker_track(&tk, i), *t2 = trk_tracker_track(&tk2, i);
             if (t1 && t1->status == TRK_TRACK_CONFIRMED) a = t1;
-            if (t2 && t2->status == TRK_TRACK_CONFIRMED) b = t2;
+            if (t2 && t2->status == TRK_TRACK_CONFIRMED) {
+                b = t2;
+                n_imm++;
+            }
         }
         assert_non_null(b);
+        assert_int_equal(n_imm, 1);
         if (id_imm == 0) id_imm = b->id;
         assert_int_equal(b->id, id_imm); /* one IMM track throughout */
         if (k >= 8 && k <= 15) {
@@ -297,6 +379,8 @@ int main(void)
         cmocka_unit_test(test_one_model_is_cv),
         cmocka_unit_test(test_lone_track_is_imm_pda),
         cmocka_unit_test(test_maneuver_d2),
+        cmocka_unit_test(test_maneuver_d2_imm),
+        cmocka_unit_test(test_same_time_and_unreachable),
         cmocka_unit_test(test_turn),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

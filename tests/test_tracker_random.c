@@ -100,7 +100,7 @@ static void test_random_scans(void **state)
         if (cfg == 1 || cfg == 4) p.process_noise_q = 0;
         if (cfg == 2) p.init_speed_sigma_mps = TRK_REAL_C(1e7);
 #if TRK_WITH_IMM
-        if (cfg >= 3) trk_tracker_imm_params(&p, TRK_REAL_C(0.0524), TRK_REAL_C(0.9));
+        if (cfg >= 3) TRK_ASSERT_OK(trk_tracker_imm_params(&p, TRK_REAL_C(0.0524), TRK_REAL_C(0.9)));
         if (cfg == 3) p.association = TRK_ASSOC_PDA;
 #endif
         TRK_ASSERT_OK(trk_tracker_init(&tk, &p));

@@ -360,9 +360,12 @@ void trk_tracker_mn_kn_params(struct trk_tracker_params *p);
 /* The manoeuvre models of README "Manoeuvres" into p->imm: CV, and
  * coordinated turns at +omega_rad_s (left) and -omega_rad_s (right), each
  * with p->process_noise_q; the model stays with probability p_stay per scan
- * and switches to each other one with (1 - p_stay) / 2. p_stay in [0, 1],
- * 0 < omega_rad_s <= 1 (unchecked here: trk_tracker_init checks p->imm). */
-void trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, trk_real p_stay);
+ * and switches to each other one with (1 - p_stay) / 2. Meant for
+ * 0 < omega_rad_s <= 1 and p_stay in (0, 1): with p_stay = 1 the turn models
+ * are never reached from CV (and never gate; README "Manoeuvres"); values
+ * are checked by trk_tracker_init, not here. TRK_E_ARG p NULL,
+ * TRK_E_CAPACITY a build with TRK_MAX_MODELS < 3 (p untouched). */
+TRK_NODISCARD trk_status trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, trk_real p_stay);
 #endif
 
 /* ---------------------------------------------------------------- tracks */
@@ -413,9 +416,10 @@ struct trk_track {
     trk_real maneuver_d2;             /* the survey's manoeuvre statistic (eqs 3.11-3.13):
                                          d2 = nu' S^-1 nu of the last scan's innovation
                                          given a detection, nu = sum_i beta_i nu_i /
-                                         (1 - beta0), S that of the sensor's R; chi-square
-                                         with 2 degrees of freedom while the model fits
-                                         (e.g. > 9.21: 1 %); 0 when nothing was gated */
+                                         sum_i beta_i, S that of the prediction with the
+                                         sensor's R; chi-square with 2 degrees of freedom
+                                         while the model fits (e.g. > 9.21: 1 %); 0 when
+                                         nothing was gated or every weight is 0 */
     struct trk_imm_state imm;         /* an IMM track (params.imm.n_models >= 1): its
                                          models' estimates and mode probabilities imm.mu;
                                          x and P above are their combination */
@@ -537,8 +541,9 @@ struct trk_tracker {
             trk_real c[TRK_MAX_MODELS];                        /* predicted mode probabilities */
             trk_real pht[TRK_MAX_MODELS][TRK_CV2_NX * TRK_CV2_NZ];
             struct trk_innovation inn[TRK_MAX_MODELS];         /* per model, the sensor's R */
-            trk_real rho[TRK_MAX_MODELS][TRK_MAX_DETECTIONS];  /* ln e_mi, then P(model m |
-                                                                  detection i), then beta_mi */
+            trk_real rho[TRK_MAX_MODELS][TRK_MAX_DETECTIONS];  /* rho_mi = P(model m |
+                                                                  detection i), then beta_i
+                                                                  rho_mi, then beta_mi */
         } imm;
 #endif
         union {                                                /* used one at a time: */

@@ -103,16 +103,20 @@ void tcfg_params(const struct tcfg *c, struct trk_tracker_params *out)
     /* IMM tracks from the imm.* keys: CV (process_noise_q) and turns at
      * +-imm.turn_rate_dps (imm.turn_q, 0 = process_noise_q) */
     memset(&out->imm, 0, sizeof out->imm);
-    if (c->imm_turn_rate_dps > 0) tcfg_imm_models(out, c->imm_turn_rate_dps, c->imm_p_stay, c->imm_turn_q);
+    if (c->imm_turn_rate_dps > 0 &&
+        tcfg_imm_models(out, c->imm_turn_rate_dps, c->imm_p_stay, c->imm_turn_q) != TRK_OK) /* refused at tcfg_set */
+        memset(&out->imm, 0, sizeof out->imm);
 #endif
 }
 
 #if TRK_WITH_IMM
-void tcfg_imm_models(struct trk_tracker_params *p, double turn_rate_dps, double p_stay, double turn_q)
+trk_status tcfg_imm_models(struct trk_tracker_params *p, double turn_rate_dps, double p_stay, double turn_q)
 {
-    trk_tracker_imm_params(p, (trk_real)(turn_rate_dps * 3.14159265358979323846 / 180), (trk_real)p_stay);
-    if (turn_q > 0)
+    const trk_status st =
+        trk_tracker_imm_params(p, (trk_real)(turn_rate_dps * 3.14159265358979323846 / 180), (trk_real)p_stay);
+    if (st == TRK_OK && turn_q > 0)
         for (int m = 1; m < p->imm.n_models; m++) p->imm.q_m2_per_s3[m] = (trk_real)turn_q;
+    return st;
 }
 #endif
 
@@ -458,6 +462,10 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
 #if TRK_WITH_IMM
     if (strcmp(key, "imm.turn_rate_dps") == 0) {
         const struct range r = {0, 57.29, 0, 0}; /* the library's |omega| <= 1 rad/s */
+        if (TRK_MAX_MODELS < 3) {
+            snprintf(err, n, "IMM tracks of CV and two turns need TRK_MAX_MODELS >= 3 (this build: %d)", TRK_MAX_MODELS);
+            return -1;
+        }
         return get_double(v, r, &c->imm_turn_rate_dps, err, n);
     }
     if (strcmp(key, "imm.p_stay") == 0) return get_double(v, R_PROB_CC, &c->imm_p_stay, err, n);

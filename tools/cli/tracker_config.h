@@ -99,8 +99,8 @@ struct tcfg {
 /* p->imm from the imm.* keys' meaning: CV (p->process_noise_q) and turns at
  * +-turn_rate_dps (trk_tracker_imm_params, p_stay), the turns' q turn_q
  * (0: p->process_noise_q). The one mapping, shared by tcfg_params and
- * trk-sim mtt's imm configuration. */
-void tcfg_imm_models(struct trk_tracker_params *p, double turn_rate_dps, double p_stay, double turn_q);
+ * trk-sim mtt's imm configuration. Statuses of trk_tracker_imm_params. */
+trk_status tcfg_imm_models(struct trk_tracker_params *p, double turn_rate_dps, double p_stay, double turn_q);
 #endif
 
 /* Defaults: trk_tracker_default_params() for the tracker, every sensor like

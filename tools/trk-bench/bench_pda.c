@@ -119,7 +119,8 @@ static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
     p->sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
     p->process_noise_q = TRK_REAL_C(0.01);
 #if TRK_WITH_IMM
-    if (cfg == SCAN_IMM) trk_tracker_imm_params(p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)); /* CV, turns at 2 deg/s */
+    if (cfg == SCAN_IMM && trk_tracker_imm_params(p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)) != TRK_OK) /* turns at 2 deg/s */
+        p->imm.n_models = 0;                                                                        /* (TRK_MAX_MODELS < 3) */
 #endif
 }
 

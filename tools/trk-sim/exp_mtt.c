@@ -182,9 +182,9 @@ struct imm_opts {
 #if TRK_WITH_IMM
 /* p->imm: CV at p->process_noise_q (--q) and turns at +-rate_dps with
  * turn_q (tcfg_imm_models; the defaults MTT_IMM_* and why: above). */
-static void imm_models(struct trk_tracker_params *p, const struct imm_opts *im)
+static trk_status imm_models(struct trk_tracker_params *p, const struct imm_opts *im)
 {
-    tcfg_imm_models(p, im->rate_dps, im->p_stay, im->turn_q);
+    return tcfg_imm_models(p, im->rate_dps, im->p_stay, im->turn_q);
 }
 #endif
 
@@ -215,7 +215,10 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
     }
     p.process_noise_q = (trk_real)q;
 #if TRK_WITH_IMM
-    if (kind == CFG_IMM) imm_models(&p, im);
+    if (kind == CFG_IMM && imm_models(&p, im) != TRK_OK) {
+        snprintf(err, n, "configuration imm needs a build with TRK_MAX_MODELS >= 3");
+        return -1;
+    }
 #endif
     memset(rt, 0, sizeof *rt);
     if (set->n > 0) {
