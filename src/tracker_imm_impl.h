@@ -87,6 +87,7 @@ static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr,
         for (int m = 0; m < mp->n_models; m++) t->ws.imm.c[m] = s->mu[m];
     }
     for (int m = 0; m < mp->n_models && st == TRK_OK; m++) {
+        t->ws.imm.log_c[m] = t->ws.imm.c[m] > 0 ? trk_log(t->ws.imm.c[m]) : -(trk_real)INFINITY;
         if (!(t->ws.imm.c[m] > 0)) continue; /* unreachable this scan: weight 0, never used */
         st = trk_i_pda_check(NX, s->x[m], s->p[m]);
         if (st == TRK_OK)
@@ -171,7 +172,7 @@ static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan
         trk_real le[TRK_MAX_MODELS], mx = -(trk_real)INFINITY;
         const trk_real nz_i[NZ] = {set->z[NZ * i + ZX], set->z[NZ * i + ZY]};
         for (int m = 0; m < n; m++) {
-            const trk_real c = t->ws.imm.c[m];
+            const trk_real c = t->ws.imm.c[m]; /* ln c_m once per track: ws.imm.log_c */
             le[m] = -(trk_real)INFINITY;
             if (!(c > 0)) continue;
             const struct trk_i_pda_pred pp = imm_model_pred(t, scan, m);
@@ -185,7 +186,7 @@ static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan
                 if (trk_i_pda_factor(NZ, s_own, l_own, &log_det) != TRK_OK) return TRK_E_NOT_SPD;
                 l_inv = l_own;
             }
-            le[m] = trk_log(c) + trk_i_pda_log_e(pda, log_det, trk_i_mahalanobis2(NZ, l_inv, nu),
+            le[m] = t->ws.imm.log_c[m] + trk_i_pda_log_e(pda, log_det, trk_i_mahalanobis2(NZ, l_inv, nu),
                                                  t->ws.log_lr[cand[i]]);
             if (le[m] > mx) mx = le[m];
         }

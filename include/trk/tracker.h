@@ -539,6 +539,7 @@ struct trk_tracker {
         struct {                                               /* one IMM track's update: */
             struct trk_imm_state s;                            /* mixed, predicted, posterior */
             trk_real c[TRK_MAX_MODELS];                        /* predicted mode probabilities */
+            trk_real log_c[TRK_MAX_MODELS];                    /* ... their logarithms (-inf: 0) */
             trk_real pht[TRK_MAX_MODELS][TRK_CV2_NX * TRK_CV2_NZ];
             struct trk_innovation inn[TRK_MAX_MODELS];         /* per model, the sensor's R */
             trk_real rho[TRK_MAX_MODELS][TRK_MAX_DETECTIONS];  /* rho_mi = P(model m |
