@@ -16,6 +16,7 @@
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
+static void order_by_x(struct trk_tracker *t);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 #if TRK_WITH_JOINT
 static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
@@ -144,9 +145,10 @@ static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, s
 }
 
 /* The valid detections into the workspace: those with the sensor's
- * covariance first [0, n_shared), own-covariance ones after, each group in
- * scan order; rejections are counted. The amplitudes (dB) are then doubled
- * (see clutter_look in tracker_update_impl.h). */
+ * covariance first [0, n_shared), in x order (gating's spatial index,
+ * x_window in tracker_update_impl.h), own-covariance ones after, in scan
+ * order; rejections are counted. The amplitudes (dB) are then doubled (see
+ * clutter_look in tracker_update_impl.h). */
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
@@ -160,7 +162,49 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, 
             if ((scan->detections[i].has_cov != 0) == own) load_detection(t, scan, i, &au, rep);
         if (!own) t->ws.n_shared = t->ws.n_valid;
     }
+    order_by_x(t);
     for (size_t k = 0; k + 1 < t->ws.n_amp; k++) t->ws.amp_db[t->ws.n_amp + k] = t->ws.amp_db[k];
+}
+
+/* Workspace detection k moved to j (its amplitude stays where amp_pos
+ * says). */
+static void ws_move(struct trk_tracker *t, size_t j, size_t k)
+{
+    t->ws.x[j] = t->ws.x[k];
+    t->ws.y[j] = t->ws.y[k];
+    t->ws.src[j] = t->ws.src[k];
+    t->ws.log_lr[j] = t->ws.log_lr[k];
+    t->ws.amp_pos[j] = t->ws.amp_pos[k];
+}
+
+/* The shared-covariance group [0, n_shared) sorted by x, once per scan
+ * (sort_by_x: O(n) for spread positions): position j takes detection
+ * idx[j], cycle by cycle in place, with used[] (all 0 at load) marking the
+ * positions filled. */
+static void order_by_x(struct trk_tracker *t)
+{
+    const size_t n = t->ws.n_shared;
+    uint16_t *idx = t->ws.cand; /* free until the first track is gated */
+    for (size_t j = 0; j < n; j++) idx[j] = (uint16_t)j;
+    sort_by_x(t, idx, n);
+    for (size_t i = 0; i < n; i++) {
+        if (t->ws.used[i] || idx[i] == i) continue;
+        const trk_real x = t->ws.x[i], y = t->ws.y[i], llr = t->ws.log_lr[i];
+        const uint16_t src = t->ws.src[i];
+        const int16_t amp = t->ws.amp_pos[i];
+        size_t j = i;
+        for (size_t k = idx[j]; k != i; j = k, k = idx[j]) {
+            ws_move(t, j, k);
+            t->ws.used[j] = 1;
+        }
+        t->ws.x[j] = x;
+        t->ws.y[j] = y;
+        t->ws.src[j] = src;
+        t->ws.log_lr[j] = llr;
+        t->ws.amp_pos[j] = amp;
+        t->ws.used[j] = 1;
+    }
+    for (size_t j = 0; j < n; j++) t->ws.used[j] = 0;
 }
 
 static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_scan_report *rep)
