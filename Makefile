@@ -14,6 +14,7 @@
 #                        cross builds, ...); one line per step, a summary line
 #                        per configuration and a final "test: N passed, N failed"
 #   make bench           trk-bench in double and float
+#   make bench-instr     instructions per scan_64x256 (callgrind), double and float
 #   make demo            trk's main job (see README)
 #   make cross           libtrk for Cortex-M (build/cross/<target>/libtrk.a)
 #   make check-heap      fail if libtrk references a heap/stdio/abort symbol
@@ -339,6 +340,20 @@ bench:
 	@echo "== double"; build/bin/trk-bench
 	@echo "== float";  build/float/bin/trk-bench
 	@echo "== float, TRK_WITH_IMM=1 (3 models)"; build/imm-float/bin/trk-bench scan_64x256 sizeof_tracker
+
+# The instruction count of one scan_64x256 (issue 19): machine-independent,
+# unlike the times. trk-bench scan_64x256_instr under callgrind with the
+# instrumentation on for the timed scans only; Ir / scans.
+bench-instr:
+	$(MAKE) --no-print-directory BUILD=build OPT=-O2 build/bin/trk-bench
+	$(MAKE) --no-print-directory BUILD=build/float OPT=-O2 REAL=float build/float/bin/trk-bench
+	@for b in build build/float; do \
+	  out=$$(valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file=$$b/bench-instr.callgrind \
+	    $$b/bin/trk-bench scan_64x256_instr 2>/dev/null | awk '$$2 == "scan_64x256_instr_scans" { print $$3 }'); \
+	  ir=$$(awk '/^totals:/ { print $$2; exit }' $$b/bench-instr.callgrind); \
+	  test -n "$$out" && test -n "$$ir" || { echo "bench-instr: no count from $$b"; exit 1; }; \
+	  echo "bench scan_64x256_instructions_$$(test $$b = build && echo double || echo float) $$(awk -v i=$$ir -v n=$$out 'BEGIN { printf "%.0f", i / n }') instructions"; \
+	done
 
 demo: all
 	$(BUILD)/bin/example-firmware_loop

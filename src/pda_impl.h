@@ -285,24 +285,28 @@ TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const str
         w11 -= sy1 * sy1 * inv_b;
     }
     /* Joseph: A = P - K (P H')', E = A H' - K R (trk_i_joseph_upper) */
-    trk_real e0[N], e1[N];
+    trk_real e0[N], e1[N], ph0[N], ph1[N];
     for (int a = 0; a < N; a++) {
-        const trk_real a0 = p[a * N + TRK_CV2_X] - (k0[a] * p[TRK_CV2_X * N + TRK_CV2_X] + k1[a] * p[TRK_CV2_X * N + TRK_CV2_Y]);
-        const trk_real a2 = p[a * N + TRK_CV2_Y] - (k0[a] * p[TRK_CV2_Y * N + TRK_CV2_X] + k1[a] * p[TRK_CV2_Y * N + TRK_CV2_Y]);
+        ph0[a] = p[a * N + TRK_CV2_X];
+        ph1[a] = p[a * N + TRK_CV2_Y];
+    }
+    for (int a = 0; a < N; a++) {
+        const trk_real a0 = ph0[a] - (k0[a] * ph0[TRK_CV2_X] + k1[a] * ph1[TRK_CV2_X]);
+        const trk_real a2 = ph1[a] - (k0[a] * ph0[TRK_CV2_Y] + k1[a] * ph1[TRK_CV2_Y]);
         e0[a] = a0 - (k0[a] * r[0] + k1[a] * r[2]);
         e1[a] = a2 - (k0[a] * r[1] + k1[a] * r[3]);
     }
-    /* P = beta0 (P- + dxbar dxbar') + B P_c + u W u' + B d d', upper
-     * triangle, then mirrored */
+    /* P = beta0 (P- + dxbar dxbar') + B P_c + u W u' + B d d' (B = 0: W,
+     * dxbar and d are 0), with P_c = A - E K', as one sum of rank-one
+     * terms per entry of the upper triangle, then mirrored */
     for (int a = 0; a < N; a++) {
-        const trk_real uw0 = u0[a] * w00 + u1[a] * w01, uw1 = u0[a] * w01 + u1[a] * w11;
-        for (int b = a; b < N; b++) {
-            const trk_real aab = p[a * N + b] - (k0[a] * p[b * N + TRK_CV2_X] + k1[a] * p[b * N + TRK_CV2_Y]);
-            const trk_real pc = aab - (e0[a] * k0[b] + e1[a] * k1[b]);
-            /* (B = 0: W, dxbar and d are 0) */
-            acc[a * N + b] = beta0 * (p[a * N + b] + dx[a] * dx[b]) + bsum * (pc + d[a] * d[b]) + uw0 * u0[b] +
-                             uw1 * u1[b];
-        }
+        const trk_real c_p = beta0 + bsum;
+        const trk_real c_k0 = bsum * k0[a], c_k1 = bsum * k1[a], c_e0 = bsum * e0[a], c_e1 = bsum * e1[a];
+        const trk_real c_dx = beta0 * dx[a], c_d = bsum * d[a];
+        const trk_real c_u0 = u0[a] * w00 + u1[a] * w01, c_u1 = u0[a] * w01 + u1[a] * w11;
+        for (int b = a; b < N; b++)
+            acc[a * N + b] = c_p * p[a * N + b] - (c_k0 * ph0[b] + c_k1 * ph1[b]) - (c_e0 * k0[b] + c_e1 * k1[b]) +
+                             (c_dx * dx[b] + c_d * d[b]) + (c_u0 * u0[b] + c_u1 * u1[b]);
     }
     for (int a = 0; a < N; a++) {
         x_new[a] = pr->x[a] + dx[a];

@@ -280,6 +280,39 @@ TRK_BENCH(scan_64x256)
     scan_bench(names, cfg, 2);
 }
 
+/* The instruction count of one scan_64x256 (issue 19: a figure that does
+ * not depend on the machine's load): the default configuration's timed
+ * scans once, with callgrind's instrumentation on for them alone (make
+ * bench-instr runs this under valgrind --instr-atstart=no and divides its
+ * count by the scans printed here; without valgrind the macros do
+ * nothing). */
+TRK_BENCH(scan_64x256_instr)
+{
+    if (TRK_MAX_TRACKS < N_TGT || TRK_MAX_DETECTIONS < N_DET) {
+        bench_print("scan_64x256_instr_skipped_capacity", 0, "-");
+        return;
+    }
+    struct scan_job *j = scan_job_new();
+    struct trk_tracker_params p;
+    if (!j) return;
+    scan_params(SCAN_DEFAULT, &p);
+    int ok = trk_tracker_init(&j->tk, &p) == TRK_OK;
+    for (int k = 0; ok && k < 4; k++) {
+        j->scan[k].time_us = (int64_t)k * 1000000;
+        j->scan[k].n_detections = N_TGT;
+        ok = trk_tracker_process_scan(&j->tk, &j->scan[k], NULL) == TRK_OK;
+        j->scan[k].n_detections = N_DET;
+    }
+    BENCH_INSTR_START();
+    for (int k = 4; ok && k < N_SCANS; k++) {
+        j->scan[k].time_us = (int64_t)k * 1000000;
+        ok = trk_tracker_process_scan(&j->tk, &j->scan[k], &j->rep) == TRK_OK;
+    }
+    BENCH_INSTR_STOP();
+    if (ok) bench_print("scan_64x256_instr_scans", N_SCANS - 4, "scans");
+    free(j);
+}
+
 TRK_BENCH(scan_64x256_mn_kn)
 {
     static const char *const names[] = {"scan_64x256_mn_kn"};
