@@ -298,13 +298,14 @@ TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const str
     }
     /* P = beta0 (P- + dxbar dxbar') + B P_c + u W u' + B d d' (B = 0: W,
      * dxbar and d are 0), with P_c = A - E K', as one sum of rank-one
-     * terms per entry of the upper triangle, then mirrored */
+     * terms per entry: whole rows (they vectorise), then the upper
+     * triangle mirrored */
+    const trk_real c_p = beta0 + bsum;
     for (int a = 0; a < N; a++) {
-        const trk_real c_p = beta0 + bsum;
         const trk_real c_k0 = bsum * k0[a], c_k1 = bsum * k1[a], c_e0 = bsum * e0[a], c_e1 = bsum * e1[a];
         const trk_real c_dx = beta0 * dx[a], c_d = bsum * d[a];
         const trk_real c_u0 = u0[a] * w00 + u1[a] * w01, c_u1 = u0[a] * w01 + u1[a] * w11;
-        for (int b = a; b < N; b++)
+        for (int b = 0; b < N; b++)
             acc[a * N + b] = c_p * p[a * N + b] - (c_k0 * ph0[b] + c_k1 * ph1[b]) - (c_e0 * k0[b] + c_e1 * k1[b]) +
                              (c_dx * dx[b] + c_d * d[b]) + (c_u0 * u0[b] + c_u1 * u1[b]);
     }
