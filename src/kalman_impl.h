@@ -145,24 +145,25 @@ TRK_INLINE void trk_i_joseph_upper(int nx, int nz, const trk_real *h, const int 
                                    const trk_real *k, const trk_real *p, const trk_real *pht, trk_real c,
                                    trk_real *pc)
 {
-    trk_real a_m[TRK_MAX_STATE * TRK_MAX_STATE], e[TRK_MAX_STATE * TRK_MAX_MEAS];
-    for (int i = 0; i < nx; i++)
-        for (int j = 0; j < nx; j++) {
-            trk_real s = p[i * nx + j];
-            for (int t = 0; t < nz; t++) s -= k[i * nz + t] * pht[j * nz + t];
-            a_m[i * nx + j] = s; /* A */
-        }
-    trk_i_mul_ht(nx, nx, nz, a_m, h, sel, e); /* A H' */
+    /* A H' = P H' - K (H P H') (H P H' = H pht, nz x nz), so A itself is
+     * formed only where Pc needs it, entry by entry (no nx x nx array) */
+    trk_real hph[TRK_MAX_MEAS * TRK_MAX_MEAS], e[TRK_MAX_STATE * TRK_MAX_MEAS];
+    if (sel) {
+        for (int j = 0; j < nz; j++)
+            for (int t = 0; t < nz; t++) hph[j * nz + t] = pht[sel[j] * nz + t];
+    } else {
+        trk_i_mat_mul(nz, nx, nz, h, pht, hph);
+    }
     for (int i = 0; i < nx; i++)
         for (int j = 0; j < nz; j++) {
-            trk_real s = 0;
-            for (int t = 0; t < nz; t++) s += k[i * nz + t] * r[t * nz + j];
-            e[i * nz + j] -= s; /* - K R */
+            trk_real s = pht[i * nz + j];
+            for (int t = 0; t < nz; t++) s -= k[i * nz + t] * (hph[j * nz + t] + r[t * nz + j]);
+            e[i * nz + j] = s; /* A H' - K R */
         }
     for (int i = 0; i < nx; i++)
         for (int j = i; j < nx; j++) {
-            trk_real s = a_m[i * nx + j];
-            for (int t = 0; t < nz; t++) s -= e[i * nz + t] * k[j * nz + t];
+            trk_real s = p[i * nx + j];
+            for (int t = 0; t < nz; t++) s -= k[i * nz + t] * pht[j * nz + t] + e[i * nz + t] * k[j * nz + t];
             pc[i * nx + j] = c * s; /* A - E K' is symmetric in exact arithmetic */
         }
 }
