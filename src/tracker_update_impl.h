@@ -312,9 +312,13 @@ static trk_status update_visibility(const struct trk_tracker *t, const struct tr
                                     struct trk_visibility *vis)
 {
     trk_real log_sum = trk_i_pda_log_sum_e(out);
-    if (set->n > 0)
-        log_sum = out->lambda > 0 ? log_sum - trk_log(pda->params.pd) - trk_log(out->lambda)
-                                  : (trk_real)INFINITY;
+    if (set->n > 0) {
+        /* ln P_D and, for parametric clutter, ln lambda from trk_pda_init's logs */
+        const trk_real log_pd = pda->log_pd_norm + TRK_REAL_C(0.5) * (trk_real)pda->params.nz * TRK_LN_2PI;
+        const trk_real log_lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->log_e0_param - pda->log_miss
+                                                                                 : trk_log(out->lambda);
+        log_sum = out->lambda > 0 ? log_sum - log_pd - log_lambda : (trk_real)INFINITY;
+    }
     return trk_visibility_update_log(&t->vis_model, vis, pda->params.pd, pda->params.gate_prob, log_sum);
 }
 
