@@ -82,3 +82,11 @@ TEST_EXTRA += test-lcm-udpm
 TEST_EXTRA_DEPS_test-lcm-udpm := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
 test-lcm-udpm: $(TEST_EXTRA_DEPS_test-lcm-udpm)
 	@sh tests/lcm_udpm_netns.sh $(BUILD)
+
+# --- the README's LCM walk-through, run literally (offline and live over
+# udpm in a network namespace): as many confirmed tracks as targets
+.PHONY: test-lcm-walkthrough
+TEST_EXTRA += test-lcm-walkthrough
+TEST_EXTRA_DEPS_test-lcm-walkthrough := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
+test-lcm-walkthrough: $(TEST_EXTRA_DEPS_test-lcm-walkthrough)
+	@$(if $(filter build,$(BUILD)),sh tests/lcm_walkthrough.sh README.md,echo "test-lcm-walkthrough: the README's commands name build/bin: run with BUILD=build")
