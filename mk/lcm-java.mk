@@ -59,9 +59,13 @@ test-lcm-spy: $(TEST_EXTRA_DEPS_test-lcm-spy)
 	  sh tests/lcm_spy.sh $(BUILD) $(LCM_JAR) $(SPY_CHECK_JAR); fi
 
 # --- install: the jar and the launcher (a note when no JDK or lcm.jar)
-INSTALL_EXTRA += if command -v javac > /dev/null 2>&1 && command -v jar > /dev/null 2>&1 && [ -f $(LCM_JAVA_LIB) ]; then \
-  $(MAKE) --no-print-directory $(LCM_JAR) && \
-  install -d $(DESTDIR)$(PREFIX)/share/java $(DESTDIR)$(PREFIX)/bin && \
-  install -m 644 $(LCM_JAR) $(DESTDIR)$(PREFIX)/share/java/ && \
-  install -m 755 tools/lcm/java/trk-lcm-spy $(DESTDIR)$(PREFIX)/bin/; \
-  else echo "install: no javac/jar or $(LCM_JAVA_LIB): trk_lcm.jar and trk-lcm-spy not installed"; fi ;
+.PHONY: install-java
+install: install-java
+install-java:
+	@if command -v javac > /dev/null 2>&1 && command -v jar > /dev/null 2>&1 && [ -f $(LCM_JAVA_LIB) ]; then \
+	  $(MAKE) --no-print-directory $(LCM_JAR) && \
+	  install -d $(DESTDIR)$(PREFIX)/share/java $(DESTDIR)$(PREFIX)/bin && \
+	  install -m 644 $(LCM_JAR) $(DESTDIR)$(PREFIX)/share/java/ && \
+	  install -m 755 tools/lcm/java/trk-lcm-spy $(DESTDIR)$(PREFIX)/bin/ && \
+	  echo "install: $(PREFIX)/share/java/trk_lcm.jar, $(PREFIX)/bin/trk-lcm-spy"; \
+	else echo "install: no javac/jar or $(LCM_JAVA_LIB): trk_lcm.jar and trk-lcm-spy not installed"; fi

@@ -18,3 +18,14 @@ python-types: $(LCM_FILES)
 	rm -rf tools/python/trk
 	lcm-gen -p --ppath tools/python $(LCM_FILES)
 	@test -s tools/python/trk/__init__.py || { echo "lcm-gen did not write tools/python/trk"; exit 1; }
+
+# --- install: the types, the readers and the example into
+# $(PREFIX)/share/trk/python (PYTHONPATH=$(PREFIX)/share/trk/python)
+PY_SHARE = $(DESTDIR)$(PREFIX)/share/trk/python
+.PHONY: install-python
+install: install-python
+install-python:
+	install -d $(PY_SHARE)/trk
+	install -m 644 tools/python/lcmlog.py tools/python/trklog.py tools/python/trkcsv.py $(PY_SHARE)/
+	install -m 755 tools/python/plot_track_log.py $(PY_SHARE)/
+	install -m 644 tools/python/trk/*.py $(PY_SHARE)/trk/

@@ -7,6 +7,7 @@
 # and the committed types against lcm-gen's output.
 # Needs python3 with numpy (Debian: python3-numpy; .ci/run installs it).
 set -u
+export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the checkout
 BUILD=${1:-build}
 B=$BUILD/bin
 T=$(mktemp -d "${TMPDIR:-/tmp}/trk-python.XXXXXX")
