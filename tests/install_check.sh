@@ -24,8 +24,8 @@ set -u
 BUILD=$1 D=$2
 P=$D/prefix
 export PKG_CONFIG_PATH=$P/lib/pkgconfig
-fail() { echo "install-check: FAIL: $*"; exit 1; }
-ok() { echo "install-check: ok: $*"; }
+STEP=install-check
+. tests/step_lib.sh
 CFLAGS_STRICT="-std=c99 -Wall -Wextra -Wpedantic -Werror"
 CCS=${CC:-cc}
 for c in gcc clang; do
@@ -114,11 +114,7 @@ tools=$(cd "$P/bin" && ls | tr '\n' ' ')
 "$P/bin/trk-sonar-sim" --out "$D/det.lcmlog" --scans 20 --targets 2 --quiet > /dev/null || fail "installed trk-sonar-sim exited $?"
 "$P/bin/trk-lcm-bridge" --replay "$D/det.lcmlog" --out "$D/tracks.lcmlog" --keep-input --quiet > /dev/null ||
     fail "installed trk-lcm-bridge exited $?"
-PY=
-for p in ${PYTHON:-} python3 /usr/bin/python3; do
-    if command -v "$p" > /dev/null 2>&1 && "$p" -c 'import numpy' > /dev/null 2>&1; then PY=$p; break; fi
-done
-if [ -n "$PY" ]; then
+if find_python; then
     out=$(cd "$D" && PYTHONDONTWRITEBYTECODE=1 PYTHONPATH="$P/share/trk/python" $PY -c '
 import lcmlog, trklog, trk
 lists = trklog.track_lists("tracks.lcmlog")

@@ -20,11 +20,8 @@
 set -u
 BUILD=$1 TYPES_JAR=$2 CHECK_JAR=$3
 B=$BUILD/bin
-T=$(mktemp -d "${TMPDIR:-/tmp}/trk-spy.XXXXXX")
-trap '[ -n "${KEEP:-}" ] || rm -rf "$T"' EXIT INT TERM
-fail() { echo "test-lcm-spy: FAIL: $*"; exit 1; }
-ok() { echo "test-lcm-spy: ok: $*"; }
-skip() { echo "test-lcm-spy: SKIPPED: $*"; exit 0; }
+STEP=test-lcm-spy
+. tests/step_lib.sh
 
 command -v xvfb-run > /dev/null 2>&1 && command -v Xvfb > /dev/null 2>&1 || skip "no xvfb-run/Xvfb (apt-get install xvfb xauth)"
 command -v xauth > /dev/null 2>&1 || skip "no xauth (apt-get install xauth)"

@@ -18,10 +18,8 @@
 set -u
 README=${1:-README.md}
 ROOT=$(pwd)
-T=$(mktemp -d "${TMPDIR:-/tmp}/trk-walkthrough.XXXXXX")
-trap 'rm -rf "$T"' EXIT INT TERM
-fail() { echo "test-lcm-walkthrough: FAIL: $*"; exit 1; }
-ok() { echo "test-lcm-walkthrough: ok: $*"; }
+STEP=test-lcm-walkthrough
+. tests/step_lib.sh
 
 SONAR='build/bin/trk-sonar-sim --targets 4 --clutter-model k --k-shape 2 --snr-db 16'
 C_CONF="$SONAR --print-bridge-config > bridge.conf"
@@ -76,12 +74,12 @@ ok "the check refuses the old settings (bridge defaults, P_D 0.8): $why"
 
 # --- live over UDP multicast in a private network namespace
 if ! command -v unshare > /dev/null 2>&1 || ! command -v ip > /dev/null 2>&1; then
-    echo "test-lcm-walkthrough: SKIPPED live: unshare or ip (iproute2) not installed"; exit 0
+    skip "live: unshare or ip (iproute2) not installed"
 fi
 if ! msg=$(timeout 10 unshare -rn sh -c 'ip link set lo up && ip route add 224.0.0.0/4 dev lo' 2>&1); then
-    echo "test-lcm-walkthrough: SKIPPED live: cannot create a network namespace with a multicast route ($msg)"; exit 0
+    skip "live: cannot create a network namespace with a multicast route ($msg)"
 fi
-command -v lcm-logger > /dev/null 2>&1 || { echo "test-lcm-walkthrough: SKIPPED live: no lcm-logger"; exit 0; }
+command -v lcm-logger > /dev/null 2>&1 || skip "live: no lcm-logger"
 rm -f tracks.lcmlog
 export C_BRIDGE C_LOGGER C_SONAR
 timeout 120 unshare -rn sh -c '

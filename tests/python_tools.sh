@@ -10,17 +10,10 @@ set -u
 export PYTHONDONTWRITEBYTECODE=1   # no __pycache__ in the checkout
 BUILD=${1:-build}
 B=$BUILD/bin
-T=$(mktemp -d "${TMPDIR:-/tmp}/trk-python.XXXXXX")
-trap 'rm -rf "$T"' EXIT INT TERM
-fail() { echo "python-tools: FAIL: $*"; exit 1; }
-ok() { echo "python-tools: ok: $*"; }
-
+STEP=python-tools
+. tests/step_lib.sh
 # the first python3 with numpy: $PYTHON, python3 on PATH, Debian's own
-PY=
-for p in ${PYTHON:-} python3 /usr/bin/python3; do
-    if command -v "$p" > /dev/null 2>&1 && "$p" -c 'import numpy' > /dev/null 2>&1; then PY=$p; break; fi
-done
-[ -n "$PY" ] || fail "no python3 with numpy (Debian: apt-get install python3-numpy)"
+find_python || fail "no python3 with numpy (Debian: apt-get install python3-numpy)"
 ok "$($PY -c 'import sys, numpy; print("python %d.%d.%d, numpy %s" % (sys.version_info[:3] + (numpy.__version__,)))') ($PY)"
 
 # --- the committed types are lcm-gen's output for tools/lcm/types
