@@ -15,8 +15,10 @@
 #                       log reader) with their corpora tests/fuzz/corpus/
 #                       lcm_copy and lcm_log, run by mk/fuzz.mk (make fuzz
 #                       FUZZ_TARGETS='lcm_copy lcm_log'; replayed by make test)
+#   make test-lcm-walkthrough  the README's walk-through, run literally
 #   make install        also installs the .lcm files to $(PREFIX)/share/trk/lcm
-#                       (generate bindings for other languages from them)
+#                       and the generated C (include/trk/lcm, libtrk_lcmtypes.a,
+#                       trk-lcm.pc) and C++ (include/trk/lcm-cpp) types
 
 LCM_DIR := tools/lcm/types
 LCM_FILES := $(sort $(wildcard $(LCM_DIR)/*.lcm))
