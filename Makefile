@@ -345,8 +345,9 @@ demo: all
 	$(BUILD)/bin/example-firmware_loop
 
 # --- install (README "Install"): headers, libraries, pkg-config files, tools,
-# the LCM types (mk/lcm.mk, mk/lcm-java.mk, mk/python.mk add theirs to
-# INSTALL_EXTRA). A double build (the default) installs libtrk.a,
+# the LCM types (mk/lcm.mk, mk/lcm_java.mk, mk/python.mk add theirs as
+# prerequisites install-lcm-types, install-java, install-python; commands
+# in INSTALL_EXTRA run last). A double build (the default) installs libtrk.a,
 # libtrk_perf.a, libtrk_host.a, trk.pc and the tools (bin/; trk-bench, a
 # benchmark of the build, in libexec/trk/); a float build (REAL=float, in a
 # build directory of its own, e.g. BUILD=build/float) installs libtrk_f.a,

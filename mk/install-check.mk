@@ -6,7 +6,8 @@ INSTALL_CHECK_DIR := $(BUILD)/install-check
 # the float build's directory (the one `make bench` uses: same flags)
 INSTALL_CHECK_FLOAT := $(BUILD)/float
 .PHONY: install-check
-TEST_EXTRA_DEPS_install-check := all
+# (the jar of the double install built by this make: test-lcm-spy uses it too)
+TEST_EXTRA_DEPS_install-check = all $(if $(HAVE_JAVA),$(LCM_JAR))
 TEST_EXTRA += install-check
 install-check: $(TEST_EXTRA_DEPS_install-check)
 	rm -rf $(INSTALL_CHECK_DIR)

@@ -64,7 +64,7 @@ $(call obj,$(LCM_USERS)): $(LCM_GEN_STAMP)
 # in include/trk/lcm/, code in libtrk_lcmtypes.a, pkg-config trk-lcm) and C++
 # (header-only, include/trk/lcm-cpp/trk/*.hpp). The types do not depend on
 # REAL: the double and the float install write the same files. (Python:
-# mk/python.mk; Java: mk/lcm-java.mk.)
+# mk/python.mk; Java: mk/lcm_java.mk.)
 LCM_SHARE = $(DESTDIR)$(PREFIX)/share/trk/lcm
 LCM_INST_DIR := $(BUILD)/lcm-install
 LCM_INST_STAMP := $(LCM_INST_DIR)/.stamp

@@ -1,4 +1,4 @@
-# mk/lcm-java.mk - trk's LCM message types for Java, and lcm-spy that starts
+# mk/lcm_java.mk - trk's LCM message types for Java, and lcm-spy that starts
 # (README "Watching the channels: make spy").
 #
 #   make java        $(BUILD)/java/trk_lcm.jar: lcm-gen -j of tools/lcm/types,
@@ -19,6 +19,10 @@ LCM_JAVA_DIR := $(BUILD)/java
 LCM_JAR := $(LCM_JAVA_DIR)/trk_lcm.jar
 SPY_CHECK_JAR := $(LCM_JAVA_DIR)/trk_spy_check.jar
 SPY_URL ?=
+# 1 when the jars can be built here (the steps below then have them built
+# first, once, by the make that runs the steps: no two steps build them)
+HAVE_JAVA := $(shell command -v javac > /dev/null 2>&1 && command -v jar > /dev/null 2>&1 && \
+  test -f $(LCM_JAVA_LIB) && echo 1)
 .PHONY: java spy test-lcm-spy
 
 define java_needs
@@ -28,7 +32,7 @@ define java_needs
 endef
 
 java: $(LCM_JAR)
-$(LCM_JAR): $(LCM_FILES) mk/lcm-java.mk
+$(LCM_JAR): $(LCM_FILES) mk/lcm_java.mk
 	$(java_needs)
 	@rm -rf $(LCM_JAVA_DIR)/src $(LCM_JAVA_DIR)/classes && mkdir -p $(LCM_JAVA_DIR)/src $(LCM_JAVA_DIR)/classes
 	$(call say,GEN,$(LCM_JAVA_DIR)/src (lcm-gen -j))
@@ -50,13 +54,13 @@ spy: $(LCM_JAR)
 	TRK_LCM_JAR=$(LCM_JAR) sh tools/lcm/java/trk-lcm-spy $(if $(SPY_URL),-l '$(SPY_URL)')
 
 TEST_EXTRA += test-lcm-spy
-TEST_EXTRA_DEPS_test-lcm-spy := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
+TEST_EXTRA_DEPS_test-lcm-spy := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge \
+  $(if $(HAVE_JAVA),$(LCM_JAR) $(SPY_CHECK_JAR))
 test-lcm-spy: $(TEST_EXTRA_DEPS_test-lcm-spy)
 	@if ! command -v javac > /dev/null 2>&1 || ! command -v jar > /dev/null 2>&1; then \
 	  echo "test-lcm-spy: SKIPPED: no javac/jar (apt-get install default-jdk-headless)"; \
 	elif [ ! -f $(LCM_JAVA_LIB) ]; then echo "test-lcm-spy: SKIPPED: no $(LCM_JAVA_LIB) (apt-get install liblcm-java)"; \
-	else $(MAKE) --no-print-directory $(LCM_JAR) $(SPY_CHECK_JAR) && \
-	  sh tests/lcm_spy.sh $(BUILD) $(LCM_JAR) $(SPY_CHECK_JAR); fi
+	else sh tests/lcm_spy.sh $(BUILD) $(LCM_JAR) $(SPY_CHECK_JAR); fi
 
 # --- install: the jar and the launcher (a note when no JDK or lcm.jar)
 .PHONY: install-java
