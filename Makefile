@@ -19,7 +19,8 @@
 #   make demo            trk's main job (see README)
 #   make cross           libtrk for Cortex-M (build/cross/<target>/libtrk.a)
 #   make check-heap      fail if libtrk references a heap/stdio/abort symbol
-#   make install PREFIX=/usr/local [DESTDIR=]
+#   make install PREFIX=/usr/local [DESTDIR=]   (float beside it: make install
+#                        REAL=float BUILD=build/float PREFIX=...; README "Install")
 #
 # Configuration variables (one build directory per configuration):
 #   BUILD=build  CC=gcc|clang  REAL=double|float  SAN=0|1 (ASan+UBSan)  OPT=-O2
@@ -377,12 +378,36 @@ bench-instr:
 demo: all
 	$(BUILD)/bin/example-firmware_loop
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/include/trk $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+# --- install (README "Install"): headers, libraries, pkg-config files, tools,
+# the LCM types (mk/lcm.mk, mk/lcm_java.mk, mk/python.mk add theirs as
+# prerequisites install-lcm-types, install-java, install-python; commands
+# in INSTALL_EXTRA run last). A double build (the default) installs libtrk.a,
+# libtrk_perf.a, libtrk_host.a, trk.pc and the tools (bin/; trk-bench, a
+# benchmark of the build, in libexec/trk/); a float build (REAL=float, in a
+# build directory of its own, e.g. BUILD=build/float) installs libtrk_f.a,
+# libtrk_perf_f.a, libtrk_host_f.a and trk-float.pc beside them, and no
+# tools (they are host programs: the double ones serve). The headers are the
+# same for both; the .pc file's Cflags carry the build's -D knobs, so a
+# program compiled with `pkg-config --cflags trk-float` sees the float
+# layout, and trk_config_check() refuses a mix at run time (TRK_E_ABI).
+TRK_VERSION := 0.1.0
+INSTALL_SUFFIX := $(if $(filter float,$(REAL)),_f)
+INSTALL_PC := $(if $(filter float,$(REAL)),trk-float,trk)
+INSTALL_TOOLS := $(if $(filter float,$(REAL)),,$(filter-out $(BUILD)/bin/trk-bench,$(TOOLS)))
+INSTALL_LIBEXEC := $(if $(filter float,$(REAL)),,$(filter $(BUILD)/bin/trk-bench,$(TOOLS)))
+install: lib $(INSTALL_TOOLS) $(INSTALL_LIBEXEC)
+	@case '$(DEFS)' in *TRK_CONFIG_FILE*) echo "install: a TRK_CONFIG_FILE build is not installable (its header is not installed): give its knobs as -D flags in CONFIG_DEFS"; exit 1;; esac
+	install -d $(DESTDIR)$(PREFIX)/include/trk $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 644 include/trk/*.h $(DESTDIR)$(PREFIX)/include/trk/
-	install -m 644 $(LIB) $(PERFLIB) $(HOSTLIB) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(TOOLS) $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@CFLAGS@|$(strip $(DEFS))|' trk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/trk.pc
+	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/libtrk$(INSTALL_SUFFIX).a
+	install -m 644 $(PERFLIB) $(DESTDIR)$(PREFIX)/lib/libtrk_perf$(INSTALL_SUFFIX).a
+	install -m 644 $(HOSTLIB) $(DESTDIR)$(PREFIX)/lib/libtrk_host$(INSTALL_SUFFIX).a
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@NAME@|$(INSTALL_PC)|' -e 's|@REAL@|$(REAL)|' \
+	  -e 's|@VERSION@|$(TRK_VERSION)|' -e 's|@SUFFIX@|$(INSTALL_SUFFIX)|g' -e 's|@CFLAGS@|$(strip $(DEFS))|' \
+	  trk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/$(INSTALL_PC).pc
+	$(if $(INSTALL_TOOLS),install -d $(DESTDIR)$(PREFIX)/bin && install -m 755 $(INSTALL_TOOLS) $(DESTDIR)$(PREFIX)/bin/)
+	$(if $(INSTALL_LIBEXEC),install -d $(DESTDIR)$(PREFIX)/libexec/trk && \
+	  install -m 755 $(INSTALL_LIBEXEC) $(DESTDIR)$(PREFIX)/libexec/trk/)
 	$(INSTALL_EXTRA)
 
 clean:
