@@ -10,6 +10,7 @@
 #define TRK_BENCH_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define TRK_BENCH(bname) void trk_bench_##bname(void)
 
@@ -25,6 +26,10 @@ double bench_time_ns(void (*fn)(void *), void *arg, int reps);
 
 /* Keep a value alive so the optimiser cannot drop the work producing it. */
 void bench_sink(double v);
+
+/* A uniform deviate in [0, 1) from *state (splitmix64): the benchmarks'
+ * scenarios, reproducible from their seeds. */
+double bench_urand(uint64_t *state);
 
 /* Callgrind's instrumentation on and off around a measured region (make
  * bench-instr); no-ops unless built with valgrind's header

@@ -22,13 +22,7 @@
 enum { GRID_SCANS = 24, GRID_WARM = 4 };
 
 static uint64_t grid_rs;
-static double grid_urand(void)
-{
-    uint64_t z = (grid_rs += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
+static double grid_urand(void) { return bench_urand(&grid_rs); }
 
 struct grid_job {
     size_t n_tgt, n_det;

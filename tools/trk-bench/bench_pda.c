@@ -34,13 +34,7 @@
 #include "trk/tracker.h"
 
 static uint64_t rs = 42;
-static double urand(void)
-{
-    uint64_t z = (rs += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-}
+static double urand(void) { return bench_urand(&rs); }
 
 struct pda_job {
     struct trk_pda pda;

@@ -29,6 +29,14 @@ static volatile double sink_;
 
 void bench_sink(double v) { sink_ += v; }
 
+double bench_urand(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return (double)((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
+}
+
 void bench_print(const char *name, double value, const char *unit)
 {
     printf("bench %s %.6g %s\n", name, value, unit);
