@@ -12,6 +12,8 @@
  *   lcm_memq_64x256_rate      scans per second of the above
  *   lcm_memq_added_latency    lcm_memq - lcm_direct (ns per scan), and the
  *   lcm_core_added_latency    same for the core alone
+ *   lcm_memq_64x256_vs_direct lcm_memq / lcm_direct: the baseline is the
+ *                             tracker called directly
  *   lcm_replay_64x256_rate    scans per second of bridge_replay: LCM log of
  *                             the scans in, track log out (files in $TMPDIR)
  *   lcm_confirmed_tracks      confirmed tracks after the timed scans
@@ -280,6 +282,7 @@ TRK_BENCH(lcm)
     bench_print("lcm_memq_64x256", memq, "ns");
     bench_print("lcm_memq_64x256_rate", 1e9 / memq, "scans/s");
     bench_print("lcm_memq_added_latency", memq - direct, "ns");
+    bench_print("lcm_memq_64x256_vs_direct", memq / direct, "x");
     bench_print("lcm_core_added_latency", core - direct, "ns");
     bench_print("lcm_replay_64x256_rate", replay, "scans/s");
     bench_print("lcm_confirmed_tracks", n_conf, "tracks");

@@ -11,7 +11,8 @@
  *                          tables of `make tables` on all threads at se <= 1e-3
  *                          per cell (see below; ~80 s CPU)
  *   q2_lookup_*_ns         lookups on plain arrays and on a q2 table (in place)
- *   mre_*_ns, crlb_*_ns    library calls
+ *   mre_*_ns, crlb_*_ns    library calls; mre_steady_lookup_vs_const the
+ *                          q2-lookup MRE against the constant-q2 one (baseline)
  * Wall-clock timings: the machine is shared, so run it on a quiet machine. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
@@ -306,7 +307,9 @@ TRK_BENCH(mre)
     if (trk_mre_init(&mre_lookup, &p) != TRK_OK) return;
     if (trk_mre_steady_state(&mre_lookup, NULL, &r) != TRK_OK) return;
     bench_print("mre_steady_lookup_iterations", r.iterations, "steps");
-    bench_print("mre_steady_lookup_ns", bench_time_ns(mre_solve, &mre_lookup, 5), "ns");
+    const double t_lookup = bench_time_ns(mre_solve, &mre_lookup, 5);
+    bench_print("mre_steady_lookup_ns", t_lookup, "ns");
+    bench_print("mre_steady_lookup_vs_const", t_lookup / bench_time_ns(mre_solve, &mre_const, 5), "x");
     struct trk_crlb_params c;
     memset(&c, 0, sizeof c);
     c.nz = 2, c.dt_s = 1, c.q_m2_per_s3 = 1, c.r_m2 = 1, c.q2 = TRK_REAL_C(0.7457);
