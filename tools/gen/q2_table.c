@@ -383,6 +383,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
     opt.threads = r->threads;
     opt.progress = r->progress;
     opt.progress_ctx = r->progress_ctx;
+    opt.par = r->par;
 
     double t0 = progress_now_s();
     if (!ai) {

@@ -239,6 +239,7 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
     r.target_se = src->target_se > 0 ? src->target_se : Q2_TABLE_DEFAULT_TARGET_SE;
     r.seed = src->seed ? src->seed : 1;
     r.threads = src->threads;
+    r.par = src->par;
     struct sampler_prog pg;
     memset(&pg, 0, sizeof pg);
     pg.label = det == TOC_PDAF ? "q2 grid PDAF, points" : "q2 grid PDAFAI, points";

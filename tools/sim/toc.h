@@ -62,6 +62,8 @@
 
 #include "trk/table.h"
 
+struct par; /* tools/par/par.h */
+
 enum toc_detector { TOC_PDAF = 0, TOC_PDAFAI = 1, TOC_N_DETECTORS = 2 };
 
 struct toc_scenario {
@@ -91,6 +93,7 @@ struct toc_q2_source {
     int quiet;             /* no progress bar on stderr */
     double lambda_vg_max;  /* top of the sampled lambda_vg axis; 0: that of the
                               default tables (PDAF 100, PDAFAI 50) */
+    struct par *par;       /* the sampler's work distribution (q2_table_run.par) */
 };
 
 struct toc; /* opaque: the scenario, the q2 lookups (and sampled grids) */

@@ -37,9 +37,9 @@ struct tc_out {
     int32_t scans[2];
 };
 
-static void keep(void *ctx, long it, int f, const struct st_result *res)
+static void keep(void *slot, int f, const struct st_result *res)
 {
-    struct tc_out *o = (struct tc_out *)ctx + it;
+    struct tc_out *o = slot;
     o->lost[f] = (unsigned char)res->lost;
     o->mse[f] = res->n_sse ? res->sse / (double)res->n_sse : NAN;
     o->scans[f] = (int32_t)res->scans;
@@ -126,6 +126,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
         src.seed = com.seed;
         src.threads = com.threads;
         src.quiet = com.quiet;
+        src.par = com.par;
         if (!(toc[a] = toc_new(&ts, &src, err, sizeof err)) || toc_curve(toc[a], NCURVE, curve + a * NCURVE, err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAF, &opt[a][0], err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAFAI, &opt[a][1], err, sizeof err)) {
@@ -154,7 +155,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
         fprintf(stderr, "brekke-toc: %d nu x %d P_FA x 2 filters x %ld runs x %ld scans, seed %llu, %d threads (MRE %.1f s)\n",
                 nnu, npfa, runs, scans, (unsigned long long)com.seed, threads, mre_s);
     int bad_call;
-    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, from, keep, out, &bad_call);
+    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, from, keep, out, sizeof *out, &bad_call);
     if (bad_call) {
         fprintf(stderr, "brekke-toc: internal error (bad run call)\n");
         return 1;

@@ -56,9 +56,9 @@ struct tl_out {          /* one run, both filters */
     int32_t gated_clutter[2];
 };
 
-static void keep(void *ctx, long it, int f, const struct st_result *res)
+static void keep(void *slot, int f, const struct st_result *res)
 {
-    struct tl_out *o = (struct tl_out *)ctx + it;
+    struct tl_out *o = slot;
     o->lost[f] = (unsigned char)res->lost;
     o->hard[f] = (unsigned char)res->lost_hard;
     o->failed[f] = (unsigned char)res->failed;
@@ -138,7 +138,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                 "(amplitude tables %.1f s)\n",
                 ncell, nscen, runs, scans, (unsigned long long)com.seed, threads, tab_s);
     int bad_call;
-    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, 1, keep, out, &bad_call);
+    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, 1, keep, out, sizeof *out, &bad_call);
     if (bad_call) {
         fprintf(stderr, "brekke-trackloss: internal error (bad run call)\n");
         return 1;

@@ -91,6 +91,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
     src.seed = com.seed;
     src.threads = com.threads;
     src.quiet = com.quiet;
+    src.par = com.par;
     src.lambda_vg_max = lv_max;
     if (tables) {
         if (sim_load_table(cli.name, tables, "q2_pdaf_g6.tbl", &pdaf_t, &pdaf_buf)) goto out;
@@ -114,6 +115,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         r.target_se = target_se > 0 ? target_se : Q2_TABLE_DEFAULT_TARGET_SE;
         r.seed = com.seed;
         r.threads = com.threads;
+        r.par = com.par;
         struct q2_table_result res;
         if (!com.quiet) fprintf(stderr, "toc: sampling the PDAF q2 grid (gate g = 6) ...\n");
         if (q2_table_build(&s, &r, &res, err, sizeof err)) {

@@ -103,9 +103,9 @@ struct wc_points {
     int n;
 };
 
-static void keep(void *ctx, long it, int ai, const struct st_result *res)
+static void keep(void *slot, int ai, const struct st_result *res)
 {
-    struct wc_out *o = (struct wc_out *)ctx + it;
+    struct wc_out *o = slot;
     (void)ai;
     o->lost = (unsigned char)res->lost;
     o->mse = res->n_sse ? res->sse / (double)res->n_sse : NAN;
@@ -178,6 +178,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     qo.samples = (uint64_t)q2_samples;
     qo.target_se = 2e-4;
     qo.threads = com.threads;
+    qo.par = com.par;
     const double t_b = progress_now_s();
     for (int k = 0; k < np; k++) {
         char err[256];
@@ -226,7 +227,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
         fprintf(stderr, "willett-crlb: %d points x %ld runs x %ld scans, seed %llu, %d threads (bounds %.1f s)\n", np,
                 runs, scans, (unsigned long long)com.seed, threads, bound_s);
     int bad_call;
-    const double wall = sim_st_runs(&com, cli.name, mod, np, runs, 1, from, keep, out, &bad_call);
+    const double wall = sim_st_runs(&com, cli.name, mod, np, runs, 1, from, keep, out, sizeof *out, &bad_call);
     if (bad_call) return 1;
     char path[1024];
     struct fileio_out f_out;

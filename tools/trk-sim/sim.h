@@ -27,8 +27,11 @@
  *     if (parsed != SIM_RUN) return parsed;
  *
  * Results must not depend on the thread count: key each run's random stream
- * by (seed, run) (tools/sim/rng.h) and reduce per-run results in run
- * order after the parallel loop. */
+ * by (seed, run) (tools/sim/rng.h), let each run write its result into its
+ * own slot (sim_run_units: work units of tools/par, on this process's
+ * threads or, in trk-sim-mpi, over the ranks of an MPI job) and reduce the
+ * slots in run order afterwards. Output files go through sim_csv_open and
+ * sim_plot, which write on rank 0 only. */
 #ifndef TRK_SIM_H
 #define TRK_SIM_H
 
@@ -41,14 +44,23 @@
 
 #define SIM_EXPERIMENT(id, name, desc) int sim_exp_##id(int argc, char **argv)
 
+struct par;
+
 struct sim_common {
     uint64_t seed;      /* --seed (default 1) */
     long runs;          /* --runs when the experiment has no --runs of its own (0: not given) */
     const char *out;    /* --out: output prefix (CSV, .gp, .png) */
     int threads;        /* --threads; 0 = OpenMP default */
-    int quiet;          /* --quiet: no progress bar */
+    int quiet;          /* --quiet: no progress bar (and on every rank but 0) */
     int no_plot;        /* --no-plot: CSV only */
+    struct par *par;    /* the work distribution (tools/par/par.h): the MPI
+                           rank in trk-sim-mpi, NULL (this process) in trk-sim */
+    const char *checkpoint;  /* trk-sim-mpi --checkpoint FILE (NULL: none) */
+    double checkpoint_s;     /* --checkpoint-interval */
 };
+
+/* This process's work distribution (main.c): see sim_common.par. */
+struct par *sim_par(void);
 
 /* ---------------------------------------------------------------- options */
 
@@ -124,6 +136,18 @@ void sim_common_usage(FILE *f);
 /* Apply c->threads (omp_set_num_threads) and return the thread count used. */
 int sim_threads(const struct sim_common *c);
 
+/* Work units [0, n) through tools/par (par.h) on c->par: run(ctx, i, res,
+ * &ws) writes unit i's result (size bytes) at res = out + i * size; ws is
+ * the thread's workspace (NULL at first, freed by ws_free). chunk: units
+ * per chunk (consecutive). A progress bar `label` over the units on rank 0
+ * (none under --quiet); *wall the wall time. Every slot is filled on every
+ * rank when it returns 0; 1: a unit failed (its index in *failed_unit when
+ * not NULL; the caller says what failed); -1 after a message "LABEL: ..."
+ * (the distribution or the checkpoint failed). */
+int sim_run_units(const struct sim_common *c, const char *label, size_t n, size_t size, size_t chunk,
+                  int (*run)(void *ctx, size_t i, void *res, void **ws), void (*ws_free)(void *ctx, void *ws),
+                  void *ctx, void *out, double *wall, size_t *failed_unit);
+
 /* A progress bar over the runs of a parallel loop (none under --quiet), and
  * its wall time. */
 struct sim_progress {
@@ -133,9 +157,6 @@ struct sim_progress {
 void sim_progress_start(struct sim_progress *p, const struct sim_common *c, const char *label, long total);
 /* n more runs done; from any thread (serialised inside). */
 void sim_progress_add(struct sim_progress *p, long n);
-/* One more run done by this thread: counted in *pending, passed on every 64
- * (call sim_progress_add(p, *pending) after the thread's last run). */
-void sim_progress_step(struct sim_progress *p, long *pending);
 /* The final line; returns the wall time in seconds since the start. */
 double sim_progress_end(struct sim_progress *p);
 
@@ -158,15 +179,17 @@ int sim_amp_k_grid(const char *exp, struct st_amp *amp, const double *nu, int n_
 int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *amp, double cell_m2, long scans,
                      int init, int texture, uint64_t seed);
 
-/* Every run (model k < n_models, run < runs) in parallel: st_run with each
- * filter ai < n_filters (0 PDAF, 1 PDAFAI), errors summed over scans >=
- * from; keep(ctx, k * runs + run, ai, result) stores what the experiment
- * needs (called from any thread: write to that run's own slot). Progress bar
- * `label` unless --quiet. Returns the wall time; *failed = 1 when st_run
- * refused a call (that run is not kept). */
+/* Every run (model k < n_models, run < runs) as a work unit
+ * (sim_run_units): st_run with each filter ai < n_filters (0 PDAF, 1
+ * PDAFAI), errors summed over scans >= from; keep(slot, ai, result) stores
+ * what the experiment needs in the run's own slot, slot = out + (k * runs +
+ * run) * slot_size. Progress bar `label` unless --quiet. Returns the wall
+ * time; *failed = 1 when st_run refused a call or the distribution failed
+ * (with a message). */
 double sim_st_runs(const struct sim_common *c, const char *label, const struct st_model *mod, long n_models,
                    long runs, int n_filters, long from,
-                   void (*keep)(void *ctx, long it, int ai, const struct st_result *res), void *ctx, int *failed);
+                   void (*keep)(void *slot, int ai, const struct st_result *res), void *out, size_t slot_size,
+                   int *failed);
 
 /* A table file dir/file (`make tables`) loaded through the library into *t,
  * which views *buf (malloc'd: free it after the last use of *t). 0, or -1
@@ -179,7 +202,8 @@ int sim_load_table(const char *exp, const char *dir, const char *file, struct tr
 /* Opens c->out + suffix (e.g. ".csv", "_front.csv") for writing with its
  * header line, through o (fileio.h: a temporary file renamed into place by
  * sim_csv_close, so a failed run never leaves a cut file); the name goes to
- * path[pathlen] when path is not NULL. NULL (and a message) on failure. */
+ * path[pathlen] when path is not NULL. NULL (and a message) on failure.
+ * On an MPI rank other than 0 the writes go to /dev/null. */
 FILE *sim_csv_open(const struct sim_common *c, struct fileio_out *o, const char *suffix, char *path,
                    size_t pathlen, const char *header);
 /* Every write of o checked, flushed, closed and renamed into place: 0, or -1
@@ -199,9 +223,10 @@ struct sim_text {
 void sim_text_add(struct sim_text *t, const char *fmt, ...);
 void sim_text_free(struct sim_text *t);
 
-/* Unless --no-plot: the gnuplot script c->out + suffix + ".gp" with `body`
- * (plot.h plot_gnuplot), and the PNG when gnuplot is there. Returns
- * plot_gnuplot's value (0 without plotting; -1 on an I/O error). */
+/* Unless --no-plot (or on an MPI rank other than 0): the gnuplot script
+ * c->out + suffix + ".gp" with `body` (plot.h plot_gnuplot), and the PNG
+ * when gnuplot is there. Returns plot_gnuplot's value (0 without plotting;
+ * -1 on an I/O error). */
 int sim_plot(const struct sim_common *c, const char *suffix, const char *body);
 /* The same with the body formatted printf-style. */
 int sim_plotf(const struct sim_common *c, const char *suffix, const char *fmt, ...);
