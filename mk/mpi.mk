@@ -12,11 +12,11 @@
 # build's compiler (OMPI_CC, MPICH_CC). libtrk never sees MPI.
 #
 # The steps of `make test` (default configuration; skipped with a message
-# without mpicc): mpi-bytes (a q2 table, an amplitude table and trk-sim
-# experiments: the bytes of `mpirun -np 3` with 1 and 2 threads per rank
-# against the single-process tools) and mpi-resume (a rank killed halfway:
-# the job fails with a message and no output file; the run resumed from the
-# checkpoint gives the same bytes). tests/mpi_steps.sh.
+# without mpicc), tests/mpi_steps.sh: mpi-tablegen and mpi-sim (q2 and
+# amplitude tables, trk-sim experiments: the bytes of `mpirun -np 3` with 1
+# and 2 threads per rank against the single-process tools) and mpi-resume
+# (a rank that fails halfway, a rank killed: the job fails with a message
+# and no output file; resumed from the checkpoint, the same bytes).
 $(BUILD)/obj/tools/par/%.o: CFLAGS_ALL += -fopenmp
 
 MPICC ?= mpicc
@@ -53,3 +53,15 @@ $(foreach t,$(MPI_TOOL_NAMES),$(eval $(call MPI_TOOL_template,$(t))))
 
 -include $(shell find $(BUILD)/obj-mpi -name '*.d' 2>/dev/null)
 endif
+
+# --- the steps of `make test` (tests/mpi_steps.sh; without mpicc: skipped,
+# with a message)
+MPI_STEPS := mpi-tablegen mpi-sim mpi-resume
+TEST_EXTRA += $(MPI_STEPS)
+ifeq ($(MPI),1)
+$(foreach s,$(MPI_STEPS),$(eval TEST_EXTRA_DEPS_$(s) := $(MPI_BINS) $(BUILD)/bin/trk-tablegen $(BUILD)/bin/trk-sim))
+endif
+.PHONY: $(MPI_STEPS)
+$(MPI_STEPS): %: $(TEST_EXTRA_DEPS_mpi-tablegen)
+	@if [ '$(MPI)' = 1 ]; then sh tests/mpi_steps.sh $(patsubst mpi-%,%,$@) $(BUILD)/bin; \
+	 else echo "$@: no $(MPICC) (MPI=0): the MPI builds and their checks are skipped"; fi

@@ -53,14 +53,6 @@ int q2_is_threads(int threads)
 #endif
 }
 
-void q2_is_parallel_for(size_t n, int threads, void (*fn)(void *ctx, size_t i), void *ctx)
-{
-    const int th = q2_is_threads(threads);
-    (void)th;
-    Q2_OMP(omp parallel for schedule(dynamic, 1) num_threads(th))
-    for (size_t i = 0; i < n; i++) fn(ctx, i);
-}
-
 static double now_s(void)
 {
     struct timespec ts;

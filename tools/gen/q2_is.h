@@ -146,11 +146,4 @@ int q2_is_threads(int threads);
 /* 1 when this object was compiled with OpenMP. */
 int q2_is_parallel(void);
 
-/* fn(ctx, i) for i = 0 .. n-1 on q2_is_threads(threads) threads (dynamic
- * schedule; in order in the serial build), e.g. building the amplitude
- * models of a table's lines. fn must be thread-safe and write only what
- * belongs to i; its results must not depend on the order. Nested OpenMP
- * regions inside fn run on one thread. */
-void q2_is_parallel_for(size_t n, int threads, void (*fn)(void *ctx, size_t i), void *ctx);
-
 #endif

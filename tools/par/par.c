@@ -62,6 +62,8 @@ void par_init(struct par *p, const char *prog)
         if (!*end && v >= 0) p->fail_after = v;
     }
     if (fr && *fr) p->fail_rank = atoi(fr);
+    const char *st = getenv("TRK_PAR_STATS");
+    p->stats = st && *st && strcmp(st, "0") != 0;
 }
 
 int par_is_root(const struct par *p) { return !p || p->rank == 0; }
@@ -362,6 +364,11 @@ int par_checkpoint(struct par *p, const char *path, double interval_s, const cha
 int par_finish(struct par *p, int ok)
 {
     if (!p) return 0;
+    if (p->stats)
+        fprintf(stderr, "%s: rank %d of %d: %llu batches, %llu work units here, %.3f s on them, %.3f s waiting for "
+                        "the other ranks\n",
+                p->prog, p->rank, p->size, (unsigned long long)p->batches, (unsigned long long)p->units_here,
+                p->work_s, p->wait_s);
     struct par_ckpt *c = p->ckpt;
     int rc = 0;
     if (c) {
@@ -467,8 +474,9 @@ struct run {
     size_t n_ch;
     size_t *mine, n_mine;
     unsigned char *done;      /* per unit: resumed; rank 0: finished */
-    /* completion queue (critical par_q) */
+    /* completion queue (critical par_q): chunk, and whether a unit of it failed */
     size_t *q, q_in, q_out;
+    unsigned char *qfail;
     size_t n_local_done;
     /* lowest failed unit (critical par_fail) */
     size_t fail_unit;
@@ -480,6 +488,7 @@ struct run {
     int end_sent;
     /* rank 0: the other ranks that have finished */
     int ends;
+    double t0, t_local;       /* start; this rank's units done (0: not yet) */
 };
 
 /* The ranks cannot go on together: end the job (several ranks). */
@@ -605,9 +614,10 @@ static int service(struct run *r)
     const int root = p->rank == 0;
     for (;;) {
         size_t k = 0;
-        int have = 0;
+        int have = 0, bad = 0;
         PAR_OMP(omp critical(par_q))
         if (r->q_out < r->q_in) {
+            bad = r->qfail[r->q_out];
             k = r->q[r->q_out++];
             have = 1;
         }
@@ -615,6 +625,7 @@ static int service(struct run *r)
         const struct chunk *c = &r->ch[k];
         r->n_local_done++;
         p->units_here += c->count;
+        if (bad) continue; /* not done: neither counted nor checkpointed (the end says why) */
         if (root) {
             root_done(r, c->first, c->count);
         } else {
@@ -624,6 +635,7 @@ static int service(struct run *r)
         }
     }
     const int local_done = r->n_local_done == r->n_mine;
+    if (local_done && r->t_local == 0) r->t_local = now_s();
     int complete = local_done;
     if (r->multi && root) {
         const struct par_comm *cm = p->comm;
@@ -687,12 +699,19 @@ static void run_chunks(struct run *r)
         PAR_OMP(omp for schedule(dynamic, 1) nowait)
         for (size_t k = 0; k < r->n_mine; k++) {
             const struct chunk *c = &r->ch[r->mine[k]];
+            int bad = 0;
             for (size_t u = c->first; u < c->first + c->count; u++) {
                 const int code = b->run(b->ctx, u, r->out + unit_off(b, u), &ws);
-                if (code) fail_unit(r, u, code);
+                if (code) {
+                    fail_unit(r, u, code);
+                    bad = 1;
+                }
             }
             PAR_OMP(omp critical(par_q))
-            r->q[r->q_in++] = r->mine[k];
+            {
+                r->qfail[r->q_in] = (unsigned char)bad;
+                r->q[r->q_in++] = r->mine[k];
+            }
             if (first_thread) service(r);
         }
         if (ws && b->ws_free) b->ws_free(b->ctx, ws);
@@ -780,10 +799,11 @@ int par_run(struct par *p, struct par_batch *b, void *out_v, char *err, size_t e
     r.ch = malloc(r.n_ch * sizeof *r.ch);
     r.mine = malloc(r.n_ch * sizeof *r.mine);
     r.q = malloc(r.n_ch * sizeof *r.q);
+    r.qfail = malloc(r.n_ch);
     r.done = calloc(b->n, 1);
     int rc = PAR_OK;
     char msg[1400] = "";
-    if (!r.ch || !r.mine || !r.q || !r.done) {
+    if (!r.ch || !r.mine || !r.q || !r.qfail || !r.done) {
         if (r.multi) fatal(p, "rank %d: out of memory for a batch of %zu units", p->rank, b->n);
         rc = PAR_E_NOMEM;
         snprintf(msg, sizeof msg, "out of memory");
@@ -843,12 +863,14 @@ int par_run(struct par *p, struct par_batch *b, void *out_v, char *err, size_t e
         c->out = out;
         c->done = r.done;
     }
-    r.last_send = now_s();
+    r.last_send = r.t0 = now_s();
     run_chunks(&r);
     /* the outcome, the same on every rank: the lowest failed unit */
     int64_t res[3] = {r.failed ? PAR_E_UNIT : PAR_OK, (int64_t)r.fail_unit, r.fail_code};
     bcast(&r, res, sizeof res);
     rc = (int)res[0];
+    p->batches++;
+    p->work_s += r.t_local - r.t0;
     if (rc == PAR_E_UNIT) {
         b->failed_unit = (size_t)res[1];
         b->failed_code = (int)res[2];
@@ -856,6 +878,7 @@ int par_run(struct par *p, struct par_batch *b, void *out_v, char *err, size_t e
     } else {
         bcast(&r, out, total);
     }
+    p->wait_s += now_s() - r.t_local;
     if (root) {
         if (rc == PAR_OK) p->units_computed += b->n - n_resumed;
         if (p->ckpt) {
@@ -869,7 +892,7 @@ int par_run(struct par *p, struct par_batch *b, void *out_v, char *err, size_t e
     }
 out:
     if (rc && err && errlen) snprintf(err, errlen, "%s", msg);
-    free(r.ch), free(r.mine), free(r.q), free(r.done), free(r.sbuf);
+    free(r.ch), free(r.mine), free(r.q), free(r.qfail), free(r.done), free(r.sbuf);
     return rc;
 }
 

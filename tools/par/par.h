@@ -48,6 +48,8 @@
  * Fault injection for the tests: TRK_PAR_FAIL_AFTER=N makes rank
  * TRK_PAR_FAIL_RANK (default 0) print a line and _exit(3) once it has
  * finished N units (counted over the batches of the process).
+ * TRK_PAR_STATS=1: every rank says at the end how long it worked and how
+ * long it waited for the others (the balance of the assignment).
  *
  * Host code: heap, stdio, OpenMP. */
 #ifndef TRK_TOOLS_PAR_H
@@ -90,6 +92,11 @@ struct par {
     int fail_rank;                /* TRK_PAR_FAIL_RANK */
     uint64_t units_here;          /* units finished by this process */
     uint64_t units_resumed, units_computed; /* over all ranks (rank 0) */
+    /* TRK_PAR_STATS=1: par_finish prints, per rank, the batches, the time
+     * this rank worked on its units and the time it waited for the others */
+    int stats;
+    uint64_t batches;
+    double work_s, wait_s;
 };
 
 enum {

@@ -176,6 +176,14 @@ int par_mpi_end(struct par *p, int status)
         MPI_Finalize();
         return 0;
     }
+    /* An error every rank meets (a usage error, a refused checkpoint) is
+     * reported by rank 0 and its abort ends the others: they wait for it
+     * (one banner of the runtime instead of one per rank), and abort
+     * themselves after 3 s (an error of their own). */
+    if (g_ctx.rank > 0) {
+        const struct timespec ts = {0, 100000000};
+        for (int i = 0; i < 30; i++) nanosleep(&ts, NULL);
+    }
     MPI_Abort(MPI_COMM_WORLD, status);
     return status;
 }

@@ -22,7 +22,8 @@ int par_mpi_start(struct par *p, int *argc, char ***argv, const char *prog);
 
 /* The end of the program with exit status `status`: 0 MPI_Finalize (and
  * 0); else MPI_Abort(status), which ends every rank (a rank that fails
- * alone must not leave the others waiting). */
+ * alone must not leave the others waiting; ranks > 0 first give rank 0 3 s
+ * to do it, so that an error of every rank is reported once). */
 int par_mpi_end(struct par *p, int status);
 
 #endif
