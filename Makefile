@@ -14,10 +14,13 @@
 #                        cross builds, ...); one line per step, a summary line
 #                        per configuration and a final "test: N passed, N failed"
 #   make bench           trk-bench in double and float
+#   make bench-instr     instructions per scan_64x256 (callgrind), double and float
+#   make bench-grid      the scan over a grid of tracks x detections (issue 19)
 #   make demo            trk's main job (see README)
 #   make cross           libtrk for Cortex-M (build/cross/<target>/libtrk.a)
 #   make check-heap      fail if libtrk references a heap/stdio/abort symbol
-#   make install PREFIX=/usr/local [DESTDIR=]
+#   make install PREFIX=/usr/local [DESTDIR=]   (float beside it: make install
+#                        REAL=float BUILD=build/float PREFIX=...; README "Install")
 #   MPI=1|0              the MPI builds bin/trk-tablegen-mpi, bin/trk-sim-mpi
 #                        (default: when mpicc is found; mk/mpi.mk, README "MPI")
 #
@@ -346,16 +349,72 @@ bench:
 	@echo "== double"; build/bin/trk-bench
 	@echo "== float";  build/float/bin/trk-bench
 	@echo "== float, TRK_WITH_IMM=1 (3 models)"; build/imm-float/bin/trk-bench scan_64x256 sizeof_tracker
+	@echo "== the size grid (TRK_MAX_TRACKS 256, TRK_MAX_DETECTIONS 4096)"; $(MAKE) --no-print-directory bench-grid
+	@echo "== instructions"; $(MAKE) --no-print-directory bench-instr
+
+# Issue 19's size grid: the scan at tracks 64 / 256 and detections 256 /
+# 1024 / 4096 at a fixed density in a build of 256 tracks and 4096
+# detections, and the growth over four times the area with the table's
+# slack kept (64 targets in the default 64-slot build against 256 targets in
+# the 256-slot build; the big build's 64-target scans also start clutter
+# tracks in its 192 free slots).
+BENCH_BIG_DEFS := -DTRK_MAX_TRACKS=256 -DTRK_MAX_DETECTIONS=4096
+bench-grid:
+	$(MAKE) --no-print-directory BUILD=build OPT=-O2 build/bin/trk-bench
+	$(MAKE) --no-print-directory BUILD=build/big OPT=-O2 CONFIG_DEFS='$(BENCH_BIG_DEFS)' build/big/bin/trk-bench
+	@small=$$(build/bin/trk-bench scan_grid | awk '$$2 == "scan_grid_T64_D256" { print $$3 }'); \
+	build/big/bin/trk-bench scan_grid | tee build/big/scan_grid.txt | sed 1d; \
+	big=$$(awk '$$2 == "scan_grid_T256_D1024" { print $$3 }' build/big/scan_grid.txt); \
+	echo "bench scan_grid_T64_D256_default_build $$small ns"; \
+	awk -v a=$$small -v b=$$big 'BEGIN { printf "bench scan_grid_growth_4x_area_same_slack %.3g x\n", b / a }'
+
+# The instruction count of one scan_64x256 (issue 19): machine-independent,
+# unlike the times. trk-bench scan_64x256_instr under callgrind with the
+# instrumentation on for the timed scans only; Ir / scans.
+bench-instr:
+	$(MAKE) --no-print-directory BUILD=build OPT=-O2 build/bin/trk-bench
+	$(MAKE) --no-print-directory BUILD=build/float OPT=-O2 REAL=float build/float/bin/trk-bench
+	@for b in build build/float; do \
+	  out=$$(valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file=$$b/bench-instr.callgrind \
+	    $$b/bin/trk-bench scan_64x256_instr 2>/dev/null | awk '$$2 == "scan_64x256_instr_scans" { print $$3 }'); \
+	  ir=$$(awk '/^totals:/ { print $$2; exit }' $$b/bench-instr.callgrind); \
+	  test -n "$$out" && test -n "$$ir" || { echo "bench-instr: no count from $$b"; exit 1; }; \
+	  echo "bench scan_64x256_instructions_$$(test $$b = build && echo double || echo float) $$(awk -v i=$$ir -v n=$$out 'BEGIN { printf "%.0f", i / n }') instructions"; \
+	done
 
 demo: all
 	$(BUILD)/bin/example-firmware_loop
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/include/trk $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
+# --- install (README "Install"): headers, libraries, pkg-config files, tools,
+# the LCM types (mk/lcm.mk, mk/lcm_java.mk, mk/python.mk add theirs as
+# prerequisites install-lcm-types, install-java, install-python; commands
+# in INSTALL_EXTRA run last). A double build (the default) installs libtrk.a,
+# libtrk_perf.a, libtrk_host.a, trk.pc and the tools (bin/; trk-bench, a
+# benchmark of the build, in libexec/trk/); a float build (REAL=float, in a
+# build directory of its own, e.g. BUILD=build/float) installs libtrk_f.a,
+# libtrk_perf_f.a, libtrk_host_f.a and trk-float.pc beside them, and no
+# tools (they are host programs: the double ones serve). The headers are the
+# same for both; the .pc file's Cflags carry the build's -D knobs, so a
+# program compiled with `pkg-config --cflags trk-float` sees the float
+# layout, and trk_config_check() refuses a mix at run time (TRK_E_ABI).
+TRK_VERSION := 0.1.0
+INSTALL_SUFFIX := $(if $(filter float,$(REAL)),_f)
+INSTALL_PC := $(if $(filter float,$(REAL)),trk-float,trk)
+INSTALL_TOOLS := $(if $(filter float,$(REAL)),,$(filter-out $(BUILD)/bin/trk-bench,$(TOOLS)))
+INSTALL_LIBEXEC := $(if $(filter float,$(REAL)),,$(filter $(BUILD)/bin/trk-bench,$(TOOLS)))
+install: lib $(INSTALL_TOOLS) $(INSTALL_LIBEXEC)
+	@case '$(DEFS)' in *TRK_CONFIG_FILE*) echo "install: a TRK_CONFIG_FILE build is not installable (its header is not installed): give its knobs as -D flags in CONFIG_DEFS"; exit 1;; esac
+	install -d $(DESTDIR)$(PREFIX)/include/trk $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 644 include/trk/*.h $(DESTDIR)$(PREFIX)/include/trk/
-	install -m 644 $(LIB) $(PERFLIB) $(HOSTLIB) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(TOOLS) $(DESTDIR)$(PREFIX)/bin/
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@CFLAGS@|$(strip $(DEFS))|' trk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/trk.pc
+	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/libtrk$(INSTALL_SUFFIX).a
+	install -m 644 $(PERFLIB) $(DESTDIR)$(PREFIX)/lib/libtrk_perf$(INSTALL_SUFFIX).a
+	install -m 644 $(HOSTLIB) $(DESTDIR)$(PREFIX)/lib/libtrk_host$(INSTALL_SUFFIX).a
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@NAME@|$(INSTALL_PC)|' -e 's|@REAL@|$(REAL)|' \
+	  -e 's|@VERSION@|$(TRK_VERSION)|' -e 's|@SUFFIX@|$(INSTALL_SUFFIX)|g' -e 's|@CFLAGS@|$(strip $(DEFS))|' \
+	  trk.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/$(INSTALL_PC).pc
+	$(if $(INSTALL_TOOLS),install -d $(DESTDIR)$(PREFIX)/bin && install -m 755 $(INSTALL_TOOLS) $(DESTDIR)$(PREFIX)/bin/)
+	$(if $(INSTALL_LIBEXEC),install -d $(DESTDIR)$(PREFIX)/libexec/trk && \
+	  install -m 755 $(INSTALL_LIBEXEC) $(DESTDIR)$(PREFIX)/libexec/trk/)
 	$(INSTALL_EXTRA)
 
 clean:

@@ -78,6 +78,10 @@ static size_t get_scan(int k, struct trk_scan *scan)
 
 int main(void)
 {
+    /* first: a library built with another configuration than these headers
+     * (capacities, scalar type) has other struct layouts, so even
+     * trk_tracker_default_params would write past `params` */
+    if (trk_tracker_abi_check() != TRK_OK) return 2; /* header/library mismatch */
     struct trk_tracker_params params;
     trk_tracker_default_params(&params);
     params.sensor[0].pd = TRK_REAL_C(0.85);
@@ -94,7 +98,6 @@ int main(void)
     params.confirm.u.existence.p_confirm = TRK_REAL_C(0.999);
     params.term.u.existence.p_terminate = TRK_REAL_C(0.1);
 
-    if (trk_tracker_abi_check() != TRK_OK) return 2; /* header/library mismatch */
     const char *field;
     trk_status st = trk_tracker_check_params(&params, &field); /* names what it refuses */
     if (st != TRK_OK) {

@@ -15,8 +15,10 @@
 #                       log reader) with their corpora tests/fuzz/corpus/
 #                       lcm_copy and lcm_log, run by mk/fuzz.mk (make fuzz
 #                       FUZZ_TARGETS='lcm_copy lcm_log'; replayed by make test)
+#   make test-lcm-walkthrough  the README's walk-through, run literally
 #   make install        also installs the .lcm files to $(PREFIX)/share/trk/lcm
-#                       (generate bindings for other languages from them)
+#                       and the generated C (include/trk/lcm, libtrk_lcmtypes.a,
+#                       trk-lcm.pc) and C++ (include/trk/lcm-cpp) types
 
 LCM_DIR := tools/lcm/types
 LCM_FILES := $(sort $(wildcard $(LCM_DIR)/*.lcm))
@@ -57,9 +59,46 @@ LCM_USERS := $(wildcard tools/lcm/*.c tools/trk-lcm-bridge/*.c tools/trk-sonar-s
   tools/trk-bench/bench_lcm.c tests/test_lcm_*.c)
 $(call obj,$(LCM_USERS)): $(LCM_GEN_STAMP)
 
-# --- install: the message definitions, for lcm-gen in other languages
+# --- install: the message definitions (for lcm-gen in other languages), and
+# the generated types for C (with LCM's publish/subscribe functions: headers
+# in include/trk/lcm/, code in libtrk_lcmtypes.a, pkg-config trk-lcm) and C++
+# (header-only, include/trk/lcm-cpp/trk/*.hpp). The types do not depend on
+# REAL: the double and the float install write the same files. (Python:
+# mk/python.mk; Java: mk/lcm_java.mk.)
 LCM_SHARE = $(DESTDIR)$(PREFIX)/share/trk/lcm
-INSTALL_EXTRA += install -d $(LCM_SHARE) && install -m 644 $(LCM_FILES) $(LCM_SHARE)/ ;
+LCM_INST_DIR := $(BUILD)/lcm-install
+LCM_INST_STAMP := $(LCM_INST_DIR)/.stamp
+LCM_TYPES_LIB := $(LCM_INST_DIR)/libtrk_lcmtypes.a
+LCM_INST_OBJS := $(patsubst %,$(LCM_INST_DIR)/obj/%.o,$(LCM_TYPES))
+$(LCM_INST_STAMP): $(LCM_FILES) mk/lcm.mk
+	@command -v lcm-gen >/dev/null 2>&1 || { echo "lcm-gen not found: apt-get install liblcm-dev liblcm-bin"; exit 1; }
+	@rm -rf $(LCM_INST_DIR) && mkdir -p $(LCM_INST_DIR)/include/trk/lcm $(LCM_INST_DIR)/src $(LCM_INST_DIR)/cpp $(LCM_INST_DIR)/obj
+	$(call say,GEN,$(LCM_INST_DIR) (lcm-gen -c, -x))
+	$(Q)lcm-gen -c --c-cpath $(LCM_INST_DIR)/src --c-hpath $(LCM_INST_DIR)/include/trk/lcm --cinclude trk/lcm $(LCM_FILES) > /dev/null
+	$(Q)lcm-gen -x --cpp-hpath $(LCM_INST_DIR)/cpp $(LCM_FILES) > /dev/null
+	@for t in $(LCM_TYPES); do test -s $(LCM_INST_DIR)/src/$$t.c && test -s $(LCM_INST_DIR)/include/trk/lcm/$$t.h && \
+	  test -s $(LCM_INST_DIR)/cpp/trk/$${t#trk_}.hpp || { echo "lcm-gen did not write $$t"; exit 1; }; done
+	@touch $@
+$(LCM_INST_OBJS): $(LCM_INST_DIR)/obj/%.o: $(LCM_INST_STAMP)
+	$(call say,CC,$(LCM_INST_DIR)/src/$*.c)
+	$(Q)$(CC) -std=c99 $(OPT) -fPIC -I$(LCM_INST_DIR)/include $(shell pkg-config --cflags lcm 2>/dev/null) \
+	  -c $(LCM_INST_DIR)/src/$*.c -o $@
+$(LCM_TYPES_LIB): $(LCM_INST_OBJS)
+	$(archive)
+.PHONY: install-lcm-types
+install: install-lcm-types
+install-lcm-types: $(LCM_TYPES_LIB)
+	install -d $(LCM_SHARE) $(DESTDIR)$(PREFIX)/include/trk/lcm $(DESTDIR)$(PREFIX)/include/trk/lcm-cpp/trk \
+	  $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 $(LCM_FILES) $(LCM_SHARE)/
+	install -m 644 $(LCM_INST_DIR)/include/trk/lcm/*.h $(DESTDIR)$(PREFIX)/include/trk/lcm/
+	install -m 644 $(LCM_INST_DIR)/cpp/trk/*.hpp $(DESTDIR)$(PREFIX)/include/trk/lcm-cpp/trk/
+	install -m 644 $(LCM_TYPES_LIB) $(DESTDIR)$(PREFIX)/lib/
+	printf '%s\n' 'prefix=$(PREFIX)' 'includedir=$${prefix}/include' 'libdir=$${prefix}/lib' \
+	  'cppincludedir=$${includedir}/trk/lcm-cpp' 'lcmdir=$${prefix}/share/trk/lcm' '' \
+	  'Name: trk-lcm' 'Description: trk LCM message types (lcm-gen C code with publish/subscribe; C++: -I$${cppincludedir})' \
+	  'Version: $(TRK_VERSION)' 'Requires: lcm' 'Cflags: -I$${includedir}' 'Libs: -L$${libdir} -ltrk_lcmtypes' \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/trk-lcm.pc
 
 # --- demo: simulated sonar -> LCM log -> bridge (replay) -> track log -> summary
 DEMO_LCM_DIR = $(BUILD)/demo-lcm
@@ -82,3 +121,11 @@ TEST_EXTRA += test-lcm-udpm
 TEST_EXTRA_DEPS_test-lcm-udpm := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
 test-lcm-udpm: $(TEST_EXTRA_DEPS_test-lcm-udpm)
 	@sh tests/lcm_udpm_netns.sh $(BUILD)
+
+# --- the README's LCM walk-through, run literally (offline and live over
+# udpm in a network namespace): as many confirmed tracks as targets
+.PHONY: test-lcm-walkthrough
+TEST_EXTRA += test-lcm-walkthrough
+TEST_EXTRA_DEPS_test-lcm-walkthrough := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
+test-lcm-walkthrough: $(TEST_EXTRA_DEPS_test-lcm-walkthrough)
+	@$(if $(filter build,$(BUILD)),sh tests/lcm_walkthrough.sh README.md,echo "test-lcm-walkthrough: the README's commands name build/bin: run with BUILD=build")

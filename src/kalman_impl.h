@@ -47,6 +47,14 @@ TRK_INLINE void trk_i_cv2_predict(trk_real t, trk_real q, trk_real *x, trk_real 
     trk_i_symmetrize(4, p);
 }
 
+/* The components the 2-D CV model's H selects (x, y), as a constant the
+ * inlined kernels fold into their indexing. */
+TRK_INLINE const int *trk_i_cv2_sel(void)
+{
+    static const int sel[TRK_CV2_NZ] = {TRK_CV2_X, TRK_CV2_Y};
+    return sel;
+}
+
 /* Does H (nz x nx) only select state components (each row one 1, the rest
  * 0)? Then idx[j] is the component row j selects and the products with H
  * below become copies (the 2-D CV model's H picks x and y). */
@@ -98,7 +106,7 @@ TRK_INLINE trk_status trk_i_innovation_sel(int nx, int nz, const trk_real *h, co
     if (st != TRK_OK) return st;
     trk_i_tril_inverse(nz, inn->s_chol, inn->s_chol_inv);
     trk_real sqrt_det = 1;
-    for (int i = 0; i < nz; i++) sqrt_det /= inn->s_chol_inv[i * nz + i]; /* = prod L_ii */
+    for (int i = 0; i < nz; i++) sqrt_det *= inn->s_chol[i * nz + i]; /* = prod L_ii */
     /* one log instead of nz; the product of nz <= 3 square roots of finite
      * pivots overflows only in float for |S| above ~1e25 */
     inn->log_det_s = (sqrt_det > 0 && sqrt_det <= TRK_REAL_MAX) ? 2 * trk_log(sqrt_det)
@@ -131,31 +139,42 @@ TRK_INLINE void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *
  * A H' - K R vanishes in exact arithmetic (K S = P H'); forming it keeps the
  * Joseph form's first-order insensitivity to errors in K at about half the
  * cost of the three explicit products. pht = P H' (given); sel as for
- * trk_i_innovation_sel. */
+ * trk_i_innovation_sel. The upper triangle of Pc (a <= b) only, scaled by
+ * c: pc[a][b] = c Pc_ab (the PDA's B P_c); the lower is left as it was. */
+TRK_INLINE void trk_i_joseph_upper(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r,
+                                   const trk_real *k, const trk_real *p, const trk_real *pht, trk_real c,
+                                   trk_real *pc)
+{
+    /* A H' = P H' - K (H P H') (H P H' = H pht, nz x nz), so A itself is
+     * formed only where Pc needs it, entry by entry (no nx x nx array) */
+    trk_real hph[TRK_MAX_MEAS * TRK_MAX_MEAS], e[TRK_MAX_STATE * TRK_MAX_MEAS];
+    if (sel) {
+        for (int j = 0; j < nz; j++)
+            for (int t = 0; t < nz; t++) hph[j * nz + t] = pht[sel[j] * nz + t];
+    } else {
+        trk_i_mat_mul(nz, nx, nz, h, pht, hph);
+    }
+    for (int i = 0; i < nx; i++)
+        for (int j = 0; j < nz; j++) {
+            trk_real s = pht[i * nz + j];
+            for (int t = 0; t < nz; t++) s -= k[i * nz + t] * (hph[j * nz + t] + r[t * nz + j]);
+            e[i * nz + j] = s; /* A H' - K R */
+        }
+    for (int i = 0; i < nx; i++)
+        for (int j = i; j < nx; j++) {
+            trk_real s = p[i * nx + j];
+            for (int t = 0; t < nz; t++) s -= k[i * nz + t] * pht[j * nz + t] + e[i * nz + t] * k[j * nz + t];
+            pc[i * nx + j] = c * s; /* A - E K' is symmetric in exact arithmetic */
+        }
+}
+
+/* The whole Pc (symmetric). */
 TRK_INLINE void trk_i_joseph_sel(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r,
                                  const trk_real *k, const trk_real *p, const trk_real *pht, trk_real *pc)
 {
-    trk_real e[TRK_MAX_STATE * TRK_MAX_MEAS];
+    trk_i_joseph_upper(nx, nz, h, sel, r, k, p, pht, 1, pc);
     for (int i = 0; i < nx; i++)
-        for (int j = 0; j < nx; j++) {
-            trk_real s = p[i * nx + j];
-            for (int t = 0; t < nz; t++) s -= k[i * nz + t] * pht[j * nz + t];
-            pc[i * nx + j] = s; /* A */
-        }
-    trk_i_mul_ht(nx, nx, nz, pc, h, sel, e); /* A H' */
-    for (int i = 0; i < nx; i++)
-        for (int j = 0; j < nz; j++) {
-            trk_real s = 0;
-            for (int t = 0; t < nz; t++) s += k[i * nz + t] * r[t * nz + j];
-            e[i * nz + j] -= s; /* - K R */
-        }
-    for (int i = 0; i < nx; i++)
-        for (int j = 0; j < nx; j++) {
-            trk_real s = 0;
-            for (int t = 0; t < nz; t++) s += e[i * nz + t] * k[j * nz + t];
-            pc[i * nx + j] -= s;
-        }
-    trk_i_symmetrize(nx, pc);
+        for (int j = i + 1; j < nx; j++) pc[j * nx + i] = pc[i * nx + j];
 }
 
 /* The same with H general; P H' computed here. */

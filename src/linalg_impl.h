@@ -65,8 +65,25 @@ TRK_INLINE trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
  * TRK_OK or TRK_E_NOT_SPD, by an LDL' factorisation without square roots:
  * every pivot d_i > 0 and finite (the test trk_mat_check_spd runs after its
  * symmetry and finiteness scans), for the tracker's and the PDA's posterior
- * checks. Out of line (linalg.c): its workspace stays off the callers'
- * frames. */
+ * checks. One division per pivot. trk_i_spd is the out-of-line copy
+ * (linalg.c: its workspace stays off the callers' frames); the inline one
+ * unrolls at a caller's constant n (the CV kernels). */
+TRK_INLINE trk_status trk_i_spd_inline(int n, const trk_real *a)
+{
+    trk_real ld[TRK_MAX_STATE * TRK_MAX_STATE], inv_d[TRK_MAX_STATE]; /* ld[i][k] = L_ik d_k (i > k) */
+    for (int j = 0; j < n; j++) {
+        trk_real dj = a[j * n + j];
+        for (int k = 0; k < j; k++) dj -= ld[j * n + k] * ld[j * n + k] * inv_d[k];
+        if (!(dj > 0) || !(dj <= TRK_REAL_MAX)) return TRK_E_NOT_SPD;
+        inv_d[j] = 1 / dj;
+        for (int i = j + 1; i < n; i++) {
+            trk_real v = a[i * n + j];
+            for (int k = 0; k < j; k++) v -= ld[i * n + k] * ld[j * n + k] * inv_d[k];
+            ld[i * n + j] = v;
+        }
+    }
+    return TRK_OK;
+}
 trk_status trk_i_spd(int n, const trk_real *a);
 
 TRK_INLINE void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)

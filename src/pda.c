@@ -76,7 +76,10 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
     struct trk_innovation inn_own;
     trk_real pht[TRK_MAX_STATE * TRK_MAX_MEAS];
     int sel_idx[TRK_MAX_MEAS];
-    const int *sel = trk_i_h_select(nx, nz, h, sel_idx) ? sel_idx : NULL;
+    /* the library's CV H (the usual caller) needs no scan */
+    const int *sel = (h == trk_cv2_h && nx == TRK_CV2_NX && nz == TRK_CV2_NZ) ? trk_i_cv2_sel()
+                     : trk_i_h_select(nx, nz, h, sel_idx)                 ? sel_idx
+                                                                          : NULL;
     const struct trk_innovation *inn = inn_in;
     if (inn) {
         trk_i_mul_ht(nx, nx, nz, p, h, sel, pht);
@@ -85,18 +88,26 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
         if (st != TRK_OK) return st;
         inn = &inn_own;
     }
-    /* gate: d2, and the unnormalised log weights (beta[] holds ln e_i, -inf outside) */
+    /* gate: d2, and the unnormalised log weights (beta[] holds ln e_i, -inf
+     * outside); the detections' finiteness checked on the way */
     size_t n_gated = 0;
+    int finite = 1;
     for (size_t i = 0; i < m; i++) {
         trk_real nu[TRK_MAX_MEAS];
         for (int t = 0; t < nz; t++) nu[t] = z[i * nz + t] - inn->z_pred[t];
+        if (log_lr) finite &= isfinite(log_lr[i]) != 0;
         const trk_real di = trk_i_mahalanobis2(nz, inn->s_chol_inv, nu);
+        /* a finite d2 needs finite nu, so finite z: the components are
+         * checked only for d2 = inf or NaN (rare) */
+        if (!(di <= TRK_REAL_MAX))
+            for (int t = 0; t < nz; t++) finite &= isfinite(z[i * nz + t]) != 0;
         const int in = trk_gate_inside(di, pda->gamma);
         if (d2) d2[i] = di;
         n_gated += (size_t)in;
         beta[i] = (in || !pda->params.gating) ? trk_i_pda_log_e(pda, inn->log_det_s, di, log_lr ? log_lr[i] : 0)
                                               : -(trk_real)INFINITY;
     }
+    if (!finite) return TRK_E_NAN;
     const struct trk_i_pda_pred pred = {nx, nz, h, sel, r, x, p, pht, inn};
     struct trk_i_pda_set set = {m, m, pda->params.gating ? n_gated : m, z, beta, NULL};
     struct trk_i_pda_out out;
@@ -117,18 +128,13 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
 
 TRK_INLINE trk_status check_args(const struct trk_pda *pda, int nx, const trk_real *h, const trk_real *r,
                              const trk_real *x, const trk_real *p, size_t m, const trk_real *z,
-                             const trk_real *log_lr, const trk_real *beta)
+                             const trk_real *beta)
 {
     if (!pda || !h || !r || !x || !p || (m > 0 && (!z || !beta))) return TRK_E_ARG;
     const int nz = pda->params.nz;
     if (nx < nz || nx > TRK_MAX_STATE) return TRK_E_ARG;
     if (m > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
-    for (size_t i = 0; i < m * (size_t)nz; i++)
-        if (!isfinite(z[i])) return TRK_E_NAN;
-    if (log_lr)
-        for (size_t i = 0; i < m; i++)
-            if (!isfinite(log_lr[i])) return TRK_E_NAN;
-    return TRK_OK;
+    return TRK_OK; /* z and log_lr: finite, checked by the gate (pda_update) */
 }
 
 /* Both public entry points; inn NULL: computed here. */
@@ -137,7 +143,7 @@ TRK_INLINE trk_status update(const struct trk_pda *pda, int nx, const trk_real *
                          const trk_real *z, const trk_real *log_lr, trk_real *beta, trk_real *d2,
                          struct trk_pda_report *rep)
 {
-    trk_status st = check_args(pda, nx, h, r, x, p, m, z, log_lr, beta);
+    trk_status st = check_args(pda, nx, h, r, x, p, m, z, beta);
     if (st != TRK_OK) return st;
     const int nz = pda->params.nz;
 #if !TRK_SIZE_OPT /* a copy unrolled for the CV model (speed); size builds keep one */

@@ -43,8 +43,15 @@ struct trk_i_pda_out {
     trk_real beta0;       /* P(no detection is the target's) */
     trk_real lambda;      /* clutter density used */
     trk_real gate_volume; /* V_G of the shared S */
-    trk_real log_sum_e;   /* ln sum_i e_i over the set (-inf: none) */
+    trk_real e_max, e_sum; /* ln sum_i e_i over the set = e_max + ln e_sum
+                              (trk_i_pda_log_sum_e: the log only where it is used) */
 };
+
+/* ln sum_i e_i over the set (-inf: none, or all weights zero) */
+TRK_INLINE trk_real trk_i_pda_log_sum_e(const struct trk_i_pda_out *o)
+{
+    return o->e_sum > 0 ? o->e_max + trk_log(o->e_sum) : -(trk_real)INFINITY;
+}
 
 /* ln e_i = ln P_D - (nz/2) ln 2pi - (1/2) ln det S - d2/2 + ln l^a */
 TRK_INLINE trk_real trk_i_pda_log_e(const struct trk_pda *pda, trk_real log_det_s, trk_real d2,
@@ -62,16 +69,17 @@ TRK_INLINE trk_real trk_i_pda_log_e0(const struct trk_pda *pda, trk_real lambda)
 
 /* Normalise in the log domain: log_e0 and log_w[0..n) (in) -> beta0 and
  * w[0..n) = beta_i (out, in place). When every weight is zero (e.g. no
- * detection and lambda = 0) beta0 = 1. *log_sum_meas gets ln sum_i e_i over
- * the detections (-inf when there are none). */
-TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, trk_real *log_sum_meas)
+ * detection and lambda = 0) beta0 = 1. o->e_max, o->e_sum get ln sum_i e_i
+ * over the detections (trk_i_pda_log_sum_e). */
+TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, struct trk_i_pda_out *o)
 {
     trk_real mx = log_e0;
     for (size_t i = 0; i < n; i++)
         if (w[i] > mx) mx = w[i];
     if (!(mx > -TRK_REAL_MAX)) { /* all -inf */
         for (size_t i = 0; i < n; i++) w[i] = 0;
-        *log_sum_meas = -(trk_real)INFINITY;
+        o->e_max = 0;
+        o->e_sum = 0;
         return 1;
     }
     trk_real e0 = trk_exp(log_e0 - mx), sum_meas = 0;
@@ -79,7 +87,8 @@ TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, 
         w[i] = trk_exp(w[i] - mx);
         sum_meas += w[i];
     }
-    *log_sum_meas = sum_meas > 0 ? mx + trk_log(sum_meas) : -(trk_real)INFINITY;
+    o->e_max = mx;
+    o->e_sum = sum_meas;
     trk_real inv = 1 / (e0 + sum_meas);
     for (size_t i = 0; i < n; i++) w[i] *= inv;
     return e0 * inv;
@@ -142,7 +151,8 @@ TRK_INLINE void trk_i_pda_rank1(int nx, trk_real *acc, trk_real w, const trk_rea
 }
 
 /* Detection i >= n_shared with its own covariance: the move d = K_j nu_j =
- * u_j y_j, and with pc_sum not NULL also pc_sum += beta_j P_c,j (Joseph). */
+ * u_j y_j, and with pc_sum not NULL also pc_sum += beta_j P_c,j (Joseph;
+ * the upper triangle). */
 TRK_INLINE void trk_i_pda_own_move(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
                                    size_t i, trk_real *d, trk_real *pc_sum)
 {
@@ -158,33 +168,47 @@ TRK_INLINE void trk_i_pda_own_move(const struct trk_i_pda_pred *pr, const struct
     if (pc_sum) {
         trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS], pc[TRK_MAX_STATE * TRK_MAX_STATE];
         trk_i_gain(nx, nz, pr->pht, li, k);
-        trk_i_joseph_sel(nx, nz, pr->h, pr->sel, r_j, k, pr->p, pr->pht, pc);
-        for (int a = 0; a < nx * nx; a++) pc_sum[a] += s->w[i] * pc[a];
+        trk_i_joseph_upper(nx, nz, pr->h, pr->sel, r_j, k, pr->p, pr->pht, s->w[i], pc);
+        for (int a = 0; a < nx; a++)
+            for (int b = a; b < nx; b++) pc_sum[a * nx + b] += pc[a * nx + b]; /* the upper triangle */
     }
     trk_i_pda_u(nx, nz, pr->pht, li, u);
     trk_i_pda_whiten(nz, li, s->z + i * (size_t)nz, pr->inn->z_pred, y);
     trk_i_mat_mul(nx, nz, 1, u, y, d);
 }
 
-/* The moments of the shared group (beta_i, i < n_shared): B = sum beta_i,
- * sy = sum beta_i y_i; and pc_sum = B P_c (Joseph form with the shared R). */
+/* The moments of the shared group (beta_i, i < n_shared), in one pass over
+ * its whitened innovations y_i = L^-1 nu_i: B = sum beta_i, sy = sum
+ * beta_i y_i, w (nz x nz) = sum beta_i (y_i - ybar)(y_i - ybar)' with ybar =
+ * sy / B, formed as sum beta_i y_i y_i' - sy sy' / B. In whitened
+ * coordinates the terms are bounded (|y_i|^2 <= gamma in the gate, and
+ * beta_i |y_i|^2 stays below B without one), so the difference loses at most
+ * a few ulps of gamma B, far below the posterior's own terms, which are
+ * checked (trk_i_pda_update_beta). pc_sum = B P_c (Joseph form with the
+ * shared R; its upper triangle, which is all trk_i_pda_combine reads). */
 TRK_INLINE trk_real trk_i_pda_shared_sums(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
-                                          trk_real *sy, trk_real *pc_sum)
+                                          trk_real *sy, trk_real *w, trk_real *pc_sum)
 {
     const int nx = pr->nx, nz = pr->nz;
     trk_real bsum = 0, y[TRK_MAX_MEAS];
     for (int t = 0; t < nz; t++) sy[t] = 0;
+    for (int t = 0; t < nz * nz; t++) w[t] = 0;
     for (size_t i = 0; i < s->n_shared; i++) {
-        if (s->w[i] == 0) continue;
+        const trk_real b = s->w[i];
         trk_i_pda_whiten(nz, pr->inn->s_chol_inv, s->z + i * (size_t)nz, pr->inn->z_pred, y);
-        bsum += s->w[i];
-        for (int t = 0; t < nz; t++) sy[t] += s->w[i] * y[t];
+        bsum += b;
+        for (int a = 0; a < nz; a++) {
+            const trk_real by = b * y[a];
+            sy[a] += by;
+            for (int t = a; t < nz; t++) w[a * nz + t] += by * y[t];
+        }
     }
     if (bsum > 0) {
         trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS];
+        for (int a = 0; a < nz; a++)
+            for (int t = a; t < nz; t++) w[t * nz + a] = w[a * nz + t] -= sy[a] * sy[t] / bsum;
         trk_i_gain(nx, nz, pr->pht, pr->inn->s_chol_inv, k);
-        trk_i_joseph_sel(nx, nz, pr->h, pr->sel, pr->r, k, pr->p, pr->pht, pc_sum);
-        for (int a = 0; a < nx * nx; a++) pc_sum[a] *= bsum;
+        trk_i_joseph_upper(nx, nz, pr->h, pr->sel, pr->r, k, pr->p, pr->pht, bsum, pc_sum);
     } else {
         for (int a = 0; a < nx * nx; a++) pc_sum[a] = 0;
     }
@@ -193,25 +217,14 @@ TRK_INLINE trk_real trk_i_pda_shared_sums(const struct trk_i_pda_pred *pr, const
 
 /* acc += the spread of the shared group about dxbar, split by the law of
  * total variance: u W u' + B (u ybar - dxbar)(u ybar - dxbar)', with
- * ybar = sy / B, W = sum beta_i (y_i - ybar)(y_i - ybar)' (nz-dimensional
- * work per detection). */
-TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
-                                        const trk_real *u, trk_real bsum, const trk_real *sy,
-                                        const trk_real *dxbar, trk_real *acc)
+ * ybar = sy / B and W from trk_i_pda_shared_sums. */
+TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const trk_real *u, trk_real bsum,
+                                        const trk_real *sy, const trk_real *w, const trk_real *dxbar,
+                                        trk_real *acc)
 {
     const int nx = pr->nx, nz = pr->nz;
-    trk_real ybar[TRK_MAX_MEAS], w[TRK_MAX_MEAS * TRK_MAX_MEAS] = {0}, y[TRK_MAX_MEAS];
-    trk_real uw[TRK_MAX_STATE * TRK_MAX_MEAS], d[TRK_MAX_STATE];
+    trk_real ybar[TRK_MAX_MEAS], uw[TRK_MAX_STATE * TRK_MAX_MEAS], d[TRK_MAX_STATE];
     for (int t = 0; t < nz; t++) ybar[t] = sy[t] / bsum;
-    for (size_t i = 0; i < s->n_shared; i++) {
-        if (s->w[i] == 0) continue;
-        trk_i_pda_whiten(nz, pr->inn->s_chol_inv, s->z + i * (size_t)nz, pr->inn->z_pred, y);
-        for (int t = 0; t < nz; t++) y[t] -= ybar[t];
-        for (int a = 0; a < nz; a++)
-            for (int t = a; t < nz; t++) w[a * nz + t] += s->w[i] * y[a] * y[t];
-    }
-    for (int a = 0; a < nz; a++)
-        for (int t = a + 1; t < nz; t++) w[t * nz + a] = w[a * nz + t];
     trk_i_mat_mul(nx, nz, nz, u, w, uw);
     for (int a = 0; a < nx; a++)
         for (int b = a; b < nx; b++) {
@@ -222,6 +235,84 @@ TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const s
     trk_i_mat_mul(nx, nz, 1, u, ybar, d);
     for (int a = 0; a < nx; a++) d[a] -= dxbar[a];
     trk_i_pda_rank1(nx, acc, bsum, d);
+}
+
+/* trk_i_pda_combine for the 2-D CV model (state [x, vx, y, vy], H
+ * selecting x and y) when every detection shares S, the usual case: the
+ * same moment match as the general code below, with the same whitened
+ * moments and the Joseph form, written out over the model's fixed indices
+ * and fused into one pass over P, so that it stays in registers (issue 19:
+ * the per-track update within 1.25x of a hand-written loop). test_pda
+ * checks it against the general code (the same track embedded in 5
+ * states). */
+TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                      trk_real beta0, trk_real *x_new, trk_real *acc)
+{
+    enum { N = TRK_CV2_NX };
+    const trk_real *p = pr->p, *r = pr->r, *li = pr->inn->s_chol_inv;
+    const trk_real m00 = li[0], m10 = li[2], m11 = li[3]; /* L^-1 */
+    const trk_real zx = pr->inn->z_pred[0], zy = pr->inn->z_pred[1];
+    /* the whitened moments B, sy, and W = sum beta_i y_i y_i' - sy sy' / B
+     * (trk_i_pda_shared_sums) */
+    trk_real bsum = 0, sy0 = 0, sy1 = 0, w00 = 0, w01 = 0, w11 = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        const trk_real b = s->w[i];
+        if (b == 0) continue; /* (outside the gate; its y may be infinite) */
+        const trk_real n0 = s->z[2 * i] - zx, n1 = s->z[2 * i + 1] - zy;
+        const trk_real y0 = m00 * n0, y1 = m10 * n0 + m11 * n1, by0 = b * y0, by1 = b * y1;
+        bsum += b;
+        sy0 += by0;
+        sy1 += by1;
+        w00 += by0 * y0;
+        w01 += by0 * y1;
+        w11 += by1 * y1;
+    }
+    /* u = P H' L^-T, K = u L^-1, the moves dxbar = u sy and u ybar */
+    trk_real u0[N], u1[N], k0[N], k1[N], dx[N], d[N];
+    const trk_real inv_b = bsum > 0 ? 1 / bsum : 0;
+    for (int a = 0; a < N; a++) {
+        const trk_real h0 = p[a * N + TRK_CV2_X], h1 = p[a * N + TRK_CV2_Y];
+        u0[a] = h0 * m00;
+        u1[a] = h0 * m10 + h1 * m11;
+        k0[a] = u0[a] * m00 + u1[a] * m10;
+        k1[a] = u1[a] * m11;
+        dx[a] = u0[a] * sy0 + u1[a] * sy1;
+        d[a] = dx[a] * inv_b - dx[a]; /* u ybar - dxbar */
+    }
+    if (bsum > 0) {
+        w00 -= sy0 * sy0 * inv_b;
+        w01 -= sy0 * sy1 * inv_b;
+        w11 -= sy1 * sy1 * inv_b;
+    }
+    /* Joseph: A = P - K (P H')', E = A H' - K R (trk_i_joseph_upper) */
+    trk_real e0[N], e1[N], ph0[N], ph1[N];
+    for (int a = 0; a < N; a++) {
+        ph0[a] = p[a * N + TRK_CV2_X];
+        ph1[a] = p[a * N + TRK_CV2_Y];
+    }
+    for (int a = 0; a < N; a++) {
+        const trk_real a0 = ph0[a] - (k0[a] * ph0[TRK_CV2_X] + k1[a] * ph1[TRK_CV2_X]);
+        const trk_real a2 = ph1[a] - (k0[a] * ph0[TRK_CV2_Y] + k1[a] * ph1[TRK_CV2_Y]);
+        e0[a] = a0 - (k0[a] * r[0] + k1[a] * r[2]);
+        e1[a] = a2 - (k0[a] * r[1] + k1[a] * r[3]);
+    }
+    /* P = beta0 (P- + dxbar dxbar') + B P_c + u W u' + B d d' (B = 0: W,
+     * dxbar and d are 0), with P_c = A - E K', as one sum of rank-one
+     * terms per entry: whole rows (they vectorise), then the upper
+     * triangle mirrored */
+    const trk_real c_p = beta0 + bsum;
+    for (int a = 0; a < N; a++) {
+        const trk_real c_k0 = bsum * k0[a], c_k1 = bsum * k1[a], c_e0 = bsum * e0[a], c_e1 = bsum * e1[a];
+        const trk_real c_dx = beta0 * dx[a], c_d = bsum * d[a];
+        const trk_real c_u0 = u0[a] * w00 + u1[a] * w01, c_u1 = u0[a] * w01 + u1[a] * w11;
+        for (int b = 0; b < N; b++)
+            acc[a * N + b] = c_p * p[a * N + b] - (c_k0 * ph0[b] + c_k1 * ph1[b]) - (c_e0 * k0[b] + c_e1 * k1[b]) +
+                             (c_dx * dx[b] + c_d * d[b]) + (c_u0 * u0[b] + c_u1 * u1[b]);
+    }
+    for (int a = 0; a < N; a++) {
+        x_new[a] = pr->x[a] + dx[a];
+        for (int b = a + 1; b < N; b++) acc[b * N + a] = acc[a * N + b];
+    }
 }
 
 /* The PDA state and covariance update as the moment match of a Gaussian
@@ -239,8 +330,16 @@ TRK_INLINE void trk_i_pda_combine(const struct trk_i_pda_pred *pr, const struct 
                                   trk_real beta0, trk_real *x_new, trk_real *acc)
 {
     const int nx = pr->nx, nz = pr->nz;
-    trk_real u[TRK_MAX_STATE * TRK_MAX_MEAS], sy[TRK_MAX_MEAS], dxbar[TRK_MAX_STATE], d[TRK_MAX_STATE];
-    const trk_real bsum = trk_i_pda_shared_sums(pr, s, sy, acc); /* acc = pc_sum first */
+#if !TRK_SIZE_OPT /* size builds keep the general code alone */
+    if (nx == TRK_CV2_NX && nz == TRK_CV2_NZ && s->n_shared == s->n && pr->sel && pr->sel[0] == TRK_CV2_X &&
+        pr->sel[1] == TRK_CV2_Y) {
+        trk_i_pda_combine_cv2(pr, s, beta0, x_new, acc);
+        return;
+    }
+#endif
+    trk_real u[TRK_MAX_STATE * TRK_MAX_MEAS], sy[TRK_MAX_MEAS], w[TRK_MAX_MEAS * TRK_MAX_MEAS];
+    trk_real dxbar[TRK_MAX_STATE], d[TRK_MAX_STATE];
+    const trk_real bsum = trk_i_pda_shared_sums(pr, s, sy, w, acc); /* acc = pc_sum first */
     trk_i_pda_u(nx, nz, pr->pht, pr->inn->s_chol_inv, u);
     trk_i_mat_mul(nx, nz, 1, u, sy, dxbar);
     for (size_t i = s->n_shared; i < s->n; i++) {
@@ -251,7 +350,7 @@ TRK_INLINE void trk_i_pda_combine(const struct trk_i_pda_pred *pr, const struct 
     for (int a = 0; a < nx; a++)
         for (int b = a; b < nx; b++)
             acc[a * nx + b] = beta0 * (pr->p[a * nx + b] + dxbar[a] * dxbar[b]) + acc[a * nx + b];
-    if (bsum > 0) trk_i_pda_shared_spread(pr, s, u, bsum, sy, dxbar, acc);
+    if (bsum > 0) trk_i_pda_shared_spread(pr, u, bsum, sy, w, dxbar, acc);
     for (size_t i = s->n_shared; i < s->n; i++) {
         if (s->w[i] == 0) continue;
         trk_i_pda_own_move(pr, s, i, d, NULL);
@@ -275,6 +374,24 @@ TRK_INLINE trk_status trk_i_pda_check(int nx, const trk_real *x, const trk_real 
     return !finite ? TRK_E_NAN : positive ? TRK_OK : TRK_E_NOT_SPD;
 }
 
+/* The posterior (x, symmetric P) checked: TRK_OK when x is finite and P
+ * positive definite (its LDL' pivots, trk_i_spd_inline: a non-finite entry
+ * fails them too), else trk_i_pda_check's status. The factorisation first,
+ * the scan over P only for the status of a failure. */
+TRK_INLINE trk_status trk_i_pda_check_posterior(int nx, const trk_real *x, const trk_real *p)
+{
+    int finite = 1;
+    for (int a = 0; a < nx; a++) finite &= isfinite(x[a]) != 0;
+#if TRK_SIZE_OPT
+    const trk_status st = trk_i_spd(nx, p); /* out of line */
+#else
+    const trk_status st = trk_i_spd_inline(nx, p); /* unrolled at the caller's nx */
+#endif
+    if (finite && st == TRK_OK) return TRK_OK;
+    const trk_status why = trk_i_pda_check(nx, x, p);
+    return why != TRK_OK ? why : TRK_E_NOT_SPD;
+}
+
 /* V_G of the shared S and the clutter density (given, or m_G / V_G) into *o,
  * with beta0 = 1 and no detection weight yet. */
 TRK_INLINE void trk_i_pda_clutter(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
@@ -284,7 +401,8 @@ TRK_INLINE void trk_i_pda_clutter(const struct trk_pda *pda, const struct trk_i_
     o->lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->params.clutter_density
                                                              : (trk_real)s->m_gated / o->gate_volume;
     o->beta0 = 1;
-    o->log_sum_e = -(trk_real)INFINITY;
+    o->e_max = 0;
+    o->e_sum = 0;
 }
 
 /* The posterior for given weights (s->w = beta_i, beta0), checked, written
@@ -298,8 +416,7 @@ TRK_INLINE trk_status trk_i_pda_update_beta(const struct trk_i_pda_pred *pr, con
     const int nx = pr->nx;
     trk_real x[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
     trk_i_pda_combine(pr, s, beta0, x, acc);
-    trk_status st = trk_i_pda_check(nx, x, acc);
-    if (st == TRK_OK) st = trk_i_spd(nx, acc); /* a factorisation that can fail (out of line) */
+    const trk_status st = trk_i_pda_check_posterior(nx, x, acc);
     if (st != TRK_OK) return st;
     for (int a = 0; a < nx; a++) pr->x[a] = x[a];
     for (int a = 0; a < nx * nx; a++) pr->p[a] = acc[a];
@@ -319,7 +436,7 @@ TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const stru
         for (size_t i = 0; i < s->n; i++) s->w[i] = 0;
         return TRK_OK;
     }
-    o->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, o->lambda), s->n, s->w, &o->log_sum_e);
+    o->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, o->lambda), s->n, s->w, o);
     return trk_i_pda_update_beta(pr, s, o->beta0);
 }
 

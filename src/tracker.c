@@ -16,6 +16,7 @@
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
+static void order_by_x(struct trk_tracker *t);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 #if TRK_WITH_JOINT
 static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
@@ -144,9 +145,10 @@ static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, s
 }
 
 /* The valid detections into the workspace: those with the sensor's
- * covariance first [0, n_shared), own-covariance ones after, each group in
- * scan order; rejections are counted. The amplitudes (dB) are then doubled
- * (see clutter_look in tracker_update_impl.h). */
+ * covariance first [0, n_shared), in x order (gating's spatial index,
+ * x_window in tracker_update_impl.h), own-covariance ones after, in scan
+ * order; rejections are counted. The amplitudes (dB) are then doubled (see
+ * clutter_look in tracker_update_impl.h). */
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
@@ -160,7 +162,49 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, 
             if ((scan->detections[i].has_cov != 0) == own) load_detection(t, scan, i, &au, rep);
         if (!own) t->ws.n_shared = t->ws.n_valid;
     }
+    order_by_x(t);
     for (size_t k = 0; k + 1 < t->ws.n_amp; k++) t->ws.amp_db[t->ws.n_amp + k] = t->ws.amp_db[k];
+}
+
+/* Workspace detection k moved to j (its amplitude stays where amp_pos
+ * says). */
+static void ws_move(struct trk_tracker *t, size_t j, size_t k)
+{
+    t->ws.x[j] = t->ws.x[k];
+    t->ws.y[j] = t->ws.y[k];
+    t->ws.src[j] = t->ws.src[k];
+    t->ws.log_lr[j] = t->ws.log_lr[k];
+    t->ws.amp_pos[j] = t->ws.amp_pos[k];
+}
+
+/* The shared-covariance group [0, n_shared) sorted by x, once per scan
+ * (sort_by_x: O(n) for spread positions): position j takes detection
+ * idx[j], cycle by cycle in place, with used[] (all 0 at load) marking the
+ * positions filled. */
+static void order_by_x(struct trk_tracker *t)
+{
+    const size_t n = t->ws.n_shared;
+    uint16_t *idx = t->ws.cand; /* free until the first track is gated */
+    for (size_t j = 0; j < n; j++) idx[j] = (uint16_t)j;
+    sort_by_x(t, idx, n);
+    for (size_t i = 0; i < n; i++) {
+        if (t->ws.used[i] || idx[i] == i) continue;
+        const trk_real x = t->ws.x[i], y = t->ws.y[i], llr = t->ws.log_lr[i];
+        const uint16_t src = t->ws.src[i];
+        const int16_t amp = t->ws.amp_pos[i];
+        size_t j = i;
+        for (size_t k = idx[j]; k != i; j = k, k = idx[j]) {
+            ws_move(t, j, k);
+            t->ws.used[j] = 1;
+        }
+        t->ws.x[j] = x;
+        t->ws.y[j] = y;
+        t->ws.src[j] = src;
+        t->ws.log_lr[j] = llr;
+        t->ws.amp_pos[j] = amp;
+        t->ws.used[j] = 1;
+    }
+    for (size_t j = 0; j < n; j++) t->ws.used[j] = 0;
 }
 
 static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_scan_report *rep)
@@ -300,26 +344,77 @@ static TRK_NOINLINE int duplicates(const struct trk_track *a, const struct trk_t
     return d2 <= g;
 }
 
-/* End the weaker of every pair of live tracks that follow one target
- * (PDA tracks sharing detections converge onto it). */
-static TRK_NOINLINE void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep)
+/* The pair (a, b) of live tracks that may follow one target: end the
+ * weaker when they do. */
+static void merge_pair(struct trk_tracker *t, struct trk_track *a, struct trk_track *b, struct trk_scan_report *rep)
 {
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
-        struct trk_track *a = &t->track[i];
-        if (!is_live(a)) continue;
-        for (size_t j = i + 1; j < TRK_MAX_TRACKS; j++) {
-            struct trk_track *b = &t->track[j];
-            if (!is_live(b) || !may_duplicate(a, b, t->params.merge_gate_d2) ||
-                !duplicates(a, b, t->params.merge_gate_d2))
-                continue;
-            if (stronger(a, b)) {
-                end_track(b, TRK_END_MERGED, rep);
-            } else {
-                end_track(a, TRK_END_MERGED, rep);
-                break; /* a is gone */
+    const trk_real g = t->params.merge_gate_d2;
+    if (!is_live(a) || !is_live(b) || !may_duplicate(a, b, g) || !duplicates(a, b, g)) return;
+    end_track(stronger(a, b) ? b : a, TRK_END_MERGED, rep);
+}
+
+/* Every pair (i < j) of live slots in slot order, as merge_duplicates'
+ * definition. */
+static void merge_all_pairs(struct trk_tracker *t, struct trk_scan_report *rep)
+{
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+        for (size_t j = i + 1; j < TRK_MAX_TRACKS && is_live(&t->track[i]); j++)
+            merge_pair(t, &t->track[i], &t->track[j], rep);
+}
+
+/* The pairs of live tracks that may_duplicate can pass, by a sweep over the
+ * tracks in x order (a pair's |dx| is at most sqrt(g (P_xx + max P_xx))),
+ * as (i, j) slot pairs (i < j) sorted, into ws.u.merge.pair[0, 2 n): n, or
+ * -1 when they do not fit. O(tracks log tracks + pairs) for tracks spread
+ * over the area, instead of tracks^2. */
+static long merge_candidates(struct trk_tracker *t)
+{
+    const size_t cap = sizeof t->ws.u.merge.pair / sizeof t->ws.u.merge.pair[0] / 2;
+    const trk_real g = t->params.merge_gate_d2;
+    uint16_t *idx = t->ws.cand;
+    trk_real *key = t->ws.w, pmax = 0; /* the pair workspace is free between the updates and initiation */
+    size_t n = 0, n_pair = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+        if (is_live(&t->track[i])) {
+            idx[n++] = (uint16_t)i;
+            key[i] = t->track[i].x[X];
+            if (t->track[i].p[P(X, X)] > pmax) pmax = t->track[i].p[P(X, X)];
+        }
+    sort_by_key(t, key, idx, n);
+    uint16_t *out = t->ws.u.merge.pair; /* after the sort: its scratch shares the union */
+    for (size_t k = 0; k < n; k++) {
+        const struct trk_track *a = &t->track[idx[k]];
+        const trk_real reach = trk_sqrt(g * (a->p[P(X, X)] + pmax)) * (1 + 16 * TRK_REAL_EPS);
+        for (size_t l = k + 1; l < n && key[idx[l]] - key[idx[k]] <= reach; l++) {
+            if (!may_duplicate(a, &t->track[idx[l]], g)) continue;
+            if (n_pair == cap) return -1;
+            const uint16_t i = idx[k] < idx[l] ? idx[k] : idx[l], j = idx[k] < idx[l] ? idx[l] : idx[k];
+            size_t m = n_pair++; /* insertion in (i, j) order: the pairs are few */
+            for (; m > 0 && (out[2 * m - 2] > i || (out[2 * m - 2] == i && out[2 * m - 1] > j)); m--) {
+                out[2 * m] = out[2 * m - 2];
+                out[2 * m + 1] = out[2 * m - 1];
             }
+            out[2 * m] = i;
+            out[2 * m + 1] = j;
         }
     }
+    return (long)n_pair;
+}
+
+/* End the weaker of every pair of live tracks that follow one target
+ * (PDA tracks sharing detections converge onto it), pair by pair in slot
+ * order: the candidate pairs of the sweep (merge_candidates), or every
+ * pair when there are more than the workspace holds or than the sort's
+ * scratch can take (the same decisions). */
+static TRK_NOINLINE void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep)
+{
+    const long n = TRK_MAX_TRACKS <= TRK_MAX_DETECTIONS && TRK_MAX_TRACKS <= TRK_I_PAIRS ? merge_candidates(t) : -1;
+    const uint16_t *pair = t->ws.u.merge.pair;
+    if (n < 0) {
+        merge_all_pairs(t, rep);
+        return;
+    }
+    for (long k = 0; k < n; k++) merge_pair(t, &t->track[pair[2 * k]], &t->track[pair[2 * k + 1]], rep);
 }
 
 /* ------------------------------------------------------------------ the table */

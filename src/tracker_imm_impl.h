@@ -134,7 +134,9 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
         if (inn[m].z_pred[ZY] - wy[m] < lo_y) lo_y = inn[m].z_pred[ZY] - wy[m];
         if (inn[m].z_pred[ZY] + wy[m] > hi_y) hi_y = inn[m].z_pred[ZY] + wy[m];
     }
-    for (size_t j = 0; j < t->ws.n_valid; j++) {
+    size_t j0, j1;
+    x_window(t, lo_x, hi_x, &j0, &j1); /* the shared group in the box's x range, then the own ones */
+    for (size_t j = j0 < j1 ? j0 : t->ws.n_shared; j < t->ws.n_valid; j = j + 1 == j1 ? t->ws.n_shared : j + 1) {
         const trk_real x = t->ws.x[j], y = t->ws.y[j];
         const int own = j >= t->ws.n_shared;
         if ((tentative && t->ws.used[j] == USED_CONFIRMED) || (!own && (x < lo_x || x > hi_x || y < lo_y || y > hi_y)))

@@ -27,6 +27,7 @@ struct cand_reach {
 };
 
 static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n);
+static void sort_by_key(struct trk_tracker *t, const trk_real *key, uint16_t *idx, size_t n);
 static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep);
 static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
                                            size_t n);
@@ -366,12 +367,16 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
 
 /* ------------------------------------------------------------------ the store */
 
-/* Sort idx[0..n) by the workspace x of the detection: a counting sort on n
- * buckets of equal width over [min x, max x], then an insertion sort that
- * finishes the buckets (O(n) for spread positions; correct for any). */
-static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n)
+/* Sort idx[0..n) by the workspace x of the detection (sort_by_key). */
+static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n) { sort_by_key(t, t->ws.x, idx, n); }
+
+/* Sort idx[0..n) (n <= TRK_MAX_DETECTIONS) by key[idx[i]]: a counting sort
+ * on n buckets of equal width over [min, max], then an insertion sort that
+ * finishes the buckets (O(n) for spread keys; correct for any; stable).
+ * Scratch: ws.u.sort. */
+static void sort_by_key(struct trk_tracker *t, const trk_real *key, uint16_t *idx, size_t n)
 {
-    const trk_real *x = t->ws.x;
+    const trk_real *x = key;
     if (n < 2) return;
     trk_real lo = x[idx[0]], hi = lo;
     for (size_t i = 1; i < n; i++) {

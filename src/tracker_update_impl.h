@@ -36,6 +36,7 @@ static trk_status predict(const struct trk_tracker *t, const struct trk_track *t
 static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr);
 static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                 const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set);
+static void x_window(const struct trk_tracker *t, trk_real lo, trk_real hi, size_t *j0, size_t *j1);
 static trk_status update_visibility(const struct trk_tracker *t, const struct trk_pda *pda,
                                     const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
                                     struct trk_visibility *vis);
@@ -113,7 +114,7 @@ static trk_status track_pda(struct trk_tracker *t, const struct trk_scan *scan, 
     if (imm_on(t)) {
         trk_i_pda_clutter(pda, &pr->pp, set, out);
         if (set->m_gated > 0)
-            out->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, out->lambda), set->n, set->w, &out->log_sum_e);
+            out->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, out->lambda), set->n, set->w, out);
         return imm_update(t, scan, set, out->beta0, pr);
     }
 #endif
@@ -259,7 +260,9 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
     const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;
     const uint8_t *used = t->ws.used;
     const int tentative = tr->status == TRK_TRACK_TENTATIVE;
-    for (size_t j = 0; j < n_shared; j++) {
+    size_t j0, j1;
+    x_window(t, zx - wx, zx + wx, &j0, &j1);
+    for (size_t j = j0; j < j1; j++) {
         const trk_real dx = t->ws.x[j] - zx, dy = t->ws.y[j] - zy;
         if (trk_fabs(dx) <= wx && trk_fabs(dy) <= wy && !(tentative && used[j] == USED_CONFIRMED)) {
             const trk_real nu[NZ] = {dx, dy}; /* formed in the box only (measured: 2 % of the scan) */
@@ -276,6 +279,31 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
     return gt.full;
 }
 
+/* The detections of the shared group (x order) that may lie in [lo, hi]
+ * in x: [*j0, *j1), by binary search, widened by a few ulps so that the
+ * caller's own box test decides at the edges; empty for a NaN bound. */
+static void x_window(const struct trk_tracker *t, trk_real lo, trk_real hi, size_t *j0, size_t *j1)
+{
+    const trk_real *x = t->ws.x;
+    const trk_real slack = 4 * TRK_REAL_EPS * (trk_fabs(lo) > trk_fabs(hi) ? trk_fabs(lo) : trk_fabs(hi));
+    size_t a = 0, b = t->ws.n_shared;
+    lo -= slack;
+    hi += slack;
+    while (a < b) { /* the first x >= lo */
+        const size_t c = a + (b - a) / 2;
+        if (x[c] < lo) a = c + 1;
+        else b = c;
+    }
+    *j0 = a;
+    b = t->ws.n_shared;
+    while (a < b) { /* the first x > hi */
+        const size_t c = a + (b - a) / 2;
+        if (x[c] <= hi) a = c + 1;
+        else b = c;
+    }
+    *j1 = (lo <= hi) ? a : *j0;
+}
+
 /* Kennedy eqs 21-24 with the PDA weights: ln sum_i (g_D,i / rho) l_i =
  * ln sum_i e_i - ln P_D - ln lambda (e_i = P_D g_D,i l_i; lambda = 0: +inf,
  * a certain detection). */
@@ -283,10 +311,14 @@ static trk_status update_visibility(const struct trk_tracker *t, const struct tr
                                     const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
                                     struct trk_visibility *vis)
 {
-    trk_real log_sum = out->log_sum_e;
-    if (set->n > 0)
-        log_sum = out->lambda > 0 ? out->log_sum_e - trk_log(pda->params.pd) - trk_log(out->lambda)
-                                  : (trk_real)INFINITY;
+    trk_real log_sum = trk_i_pda_log_sum_e(out);
+    if (set->n > 0) {
+        /* ln P_D and, for parametric clutter, ln lambda from trk_pda_init's logs */
+        const trk_real log_pd = pda->log_pd_norm + TRK_REAL_C(0.5) * (trk_real)pda->params.nz * TRK_LN_2PI;
+        const trk_real log_lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->log_e0_param - pda->log_miss
+                                                                                 : trk_log(out->lambda);
+        log_sum = out->lambda > 0 ? log_sum - log_pd - log_lambda : (trk_real)INFINITY;
+    }
     return trk_visibility_update_log(&t->vis_model, vis, pda->params.pd, pda->params.gate_prob, log_sum);
 }
 

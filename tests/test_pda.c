@@ -58,6 +58,58 @@ static void test_invariants(void **state)
     for (int i = 0; i < 16; i++) TRK_ASSERT_NEAR(p2[i], p[i], TRK_TOL(1e-12, 1e-4), 0);
 }
 
+/* The 2-D CV model's fixed-index combination (pda_impl.h,
+ * trk_i_pda_combine_cv2) against the general code: the same track embedded
+ * in 5 states (an extra state uncorrelated with the rest, H picking x and y)
+ * runs the general code, and must give the same x, P and beta, for random
+ * priors and detection sets, with and without the gate. */
+static void test_cv_fast_path(void **state)
+{
+    (void)state;
+    uint64_t rs = 7;
+    for (int rep = 0; rep < 200; rep++) {
+        struct trk_pda pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.85), TRK_REAL_C(0.02), rep % 4 != 3);
+        trk_real x[4], p[16], x5[5], p5[25] = {0}, h5[10] = {0}, z[2 * 12], beta[12], beta5[12];
+        /* a random SPD prior: P = L L' + I, L random lower */
+        trk_real l[16] = {0};
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j <= i; j++) l[i * 4 + j] = (trk_real)(2 * trk_test_urand(&rs) - 1) * 3;
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++) {
+                double v = i == j;
+                for (int k = 0; k < 4; k++) v += (double)l[i * 4 + k] * (double)l[j * 4 + k];
+                p[i * 4 + j] = (trk_real)v;
+            }
+        for (int i = 0; i < 4; i++) x[i] = (trk_real)(100 * trk_test_urand(&rs));
+        const size_t m = (size_t)(rep % 12);
+        for (size_t i = 0; i < m; i++) {
+            z[2 * i] = x[TRK_CV2_X] + (trk_real)(8 * trk_test_urand(&rs) - 4);
+            z[2 * i + 1] = x[TRK_CV2_Y] + (trk_real)(8 * trk_test_urand(&rs) - 4);
+        }
+        /* the embedding: states [x, vx, y, vy, e] */
+        for (int i = 0; i < 4; i++) {
+            x5[i] = x[i];
+            for (int j = 0; j < 4; j++) p5[i * 5 + j] = p[i * 4 + j];
+        }
+        x5[4] = 3;
+        p5[24] = 2;
+        h5[0 * 5 + TRK_CV2_X] = 1;
+        h5[1 * 5 + TRK_CV2_Y] = 1;
+        struct trk_pda_report r4, r5;
+        TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, R, x, p, m, z, NULL, beta, NULL, &r4));
+        TRK_ASSERT_OK(trk_pda_update(&pda, 5, h5, R, x5, p5, m, z, NULL, beta5, NULL, &r5));
+        TRK_ASSERT_NEAR(r4.beta0, r5.beta0, TRK_TOL(1e-13, 1e-5), 0);
+        for (size_t i = 0; i < m; i++) TRK_ASSERT_NEAR(beta[i], beta5[i], TRK_TOL(1e-13, 1e-5), 0);
+        for (int i = 0; i < 4; i++) TRK_ASSERT_NEAR(x[i], x5[i], TRK_TOL(1e-11, 1e-3), TRK_TOL(1e-12, 1e-5));
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++)
+                TRK_ASSERT_NEAR(p[i * 4 + j], p5[i * 5 + j], TRK_TOL(1e-10, 1e-3), TRK_TOL(1e-11, 1e-4));
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++) assert_true(p[i * 4 + j] == p[j * 4 + i]);
+        TRK_ASSERT_OK(trk_mat_check_spd(4, p, 0));
+    }
+}
+
 static void test_limits(void **state)
 {
     (void)state;
@@ -224,6 +276,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_invariants),
+        cmocka_unit_test(test_cv_fast_path),
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_amplitude_weights),
         cmocka_unit_test(test_nonparametric_and_include_all),

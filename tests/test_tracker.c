@@ -491,8 +491,10 @@ static void test_own_covariance(void **state)
             d[i].cov_m2[TRK_COV2_XY] = TRK_REAL_C(0.3);
             d[i].cov_m2[TRK_COV2_YY] = 3;
         }
-        /* mixed: one shared, two own */
-        d[0].has_cov = 0;
+        /* mixed: one shared, two own; the workspace holds the shared group
+         * in x order, then the own ones in scan order, so d[2] (the least x)
+         * shared keeps the order of the all-shared scan (x order: 2, 0, 1) */
+        d[2].has_cov = 0;
         TRK_ASSERT_OK(trk_tracker_process_scan(&b, &sa, NULL));
     }
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
@@ -819,6 +821,72 @@ static void test_visibility_methods(void **state)
 /* Two tracks started on one target converge (both gate its detections) and
  * are merged: the stronger is kept, the other ends as TRK_END_MERGED. With
  * merging off both survive. Times beyond +-2^62 us are refused. */
+/* d2 = dx' (P_a + P_b)^-1 dx over the whole state (the merge's test) */
+static double track_d2(const struct trk_track *a, const struct trk_track *b)
+{
+    trk_real c[16], l[16];
+    double y[4], d2 = 0;
+    for (int k = 0; k < 16; k++) c[k] = a->p[k] + b->p[k];
+    TRK_ASSERT_OK(trk_chol(4, c, l));
+    for (int i = 0; i < 4; i++) { /* L y = dx */
+        double v = (double)a->x[i] - (double)b->x[i];
+        for (int j = 0; j < i; j++) v -= (double)l[i * 4 + j] * y[j];
+        y[i] = v / (double)l[i * 4 + i];
+        d2 += y[i] * y[i];
+    }
+    return d2;
+}
+
+/* The merge over many tracks (the x-order sweep, and its fallback to every
+ * pair when the candidate pairs overflow): after every scan no two live
+ * tracks are duplicates, and every merge is counted. Single-point starts on
+ * clusters of detections give many near-duplicate tracks at once. */
+static void test_merge_many(void **state)
+{
+    (void)state;
+    uint64_t rs = 11;
+    for (int dense = 0; dense <= 1; dense++) {
+        struct trk_tracker_params p;
+        base_params(&p);
+        p.init.method = TRK_INIT_SINGLE_POINT;
+        p.merge_gate_d2 = 6;
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        static struct trk_detection d[TRK_MAX_DETECTIONS];
+        const size_t n = TRK_MAX_DETECTIONS < TRK_MAX_TRACKS ? TRK_MAX_DETECTIONS : TRK_MAX_TRACKS;
+        uint32_t merged = 0, ended = 0;
+        for (int k = 0; k < 6; k++) {
+            memset(d, 0, sizeof d);
+            for (size_t i = 0; i < n; i++) { /* clusters of 4; dense: all in one 10 m box */
+                const double cx = dense ? 0 : 40.0 * (double)(i / 4 % 8), cy = dense ? 0 : 40.0 * (double)(i / 32);
+                d[i].x_m = (trk_real)(cx + 10 * trk_test_urand(&rs) + k);
+                d[i].y_m = (trk_real)(cy + 10 * trk_test_urand(&rs));
+            }
+            struct trk_scan sc = {SEC(k), 0, n, d};
+            struct trk_scan_report rep;
+            uint32_t old_id = 0; /* tracks started in this scan came after the merge */
+            for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+                const struct trk_track *a = trk_tracker_track(&tk, i);
+                if (a && a->id > old_id) old_id = a->id;
+            }
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &sc, &rep));
+            check_invariants(&tk);
+            merged += rep.n_merged;
+            ended += rep.n_terminated;
+            for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+                const struct trk_track *a = trk_tracker_track(&tk, i);
+                if (!a || a->status == TRK_TRACK_TERMINATED || a->id > old_id) continue;
+                for (size_t j = i + 1; j < TRK_MAX_TRACKS; j++) {
+                    const struct trk_track *b = trk_tracker_track(&tk, j);
+                    if (b && b->status != TRK_TRACK_TERMINATED && b->id <= old_id)
+                        assert_true(track_d2(a, b) > p.merge_gate_d2);
+                }
+            }
+        }
+        assert_true(merged > 0);
+        assert_true(merged <= ended);
+    }
+}
+
 static void test_merge_duplicates(void **state)
 {
     (void)state;
@@ -935,6 +1003,7 @@ int main(void)
         cmocka_unit_test(test_amplitude_pdafai),
         cmocka_unit_test(test_visibility_methods),
         cmocka_unit_test(test_merge_duplicates),
+        cmocka_unit_test(test_merge_many),
         cmocka_unit_test(test_init_exclusion_and_visibility_reject),
     };
     return trk_run_tests("tracker", tests, NULL, NULL);

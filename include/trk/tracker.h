@@ -563,6 +563,9 @@ struct trk_tracker {
                 uint16_t tmp[TRK_MAX_DETECTIONS];
                 uint16_t count[TRK_MAX_DETECTIONS + 1];
             } sort;
+            struct {                                           /* the merge's candidate pairs */
+                uint16_t pair[2 * TRK_MAX_TRACKS];
+            } merge;
         } u;
     } ws;
 };

@@ -26,4 +26,16 @@ double bench_time_ns(void (*fn)(void *), void *arg, int reps);
 /* Keep a value alive so the optimiser cannot drop the work producing it. */
 void bench_sink(double v);
 
+/* Callgrind's instrumentation on and off around a measured region (make
+ * bench-instr); no-ops unless built with valgrind's header
+ * (TRK_BENCH_CALLGRIND, set by tool.mk when it is installed). */
+#ifdef TRK_BENCH_CALLGRIND
+#include <valgrind/callgrind.h>
+#define BENCH_INSTR_START() CALLGRIND_START_INSTRUMENTATION
+#define BENCH_INSTR_STOP() CALLGRIND_STOP_INSTRUMENTATION
+#else
+#define BENCH_INSTR_START() ((void)0)
+#define BENCH_INSTR_STOP() ((void)0)
+#endif
+
 #endif

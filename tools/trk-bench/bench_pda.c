@@ -1,7 +1,12 @@
 /* bench_pda.c - PDA track update and whole-scan benchmarks (issue 3):
  *   pda_update_m<m>   ns per predict + gate + PDA update of one track with m
  *                     detections in its gate (public API: trk_cv2_predict +
- *                     trk_pda_update)
+ *                     trk_pda_update), alternating in the same run with
+ *                     pda_update_m<m>_baseline, the hand-written loop of
+ *                     baseline_pda.c, and their ratio pda_update_m<m>_vs_baseline;
+ *                     pda_update_m<m>_baseline_rel_diff is the largest
+ *                     difference of the two posteriors (x, P) relative to
+ *                     the largest |value|: the same arithmetic
  *   scan_64x256       ns per trk_tracker_process_scan with 64 confirmed tracks
  *                     and 256 detections (64 targets + 192 clutter), the
  *                     default configuration (two-point initiation, existence,
@@ -22,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "baseline.h"
 #include "bench.h"
 #include "trk/kalman.h"
 #include "trk/pda.h"
@@ -38,7 +44,7 @@ static double urand(void)
 
 struct pda_job {
     struct trk_pda pda;
-    trk_real f[16], q[16], r[4];
+    struct baseline_pda base;
     trk_real x0[4], p0[16], x[4], p[16];
     size_t m;
     trk_real z[2 * 128], beta[128];
@@ -50,8 +56,55 @@ static void pda_once(void *arg)
     memcpy(j->x, j->x0, sizeof j->x);
     memcpy(j->p, j->p0, sizeof j->p);
     trk_status st = trk_cv2_predict(1, TRK_REAL_C(0.05), j->x, j->p);
-    st |= trk_pda_update(&j->pda, 4, trk_cv2_h, j->r, j->x, j->p, j->m, j->z, NULL, j->beta, NULL, NULL);
+    st |= trk_pda_update(&j->pda, 4, trk_cv2_h, j->base.r, j->x, j->p, j->m, j->z, NULL, j->beta, NULL, NULL);
     bench_sink((double)j->x[TRK_CV2_X] + (double)st);
+}
+
+static void baseline_once(void *arg)
+{
+    struct pda_job *j = arg;
+    memcpy(j->x, j->x0, sizeof j->x);
+    memcpy(j->p, j->p0, sizeof j->p);
+    baseline_pda_cv2(&j->base, j->x, j->p, j->m, j->z, j->beta);
+    bench_sink((double)j->x[TRK_CV2_X]);
+}
+
+/* max |a - b| over x and P relative to max |a| */
+static double rel_diff(void (*one)(void *), void (*two)(void *), struct pda_job *j)
+{
+    trk_real a[20];
+    one(j);
+    memcpy(a, j->x, sizeof j->x);
+    memcpy(a + 4, j->p, sizeof j->p);
+    two(j);
+    double dmax = 0, amax = 0;
+    trk_real b2[20];
+    memcpy(b2, j->x, sizeof j->x);
+    memcpy(b2 + 4, j->p, sizeof j->p);
+    for (int i = 0; i < 20; i++) {
+        const double b = (double)b2[i];
+        if (fabs((double)a[i] - b) > dmax) dmax = fabs((double)a[i] - b);
+        if (fabs((double)a[i]) > amax) amax = fabs((double)a[i]);
+    }
+    return dmax / amax;
+}
+
+/* name, name_baseline, name_vs_baseline: fn and base alternating, 5 times
+ * each, the fastest of each */
+static void time_vs_baseline(const char *name, void (*fn)(void *), void (*base)(void *), void *arg)
+{
+    double t_fn = 1e300, t_base = 1e300;
+    for (int rep = 0; rep < 5; rep++) {
+        const double a = bench_time_ns(fn, arg, 3), b = bench_time_ns(base, arg, 3);
+        if (a < t_fn) t_fn = a;
+        if (b < t_base) t_base = b;
+    }
+    char what[96];
+    bench_print(name, t_fn, "ns");
+    snprintf(what, sizeof what, "%s_baseline", name);
+    bench_print(what, t_base, "ns");
+    snprintf(what, sizeof what, "%s_vs_baseline", name);
+    bench_print(what, t_fn / t_base, "x");
 }
 
 TRK_BENCH(pda_update)
@@ -59,10 +112,8 @@ TRK_BENCH(pda_update)
     static struct pda_job j;
     struct trk_pda_params pp = {2, TRK_REAL_C(0.9), TRK_REAL_C(0.99), TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(1e-3), 1};
     if (trk_pda_init(&j.pda, &pp) != TRK_OK) return;
-    trk_cv2_transition(1, j.f);
-    trk_cv2_process_noise(1, TRK_REAL_C(0.05), j.q);
-    j.r[TRK_CV2_S(TRK_CV2_ZX, TRK_CV2_ZX)] = j.r[TRK_CV2_S(TRK_CV2_ZY, TRK_CV2_ZY)] = 4;
-    j.r[TRK_CV2_S(TRK_CV2_ZX, TRK_CV2_ZY)] = j.r[TRK_CV2_S(TRK_CV2_ZY, TRK_CV2_ZX)] = 0;
+    j.base = (struct baseline_pda){1, TRK_REAL_C(0.05), {4, 0, 0, 4}, pp.pd, pp.gate_prob, pp.clutter_density,
+                                   j.pda.gamma};
     const trk_real x0[4] = {1000, 2, -500, 1}; /* [x, vx, y, vy] */
     memcpy(j.x0, x0, sizeof x0);
     memset(j.p0, 0, sizeof j.p0);
@@ -81,9 +132,11 @@ TRK_BENCH(pda_update)
             j.z[2 * i] = (trk_real)(1002 + rad * 3 * cos(ang));
             j.z[2 * i + 1] = (trk_real)(-499 + rad * 3 * sin(ang));
         }
-        char name[64];
+        char name[64], what[96];
         snprintf(name, sizeof name, "pda_update_m%zu", j.m);
-        bench_print(name, bench_time_ns(pda_once, &j, 7), "ns");
+        time_vs_baseline(name, pda_once, baseline_once, &j);
+        snprintf(what, sizeof what, "%s_baseline_rel_diff", name);
+        bench_print(what, rel_diff(pda_once, baseline_once, &j), "-");
     }
 }
 
@@ -225,6 +278,39 @@ TRK_BENCH(scan_64x256)
     static const char *const names[] = {"scan_64x256", "scan_64x256_pda"};
     static const enum scan_cfg cfg[] = {SCAN_DEFAULT, SCAN_PDA};
     scan_bench(names, cfg, 2);
+}
+
+/* The instruction count of one scan_64x256 (issue 19: a figure that does
+ * not depend on the machine's load): the default configuration's timed
+ * scans once, with callgrind's instrumentation on for them alone (make
+ * bench-instr runs this under valgrind --instr-atstart=no and divides its
+ * count by the scans printed here; without valgrind the macros do
+ * nothing). */
+TRK_BENCH(scan_64x256_instr)
+{
+    if (TRK_MAX_TRACKS < N_TGT || TRK_MAX_DETECTIONS < N_DET) {
+        bench_print("scan_64x256_instr_skipped_capacity", 0, "-");
+        return;
+    }
+    struct scan_job *j = scan_job_new();
+    struct trk_tracker_params p;
+    if (!j) return;
+    scan_params(SCAN_DEFAULT, &p);
+    int ok = trk_tracker_init(&j->tk, &p) == TRK_OK;
+    for (int k = 0; ok && k < 4; k++) {
+        j->scan[k].time_us = (int64_t)k * 1000000;
+        j->scan[k].n_detections = N_TGT;
+        ok = trk_tracker_process_scan(&j->tk, &j->scan[k], NULL) == TRK_OK;
+        j->scan[k].n_detections = N_DET;
+    }
+    BENCH_INSTR_START();
+    for (int k = 4; ok && k < N_SCANS; k++) {
+        j->scan[k].time_us = (int64_t)k * 1000000;
+        ok = trk_tracker_process_scan(&j->tk, &j->scan[k], &j->rep) == TRK_OK;
+    }
+    BENCH_INSTR_STOP();
+    if (ok) bench_print("scan_64x256_instr_scans", N_SCANS - 4, "scans");
+    free(j);
 }
 
 TRK_BENCH(scan_64x256_mn_kn)

@@ -3,3 +3,12 @@
 # bridge benchmarks (bench_lcm.c) run the bridge core of libtrk_lcm.a over
 # liblcm.
 TOOL_LDLIBS_trk-bench += $(or $(shell pkg-config --libs lcm 2>/dev/null),-llcm)
+# The baseline loops (baseline_*.c, issue 19) are compiled with the library's
+# own optimisation flags, so a ratio compares code, not flags.
+$(BUILD)/obj/tools/trk-bench/baseline_pda.o: CFLAGS_ALL += $(LIBOPT)
+# make bench-instr: callgrind's instrumentation around the measured scans
+# (bench.h BENCH_INSTR_*), when valgrind's header is installed (.ci/run's
+# valgrind package has it).
+ifneq ($(wildcard /usr/include/valgrind/callgrind.h),)
+TOOL_CFLAGS_trk-bench += -DTRK_BENCH_CALLGRIND
+endif

@@ -53,7 +53,7 @@
 #include "trk/term_shiryaev.h"
 
 #define MAX_H 128
-#define MAX_KN 512
+#define MAX_KN 2048 /* --kn-k full over the default windows: 1054 rules */
 
 struct bl_cfg {
     /* Table 1 */
@@ -222,6 +222,8 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
     c.pv0 = 1.0;
     long runs;
     double kn_ns[64];
+    static const int kn_k_values[] = {0, 1};
+    int kn_k_full = 0;
     int n_kn_n, paper = 0; /* --paper: the default size (a --runs still wins): nothing to set */
     const struct sim_opt opts[] = {
         SIM_OPT_LONG("--runs", &runs, "N", "10000", SIM_GE, 1, 0, "runs per hypothesis, as in the paper"),
@@ -231,7 +233,10 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
         SIM_OPT_LIST("--page-h", c.h_page, &c.n_page, MAX_H, "0.5:6:0.25", 0, 0, 0, "Page thresholds"),
         SIM_OPT_LIST("--shir-h", c.h_shir, &c.n_shir, MAX_H, "-1:5:0.25", 0, 0, 0,
                      "Shiryaev thresholds on the log-odds"),
-        SIM_OPT_LIST("--kn-n", kn_ns, &n_kn_n, 64, "4:64:2", 0, 0, 0, "K/N window lengths in scans; K = N/16..N/3"),
+        SIM_OPT_LIST("--kn-n", kn_ns, &n_kn_n, 64, "4:64:2", 0, 0, 0, "K/N window lengths in scans"),
+        SIM_OPT_CHOICE("--kn-k", &kn_k_full, "trimmed|full", kn_k_values, "trimmed",
+                       "K of each window: N/16..N/3 (trimmed: smaller K give false-track\n"
+                       "lives far beyond the plot and most of the run time), or 0..N-1"),
         SIM_OPT_DOUBLE("--beta0", &c.beta0, "B", "0.5", 0, 0, 0, "Shiryaev prior: P(change before the first look)"),
         SIM_OPT_DOUBLE("--rho", &c.rho, "R", "0.005", 0, 0, 0, "Shiryaev prior: per-look change probability"),
         SIM_OPT_END};
@@ -255,12 +260,19 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
     qsort(c.h_page, (size_t)c.n_page, sizeof(double), cmp_double);
     qsort(c.h_shir, (size_t)c.n_shir, sizeof(double), cmp_double);
     c.n_kn = 0;
+    /* trimmed: K below N/16 only gives false-track lives far beyond the range
+     * of interest (0/64 lives ~3000 cycles under H0) and would dominate the
+     * run time; K above N/3 only true-track lives below the plot's */
+    const char *kn_range = kn_k_full ? "K = 0..N-1" : "K = N/16..N/3";
     for (int a = 0; a < n_kn_n; a++) {
         int n = (int)kn_ns[a];
-        /* K below N/16 only gives false-track lives far beyond the range of
-         * interest (0/64 lives ~3000 cycles under H0) and would dominate the
-         * run time */
-        for (int k = n / 16; k <= n / 3 && c.n_kn < MAX_KN; k++) {
+        const int k_lo = kn_k_full ? 0 : n / 16, k_hi = kn_k_full ? n - 1 : n / 3;
+        for (int k = k_lo; k <= k_hi; k++) {
+            if (c.n_kn == MAX_KN) {
+                fprintf(stderr, "blanding-add-arl: more than %d K/N rules (%s over --kn-n): fewer windows\n",
+                        MAX_KN, kn_range);
+                return 2;
+            }
             c.kn_k[c.n_kn] = k;
             c.kn_n[c.n_kn] = n;
             c.n_kn++;
@@ -299,8 +311,8 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
     if (!com.quiet)
         fprintf(stderr,
             "blanding-add-arl: %ld runs per hypothesis, %d Page + %d Shiryaev thresholds, %d K/N "
-            "rules, cap %ld looks, seed %llu, %d threads\n",
-            runs, c.n_page, c.n_shir, c.n_kn, c.max_scans, (unsigned long long)com.seed, threads);
+            "rules (%s), cap %ld looks, seed %llu, %d threads\n",
+            runs, c.n_page, c.n_shir, c.n_kn, kn_range, c.max_scans, (unsigned long long)com.seed, threads);
     /* every run a work unit (its nt first-passage looks in its slot) */
     struct bl_units bu = {&c, runs, com.seed};
     double wall;
@@ -319,6 +331,8 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
     if (!f) return 1;
     fprintf(f, "# runs %ld seed %llu max_scans %ld beta0 %g rho %g\n", runs,
             (unsigned long long)com.seed, c.max_scans, c.beta0, c.rho);
+    fprintf(f, "# K/N rules: %s (--kn-k %s) for each window N of --kn-n\n", kn_range,
+            kn_k_full ? "full" : "trimmed");
     fprintf(f, "test,k,n,h,add_cycles,add_se,arl_cycles,arl_se,censored_h0,censored_h1\n");
     static struct bl_point pts[2 * MAX_H + MAX_KN];
     for (int j = 0; j < nt; j++)
@@ -406,15 +420,15 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
 
     sim_plotf(&com, "",
               "set datafile separator ','\n"
-              "set title 'Track termination, Blanding 2007 Table 1 (%ld runs per hypothesis)'\n"
+              "set title 'Track termination, Blanding 2007 Table 1 (%ld runs per hypothesis; K/N: %s)'\n"
               "set xlabel 'ADD: mean false-track life (scan cycles)'\n"
               "set ylabel 'ARL: mean true-track life (scan cycles)'\n"
               "set logscale y\nset grid\nset key left top\nset xrange [0:40]\n"
-              "plot '%s.csv' using (strcol(1) eq 'kn' ? $5 : 1/0):7 with points pt 1 lc rgb '#bbbbbb' title 'K/N (all K, N)', \\\n"
+              "plot '%s.csv' using (strcol(1) eq 'kn' ? $5 : 1/0):7 with points pt 1 lc rgb '#bbbbbb' title 'K/N (%s)', \\\n"
               "     '%s_front.csv' using 3:4 with linespoints pt 7 lc rgb '#1f77b4' title 'K/N upper envelope', \\\n"
               "     '%s.csv' using (strcol(1) eq 'page' ? $5 : 1/0):7 with linespoints pt 5 lc rgb '#d62728' title 'Page', \\\n"
               "     '%s.csv' using (strcol(1) eq 'shiryaev' ? $5 : 1/0):7 with linespoints pt 9 lc rgb '#2ca02c' title 'Shiryaev (beta0 %g, rho %g)'\n",
-              runs, com.out, com.out, com.out, com.out, c.beta0, c.rho);
+              runs, kn_range, com.out, kn_range, com.out, com.out, com.out, c.beta0, c.rho);
     free(res);
     return 0;
 }

@@ -91,6 +91,42 @@ static void truth_msg(const struct scenario *sc, int64_t utime, int64_t seq, trk
     m->n_omitted = (int32_t)(sc->n_tg - n);
 }
 
+/* --print-bridge-config: the trk-lcm-bridge settings that match this
+ * scenario (a config file for `trk-lcm-bridge --config`): the sensor's P_D
+ * (the amplitude model's at the threshold, or --pd), its position noise, the
+ * clutter density it produces and the targets' process noise. A bridge left
+ * at its own defaults (P_D 0.9, 1 m, 1e-4 per m^2) tracks this sonar's
+ * detections with the wrong model. */
+static void print_bridge_config(const struct scenario *sc, FILE *f)
+{
+    const struct scen_params *p = &sc->p;
+    const double area = (p->x_max_m - p->x_min_m) * (p->y_max_m - p->y_min_m);
+    const double density = p->clutter_count >= 0 ? (double)p->clutter_count / area : p->clutter_density_per_m2;
+    double pd_sum = 0, pd_min = 1, pd_max = 0;
+    for (size_t i = 0; i < sc->n_tg; i++) {
+        pd_sum += sc->tg[i].pd;
+        pd_min = fmin(pd_min, sc->tg[i].pd);
+        pd_max = fmax(pd_max, sc->tg[i].pd);
+    }
+    const double pd = sc->n_tg ? pd_sum / (double)sc->n_tg : p->pd;
+    const unsigned s = p->sensor_id;
+    fprintf(f, "# trk-lcm-bridge settings matching trk-sonar-sim's scenario (trk-sonar-sim\n"
+               "# --print-bridge-config with the same scenario options)\n");
+    if (s > 0) fprintf(f, "sensors = %u\n", s + 1);
+    fprintf(f, "process_noise_q = %.9g\n", p->process_noise_q);
+    if (sc->n_tg && pd_min != pd_max)
+        fprintf(f, "# the targets' P_D range from %.6g to %.6g: their mean\n", pd_min, pd_max);
+    if (p->amp_kind != AMP_NONE)
+        fprintf(f, "# P_D of the %s amplitude model at the threshold (pfa %g)\n", amp_kind_name(p->amp_kind),
+                p->pfa);
+    fprintf(f, "sensor.%u.pd = %.6g\n", s, pd);
+    fprintf(f, "sensor.%u.meas_sigma_m = %.9g\n", s, p->meas_sigma_m);
+    fprintf(f, "# clutter: %s over the region %g..%g x %g..%g m\n",
+            p->clutter_count >= 0 ? "a fixed count per scan" : "Poisson", p->x_min_m, p->x_max_m, p->y_min_m,
+            p->y_max_m);
+    fprintf(f, "sensor.%u.clutter_density_per_m2 = %.9g\n", s, density);
+}
+
 /* --target X,Y,VX,VY[,SNR_DB], repeated. */
 struct targets {
     struct scen_target_init t[MAX_TARGETS_CLI];
@@ -137,7 +173,7 @@ int main(int argc, char **argv)
     double rate_hz = -1, pd = NAN, speed[2], region[4];
     long scans = -1, bad_every = 0, seed, sensor_id, n_targets;
     long start_utime_l = -1;
-    int quiet = 0, have_pd = 0;
+    int quiet = 0, have_pd = 0, print_config = 0;
     char err[512];
 
     scen_defaults(&p);
@@ -168,6 +204,10 @@ int main(int argc, char **argv)
                      "cycling: truncated, count too large, utime out of range,\n"
                      "time going backwards, unknown sensor, garbage (0 = never)"),
         CLI_OPT_FLAG("--quiet", &quiet, "no start-up line on stderr"),
+        CLI_OPT_FLAG("--print-bridge-config", &print_config,
+                     "print the trk-lcm-bridge settings that match this scenario\n"
+                     "(P_D, position noise, clutter density, q; a file for\n"
+                     "trk-lcm-bridge --config) and exit"),
         CLI_OPT_HEADING("Scenario:"),
         CLI_OPT_LONG("--seed", &seed, "N", NULL, CLI_IN, 0, 9e18, "(1)"),
         CLI_OPT_LONG("--sensor-id", &sensor_id, "N", NULL, CLI_IN, 0, 2147483647.0, "(0)"),
@@ -254,6 +294,12 @@ int main(int argc, char **argv)
     if (scen_init(&sc, &p, err, sizeof err) != 0) {
         fprintf(stderr, "trk-sonar-sim: %s\n", err);
         return 2;
+    }
+
+    if (print_config) {
+        print_bridge_config(&sc, stdout);
+        scen_free(&sc);
+        return fflush(stdout) == 0 && !ferror(stdout) ? 0 : 1;
     }
 
     struct sink sink = {0};
