@@ -16,13 +16,15 @@
  *   resolution cell  lambda = P_FA / cell; 1, 0.25 and 0.1 m^2 all reported
  *   initial track    two-point differencing (per axis [[r, r/T],
  *                    [r/T, 2r/T^2]]), estimate drawn from N(truth, P_0)
- *                    (--init steady: the clutter-free Kalman steady state)
+ *                    (--start steady: the clutter-free Kalman steady state)
  *   target velocity  1 m/s along x (does not change the error statistics:
  *                    the filter is linear and the clutter homogeneous)
  *   texture          drawn independently for every detection (i.i.d.
  *                    amplitudes with the K marginal law: the model the
  *                    PDAFAI assumes)
  *   perfect knowledge the filters use the true P_FA, P_D = S1(t), lambda, nu, SNR
+ *   runaway gate     a gate holding more than TRK_MAX_DETECTIONS passes its
+ *                    nearest (--gate-cap truncate:N | lost:LAMBDA_VG)
  */
 #include <math.h>
 #include <stdio.h>
@@ -50,7 +52,7 @@ static int paper_value(double nu, double snr, double pfa, int f)
 }
 
 struct tl_out {          /* one run, both filters */
-    unsigned char lost[2], hard[2], failed[2], trunc[2];
+    unsigned char lost[2], hard[2], failed[2], trunc[2], gate_lost[2];
     int32_t scans[2];
     int32_t gated[2];
     int32_t gated_clutter[2];
@@ -63,13 +65,13 @@ static void keep(void *slot, int f, const struct st_result *res)
     o->hard[f] = (unsigned char)res->lost_hard;
     o->failed[f] = (unsigned char)res->failed;
     o->trunc[f] = res->truncated > 0;
+    o->gate_lost[f] = (unsigned char)res->gate_lost;
     o->scans[f] = (int32_t)res->scans;
     o->gated[f] = (int32_t)res->gated;
     o->gated_clutter[f] = (int32_t)res->gated_clutter;
 }
 
 static const int texture_values[] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
-static const int init_values[] = {ST_INIT_TWOPOINT, ST_INIT_STEADY};
 static const int grid_values[] = {TRK_AMP_GRID_UNIFORM, TRK_AMP_GRID_GEOMETRIC};
 
 SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III: lost tracks, PDAF vs PDAFAI in K clutter")
@@ -77,6 +79,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     long runs, scans, amp_size = 0;
     double cells[MAXL], nus[MAXL], snrs[MAXL], pfas[MAXL];
     int ncell, nnu, nsnr, npfa, init, grid, texture;
+    struct st_gate_cap gate_cap;
     const struct sim_opt opts[] = {
         SIM_OPT_LONG("--runs", &runs, "N", "10000", SIM_GE, 1, 0, "runs per scenario and filter, as in the paper"),
         SIM_OPT_LONG("--scans", &scans, "N", "300", SIM_IN, 1, 1000000, "scans per run"),
@@ -90,8 +93,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
                        "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
                        "per scan (bursty clutter, see tools/sim/single_target.h)"),
-        SIM_OPT_CHOICE("--init", &init, "twopoint|steady", init_values, "twopoint",
-                       "initial track covariance (see the CSV header)"),
+        SIM_OPT_START(&init),
+        SIM_OPT_ALIAS("--init", "--start"),
+        SIM_OPT_GATE_CAP(&gate_cap),
         SIM_OPT_CHOICE("--grid", &grid, "uniform|geometric", grid_values, "uniform",
                        "amplitude table grid (geometric = Brekke\neqs 43-45, piecewise linear)"),
         SIM_OPT_LONG("--amp-size", &amp_size, "N", NULL, SIM_IN, 0, 65536,
@@ -130,7 +134,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     }
     for (int c = 0; c < ncell; c++)
         for (int s = 0; s < nscen; s++)
-            if (sim_brekke_model(cli.name, &mod[c * nscen + s], &amp[s], cells[c], scans, init, texture, com.seed))
+            if (sim_brekke_model(cli.name, &mod[c * nscen + s], &amp[s], cells[c], scans, init, texture, &gate_cap,
+                                 com.seed))
                 return 1;
     if (!com.quiet)
         fprintf(stderr,
@@ -156,8 +161,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
             init == ST_INIT_TWOPOINT ? "two-point differencing" : "clutter-free Kalman steady state",
             texture == ST_TEXTURE_CELL ? "independent per detection" : "one per scan",
             grid == TRK_AMP_GRID_UNIFORM ? "uniform" : "geometric (eqs 43-45)", (unsigned long long)com.seed, runs);
+    sim_assumptions_csv(f, init, &gate_cap, -1);
     fprintf(f, "cell_m2,nu,snr_db,pfa,pd,lambda_per_m2,filter,runs,lost,lost_per_10000,lo95_per_10000,hi95_per_10000,"
-               "paper,paper_in_ci,lost_c2,failed,truncated_runs,mean_scans,gated_per_scan,gated_clutter_per_scan,only_this_lost\n");
+               "paper,paper_in_ci,lost_c2,failed,truncated_runs,mean_scans,gated_per_scan,gated_clutter_per_scan,only_this_lost,gate_cap_lost\n");
     long total_scans = 0;
     double *lostv[2], *lov[2], *hiv[2];
     for (int fl = 0; fl < 2; fl++) {
@@ -180,6 +186,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
             const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, cc = s % npfa;
             const long mi = (long)c * nscen + s;
             long lost[2] = {0, 0}, hard[2] = {0, 0}, failed[2] = {0, 0}, only[2] = {0, 0}, trunc[2] = {0, 0};
+            long gl[2] = {0, 0};
             double sc[2] = {0, 0}, gt[2] = {0, 0}, gc[2] = {0, 0};
             for (long run = 0; run < runs; run++) {
                 const struct tl_out *o = &out[mi * runs + run];
@@ -188,6 +195,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                     hard[fl] += o->hard[fl];
                     failed[fl] += o->failed[fl];
                     trunc[fl] += o->trunc[fl];
+                    gl[fl] += o->gate_lost[fl];
                     sc[fl] += o->scans[fl];
                     gt[fl] += o->gated[fl];
                     gc[fl] += o->gated_clutter[fl];
@@ -214,11 +222,11 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                 hiv[fl][idx] = hi * 10000;
                 snprintf(cell_txt[fl], sizeof cell_txt[fl], "%7.1f [%6.1f, %6.1f]%s", (double)lost[fl] * scale,
                          lo * 10000, hi * 10000, in ? " " : "*");
-                fprintf(f, "%g,%g,%g,%g,%.6g,%.6g,%s,%ld,%ld,%.6g,%.6g,%.6g,%d,%d,%ld,%ld,%ld,%.6g,%.6g,%.6g,%ld\n", cells[c],
+                fprintf(f, "%g,%g,%g,%g,%.6g,%.6g,%s,%ld,%ld,%.6g,%.6g,%.6g,%d,%d,%ld,%ld,%ld,%.6g,%.6g,%.6g,%ld,%ld\n", cells[c],
                         nus[a], snrs[b], pfas[cc], amp[s].pd, mod[mi].p.lambda_per_m2, fl ? "PDAFAI" : "PDAF", runs,
                         lost[fl], (double)lost[fl] * scale, lo * 10000, hi * 10000, pv[fl], in, hard[fl], failed[fl],
                         trunc[fl], sc[fl] / (double)runs, sc[fl] > 0 ? gt[fl] / sc[fl] : 0,
-                        sc[fl] > 0 ? gc[fl] / sc[fl] : 0, only[fl]);
+                        sc[fl] > 0 ? gc[fl] / sc[fl] : 0, only[fl], gl[fl]);
             }
             /* mean gated clutter per scan: of the PDAFAI (it stays on the target) */
             const double gate_mean = sc[1] > 0 ? gc[1] / sc[1] : 0;
@@ -255,12 +263,13 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
             }
         if (sim_csv_close(&g_out) != 0) return 1;
         struct sim_text t = {NULL, 0, 0, 0};
+        char as[160];
         sim_text_add(&t,
                      "set datafile separator ','\nset datafile missing 'nan'\nset logscale y\nset yrange [0.4:20000]\n"
                      "set grid\nset key bottom left font ',8'\nset xtics rotate by 60 right font ',7'\n"
                      "set xrange [-0.5:%d.5]\nset ylabel 'lost tracks per 10000 (0 drawn at 0.5)'\n"
-                     "set multiplot layout 1,2 title 'Brekke 2011 Tables II-III: lost tracks (%ld runs, 300 s)'\n",
-                     nscen - 1, runs);
+                     "set multiplot layout 1,2 title \"Brekke 2011 Tables II-III: lost tracks (%ld runs, 300 s)\\n%s\"\n",
+                     nscen - 1, runs, sim_assumptions_title(as, sizeof as, init, &gate_cap, -1));
         for (int fl = 0; fl < 2; fl++) {
             sim_text_add(&t,
                          "set title '%s'\nplot '%s' every ::1 using 1:%d:xtic(2) with points pt 6 ps 1.5 "

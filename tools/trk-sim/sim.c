@@ -2,6 +2,7 @@
 #include "sim.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +14,7 @@
 #include "par.h"
 #include "plot.h"
 #include "single_target.h"
+#include "toc.h"
 #include "trk/table_file.h"
 
 /* ---------------------------------------------------------------- options */
@@ -225,14 +227,80 @@ int sim_amp_k_grid(const char *exp, struct st_amp *amp, const double *nu, int n_
     return 0;
 }
 
+/* ---------------------------------------------------------------- assumptions */
+
+#define SIM_STR_(x) #x
+#define SIM_STR(x) SIM_STR_(x)
+const char sim_gate_cap_default[] = "truncate:" SIM_STR(TRK_MAX_DETECTIONS);
+const int sim_mre_start_values[3] = {TOC_START_TWOPOINT, TOC_START_ZERO, TOC_START_STEADY};
+
+int sim_parse_start(const char *v, void *dst)
+{
+    /* "twopoint": the spelling of --init, accepted */
+    if (strcmp(v, "two-point") == 0 || strcmp(v, "twopoint") == 0) *(int *)dst = ST_INIT_TWOPOINT;
+    else if (strcmp(v, "steady") == 0) *(int *)dst = ST_INIT_STEADY;
+    else return -1;
+    return 0;
+}
+
+int sim_parse_gate_cap(const char *v, void *dst)
+{
+    struct st_gate_cap *g = dst;
+    if (strncmp(v, "truncate:", 9) == 0) {
+        long n;
+        if (cli_parse_long(v + 9, &n) != 0 || n < 1 || n > TRK_MAX_DETECTIONS) return -1;
+        *g = (struct st_gate_cap){ST_GATE_TRUNCATE, n, 0};
+        return 0;
+    }
+    if (strncmp(v, "lost:", 5) == 0) {
+        double l;
+        if (cli_parse_double(v + 5, &l) != 0 || !(l > 0 && l < INFINITY)) return -1;
+        *g = (struct st_gate_cap){ST_GATE_LOST, 0, l};
+        return 0;
+    }
+    return -1;
+}
+
+const char *sim_start_name(int init) { return init == ST_INIT_STEADY ? "steady" : "two-point"; }
+
+char *sim_gate_cap_name(const struct st_gate_cap *g, char *buf, size_t n)
+{
+    if (g->mode == ST_GATE_LOST) snprintf(buf, n, "lost:%g", g->lambda_vg);
+    else snprintf(buf, n, "truncate:%ld", g->n > 0 ? g->n : (long)TRK_MAX_DETECTIONS);
+    return buf;
+}
+
+void sim_assumptions_csv(FILE *f, int init, const struct st_gate_cap *g, int mre_start)
+{
+    char gc[64];
+    fprintf(f, "# assumptions: start %s (--start: initial covariance %s), gate cap %s (--gate-cap: %s)",
+            sim_start_name(init),
+            init == ST_INIT_STEADY ? "the clutter-free Kalman steady state" : "by two-point differencing",
+            sim_gate_cap_name(g, gc, sizeof gc),
+            g->mode == ST_GATE_LOST ? "the track is lost when lambda V_G exceeds the cap"
+                                    : "a gate holding more passes its nearest by d2");
+    if (mre_start >= 0) fprintf(f, ", MRE start %s (--mre-start)", toc_start_name(mre_start));
+    fprintf(f, "\n");
+}
+
+char *sim_assumptions_title(char *buf, size_t n, int init, const struct st_gate_cap *g, int mre_start)
+{
+    char gc[64];
+    const int k = snprintf(buf, n, "start %s, gate cap %s", sim_start_name(init), sim_gate_cap_name(g, gc, sizeof gc));
+    if (mre_start >= 0 && k >= 0 && (size_t)k < n)
+        snprintf(buf + k, n - (size_t)k, ", MRE start %s", toc_start_name(mre_start));
+    return buf;
+}
+
 int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *amp, double cell_m2, long scans,
-                     int init, int texture, uint64_t seed)
+                     int init, int texture, const struct st_gate_cap *gate_cap, uint64_t seed)
 {
     struct st_params sp;
     st_params_brekke(&sp);
     sp.n_scans = scans;
     sp.init = init;
     sp.texture = texture;
+    if (gate_cap) sp.gate_cap = *gate_cap;
     sp.amp = &amp->m;
     sp.lambda_per_m2 = amp->pfa / cell_m2;
     sp.seed = seed;

@@ -174,10 +174,49 @@ int sim_amp_k_grid(const char *exp, struct st_amp *amp, const double *nu, int n_
                    int n_snr, const double *pfa, int n_pfa, int grid, unsigned size);
 
 /* *m = Brekke's Table I model (st_params_brekke) on the amplitude model
- * *amp, lambda = amp->pfa / cell_m2, with scans per run, initial track and
- * texture (st_params) and the seed. 0, or -1 with a message on stderr. */
+ * *amp, lambda = amp->pfa / cell_m2, with scans per run, initial track,
+ * texture and runaway-gate rule (st_params; gate_cap NULL: the default) and
+ * the seed. 0, or -1 with a message on stderr. */
+struct st_gate_cap;
 int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *amp, double cell_m2, long scans,
-                     int init, int texture, uint64_t seed);
+                     int init, int texture, const struct st_gate_cap *gate_cap, uint64_t seed);
+
+/* The assumptions that change the results (issue 18 item 4), one option
+ * each, the same name and meaning in every experiment, named in every CSV
+ * header and plot title:
+ *   --start two-point|steady   the single-target runs' initial track
+ *                              covariance (enum st_init; --init twopoint,
+ *                              the old spelling, is accepted)
+ *   --gate-cap truncate:N|lost:L  the runaway-gate rule (struct st_gate_cap)
+ *   --mre-start two-point|zero|steady  the MRE's start (enum toc_start) */
+#define SIM_START_HELP                                                                      \
+    "initial track covariance P0 (the estimate drawn from N(truth, P0)):\n"                 \
+    "two-point differencing, or the clutter-free Kalman steady state"
+#define SIM_OPT_START(dst_) \
+    SIM_OPT_CUSTOM("--start", dst_, sim_parse_start, "two-point|steady", "two-point", SIM_START_HELP)
+#define SIM_GATE_CAP_HELP                                                                   \
+    "runaway gate: truncate:N passes the N nearest (d2) of a gate holding\n"                \
+    "more (N <= TRK_MAX_DETECTIONS); lost:L declares the track lost when\n"                 \
+    "lambda V_G exceeds L"
+#define SIM_OPT_GATE_CAP(dst_) \
+    SIM_OPT_CUSTOM("--gate-cap", dst_, sim_parse_gate_cap, "truncate:N|lost:L", sim_gate_cap_default, SIM_GATE_CAP_HELP)
+#define SIM_MRE_START_HELP                                                                  \
+    "the MRE's start at every P_FA: two-point differencing (a new track),\n"                \
+    "P = 0, or the clutter-free Kalman steady state"
+#define SIM_OPT_MRE_START(dst_) \
+    SIM_OPT_CHOICE("--mre-start", dst_, "two-point|zero|steady", sim_mre_start_values, "two-point", SIM_MRE_START_HELP)
+extern const char sim_gate_cap_default[];  /* "truncate:<TRK_MAX_DETECTIONS>" */
+extern const int sim_mre_start_values[3];
+int sim_parse_start(const char *v, void *dst);     /* int *: enum st_init */
+int sim_parse_gate_cap(const char *v, void *dst);  /* struct st_gate_cap * */
+const char *sim_start_name(int init);              /* "two-point", "steady" */
+/* "truncate:256" or "lost:50" into buf[n]; returns buf. */
+char *sim_gate_cap_name(const struct st_gate_cap *g, char *buf, size_t n);
+/* The CSV header line "# assumptions: start S (--start), gate cap G
+ * (--gate-cap: ...)[, MRE start M (--mre-start)]" (mre_start < 0: none). */
+void sim_assumptions_csv(FILE *f, int init, const struct st_gate_cap *g, int mre_start);
+/* The same for a plot title: "start S, gate cap G[, MRE start M]". */
+char *sim_assumptions_title(char *buf, size_t n, int init, const struct st_gate_cap *g, int mre_start);
 
 /* Every run (model k < n_models, run < runs) as a work unit
  * (sim_run_units): st_run with each filter ai < n_filters (0 PDAF, 1
