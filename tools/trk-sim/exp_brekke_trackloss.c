@@ -268,8 +268,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                      "set datafile separator ','\nset datafile missing 'nan'\nset logscale y\nset yrange [0.4:20000]\n"
                      "set grid\nset key bottom left font ',8'\nset xtics rotate by 60 right font ',7'\n"
                      "set xrange [-0.5:%d.5]\nset ylabel 'lost tracks per 10000 (0 drawn at 0.5)'\n"
-                     "set multiplot layout 1,2 title \"Brekke 2011 Tables II-III: lost tracks (%ld runs, 300 s)\\n%s\"\n",
-                     nscen - 1, runs, sim_assumptions_title(as, sizeof as, init, &gate_cap, -1));
+                     "set multiplot layout 1,2 title \"Brekke 2011 Tables II-III: lost tracks (%ld runs x %ld scans)\\n%s\"\n",
+                     nscen - 1, runs, scans, sim_assumptions_title(as, sizeof as, init, &gate_cap, -1));
         for (int fl = 0; fl < 2; fl++) {
             sim_text_add(&t,
                          "set title '%s'\nplot '%s' every ::1 using 1:%d:xtic(2) with points pt 6 ps 1.5 "
