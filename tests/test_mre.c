@@ -192,10 +192,9 @@ static trk_status q2_synth(const void *ctx, trk_real pfa, trk_real lv, trk_real 
     return TRK_OK;
 }
 
-static void test_toc(void **state)
+/* Brekke's Table I model with the synthetic q2 along the ROC, 1 m^2 cells. */
+static struct trk_toc_params toc_setup(const double *snr)
 {
-    (void)state;
-    static const double snr = 10;
     struct trk_toc_params tp;
     memset(&tp, 0, sizeof tp);
     tp.mre = base(2, 1, 0.00015625, 1.0 / 12, 1);
@@ -204,7 +203,15 @@ static void test_toc(void **state)
     tp.pfa_min = TRK_REAL_C(1e-6);
     tp.pfa_max = TRK_REAL_C(0.5);
     tp.q2_fn = q2_synth;
-    tp.q2_ctx = &snr;
+    tp.q2_ctx = snr;
+    return tp;
+}
+
+static void test_toc(void **state)
+{
+    (void)state;
+    static const double snr = 10;
+    struct trk_toc_params tp = toc_setup(&snr);
     struct trk_toc_result r;
     TRK_ASSERT_OK(trk_toc_optimise(&tp, &r));
     assert_true(r.pfa > tp.pfa_min && r.pfa < tp.pfa_max);
@@ -246,15 +253,7 @@ static void test_toc_start(void **state)
 {
     (void)state;
     static const double snr = 10;
-    struct trk_toc_params tp;
-    memset(&tp, 0, sizeof tp);
-    tp.mre = base(2, 1, 0.00015625, 1.0 / 12, 1);
-    tp.mre.gate_gamma = 36;
-    tp.cells_per_m = 1;
-    tp.pfa_min = TRK_REAL_C(1e-6);
-    tp.pfa_max = TRK_REAL_C(0.5);
-    tp.q2_fn = q2_synth;
-    tp.q2_ctx = &snr;
+    struct trk_toc_params tp = toc_setup(&snr);
     trk_real e2, e0, es, zero[16] = {0};
     struct trk_mre_result r2, r0;
     TRK_ASSERT_OK(trk_toc_rmse(&tp, TRK_REAL_C(1e-2), &e2, &r2));
