@@ -232,7 +232,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         sim_text_add(&b,
                      "set datafile separator ','\nset logscale x\nset format x '10^{%%L}'\n"
                      "set grid\nset key top right font ',8'\n"
-                     "set xlabel 'P_{FA}'\nset ylabel 'steady-state position RMSE (m)'\n"
+                     "set xlabel 'P_{FA}'\nset ylabel 'steady-state position RMSE (m)'\nset yrange [0:1]\n"
                      "set multiplot layout 1,%d title \"TOC (MRE), SNR %g dB, Brekke Table I model\\n"
                      "MRE start %s\"\n",
                      n_cells, snr_db, toc_start_name(mre_start));
@@ -245,6 +245,12 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
                                  "lc %d dt %d title '%s %s', ",
                                  com.out, models[m].name, cells[c], d ? 11 : 7, m + 1, d ? 1 : 2,
                                  toc_detector_name(d), models[m].label);
+            /* off the q2 table: the RMSE's lower bound, marked (columns 15, 16) */
+            for (int d = 0; d < TOC_N_DETECTORS; d++)
+                sim_text_add(&b,
+                             "'%s.csv' using ($3 == %g ? $4 : 1/0):%d with points pt %d ps 0.6 lc rgb '#888888' "
+                             "title 'off table, %s: RMSE lower bound (those <= 1 m)', ",
+                             com.out, cells[c], 15 + d, d ? 8 : 10, toc_detector_name(d));
             sim_text_add(&b,
                          "'%s_optimum.csv' using ($3 == %g ? $5 : 1/0):7 with points pt 7 ps 1.2 lc 0 "
                          "title 'optimum'\n",
