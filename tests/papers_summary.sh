@@ -40,5 +40,16 @@ for e in brekke-trackloss willett-table1 kennedy-null blanding-add-arl; do
 done
 grep -q '^## Plots' "$m" && grep -q '^## Run times (s)' "$m" && grep -q '^- brekke-trackloss: [0-9]' "$m" ||
     fail "summary.md: plots or run times missing"
+# brekke-trackloss_loss.csv: per row, the kept runs and the loss-time bins add up to the runs
+# (40), and the losses are brekke-trackloss.csv's
+l=$T/p/brekke-trackloss_loss.csv
+[ "$(grep -c '^1,' "$l")" = 24 ] || fail "brekke-trackloss_loss.csv: not 24 rows"
+awk -F, '/^#/ || /^cell_m2/ { next } { s = $6; for (i = 10; i <= 19; i++) s += $i; if (s != 40 || NF != 19) bad++ }
+    END { exit bad > 0 }' "$l" || fail "brekke-trackloss_loss.csv: kept + lost per bin is not the runs"
+awk -F, 'NR == FNR { if ($0 !~ /^#/ && $1 != "cell_m2") lost[$1 "," $2 "," $3 "," $4 "," $7] = $9; next }
+    /^#/ || /^cell_m2/ { next } { k = $1 "," $2 "," $3 "," $4 "," $5; s = 0; for (i = 10; i <= 19; i++) s += $i
+    if (!(k in lost) || lost[k] != s) bad++ } END { exit bad > 0 }' "$T/p/brekke-trackloss.csv" "$l" ||
+    fail "brekke-trackloss_loss.csv: the loss times do not add up to the lost tracks"
+grep -q '^# assumptions: start two-point' "$l" || fail "brekke-trackloss_loss.csv: no assumptions line"
 ok "summary.csv: $rows rows of 4 experiments, $(grep -c ',yes,' "$c") agree; summary.md: one table line per row, counts per experiment"
 echo "papers-summary: the summary of make papers (tiny size): $rows rows, format checked"

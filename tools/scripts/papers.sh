@@ -88,6 +88,9 @@ rows=$(($(wc -l < "$csv") - 1))
     echo
     for p in "$out"/*.png; do [ -e "$p" ] && echo "- \`$(basename "$p")\`"; done
     echo
+    echo "Distributions: \`brekke-trackloss_loss.csv\` (when tracks are lost, in 10 bins of the run, and the"
+    echo "position RMSE of the tracks kept, per scenario and filter)."
+    echo
     echo "## Run times (s)"
     echo
     sed -n 's/^\([a-z0-9-]*\): \([0-9.]*\) s$/- \1: \2/p' "$log"

@@ -56,6 +56,8 @@ struct tl_out {          /* one run, both filters */
     int32_t scans[2];
     int32_t gated[2];
     int32_t gated_clutter[2];
+    int32_t lost_scan[2];     /* 0: kept */
+    double mse[2];            /* mean squared position error over the run's scans */
 };
 
 static void keep(void *slot, int f, const struct st_result *res)
@@ -66,6 +68,8 @@ static void keep(void *slot, int f, const struct st_result *res)
     o->failed[f] = (unsigned char)res->failed;
     o->trunc[f] = res->truncated > 0;
     o->gate_lost[f] = (unsigned char)res->gate_lost;
+    o->lost_scan[f] = res->lost ? (int32_t)res->lost_scan : 0;
+    o->mse[f] = res->n_sse ? res->sse / (double)res->n_sse : NAN;
     o->scans[f] = (int32_t)res->scans;
     o->gated[f] = (int32_t)res->gated;
     o->gated_clutter[f] = (int32_t)res->gated_clutter;
@@ -106,8 +110,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         "Brekke 2011 Tables II-III: lost tracks of the PDAF and the PDAFAI in K clutter, Table I\n"
         "setting (T 1 s, 300 scans, q 0.0125^2, R I/12, g 6, loss c1 5 m / c2 15 m, sec. V.B).",
         opts, "brekke_trackloss", NULL, 0,
-        "Writes PREFIX.csv, PREFIX.gp, PREFIX.png. Prints each table beside the paper's values\n"
-        "(per 10000 runs) with exact 95% intervals; '*' marks a paper value outside ours.",
+        "Writes PREFIX.csv, PREFIX_loss.csv (loss times, kept-track RMSE), PREFIX.gp, PREFIX.png.\n"
+        "Prints each table beside the paper's values (per 10000 runs) with exact 95% intervals;\n"
+        "'*' marks a paper value outside ours.",
         NULL, NULL};
     struct sim_common com;
     const int parsed = sim_parse(&cli, &com, argc, argv);
@@ -238,11 +243,55 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         }
     }
     if (sim_csv_close(&f_out) != 0) return 1;
+    /* the distributions behind the counts: when tracks are lost (10 bins of
+     * the run length), and the RMSE of the tracks kept */
+    char lpath[1024];
+    struct fileio_out l_out;
+    FILE *fl_ = sim_csv_open(&com, &l_out, "_loss.csv", lpath, sizeof lpath,
+                             "# brekke-trackloss: loss times (scan of the loss, 10 bins of the run) and the position RMSE "
+                             "of the tracks kept (over all their scans, 95% interval)");
+    double *kv = malloc((size_t)runs * sizeof *kv);
+    if (!fl_ || !kv) {
+        if (fl_) sim_csv_discard(&l_out);
+        free(kv);
+        return 1;
+    }
+    sim_assumptions_csv(fl_, init, &gate_cap, -1);
+    fprintf(fl_, "cell_m2,nu,snr_db,pfa,filter,kept,kept_rmse_m,kept_rmse_lo95,kept_rmse_hi95");
+    for (int b = 0; b < 10; b++)
+        fprintf(fl_, ",lost_scans_%ld_%ld", scans * b / 10 + 1, scans * (b + 1) / 10);
+    fprintf(fl_, "\n");
+    for (int c = 0; c < ncell; c++)
+        for (int s = 0; s < nscen; s++) {
+            const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, cc = s % npfa;
+            const long mi = (long)c * nscen + s;
+            for (int fl = 0; fl < 2; fl++) {
+                long bins[10] = {0};
+                size_t nk = 0;
+                for (long run = 0; run < runs; run++) {
+                    const struct tl_out *o = &out[mi * runs + run];
+                    if (o->lost_scan[fl] > 0) {
+                        long bi = ((long)o->lost_scan[fl] - 1) * 10 / scans;
+                        bins[bi < 0 ? 0 : bi > 9 ? 9 : bi]++;
+                    } else if (!isnan(o->mse[fl])) {
+                        kv[nk++] = o->mse[fl];
+                    }
+                }
+                double m = NAN, lo = NAN, hi = NAN;
+                if (nk > 0) mc_mean_ci(kv, nk, 0.95, &m, &lo, &hi);
+                fprintf(fl_, "%g,%g,%g,%g,%s,%zu,%.6g,%.6g,%.6g", cells[c], nus[a], snrs[b], pfas[cc],
+                        fl ? "PDAFAI" : "PDAF", nk, sqrt(m), sqrt(fmax(lo, 0)), sqrt(hi));
+                for (int k = 0; k < 10; k++) fprintf(fl_, ",%ld", bins[k]);
+                fprintf(fl_, "\n");
+            }
+        }
+    free(kv);
+    if (sim_csv_close(&l_out) != 0) return 1;
     printf("\n# %d of %d paper values lie outside our 95%% interval (see the notes on the cell area)\n", outside_ci,
            n_cmp);
     printf("# wall %.1f s on %d threads (+ %.1f s amplitude tables); %ld track updates, %.3g updates/s\n", wall,
            threads, tab_s, total_scans, (double)total_scans / wall);
-    printf("# file: %s\n", path);
+    printf("# files: %s, %s (loss times, kept-track RMSE)\n", path, lpath);
     if (!com.no_plot) {
         /* per cell: ours (points with error bars) and the paper (open symbols), one panel per filter */
         char dat[1024];
