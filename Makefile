@@ -21,6 +21,8 @@
 #   make check-heap      fail if libtrk references a heap/stdio/abort symbol
 #   make install PREFIX=/usr/local [DESTDIR=]   (float beside it: make install
 #                        REAL=float BUILD=build/float PREFIX=...; README "Install")
+#   MPI=1|0              the MPI builds bin/trk-tablegen-mpi, bin/trk-sim-mpi
+#                        (default: when mpicc is found; mk/mpi.mk, README "MPI")
 #
 # Configuration variables (one build directory per configuration):
 #   BUILD=build  CC=gcc|clang  REAL=double|float  SAN=0|1 (ASan+UBSan)  OPT=-O2
@@ -37,9 +39,14 @@
 #                                       log files, the bridge core          (uses cli)
 #   tools/vec/*.c     -> libtrk_vec.a   reference-vector parser, checker, kinds (gen)
 #   tools/sim/*.c     -> libtrk_sim.a   scenarios, amplitude draws, single-target
-#                                       Monte Carlo, TOC curves, rng, stats (gen, cli)
+#                                       Monte Carlo, TOC curves, rng, stats
+#                                       (gen, par, cli)
 #   tools/gen/*.c     -> libtrk_gen.a   table generation, K quadrature, the q2
-#                                       importance sampler (OpenMP)          (cli)
+#                                       importance sampler (OpenMP)     (par, cli)
+#   tools/par/*.c     -> libtrk_par.a   work distribution: batches of work units
+#                                       on threads or MPI ranks, checkpoint (cli);
+#                                       tools/par/mpi/ -> libtrk_par_mpi.a, the
+#                                       MPI layer of the -mpi builds (mk/mpi.mk)
 #   tools/cli/*.c     -> libtrk_cli.a   option parser, key=value files, tracker
 #                                       configuration, progress, plots, errors, files
 #   src/host/*.c      -> libtrk_host.a  the table file reader (host, stdio)
@@ -114,7 +121,7 @@ CMOCKA_LIBS := $(or $(shell pkg-config --libs cmocka 2>/dev/null),-lcmocka)
 LIB_SRC := $(wildcard src/*.c)
 PERF_SRC := $(wildcard src/perf/*.c)
 HOST_SRC := $(wildcard src/host/*.c)
-TOOL_LAYERS := lcm vec sim gen cli
+TOOL_LAYERS := lcm vec sim gen par cli
 TOOL_DIRS := $(patsubst tools/%/,%,$(wildcard tools/trk-*/))
 TEST_SRC := $(wildcard tests/test_*.c)
 EXAMPLE_SRC := $(wildcard examples/*.c)

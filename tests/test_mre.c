@@ -192,10 +192,9 @@ static trk_status q2_synth(const void *ctx, trk_real pfa, trk_real lv, trk_real 
     return TRK_OK;
 }
 
-static void test_toc(void **state)
+/* Brekke's Table I model with the synthetic q2 along the ROC, 1 m^2 cells. */
+static struct trk_toc_params toc_setup(const double *snr)
 {
-    (void)state;
-    static const double snr = 10;
     struct trk_toc_params tp;
     memset(&tp, 0, sizeof tp);
     tp.mre = base(2, 1, 0.00015625, 1.0 / 12, 1);
@@ -204,7 +203,15 @@ static void test_toc(void **state)
     tp.pfa_min = TRK_REAL_C(1e-6);
     tp.pfa_max = TRK_REAL_C(0.5);
     tp.q2_fn = q2_synth;
-    tp.q2_ctx = &snr;
+    tp.q2_ctx = snr;
+    return tp;
+}
+
+static void test_toc(void **state)
+{
+    (void)state;
+    static const double snr = 10;
+    struct trk_toc_params tp = toc_setup(&snr);
     struct trk_toc_result r;
     TRK_ASSERT_OK(trk_toc_optimise(&tp, &r));
     assert_true(r.pfa > tp.pfa_min && r.pfa < tp.pfa_max);
@@ -237,6 +244,30 @@ static void test_toc(void **state)
     b.mre.r_m2 = 0; /* a bad model is refused, not reported as divergence */
     TRK_ASSERT_STATUS(trk_toc_optimise(&b, &r), TRK_E_RANGE);
     TRK_ASSERT_STATUS(trk_toc_rmse(&tp, 1, &e, NULL), TRK_E_RANGE);
+}
+
+/* The MRE's start (trk_toc_params.p0): from P_0 = 0 or from the steady state
+ * the iteration reaches the two-point start's fixed point; a non-SPD start
+ * other than zero is refused. */
+static void test_toc_start(void **state)
+{
+    (void)state;
+    static const double snr = 10;
+    struct trk_toc_params tp = toc_setup(&snr);
+    trk_real e2, e0, es, zero[16] = {0};
+    struct trk_mre_result r2, r0;
+    TRK_ASSERT_OK(trk_toc_rmse(&tp, TRK_REAL_C(1e-2), &e2, &r2));
+    tp.p0 = zero;
+    TRK_ASSERT_OK(trk_toc_rmse(&tp, TRK_REAL_C(1e-2), &e0, &r0));
+    TRK_ASSERT_NEAR(e0, e2, 0, TRK_TOL(1e-9, 1e-4));
+    assert_true(r0.iterations != r2.iterations); /* another path to it */
+    tp.p0 = r2.p;
+    TRK_ASSERT_OK(trk_toc_rmse(&tp, TRK_REAL_C(1e-2), &es, NULL));
+    TRK_ASSERT_NEAR(es, e2, 0, TRK_TOL(1e-9, 1e-4));
+    trk_real bad[16] = {0};
+    bad[0] = -1;
+    tp.p0 = bad;
+    TRK_ASSERT_STATUS(trk_toc_rmse(&tp, TRK_REAL_C(1e-2), &es, NULL), TRK_E_NOT_SPD);
 }
 
 static void test_mre_bad_input(void **state)
@@ -290,6 +321,7 @@ int main(void)
         cmocka_unit_test(test_mre_lookup),
         cmocka_unit_test(test_mre_grid_range),
         cmocka_unit_test(test_toc),
+        cmocka_unit_test(test_toc_start),
         cmocka_unit_test(test_mre_bad_input),
     };
     return trk_run_tests("mre", tests, NULL, NULL);

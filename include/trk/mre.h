@@ -98,8 +98,9 @@ struct trk_mre_result {
     int iterations;
 };
 
-/* Iterate the MRE to its steady state from p0 (nx x nx, SPD; NULL: the
- * two-point-differencing covariance). TRK_OK with *res filled; TRK_E_DIVERGED
+/* Iterate the MRE to its steady state from p0 (nx x nx, SPD, or all zero:
+ * P_0 = 0, the first prediction is Q; NULL: the two-point-differencing
+ * covariance). TRK_OK with *res filled; TRK_E_DIVERGED
  * when the position variance exceeds max_pos_var_m2 with accelerating growth
  * (an RMSE 100 times every noise scale of the model: the track is lost for
  * any practical purpose), exceeds 1e8 times that, a value becomes non-finite,

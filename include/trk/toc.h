@@ -15,6 +15,9 @@ struct trk_toc_params {
     const void *q2_ctx;          /* e.g. struct trk_q2_roc */
     int n_grid;                  /* coarse grid points in ln pfa (>= 3; 0: 41) */
     trk_real ln_pfa_tol;         /* golden-section tolerance in ln pfa (0: 1e-3) */
+    const trk_real *p0;          /* the MRE's start at every pfa (nx x nx, SPD or all
+                                    zero; trk_mre_steady_state); NULL: two-point
+                                    differencing (trk_mre_initial_cov) */
 };
 
 /* Steady-state RMSE at one pfa (the TOC curve). res may be NULL.

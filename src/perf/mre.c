@@ -139,9 +139,13 @@ trk_status trk_mre_steady_state(const struct trk_mre *m, const trk_real *p0,
     const int nx = m->nx, nz = m->params.nz;
     if (p0) {
         if (!finite_all(nx * nx, p0)) return TRK_E_NAN;
-        for (int i = 0; i < nx * nx; i++) p[i] = p0[i];
+        int zero = 1;
+        for (int i = 0; i < nx * nx; i++) {
+            p[i] = p0[i];
+            if (p[i] != 0) zero = 0;
+        }
         trk_real l[NXMAX * NXMAX];
-        if (trk_chol(nx, p, l) != TRK_OK) return TRK_E_NOT_SPD;
+        if (!zero && trk_chol(nx, p, l) != TRK_OK) return TRK_E_NOT_SPD; /* P_0 = 0: P_1- = Q */
     } else {
         trk_mre_initial_cov(m, p);
     }

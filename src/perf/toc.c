@@ -64,7 +64,7 @@ trk_status trk_toc_rmse(const struct trk_toc_params *p, trk_real pfa, trk_real *
     st = trk_mre_init(&m, &mp);
     if (st != TRK_OK) return st;
     if (!res) res = &local;
-    st = trk_mre_steady_state(&m, NULL, res);
+    st = trk_mre_steady_state(&m, p->p0, res);
     *rmse_m = st == TRK_OK ? res->rmse_m : (trk_real)INFINITY;
     return st;
 }

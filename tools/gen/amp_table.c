@@ -217,6 +217,59 @@ static int serialise(const struct gen *g, const struct amp_table_opts *o, uint32
     return bad ? -1 : 0;
 }
 
+/* The node loops as work units (one node's values into its slot), run by
+ * o->exec or by this file's OpenMP loops. */
+struct node_job {
+    const struct gen *g;
+    double s_lo, s_hi, x_max;
+    uint32_t nllr, ninv;
+    const double *inv_u;   /* geometric: the grids' amplitudes, curve src at 2 ninv src */
+};
+
+/* ln l^a node i: res = {L, dL/ds} */
+static int llr_unit(void *ctx, size_t i, void *res)
+{
+    const struct node_job *j = ctx;
+    double *v = res;
+    const double s = i == j->nllr - 1 ? j->s_hi : j->s_lo + (j->s_hi - j->s_lo) * (double)i / (j->nllr - 1);
+    return llr_node(j->g, s, &v[0], &v[1]) != 0;
+}
+
+/* inverse-survival node k of the uniform grid (curve k / ninv): res = {u^2, du^2/dx} */
+static int inv_unit(void *ctx, size_t k, void *res)
+{
+    const struct node_job *j = ctx;
+    double *v = res;
+    const int src = (int)(k / j->ninv);
+    const size_t i = k % j->ninv;
+    const double x = j->x_max * (double)i / (j->ninv - 1);
+    return inv_node(j->g, src, i == 0 ? 0 : x, &v[0], &v[1]) != 0;
+}
+
+/* x of node k of the geometric grid: res = {x} */
+static int geo_unit(void *ctx, size_t k, void *res)
+{
+    const struct node_job *j = ctx;
+    const int src = (int)(k / j->ninv);
+    const size_t p = k % j->ninv;
+    *(double *)res = p == 0 ? 0 : x_of_u(j->g, src, j->inv_u[(size_t)src * 2 * j->ninv + p]);
+    return 0;
+}
+
+/* fn over [0, n), slots of `size` bytes: o->exec, else OpenMP here. 0, or
+ * -1 when a node failed. */
+static int nodes(const struct amp_table_opts *o, size_t n, size_t size, int (*fn)(void *, size_t, void *),
+                 struct node_job *j, void *out)
+{
+    if (o->exec) return o->exec->run(o->exec->ctx, n, size, fn, j, out) ? -1 : 0;
+    int bad = 0;
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 8) reduction(| : bad)
+#endif
+    for (long i = 0; i < (long)n; i++) bad |= fn(j, (size_t)i, (unsigned char *)out + (size_t)i * size) != 0;
+    return bad ? -1 : 0;
+}
+
 int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, char *err, size_t errlen)
 {
     memset(r, 0, sizeof *r);
@@ -270,22 +323,17 @@ int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, 
     /* log l^a nodes, uniform in s = ln u over [ln u_t, ln u_max] */
     const double s_lo = log(g.ut), s_hi = log(a_max_u);
     double *llr = malloc(2 * nllr * sizeof(double));
-    double *inv[2] = {malloc(2 * ninv * sizeof(double)), malloc(2 * ninv * sizeof(double))};
-    double *xs[2] = {malloc(ninv * sizeof(double)), malloc(ninv * sizeof(double))};
+    /* each array one block, curve 1 after curve 0: node k's slot is k */
+    double *inv_b = malloc(2 * 2 * ninv * sizeof(double)), *xs_b = malloc(2 * ninv * sizeof(double));
+    double *inv[2] = {inv_b, inv_b ? inv_b + 2 * ninv : NULL};
+    double *xs[2] = {xs_b, xs_b ? xs_b + ninv : NULL};
     int rc = -1;
-    if (!llr || !inv[0] || !inv[1] || !xs[0] || !xs[1]) {
+    if (!llr || !inv_b || !xs_b) {
         snprintf(err, errlen, "out of memory");
         goto out;
     }
-    int bad = 0;
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 8) reduction(| : bad)
-#endif
-    for (long i = 0; i < (long)nllr; i++) {
-        const double s = i == (long)nllr - 1 ? s_hi : s_lo + (s_hi - s_lo) * (double)i / (nllr - 1);
-        bad |= llr_node(&g, s, &llr[2 * i], &llr[2 * i + 1]) != 0;
-    }
-    if (bad) {
+    struct node_job job = {&g, s_lo, s_hi, x_max, nllr, ninv, inv_b};
+    if (nodes(o, nllr, 2 * sizeof(double), llr_unit, &job, llr) != 0) {
         snprintf(err, errlen, "log l^a node evaluation failed");
         goto out;
     }
@@ -294,16 +342,9 @@ int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, 
     /* inverse survival nodes */
     struct tablew_axis inv_ax[2];
     double geom_b = 0;
+    int bad = 0;
     if (!geo) {
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 8) reduction(| : bad)
-#endif
-        for (long k = 0; k < 2 * (long)ninv; k++) {
-            const int src = (int)(k / ninv);
-            const long i = k % ninv;
-            const double x = x_max * (double)i / (ninv - 1);
-            bad |= inv_node(&g, src, i == 0 ? 0 : x, &inv[src][2 * i], &inv[src][2 * i + 1]) != 0;
-        }
+        bad = nodes(o, 2 * (size_t)ninv, 2 * sizeof(double), inv_unit, &job, inv_b) != 0;
         for (int src = 0; src < 2; src++) {
             inv[src][0] = g.ut * g.ut; /* exact at x = 0 */
             inv_ax[src] = (struct tablew_axis){ninv, TRK_TABLE_SPACING_LINEAR, TRK_TABLE_VAR_X, 0, x_max, 0, NULL};
@@ -325,14 +366,7 @@ int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, 
                 step *= geom_b;
             }
         }
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 8)
-#endif
-        for (long k = 0; k < 2 * (long)ninv; k++) {
-            const int src = (int)(k / ninv);
-            const long p = k % ninv;
-            xs[src][p] = p == 0 ? 0 : x_of_u(&g, src, inv[src][p]);
-        }
+        if (nodes(o, 2 * (size_t)ninv, sizeof(double), geo_unit, &job, xs_b) != 0) bad = 1;
         for (int src = 0; src < 2; src++) {
             for (uint32_t p = 1; p < ninv; p++)
                 if (!(xs[src][p] > xs[src][p - 1]) || !isfinite(xs[src][p])) bad = 1;
@@ -382,10 +416,8 @@ int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, 
     rc = 0;
 out:
     free(llr);
-    free(inv[0]);
-    free(inv[1]);
-    free(xs[0]);
-    free(xs[1]);
+    free(inv_b);
+    free(xs_b);
     return rc;
 }
 

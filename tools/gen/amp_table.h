@@ -23,6 +23,19 @@
 #define AMP_TABLE_GEOM_STEP 0.25         /* Brekke eqs 43-45: A */
 #define AMP_TABLE_GEOM_LAST 100.0        /* a^(P), units of sqrt(clutter power) */
 
+/* An executor of the generator's node loops (NULL: this file's OpenMP
+ * loops): run(ctx, n, size, fn, fctx, out) calls fn(fctx, i, out + i *
+ * size) for every i < n, each once, on any thread or process (par_for_each
+ * of tools/par/par.h has this shape: trk-tablegen-mpi spreads the nodes
+ * over its ranks), and returns 0, or non-zero when an fn call (non-zero) or
+ * the executor failed. A node's values depend on i only: the table's bytes
+ * are the same either way. */
+struct amp_table_exec {
+    int (*run)(void *ctx, size_t n, size_t size, int (*fn)(void *fctx, size_t i, void *res), void *fctx,
+               void *out);
+    void *ctx;
+};
+
 struct amp_table_opts {
     int model;              /* enum trk_amp_model */
     double nu;              /* K shape (ignored for Rayleigh) */
@@ -35,6 +48,7 @@ struct amp_table_opts {
     uint32_t real_size;     /* 4 or 8; 0 = sizeof(trk_real) */
     int measure;            /* measure errors (K tables of real_size == sizeof(trk_real)) */
     int measure_points;     /* error samples per table interval; 0 = 3 */
+    const struct amp_table_exec *exec; /* NULL: OpenMP here */
 };
 
 struct amp_table_result {

@@ -3,12 +3,14 @@
 #include "q2_amp.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "amp_table.h"
 #include "q2_fastmath.h"
+#include "trk/table.h"
 
 int q2_amp_model_parse(const char *s)
 {
@@ -64,6 +66,7 @@ int q2_amp_init(struct q2_amp *a, int model, double nu, double snr_db, double pf
     struct amp_table_result r;
     if (amp_table_model(&o, &a->m, &r, err, errlen) != 0) return -1;
     a->table = r.bytes;
+    a->table_len = r.len;
     a->nu = nu;
     a->pd = r.pd;
     a->threshold = r.threshold;
@@ -77,6 +80,63 @@ void q2_amp_free(struct q2_amp *a)
 {
     free(a->table);
     a->table = NULL;
+}
+
+/* the packed form: this header, then the table's bytes */
+struct packed {
+    int32_t model, measured;
+    double nu, snr_db, pfa, pd, threshold, err_log_lr, err_inv_sf;
+    uint64_t table_len;
+};
+
+size_t q2_amp_packed_size(size_t table_len) { return sizeof(struct packed) + (table_len + 7) / 8 * 8; }
+
+size_t q2_amp_table_len(const struct q2_amp *a) { return a->table ? a->table_len : 0; }
+
+void q2_amp_pack(const struct q2_amp *a, void *buf)
+{
+    const struct packed h = {a->model,     a->measured,   a->nu,         a->snr_db,        a->pfa,
+                             a->pd,        a->threshold,  a->err_log_lr, a->err_inv_sf,    q2_amp_table_len(a)};
+    memset(buf, 0, q2_amp_packed_size(h.table_len));
+    memcpy(buf, &h, sizeof h);
+    if (h.table_len) memcpy((unsigned char *)buf + sizeof h, a->table, (size_t)h.table_len);
+}
+
+int q2_amp_unpack(struct q2_amp *a, const void *buf, size_t len, char *err, size_t errlen)
+{
+    struct packed h;
+    memset(a, 0, sizeof *a);
+    if (len < sizeof h) return snprintf(err, errlen, "amplitude model: %zu bytes, too few", len), -1;
+    memcpy(&h, buf, sizeof h);
+    if (h.table_len > len - sizeof h) return snprintf(err, errlen, "amplitude model: its table is cut"), -1;
+    trk_status st;
+    if (h.model == TRK_AMP_RAYLEIGH) {
+        st = trk_amplitude_init_rayleigh(&a->m, 1, (trk_real)h.snr_db, (trk_real)h.pfa);
+    } else {
+        if (!(a->table = malloc(h.table_len ? (size_t)h.table_len : 1)))
+            return snprintf(err, errlen, "out of memory"), -1;
+        memcpy(a->table, (const unsigned char *)buf + sizeof h, (size_t)h.table_len);
+        a->table_len = (size_t)h.table_len;
+        struct trk_table t;
+        st = trk_table_parse(&t, a->table, a->table_len);
+        if (st == TRK_OK) st = trk_amplitude_init_table(&a->m, &t);
+    }
+    if (st != TRK_OK) {
+        q2_amp_free(a);
+        return snprintf(err, errlen, "amplitude model (snr_db %g, pfa %g) refused: %s", h.snr_db, h.pfa,
+                        trk_status_str(st)),
+               -1;
+    }
+    a->model = h.model;
+    a->measured = h.measured;
+    a->nu = h.nu;
+    a->snr_db = h.snr_db;
+    a->pfa = h.pfa;
+    a->pd = h.pd;
+    a->threshold = h.threshold;
+    a->err_log_lr = h.err_log_lr;
+    a->err_inv_sf = h.err_inv_sf;
+    return 0;
 }
 
 /* x[i] = -ln u[i] (Exp(1) from the uniforms), vectorised. */

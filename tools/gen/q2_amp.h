@@ -34,6 +34,7 @@
 struct q2_amp {
     struct trk_amplitude m;   /* the library's model (K: views `table`) */
     unsigned char *table;     /* K: the amplitude table (malloc'd); NULL for Rayleigh */
+    size_t table_len;         /* its bytes */
     int model;                /* enum trk_amp_model */
     double nu, snr_db, pfa;
     double pd;                /* S1(t) */
@@ -49,6 +50,17 @@ struct q2_amp {
 int q2_amp_init(struct q2_amp *a, int model, double nu, double snr_db, double pfa, unsigned amp_size,
                 int measure, char *err, size_t errlen);
 void q2_amp_free(struct q2_amp *a);
+
+/* A model as bytes, for work units that carry their results as bytes
+ * (tools/par: trk-tablegen-mpi builds the models of a PDAFAI table on all
+ * its ranks): q2_amp_pack writes *a (its table copied) into buf of
+ * q2_amp_packed_size(table_len) bytes (8-aligned); q2_amp_unpack makes the
+ * same model from them in *a (the table copied, the library's model on it;
+ * free with q2_amp_free). 0, or -1 with a message. */
+size_t q2_amp_packed_size(size_t table_len);
+size_t q2_amp_table_len(const struct q2_amp *a);
+void q2_amp_pack(const struct q2_amp *a, void *buf);
+int q2_amp_unpack(struct q2_amp *a, const void *buf, size_t len, char *err, size_t errlen);
 
 /* The sampler over *a (a must outlive it and not move). */
 struct q2_amp_sampler q2_amp_sampler_of(const struct q2_amp *a);

@@ -17,6 +17,7 @@
 #include <Random123/philox.h>
 
 #include "errmsg.h"
+#include "par.h"
 #include "q2_fastmath.h"
 #include "trk/gate.h"
 #include "trk/special.h"
@@ -50,14 +51,6 @@ int q2_is_threads(int threads)
     (void)threads;
     return 1;
 #endif
-}
-
-void q2_is_parallel_for(size_t n, int threads, void (*fn)(void *ctx, size_t i), void *ctx)
-{
-    const int th = q2_is_threads(threads);
-    (void)th;
-    Q2_OMP(omp parallel for schedule(dynamic, 1) num_threads(th))
-    for (size_t i = 0; i < n; i++) fn(ctx, i);
 }
 
 static double now_s(void)
@@ -730,20 +723,75 @@ struct item {
     size_t line;
     int stratum;
     uint64_t s0, s1;
-    size_t off;   /* into the partials buffer: nrel means then nrel M2s */
-    int64_t points;
 };
 
-struct order {
-    double cost;
-    size_t item;
+/* An item's result (its slot of the round's buffer, par.h): the points drawn
+ * (int64), then nrel means and nrel M2s (doubles); the slots start at
+ * multiples of 8 bytes. */
+static size_t item_bytes(size_t nrel) { return sizeof(int64_t) + 2 * nrel * sizeof(double); }
+
+/* The items of a round as par work units. */
+struct round {
+    const struct line_state *ls;
+    const struct item *items;
+    philox4x32_key_t key;
+    size_t cap_b, cap_p;
+    /* progress (rank 0's first thread, par's done hook) */
+    const struct q2_is_options *opt;
+    uint64_t *points_done;
+    size_t lines_done, n_lines;
+    uint64_t planned;
+    double t_start, *t_last;
+    int threads;
 };
 
-static int cmp_cost(const void *a, const void *b)
+/* 0, or 1 out of memory, 2 the target rejection failed, 3 the amplitude
+ * model refused a sample */
+static int round_unit(void *ctx, size_t i, void *res, void **ws)
 {
-    const struct order *x = a, *y = b;
-    if (x->cost != y->cost) return x->cost > y->cost ? -1 : 1;
-    return x->item < y->item ? -1 : x->item > y->item; /* ties: creation order */
+    const struct round *rd = ctx;
+    struct scratch *w = *ws;
+    if (!w) {
+        w = malloc(sizeof *w);
+        if (!w) return 1;
+        if (scratch_alloc(w, rd->cap_b, rd->cap_p) != 0) {
+            scratch_free(w);
+            free(w);
+            return 1;
+        }
+        *ws = w;
+    }
+    const struct item *it = &rd->items[i];
+    const struct line_state *L = &rd->ls[it->line];
+    const struct stratum *t = &L->st[it->stratum];
+    double *pm = (double *)((unsigned char *)res + sizeof(int64_t));
+    const int64_t points = run_item(L, t, it->s0, it->s1, rd->key, w, pm, pm + t->nrel);
+    memcpy(res, &points, sizeof points);
+    return points >= 0 ? 0 : points == -2 ? 3 : 2;
+}
+
+static void round_ws_free(void *ctx, void *ws)
+{
+    (void)ctx;
+    scratch_free(ws);
+    free(ws);
+}
+
+static void round_done(void *ctx, size_t first, size_t count)
+{
+    const struct round *rd = ctx;
+    for (size_t i = first; i < first + count; i++) {
+        const struct item *it = &rd->items[i];
+        *rd->points_done += (it->s1 - it->s0) * (uint64_t)(rd->ls[it->line].st[it->stratum].n + 1);
+    }
+    if (!rd->opt->progress) return;
+    const double tn = now_s();
+    if (tn - *rd->t_last >= 0.25) {
+        struct q2_is_progress pr = {rd->lines_done, rd->n_lines, *rd->points_done, rd->planned, tn - rd->t_start,
+                                    rd->threads};
+        rd->opt->progress(rd->opt->progress_ctx, &pr);
+        *rd->t_last = tn;
+    }
 }
 
 static void line_results(struct line_state *ls, double *max_se)
@@ -828,7 +876,9 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
     for (size_t l = 0; l < n_lines && rc == 0; l++) ls[l].n_round = n0 < opt->samples ? n0 : opt->samples;
 
     struct item *items = NULL;
-    double *part = NULL;
+    unsigned char *part = NULL;
+    size_t *offs = NULL;
+    double *cost = NULL;
     uint64_t points_done = 0;
     size_t lines_done = 0;
     const double t_start = now_s();
@@ -841,7 +891,7 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
     while (rc == 0) {
         /* items of this round: per active line and stratum, the new scenes split
          * at absolute multiples of Q2_IS_CHUNK */
-        size_t n_items = 0, cap = 0, part_len = 0;
+        size_t n_items = 0, cap = 0;
         for (size_t l = 0; l < n_lines; l++) {
             if (ls[l].done) continue;
             for (int s = 0; s < ls[l].n_strata; s++) {
@@ -862,8 +912,7 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
                         }
                         items = ni;
                     }
-                    items[n_items++] = (struct item){l, s, a, b, part_len, 0};
-                    part_len += 2 * t->nrel;
+                    items[n_items++] = (struct item){l, s, a, b};
                     a = b;
                 }
                 if (rc) break;
@@ -871,82 +920,55 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
             if (rc) break;
         }
         if (rc || n_items == 0) break;
-        free(part);
-        part = malloc((part_len ? part_len : 1) * sizeof *part);
-        if (!part) {
-            rc = errmsg_fail(err, errlen, "out of memory");
-            break;
-        }
-        /* execution order: costliest first (longest-processing-time first keeps
-         * the threads' finishing times close); results go to each item's own
-         * slot and are merged in creation order, so the order of execution
-         * changes no bit */
-        struct order *order = malloc(n_items * sizeof *order);
-        if (!order) {
-            rc = errmsg_fail(err, errlen, "out of memory");
-            break;
-        }
-        for (size_t i = 0; i < n_items; i++) {
-            const struct stratum *t = &ls[items[i].line].st[items[i].stratum];
-            order[i].cost = (double)(items[i].s1 - items[i].s0) * (double)((size_t)t->n + 1 + 2 * t->nrel);
-            order[i].item = i;
-        }
-        qsort(order, n_items, sizeof *order, cmp_cost);
-        int failed = 0;
-        const size_t cap_b = BLOCK_MAX, cap_p = point_cap(max_n);
-        Q2_OMP(omp parallel num_threads(threads))
-        {
-            struct scratch w;
-            int ok = scratch_alloc(&w, cap_b, cap_p) == 0;
-            if (!ok) {
-                Q2_OMP(omp atomic write)
-                failed = 1;
-            }
-            Q2_OMP(omp for schedule(dynamic, 1))
+        /* every item's result in its own slot (par.h): run in any order, on
+         * any thread or rank, merged below in creation order, so no bit
+         * depends on where or when an item ran. Costliest first (longest
+         * processing time first keeps the finishing times close) */
+        free(part), free(offs), free(cost);
+        offs = malloc((n_items + 1) * sizeof *offs);
+        cost = malloc(n_items * sizeof *cost);
+        part = NULL;
+        if (offs && cost) {
+            offs[0] = 0;
             for (size_t i = 0; i < n_items; i++) {
-                if (!ok) continue;
-                struct item *it = &items[order[i].item];
-                const struct line_state *L = &ls[it->line];
-                const struct stratum *t = &L->st[it->stratum];
-                it->points = run_item(L, t, it->s0, it->s1, key, &w, part + it->off,
-                                      part + it->off + t->nrel);
-                if (it->points < 0) {
-                    Q2_OMP(omp atomic write)
-                    failed = it->points == -2 ? 3 : 2;
-                    continue;
-                }
-                Q2_OMP(omp atomic update)
-                points_done += (uint64_t)it->points;
-                int master = 1;
-#ifdef _OPENMP
-                master = omp_get_thread_num() == 0;
-#endif
-                if (master && opt->progress) {
-                    double tn = now_s();
-                    if (tn - t_last >= 0.25) {
-                        uint64_t pd_;
-                        Q2_OMP(omp atomic read)
-                        pd_ = points_done;
-                        struct q2_is_progress pr = {lines_done, n_lines, pd_, planned, tn - t_start, threads};
-                        opt->progress(opt->progress_ctx, &pr);
-                        t_last = tn;
-                    }
-                }
+                const struct stratum *t = &ls[items[i].line].st[items[i].stratum];
+                offs[i + 1] = offs[i] + item_bytes(t->nrel);
+                cost[i] = (double)(items[i].s1 - items[i].s0) * (double)((size_t)t->n + 1 + 2 * t->nrel);
             }
-            scratch_free(&w);
+            part = malloc(offs[n_items] ? offs[n_items] : 1);
         }
-        free(order);
-        if (failed == 1) {
+        if (!offs || !cost || !part) {
             rc = errmsg_fail(err, errlen, "out of memory");
             break;
         }
-        if (failed == 2) {
-            rc = errmsg_fail(err, errlen, "target radius rejection did not accept in %u draws", MAX_RETRY);
+        struct round rd = {ls, items, key, BLOCK_MAX, point_cap(max_n), opt, &points_done, lines_done, n_lines,
+                           planned, t_start, &t_last, threads};
+        struct par_batch pb;
+        memset(&pb, 0, sizeof pb);
+        pb.n = n_items;
+        pb.offsets = offs;
+        pb.chunk = 1;
+        pb.cost = cost;
+        pb.threads = threads;
+        pb.run = round_unit;
+        pb.ws_free = round_ws_free;
+        pb.done = round_done;
+        pb.ctx = &rd;
+        char e2[256];
+        const int prc = par_run(opt->par, &pb, part, e2, sizeof e2);
+        if (prc == PAR_E_UNIT) {
+            if (pb.failed_code == 2)
+                rc = errmsg_fail(err, errlen, "target radius rejection did not accept in %u draws", MAX_RETRY);
+            else if (pb.failed_code == 3)
+                rc = errmsg_fail(err, errlen, "the amplitude model refused a sample (%s)",
+                                 ls[items[pb.failed_unit].line].L->amp ? ls[items[pb.failed_unit].line].L->amp->name
+                                                                        : "?");
+            else
+                rc = errmsg_fail(err, errlen, "out of memory");
             break;
         }
-        if (failed == 3) {
-            rc = errmsg_fail(err, errlen, "the amplitude model refused a sample (%s)",
-                             ls[0].L->amp ? ls[0].L->amp->name : "?");
+        if (prc != PAR_OK) {
+            rc = errmsg_fail(err, errlen, "%s", e2);
             break;
         }
         /* merge in item order (fixed), then decide per line */
@@ -954,7 +976,9 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
             const struct item *it = &items[i];
             struct line_state *L = &ls[it->line];
             struct stratum *t = &L->st[it->stratum];
-            const double *pm = part + it->off, *pm2 = pm + t->nrel;
+            int64_t points;
+            memcpy(&points, part + offs[i], sizeof points);
+            const double *pm = (const double *)(part + offs[i] + sizeof(int64_t)), *pm2 = pm + t->nrel;
             const double nb = (double)(it->s1 - it->s0);
             for (size_t k = 0; k < t->nrel; k++) {
                 double *m = &L->mean[t->rel0 + k], *m2 = &L->m2[t->rel0 + k];
@@ -969,7 +993,7 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
             }
             t->count = it->s1;
             L->L->scenes += it->s1 - it->s0;
-            L->L->points += (uint64_t)it->points;
+            L->L->points += (uint64_t)points;
         }
         for (size_t l = 0; l < n_lines; l++) {
             if (ls[l].done) continue;
@@ -1034,6 +1058,8 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
     }
     free(items);
     free(part);
+    free(offs);
+    free(cost);
     for (size_t l = 0; l < n_lines; l++) line_free(&ls[l]);
     free(ls);
     return rc;

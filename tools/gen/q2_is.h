@@ -39,7 +39,9 @@
  * (line, stratum, chunk of 2^17 samples) are computed independently, in any
  * order and on any thread, into their own slots, and merged in a fixed order
  * afterwards (never an OpenMP floating-point reduction). The result is
- * bit-identical for any thread count and schedule.
+ * bit-identical for any thread count and schedule. The items of a round are
+ * the work units of tools/par (par.h): on this process's threads, or over
+ * the ranks of an MPI job (options.par), with the same bits.
  *
  * Threads: libtrk_tools.a holds the OpenMP build (mk/q2.mk); compiled
  * without -fopenmp the same source runs serially. Both give the same bits.
@@ -49,6 +51,8 @@
 
 #include <stddef.h>
 #include <stdint.h>
+
+struct par; /* tools/par/par.h */
 
 /* Pluggable amplitude law (PDAFAI; tools/gen/q2_amp.h builds it on the
  * library's amplitude module). log_lr draws n thresholded amplitudes by
@@ -110,9 +114,14 @@ struct q2_is_options {
                                   (N/64), then N */
     double tail_mass;          /* Poisson mass left out per cell; 0: 1e-12 */
     int threads;               /* <= 0: OpenMP default; 1 in the serial build */
-    /* called from one thread at most every 0.25 s and once at the end */
+    /* called from one thread at most every 0.25 s and once at the end (on
+     * rank 0 only, with par: the work of all ranks) */
     void (*progress)(void *ctx, const struct q2_is_progress *p);
     void *progress_ctx;
+    /* the work distribution (tools/par/par.h): each round's items are par
+     * work units. NULL: this process's threads (an MPI build of a tool
+     * passes its ranks) */
+    struct par *par;
 };
 
 /* Estimate q2 (and se) for every cell of every line. Returns 0, or -1 with a
@@ -136,12 +145,5 @@ int q2_is_threads(int threads);
 
 /* 1 when this object was compiled with OpenMP. */
 int q2_is_parallel(void);
-
-/* fn(ctx, i) for i = 0 .. n-1 on q2_is_threads(threads) threads (dynamic
- * schedule; in order in the serial build), e.g. building the amplitude
- * models of a table's lines. fn must be thread-safe and write only what
- * belongs to i; its results must not depend on the order. Nested OpenMP
- * regions inside fn run on one thread. */
-void q2_is_parallel_for(size_t n, int threads, void (*fn)(void *ctx, size_t i), void *ctx);
 
 #endif

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "errmsg.h"
+#include "par.h"
 #include "q2_amp.h"
 #include "progress.h"
 #include "q2_is.h"
@@ -281,30 +282,60 @@ static int make_lookup(const struct q2_table_spec *s, const double *data, size_t
     return trk_q2_lookup_init(lk, &g) == TRK_OK ? 0 : -1;
 }
 
-/* The PDAFAI lines' amplitude models, built in parallel (q2_is_parallel_for). */
+/* The PDAFAI lines' amplitude models (nodes, then the test midpoints: snr
+ * mid, pfa geometric mid) as work units of tools/par (on the threads, or
+ * the ranks of an MPI job: r->par), one model per unit. A unit's result:
+ * its status, its message, the packed model (q2_amp_pack) of at most cap
+ * table bytes; every rank unpacks every model. */
+#define AMP_SLOT_HEAD 264 /* int32 status, pad, char msg[256] */
+
 struct amp_job {
     const struct q2_table_spec *s;
     size_t n0, n1, m1;
-    struct q2_amp *amp;
-    int *st;
-    char (*msg)[256];
+    size_t cap; /* table bytes of a model (that of model 0) */
 };
 
-static void amp_job_run(void *ctx, size_t k)
+static void amp_params(const struct amp_job *j, size_t k, double *snr, double *pfa)
 {
-    struct amp_job *j = ctx;
     const struct q2_table_spec *s = j->s;
-    double snr, pfa;
     if (k < j->n0 * j->n1) {
-        snr = q2_table_node(&s->snr_db, 0, k / j->n1);
-        pfa = q2_table_node(&s->pfa, 1, k % j->n1);
+        *snr = q2_table_node(&s->snr_db, 0, k / j->n1);
+        *pfa = q2_table_node(&s->pfa, 1, k % j->n1);
     } else {
         const size_t t = k - j->n0 * j->n1, i = t / j->m1, jj = t % j->m1;
-        snr = 0.5 * (q2_table_node(&s->snr_db, 0, i) + q2_table_node(&s->snr_db, 0, i + 1));
-        pfa = sqrt(q2_table_node(&s->pfa, 1, jj) * q2_table_node(&s->pfa, 1, jj + 1));
+        *snr = 0.5 * (q2_table_node(&s->snr_db, 0, i) + q2_table_node(&s->snr_db, 0, i + 1));
+        *pfa = sqrt(q2_table_node(&s->pfa, 1, jj) * q2_table_node(&s->pfa, 1, jj + 1));
     }
-    j->st[k] = q2_amp_init(&j->amp[k], s->amp_model, s->nu, snr, pfa, s->amp_size, s->amp_measure, j->msg[k],
-                           sizeof j->msg[k]) != 0;
+}
+
+static size_t amp_slot(const struct amp_job *j) { return AMP_SLOT_HEAD + q2_amp_packed_size(j->cap); }
+
+static int amp_unit(void *ctx, size_t k, void *res, void **ws)
+{
+    const struct amp_job *j = ctx;
+    const struct q2_table_spec *s = j->s;
+    (void)ws;
+    unsigned char *slot = res;
+    char *msg = (char *)slot + 8;
+    int32_t st = 0;
+    double snr, pfa;
+    amp_params(j, k, &snr, &pfa);
+    struct q2_amp a;
+    memset(slot, 0, AMP_SLOT_HEAD);
+    if (q2_amp_init(&a, s->amp_model, s->nu, snr, pfa, s->amp_size, s->amp_measure, msg, 256) != 0) {
+        st = 1;
+    } else {
+        if (q2_amp_table_len(&a) > j->cap) {
+            snprintf(msg, 256, "amplitude model %zu: a table of %zu bytes, %zu expected", k, q2_amp_table_len(&a),
+                     j->cap);
+            st = 1;
+        } else {
+            q2_amp_pack(&a, slot + AMP_SLOT_HEAD);
+        }
+        q2_amp_free(&a);
+    }
+    memcpy(slot, &st, sizeof st);
+    return 0; /* a refused model is the caller's message, in model order */
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -383,6 +414,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
     opt.threads = r->threads;
     opt.progress = r->progress;
     opt.progress_ctx = r->progress_ctx;
+    opt.par = r->par;
 
     double t0 = progress_now_s();
     if (!ai) {
@@ -403,27 +435,50 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
         lines[0] = (struct q2_is_line){.nz = s->nz, .gamma = s->gate_gamma, .stream = 0,
                                        .n_cells = ncells + ntest, .pd = cpd, .lambda_vg = clv, .q2 = q, .se = se};
     } else {
-        /* amplitude models (nodes, then the test midpoints: snr mid, pfa
-         * geometric mid), built in parallel, one per thread at a time */
-        struct amp_job job = {s, n0, n1, m1, amp, NULL, NULL};
-        job.st = calloc(nmodels, sizeof *job.st);
-        job.msg = calloc(nmodels, sizeof *job.msg);
-        if (!job.st || !job.msg) {
-            free(job.st), free(job.msg);
+        /* amplitude models: work units; model 0 built here first gives the
+         * size of a table */
+        struct amp_job job = {s, n0, n1, m1, 0};
+        double snr0, pfa0;
+        amp_params(&job, 0, &snr0, &pfa0);
+        if (q2_amp_init(&amp[0], s->amp_model, s->nu, snr0, pfa0, s->amp_size, s->amp_measure, err, errlen) != 0)
+            goto out;
+        job.cap = q2_amp_table_len(&amp[0]);
+        q2_amp_free(&amp[0]);
+        const size_t slot = amp_slot(&job);
+        unsigned char *slots = malloc(nmodels * slot);
+        if (!slots) {
             errmsg_fail(err, errlen, "out of memory");
             goto out;
         }
-        q2_is_parallel_for(nmodels, r->threads, amp_job_run, &job);
+        struct par_batch pb;
+        memset(&pb, 0, sizeof pb);
+        pb.n = nmodels;
+        pb.size = slot;
+        pb.chunk = 1;
+        pb.threads = r->threads;
+        pb.run = amp_unit;
+        pb.ctx = &job;
+        char e2[256];
+        if (par_run(r->par, &pb, slots, e2, sizeof e2) != PAR_OK) {
+            errmsg_fail(err, errlen, "amplitude models: %s", e2);
+            free(slots);
+            goto out;
+        }
         int bad = 0;
-        for (size_t k = 0; k < nmodels; k++) /* the first failure, in model order */
-            if (job.st[k]) {
-                snprintf(err, errlen, "%s", job.msg[k]);
+        for (size_t k = 0; k < nmodels && !bad; k++) { /* the first failure, in model order */
+            const unsigned char *sl = slots + k * slot;
+            int32_t st;
+            memcpy(&st, sl, sizeof st);
+            if (st) {
+                snprintf(err, errlen, "%.255s", (const char *)sl + 8);
                 bad = 1;
-                break;
+            } else if (q2_amp_unpack(&amp[k], sl + AMP_SLOT_HEAD, slot - AMP_SLOT_HEAD, err, errlen) != 0) {
+                bad = 1;
+            } else {
+                amp_built[k] = 1;
             }
-        for (size_t k = 0; k < nmodels; k++)
-            if (!job.st[k]) amp_built[k] = 1;
-        free(job.st), free(job.msg);
+        }
+        free(slots);
         for (size_t k = 0; k < nmodels && !bad; k++) {
             if (amp[k].measured) {
                 res->amp_measured = 1;

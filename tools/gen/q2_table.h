@@ -77,6 +77,7 @@ struct q2_table_run {
     int threads;                   /* <= 0: OpenMP default */
     void (*progress)(void *ctx, const struct q2_is_progress *p);
     void *progress_ctx;
+    struct par *par;               /* q2_is_options.par: NULL this process */
 };
 
 struct q2_table_result {

@@ -150,6 +150,13 @@ int st_model_init(struct st_model *m, const struct st_params *p, char *err, size
         snprintf(err, errlen, "texture per scan needs a K amplitude model");
         return -1;
     }
+    if (p->gate_cap.mode == ST_GATE_TRUNCATE ? !(p->gate_cap.n >= 0 && p->gate_cap.n <= TRK_MAX_DETECTIONS)
+                                              : p->gate_cap.mode != ST_GATE_LOST ||
+                                                    !(p->gate_cap.lambda_vg > 0 && isfinite(p->gate_cap.lambda_vg))) {
+        snprintf(err, errlen, "gate cap: truncate to 1..%d detections or lost above a lambda V_G > 0",
+                 TRK_MAX_DETECTIONS);
+        return -1;
+    }
     if (p->init != ST_INIT_TWOPOINT && p->init != ST_INIT_STEADY) {
         snprintf(err, errlen, "unknown initialisation");
         return -1;
@@ -349,15 +356,23 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
             res->status = (int)st;
             break;
         }
+        if (p->gate_cap.mode == ST_GATE_LOST &&
+            p->lambda_per_m2 * (double)trk_gate_volume_inn(&inn, gamma) > p->gate_cap.lambda_vg) {
+            res->lost = res->gate_lost = 1; /* the runaway-gate rule: lost here */
+            res->lost_scan = k;
+            break;
+        }
+        const size_t n_cap = p->gate_cap.mode == ST_GATE_TRUNCATE && p->gate_cap.n > 0 ? (size_t)p->gate_cap.n
+                                                                                        : TRK_MAX_DETECTIONS;
         const double cx = (double)inn.z_pred[ZX], cy = (double)inn.z_pred[ZY];
         /* gated detections: the target's (if detected) and the clutter of the
          * gate's bounding box [c - w, c + w) with d2 <= gamma. The library
-         * takes TRK_MAX_DETECTIONS: a gate holding more passes its nearest
-         * (smallest d2). To find those without drawing the whole gate, the
+         * takes TRK_MAX_DETECTIONS (n_cap: the gate cap's n, at most that): a
+         * gate holding more passes its nearest (smallest d2). To find those without drawing the whole gate, the
          * first pass looks inside d2 <= gq, an ellipse expected to hold twice
          * the capacity; when it holds fewer than the capacity, the whole gate
          * is taken (the same result as one pass over the gate, cheaper). */
-        double gq = 2.0 * TRK_MAX_DETECTIONS / (lambda_k * (double)trk_gate_volume_inn(&inn, 1));
+        double gq = 2.0 * (double)n_cap / (lambda_k * (double)trk_gate_volume_inn(&inn, 1));
         if (!(gq < (double)gamma)) gq = (double)gamma;
         trk_real nu_t[2] = {(trk_real)(zx - cx), (trk_real)(zy - cy)};
         const double d2_t = det ? (double)trk_gate_d2(&inn, nu_t) : INFINITY;
@@ -394,14 +409,14 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
                 if (cand_push(ws, &nca, (double)d2, c->x_m, c->y_m, -log(c->u), 0) != 0) return -1;
             }
             if (g == (double)gamma) break;
-            if (nca >= TRK_MAX_DETECTIONS) { /* the nearest are all inside d2 <= gq */
+            if (nca >= n_cap) { /* the nearest are all inside d2 <= gq */
                 early = 1;
                 break;
             }
         }
-        if (nca > TRK_MAX_DETECTIONS || early) {
-            if (nca > TRK_MAX_DETECTIONS) cand_select(ws->cand, nca, TRK_MAX_DETECTIONS);
-            if (nca > TRK_MAX_DETECTIONS) nca = TRK_MAX_DETECTIONS;
+        if (nca > n_cap || early) {
+            if (nca > n_cap) cand_select(ws->cand, nca, n_cap);
+            if (nca > n_cap) nca = n_cap;
             res->truncated++;
         }
         size_t m_g = 0;

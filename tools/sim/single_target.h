@@ -60,8 +60,9 @@
  *              coordinate) lost when |x error| or |y error| exceeds
  *              thresh_m for count scans in a row (the run stops)
  *   A gate holding more than TRK_MAX_DETECTIONS detections (a track far gone
- *   in dense clutter) passes its TRK_MAX_DETECTIONS nearest (smallest d2),
- *   counted per run (truncated); they are found without drawing the whole
+ *   in dense clutter; or n, p.gate_cap) passes its nearest (smallest d2),
+ *   counted per run (truncated), or, with the gate cap's lost rule, the track
+ *   is lost once lambda V_G exceeds the cap (struct st_gate_cap); they are found without drawing the whole
  *   gate (a first pass over an ellipse expected to hold twice the capacity,
  *   the whole gate only when that holds fewer: the same result). A library refusal (covariance not SPD) or a
  *   gate window over more than SCEN_FIELD_MAX_TILES clutter tiles ends the
@@ -117,6 +118,20 @@ enum st_init { ST_INIT_TWOPOINT = 0, ST_INIT_STEADY = 1 };
 enum st_texture { ST_TEXTURE_CELL = 0, ST_TEXTURE_SCAN = 1 };
 enum st_loss { ST_LOSS_BREKKE = 0, ST_LOSS_WILLETT = 1 };
 
+/* The runaway-gate rule (a track far gone in dense clutter): a gate holding
+ * more than n detections passes its n nearest (smallest d2; truncate, n in
+ * 1..TRK_MAX_DETECTIONS, 0: TRK_MAX_DETECTIONS, the default), or the track is
+ * declared lost at the first scan whose predicted gate expects more than
+ * lambda_vg clutter detections, lambda V_G > lambda_vg with the filter's
+ * lambda and V_G of the prediction (lost; a gate that still holds more than
+ * TRK_MAX_DETECTIONS passes its nearest, as the library takes no more). */
+enum st_gate_cap_mode { ST_GATE_TRUNCATE = 0, ST_GATE_LOST = 1 };
+struct st_gate_cap {
+    int mode;                 /* enum st_gate_cap_mode */
+    long n;                   /* truncate: detections passed */
+    double lambda_vg;         /* lost: the cap on lambda V_G, > 0 */
+};
+
 struct st_params {
     double dt_s;              /* T > 0 */
     double q_m2_per_s3;       /* process noise PSD (truth and filter) >= 0 */
@@ -135,6 +150,7 @@ struct st_params {
     int count;                /* willett scans in a row >= 1 */
     double tile_m;            /* clutter field tile (0: auto) */
     int texture;              /* enum st_texture (K amplitude model only) */
+    struct st_gate_cap gate_cap; /* runaway-gate rule (zero: truncate to TRK_MAX_DETECTIONS) */
     uint64_t seed;
 };
 
@@ -186,8 +202,10 @@ struct st_result {
     long detections;          /* target detections */
     long gated;               /* gated detections over the run (target + clutter) */
     long gated_clutter;       /* of which clutter */
-    long truncated;           /* scans with more than TRK_MAX_DETECTIONS in the gate:
-                                 the nearest (smallest d2) TRK_MAX_DETECTIONS were used */
+    long truncated;           /* scans with more than the gate cap's n (truncate; lost:
+                                 TRK_MAX_DETECTIONS) in the gate: the nearest
+                                 (smallest d2) were used */
+    int gate_lost;            /* lost by the gate cap (lost: lambda V_G above the cap) */
 };
 
 /* One run (run index < 2^32) with the PDAF (ai = 0) or the PDAFAI (ai = 1,

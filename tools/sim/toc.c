@@ -23,9 +23,15 @@ struct toc {
     /* sampled grids (NULL with tables) */
     trk_real *vals[TOC_N_DETECTORS];
     trk_real *nodes;
+    trk_real p0[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX]; /* the MRE's start (not two-point) */
 };
 
 const char *toc_detector_name(int detector) { return detector == TOC_PDAF ? "PDAF" : "PDAFAI"; }
+
+const char *toc_start_name(int start)
+{
+    return start == TOC_START_ZERO ? "zero" : start == TOC_START_STEADY ? "steady" : "two-point";
+}
 
 const char *toc_status_name(int status)
 {
@@ -116,6 +122,28 @@ static void toc_params(const struct toc *t, struct q2_ctx *c, struct trk_toc_par
     p->pfa_max = (trk_real)t->sc.pfa_max;
     p->q2_fn = q2_at;
     p->q2_ctx = c;
+    p->p0 = t->sc.mre_start == TOC_START_TWOPOINT ? NULL : t->p0;
+}
+
+/* t->p0 for the scenario's start: P = 0, or the MRE's steady state with
+ * q2 = 1 (the clutter-free Kalman filter). */
+static int start_cov(struct toc *t, char *err, size_t n)
+{
+    memset(t->p0, 0, sizeof t->p0);
+    if (t->sc.mre_start != TOC_START_STEADY) return 0;
+    struct q2_ctx c = {t, 0, 0, 0, 0, 0};
+    struct trk_toc_params tp;
+    toc_params(t, &c, &tp);
+    struct trk_mre_params mp = tp.mre;
+    mp.clutter_density = 0;
+    mp.q2 = 1;
+    struct trk_mre m;
+    struct trk_mre_result r;
+    trk_status st = trk_mre_init(&m, &mp);
+    if (st == TRK_OK) st = trk_mre_steady_state(&m, NULL, &r);
+    if (st != TRK_OK) return errmsg_fail(err, n, "the clutter-free steady state: %s", trk_status_str(st));
+    memcpy(t->p0, r.p, sizeof t->p0);
+    return 0;
 }
 
 /* ---- construction ---- */
@@ -136,6 +164,8 @@ static int check_scenario(const struct toc_scenario *sc, char *err, size_t n)
     if (!(sc->gate_gamma > 0 && sc->gate_gamma <= 1000)) return errmsg_fail(err, n, "gate gamma must be in (0, 1000]");
     if (!(sc->pfa_min > 0 && sc->pfa_min < sc->pfa_max && sc->pfa_max < 1))
         return errmsg_fail(err, n, "need 0 < pfa_min < pfa_max < 1 (got %g, %g)", sc->pfa_min, sc->pfa_max);
+    if (sc->mre_start != TOC_START_TWOPOINT && sc->mre_start != TOC_START_ZERO && sc->mre_start != TOC_START_STEADY)
+        return errmsg_fail(err, n, "unknown MRE start %d", sc->mre_start);
     return 0;
 }
 
@@ -239,6 +269,7 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
     r.target_se = src->target_se > 0 ? src->target_se : Q2_TABLE_DEFAULT_TARGET_SE;
     r.seed = src->seed ? src->seed : 1;
     r.threads = src->threads;
+    r.par = src->par;
     struct sampler_prog pg;
     memset(&pg, 0, sizeof pg);
     pg.label = det == TOC_PDAF ? "q2 grid PDAF, points" : "q2 grid PDAFAI, points";
@@ -303,6 +334,10 @@ struct toc *toc_new(const struct toc_scenario *sc, const struct toc_q2_source *s
     }
     t->sc = *sc;
     if (t->sc.amp_model == TRK_AMP_RAYLEIGH) t->sc.nu = 0;
+    if (start_cov(t, err, errlen)) {
+        toc_free(t);
+        return NULL;
+    }
     const struct trk_table *tb[2] = {src->pdaf, src->pdafai};
     for (int d = 0; d < TOC_N_DETECTORS; d++) {
         const int rc = tb[d] ? use_table(t, d, tb[d], err, errlen) : sample_grid(t, d, src, err, errlen);

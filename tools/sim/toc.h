@@ -20,7 +20,8 @@
  * MRE has no steady state (track lost: TRK_E_DIVERGED) or whose lambda_vg
  * leaves the q2 table has rmse_m = +inf (status TOC_DIVERGED / TOC_OFF_TABLE).
  * The MRE starts from the two-point-differencing covariance of a new track
- * (trk_mre_initial_cov). When an iteration leaves the table it is repeated
+ * (trk_mre_initial_cov; the default), from P = 0 or from the clutter-free
+ * Kalman steady state (the MRE with q2 = 1): toc_scenario.mre_start. When an iteration leaves the table it is repeated
  * with q2 above the table's lambda_vg held at the table's top value (an
  * upper bound: q2 falls with lambda_vg): still diverging means the track is
  * lost (TOC_DIVERGED); otherwise TOC_OFF_TABLE (not computable from the
@@ -62,6 +63,8 @@
 
 #include "trk/table.h"
 
+struct par; /* tools/par/par.h */
+
 enum toc_detector { TOC_PDAF = 0, TOC_PDAFAI = 1, TOC_N_DETECTORS = 2 };
 
 struct toc_scenario {
@@ -74,9 +77,18 @@ struct toc_scenario {
     double r_m2;           /* R = r I */
     double gate_gamma;     /* gate threshold on d2 (Brekke g^2) */
     double pfa_min, pfa_max; /* the ROC range of curves and of the optimum search */
+    int mre_start;         /* enum toc_start: the MRE's start at every pfa */
 };
 
-/* Brekke's Table I model and the ROC range 1e-6 .. 0.5. */
+/* The MRE's start: two-point differencing (a new track; 0, the default),
+ * P = 0, or the steady state of the clutter-free Kalman filter (P_D = 1: a
+ * track held for long; the MRE's fixed point with q2 = 1). A start changes
+ * whether the iteration reaches a steady state (or stays on the q2 table),
+ * not the steady state it reaches. */
+enum toc_start { TOC_START_TWOPOINT = 0, TOC_START_ZERO = 1, TOC_START_STEADY = 2 };
+const char *toc_start_name(int start); /* "two-point", "zero", "steady" */
+
+/* Brekke's Table I model, the ROC range 1e-6 .. 0.5, the two-point start. */
 void toc_scenario_brekke(struct toc_scenario *sc, int amp_model, double nu, double snr_db,
                          double cell_m2);
 
@@ -91,6 +103,7 @@ struct toc_q2_source {
     int quiet;             /* no progress bar on stderr */
     double lambda_vg_max;  /* top of the sampled lambda_vg axis; 0: that of the
                               default tables (PDAF 100, PDAFAI 50) */
+    struct par *par;       /* the sampler's work distribution (q2_table_run.par) */
 };
 
 struct toc; /* opaque: the scenario, the q2 lookups (and sampled grids) */

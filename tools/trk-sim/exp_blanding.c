@@ -76,6 +76,25 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+struct bl_units {
+    const struct bl_cfg *c;
+    long runs;
+    uint64_t seed;
+};
+
+static void run_one(const struct bl_cfg *c, int h1, uint64_t seed, uint64_t stream, uint32_t *out);
+
+/* unit i < runs: H1 run i; i >= runs: H0 run i - runs. Stream = (hypothesis, run). */
+static int bl_unit(void *ctx, size_t i, void *res, void **ws)
+{
+    const struct bl_units *u = ctx;
+    (void)ws;
+    const int h1 = (long)i < u->runs;
+    const uint64_t run = (uint64_t)(h1 ? (long)i : (long)i - u->runs);
+    run_one(u->c, h1, u->seed, (h1 ? 0x100000000ull : 0x200000000ull) | run, res);
+    return 0;
+}
+
 /* One run under H0 (h1 = 0) or H1: first-passage look of every threshold
  * (0 = censored). */
 static void run_one(const struct bl_cfg *c, int h1, uint64_t seed, uint64_t stream, uint32_t *out)
@@ -294,18 +313,14 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
             "blanding-add-arl: %ld runs per hypothesis, %d Page + %d Shiryaev thresholds, %d K/N "
             "rules (%s), cap %ld looks, seed %llu, %d threads\n",
             runs, c.n_page, c.n_shir, c.n_kn, kn_range, c.max_scans, (unsigned long long)com.seed, threads);
-    struct sim_progress pr;
-    sim_progress_start(&pr, &com, "blanding-add-arl", 2 * runs);
-    /* index i < runs: H1 run i; i >= runs: H0 run i - runs. Stream = (hypothesis, run). */
-#pragma omp parallel for schedule(dynamic, 8)
-    for (long i = 0; i < 2 * runs; i++) {
-        const int h1 = i < runs;
-        const uint64_t run = (uint64_t)(h1 ? i : i - runs);
-        run_one(&c, h1, com.seed, (h1 ? 0x100000000ull : 0x200000000ull) | run,
-                res + (size_t)i * (size_t)nt);
-        sim_progress_add(&pr, 1);
+    /* every run a work unit (its nt first-passage looks in its slot) */
+    struct bl_units bu = {&c, runs, com.seed};
+    double wall;
+    if (sim_run_units(&com, "blanding-add-arl", (size_t)(2 * runs), sizeof *res * (size_t)nt, 8, bl_unit, NULL,
+                      &bu, res, &wall, NULL) != 0) {
+        free(res);
+        return 1;
     }
-    const double wall = sim_progress_end(&pr);
 
     /* ---------------------------------------------------------------- results */
     char path[1024];

@@ -9,7 +9,7 @@
  * with the K amplitude law), Brekke's Table I model, lambda = P_FA / cell.
  * Simulation: single_target.h (one target, one track on the library's
  * trk_cv2_predict / trk_pda_update, PDAF and PDAFAI on the same target,
- * detections and clutter), 300 scans, two-point start; a run whose track is
+ * detections and clutter), 300 scans, two-point start (--start); a run whose track is
  * lost by Brekke's two-stage rule (c1 5 m, c2 15 m) is removed ("bad
  * tracks"); the RMSE is sqrt of the mean over the remaining runs of their
  * mean squared position error over scans >= --from (steady state), with a
@@ -37,22 +37,22 @@ struct tc_out {
     int32_t scans[2];
 };
 
-static void keep(void *ctx, long it, int f, const struct st_result *res)
+static void keep(void *slot, int f, const struct st_result *res)
 {
-    struct tc_out *o = (struct tc_out *)ctx + it;
+    struct tc_out *o = slot;
     o->lost[f] = (unsigned char)res->lost;
     o->mse[f] = res->n_sse ? res->sse / (double)res->n_sse : NAN;
     o->scans[f] = (int32_t)res->scans;
 }
 
 static const int texture_values[] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
-static const int init_values[] = {ST_INIT_TWOPOINT, ST_INIT_STEADY};
 
 SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMSE vs MRE, PDAF and PDAFAI")
 {
     long runs, scans, from, q2_samples = 0;
     double nus[MAXL], snr, cell, pfas[MAXL];
-    int nnu, npfa, init, texture;
+    int nnu, npfa, init, texture, mre_start;
+    struct st_gate_cap gate_cap;
     const char *tables = NULL;
     const struct sim_opt opts[] = {
         SIM_OPT_LONG("--runs", &runs, "N", "1000", SIM_GE, 1, 0, "runs per point and filter"),
@@ -67,7 +67,10 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
         SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
                        "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
                        "per scan (bursty clutter, see tools/sim/single_target.h)"),
-        SIM_OPT_CHOICE("--init", &init, "twopoint|steady", init_values, "twopoint", "initial track covariance"),
+        SIM_OPT_START(&init),
+        SIM_OPT_ALIAS("--init", "--start"),
+        SIM_OPT_GATE_CAP(&gate_cap),
+        SIM_OPT_MRE_START(&mre_start),
         SIM_OPT_LONG("--q2-samples", &q2_samples, "N", NULL, SIM_GE, 1000, 0,
                      "importance samples per stratum of the MRE's q2 grids (default toc.h's)"),
         SIM_OPT_STRING("--tables", &tables, "DIR", NULL,
@@ -107,6 +110,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     for (int a = 0; a < nnu; a++) {
         struct toc_scenario ts;
         toc_scenario_brekke(&ts, TRK_AMP_K, nus[a], snr, cell);
+        ts.mre_start = mre_start;
         ts.pfa_min = fmin(ts.pfa_min, pmin);
         ts.pfa_max = fmax(ts.pfa_max, pmax);
         struct toc_q2_source src;
@@ -126,6 +130,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
         src.seed = com.seed;
         src.threads = com.threads;
         src.quiet = com.quiet;
+        src.par = com.par;
         if (!(toc[a] = toc_new(&ts, &src, err, sizeof err)) || toc_curve(toc[a], NCURVE, curve + a * NCURVE, err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAF, &opt[a][0], err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAFAI, &opt[a][1], err, sizeof err)) {
@@ -149,12 +154,12 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     if (!amp || !mod || !out) return 1;
     if (sim_amp_k_grid(cli.name, amp, nus, nnu, &snr, 1, pfas, npfa, 0, 0)) return 1;
     for (int m = 0; m < nmod; m++)
-        if (sim_brekke_model(cli.name, &mod[m], &amp[m], cell, scans, init, texture, com.seed)) return 1;
+        if (sim_brekke_model(cli.name, &mod[m], &amp[m], cell, scans, init, texture, &gate_cap, com.seed)) return 1;
     if (!com.quiet)
         fprintf(stderr, "brekke-toc: %d nu x %d P_FA x 2 filters x %ld runs x %ld scans, seed %llu, %d threads (MRE %.1f s)\n",
                 nnu, npfa, runs, scans, (unsigned long long)com.seed, threads, mre_s);
     int bad_call;
-    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, from, keep, out, &bad_call);
+    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, from, keep, out, sizeof *out, &bad_call);
     if (bad_call) {
         fprintf(stderr, "brekke-toc: internal error (bad run call)\n");
         return 1;
@@ -170,6 +175,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
                "texture %s, seed %llu, runs %ld\n",
             snr, cell, scans, from, init == ST_INIT_TWOPOINT ? "two-point" : "steady-state",
             texture == ST_TEXTURE_CELL ? "per detection" : "per scan", (unsigned long long)com.seed, runs);
+    sim_assumptions_csv(f, init, &gate_cap, mre_start);
     fprintf(f, "nu,pfa,pd,lambda_per_m2,filter,mre_rmse_m,mre_q2,mre_lambda_vg,sim_rmse_m,sim_lo95,sim_hi95,sim_over_mre,"
                "kept,lost,lost_frac\n");
     double *v = malloc((size_t)runs * sizeof *v);
@@ -217,10 +223,14 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     if (sim_csv_close(&f_out) != 0) return 1;
     char mpath[1024], opath[1024];
     struct fileio_out fm_out;
-    FILE *fm = sim_csv_open(&com, &fm_out, "_mre.csv", mpath, sizeof mpath,
-                            "nu,pfa,pd,rmse_pdaf,rmse_pdafai,q2_pdaf,q2_pdafai,lambda_vg_pdaf,lambda_vg_pdafai");
+    char mhead[256], ohead[256];
+    snprintf(mhead, sizeof mhead, "# MRE start %s (--mre-start)\n%s", toc_start_name(mre_start),
+             "nu,pfa,pd,rmse_pdaf,rmse_pdafai,q2_pdaf,q2_pdafai,lambda_vg_pdaf,lambda_vg_pdafai");
+    snprintf(ohead, sizeof ohead, "# MRE start %s (--mre-start)\n%s", toc_start_name(mre_start),
+             "nu,filter,pfa,pd,rmse_m,q2,lambda_vg");
+    FILE *fm = sim_csv_open(&com, &fm_out, "_mre.csv", mpath, sizeof mpath, mhead);
     struct fileio_out fo_out;
-    FILE *fo = sim_csv_open(&com, &fo_out, "_optimum.csv", opath, sizeof opath, "nu,filter,pfa,pd,rmse_m,q2,lambda_vg");
+    FILE *fo = sim_csv_open(&com, &fo_out, "_optimum.csv", opath, sizeof opath, ohead);
     if (!fm || !fo) {
         sim_csv_discard(&fm_out);
         sim_csv_discard(&fo_out);
@@ -245,13 +255,14 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     printf("# files: %s, %s, %s\n", path, mpath, opath);
     if (!com.no_plot) {
         struct sim_text b = {NULL, 0, 0, 0};
+        char as[160];
         sim_text_add(&b,
                      "set datafile separator ','\nset datafile missing 'nan'\nset logscale x\nset format x '10^{%%L}'\n"
                      "set grid\nset key top left font ',9'\nset xlabel 'P_{FA}'\nset ylabel 'position RMSE (m)'\n"
                      "set logscale y\nset yrange [0.15:3]\nset ytics (0.15, 0.2, 0.3, 0.5, 0.7, 1, 2, 3)\n"
-                     "set multiplot layout 1,%d title 'Brekke 2011 Fig. 2: TOC, SNR %g dB, "
-                     "cell %g m^2 (MRE lines, simulation points, bad tracks removed)'\n",
-                     nnu, snr, cell);
+                     "set multiplot layout 1,%d title \"Brekke 2011 Fig. 2: TOC, SNR %g dB, "
+                     "cell %g m^2 (MRE lines, simulation points, bad tracks removed)\\n%s\"\n",
+                     nnu, snr, cell, sim_assumptions_title(as, sizeof as, init, &gate_cap, mre_start));
         for (int a = 0; a < nnu; a++)
             sim_text_add(&b,
                          "set title 'K clutter, nu = %g'\n"

@@ -16,13 +16,15 @@
  *   resolution cell  lambda = P_FA / cell; 1, 0.25 and 0.1 m^2 all reported
  *   initial track    two-point differencing (per axis [[r, r/T],
  *                    [r/T, 2r/T^2]]), estimate drawn from N(truth, P_0)
- *                    (--init steady: the clutter-free Kalman steady state)
+ *                    (--start steady: the clutter-free Kalman steady state)
  *   target velocity  1 m/s along x (does not change the error statistics:
  *                    the filter is linear and the clutter homogeneous)
  *   texture          drawn independently for every detection (i.i.d.
  *                    amplitudes with the K marginal law: the model the
  *                    PDAFAI assumes)
  *   perfect knowledge the filters use the true P_FA, P_D = S1(t), lambda, nu, SNR
+ *   runaway gate     a gate holding more than TRK_MAX_DETECTIONS passes its
+ *                    nearest (--gate-cap truncate:N | lost:LAMBDA_VG)
  */
 #include <math.h>
 #include <stdio.h>
@@ -50,26 +52,30 @@ static int paper_value(double nu, double snr, double pfa, int f)
 }
 
 struct tl_out {          /* one run, both filters */
-    unsigned char lost[2], hard[2], failed[2], trunc[2];
+    unsigned char lost[2], hard[2], failed[2], trunc[2], gate_lost[2];
     int32_t scans[2];
     int32_t gated[2];
     int32_t gated_clutter[2];
+    int32_t lost_scan[2];     /* 0: kept */
+    double mse[2];            /* mean squared position error over the run's scans */
 };
 
-static void keep(void *ctx, long it, int f, const struct st_result *res)
+static void keep(void *slot, int f, const struct st_result *res)
 {
-    struct tl_out *o = (struct tl_out *)ctx + it;
+    struct tl_out *o = slot;
     o->lost[f] = (unsigned char)res->lost;
     o->hard[f] = (unsigned char)res->lost_hard;
     o->failed[f] = (unsigned char)res->failed;
     o->trunc[f] = res->truncated > 0;
+    o->gate_lost[f] = (unsigned char)res->gate_lost;
+    o->lost_scan[f] = res->lost ? (int32_t)res->lost_scan : 0;
+    o->mse[f] = res->n_sse ? res->sse / (double)res->n_sse : NAN;
     o->scans[f] = (int32_t)res->scans;
     o->gated[f] = (int32_t)res->gated;
     o->gated_clutter[f] = (int32_t)res->gated_clutter;
 }
 
 static const int texture_values[] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
-static const int init_values[] = {ST_INIT_TWOPOINT, ST_INIT_STEADY};
 static const int grid_values[] = {TRK_AMP_GRID_UNIFORM, TRK_AMP_GRID_GEOMETRIC};
 
 SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III: lost tracks, PDAF vs PDAFAI in K clutter")
@@ -77,6 +83,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     long runs, scans, amp_size = 0;
     double cells[MAXL], nus[MAXL], snrs[MAXL], pfas[MAXL];
     int ncell, nnu, nsnr, npfa, init, grid, texture;
+    struct st_gate_cap gate_cap;
     const struct sim_opt opts[] = {
         SIM_OPT_LONG("--runs", &runs, "N", "10000", SIM_GE, 1, 0, "runs per scenario and filter, as in the paper"),
         SIM_OPT_LONG("--scans", &scans, "N", "300", SIM_IN, 1, 1000000, "scans per run"),
@@ -90,8 +97,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
                        "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
                        "per scan (bursty clutter, see tools/sim/single_target.h)"),
-        SIM_OPT_CHOICE("--init", &init, "twopoint|steady", init_values, "twopoint",
-                       "initial track covariance (see the CSV header)"),
+        SIM_OPT_START(&init),
+        SIM_OPT_ALIAS("--init", "--start"),
+        SIM_OPT_GATE_CAP(&gate_cap),
         SIM_OPT_CHOICE("--grid", &grid, "uniform|geometric", grid_values, "uniform",
                        "amplitude table grid (geometric = Brekke\neqs 43-45, piecewise linear)"),
         SIM_OPT_LONG("--amp-size", &amp_size, "N", NULL, SIM_IN, 0, 65536,
@@ -102,8 +110,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         "Brekke 2011 Tables II-III: lost tracks of the PDAF and the PDAFAI in K clutter, Table I\n"
         "setting (T 1 s, 300 scans, q 0.0125^2, R I/12, g 6, loss c1 5 m / c2 15 m, sec. V.B).",
         opts, "brekke_trackloss", NULL, 0,
-        "Writes PREFIX.csv, PREFIX.gp, PREFIX.png. Prints each table beside the paper's values\n"
-        "(per 10000 runs) with exact 95% intervals; '*' marks a paper value outside ours.",
+        "Writes PREFIX.csv, PREFIX_loss.csv (loss times, kept-track RMSE), PREFIX.gp, PREFIX.png.\n"
+        "Prints each table beside the paper's values (per 10000 runs) with exact 95% intervals;\n"
+        "'*' marks a paper value outside ours.",
         NULL, NULL};
     struct sim_common com;
     const int parsed = sim_parse(&cli, &com, argc, argv);
@@ -130,7 +139,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     }
     for (int c = 0; c < ncell; c++)
         for (int s = 0; s < nscen; s++)
-            if (sim_brekke_model(cli.name, &mod[c * nscen + s], &amp[s], cells[c], scans, init, texture, com.seed))
+            if (sim_brekke_model(cli.name, &mod[c * nscen + s], &amp[s], cells[c], scans, init, texture, &gate_cap,
+                                 com.seed))
                 return 1;
     if (!com.quiet)
         fprintf(stderr,
@@ -138,7 +148,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                 "(amplitude tables %.1f s)\n",
                 ncell, nscen, runs, scans, (unsigned long long)com.seed, threads, tab_s);
     int bad_call;
-    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, 1, keep, out, &bad_call);
+    const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, 1, keep, out, sizeof *out, &bad_call);
     if (bad_call) {
         fprintf(stderr, "brekke-trackloss: internal error (bad run call)\n");
         return 1;
@@ -156,8 +166,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
             init == ST_INIT_TWOPOINT ? "two-point differencing" : "clutter-free Kalman steady state",
             texture == ST_TEXTURE_CELL ? "independent per detection" : "one per scan",
             grid == TRK_AMP_GRID_UNIFORM ? "uniform" : "geometric (eqs 43-45)", (unsigned long long)com.seed, runs);
+    sim_assumptions_csv(f, init, &gate_cap, -1);
     fprintf(f, "cell_m2,nu,snr_db,pfa,pd,lambda_per_m2,filter,runs,lost,lost_per_10000,lo95_per_10000,hi95_per_10000,"
-               "paper,paper_in_ci,lost_c2,failed,truncated_runs,mean_scans,gated_per_scan,gated_clutter_per_scan,only_this_lost\n");
+               "paper,paper_in_ci,lost_c2,failed,truncated_runs,mean_scans,gated_per_scan,gated_clutter_per_scan,only_this_lost,gate_cap_lost\n");
     long total_scans = 0;
     double *lostv[2], *lov[2], *hiv[2];
     for (int fl = 0; fl < 2; fl++) {
@@ -180,6 +191,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
             const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, cc = s % npfa;
             const long mi = (long)c * nscen + s;
             long lost[2] = {0, 0}, hard[2] = {0, 0}, failed[2] = {0, 0}, only[2] = {0, 0}, trunc[2] = {0, 0};
+            long gl[2] = {0, 0};
             double sc[2] = {0, 0}, gt[2] = {0, 0}, gc[2] = {0, 0};
             for (long run = 0; run < runs; run++) {
                 const struct tl_out *o = &out[mi * runs + run];
@@ -188,6 +200,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                     hard[fl] += o->hard[fl];
                     failed[fl] += o->failed[fl];
                     trunc[fl] += o->trunc[fl];
+                    gl[fl] += o->gate_lost[fl];
                     sc[fl] += o->scans[fl];
                     gt[fl] += o->gated[fl];
                     gc[fl] += o->gated_clutter[fl];
@@ -214,11 +227,11 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                 hiv[fl][idx] = hi * 10000;
                 snprintf(cell_txt[fl], sizeof cell_txt[fl], "%7.1f [%6.1f, %6.1f]%s", (double)lost[fl] * scale,
                          lo * 10000, hi * 10000, in ? " " : "*");
-                fprintf(f, "%g,%g,%g,%g,%.6g,%.6g,%s,%ld,%ld,%.6g,%.6g,%.6g,%d,%d,%ld,%ld,%ld,%.6g,%.6g,%.6g,%ld\n", cells[c],
+                fprintf(f, "%g,%g,%g,%g,%.6g,%.6g,%s,%ld,%ld,%.6g,%.6g,%.6g,%d,%d,%ld,%ld,%ld,%.6g,%.6g,%.6g,%ld,%ld\n", cells[c],
                         nus[a], snrs[b], pfas[cc], amp[s].pd, mod[mi].p.lambda_per_m2, fl ? "PDAFAI" : "PDAF", runs,
                         lost[fl], (double)lost[fl] * scale, lo * 10000, hi * 10000, pv[fl], in, hard[fl], failed[fl],
                         trunc[fl], sc[fl] / (double)runs, sc[fl] > 0 ? gt[fl] / sc[fl] : 0,
-                        sc[fl] > 0 ? gc[fl] / sc[fl] : 0, only[fl]);
+                        sc[fl] > 0 ? gc[fl] / sc[fl] : 0, only[fl], gl[fl]);
             }
             /* mean gated clutter per scan: of the PDAFAI (it stays on the target) */
             const double gate_mean = sc[1] > 0 ? gc[1] / sc[1] : 0;
@@ -230,11 +243,55 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         }
     }
     if (sim_csv_close(&f_out) != 0) return 1;
+    /* the distributions behind the counts: when tracks are lost (10 bins of
+     * the run length), and the RMSE of the tracks kept */
+    char lpath[1024];
+    struct fileio_out l_out;
+    FILE *fl_ = sim_csv_open(&com, &l_out, "_loss.csv", lpath, sizeof lpath,
+                             "# brekke-trackloss: loss times (scan of the loss, 10 bins of the run) and the position RMSE "
+                             "of the tracks kept (over all their scans, 95% interval)");
+    double *kv = malloc((size_t)runs * sizeof *kv);
+    if (!fl_ || !kv) {
+        if (fl_) sim_csv_discard(&l_out);
+        free(kv);
+        return 1;
+    }
+    sim_assumptions_csv(fl_, init, &gate_cap, -1);
+    fprintf(fl_, "cell_m2,nu,snr_db,pfa,filter,kept,kept_rmse_m,kept_rmse_lo95,kept_rmse_hi95");
+    for (int b = 0; b < 10; b++)
+        fprintf(fl_, ",lost_scans_%ld_%ld", scans * b / 10 + 1, scans * (b + 1) / 10);
+    fprintf(fl_, "\n");
+    for (int c = 0; c < ncell; c++)
+        for (int s = 0; s < nscen; s++) {
+            const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, cc = s % npfa;
+            const long mi = (long)c * nscen + s;
+            for (int fl = 0; fl < 2; fl++) {
+                long bins[10] = {0};
+                size_t nk = 0;
+                for (long run = 0; run < runs; run++) {
+                    const struct tl_out *o = &out[mi * runs + run];
+                    if (o->lost_scan[fl] > 0) {
+                        long bi = ((long)o->lost_scan[fl] - 1) * 10 / scans;
+                        bins[bi < 0 ? 0 : bi > 9 ? 9 : bi]++;
+                    } else if (!isnan(o->mse[fl])) {
+                        kv[nk++] = o->mse[fl];
+                    }
+                }
+                double m = NAN, lo = NAN, hi = NAN;
+                if (nk > 0) mc_mean_ci(kv, nk, 0.95, &m, &lo, &hi);
+                fprintf(fl_, "%g,%g,%g,%g,%s,%zu,%.6g,%.6g,%.6g", cells[c], nus[a], snrs[b], pfas[cc],
+                        fl ? "PDAFAI" : "PDAF", nk, sqrt(m), sqrt(fmax(lo, 0)), sqrt(hi));
+                for (int k = 0; k < 10; k++) fprintf(fl_, ",%ld", bins[k]);
+                fprintf(fl_, "\n");
+            }
+        }
+    free(kv);
+    if (sim_csv_close(&l_out) != 0) return 1;
     printf("\n# %d of %d paper values lie outside our 95%% interval (see the notes on the cell area)\n", outside_ci,
            n_cmp);
     printf("# wall %.1f s on %d threads (+ %.1f s amplitude tables); %ld track updates, %.3g updates/s\n", wall,
            threads, tab_s, total_scans, (double)total_scans / wall);
-    printf("# file: %s\n", path);
+    printf("# files: %s, %s (loss times, kept-track RMSE)\n", path, lpath);
     if (!com.no_plot) {
         /* per cell: ours (points with error bars) and the paper (open symbols), one panel per filter */
         char dat[1024];
@@ -255,12 +312,13 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
             }
         if (sim_csv_close(&g_out) != 0) return 1;
         struct sim_text t = {NULL, 0, 0, 0};
+        char as[160];
         sim_text_add(&t,
                      "set datafile separator ','\nset datafile missing 'nan'\nset logscale y\nset yrange [0.4:20000]\n"
                      "set grid\nset key bottom left font ',8'\nset xtics rotate by 60 right font ',7'\n"
                      "set xrange [-0.5:%d.5]\nset ylabel 'lost tracks per 10000 (0 drawn at 0.5)'\n"
-                     "set multiplot layout 1,2 title 'Brekke 2011 Tables II-III: lost tracks (%ld runs, 300 s)'\n",
-                     nscen - 1, runs);
+                     "set multiplot layout 1,2 title \"Brekke 2011 Tables II-III: lost tracks (%ld runs x %ld scans)\\n%s\"\n",
+                     nscen - 1, runs, scans, sim_assumptions_title(as, sizeof as, init, &gate_cap, -1));
         for (int fl = 0; fl < 2; fl++) {
             sim_text_add(&t,
                          "set title '%s'\nplot '%s' every ::1 using 1:%d:xtic(2) with points pt 6 ps 1.5 "

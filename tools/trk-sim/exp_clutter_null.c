@@ -21,6 +21,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "rng.h"
 #include "sim.h"
@@ -52,6 +53,80 @@ static void binom_interval(long n, double p, double tail, long *lo, long *hi)
             return;
         }
     }
+}
+
+/* Work units: blocks of CN_BLOCK runs. A block's result: per update t the
+ * counts rej_c, rej_a, dec_c, dec_a (scans longs each), then redrawn and
+ * overflow: integer sums, the same for any split. */
+#define CN_BLOCK 256
+
+struct cn_units {
+    const struct trk_clutter_chi2_model *chi_m;
+    const struct trk_clutter_amp_model *amp_m;
+    long runs, scans;
+    uint64_t seed;
+    double mean_peaks, a_min, theta;
+};
+
+struct cn_ws {
+    trk_real others[MAX_PEAKS];
+    struct trk_clutter_chi2 chi;
+    struct trk_clutter_amp amp;
+};
+
+/* 0, or 1 (no memory), 2 (a test refused a step) */
+static int cn_unit(void *ctx, size_t blk, void *res, void **wsp)
+{
+    const struct cn_units *u = ctx;
+    struct cn_ws *ws = *wsp;
+    if (!ws && !(ws = *wsp = malloc(sizeof *ws))) return 1;
+    const long scans = u->scans;
+    long *lc = res, *la = lc + scans, *ldc = la + scans, *lda = ldc + scans, *lred = lda + scans,
+         *lover = lred + 1;
+    memset(res, 0, (4 * (size_t)scans + 2) * sizeof(long));
+    const long r0 = (long)blk * CN_BLOCK, r1 = r0 + CN_BLOCK < u->runs ? r0 + CN_BLOCK : u->runs;
+    for (long run = r0; run < r1; run++) {
+        struct rng r;
+        rng_init(&r, u->seed, (uint64_t)run);
+        trk_clutter_chi2_reset(u->chi_m, &ws->chi);
+        trk_clutter_amp_reset(u->amp_m, &ws->amp);
+        for (long t = 0; t < scans; t++) {
+            unsigned long n;
+            while ((n = rng_poisson(&r, u->mean_peaks)) == 0) ++*lred;
+            if (n > MAX_PEAKS - 1) { /* not seen at sane means */
+                n = MAX_PEAKS - 1;
+                ++*lover;
+            }
+            if (n - 1 > TRK_MAX_DETECTIONS) {
+                n = TRK_MAX_DETECTIONS + 1;
+                ++*lover;
+            }
+            double dmin = 2;
+            unsigned long imin = 0;
+            for (unsigned long i = 0; i < n; i++) {
+                const double d2 = rng_uniform(&r); /* (r/R)^2 of a uniform point */
+                ws->others[i] = (trk_real)(u->a_min + (u->theta - u->a_min) * rng_exp(&r));
+                if (d2 < dmin) dmin = d2, imin = i;
+            }
+            const trk_real a_assoc = ws->others[imin];
+            ws->others[imin] = ws->others[n - 1];
+            enum trk_decision dc, da;
+            if (trk_clutter_chi2_step(u->chi_m, &ws->chi, (trk_real)(u->mean_peaks * dmin), &dc) != TRK_OK ||
+                trk_clutter_amp_step(u->amp_m, &ws->amp, a_assoc, n - 1, ws->others, &da) != TRK_OK)
+                return 2;
+            lc[t] += ws->chi.reject;
+            la[t] += ws->amp.reject;
+            ldc[t] += dc == TRK_DECISION_CONFIRM;
+            lda[t] += da == TRK_DECISION_CONFIRM;
+        }
+    }
+    return 0;
+}
+
+static void cn_ws_free(void *ctx, void *ws)
+{
+    (void)ctx;
+    free(ws);
 }
 
 SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate of the clutter density and amplitude tests")
@@ -99,69 +174,34 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
     if (!com.quiet)
         fprintf(stderr, "clutter-null: %ld tracks x %ld updates, alpha %g, kmax %ld, %g peaks/scan, seed %llu, %d threads\n",
             runs, scans, alpha, kmax, mean_peaks, (unsigned long long)com.seed, threads);
-    struct sim_progress pr;
-    sim_progress_start(&pr, &com, "clutter-null", runs);
-#pragma omp parallel
-    {
-        long lc[MAX_SCANS] = {0}, la[MAX_SCANS] = {0}, ldc[MAX_SCANS] = {0}, lda[MAX_SCANS] = {0};
-        long lred = 0, lover = 0;
-        trk_real *others = malloc(sizeof(trk_real) * MAX_PEAKS);
-        struct trk_clutter_chi2 *chi = malloc(sizeof *chi);
-        struct trk_clutter_amp *amp = malloc(sizeof *amp);
-        if (!others || !chi || !amp) abort();
-#pragma omp for schedule(dynamic, 256)
-        for (long run = 0; run < runs; run++) {
-            struct rng r;
-            rng_init(&r, com.seed, (uint64_t)run);
-            trk_clutter_chi2_reset(&chi_m, chi);
-            trk_clutter_amp_reset(&amp_m, amp);
-            for (long t = 0; t < scans; t++) {
-                unsigned long n;
-                while ((n = rng_poisson(&r, mean_peaks)) == 0) lred++;
-                if (n > MAX_PEAKS - 1) { /* not seen at sane means */
-                    n = MAX_PEAKS - 1;
-                    lover++;
-                }
-                if (n - 1 > TRK_MAX_DETECTIONS) {
-                    n = TRK_MAX_DETECTIONS + 1;
-                    lover++;
-                }
-                double dmin = 2;
-                unsigned long imin = 0;
-                for (unsigned long i = 0; i < n; i++) {
-                    const double d2 = rng_uniform(&r); /* (r/R)^2 of a uniform point */
-                    others[i] = (trk_real)(a_min + (theta - a_min) * rng_exp(&r));
-                    if (d2 < dmin) dmin = d2, imin = i;
-                }
-                const trk_real a_assoc = others[imin];
-                others[imin] = others[n - 1];
-                enum trk_decision dc, da;
-                if (trk_clutter_chi2_step(&chi_m, chi, (trk_real)(mean_peaks * dmin), &dc) != TRK_OK ||
-                    trk_clutter_amp_step(&amp_m, amp, a_assoc, n - 1, others, &da) != TRK_OK)
-                    abort();
-                lc[t] += chi->reject;
-                la[t] += amp->reject;
-                ldc[t] += dc == TRK_DECISION_CONFIRM;
-                lda[t] += da == TRK_DECISION_CONFIRM;
-            }
-            sim_progress_add(&pr, 1);
-        }
-#pragma omp critical(sim_reduce)
-        { /* integer sums: the same for any thread count */
-            for (long t = 0; t < scans; t++) {
-                rej_c[t] += lc[t];
-                rej_a[t] += la[t];
-                dec_c[t] += ldc[t];
-                dec_a[t] += lda[t];
-            }
-            redrawn += lred;
-            overflow += lover;
-        }
-        free(others);
-        free(chi);
-        free(amp);
+    /* blocks of runs as work units, their counts summed in block order */
+    const struct cn_units cu = {&chi_m, &amp_m, runs, scans, com.seed, mean_peaks, a_min, theta};
+    const size_t nblk = (size_t)((runs + CN_BLOCK - 1) / CN_BLOCK), bsize = (4 * (size_t)scans + 2) * sizeof(long);
+    long *blocks = malloc(nblk * bsize);
+    if (!blocks) {
+        fprintf(stderr, "clutter-null: out of memory\n");
+        return 1;
     }
-    const double wall = sim_progress_end(&pr);
+    double wall;
+    const int urc = sim_run_units(&com, "clutter-null", nblk, bsize, 1, cn_unit, cn_ws_free, (void *)&cu, blocks,
+                                  &wall, NULL);
+    if (urc == 1) fprintf(stderr, "clutter-null: out of memory, or a clutter test refused a step\n");
+    if (urc != 0) {
+        free(blocks);
+        return 1;
+    }
+    for (size_t k = 0; k < nblk; k++) {
+        const long *b = (const long *)((const unsigned char *)blocks + k * bsize);
+        for (long t = 0; t < scans; t++) {
+            rej_c[t] += b[t];
+            rej_a[t] += b[scans + t];
+            dec_c[t] += b[2 * scans + t];
+            dec_a[t] += b[3 * scans + t];
+        }
+        redrawn += b[4 * scans];
+        overflow += b[4 * scans + 1];
+    }
+    free(blocks);
     long lo, hi;
     binom_interval(runs, alpha, 0.005, &lo, &hi);
     char path[1024];

@@ -425,6 +425,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         src.samples = (uint64_t)mre_samples;
         src.seed = com.seed;
         src.quiet = 1;
+        src.par = com.par;
         struct toc *toc = toc_new(&ts, &src, err, sizeof err);
         struct toc_point pt;
         if (!toc || toc_point_at(toc, (double)am->pfa, &pt, err, sizeof err) != 0)

@@ -30,6 +30,29 @@ struct kn_out {
     unsigned char chi2, amp, chi2_ever, amp_ever, outside, failed;
 };
 
+struct kn_units {
+    const struct kn_model *model;
+    long runs;
+};
+
+/* unit it: run length 2 + it / runs, run it % runs */
+static int kn_unit(void *ctx, size_t it, void *res, void **ws)
+{
+    const struct kn_units *u = ctx;
+    (void)ws;
+    const long n = 2 + (long)it / u->runs, run = (long)it % u->runs;
+    struct kn_result r;
+    kn_run(u->model, n, (uint32_t)n, (uint32_t)run, &r);
+    struct kn_out *o = res;
+    o->chi2 = (unsigned char)r.chi2_reject;
+    o->amp = (unsigned char)r.amp_reject;
+    o->chi2_ever = (unsigned char)r.chi2_ever;
+    o->amp_ever = (unsigned char)r.amp_ever;
+    o->outside = (unsigned char)r.outside;
+    o->failed = (unsigned char)r.failed;
+    return 0;
+}
+
 SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-track confirmations on the last scan vs alpha")
 {
     long runs, max_scans, peaks, kmax;
@@ -86,30 +109,16 @@ SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-trac
     if (!com.quiet)
         fprintf(stderr, "kennedy-null: %ld run lengths x %ld runs, %ld peaks/scan, alpha %g, seed %llu, %d threads\n",
                 nlen, runs, peaks, alpha, (unsigned long long)com.seed, threads);
-    struct sim_progress pr;
-    sim_progress_start(&pr, &com, "kennedy-null", nlen * runs);
-    long scans_done = 0;
-#pragma omp parallel reduction(+ : scans_done)
-    {
-        long pending = 0;
-#pragma omp for schedule(dynamic, 16)
-        for (long it = 0; it < nlen * runs; it++) {
-            const long n = 2 + it / runs, run = it % runs;
-            struct kn_result res;
-            kn_run(&model, n, (uint32_t)n, (uint32_t)run, &res);
-            struct kn_out *o = &out[it];
-            o->chi2 = (unsigned char)res.chi2_reject;
-            o->amp = (unsigned char)res.amp_reject;
-            o->chi2_ever = (unsigned char)res.chi2_ever;
-            o->amp_ever = (unsigned char)res.amp_ever;
-            o->outside = (unsigned char)res.outside;
-            o->failed = (unsigned char)res.failed;
-            scans_done += n;
-            sim_progress_step(&pr, &pending);
-        }
-        sim_progress_add(&pr, pending);
+    /* every run a work unit */
+    struct kn_units ku = {&model, runs};
+    double wall;
+    if (sim_run_units(&com, "kennedy-null", (size_t)(nlen * runs), sizeof *out, 16, kn_unit, NULL, &ku, out, &wall,
+                      NULL) != 0) {
+        free(out);
+        return 1;
     }
-    const double wall = sim_progress_end(&pr);
+    long scans_done = 0; /* n scans of every run of length n */
+    for (long n = 2; n <= max_scans; n++) scans_done += n * runs;
     long lo, hi;
     mc_binom_accept(runs, alpha, 0.025, &lo, &hi);
     char path[1024];

@@ -808,6 +808,40 @@ static int cmp_double(const void *a, const void *b)
 
 static const int family_values[] = {MTT_FAMILY_TRANSIT, MTT_FAMILY_FIXED};
 
+/* The runs as work units (sim_run_units): unit j = (seed j / (nl nc),
+ * level (j / nc) % nl, configuration j % nc). */
+struct mtt_units {
+    const struct mtt_scenario *sc;
+    const double *levels;
+    const struct trk_tracker_params *tp;
+    double c_m;
+    long nl, nc;
+};
+
+static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
+{
+    const struct mtt_units *u = ctx;
+    struct run_ws *ws = *wsp;
+    if (!ws) {
+        if (!(ws = malloc(sizeof *ws))) return 1;
+        if (!(ws->tk = malloc(sizeof *ws->tk))) {
+            free(ws);
+            return 1;
+        }
+        *wsp = ws;
+    }
+    const long i = (long)j / (u->nl * u->nc), l = ((long)j / u->nc) % u->nl, c = (long)j % u->nc;
+    return run_one(&u->sc[i], (long)u->levels[l], &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
+}
+
+static void mtt_ws_free(void *ctx, void *wsp)
+{
+    struct run_ws *ws = wsp;
+    (void)ctx;
+    free(ws->tk);
+    free(ws);
+}
+
 SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track maintenance) over clutter levels")
 {
     long scans, seeds;
@@ -1038,37 +1072,13 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         printf("\n");
     }
     fflush(stdout);
-    int failed = 0;
-    struct sim_progress pr;
-    sim_progress_start(&pr, &com, "mtt", n_jobs);
-#pragma omp parallel
-    {
-        struct run_ws *ws = malloc(sizeof *ws);
-        struct trk_tracker *tk = malloc(sizeof *tk);
-        if (!ws || !tk) {
-#pragma omp atomic write
-            failed = 1;
-        } else {
-            ws->tk = tk;
-        }
-#pragma omp for schedule(dynamic, 1)
-        for (long j = 0; j < n_jobs; j++) {
-            if (!ws || !tk) continue;
-            const long i = j / (nl * nc), l = (j / nc) % nl, c = j % nc;
-            if (run_one(&sc[i], (long)levels[l], &tp[l * nc + c], c_m, ws, &res[j]) != 0) {
-#pragma omp atomic write
-                failed = 1;
-            }
-            sim_progress_add(&pr, 1);
-        }
-        free(ws);
-        free(tk);
-    }
-    const double wall = sim_progress_end(&pr);
-    if (failed) {
-        fprintf(stderr, "trk-sim mtt: a run failed (tracker refused a scan, or out of memory)\n");
-        return 1;
-    }
+    /* every (seed, level, configuration) a work unit */
+    struct mtt_units mu = {sc, levels, tp, c_m, nl, nc};
+    double wall;
+    const int urc = sim_run_units(&com, "mtt", (size_t)n_jobs, sizeof *res, 1, mtt_unit, mtt_ws_free, &mu, res, &wall,
+                                  NULL);
+    if (urc == 1) fprintf(stderr, "trk-sim mtt: a run failed (tracker refused a scan, or out of memory)\n");
+    if (urc != 0) return 1;
     /* ---- reduce over seeds, in seed order */
     struct mtt_row *rows = calloc((size_t)(nl * nc), sizeof *rows);
     double *x = malloc((size_t)seeds * sizeof *x);

@@ -110,6 +110,7 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
     opt.samples = (uint64_t)samples;
     opt.target_se = target_se;
     opt.threads = com.threads;
+    opt.par = com.par;
     struct prog pg;
     memset(&pg, 0, sizeof pg);
     if (!com.quiet) {

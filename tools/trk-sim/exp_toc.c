@@ -38,6 +38,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
     int n_cells;
     long points, samples = 0;
     const char *tables = NULL;
+    int mre_start;
     const struct sim_opt opts[] = {
         SIM_OPT_DOUBLE("--snr-db", &snr_db, "D", "15", SIM_IN, -30, 60, "target SNR"),
         SIM_OPT_LIST("--cells", cells, &n_cells, MAX_CELLS, "1,0.25,0.1", SIM_OPEN, 0, INFINITY,
@@ -56,6 +57,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
                        "sampler: stop a cell at this standard error (default 1e-3)"),
         SIM_OPT_DOUBLE("--lambda-vg-max", &lv_max, "L", "100", SIM_IN, 1, 1000,
                        "top of the sampled lambda_vg axes (beyond it a point is\n'off_table')"),
+        SIM_OPT_MRE_START(&mre_start),
         SIM_OPT_END};
     const struct sim_cli cli = {
         "toc", NULL,
@@ -91,6 +93,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
     src.seed = com.seed;
     src.threads = com.threads;
     src.quiet = com.quiet;
+    src.par = com.par;
     src.lambda_vg_max = lv_max;
     if (tables) {
         if (sim_load_table(cli.name, tables, "q2_pdaf_g6.tbl", &pdaf_t, &pdaf_buf)) goto out;
@@ -114,6 +117,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         r.target_se = target_se > 0 ? target_se : Q2_TABLE_DEFAULT_TARGET_SE;
         r.seed = com.seed;
         r.threads = com.threads;
+        r.par = com.par;
         struct q2_table_result res;
         if (!com.quiet) fprintf(stderr, "toc: sampling the PDAF q2 grid (gate g = 6) ...\n");
         if (q2_table_build(&s, &r, &res, err, sizeof err)) {
@@ -134,6 +138,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         toc_scenario_brekke(&sc, models[m].model, models[m].nu, snr_db, cells[0]);
         sc.pfa_min = pfa_min;
         sc.pfa_max = pfa_max;
+        sc.mre_start = mre_start;
         src.pdafai = NULL;
         if (tables) {
             if (sim_load_table(cli.name, tables, models[m].table, &ai_t[m], &ai_buf[m])) goto out;
@@ -147,19 +152,26 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
             goto out;
         }
     }
-    char path[1024];
-    f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
-                     "model,nu,cell_m2,pfa,pd,lambda_per_m2,rmse_pdaf_m,status_pdaf,q2_pdaf,lambda_vg_pdaf,"
-                     "rmse_pdafai_m,status_pdafai,q2_pdafai,lambda_vg_pdafai,rmse_bound_pdaf_m,"
-                     "rmse_bound_pdafai_m");
-    fo = sim_csv_open(&com, &fo_out, "_optimum.csv", path, sizeof path,
-                      "model,nu,cell_m2,detector,pfa,pd,rmse_m,q2,lambda_vg,mre_solves,without_steady_state,at_range_end,"
-                      "table_limited,pfa_rmse_1pct_lo,pfa_rmse_1pct_hi");
+    char path[1024], head[1024];
+    const int nh = snprintf(head, sizeof head,
+                            "# toc: Brekke Fig. 2 model, SNR %g dB; q2 from %s\n"
+                            "# assumptions: MRE start %s (--mre-start: the MRE's start at every P_FA)\n",
+                            snr_db, tables ? "the tables in --tables" : "grids sampled for this SNR",
+                            toc_start_name(mre_start));
+    if (nh < 0 || (size_t)nh >= sizeof head / 2) goto out;
+    snprintf(head + nh, sizeof head - (size_t)nh, "%s",
+             "model,nu,cell_m2,detector,pfa,pd,rmse_m,q2,lambda_vg,mre_solves,without_steady_state,at_range_end,"
+             "table_limited,pfa_rmse_1pct_lo,pfa_rmse_1pct_hi");
+    fo = sim_csv_open(&com, &fo_out, "_optimum.csv", path, sizeof path, head);
+    snprintf(head + nh, sizeof head - (size_t)nh, "%s",
+             "model,nu,cell_m2,pfa,pd,lambda_per_m2,rmse_pdaf_m,status_pdaf,q2_pdaf,lambda_vg_pdaf,"
+             "rmse_pdafai_m,status_pdafai,q2_pdafai,lambda_vg_pdafai,rmse_bound_pdaf_m,rmse_bound_pdafai_m");
+    f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path, head);
     if (!f || !fo) goto out;
     printf("TOC (Brekke Fig. 2 model): SNR %g dB, T 1 s, q 0.0125^2, R I/12, gamma 36; lambda = P_FA / cell;\n"
-           "q2 from %s; %d thread%s. Curves beyond a P_FA where the MRE diverges (track lost)\n"
+           "MRE start %s; q2 from %s; %d thread%s. Curves beyond a P_FA where the MRE diverges (track lost)\n"
            "or settles above the q2 table's lambda_vg are left out (status in the CSV).\n",
-           snr_db, tables ? "the tables in --tables" : "grids sampled for this SNR", threads, threads == 1 ? "" : "s");
+           snr_db, toc_start_name(mre_start), tables ? "the tables in --tables" : "grids sampled for this SNR", threads, threads == 1 ? "" : "s");
     printf("%-10s %7s  %-7s %10s %8s %10s %8s %8s  %s\n", "clutter", "cell m2", "filter", "opt P_FA", "P_D",
            "RMSE m", "q2", "lam V_G", "P_FA with RMSE within 1 %");
     for (int m = 0; m < N_MODELS; m++)
@@ -220,9 +232,10 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         sim_text_add(&b,
                      "set datafile separator ','\nset logscale x\nset format x '10^{%%L}'\n"
                      "set grid\nset key top right font ',8'\n"
-                     "set xlabel 'P_{FA}'\nset ylabel 'steady-state position RMSE (m)'\n"
-                     "set multiplot layout 1,%d title 'TOC (MRE), SNR %g dB, Brekke Table I model'\n",
-                     n_cells, snr_db);
+                     "set xlabel 'P_{FA}'\nset ylabel 'steady-state position RMSE (m)'\nset yrange [0:1]\n"
+                     "set multiplot layout 1,%d title \"TOC (MRE), SNR %g dB, Brekke Table I model\\n"
+                     "MRE start %s\"\n",
+                     n_cells, snr_db, toc_start_name(mre_start));
         for (int c = 0; c < n_cells; c++) {
             sim_text_add(&b, "set title 'cell %g m^2 (lambda = P_{FA}/%g)'\nplot ", cells[c], cells[c]);
             for (int m = 0; m < N_MODELS; m++)
@@ -232,6 +245,12 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
                                  "lc %d dt %d title '%s %s', ",
                                  com.out, models[m].name, cells[c], d ? 11 : 7, m + 1, d ? 1 : 2,
                                  toc_detector_name(d), models[m].label);
+            /* off the q2 table: the RMSE's lower bound, marked (columns 15, 16) */
+            for (int d = 0; d < TOC_N_DETECTORS; d++)
+                sim_text_add(&b,
+                             "'%s.csv' using ($3 == %g ? $4 : 1/0):%d with points pt %d ps 0.6 lc rgb '#888888' "
+                             "title 'off table, %s: RMSE lower bound (those <= 1 m)', ",
+                             com.out, cells[c], 15 + d, d ? 8 : 10, toc_detector_name(d));
             sim_text_add(&b,
                          "'%s_optimum.csv' using ($3 == %g ? $5 : 1/0):7 with points pt 7 ps 1.2 lc 0 "
                          "title 'optimum'\n",

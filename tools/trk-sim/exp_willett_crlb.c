@@ -13,7 +13,7 @@
  *            lambda_vg = 400 lambda).
  *   PDAF     simulated (single_target.h: one target, one track, the
  *            library's trk_cv2_predict / trk_pda_update), gate d2 <= g^2
- *            (--gate-g, default 4), two-point-differencing start; a track is lost
+ *            (--gate-g, default 4), two-point-differencing start (--start); a track is lost
  *            when its position error exceeds 4 sigma_w for 3 scans in a row
  *            (Willett's footnote 5; his PDAF runs in 1-D, here the rule
  *            applies to each coordinate); the RMSE is over the tracks not
@@ -103,9 +103,9 @@ struct wc_points {
     int n;
 };
 
-static void keep(void *ctx, long it, int ai, const struct st_result *res)
+static void keep(void *slot, int ai, const struct st_result *res)
 {
-    struct wc_out *o = (struct wc_out *)ctx + it;
+    struct wc_out *o = slot;
     (void)ai;
     o->lost = (unsigned char)res->lost;
     o->mse = res->n_sse ? res->sse / (double)res->n_sse : NAN;
@@ -138,6 +138,8 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
 {
     long runs, scans, from, q2_samples;
     double gate_g;
+    int init;
+    struct st_gate_cap gate_cap;
     static struct wc_points pts;
     const struct sim_opt opts[] = {
         SIM_OPT_CUSTOM("--points", &pts, parse_points, "LIST",
@@ -151,6 +153,8 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
                        "loses more tracks to gate misses under this strong process noise)"),
         SIM_OPT_LONG("--q2-samples", &q2_samples, "N", "400000", SIM_GE, 1000, 0,
                      "importance samples per stratum for q2"),
+        SIM_OPT_START(&init),
+        SIM_OPT_GATE_CAP(&gate_cap),
         SIM_OPT_END};
     const struct sim_cli cli = {
         "willett-crlb", NULL,
@@ -178,6 +182,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     qo.samples = (uint64_t)q2_samples;
     qo.target_se = 2e-4;
     qo.threads = com.threads;
+    qo.par = com.par;
     const double t_b = progress_now_s();
     for (int k = 0; k < np; k++) {
         char err[256];
@@ -215,6 +220,8 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
         sp.loss = ST_LOSS_WILLETT;
         sp.thresh_m = 4;
         sp.count = 3;
+        sp.init = init;
+        sp.gate_cap = gate_cap;
         sp.seed = com.seed;
         char e[256];
         if (st_model_init(&mod[k], &sp, e, sizeof e)) {
@@ -226,17 +233,20 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
         fprintf(stderr, "willett-crlb: %d points x %ld runs x %ld scans, seed %llu, %d threads (bounds %.1f s)\n", np,
                 runs, scans, (unsigned long long)com.seed, threads, bound_s);
     int bad_call;
-    const double wall = sim_st_runs(&com, cli.name, mod, np, runs, 1, from, keep, out, &bad_call);
+    const double wall = sim_st_runs(&com, cli.name, mod, np, runs, 1, from, keep, out, sizeof *out, &bad_call);
     if (bad_call) return 1;
     char path[1024];
     struct fileio_out f_out;
     FILE *f = sim_csv_open(&com, &f_out, ".csv", path, sizeof path,
                            "# willett-crlb: PDAF position RMSE (tracks not lost) vs CRLB with q2 (Willett eq 37)");
     if (!f) return 1;
-    fprintf(f, "# T 1 s, q 1 m^2/s^3, R = I m^2; PDAF gate P_G %.6g (gamma %.6g), two-point start, %ld scans, RMSE over "
+    fprintf(f, "# T 1 s, q 1 m^2/s^3, R = I m^2; PDAF gate P_G %.6g (gamma %.6g), %s start, %ld scans, RMSE over "
                "scans >= %ld; lost: |x or y error| > 4 m for 3 scans in a row; q2 for the CRLB: V = 400 (gamma 400/pi, P_G 1, "
                "lambda_vg 400 lambda); seed %llu, runs %ld\n",
-            gate_prob, gamma, scans, from, (unsigned long long)com.seed, runs);
+            gate_prob, gamma, sim_start_name(init), scans, from, (unsigned long long)com.seed, runs);
+    sim_assumptions_csv(f, init, &gate_cap, -1);
+    fprintf(f, "# MRE of the PDAF: fixed point of q2 with constant q2 per solve (its steady state does not depend on the "
+               "start)\n");
     fprintf(f, "pd,lambda_per_m2,q2_paper,q2_ours,q2_ours_se,crlb_paper_q2_m,crlb_ours_q2_m,crlb_kalman_m,pdaf_rmse_m,"
                "pdaf_rmse_lo95,pdaf_rmse_hi95,pdaf_over_crlb,lost,lost_frac,lost_lo95,lost_hi95,mre_rmse_m,mre_q2,"
                "mre_lambda_vg\n");
@@ -278,9 +288,10 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     printf("# wall %.1f s on %d threads (+ %.1f s q2 and bounds); %ld track updates, %.3g updates/s\n", wall, threads,
            bound_s, total_scans, (double)total_scans / wall);
     printf("# file: %s\n", path);
+    char as[160];
     sim_plotf(&com, "",
               "set datafile separator ','\nset datafile missing 'nan'\nset grid\nset key top left\n"
-              "set title 'Willett 2010: PDAF RMSE (tracks not lost) vs CRLB with q2 (T 1 s, q 1, R = I)'\n"
+              "set title \"Willett 2010: PDAF RMSE (tracks not lost) vs CRLB with q2 (T 1 s, q 1, R = I)\\n%s\"\n"
               "set xlabel 'clutter density lambda (1/m^2)'\nset ylabel 'steady-state position RMSE (m)'\n"
               "set yrange [0:*]\n"
               "plot for [pd in '0.7 0.8 0.9'] '%s' every ::1 using ($1==pd+0?$2:NaN):9:10:11 with yerrorbars pt 7 "
@@ -289,7 +300,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
               "title sprintf('CRLB (our q2), P_D %%s', pd), \\\n"
               "     '%s' every ::1 using 2:6 with points pt 2 ps 1.5 lc rgb 'black' title 'CRLB (paper q2)', \\\n"
               "     '%s' every ::1 using 2:17 with points pt 8 ps 1.3 lc rgb '#888888' title 'MRE of the PDAF'\n",
-              path, path, path, path);
+              sim_assumptions_title(as, sizeof as, init, &gate_cap, -1), path, path, path, path);
     free(mod);
     free(out);
     return 0;

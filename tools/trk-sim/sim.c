@@ -2,6 +2,7 @@
 #include "sim.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,8 +11,10 @@
 #endif
 
 #include "fileio.h"
+#include "par.h"
 #include "plot.h"
 #include "single_target.h"
+#include "toc.h"
 #include "trk/table_file.h"
 
 /* ---------------------------------------------------------------- options */
@@ -27,7 +30,11 @@ static int parse_seed(const char *s, void *dst)
     return 0;
 }
 
+#ifdef TRK_TOOL_MPI
+enum { C_SEED, C_RUNS, C_OUT, C_THREADS, C_QUIET, C_NO_PLOT, C_CKPT, C_CKPT_S, C_N };
+#else
 enum { C_SEED, C_RUNS, C_OUT, C_THREADS, C_QUIET, C_NO_PLOT, C_N };
+#endif
 
 /* The common options over *com (and *threads: --threads is parsed as a long). */
 static void common_table(struct cli_opt t[C_N + 1], struct sim_common *com, long *threads, const char *def_out,
@@ -44,6 +51,15 @@ static void common_table(struct cli_opt t[C_N + 1], struct sim_common *com, long
                      "OpenMP threads (default: all cores; the results do not depend on it)"),
         CLI_OPT_FLAG("--quiet", &com->quiet, "no progress on stderr"),
         CLI_OPT_FLAG("--no-plot", &com->no_plot, "CSV only: no gnuplot script or PNG"),
+#ifdef TRK_TOOL_MPI
+        CLI_OPT_STRING("--checkpoint", &com->checkpoint, "FILE", NULL,
+                       "trk-sim-mpi: write the finished runs to FILE as they finish; a run\n"
+                       "with the same arguments resumes from it (the same bytes); removed\n"
+                       "once the output is written"),
+        CLI_OPT_DOUBLE("--checkpoint-interval", &com->checkpoint_s, "S", "5", CLI_GE, 0, 1e6,
+                       "least seconds between two writes of the checkpoint (0: after every\n"
+                       "chunk of runs)"),
+#endif
         CLI_OPT_END};
     memcpy(t, c, sizeof c);
 }
@@ -95,6 +111,21 @@ int sim_parse_more(const struct sim_cli *cli, void (*more_help)(FILE *f), struct
     c.ctx = &ad;
     const int rc = cli_parse(&c, argc, argv);
     com->threads = (int)threads;
+    com->par = sim_par();
+    if (!par_is_root(com->par)) com->quiet = 1; /* rank 0 reports for every rank */
+    if (rc != CLI_RUN || !com->checkpoint || !com->par) return rc;
+    /* the checkpoint's job key: the arguments that set the results */
+    static const char *const skip_value[] = {"--threads", "--checkpoint", "--checkpoint-interval", NULL};
+    static const char *const skip_flag[] = {"--quiet", "--no-plot", NULL};
+    char key[8192], err[1600];
+    if (par_job_key(key, sizeof key, prog, argc, argv, skip_value, skip_flag) != 0) {
+        fprintf(stderr, "%s: the arguments are too long for a checkpoint key\n", prog);
+        return 2;
+    }
+    if (par_checkpoint(com->par, com->checkpoint, com->checkpoint_s, key, err, sizeof err) != 0) {
+        if (par_is_root(com->par)) fprintf(stderr, "%s: %s\n", prog, err);
+        return 2;
+    }
     return rc;
 }
 
@@ -104,6 +135,41 @@ int sim_parse(const struct sim_cli *cli, struct sim_common *com, int argc, char 
 }
 
 /* ---------------------------------------------------------------- runs */
+
+static void units_done(void *ctx, size_t first, size_t count)
+{
+    (void)first;
+    sim_progress_add(ctx, (long)count);
+}
+
+int sim_run_units(const struct sim_common *c, const char *label, size_t n, size_t size, size_t chunk,
+                  int (*run)(void *ctx, size_t i, void *res, void **ws), void (*ws_free)(void *ctx, void *ws),
+                  void *ctx, void *out, double *wall, size_t *failed_unit)
+{
+    struct sim_progress pr;
+    sim_progress_start(&pr, c, label, (long)n);
+    struct par_batch b;
+    memset(&b, 0, sizeof b);
+    b.n = n;
+    b.size = size;
+    b.chunk = chunk;
+    b.threads = c->threads;
+    b.run = run;
+    b.ws_free = ws_free;
+    b.done = units_done;
+    b.ctx = ctx;
+    b.done_ctx = &pr;
+    char err[1600];
+    const int rc = par_run(c->par, &b, out, err, sizeof err);
+    *wall = sim_progress_end(&pr);
+    if (rc == PAR_OK) return 0;
+    if (rc == PAR_E_UNIT) {
+        if (failed_unit) *failed_unit = b.failed_unit;
+        return 1;
+    }
+    fprintf(stderr, "%s: %s\n", label, err);
+    return -1;
+}
 
 int sim_threads(const struct sim_common *c)
 {
@@ -126,14 +192,6 @@ void sim_progress_add(struct sim_progress *p, long n)
 {
 #pragma omp critical(sim_progress)
     progress_add(&p->bar, n);
-}
-
-void sim_progress_step(struct sim_progress *p, long *pending)
-{
-    if (++*pending == 64) {
-        sim_progress_add(p, *pending);
-        *pending = 0;
-    }
 }
 
 double sim_progress_end(struct sim_progress *p)
@@ -169,14 +227,80 @@ int sim_amp_k_grid(const char *exp, struct st_amp *amp, const double *nu, int n_
     return 0;
 }
 
+/* ---------------------------------------------------------------- assumptions */
+
+#define SIM_STR_(x) #x
+#define SIM_STR(x) SIM_STR_(x)
+const char sim_gate_cap_default[] = "truncate:" SIM_STR(TRK_MAX_DETECTIONS);
+const int sim_mre_start_values[3] = {TOC_START_TWOPOINT, TOC_START_ZERO, TOC_START_STEADY};
+
+int sim_parse_start(const char *v, void *dst)
+{
+    /* "twopoint": the spelling of --init, accepted */
+    if (strcmp(v, "two-point") == 0 || strcmp(v, "twopoint") == 0) *(int *)dst = ST_INIT_TWOPOINT;
+    else if (strcmp(v, "steady") == 0) *(int *)dst = ST_INIT_STEADY;
+    else return -1;
+    return 0;
+}
+
+int sim_parse_gate_cap(const char *v, void *dst)
+{
+    struct st_gate_cap *g = dst;
+    if (strncmp(v, "truncate:", 9) == 0) {
+        long n;
+        if (cli_parse_long(v + 9, &n) != 0 || n < 1 || n > TRK_MAX_DETECTIONS) return -1;
+        *g = (struct st_gate_cap){ST_GATE_TRUNCATE, n, 0};
+        return 0;
+    }
+    if (strncmp(v, "lost:", 5) == 0) {
+        double l;
+        if (cli_parse_double(v + 5, &l) != 0 || !(l > 0 && l < INFINITY)) return -1;
+        *g = (struct st_gate_cap){ST_GATE_LOST, 0, l};
+        return 0;
+    }
+    return -1;
+}
+
+const char *sim_start_name(int init) { return init == ST_INIT_STEADY ? "steady" : "two-point"; }
+
+char *sim_gate_cap_name(const struct st_gate_cap *g, char *buf, size_t n)
+{
+    if (g->mode == ST_GATE_LOST) snprintf(buf, n, "lost:%g", g->lambda_vg);
+    else snprintf(buf, n, "truncate:%ld", g->n > 0 ? g->n : (long)TRK_MAX_DETECTIONS);
+    return buf;
+}
+
+void sim_assumptions_csv(FILE *f, int init, const struct st_gate_cap *g, int mre_start)
+{
+    char gc[64];
+    fprintf(f, "# assumptions: start %s (--start: initial covariance %s), gate cap %s (--gate-cap: %s)",
+            sim_start_name(init),
+            init == ST_INIT_STEADY ? "the clutter-free Kalman steady state" : "by two-point differencing",
+            sim_gate_cap_name(g, gc, sizeof gc),
+            g->mode == ST_GATE_LOST ? "the track is lost when lambda V_G exceeds the cap"
+                                    : "a gate holding more passes its nearest by d2");
+    if (mre_start >= 0) fprintf(f, ", MRE start %s (--mre-start)", toc_start_name(mre_start));
+    fprintf(f, "\n");
+}
+
+char *sim_assumptions_title(char *buf, size_t n, int init, const struct st_gate_cap *g, int mre_start)
+{
+    char gc[64];
+    const int k = snprintf(buf, n, "start %s, gate cap %s", sim_start_name(init), sim_gate_cap_name(g, gc, sizeof gc));
+    if (mre_start >= 0 && k >= 0 && (size_t)k < n)
+        snprintf(buf + k, n - (size_t)k, ", MRE start %s", toc_start_name(mre_start));
+    return buf;
+}
+
 int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *amp, double cell_m2, long scans,
-                     int init, int texture, uint64_t seed)
+                     int init, int texture, const struct st_gate_cap *gate_cap, uint64_t seed)
 {
     struct st_params sp;
     st_params_brekke(&sp);
     sp.n_scans = scans;
     sp.init = init;
     sp.texture = texture;
+    if (gate_cap) sp.gate_cap = *gate_cap;
     sp.amp = &amp->m;
     sp.lambda_per_m2 = amp->pfa / cell_m2;
     sp.seed = seed;
@@ -188,36 +312,52 @@ int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *a
     return 0;
 }
 
+struct st_units {
+    const struct st_model *mod;
+    long runs, from;
+    int n_filters;
+    void (*keep)(void *slot, int ai, const struct st_result *res);
+};
+
+/* unit it: model it / runs, run it % runs, every filter */
+static int st_unit(void *ctx, size_t it, void *slot, void **ws)
+{
+    const struct st_units *u = ctx;
+    struct st_ws *w = *ws;
+    if (!w) {
+        if (!(w = malloc(sizeof *w))) return 1;
+        *w = (struct st_ws){NULL, 0, NULL, 0};
+        *ws = w;
+    }
+    const long k = (long)it / u->runs, run = (long)it % u->runs;
+    int bad = 0;
+    for (int ai = 0; ai < u->n_filters; ai++) {
+        struct st_result res;
+        if (st_run(&u->mod[k], w, (uint32_t)run, ai, u->from, NULL, &res) != 0)
+            bad = 1;
+        else
+            u->keep(slot, ai, &res);
+    }
+    return bad;
+}
+
+static void st_ws_release(void *ctx, void *ws)
+{
+    (void)ctx;
+    st_ws_free(ws);
+    free(ws);
+}
+
 double sim_st_runs(const struct sim_common *c, const char *label, const struct st_model *mod, long n_models,
                    long runs, int n_filters, long from,
-                   void (*keep)(void *ctx, long it, int ai, const struct st_result *res), void *ctx, int *failed)
+                   void (*keep)(void *slot, int ai, const struct st_result *res), void *out, size_t slot_size,
+                   int *failed)
 {
-    struct sim_progress pr;
-    int bad = 0;
-    sim_progress_start(&pr, c, label, n_models * runs);
-#pragma omp parallel
-    {
-        struct st_ws ws = {NULL, 0, NULL, 0};
-        long pending = 0;
-#pragma omp for schedule(dynamic, 8)
-        for (long it = 0; it < n_models * runs; it++) {
-            const long k = it / runs, run = it % runs;
-            for (int ai = 0; ai < n_filters; ai++) {
-                struct st_result res;
-                if (st_run(&mod[k], &ws, (uint32_t)run, ai, from, NULL, &res) != 0) {
-#pragma omp atomic write
-                    bad = 1;
-                } else {
-                    keep(ctx, it, ai, &res);
-                }
-            }
-            sim_progress_step(&pr, &pending);
-        }
-        sim_progress_add(&pr, pending);
-        st_ws_free(&ws);
-    }
-    *failed = bad;
-    return sim_progress_end(&pr);
+    struct st_units u = {mod, runs, from, n_filters, keep};
+    double wall = 0;
+    *failed = sim_run_units(c, label, (size_t)(n_models * runs), slot_size, 8, st_unit, st_ws_release, &u, out,
+                            &wall, NULL) != 0;
+    return wall;
 }
 
 int sim_load_table(const char *exp, const char *dir, const char *file, struct trk_table *t, void **buf)
@@ -249,7 +389,8 @@ FILE *sim_csv_open(const struct sim_common *c, struct fileio_out *o, const char 
         fprintf(stderr, "trk-sim: %s%s: path too long\n", c->out, suffix);
         return NULL;
     }
-    FILE *f = fileio_create(o, path, 0);
+    /* rank 0 writes the files (the other ranks' output is the same) */
+    FILE *f = fileio_create(o, par_is_root(c->par) ? path : "/dev/null", 0);
     if (!f) {
         fprintf(stderr, "trk-sim: cannot write %s: %s\n", path, strerror(errno));
         return NULL;
@@ -308,7 +449,7 @@ void sim_text_free(struct sim_text *t)
 
 int sim_plot(const struct sim_common *c, const char *suffix, const char *body)
 {
-    if (c->no_plot) return 0;
+    if (c->no_plot || !par_is_root(c->par)) return 0;
     if (!body) return -1;
     char base[1024];
     snprintf(base, sizeof base, "%s%s", c->out, suffix);
@@ -317,7 +458,7 @@ int sim_plot(const struct sim_common *c, const char *suffix, const char *body)
 
 int sim_plotf(const struct sim_common *c, const char *suffix, const char *fmt, ...)
 {
-    if (c->no_plot) return 0;
+    if (c->no_plot || !par_is_root(c->par)) return 0;
     struct sim_text t = {NULL, 0, 0, 0};
     va_list ap;
     va_start(ap, fmt);

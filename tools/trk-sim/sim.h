@@ -27,8 +27,11 @@
  *     if (parsed != SIM_RUN) return parsed;
  *
  * Results must not depend on the thread count: key each run's random stream
- * by (seed, run) (tools/sim/rng.h) and reduce per-run results in run
- * order after the parallel loop. */
+ * by (seed, run) (tools/sim/rng.h), let each run write its result into its
+ * own slot (sim_run_units: work units of tools/par, on this process's
+ * threads or, in trk-sim-mpi, over the ranks of an MPI job) and reduce the
+ * slots in run order afterwards. Output files go through sim_csv_open and
+ * sim_plot, which write on rank 0 only. */
 #ifndef TRK_SIM_H
 #define TRK_SIM_H
 
@@ -41,14 +44,23 @@
 
 #define SIM_EXPERIMENT(id, name, desc) int sim_exp_##id(int argc, char **argv)
 
+struct par;
+
 struct sim_common {
     uint64_t seed;      /* --seed (default 1) */
     long runs;          /* --runs when the experiment has no --runs of its own (0: not given) */
     const char *out;    /* --out: output prefix (CSV, .gp, .png) */
     int threads;        /* --threads; 0 = OpenMP default */
-    int quiet;          /* --quiet: no progress bar */
+    int quiet;          /* --quiet: no progress bar (and on every rank but 0) */
     int no_plot;        /* --no-plot: CSV only */
+    struct par *par;    /* the work distribution (tools/par/par.h): the MPI
+                           rank in trk-sim-mpi, NULL (this process) in trk-sim */
+    const char *checkpoint;  /* trk-sim-mpi --checkpoint FILE (NULL: none) */
+    double checkpoint_s;     /* --checkpoint-interval */
 };
+
+/* This process's work distribution (main.c): see sim_common.par. */
+struct par *sim_par(void);
 
 /* ---------------------------------------------------------------- options */
 
@@ -124,6 +136,18 @@ void sim_common_usage(FILE *f);
 /* Apply c->threads (omp_set_num_threads) and return the thread count used. */
 int sim_threads(const struct sim_common *c);
 
+/* Work units [0, n) through tools/par (par.h) on c->par: run(ctx, i, res,
+ * &ws) writes unit i's result (size bytes) at res = out + i * size; ws is
+ * the thread's workspace (NULL at first, freed by ws_free). chunk: units
+ * per chunk (consecutive). A progress bar `label` over the units on rank 0
+ * (none under --quiet); *wall the wall time. Every slot is filled on every
+ * rank when it returns 0; 1: a unit failed (its index in *failed_unit when
+ * not NULL; the caller says what failed); -1 after a message "LABEL: ..."
+ * (the distribution or the checkpoint failed). */
+int sim_run_units(const struct sim_common *c, const char *label, size_t n, size_t size, size_t chunk,
+                  int (*run)(void *ctx, size_t i, void *res, void **ws), void (*ws_free)(void *ctx, void *ws),
+                  void *ctx, void *out, double *wall, size_t *failed_unit);
+
 /* A progress bar over the runs of a parallel loop (none under --quiet), and
  * its wall time. */
 struct sim_progress {
@@ -133,9 +157,6 @@ struct sim_progress {
 void sim_progress_start(struct sim_progress *p, const struct sim_common *c, const char *label, long total);
 /* n more runs done; from any thread (serialised inside). */
 void sim_progress_add(struct sim_progress *p, long n);
-/* One more run done by this thread: counted in *pending, passed on every 64
- * (call sim_progress_add(p, *pending) after the thread's last run). */
-void sim_progress_step(struct sim_progress *p, long *pending);
 /* The final line; returns the wall time in seconds since the start. */
 double sim_progress_end(struct sim_progress *p);
 
@@ -153,20 +174,61 @@ int sim_amp_k_grid(const char *exp, struct st_amp *amp, const double *nu, int n_
                    int n_snr, const double *pfa, int n_pfa, int grid, unsigned size);
 
 /* *m = Brekke's Table I model (st_params_brekke) on the amplitude model
- * *amp, lambda = amp->pfa / cell_m2, with scans per run, initial track and
- * texture (st_params) and the seed. 0, or -1 with a message on stderr. */
+ * *amp, lambda = amp->pfa / cell_m2, with scans per run, initial track,
+ * texture and runaway-gate rule (st_params; gate_cap NULL: the default) and
+ * the seed. 0, or -1 with a message on stderr. */
+struct st_gate_cap;
 int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *amp, double cell_m2, long scans,
-                     int init, int texture, uint64_t seed);
+                     int init, int texture, const struct st_gate_cap *gate_cap, uint64_t seed);
 
-/* Every run (model k < n_models, run < runs) in parallel: st_run with each
- * filter ai < n_filters (0 PDAF, 1 PDAFAI), errors summed over scans >=
- * from; keep(ctx, k * runs + run, ai, result) stores what the experiment
- * needs (called from any thread: write to that run's own slot). Progress bar
- * `label` unless --quiet. Returns the wall time; *failed = 1 when st_run
- * refused a call (that run is not kept). */
+/* The assumptions that change the results (issue 18 item 4), one option
+ * each, the same name and meaning in every experiment, named in every CSV
+ * header and plot title:
+ *   --start two-point|steady   the single-target runs' initial track
+ *                              covariance (enum st_init; --init twopoint,
+ *                              the old spelling, is accepted)
+ *   --gate-cap truncate:N|lost:L  the runaway-gate rule (struct st_gate_cap)
+ *   --mre-start two-point|zero|steady  the MRE's start (enum toc_start) */
+#define SIM_START_HELP                                                                      \
+    "initial track covariance P0 (the estimate drawn from N(truth, P0)):\n"                 \
+    "two-point differencing, or the clutter-free Kalman steady state"
+#define SIM_OPT_START(dst_) \
+    SIM_OPT_CUSTOM("--start", dst_, sim_parse_start, "two-point|steady", "two-point", SIM_START_HELP)
+#define SIM_GATE_CAP_HELP                                                                   \
+    "runaway gate: truncate:N passes the N nearest (d2) of a gate holding\n"                \
+    "more (N <= TRK_MAX_DETECTIONS); lost:L declares the track lost when\n"                 \
+    "lambda V_G exceeds L"
+#define SIM_OPT_GATE_CAP(dst_) \
+    SIM_OPT_CUSTOM("--gate-cap", dst_, sim_parse_gate_cap, "truncate:N|lost:L", sim_gate_cap_default, SIM_GATE_CAP_HELP)
+#define SIM_MRE_START_HELP                                                                  \
+    "the MRE's start at every P_FA: two-point differencing (a new track),\n"                \
+    "P = 0, or the clutter-free Kalman steady state"
+#define SIM_OPT_MRE_START(dst_) \
+    SIM_OPT_CHOICE("--mre-start", dst_, "two-point|zero|steady", sim_mre_start_values, "two-point", SIM_MRE_START_HELP)
+extern const char sim_gate_cap_default[];  /* "truncate:<TRK_MAX_DETECTIONS>" */
+extern const int sim_mre_start_values[3];
+int sim_parse_start(const char *v, void *dst);     /* int *: enum st_init */
+int sim_parse_gate_cap(const char *v, void *dst);  /* struct st_gate_cap * */
+const char *sim_start_name(int init);              /* "two-point", "steady" */
+/* "truncate:256" or "lost:50" into buf[n]; returns buf. */
+char *sim_gate_cap_name(const struct st_gate_cap *g, char *buf, size_t n);
+/* The CSV header line "# assumptions: start S (--start), gate cap G
+ * (--gate-cap: ...)[, MRE start M (--mre-start)]" (mre_start < 0: none). */
+void sim_assumptions_csv(FILE *f, int init, const struct st_gate_cap *g, int mre_start);
+/* The same for a plot title: "start S, gate cap G[, MRE start M]". */
+char *sim_assumptions_title(char *buf, size_t n, int init, const struct st_gate_cap *g, int mre_start);
+
+/* Every run (model k < n_models, run < runs) as a work unit
+ * (sim_run_units): st_run with each filter ai < n_filters (0 PDAF, 1
+ * PDAFAI), errors summed over scans >= from; keep(slot, ai, result) stores
+ * what the experiment needs in the run's own slot, slot = out + (k * runs +
+ * run) * slot_size. Progress bar `label` unless --quiet. Returns the wall
+ * time; *failed = 1 when st_run refused a call or the distribution failed
+ * (with a message). */
 double sim_st_runs(const struct sim_common *c, const char *label, const struct st_model *mod, long n_models,
                    long runs, int n_filters, long from,
-                   void (*keep)(void *ctx, long it, int ai, const struct st_result *res), void *ctx, int *failed);
+                   void (*keep)(void *slot, int ai, const struct st_result *res), void *out, size_t slot_size,
+                   int *failed);
 
 /* A table file dir/file (`make tables`) loaded through the library into *t,
  * which views *buf (malloc'd: free it after the last use of *t). 0, or -1
@@ -179,7 +241,8 @@ int sim_load_table(const char *exp, const char *dir, const char *file, struct tr
 /* Opens c->out + suffix (e.g. ".csv", "_front.csv") for writing with its
  * header line, through o (fileio.h: a temporary file renamed into place by
  * sim_csv_close, so a failed run never leaves a cut file); the name goes to
- * path[pathlen] when path is not NULL. NULL (and a message) on failure. */
+ * path[pathlen] when path is not NULL. NULL (and a message) on failure.
+ * On an MPI rank other than 0 the writes go to /dev/null. */
 FILE *sim_csv_open(const struct sim_common *c, struct fileio_out *o, const char *suffix, char *path,
                    size_t pathlen, const char *header);
 /* Every write of o checked, flushed, closed and renamed into place: 0, or -1
@@ -199,9 +262,10 @@ struct sim_text {
 void sim_text_add(struct sim_text *t, const char *fmt, ...);
 void sim_text_free(struct sim_text *t);
 
-/* Unless --no-plot: the gnuplot script c->out + suffix + ".gp" with `body`
- * (plot.h plot_gnuplot), and the PNG when gnuplot is there. Returns
- * plot_gnuplot's value (0 without plotting; -1 on an I/O error). */
+/* Unless --no-plot (or on an MPI rank other than 0): the gnuplot script
+ * c->out + suffix + ".gp" with `body` (plot.h plot_gnuplot), and the PNG
+ * when gnuplot is there. Returns plot_gnuplot's value (0 without plotting;
+ * -1 on an I/O error). */
 int sim_plot(const struct sim_common *c, const char *suffix, const char *body);
 /* The same with the body formatted printf-style. */
 int sim_plotf(const struct sim_common *c, const char *suffix, const char *fmt, ...);

@@ -6,6 +6,7 @@
 
 #include "amp_table.h"
 #include "cli.h"
+#include "par.h"
 #include "table_writer.h"
 #include "tablegen.h"
 
@@ -16,6 +17,9 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape -
     const char *out = NULL, *name = "trk_amp_table";
     int model = 0, grid = 0, real_size = 0, format = 0, no_measure = 0;
     long size = 0, llr_size = 0;
+    const char *ckpt = NULL;
+    double ckpt_s = 5;
+    struct par *par = tablegen_par();
     double nu = NAN, snr_db = 0, pfa = 0, clutter_power = 0, x_max = 0;
     static const int models[] = {TRK_AMP_RAYLEIGH, TRK_AMP_K};
     static const int grids[] = {TRK_AMP_GRID_UNIFORM, TRK_AMP_GRID_GEOMETRIC};
@@ -57,6 +61,13 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape -
                        "{bytes, double} named IDENT for in-place use from ROM"),
         CLI_OPT_CUSTOM("--name", &name, tablegen_parse_ident, "IDENT", "trk_amp_table",
                        "C identifier of --format c"),
+#ifdef TRK_TOOL_MPI
+        CLI_OPT_STRING("--checkpoint", &ckpt, "FILE", NULL,
+                       "trk-tablegen-mpi: write the finished table nodes to FILE; a run\n"
+                       "with the same arguments resumes from it (removed once written)"),
+        CLI_OPT_DOUBLE("--checkpoint-interval", &ckpt_s, "S", "5", CLI_GE, 0, 1e6,
+                       "least seconds between two writes of FILE (0: after every chunk)"),
+#endif
         CLI_OPT_ALIAS("--clutter", "--clutter-model"),
         CLI_OPT_ALIAS("--nu", "--k-shape"),
         CLI_OPT_ALIAS("-o", "--out"),
@@ -88,6 +99,12 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape -
     o.real_size = (uint32_t)real_size;
     o.measure = !no_measure;
     if (o.model == TRK_AMP_RAYLEIGH) o.nu = 0;
+    /* the table's nodes are work units of tools/par: this process's threads,
+     * or the ranks of trk-tablegen-mpi */
+    const struct amp_table_exec exec = {par_for_each, par};
+    o.exec = &exec;
+    const int crc = tablegen_checkpoint("amp", ckpt, ckpt_s, argc, argv);
+    if (crc) return crc;
     struct amp_table_result r;
     char err[256];
     if (amp_table_build(&o, &r, err, sizeof err) != 0) {
@@ -106,8 +123,10 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape -
                  o.snr_db, o.pfa, o.grid == TRK_AMP_GRID_GEOMETRIC ? "geometric" : "uniform",
                  (size_t)(o.real_size ? o.real_size : sizeof(trk_real)));
     }
-    int rc = format == 1 ? tablew_write_c(out, name, r.bytes, r.len, desc)
-                                      : tablew_write_bin(out, r.bytes, r.len);
+    /* written by rank 0 only, atomically (fileio.h) */
+    int rc = !par_is_root(par) ? 0
+             : format == 1     ? tablew_write_c(out, name, r.bytes, r.len, desc)
+                               : tablew_write_bin(out, r.bytes, r.len);
     if (rc != 0) {
         perror(out);
         free(r.bytes);

@@ -5,12 +5,26 @@
  *   trk-tablegen info FILE    load a table through the library, print it
  *   trk-tablegen --help       list of subcommands; `trk-tablegen CMD --help`
  *
- * Subcommands are registered by TABLEGEN_CMD lines (tablegen.h). */
+ * Subcommands are registered by TABLEGEN_CMD lines (tablegen.h).
+ * Compiled with -DTRK_TOOL_MPI (mk/mpi.mk) this is trk-tablegen-mpi: the
+ * same program on every rank of an MPI job, the work spread over the ranks
+ * (tools/par/par.h), the table written by rank 0. */
 #include <stdio.h>
 
 #include "cli.h"
+#include "par.h"
 #include "tablegen.h"
 #include "trk/types.h"
+
+#ifdef TRK_TOOL_MPI
+#include "par_mpi.h"
+#define TABLEGEN_PROG "trk-tablegen-mpi"
+static struct par g_par; /* this rank of the job */
+struct par *tablegen_par(void) { return &g_par; }
+#else
+#define TABLEGEN_PROG "trk-tablegen"
+struct par *tablegen_par(void) { return NULL; }
+#endif
 
 #define TABLEGEN_CMD_ENTRY(n)                          \
     extern const char *const tablegen_summary_##n;     \
@@ -34,10 +48,29 @@ int tablegen_parse_ident(const char *s, void *dst)
     return 0;
 }
 
-int main(int argc, char **argv)
+int tablegen_checkpoint(const char *cmd, const char *path, double interval_s, int argc, char **argv)
+{
+    struct par *p = tablegen_par();
+    if (!p || !path) return 0;
+    static const char *const skip_value[] = {"--threads", "--checkpoint", "--checkpoint-interval", NULL};
+    static const char *const skip_flag[] = {"--quiet", NULL};
+    char tool[64], key[8192], err[1600];
+    snprintf(tool, sizeof tool, "trk-tablegen %s", cmd);
+    if (par_job_key(key, sizeof key, tool, argc, argv, skip_value, skip_flag) != 0) {
+        fprintf(stderr, TABLEGEN_PROG " %s: the arguments are too long for a checkpoint key\n", cmd);
+        return 2;
+    }
+    if (par_checkpoint(p, path, interval_s, key, err, sizeof err) != 0) {
+        if (par_is_root(p)) fprintf(stderr, TABLEGEN_PROG " %s: %s\n", cmd, err);
+        return 2;
+    }
+    return 0;
+}
+
+static int run(int argc, char **argv)
 {
     if (trk_config_check() != TRK_OK) {
-        fprintf(stderr, "trk-tablegen: libtrk was built with other capacities or real type\n");
+        fprintf(stderr, TABLEGEN_PROG ": libtrk was built with other capacities or real type\n");
         return 2;
     }
     /* the registry (its summaries are objects of the subcommands' files) */
@@ -52,5 +85,18 @@ int main(int argc, char **argv)
              "Offline generator of trk's lookup tables (%s build: tables default to %zu-byte reals).\n"
              "commands:\n",
              TRK_REAL_IS_FLOAT ? "float" : "double", sizeof(trk_real));
-    return cli_dispatch("trk-tablegen", "command", head, cmds, NULL, argc, argv);
+    return cli_dispatch(TABLEGEN_PROG, "command", head, cmds, NULL, argc, argv);
+}
+
+int main(int argc, char **argv)
+{
+#ifdef TRK_TOOL_MPI
+    if (par_mpi_start(&g_par, &argc, &argv, TABLEGEN_PROG) != 0) return 1;
+    const int rc = run(argc, argv);
+    /* the table is written: the checkpoint (if any) goes */
+    if (par_finish(&g_par, rc == 0) != 0 && rc == 0) return par_mpi_end(&g_par, 1);
+    return par_mpi_end(&g_par, rc);
+#else
+    return run(argc, argv);
+#endif
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "par.h"
 #include "progress.h"
 #include "q2_amp.h"
 #include "q2_is.h"
@@ -61,6 +62,9 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
     int detector = 0, amp_model = 0, cubic = 1, real_size = 0, format = 0, quiet = 0, amp_measure = 0,
         measure_interp = 0;
     long nz = 2, samples = (long)DEF_SAMPLES, seed = 1, threads = 0, amp_size = 0;
+    const char *ckpt = NULL;
+    double ckpt_s = 5;
+    struct par *par = tablegen_par();
     static const int detectors[] = {TRK_Q2_PDAF, TRK_Q2_PDAFAI};
     static const int models[] = {TRK_AMP_RAYLEIGH, TRK_AMP_K};
     static const int interps[] = {1, 0};
@@ -131,6 +135,15 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
         CLI_OPT_CUSTOM("--name", &name, tablegen_parse_ident, "IDENT", "trk_q2_table",
                        "C identifier of --format c"),
         CLI_OPT_FLAG("--quiet", &quiet, "no progress bar on stderr"),
+#ifdef TRK_TOOL_MPI
+        CLI_OPT_HEADING("Checkpoint (trk-tablegen-mpi):"),
+        CLI_OPT_STRING("--checkpoint", &ckpt, "FILE", NULL,
+                       "write the finished work units to FILE as they finish; a run\n"
+                       "with the same arguments resumes from it (the same bytes); removed\n"
+                       "once the table is written"),
+        CLI_OPT_DOUBLE("--checkpoint-interval", &ckpt_s, "S", "5", CLI_GE, 0, 1e6,
+                       "least seconds between two writes of FILE (0: after every unit)"),
+#endif
         CLI_OPT_ALIAS("--model", "--clutter-model"),
         CLI_OPT_ALIAS("--nu", "--k-shape"),
         CLI_OPT_ALIAS("-o", "--out"),
@@ -220,9 +233,12 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
         q2_table_list_axis(pd_v, n, &s.pd);
     }
 
+    const int crc = tablegen_checkpoint("q2", ckpt, ckpt_s, argc, argv);
+    if (crc) return crc;
+    run.par = par;
     struct prog pc;
     memset(&pc, 0, sizeof pc);
-    pc.quiet = quiet;
+    pc.quiet = quiet || !par_is_root(par); /* rank 0 reports for all ranks */
     pc.cells_per_line = ai ? s.lambda_vg.n : s.pd.n * s.lambda_vg.n;
     snprintf(pc.label, sizeof pc.label, "q2 points");
     run.progress = on_progress;
@@ -252,8 +268,10 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
         snprintf(desc, sizeof desc, "q2 table: PDAFAI, Rayleigh clutter, nz %d, gamma %.6g, %zu-byte reals", s.nz,
                  s.gate_gamma, (size_t)(s.real_size ? s.real_size : sizeof(trk_real)));
     }
-    int rc = format == 1 ? tablew_write_c(out, name, r.bytes, r.len, desc)
-                                      : tablew_write_bin(out, r.bytes, r.len);
+    /* the table: written by rank 0 only, atomically (fileio.h) */
+    int rc = !par_is_root(par) ? 0
+             : format == 1     ? tablew_write_c(out, name, r.bytes, r.len, desc)
+                               : tablew_write_bin(out, r.bytes, r.len);
     if (rc != 0) {
         perror(out);
         q2_table_result_free(&r);

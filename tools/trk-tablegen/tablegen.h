@@ -17,6 +17,13 @@
     int tablegen_cmd_##cname(int argc, char **argv)
 
 /* Shared helpers (main.c). */
+/* This process's work distribution (tools/par/par.h): the rank of the job
+ * in trk-tablegen-mpi, NULL (this process's threads) in trk-tablegen. */
+struct par *tablegen_par(void);
+/* trk-tablegen-mpi: --checkpoint FILE for subcommand `cmd` (the job key:
+ * its arguments but --threads, --quiet and the checkpoint's own), after
+ * cli_parse. 0, or 2 after a message (a refused checkpoint). */
+int tablegen_checkpoint(const char *cmd, const char *path, double interval_s, int argc, char **argv);
 /* A C identifier (the --name of --format c)? */
 int tablegen_valid_ident(const char *s);
 /* --name IDENT (a CLI_CUSTOM parser): *(const char **)dst = s when s is a C

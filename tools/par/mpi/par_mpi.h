@@ -1,0 +1,29 @@
+/* par_mpi.h - par's message layer over MPI (issue 20): the one piece of trk
+ * that includes mpi.h, linked only into the tools' MPI builds
+ * (build/bin/trk-tablegen-mpi, trk-sim-mpi: mk/mpi.mk). libtrk never sees
+ * MPI.
+ *
+ * MPI_Init_thread with MPI_THREAD_FUNNELED (only the thread that called
+ * par_run talks to MPI; OpenMP threads compute). Errors on MPI_COMM_WORLD
+ * are returned and checked: a failed call prints "PROG: rank R: MPI_X:
+ * message" and ends the job (MPI_Abort), as does a rank that dies (the MPI
+ * runtime's doing). Waiting (broadcasts, the last sends) polls with short
+ * sleeps, so a rank that waits leaves its core to the others. Ranks > 0
+ * write nothing on stdout (it goes to /dev/null) and are quiet; their
+ * error messages stay on stderr. */
+#ifndef TRK_TOOLS_PAR_MPI_H
+#define TRK_TOOLS_PAR_MPI_H
+
+#include "par.h"
+
+/* Start MPI and make *p this rank (par_init, then rank, size, comm). Run
+ * without mpirun it is a job of one rank. 0, or -1 with a message. */
+int par_mpi_start(struct par *p, int *argc, char ***argv, const char *prog);
+
+/* The end of the program with exit status `status`: 0 MPI_Finalize (and
+ * 0); else MPI_Abort(status), which ends every rank (a rank that fails
+ * alone must not leave the others waiting; ranks > 0 first give rank 0 3 s
+ * to do it, so that an error of every rank is reported once). */
+int par_mpi_end(struct par *p, int status);
+
+#endif
