@@ -620,26 +620,32 @@ static void root_message(struct run *r, const unsigned char *m, size_t len)
     const struct par_batch *b = r->b;
     uint64_t h[6];
     size_t at = 0;
-    while (at < len) {
-        if (len - at < sizeof h) break;
+    int bad = 0;
+    while (at < len && !bad) {
+        if (len - at < sizeof h) {
+            bad = 1;
+            break;
+        }
         memcpy(h, m + at, sizeof h);
         at += sizeof h;
-        if (h[0] != MSG_MAGIC || h[2] != r->p->seq - 1) break;
-        if (h[1] == MSG_END) {
+        if (h[0] != MSG_MAGIC || h[2] != r->p->seq - 1 || (h[1] != MSG_END && h[1] != MSG_DATA)) {
+            bad = 1;
+        } else if (h[1] == MSG_END) {
             r->ends++;
             if (h[3]) fail_unit(r, (size_t)h[4], (int)(int64_t)h[5]);
-            continue;
+        } else {
+            const size_t first = (size_t)h[3], count = (size_t)h[4], bytes = (size_t)h[5];
+            if (first > b->n || count > b->n - first || bytes > len - at ||
+                bytes != unit_off(b, first + count) - unit_off(b, first)) {
+                bad = 1;
+            } else {
+                memcpy(r->out + unit_off(b, first), m + at, bytes);
+                at += bytes;
+                root_done(r, first, count);
+            }
         }
-        if (h[1] != MSG_DATA) break;
-        const size_t first = (size_t)h[3], count = (size_t)h[4], bytes = (size_t)h[5];
-        if (first > b->n || count > b->n - first || bytes > len - at ||
-            bytes != unit_off(b, first + count) - unit_off(b, first))
-            break;
-        memcpy(r->out + unit_off(b, first), m + at, bytes);
-        at += bytes;
-        root_done(r, first, count);
     }
-    if (at != len) fatal(r->p, "rank 0: a malformed message from another rank (batch %llu)",
+    if (bad) fatal(r->p, "rank 0: a malformed message from another rank (batch %llu)",
                          (unsigned long long)(r->p->seq - 1));
 }
 
