@@ -33,6 +33,15 @@ struct job {
     int var;                      /* variable sizes: unit i has i % 5 + 1 values */
 };
 
+/* the job of a test, zeroed: units >= fail_from with an odd index fail */
+static struct job *fresh(size_t fail_from)
+{
+    static struct job j;
+    memset(&j, 0, sizeof j);
+    j.fail_from = fail_from;
+    return &j;
+}
+
 static int unit(void *ctx, size_t i, void *res, void **ws)
 {
     struct job *j = ctx;
@@ -61,16 +70,11 @@ static void done(void *ctx, size_t first, size_t count)
 
 static void batch(struct par_batch *b, struct job *j, size_t chunk, int threads, const size_t *off)
 {
-    memset(b, 0, sizeof *b);
-    b->n = N_UNITS;
-    b->size = 8;
+    par_batch_init(b, N_UNITS, 8, chunk, unit, j);
     b->offsets = off;
-    b->chunk = chunk;
     b->threads = threads;
-    b->run = unit;
     b->ws_free = ws_free;
     b->done = done;
-    b->ctx = j;
 }
 
 static void check_values(const unsigned char *out, const size_t *off, int var)
@@ -98,19 +102,17 @@ static void test_slots(void **state)
     for (int var = 0; var < 2; var++)
         for (size_t c = 0; c < 4; c++)
             for (size_t t = 0; t < 3; t++) {
-                static struct job j;
-                memset(&j, 0, sizeof j);
-                j.fail_from = N_UNITS;
-                j.var = var;
+                struct job *j = fresh(N_UNITS);
+                j->var = var;
                 struct par_batch b;
-                batch(&b, &j, chunks[c], threads[t], var ? off : NULL);
+                batch(&b, j, chunks[c], threads[t], var ? off : NULL);
                 memset(out, 0, off[N_UNITS]);
                 char err[256];
                 assert_int_equal(par_run(NULL, &b, out, err, sizeof err), PAR_OK);
                 check_values(out, var ? off : NULL, var);
                 for (size_t i = 0; i < N_UNITS; i++) {
-                    assert_int_equal(j.calls[i], 1);
-                    assert_int_equal(j.seen[i], 1);
+                    assert_int_equal(j->calls[i], 1);
+                    assert_int_equal(j->seen[i], 1);
                 }
             }
     free(out);
@@ -119,13 +121,11 @@ static void test_slots(void **state)
 static void test_costs(void **state)
 {
     (void)state;
-    static struct job j;
-    memset(&j, 0, sizeof j);
-    j.fail_from = N_UNITS;
+    struct job *j = fresh(N_UNITS);
     double cost[N_UNITS];
     for (size_t i = 0; i < N_UNITS; i++) cost[i] = (double)((i * 37) % 101);
     struct par_batch b;
-    batch(&b, &j, 1, 2, NULL);
+    batch(&b, j, 1, 2, NULL);
     b.cost = cost;
     uint64_t out[N_UNITS];
     char err[256];
@@ -137,18 +137,16 @@ static void test_failure(void **state)
 {
     (void)state;
     for (int t = 1; t <= 4; t *= 2) {
-        static struct job j;
-        memset(&j, 0, sizeof j);
-        j.fail_from = 500;
+        struct job *j = fresh(500);
         struct par_batch b;
-        batch(&b, &j, 3, t, NULL);
+        batch(&b, j, 3, t, NULL);
         uint64_t out[N_UNITS];
         char err[256];
         assert_int_equal(par_run(NULL, &b, out, err, sizeof err), PAR_E_UNIT);
         assert_int_equal(b.failed_unit, 501); /* the lowest, whatever the threads did first */
         assert_int_equal(b.failed_code, 5 + 501 % 3);
         assert_non_null(strstr(err, "work unit 501 of 1000 failed"));
-        for (size_t i = 0; i < N_UNITS; i++) assert_int_equal(j.calls[i], 1); /* the others ran */
+        for (size_t i = 0; i < N_UNITS; i++) assert_int_equal(j->calls[i], 1); /* the others ran */
     }
     /* a batch without a run function or sizes */
     struct par_batch b;
@@ -156,6 +154,15 @@ static void test_failure(void **state)
     b.n = 3;
     char err[256];
     assert_int_equal(par_run(NULL, &b, NULL, err, sizeof err), PAR_E_ARG);
+}
+
+/* *p a quiet process using the checkpoint at path with job key `key`;
+ * par_checkpoint's value */
+static int start(struct par *p, const char *path, const char *key, char *err, size_t errlen)
+{
+    par_init(p, "test_par");
+    p->quiet = 1;
+    return par_checkpoint(p, path, 0, key, err, errlen);
 }
 
 static void tmp_path(char *path, size_t n, const char *name)
@@ -174,46 +181,37 @@ static void test_checkpoint_resume(void **state)
     for (size_t i = 0; i < N_UNITS; i++) ref[i] = value(i);
     /* run 1: batch 0 whole, batch 1 fails from unit 600 on (odd units) */
     struct par p;
-    par_init(&p, "test_par");
-    p.quiet = 1;
-    assert_int_equal(par_checkpoint(&p, path, 0, "job A", err, sizeof err), 0);
-    static struct job j;
-    memset(&j, 0, sizeof j);
-    j.fail_from = N_UNITS;
+    assert_int_equal(start(&p, path, "job A", err, sizeof err), 0);
+    struct job *j = fresh(N_UNITS);
     struct par_batch b;
-    batch(&b, &j, 7, 2, NULL);
+    batch(&b, j, 7, 2, NULL);
     assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_OK);
-    memset(&j, 0, sizeof j);
-    j.fail_from = 600;
-    batch(&b, &j, 7, 2, NULL);
+    j = fresh(600);
+    batch(&b, j, 7, 2, NULL);
     assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_E_UNIT);
     assert_int_equal(par_finish(&p, 0), 0); /* failed: the file stays */
     assert_int_equal(access(path, F_OK), 0);
 
     /* run 2, same key: batch 0 entirely from the file, batch 1 from unit 600 on */
-    par_init(&p, "test_par");
-    p.quiet = 1;
-    assert_int_equal(par_checkpoint(&p, path, 0, "job A", err, sizeof err), 0);
-    memset(&j, 0, sizeof j);
-    j.fail_from = N_UNITS;
-    batch(&b, &j, 7, 2, NULL);
+    assert_int_equal(start(&p, path, "job A", err, sizeof err), 0);
+    j = fresh(N_UNITS);
+    batch(&b, j, 7, 2, NULL);
     memset(out, 0, sizeof out);
     assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_OK);
     assert_memory_equal(out, ref, sizeof out);
     size_t calls = 0, seen = 0;
-    for (size_t i = 0; i < N_UNITS; i++) calls += j.calls[i], seen += j.seen[i];
+    for (size_t i = 0; i < N_UNITS; i++) calls += j->calls[i], seen += j->seen[i];
     assert_int_equal(calls, 0);     /* nothing computed again */
     assert_int_equal(seen, N_UNITS); /* but all counted as done */
-    memset(&j, 0, sizeof j);
-    j.fail_from = N_UNITS;
-    batch(&b, &j, 7, 2, NULL);
+    j = fresh(N_UNITS);
+    batch(&b, j, 7, 2, NULL);
     memset(out, 0, sizeof out);
     assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_OK);
     assert_memory_equal(out, ref, sizeof out);
     calls = 0;
     for (size_t i = 0; i < N_UNITS; i++) {
-        calls += j.calls[i];
-        if (i < 595) assert_int_equal(j.calls[i], 0); /* chunks of 7 wholly done */
+        calls += j->calls[i];
+        if (i < 595) assert_int_equal(j->calls[i], 0); /* chunks of 7 wholly done */
     }
     assert_int_equal(calls, N_UNITS - 595); /* the failed chunks: unit 601's and those after it */
     assert_int_equal(p.units_resumed, N_UNITS + 595);
@@ -226,14 +224,10 @@ static unsigned char *write_checkpoint(const char *path, size_t *len)
 {
     struct par p;
     char err[1600];
-    par_init(&p, "test_par");
-    p.quiet = 1;
-    assert_int_equal(par_checkpoint(&p, path, 0, "job A", err, sizeof err), 0);
-    static struct job j;
-    memset(&j, 0, sizeof j);
-    j.fail_from = 990;
+    assert_int_equal(start(&p, path, "job A", err, sizeof err), 0);
+    struct job *j = fresh(990);
     struct par_batch b;
-    batch(&b, &j, 10, 1, NULL);
+    batch(&b, j, 10, 1, NULL);
     uint64_t out[N_UNITS];
     assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_E_UNIT);
     assert_int_equal(par_finish(&p, 0), 0);
@@ -252,32 +246,25 @@ static void test_checkpoint_refused(void **state)
     assert_true(len > 990 * 8);
     struct par p;
     /* another job key */
-    par_init(&p, "test_par");
-    assert_int_equal(par_checkpoint(&p, path, 0, "job B", err, sizeof err), -1);
+    assert_int_equal(start(&p, path, "job B", err, sizeof err), -1);
     assert_non_null(strstr(err, "belongs to another run (job A)"));
     /* every truncation and a flipped byte: damaged (no crash, no resume) */
     for (size_t n = 0; n < len; n += n < 200 ? 1 : 97) {
         assert_int_equal(fileio_write(path, bytes, n), 0);
-        par_init(&p, "test_par");
-        if (par_checkpoint(&p, path, 0, "job A", err, sizeof err) != -1) fail_msg("cut at %zu accepted", n);
+        if (start(&p, path, "job A", err, sizeof err) != -1) fail_msg("cut at %zu accepted", n);
         assert_true(strstr(err, "damaged") || strstr(err, "not a checkpoint"));
     }
     bytes[len / 2] ^= 0x10;
     assert_int_equal(fileio_write(path, bytes, len), 0);
-    par_init(&p, "test_par");
-    assert_int_equal(par_checkpoint(&p, path, 0, "job A", err, sizeof err), -1);
+    assert_int_equal(start(&p, path, "job A", err, sizeof err), -1);
     assert_non_null(strstr(err, "damaged"));
     bytes[len / 2] ^= 0x10;
     /* the right file, but a batch of another shape */
     assert_int_equal(fileio_write(path, bytes, len), 0);
-    par_init(&p, "test_par");
-    p.quiet = 1;
-    assert_int_equal(par_checkpoint(&p, path, 0, "job A", err, sizeof err), 0);
-    static struct job j;
-    memset(&j, 0, sizeof j);
-    j.fail_from = N_UNITS;
+    assert_int_equal(start(&p, path, "job A", err, sizeof err), 0);
+    struct job *j = fresh(N_UNITS);
     struct par_batch b;
-    batch(&b, &j, 10, 1, NULL);
+    batch(&b, j, 10, 1, NULL);
     b.n = N_UNITS - 1;
     uint64_t out[N_UNITS];
     assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_E_CKPT);

@@ -3,7 +3,6 @@
 #include "q2_amp.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -82,60 +81,52 @@ void q2_amp_free(struct q2_amp *a)
     a->table = NULL;
 }
 
-/* the packed form: this header, then the table's bytes */
-struct packed {
-    int32_t model, measured;
-    double nu, snr_db, pfa, pd, threshold, err_log_lr, err_inv_sf;
-    uint64_t table_len;
-};
+/* The packed form: the struct (its pointers and the library's model left
+ * out: made again from the table), then the table's bytes. The ranks of a
+ * job run the same program: the struct has the same layout on all. */
+#define PACKED_HEAD ((sizeof(struct q2_amp) + 7) / 8 * 8)
 
-size_t q2_amp_packed_size(size_t table_len) { return sizeof(struct packed) + (table_len + 7) / 8 * 8; }
+size_t q2_amp_packed_size(size_t table_len) { return PACKED_HEAD + (table_len + 7) / 8 * 8; }
 
 size_t q2_amp_table_len(const struct q2_amp *a) { return a->table ? a->table_len : 0; }
 
 void q2_amp_pack(const struct q2_amp *a, void *buf)
 {
-    const struct packed h = {a->model,     a->measured,   a->nu,         a->snr_db,        a->pfa,
-                             a->pd,        a->threshold,  a->err_log_lr, a->err_inv_sf,    q2_amp_table_len(a)};
+    struct q2_amp h = *a;
+    memset(&h.m, 0, sizeof h.m);
+    h.table = NULL;
+    h.table_len = q2_amp_table_len(a);
     memset(buf, 0, q2_amp_packed_size(h.table_len));
     memcpy(buf, &h, sizeof h);
-    if (h.table_len) memcpy((unsigned char *)buf + sizeof h, a->table, (size_t)h.table_len);
+    if (h.table_len) memcpy((unsigned char *)buf + PACKED_HEAD, a->table, h.table_len);
 }
 
 int q2_amp_unpack(struct q2_amp *a, const void *buf, size_t len, char *err, size_t errlen)
 {
-    struct packed h;
     memset(a, 0, sizeof *a);
-    if (len < sizeof h) return snprintf(err, errlen, "amplitude model: %zu bytes, too few", len), -1;
+    if (len < PACKED_HEAD) return snprintf(err, errlen, "amplitude model: %zu bytes, too few", len), -1;
+    struct q2_amp h;
     memcpy(&h, buf, sizeof h);
-    if (h.table_len > len - sizeof h) return snprintf(err, errlen, "amplitude model: its table is cut"), -1;
+    if (h.table_len > len - PACKED_HEAD) return snprintf(err, errlen, "amplitude model: its table is cut"), -1;
     trk_status st;
     if (h.model == TRK_AMP_RAYLEIGH) {
-        st = trk_amplitude_init_rayleigh(&a->m, 1, (trk_real)h.snr_db, (trk_real)h.pfa);
+        h.table_len = 0;
+        st = trk_amplitude_init_rayleigh(&h.m, 1, (trk_real)h.snr_db, (trk_real)h.pfa);
+    } else if (!(h.table = malloc(h.table_len ? h.table_len : 1))) {
+        return snprintf(err, errlen, "out of memory"), -1;
     } else {
-        if (!(a->table = malloc(h.table_len ? (size_t)h.table_len : 1)))
-            return snprintf(err, errlen, "out of memory"), -1;
-        memcpy(a->table, (const unsigned char *)buf + sizeof h, (size_t)h.table_len);
-        a->table_len = (size_t)h.table_len;
+        memcpy(h.table, (const unsigned char *)buf + PACKED_HEAD, h.table_len);
         struct trk_table t;
-        st = trk_table_parse(&t, a->table, a->table_len);
-        if (st == TRK_OK) st = trk_amplitude_init_table(&a->m, &t);
+        st = trk_table_parse(&t, h.table, h.table_len);
+        if (st == TRK_OK) st = trk_amplitude_init_table(&h.m, &t); /* views h.table, which *a keeps */
     }
     if (st != TRK_OK) {
-        q2_amp_free(a);
+        free(h.table);
         return snprintf(err, errlen, "amplitude model (snr_db %g, pfa %g) refused: %s", h.snr_db, h.pfa,
                         trk_status_str(st)),
                -1;
     }
-    a->model = h.model;
-    a->measured = h.measured;
-    a->nu = h.nu;
-    a->snr_db = h.snr_db;
-    a->pfa = h.pfa;
-    a->pd = h.pd;
-    a->threshold = h.threshold;
-    a->err_log_lr = h.err_log_lr;
-    a->err_inv_sf = h.err_inv_sf;
+    *a = h;
     return 0;
 }
 

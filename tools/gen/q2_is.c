@@ -944,16 +944,12 @@ int q2_is_run(struct q2_is_line *lines, size_t n_lines, const struct q2_is_optio
         struct round rd = {ls, items, key, BLOCK_MAX, point_cap(max_n), opt, &points_done, lines_done, n_lines,
                            planned, t_start, &t_last, threads};
         struct par_batch pb;
-        memset(&pb, 0, sizeof pb);
-        pb.n = n_items;
+        par_batch_init(&pb, n_items, 0, 1, round_unit, &rd);
         pb.offsets = offs;
-        pb.chunk = 1;
         pb.cost = cost;
         pb.threads = threads;
-        pb.run = round_unit;
         pb.ws_free = round_ws_free;
         pb.done = round_done;
-        pb.ctx = &rd;
         char e2[256];
         const int prc = par_run(opt->par, &pb, part, e2, sizeof e2);
         if (prc == PAR_E_UNIT) {

@@ -451,13 +451,8 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
             goto out;
         }
         struct par_batch pb;
-        memset(&pb, 0, sizeof pb);
-        pb.n = nmodels;
-        pb.size = slot;
-        pb.chunk = 1;
+        par_batch_init(&pb, nmodels, slot, 1, amp_unit, &job);
         pb.threads = r->threads;
-        pb.run = amp_unit;
-        pb.ctx = &job;
         char e2[256];
         if (par_run(r->par, &pb, slots, e2, sizeof e2) != PAR_OK) {
             errmsg_fail(err, errlen, "amplitude models: %s", e2);

@@ -68,6 +68,17 @@ void par_init(struct par *p, const char *prog)
 
 int par_is_root(const struct par *p) { return !p || p->rank == 0; }
 
+void par_batch_init(struct par_batch *b, size_t n, size_t size, size_t chunk,
+                    int (*run)(void *ctx, size_t i, void *res, void **ws), void *ctx)
+{
+    memset(b, 0, sizeof *b);
+    b->n = n;
+    b->size = size;
+    b->chunk = chunk;
+    b->run = run;
+    b->ctx = ctx;
+}
+
 /* FNV-1a, 64 bits */
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
 {
@@ -361,14 +372,31 @@ int par_checkpoint(struct par *p, const char *path, double interval_s, const cha
     return st == 0 ? 0 : -1;
 }
 
+int par_checkpoint_cli(struct par *p, const char *tool, const char *path, double interval_s, int argc,
+                       char **argv)
+{
+    static const char *const skip_value[] = {"--threads", "--checkpoint", "--checkpoint-interval", NULL};
+    static const char *const skip_flag[] = {"--quiet", "--no-plot", NULL};
+    char key[8192], err[1600];
+    if (par_job_key(key, sizeof key, tool, argc, argv, skip_value, skip_flag) != 0) {
+        if (par_is_root(p)) fprintf(stderr, "%s: the arguments are too long for a checkpoint key\n", tool);
+        return 2;
+    }
+    if (par_checkpoint(p, path, interval_s, key, err, sizeof err) != 0) {
+        if (par_is_root(p)) fprintf(stderr, "%s: %s\n", tool, err);
+        return 2;
+    }
+    return 0;
+}
+
 int par_finish(struct par *p, int ok)
 {
     if (!p) return 0;
     if (p->stats)
-        fprintf(stderr, "%s: rank %d of %d: %llu batches, %llu work units here, %.3f s on them, %.3f s waiting for "
-                        "the other ranks\n",
-                p->prog, p->rank, p->size, (unsigned long long)p->batches, (unsigned long long)p->units_here,
-                p->work_s, p->wait_s);
+        fprintf(stderr, "%s: rank %d of %d: %llu batches (%.3g MB of results), %llu work units here, %.3f s on them, "
+                        "%.3f s waiting for the other ranks\n",
+                p->prog, p->rank, p->size, (unsigned long long)p->batches, 1e-6 * (double)p->result_bytes,
+                (unsigned long long)p->units_here, p->work_s, p->wait_s);
     struct par_ckpt *c = p->ckpt;
     int rc = 0;
     if (c) {
@@ -567,12 +595,23 @@ static void flush_sends(struct run *r)
     r->last_send = now_s();
 }
 
-/* Rank 0: units [first, first + count) finished (its own or a message's). */
+/* Rank 0: units [first, first + count) finished (its own or a message's);
+ * the hook hears of the ones not done before (a chunk partly resumed is
+ * computed again, with the same bytes) */
 static void root_done(struct run *r, size_t first, size_t count)
 {
-    for (size_t i = first; i < first + count; i++) r->done[i] = 1;
+    const struct par_batch *b = r->b;
+    for (size_t i = first; i < first + count;) {
+        if (r->done[i]) {
+            i++;
+            continue;
+        }
+        size_t j = i;
+        while (j < first + count && !r->done[j]) r->done[j++] = 1;
+        if (b->done) b->done(b->done_ctx ? b->done_ctx : b->ctx, i, j - i);
+        i = j;
+    }
     if (r->p->ckpt) r->p->ckpt->dirty = 1;
-    if (r->b->done) r->b->done(r->b->done_ctx ? r->b->done_ctx : r->b->ctx, first, count);
 }
 
 /* Rank 0: one message of another rank. */
@@ -581,26 +620,32 @@ static void root_message(struct run *r, const unsigned char *m, size_t len)
     const struct par_batch *b = r->b;
     uint64_t h[6];
     size_t at = 0;
-    while (at < len) {
-        if (len - at < sizeof h) break;
+    int bad = 0;
+    while (at < len && !bad) {
+        if (len - at < sizeof h) {
+            bad = 1;
+            break;
+        }
         memcpy(h, m + at, sizeof h);
         at += sizeof h;
-        if (h[0] != MSG_MAGIC || h[2] != r->p->seq - 1) break;
-        if (h[1] == MSG_END) {
+        if (h[0] != MSG_MAGIC || h[2] != r->p->seq - 1 || (h[1] != MSG_END && h[1] != MSG_DATA)) {
+            bad = 1;
+        } else if (h[1] == MSG_END) {
             r->ends++;
             if (h[3]) fail_unit(r, (size_t)h[4], (int)(int64_t)h[5]);
-            continue;
+        } else {
+            const size_t first = (size_t)h[3], count = (size_t)h[4], bytes = (size_t)h[5];
+            if (first > b->n || count > b->n - first || bytes > len - at ||
+                bytes != unit_off(b, first + count) - unit_off(b, first)) {
+                bad = 1;
+            } else {
+                memcpy(r->out + unit_off(b, first), m + at, bytes);
+                at += bytes;
+                root_done(r, first, count);
+            }
         }
-        if (h[1] != MSG_DATA) break;
-        const size_t first = (size_t)h[3], count = (size_t)h[4], bytes = (size_t)h[5];
-        if (first > b->n || count > b->n - first || bytes > len - at ||
-            bytes != unit_off(b, first + count) - unit_off(b, first))
-            break;
-        memcpy(r->out + unit_off(b, first), m + at, bytes);
-        at += bytes;
-        root_done(r, first, count);
     }
-    if (at != len) fatal(r->p, "rank 0: a malformed message from another rank (batch %llu)",
+    if (bad) fatal(r->p, "rank 0: a malformed message from another rank (batch %llu)",
                          (unsigned long long)(r->p->seq - 1));
 }
 
@@ -870,6 +915,7 @@ int par_run(struct par *p, struct par_batch *b, void *out_v, char *err, size_t e
     bcast(&r, res, sizeof res);
     rc = (int)res[0];
     p->batches++;
+    p->result_bytes += total;
     p->work_s += r.t_local - r.t0;
     if (rc == PAR_E_UNIT) {
         b->failed_unit = (size_t)res[1];
@@ -914,12 +960,7 @@ int par_for_each(void *p, size_t n, size_t size, int (*fn)(void *ctx, size_t i, 
 {
     struct each e = {fn, ctx};
     struct par_batch b;
-    memset(&b, 0, sizeof b);
-    b.n = n;
-    b.size = size;
-    b.chunk = 8;
-    b.run = each_run;
-    b.ctx = &e;
+    par_batch_init(&b, n, size, 8, each_run, &e);
     char err[256];
     const int rc = par_run(p, &b, out, err, sizeof err);
     if (rc != PAR_OK && rc != PAR_E_UNIT) fprintf(stderr, "%s: %s\n", p ? ((struct par *)p)->prog : "trk", err);

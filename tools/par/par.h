@@ -95,7 +95,7 @@ struct par {
     /* TRK_PAR_STATS=1: par_finish prints, per rank, the batches, the time
      * this rank worked on its units and the time it waited for the others */
     int stats;
-    uint64_t batches;
+    uint64_t batches, result_bytes;
     double work_s, wait_s;
 };
 
@@ -129,6 +129,30 @@ struct par_batch {
     int failed_code;
 };
 
+/* The main of a tool with an MPI build (trk-tablegen, trk-sim):
+ *     PAR_TOOL_MAIN(accessor, run, prog)
+ * defines `struct par *accessor(void)` (this process's par: NULL in the
+ * single-process build) and main, which runs `int run(int argc, char
+ * **argv)`: as it is in the single-process build, through par_mpi_main
+ * (tools/par/mpi/par_mpi.h: on every rank, the checkpoint removed after
+ * success) with -DTRK_TOOL_MPI. */
+int par_mpi_main(struct par *p, int argc, char **argv, const char *prog, int (*run)(int argc, char **argv));
+#ifdef TRK_TOOL_MPI
+#define PAR_TOOL_MAIN(accessor, run, prog)                                                   \
+    static struct par accessor##_rank;                                                       \
+    struct par *accessor(void) { return &accessor##_rank; }                                  \
+    int main(int argc, char **argv) { return par_mpi_main(&accessor##_rank, argc, argv, prog, run); }
+#else
+#define PAR_TOOL_MAIN(accessor, run, prog)       \
+    struct par *accessor(void) { return NULL; } \
+    int main(int argc, char **argv) { return run(argc, argv); }
+#endif
+
+/* *b = n units of `size` bytes (0 with offsets), `chunk` units per chunk,
+ * run(ctx, ...); every other field 0 (set them after). */
+void par_batch_init(struct par_batch *b, size_t n, size_t size, size_t chunk,
+                    int (*run)(void *ctx, size_t i, void *res, void **ws), void *ctx);
+
 /* One process: rank 0 of 1, no checkpoint; the fault injection from the
  * environment. */
 void par_init(struct par *p, const char *prog);
@@ -156,6 +180,14 @@ int par_for_each(void *p, size_t n, size_t size, int (*fn)(void *ctx, size_t i, 
  * two writes (0: after every chunk). 0, or -1 on every rank. */
 int par_checkpoint(struct par *p, const char *path, double interval_s, const char *job_key, char *err,
                    size_t errlen);
+
+/* par_checkpoint for a tool's command line (argv[0] its subcommand): the
+ * job key from tool ("trk-sim kennedy-null") and the arguments but
+ * --threads, --quiet, --no-plot, --checkpoint and --checkpoint-interval;
+ * a refusal printed by rank 0 as "TOOL: message". 0, or 2 (the exit status
+ * of bad usage) on every rank. */
+int par_checkpoint_cli(struct par *p, const char *tool, const char *path, double interval_s, int argc,
+                       char **argv);
 
 /* End of the run: with ok, rank 0 removes the checkpoint (the output is
  * written) and says how many units it resumed; without, it writes what is

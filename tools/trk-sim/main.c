@@ -20,13 +20,9 @@
 #include "trk/types.h"
 
 #ifdef TRK_TOOL_MPI
-#include "par_mpi.h"
 #define SIM_PROG "trk-sim-mpi"
-static struct par g_par; /* this rank of the job */
-struct par *sim_par(void) { return &g_par; }
 #else
 #define SIM_PROG "trk-sim"
-struct par *sim_par(void) { return NULL; }
 #endif
 
 #define SIM_ENTRY(id, name, desc) SIM_EXPERIMENT(id, name, desc);
@@ -57,15 +53,4 @@ static int run(int argc, char **argv)
                         experiments, common_usage, argc, argv);
 }
 
-int main(int argc, char **argv)
-{
-#ifdef TRK_TOOL_MPI
-    if (par_mpi_start(&g_par, &argc, &argv, SIM_PROG) != 0) return 1;
-    const int rc = run(argc, argv);
-    /* the files are written: the checkpoint (if any) goes */
-    if (par_finish(&g_par, rc == 0) != 0 && rc == 0) return par_mpi_end(&g_par, 1);
-    return par_mpi_end(&g_par, rc);
-#else
-    return run(argc, argv);
-#endif
-}
+PAR_TOOL_MAIN(sim_par, run, SIM_PROG) /* main; every rank runs it, rank 0 writes */

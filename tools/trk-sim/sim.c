@@ -114,19 +114,8 @@ int sim_parse_more(const struct sim_cli *cli, void (*more_help)(FILE *f), struct
     com->par = sim_par();
     if (!par_is_root(com->par)) com->quiet = 1; /* rank 0 reports for every rank */
     if (rc != CLI_RUN || !com->checkpoint || !com->par) return rc;
-    /* the checkpoint's job key: the arguments that set the results */
-    static const char *const skip_value[] = {"--threads", "--checkpoint", "--checkpoint-interval", NULL};
-    static const char *const skip_flag[] = {"--quiet", "--no-plot", NULL};
-    char key[8192], err[1600];
-    if (par_job_key(key, sizeof key, prog, argc, argv, skip_value, skip_flag) != 0) {
-        fprintf(stderr, "%s: the arguments are too long for a checkpoint key\n", prog);
-        return 2;
-    }
-    if (par_checkpoint(com->par, com->checkpoint, com->checkpoint_s, key, err, sizeof err) != 0) {
-        if (par_is_root(com->par)) fprintf(stderr, "%s: %s\n", prog, err);
-        return 2;
-    }
-    return rc;
+    const int crc = par_checkpoint_cli(com->par, prog, com->checkpoint, com->checkpoint_s, argc, argv);
+    return crc ? crc : rc;
 }
 
 int sim_parse(const struct sim_cli *cli, struct sim_common *com, int argc, char **argv)
@@ -149,15 +138,10 @@ int sim_run_units(const struct sim_common *c, const char *label, size_t n, size_
     struct sim_progress pr;
     sim_progress_start(&pr, c, label, (long)n);
     struct par_batch b;
-    memset(&b, 0, sizeof b);
-    b.n = n;
-    b.size = size;
-    b.chunk = chunk;
+    par_batch_init(&b, n, size, chunk, run, ctx);
     b.threads = c->threads;
-    b.run = run;
     b.ws_free = ws_free;
     b.done = units_done;
-    b.ctx = ctx;
     b.done_ctx = &pr;
     char err[1600];
     const int rc = par_run(c->par, &b, out, err, sizeof err);

@@ -17,13 +17,9 @@
 #include "trk/types.h"
 
 #ifdef TRK_TOOL_MPI
-#include "par_mpi.h"
 #define TABLEGEN_PROG "trk-tablegen-mpi"
-static struct par g_par; /* this rank of the job */
-struct par *tablegen_par(void) { return &g_par; }
 #else
 #define TABLEGEN_PROG "trk-tablegen"
-struct par *tablegen_par(void) { return NULL; }
 #endif
 
 #define TABLEGEN_CMD_ENTRY(n)                          \
@@ -52,19 +48,9 @@ int tablegen_checkpoint(const char *cmd, const char *path, double interval_s, in
 {
     struct par *p = tablegen_par();
     if (!p || !path) return 0;
-    static const char *const skip_value[] = {"--threads", "--checkpoint", "--checkpoint-interval", NULL};
-    static const char *const skip_flag[] = {"--quiet", NULL};
-    char tool[64], key[8192], err[1600];
+    char tool[64];
     snprintf(tool, sizeof tool, "trk-tablegen %s", cmd);
-    if (par_job_key(key, sizeof key, tool, argc, argv, skip_value, skip_flag) != 0) {
-        fprintf(stderr, TABLEGEN_PROG " %s: the arguments are too long for a checkpoint key\n", cmd);
-        return 2;
-    }
-    if (par_checkpoint(p, path, interval_s, key, err, sizeof err) != 0) {
-        if (par_is_root(p)) fprintf(stderr, TABLEGEN_PROG " %s: %s\n", cmd, err);
-        return 2;
-    }
-    return 0;
+    return par_checkpoint_cli(p, tool, path, interval_s, argc, argv);
 }
 
 static int run(int argc, char **argv)
@@ -88,15 +74,4 @@ static int run(int argc, char **argv)
     return cli_dispatch(TABLEGEN_PROG, "command", head, cmds, NULL, argc, argv);
 }
 
-int main(int argc, char **argv)
-{
-#ifdef TRK_TOOL_MPI
-    if (par_mpi_start(&g_par, &argc, &argv, TABLEGEN_PROG) != 0) return 1;
-    const int rc = run(argc, argv);
-    /* the table is written: the checkpoint (if any) goes */
-    if (par_finish(&g_par, rc == 0) != 0 && rc == 0) return par_mpi_end(&g_par, 1);
-    return par_mpi_end(&g_par, rc);
-#else
-    return run(argc, argv);
-#endif
-}
+PAR_TOOL_MAIN(tablegen_par, run, TABLEGEN_PROG) /* main; every rank runs it, rank 0 writes */

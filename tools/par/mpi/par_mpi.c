@@ -165,6 +165,14 @@ int par_mpi_start(struct par *p, int *argc, char ***argv, const char *prog)
     return 0;
 }
 
+int par_mpi_main(struct par *p, int argc, char **argv, const char *prog, int (*run)(int argc, char **argv))
+{
+    if (par_mpi_start(p, &argc, &argv, prog) != 0) return 1;
+    const int rc = run(argc, argv);
+    if (par_finish(p, rc == 0) != 0 && rc == 0) return par_mpi_end(p, 1);
+    return par_mpi_end(p, rc);
+}
+
 int par_mpi_end(struct par *p, int status)
 {
     (void)p;

@@ -16,6 +16,10 @@
 
 #include "par.h"
 
+/* par_mpi_main (declared in par.h for PAR_TOOL_MAIN): par_mpi_start,
+ * run(argc, argv) (the tool), par_finish (the output is written when run
+ * returned 0: the checkpoint goes), par_mpi_end with run's exit status. */
+
 /* Start MPI and make *p this rank (par_init, then rank, size, comm). Run
  * without mpirun it is a job of one rank. 0, or -1 with a message. */
 int par_mpi_start(struct par *p, int *argc, char ***argv, const char *prog);
