@@ -30,7 +30,12 @@ MPICC_RUN := OMPI_CC='$(CC)' MPICH_CC='$(CC)' $(MPICC)
 
 ifeq ($(MPI),1)
 tools: $(MPI_BINS)
+# installed by a double build, as the other tools (a float build installs
+# none: Makefile "install")
+ifneq ($(REAL),float)
+install: $(MPI_BINS)
 INSTALL_EXTRA += install -m 755 $(MPI_BINS) $(DESTDIR)$(PREFIX)/bin/ ;
+endif
 
 $(BUILD)/obj-mpi/tools/%.o: tools/%.c $(BUILD_CONFIG)
 	@mkdir -p $(@D)
