@@ -39,6 +39,25 @@ trk_real trk_chol_logdet(int n, const trk_real *l) { return trk_i_chol_logdet(n,
 
 trk_status trk_i_spd(int n, const trk_real *a) { return trk_i_spd_inline(n, a); }
 
+/* With a division per entry (no reciprocal of a pivot, which overflows for
+ * a subnormal one): trk_i_spd_inline's fallback. */
+trk_status trk_i_spd_div(int n, const trk_real *a)
+{
+    trk_real l[TRK_MAX_STATE * TRK_MAX_STATE], d[TRK_MAX_STATE]; /* unit lower L, D */
+    for (int j = 0; j < n; j++) {
+        trk_real dj = a[j * n + j];
+        for (int k = 0; k < j; k++) dj -= l[j * n + k] * l[j * n + k] * d[k];
+        if (!(dj > 0) || !(dj <= TRK_REAL_MAX)) return TRK_E_NOT_SPD;
+        d[j] = dj;
+        for (int i = j + 1; i < n; i++) {
+            trk_real v = a[i * n + j];
+            for (int k = 0; k < j; k++) v -= l[i * n + k] * l[j * n + k] * d[k];
+            l[i * n + j] = v / dj;
+        }
+    }
+    return TRK_OK;
+}
+
 trk_status trk_mat_check_spd(int n, const trk_real *a, trk_real rel_tol)
 {
     if (!DIM_OK(n) || !a || !(rel_tol >= 0)) return TRK_E_ARG;

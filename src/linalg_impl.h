@@ -65,9 +65,13 @@ TRK_INLINE trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
  * TRK_OK or TRK_E_NOT_SPD, by an LDL' factorisation without square roots:
  * every pivot d_i > 0 and finite (the test trk_mat_check_spd runs after its
  * symmetry and finiteness scans), for the tracker's and the PDA's posterior
- * checks. One division per pivot. trk_i_spd is the out-of-line copy
- * (linalg.c: its workspace stays off the callers' frames); the inline one
- * unrolls at a caller's constant n (the CV kernels). */
+ * checks. One division per pivot; a pivot whose reciprocal overflows (a
+ * subnormal one) goes to trk_i_spd_div, which divides instead. trk_i_spd
+ * is the out-of-line copy (linalg.c: its workspace stays off the callers'
+ * frames; trk_mat_check_spd's test), so every check decides alike; the
+ * inline one unrolls at a caller's constant n (the CV kernels). */
+trk_status trk_i_spd(int n, const trk_real *a);
+trk_status trk_i_spd_div(int n, const trk_real *a);
 TRK_INLINE trk_status trk_i_spd_inline(int n, const trk_real *a)
 {
     trk_real ld[TRK_MAX_STATE * TRK_MAX_STATE], inv_d[TRK_MAX_STATE]; /* ld[i][k] = L_ik d_k (i > k) */
@@ -76,6 +80,7 @@ TRK_INLINE trk_status trk_i_spd_inline(int n, const trk_real *a)
         for (int k = 0; k < j; k++) dj -= ld[j * n + k] * ld[j * n + k] * inv_d[k];
         if (!(dj > 0) || !(dj <= TRK_REAL_MAX)) return TRK_E_NOT_SPD;
         inv_d[j] = 1 / dj;
+        if (!(inv_d[j] <= TRK_REAL_MAX)) return trk_i_spd_div(n, a); /* a subnormal pivot: divide */
         for (int i = j + 1; i < n; i++) {
             trk_real v = a[i * n + j];
             for (int k = 0; k < j; k++) v -= ld[i * n + k] * ld[j * n + k] * inv_d[k];
@@ -84,7 +89,6 @@ TRK_INLINE trk_status trk_i_spd_inline(int n, const trk_real *a)
     }
     return TRK_OK;
 }
-trk_status trk_i_spd(int n, const trk_real *a);
 
 TRK_INLINE void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)
 {

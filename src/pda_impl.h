@@ -177,41 +177,47 @@ TRK_INLINE void trk_i_pda_own_move(const struct trk_i_pda_pred *pr, const struct
     trk_i_mat_mul(nx, nz, 1, u, y, d);
 }
 
-/* The moments of the shared group (beta_i, i < n_shared), in one pass over
- * its whitened innovations y_i = L^-1 nu_i: B = sum beta_i, sy = sum
- * beta_i y_i, w (nz x nz) = sum beta_i (y_i - ybar)(y_i - ybar)' with ybar =
- * sy / B, formed as sum beta_i y_i y_i' - sy sy' / B. In whitened
- * coordinates the terms are bounded (|y_i|^2 <= gamma in the gate, and
- * beta_i |y_i|^2 stays below B without one), so the difference loses at most
- * a few ulps of gamma B, far below the posterior's own terms, which are
- * checked (trk_i_pda_update_beta). pc_sum = B P_c (Joseph form with the
- * shared R; its upper triangle, which is all trk_i_pda_combine reads). */
+/* The moments of the shared group (beta_i, i < n_shared) over its whitened
+ * innovations y_i = L^-1 nu_i: B = sum beta_i, sy = sum beta_i y_i, and w
+ * (nz x nz) = sum beta_i (y_i - ybar)(y_i - ybar)' about ybar = sy / B, in a
+ * second pass (centred: a sum of positive semi-definite terms, accurate to
+ * rounding of its own size; the one-pass form sum beta_i y_i y_i' - sy sy'/B
+ * lost up to all of a float covariance's digits with clustered detections
+ * and H P H' >> R). Entries with beta = 0 are skipped (their y may be
+ * infinite). pc_sum = B P_c (Joseph form with the shared R; its upper
+ * triangle, which is all trk_i_pda_combine reads). */
 TRK_INLINE trk_real trk_i_pda_shared_sums(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
                                           trk_real *sy, trk_real *w, trk_real *pc_sum)
 {
     const int nx = pr->nx, nz = pr->nz;
-    trk_real bsum = 0, y[TRK_MAX_MEAS];
+    trk_real bsum = 0, y[TRK_MAX_MEAS], ybar[TRK_MAX_MEAS];
     for (int t = 0; t < nz; t++) sy[t] = 0;
     for (int t = 0; t < nz * nz; t++) w[t] = 0;
     for (size_t i = 0; i < s->n_shared; i++) {
         const trk_real b = s->w[i];
+        if (b == 0) continue;
         trk_i_pda_whiten(nz, pr->inn->s_chol_inv, s->z + i * (size_t)nz, pr->inn->z_pred, y);
         bsum += b;
-        for (int a = 0; a < nz; a++) {
-            const trk_real by = b * y[a];
-            sy[a] += by;
-            for (int t = a; t < nz; t++) w[a * nz + t] += by * y[t];
-        }
+        for (int a = 0; a < nz; a++) sy[a] += b * y[a];
     }
-    if (bsum > 0) {
-        trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS];
-        for (int a = 0; a < nz; a++)
-            for (int t = a; t < nz; t++) w[t * nz + a] = w[a * nz + t] -= sy[a] * sy[t] / bsum;
-        trk_i_gain(nx, nz, pr->pht, pr->inn->s_chol_inv, k);
-        trk_i_joseph_upper(nx, nz, pr->h, pr->sel, pr->r, k, pr->p, pr->pht, bsum, pc_sum);
-    } else {
+    if (!(bsum > 0)) {
         for (int a = 0; a < nx * nx; a++) pc_sum[a] = 0;
+        return bsum;
     }
+    for (int t = 0; t < nz; t++) ybar[t] = sy[t] / bsum;
+    for (size_t i = 0; i < s->n_shared; i++) {
+        const trk_real b = s->w[i];
+        if (b == 0) continue;
+        trk_i_pda_whiten(nz, pr->inn->s_chol_inv, s->z + i * (size_t)nz, pr->inn->z_pred, y);
+        for (int t = 0; t < nz; t++) y[t] -= ybar[t];
+        for (int a = 0; a < nz; a++)
+            for (int t = a; t < nz; t++) w[a * nz + t] += b * y[a] * y[t];
+    }
+    for (int a = 0; a < nz; a++)
+        for (int t = a + 1; t < nz; t++) w[t * nz + a] = w[a * nz + t];
+    trk_real k[TRK_MAX_STATE * TRK_MAX_MEAS];
+    trk_i_gain(nx, nz, pr->pht, pr->inn->s_chol_inv, k);
+    trk_i_joseph_upper(nx, nz, pr->h, pr->sel, pr->r, k, pr->p, pr->pht, bsum, pc_sum);
     return bsum;
 }
 
@@ -252,24 +258,29 @@ TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const str
     const trk_real *p = pr->p, *r = pr->r, *li = pr->inn->s_chol_inv;
     const trk_real m00 = li[0], m10 = li[2], m11 = li[3]; /* L^-1 */
     const trk_real zx = pr->inn->z_pred[0], zy = pr->inn->z_pred[1];
-    /* the whitened moments B, sy, and W = sum beta_i y_i y_i' - sy sy' / B
+    /* the whitened moments B, sy, and W about ybar in a second pass
      * (trk_i_pda_shared_sums) */
     trk_real bsum = 0, sy0 = 0, sy1 = 0, w00 = 0, w01 = 0, w11 = 0;
     for (size_t i = 0; i < s->n; i++) {
         const trk_real b = s->w[i];
         if (b == 0) continue; /* (outside the gate; its y may be infinite) */
         const trk_real n0 = s->z[2 * i] - zx, n1 = s->z[2 * i + 1] - zy;
-        const trk_real y0 = m00 * n0, y1 = m10 * n0 + m11 * n1, by0 = b * y0, by1 = b * y1;
         bsum += b;
-        sy0 += by0;
-        sy1 += by1;
+        sy0 += b * (m00 * n0);
+        sy1 += b * (m10 * n0 + m11 * n1);
+    }
+    const trk_real inv_b = bsum > 0 ? 1 / bsum : 0, yb0 = sy0 * inv_b, yb1 = sy1 * inv_b;
+    for (size_t i = 0; i < s->n; i++) {
+        const trk_real b = s->w[i];
+        if (b == 0) continue;
+        const trk_real n0 = s->z[2 * i] - zx, n1 = s->z[2 * i + 1] - zy;
+        const trk_real y0 = m00 * n0 - yb0, y1 = m10 * n0 + m11 * n1 - yb1, by0 = b * y0;
         w00 += by0 * y0;
         w01 += by0 * y1;
-        w11 += by1 * y1;
+        w11 += b * y1 * y1;
     }
     /* u = P H' L^-T, K = u L^-1, the moves dxbar = u sy and u ybar */
     trk_real u0[N], u1[N], k0[N], k1[N], dx[N], d[N];
-    const trk_real inv_b = bsum > 0 ? 1 / bsum : 0;
     for (int a = 0; a < N; a++) {
         const trk_real h0 = p[a * N + TRK_CV2_X], h1 = p[a * N + TRK_CV2_Y];
         u0[a] = h0 * m00;
@@ -278,11 +289,6 @@ TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const str
         k1[a] = u1[a] * m11;
         dx[a] = u0[a] * sy0 + u1[a] * sy1;
         d[a] = dx[a] * inv_b - dx[a]; /* u ybar - dxbar */
-    }
-    if (bsum > 0) {
-        w00 -= sy0 * sy0 * inv_b;
-        w01 -= sy0 * sy1 * inv_b;
-        w11 -= sy1 * sy1 * inv_b;
     }
     /* Joseph: A = P - K (P H')', E = A H' - K R (trk_i_joseph_upper) */
     trk_real e0[N], e1[N], ph0[N], ph1[N];

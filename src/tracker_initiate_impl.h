@@ -68,6 +68,12 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
     for (size_t j = 0; j < t->ws.n_valid; j++)
         if (!t->ws.used[j]) idx[n++] = (uint16_t)j;
     if (t->params.init.method == TRK_INIT_SINGLE_POINT) {
+        /* in scan order, as the detections came (the workspace holds the
+         * shared ones in x order): slots and ids do not depend on gating's
+         * index */
+        trk_real *src = t->ws.w; /* free after the updates and the merge */
+        for (size_t k = 0; k < n; k++) src[idx[k]] = (trk_real)t->ws.src[idx[k]];
+        sort_by_key(t, src, idx, n);
         for (size_t k = 0; k < n; k++) {
             trk_real r_j[NZ * NZ];
             detection_r(t, scan, idx[k], r_j);

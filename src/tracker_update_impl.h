@@ -357,7 +357,7 @@ static void clutter_look(const struct trk_tracker *t, const struct trk_innovatio
     for (size_t j = 0; j < t->ws.n_valid; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - inn->z_pred[ZX], t->ws.y[j] - inn->z_pred[ZY]};
         const trk_real d2 = trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
-        if (d2 < best) {
+        if (d2 < best || (d2 == best && t->ws.src[j] < t->ws.src[jb])) { /* ties: the first in scan order */
             best = d2;
             jb = j;
         }

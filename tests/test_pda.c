@@ -110,6 +110,55 @@ static void test_cv_fast_path(void **state)
     }
 }
 
+/* Found by review of issue 19's kernel: a huge finite detection outside
+ * the gate (weight 0, whitened innovation infinite) is accepted by the
+ * general path too, not turned into TRK_E_NAN; clustered detections with
+ * H P H' >> R keep the float covariance accurate (the centred spread); a
+ * subnormal pivot does not make an SPD matrix fail the check. */
+static void test_review_cases(void **state)
+{
+    (void)state;
+    struct trk_pda pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.9), TRK_REAL_C(1e-3), 1);
+    /* state [x, y, vx, vy]: H picks 0 and 1 (the general path) */
+    const trk_real h[8] = {1, 0, 0, 0, 0, 1, 0, 0};
+    const trk_real r_small[4] = {TRK_REAL_C(1e-4), 0, 0, TRK_REAL_C(1e-4)};
+    trk_real x[4] = {0, 0, 1, 1}, p[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const trk_real z[4] = {TRK_REAL_C(0.001), TRK_REAL_C(0.001), TRK_REAL_MAX / 2, 0};
+    trk_real beta[2];
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, h, r_small, x, p, 2, z, NULL, beta, NULL, NULL));
+    assert_true(beta[1] == 0);
+    /* clustered: eight detections at one point, R 1e-6, P ~ 1: the posterior
+     * position variance against the closed form of one detection's update
+     * repeated (all weights on one point: W = 0) */
+    const trk_real r6[4] = {TRK_REAL_C(1e-6), 0, 0, TRK_REAL_C(1e-6)};
+    trk_real xc[4], pc[16], zc[16], bc[8];
+    prior(xc, pc);
+    for (int i = 0; i < 8; i++) {
+        zc[2 * i] = xc[TRK_CV2_X] + TRK_REAL_C(0.25);
+        zc[2 * i + 1] = xc[TRK_CV2_Y] - TRK_REAL_C(0.5);
+    }
+    trk_real xk[4], pk[16];
+    prior(xk, pk);
+    struct trk_pda_report rep;
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, r6, xc, pc, 8, zc, NULL, bc, NULL, &rep));
+    /* the same through the Kalman update and the PDA mixture by hand:
+     * P = beta0 P- + (1 - beta0) P_c (+ beta0 (1 - beta0) dx dx') */
+    TRK_ASSERT_OK(trk_kalman_update(4, 2, trk_cv2_h, r6, zc, xk, pk));
+    trk_real xp[4], pp[16];
+    prior(xp, pp);
+    for (int i = 0; i < 16; i++) {
+        const int a = i / 4, b = i % 4;
+        const double dxa = (double)xk[a] - (double)xp[a], dxb = (double)xk[b] - (double)xp[b];
+        const double b0 = (double)rep.beta0;
+        const double want = b0 * (double)pp[i] + (1 - b0) * (double)pk[i] + b0 * (1 - b0) * dxa * dxb;
+        TRK_ASSERT_NEAR(pc[i], want, TRK_TOL(1e-9, 1e-4) * (1e-6 + fabs(want)), 0);
+    }
+    /* a subnormal pivot: diag(tiny, 1) is SPD */
+    const trk_real tiny = TRK_REAL_MIN / 4;
+    const trk_real a2[4] = {tiny, 0, 0, 1};
+    TRK_ASSERT_OK(trk_mat_check_spd(2, a2, 0));
+}
+
 static void test_limits(void **state)
 {
     (void)state;
@@ -277,6 +326,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_invariants),
         cmocka_unit_test(test_cv_fast_path),
+        cmocka_unit_test(test_review_cases),
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_amplitude_weights),
         cmocka_unit_test(test_nonparametric_and_include_all),

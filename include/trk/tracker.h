@@ -519,8 +519,12 @@ struct trk_tracker {
         uint8_t used[TRK_MAX_DETECTIONS];                      /* gated by some track */
         uint16_t cand[TRK_I_PAIRS];                            /* gated pairs: one track's set
                                                                   (per-track PDA), or every
-                                                                  track's (joint) */
-        trk_real w[TRK_I_PAIRS];                               /* their weights */
+                                                                  track's (joint); before and
+                                                                  after the updates the sorts'
+                                                                  index arrays */
+        trk_real w[TRK_I_PAIRS];                               /* their weights; after the
+                                                                  updates the sort keys of the
+                                                                  merge and the initiation */
 #if TRK_WITH_JOINT
         uint16_t joint_slot[TRK_MAX_TRACKS];                   /* joint: the slot of joint track k, */
         uint16_t pair_first[TRK_MAX_TRACKS + 1];               /* its pairs [pair_first[k],
@@ -559,7 +563,9 @@ struct trk_tracker {
                 trk_real p_miss[TRK_MAX_TRACKS];
             } joint;
 #endif
-            struct {                                           /* initiation's x-order sort */
+            struct {                                           /* the sorts' scratch (sort_by_key:
+                                                                  the scan's x order at load,
+                                                                  the merge's tracks, initiation) */
                 uint16_t tmp[TRK_MAX_DETECTIONS];
                 uint16_t count[TRK_MAX_DETECTIONS + 1];
             } sort;
