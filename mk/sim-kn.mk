@@ -2,7 +2,8 @@
 # 4), a step of `make test`: --kn-k full (K = 0..N-1) holds every rule of the
 # default trimmed range (K = N/16..N/3) with the same values (common random
 # numbers: a rule's first passage does not depend on the others), holds N
-# rules per window N, and both CSV files and the gnuplot script name the range.
+# rules per window N, and both CSV files and the gnuplot script name the range;
+# the plot marks the points with censored runs (lower bounds).
 .PHONY: sim-kn-range
 TEST_EXTRA += sim-kn-range
 TEST_EXTRA_DEPS_sim-kn-range := $(BUILD)/bin/trk-sim
@@ -17,7 +18,8 @@ sim-kn-range: $(TEST_EXTRA_DEPS_sim-kn-range)
 	[ $$st = 0 ] && [ "$$f" = 40 ] && [ "$$(comm -23 $$d/trimmed.rows $$d/full.rows | wc -l)" = 0 ] && \
 	  grep -q '^# K/N rules: K = N/16..N/3 (--kn-k trimmed)' $$d/trimmed.csv && \
 	  grep -q '^# K/N rules: K = 0..N-1 (--kn-k full)' $$d/full.csv && \
-	  grep -q "set title .*K/N: K = 0..N-1" $$d/full.gp && grep -q "title 'K/N (K = N/16..N/3)'" $$d/trimmed.gp || st=1; \
+	  grep -q "set title .*K/N: K = 0..N-1" $$d/full.gp && grep -q "title 'K/N (K = N/16..N/3)'" $$d/trimmed.gp && \
+	  grep -q "title 'censored runs: ADD/ARL a lower bound'" $$d/full.gp || st=1; \
 	rm -rf $$d; \
 	if [ $$st = 0 ]; then echo "sim-kn-range: --kn-k full: $$f K/N rules for N = 4, 8, 12, 16 (0..N-1), the $$t trimmed ones among them unchanged; the CSV and the plot name the range"; \
 	else echo "sim-kn-range: FAILED (rules $$t trimmed / $$f full, or a CSV/plot without the K range)"; exit 1; fi

@@ -427,8 +427,11 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
               "plot '%s.csv' using (strcol(1) eq 'kn' ? $5 : 1/0):7 with points pt 1 lc rgb '#bbbbbb' title 'K/N (%s)', \\\n"
               "     '%s_front.csv' using 3:4 with linespoints pt 7 lc rgb '#1f77b4' title 'K/N upper envelope', \\\n"
               "     '%s.csv' using (strcol(1) eq 'page' ? $5 : 1/0):7 with linespoints pt 5 lc rgb '#d62728' title 'Page', \\\n"
-              "     '%s.csv' using (strcol(1) eq 'shiryaev' ? $5 : 1/0):7 with linespoints pt 9 lc rgb '#2ca02c' title 'Shiryaev (beta0 %g, rho %g)'\n",
-              runs, kn_range, com.out, kn_range, com.out, com.out, com.out, c.beta0, c.rho);
+              "     '%s.csv' using (strcol(1) eq 'shiryaev' ? $5 : 1/0):7 with linespoints pt 9 lc rgb '#2ca02c' title 'Shiryaev (beta0 %g, rho %g)', \\\n"
+              /* a point with censored runs is a lower bound (counted at the cap) */
+              "     '%s.csv' using ($9 + $10 > 0 ? $5 : 1/0):7 with points pt 8 ps 2.2 lc rgb 'black' "
+              "title 'censored runs: ADD/ARL a lower bound'\n",
+              runs, kn_range, com.out, kn_range, com.out, com.out, com.out, c.beta0, c.rho, com.out);
     free(res);
     return 0;
 }
