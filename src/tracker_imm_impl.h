@@ -57,7 +57,7 @@ static struct trk_i_pda_pred imm_model_pred(struct trk_tracker *t, const struct 
     const struct trk_i_pda_pred pp = {NX,
                                       NZ,
                                       trk_cv2_h,
-                                      cv2_sel,
+                                      trk_i_cv2_sel(),
                                       t->r[scan->sensor_id],
                                       t->ws.imm.s.x[m],
                                       t->ws.imm.s.p[m],
@@ -91,7 +91,7 @@ static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr,
         if (!(t->ws.imm.c[m] > 0)) continue; /* unreachable this scan: weight 0, never used */
         st = trk_i_pda_check(NX, s->x[m], s->p[m]);
         if (st == TRK_OK)
-            st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], s->x[m], s->p[m],
+            st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id], s->x[m], s->p[m],
                                       t->ws.imm.pht[m], &t->ws.imm.inn[m]);
     }
     if (st != TRK_OK) return st;

@@ -14,9 +14,6 @@
 
 #include "tracker_impl.h"
 
-/* The CV model's H picks x and y. */
-static const int cv2_sel[NZ] = {X, Y};
-
 /* One track's prediction for this scan, and the same as the PDA takes it
  * (pp points into this struct: it is filled in place and never copied). */
 struct pred {
@@ -145,10 +142,10 @@ static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan
 {
     const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
     if (st != TRK_OK) return st;
-    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id],
+    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id],
                                       pr->x, pr->p, pr->pht, &pr->inn};
     pr->pp = pp;
-    return trk_i_innovation_sel(NX, NZ, trk_cv2_h, cv2_sel, t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
+    return trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
                                 &pr->inn);
 }
 
