@@ -178,12 +178,68 @@ static void test_mc_stats(void **state)
     TRK_ASSERT_NEAR(hi - m, 1.959963984540054 * sqrt(5.0 / 3 / 4), 1e-9, 0);
 }
 
+/* Quantiles (type 7), histogram bins and mode, the ratio estimator's
+ * interval: the statistics of brekke-errpdf and brekke-trackloss's kept-track
+ * RMSE distribution. */
+static void test_mc_hist_quantile(void **state)
+{
+    (void)state;
+    double x[5] = {4, 1, 3, 2, 5};
+    mc_sort(x, 5);
+    for (int i = 0; i < 5; i++) TRK_ASSERT_NEAR(x[i], i + 1, 0, 0);
+    TRK_ASSERT_NEAR(mc_quantile_sorted(x, 5, 0), 1, 0, 0);
+    TRK_ASSERT_NEAR(mc_quantile_sorted(x, 5, 1), 5, 0, 0);
+    TRK_ASSERT_NEAR(mc_quantile_sorted(x, 5, 0.5), 3, 0, 0);
+    TRK_ASSERT_NEAR(mc_quantile_sorted(x, 5, 0.1), 1.4, 1e-15, 0); /* R: quantile(1:5, 0.1) */
+    TRK_ASSERT_NEAR(mc_quantile_sorted(x, 5, 0.95), 4.8, 1e-15, 0);
+    TRK_ASSERT_NEAR(mc_quantile_sorted(x, 1, 0.3), 1, 0, 0);
+    assert_true(isnan(mc_quantile_sorted(x, 0, 0.5)));
+    assert_true(isnan(mc_quantile_sorted(x, 5, 1.5)));
+    /* bins of width 0.1 over [0, 1): edges as computed (k w), overflow, refusals */
+    assert_int_equal(mc_hist_bin(0, 0, 0.1, 10), 0);
+    assert_int_equal(mc_hist_bin(0.25, 0, 0.1, 10), 2);
+    assert_int_equal(mc_hist_bin(0.3, 0, 0.1, 10), 2); /* 3 * 0.1 = 0.30000000000000004 > 0.3 */
+    assert_int_equal(mc_hist_bin(0.999, 0, 0.1, 10), 9);
+    assert_int_equal(mc_hist_bin(1.0, 0, 0.1, 10), 10);
+    assert_int_equal(mc_hist_bin(7.5, 0, 0.1, 10), 10);
+    assert_int_equal(mc_hist_bin(-0.01, 0, 0.1, 10), -1);
+    assert_int_equal(mc_hist_bin(NAN, 0, 0.1, 10), -1);
+    for (int k = 0; k < 100000; k++) {
+        const double v = k * 1e-5, w = 0.0137;
+        const long b = mc_hist_bin(v, 0, w, 100);
+        assert_true(b >= 0 && b <= 100);
+        if (b < 100) assert_true((double)b * w <= v && v < (double)(b + 1) * w);
+        else assert_true(v >= 100 * w);
+    }
+    const double c[5] = {0, 3, 5, 5, 1}, z[3] = {0, 0, 0};
+    assert_int_equal(mc_hist_mode(c, 5), 2);
+    assert_int_equal(mc_hist_mode(z, 3), -1);
+    /* the ratio estimator: equal denominators give the mean of the ratios */
+    const double num[4] = {2, 4, 6, 8}, den[4] = {2, 2, 2, 2}, q[4] = {1, 2, 3, 4};
+    double r, lo, hi, m, mlo, mhi;
+    mc_ratio_ci(num, den, 4, 0.95, &r, &lo, &hi);
+    mc_mean_ci(q, 4, 0.95, &m, &mlo, &mhi);
+    TRK_ASSERT_NEAR(r, m, 1e-15, 0);
+    TRK_ASSERT_NEAR(lo, mlo, 1e-12, 0);
+    TRK_ASSERT_NEAR(hi, mhi, 1e-12, 0);
+    /* unequal: 9 / 4, se = sqrt(sum (num - r den)^2 / (n (n - 1))) / mean den */
+    const double n2[3] = {1, 2, 6}, d2[3] = {1, 1, 2};
+    mc_ratio_ci(n2, d2, 3, 0.95, &r, &lo, &hi);
+    TRK_ASSERT_NEAR(r, 2.25, 1e-15, 0);
+    TRK_ASSERT_NEAR(hi - r, 1.959963984540054 * sqrt(3.875 / 6) / (4.0 / 3), 1e-9, 0);
+    TRK_ASSERT_NEAR(r - lo, hi - r, 1e-12, 0);
+    mc_ratio_ci(n2, d2, 1, 0.95, &r, &lo, &hi);
+    assert_true(r == 1 && lo == 1 && hi == 1);
+    mc_ratio_ci(n2, d2, 0, 0.95, &r, &lo, &hi);
+    assert_true(isnan(r) && isnan(lo) && isnan(hi));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_field_counts),   cmocka_unit_test(test_field_consistency),
         cmocka_unit_test(test_clutter_around), cmocka_unit_test(test_end_and_fluct),
-        cmocka_unit_test(test_mc_stats),
+        cmocka_unit_test(test_mc_stats),       cmocka_unit_test(test_mc_hist_quantile),
     };
     return trk_run_tests("sim_scenario", tests, NULL, NULL);
 }

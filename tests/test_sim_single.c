@@ -141,6 +141,53 @@ static void test_brekke_toc_low_clutter(void **state)
     st_amp_free(&amp);
 }
 
+/* The per-scan errors (err_by_scan, brekke-errpdf's histograms) are the
+ * errors behind sse: their squares over scans >= from sum to sse, one per
+ * scan in n_sse, and NaN after a run stopped (a loss by c2). Heavy clutter
+ * (K nu 1, SNR 10 dB, P_FA 0.1, 0.25 m^2) so that some runs stop early. */
+static void test_brekke_err_by_scan(void **state)
+{
+    (void)state;
+    struct st_amp amp;
+    char err[256];
+    if (st_amp_init(&amp, TRK_AMP_K, 1, 10, 0.1, 0, 64, err, sizeof err)) fail_msg("%s", err);
+    struct st_params p;
+    st_params_brekke(&p);
+    p.amp = &amp.m;
+    p.lambda_per_m2 = 0.1 / 0.25;
+    p.n_scans = 60;
+    p.seed = 5;
+    struct st_model m;
+    if (st_model_init(&m, &p, err, sizeof err)) fail_msg("%s", err);
+    struct st_ws ws = {NULL, 0, NULL, 0};
+    double e[60];
+    int stopped = 0;
+    for (uint32_t run = 0; run < 30; run++)
+        for (int ai = 0; ai < 2; ai++) {
+            struct st_result r;
+            assert_int_equal(st_run(&m, &ws, run, ai, 11, e, &r), 0);
+            double s2 = 0;
+            long n = 0;
+            for (long k = 1; k <= 60; k++) {
+                if (k > r.scans) {
+                    assert_true(isnan(e[k - 1]));
+                    continue;
+                }
+                assert_true(isfinite(e[k - 1]) && e[k - 1] >= 0);
+                if (k >= 11) s2 += e[k - 1] * e[k - 1], n++;
+            }
+            assert_int_equal(n, r.n_sse);
+            TRK_ASSERT_NEAR(s2, r.sse, 1e-12, 1e-12);
+            if (r.scans < 60) {
+                stopped++;
+                assert_true(r.lost && r.lost_hard && r.lost_scan == r.scans && e[r.scans - 1] > 15);
+            }
+        }
+    assert_true(stopped > 0);
+    st_ws_free(&ws);
+    st_amp_free(&amp);
+}
+
 /* Willett's model (T 1, q 1, R = I), P_D 0.9, lambda 1e-4: the PDAF's RMSE
  * over the runs not lost is not below the CRLB with q2 <= P_D (a bound on
  * any estimator; q2 = P_D is the bound without clutter, above it). */
@@ -238,6 +285,7 @@ int main(void)
         cmocka_unit_test(test_brekke_pdafai_loses_fewer),
         cmocka_unit_test(test_brekke_no_clutter_same_track),
         cmocka_unit_test(test_brekke_toc_low_clutter),
+        cmocka_unit_test(test_brekke_err_by_scan),
         cmocka_unit_test(test_willett_rmse_above_crlb),
         cmocka_unit_test(test_kennedy_null_size),
     };

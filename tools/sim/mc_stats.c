@@ -2,6 +2,7 @@
 #include "mc_stats.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 /* Continued fraction of I_x(a, b) (modified Lentz). */
 static double betacf(double a, double b, double x)
@@ -148,4 +149,65 @@ void mc_mean_ci_t(const double *x, size_t n, double level, double *mean, double 
     *mean = m;
     *lo = m - h;
     *hi = m + h;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+void mc_sort(double *x, size_t n)
+{
+    if (n > 1) qsort(x, n, sizeof *x, cmp_double);
+}
+
+double mc_quantile_sorted(const double *x, size_t n, double p)
+{
+    if (n == 0 || !(p >= 0 && p <= 1)) return NAN;
+    const double h = (double)(n - 1) * p;
+    size_t i = (size_t)h;
+    if (i >= n - 1) return x[n - 1];
+    return x[i] + (h - (double)i) * (x[i + 1] - x[i]);
+}
+
+long mc_hist_bin(double x, double lo, double w, long n_bins)
+{
+    if (!(x >= lo)) return -1;
+    const double u = (x - lo) / w;
+    if (!(u < (double)n_bins)) return n_bins;
+    long i = (long)u;
+    /* rounding at a bin edge: keep lo + i w <= x < lo + (i + 1) w */
+    if (i > 0 && x < lo + (double)i * w) i--;
+    else if (i + 1 < n_bins && x >= lo + (double)(i + 1) * w) i++;
+    return i;
+}
+
+long mc_hist_mode(const double *counts, long n_bins)
+{
+    long best = -1;
+    for (long i = 0; i < n_bins; i++)
+        if (counts[i] > 0 && (best < 0 || counts[i] > counts[best])) best = i;
+    return best;
+}
+
+void mc_ratio_ci(const double *num, const double *den, size_t n, double level, double *r, double *lo, double *hi)
+{
+    double sn = 0, sd = 0;
+    for (size_t i = 0; i < n; i++) sn += num[i], sd += den[i];
+    if (n == 0 || !(sd != 0)) {
+        *r = *lo = *hi = NAN;
+        return;
+    }
+    const double q = sn / sd;
+    double v = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double d = num[i] - q * den[i];
+        v += d * d;
+    }
+    const double dbar = sd / (double)n;
+    const double h = n > 1 ? mc_z(level) * sqrt(v / ((double)n * (double)(n - 1))) / fabs(dbar) : 0;
+    *r = q;
+    *lo = q - h;
+    *hi = q + h;
 }

@@ -45,8 +45,6 @@ static void keep(void *slot, int f, const struct st_result *res)
     o->scans[f] = (int32_t)res->scans;
 }
 
-static const int texture_values[] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
-
 SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMSE vs MRE, PDAF and PDAFAI")
 {
     long runs, scans, from, q2_samples = 0;
@@ -64,18 +62,13 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
         SIM_OPT_DOUBLE("--cell-m2", &cell, "A", "1", SIM_GT, 0, 0, "resolution cell, lambda = P_FA / A"),
         SIM_OPT_LIST("--pfa", pfas, &npfa, MAXL, "1e-6,1e-5,1e-4,1e-3,1e-2,3e-2,0.1,0.2,0.3,0.5", SIM_OPEN, 0, 1,
                      "simulated P_FA"),
-        SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
-                       "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
-                       "per scan (bursty clutter, see tools/sim/single_target.h)"),
+        SIM_OPT_TEXTURE(&texture),
         SIM_OPT_START(&init),
         SIM_OPT_ALIAS("--init", "--start"),
         SIM_OPT_GATE_CAP(&gate_cap),
         SIM_OPT_MRE_START(&mre_start),
-        SIM_OPT_LONG("--q2-samples", &q2_samples, "N", NULL, SIM_GE, 1000, 0,
-                     "importance samples per stratum of the MRE's q2 grids (default toc.h's)"),
-        SIM_OPT_STRING("--tables", &tables, "DIR", NULL,
-                       "the MRE's q2 from the tables of `make tables` (q2_pdaf_g6.tbl,\n"
-                       "q2_pdafai_k<nu>_g6.tbl) instead of sampling them here"),
+        SIM_OPT_Q2_SAMPLES(&q2_samples),
+        SIM_OPT_TABLES(&tables),
         SIM_OPT_END};
     const struct sim_cli cli = {
         "brekke-toc", NULL,
@@ -108,37 +101,15 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     if (!toc || !curve || !at) return 1;
     const double t_mre = progress_now_s();
     for (int a = 0; a < nnu; a++) {
-        struct toc_scenario ts;
-        toc_scenario_brekke(&ts, TRK_AMP_K, nus[a], snr, cell);
-        ts.mre_start = mre_start;
-        ts.pfa_min = fmin(ts.pfa_min, pmin);
-        ts.pfa_max = fmax(ts.pfa_max, pmax);
-        struct toc_q2_source src;
-        memset(&src, 0, sizeof src);
-        struct trk_table tb[2];
-        void *tbuf[2] = {NULL, NULL};
-        if (tables) {
-            char name[64];
-            snprintf(name, sizeof name, "q2_pdafai_k%g_g6.tbl", nus[a]);
-            if (sim_load_table(cli.name, tables, "q2_pdaf_g6.tbl", &tb[0], &tbuf[0]) ||
-                sim_load_table(cli.name, tables, name, &tb[1], &tbuf[1]))
-                return 1;
-            src.pdaf = &tb[0];
-            src.pdafai = &tb[1];
-        }
-        src.samples = (uint64_t)q2_samples;
-        src.seed = com.seed;
-        src.threads = com.threads;
-        src.quiet = com.quiet;
-        src.par = com.par;
-        if (!(toc[a] = toc_new(&ts, &src, err, sizeof err)) || toc_curve(toc[a], NCURVE, curve + a * NCURVE, err, sizeof err) ||
+        if (!(toc[a] = sim_brekke_toc(cli.name, &com, nus[a], snr, cell, pmin, pmax, mre_start, tables, q2_samples,
+                                      &tbl_bufs[2 * a])))
+            return 1;
+        if (toc_curve(toc[a], NCURVE, curve + a * NCURVE, err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAF, &opt[a][0], err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAFAI, &opt[a][1], err, sizeof err)) {
             fprintf(stderr, "brekke-toc: MRE (nu %g): %s\n", nus[a], err);
             return 1;
         }
-        tbl_bufs[2 * a] = tbuf[0];
-        tbl_bufs[2 * a + 1] = tbuf[1];
         for (int j = 0; j < npfa; j++)
             if (toc_point_at(toc[a], pfas[j], &at[a * npfa + j], err, sizeof err)) {
                 fprintf(stderr, "brekke-toc: MRE (nu %g, P_FA %g): %s\n", nus[a], pfas[j], err);

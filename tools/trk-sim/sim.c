@@ -217,6 +217,7 @@ int sim_amp_k_grid(const char *exp, struct st_amp *amp, const double *nu, int n_
 #define SIM_STR(x) SIM_STR_(x)
 const char sim_gate_cap_default[] = "truncate:" SIM_STR(TRK_MAX_DETECTIONS);
 const int sim_mre_start_values[3] = {TOC_START_TWOPOINT, TOC_START_ZERO, TOC_START_STEADY};
+const int sim_texture_values[2] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
 
 int sim_parse_start(const char *v, void *dst)
 {
@@ -296,29 +297,82 @@ int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *a
     return 0;
 }
 
+struct toc *sim_brekke_toc(const char *exp, const struct sim_common *c, double nu, double snr_db, double cell_m2,
+                           double pfa_min, double pfa_max, int mre_start, const char *tables, long q2_samples,
+                           void *bufs[2])
+{
+    struct toc_scenario ts;
+    toc_scenario_brekke(&ts, TRK_AMP_K, nu, snr_db, cell_m2);
+    ts.mre_start = mre_start;
+    ts.pfa_min = fmin(ts.pfa_min, pfa_min);
+    ts.pfa_max = fmax(ts.pfa_max, pfa_max);
+    struct toc_q2_source src;
+    memset(&src, 0, sizeof src);
+    struct trk_table tb[2];
+    bufs[0] = bufs[1] = NULL;
+    if (tables) {
+        char name[64];
+        snprintf(name, sizeof name, "q2_pdafai_k%g_g6.tbl", nu);
+        if (sim_load_table(exp, tables, "q2_pdaf_g6.tbl", &tb[0], &bufs[0]) ||
+            sim_load_table(exp, tables, name, &tb[1], &bufs[1]))
+            return NULL;
+        src.pdaf = &tb[0];
+        src.pdafai = &tb[1];
+    }
+    src.samples = (uint64_t)q2_samples;
+    src.seed = c->seed;
+    src.threads = c->threads;
+    src.quiet = c->quiet;
+    src.par = c->par;
+    char err[512];
+    struct toc *t = toc_new(&ts, &src, err, sizeof err);
+    if (!t) fprintf(stderr, "%s: MRE (nu %g): %s\n", exp, nu, err);
+    return t;
+}
+
 struct st_units {
     const struct st_model *mod;
     long runs, from;
     int n_filters;
     void (*keep)(void *slot, int ai, const struct st_result *res);
+    /* or, with the errors of every scan (sim_st_runs_err) */
+    void (*keep_err)(void *ctx, void *slot, long model, int ai, const struct st_result *res,
+                     const double *err_by_scan);
+    void *ctx;
+};
+
+/* a thread's workspace: st_run's, and the per-scan errors for keep_err */
+struct st_unit_ws {
+    struct st_ws w;
+    double *err;
+    size_t err_cap;
 };
 
 /* unit it: model it / runs, run it % runs, every filter */
 static int st_unit(void *ctx, size_t it, void *slot, void **ws)
 {
     const struct st_units *u = ctx;
-    struct st_ws *w = *ws;
+    struct st_unit_ws *w = *ws;
     if (!w) {
         if (!(w = malloc(sizeof *w))) return 1;
-        *w = (struct st_ws){NULL, 0, NULL, 0};
+        *w = (struct st_unit_ws){{NULL, 0, NULL, 0}, NULL, 0};
         *ws = w;
     }
     const long k = (long)it / u->runs, run = (long)it % u->runs;
+    const size_t n_scans = (size_t)u->mod[k].p.n_scans;
+    if (u->keep_err && w->err_cap < n_scans) {
+        double *e = realloc(w->err, n_scans * sizeof *e);
+        if (!e) return 1;
+        w->err = e;
+        w->err_cap = n_scans;
+    }
     int bad = 0;
     for (int ai = 0; ai < u->n_filters; ai++) {
         struct st_result res;
-        if (st_run(&u->mod[k], w, (uint32_t)run, ai, u->from, NULL, &res) != 0)
+        if (st_run(&u->mod[k], &w->w, (uint32_t)run, ai, u->from, u->keep_err ? w->err : NULL, &res) != 0)
             bad = 1;
+        else if (u->keep_err)
+            u->keep_err(u->ctx, slot, k, ai, &res, w->err);
         else
             u->keep(slot, ai, &res);
     }
@@ -328,8 +382,20 @@ static int st_unit(void *ctx, size_t it, void *slot, void **ws)
 static void st_ws_release(void *ctx, void *ws)
 {
     (void)ctx;
-    st_ws_free(ws);
-    free(ws);
+    struct st_unit_ws *w = ws;
+    if (!w) return;
+    st_ws_free(&w->w);
+    free(w->err);
+    free(w);
+}
+
+static double st_runs(const struct sim_common *c, const char *label, const struct st_units *u, long n_models,
+                      void *out, size_t slot_size, int *failed)
+{
+    double wall = 0;
+    *failed = sim_run_units(c, label, (size_t)(n_models * u->runs), slot_size, 8, st_unit, st_ws_release,
+                            (void *)u, out, &wall, NULL) != 0;
+    return wall;
 }
 
 double sim_st_runs(const struct sim_common *c, const char *label, const struct st_model *mod, long n_models,
@@ -337,11 +403,18 @@ double sim_st_runs(const struct sim_common *c, const char *label, const struct s
                    void (*keep)(void *slot, int ai, const struct st_result *res), void *out, size_t slot_size,
                    int *failed)
 {
-    struct st_units u = {mod, runs, from, n_filters, keep};
-    double wall = 0;
-    *failed = sim_run_units(c, label, (size_t)(n_models * runs), slot_size, 8, st_unit, st_ws_release, &u, out,
-                            &wall, NULL) != 0;
-    return wall;
+    const struct st_units u = {mod, runs, from, n_filters, keep, NULL, NULL};
+    return st_runs(c, label, &u, n_models, out, slot_size, failed);
+}
+
+double sim_st_runs_err(const struct sim_common *c, const char *label, const struct st_model *mod, long n_models,
+                       long runs, int n_filters, long from,
+                       void (*keep)(void *ctx, void *slot, long model, int ai, const struct st_result *res,
+                                    const double *err_by_scan),
+                       void *ctx, void *out, size_t slot_size, int *failed)
+{
+    const struct st_units u = {mod, runs, from, n_filters, NULL, keep, ctx};
+    return st_runs(c, label, &u, n_models, out, slot_size, failed);
 }
 
 int sim_load_table(const char *exp, const char *dir, const char *file, struct trk_table *t, void **buf)

@@ -230,6 +230,46 @@ double sim_st_runs(const struct sim_common *c, const char *label, const struct s
                    void (*keep)(void *slot, int ai, const struct st_result *res), void *out, size_t slot_size,
                    int *failed);
 
+/* The same with the position error of every scan: keep(ctx, slot, model,
+ * ai, result, err_by_scan), model the run's model index, err_by_scan[k - 1]
+ * the error at scan k = 1 .. n_scans of the model (NAN after the run
+ * stopped; st_run). */
+double sim_st_runs_err(const struct sim_common *c, const char *label, const struct st_model *mod, long n_models,
+                       long runs, int n_filters, long from,
+                       void (*keep)(void *ctx, void *slot, long model, int ai, const struct st_result *res,
+                                    const double *err_by_scan),
+                       void *ctx, void *out, size_t slot_size, int *failed);
+
+/* The MRE's TOC (tools/sim/toc.h) of Brekke's Table I model in K clutter of
+ * shape nu at snr_db and cell_m2 (toc_scenario_brekke), its P_FA range
+ * widened to [pfa_min, pfa_max], the MRE start mre_start (enum toc_start);
+ * q2 from the tables DIR/q2_pdaf_g6.tbl and DIR/q2_pdafai_k<nu>_g6.tbl of
+ * `make tables` (tables not NULL; their bytes in bufs[0], bufs[1]: free
+ * them after toc_free) or sampled here (q2_samples per stratum, 0: toc.h's
+ * default; c's seed, threads and work distribution). brekke-toc's and
+ * brekke-errpdf's one MRE set-up. NULL after a message "EXP: ..." on
+ * failure. */
+struct toc;
+struct toc *sim_brekke_toc(const char *exp, const struct sim_common *c, double nu, double snr_db, double cell_m2,
+                           double pfa_min, double pfa_max, int mre_start, const char *tables, long q2_samples,
+                           void *bufs[2]);
+
+/* The K texture option of the Brekke experiments (enum st_texture). */
+extern const int sim_texture_values[2];
+#define SIM_TEXTURE_HELP                                                                    \
+    "K texture drawn per detection (i.i.d. K amplitudes) or once\n"                         \
+    "per scan (bursty clutter, see tools/sim/single_target.h)"
+#define SIM_OPT_TEXTURE(dst_) \
+    SIM_OPT_CHOICE("--texture", dst_, "cell|scan", sim_texture_values, "cell", SIM_TEXTURE_HELP)
+/* The MRE's q2 source options of brekke-toc and brekke-errpdf (sim_brekke_toc). */
+#define SIM_OPT_Q2_SAMPLES(dst_)                                                            \
+    SIM_OPT_LONG("--q2-samples", dst_, "N", NULL, SIM_GE, 1000, 0,                          \
+                 "importance samples per stratum of the MRE's q2 grids (default toc.h's)")
+#define SIM_OPT_TABLES(dst_)                                                                \
+    SIM_OPT_STRING("--tables", dst_, "DIR", NULL,                                           \
+                   "the MRE's q2 from the tables of `make tables` (q2_pdaf_g6.tbl,\n"       \
+                   "q2_pdafai_k<nu>_g6.tbl) instead of sampling them here")
+
 /* A table file dir/file (`make tables`) loaded through the library into *t,
  * which views *buf (malloc'd: free it after the last use of *t). 0, or -1
  * with a message "EXP: path: status" on stderr. */
