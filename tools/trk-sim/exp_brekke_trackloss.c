@@ -75,8 +75,105 @@ static void keep(void *slot, int f, const struct st_result *res)
     o->gated_clutter[f] = (int32_t)res->gated_clutter;
 }
 
-static const int texture_values[] = {ST_TEXTURE_CELL, ST_TEXTURE_SCAN};
 static const int grid_values[] = {TRK_AMP_GRID_UNIFORM, TRK_AMP_GRID_GEOMETRIC};
+
+/* The distributions of PREFIX_loss.csv (lpath) as plots: PREFIX_loss.png,
+ * when the tracks are lost (lost per 10000 runs in each tenth of the run,
+ * per scenario; rows: cells, columns: filters; data PREFIX_loss_plot.csv),
+ * and PREFIX_kept.png, the per-run position RMSE of the tracks kept (box
+ * 25-75 %, whiskers 5-95 %, median; the RMSE over the kept runs with its
+ * 95 % interval), one panel per cell. as: the assumptions for the titles.
+ * 0, or -1 after a message (a data file not written). */
+static int plot_loss(const struct sim_common *com, const char *lpath, const long *lbins, const double *cells,
+                     int ncell, const double *nus, int nnu, const double *snrs, int nsnr, const double *pfas, int npfa,
+                     long runs, long scans, const char *as)
+{
+    const int nscen = nnu * nsnr * npfa;
+    char dat[1024];
+    struct fileio_out d_out;
+    FILE *d = sim_csv_open(com, &d_out, "_loss_plot.csv", dat, sizeof dat,
+                           "# blocks: cell, filter, scenario (gnuplot index (c * 2 + filter) * scenarios + s)\n"
+                           "scan_mid,lost_per_10000");
+    if (!d) return -1;
+    for (int c = 0; c < ncell; c++)
+        for (int fl = 0; fl < 2; fl++)
+            for (int s = 0; s < nscen; s++) {
+                const long *b = &lbins[(((long)c * nscen + s) * 2 + fl) * 10];
+                for (int k = 0; k < 10; k++)
+                    fprintf(d, "%.6g,%.6g\n", 0.5 * (double)(scans * k / 10 + 1 + scans * (k + 1) / 10),
+                            (double)b[k] * 10000.0 / (double)runs);
+                fprintf(d, "\n\n");
+            }
+    if (sim_csv_close(&d_out) != 0) return -1;
+    struct sim_text t = {NULL, 0, 0, 0};
+    sim_text_add(&t,
+                 "set datafile separator ','\nset grid\nset logscale y\nset key outside right font ',7'\n"
+                 "set xlabel 'scan of the loss (tenths of the run)'\nset ylabel 'lost per 10000 in the tenth'\n"
+                 "set xrange [0:%ld]\nset yrange [*:*]\n"
+                 "set multiplot layout %d,2 title \"Brekke 2011 track losses: when the tracks are lost (%ld runs x %ld "
+                 "scans; scenarios without a loss not drawn)\\n%s\" font ',10'\n",
+                 scans, ncell, runs, scans, as);
+    for (int c = 0; c < ncell; c++)
+        for (int fl = 0; fl < 2; fl++) {
+            sim_text_add(&t, "set title '%s, cell %g m^2' font ',9'\nplot ", fl ? "PDAFAI" : "PDAF", cells[c]);
+            int drawn = 0;
+            for (int s = 0; s < nscen; s++) {
+                const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, cc = s % npfa;
+                const long *lb = &lbins[(((long)c * nscen + s) * 2 + fl) * 10];
+                long tot = 0;
+                for (int k = 0; k < 10; k++) tot += lb[k];
+                if (tot == 0) continue;
+                sim_text_add(&t, "%s'%s' index %d using 1:($2 > 0 ? $2 : NaN) with linespoints pt %d lc %d "
+                                 "title 'nu %g %g dB P_{FA} %.0e'",
+                             drawn ? ", \\\n     " : "", dat, (c * 2 + fl) * nscen + s, 1 + s % 13, 1 + s,
+                             nus[a], snrs[b], pfas[cc]);
+                drawn++;
+            }
+            if (!drawn) sim_text_add(&t, "NaN title 'no track lost'");
+            sim_text_add(&t, "\n");
+        }
+    sim_text_add(&t, "unset multiplot\n");
+    if (!t.failed) sim_plot(com, "_loss", t.s);
+    sim_text_free(&t);
+    /* kept-track RMSE: PREFIX_loss.csv's rows, in the order cell, scenario, filter ($0 - 1 = data row) */
+    struct sim_text k = {NULL, 0, 0, 0};
+    sim_text_add(&k,
+                 "set datafile separator ','\nset datafile missing 'nan'\nset grid\nset logscale y\n"
+                 "set key top left font ',8'\nset ylabel 'position RMSE of a kept run (m)'\n"
+                 "set xrange [-0.6:%d.6]\nset boxwidth 0.25\nset xtics rotate by 60 right font ',7' (",
+                 nscen - 1);
+    for (int s = 0; s < nscen; s++) {
+        const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, cc = s % npfa;
+        sim_text_add(&k, "%s\"nu%g %gdB %.0e\" %d", s ? ", " : "", nus[a], snrs[b], pfas[cc], s);
+    }
+    sim_text_add(&k,
+                 ")\nsc(r) = int(r / 2) %% %d\n"
+                 "set multiplot layout 1,%d title \"Brekke 2011: position RMSE of the tracks kept (%ld runs x %ld "
+                 "scans, all scans of a run)\\nbox 25-75%%, whiskers 5-95%%, bar median; point: the RMSE over the kept "
+                 "runs with 95%% CI\\n%s\" font ',9'\n",
+                 nscen, ncell, runs, scans, as);
+    for (int c = 0; c < ncell; c++) {
+        sim_text_add(&k, "set title 'cell %g m^2' font ',9'\nplot ", cells[c]);
+        for (int fl = 0; fl < 2; fl++) {
+            const char *nm = fl ? "PDAFAI" : "PDAF";
+            const double off = fl ? 0.17 : -0.17;
+            sim_text_add(&k,
+                         "%s'%s' every ::1 using ($1 == %g && strcol(5) eq '%s' ? sc($0 - 1) %+.2f : NaN):21:20:24:23 "
+                         "with candlesticks whiskerbars lc %d title '%s', \\\n"
+                         "     '%s' every ::1 using ($1 == %g && strcol(5) eq '%s' ? sc($0 - 1) %+.2f : NaN):22:22:22:22 "
+                         "with candlesticks lw 2 lc %d notitle, \\\n"
+                         "     '%s' every ::1 using ($1 == %g && strcol(5) eq '%s' ? sc($0 - 1) %+.2f : NaN):7:8:9 "
+                         "with yerrorbars pt 7 ps 0.6 lc rgb 'black' %s",
+                         fl ? ", \\\n     " : "", lpath, cells[c], nm, off, fl + 1, nm, lpath, cells[c], nm, off,
+                         fl + 1, lpath, cells[c], nm, off, fl ? "notitle" : "title 'RMSE over kept runs'");
+        }
+        sim_text_add(&k, "\n");
+    }
+    sim_text_add(&k, "unset multiplot\n");
+    if (!k.failed) sim_plot(com, "_kept", k.s);
+    sim_text_free(&k);
+    return 0;
+}
 
 SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III: lost tracks, PDAF vs PDAFAI in K clutter")
 {
@@ -94,9 +191,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         SIM_OPT_ALIAS("--nu", "--k-shape"),
         SIM_OPT_LIST("--snr-db", snrs, &nsnr, MAXL, "10,15", 0, 0, 0, "target SNRs"),
         SIM_OPT_LIST("--pfa", pfas, &npfa, MAXL, "1e-4,1e-2,1e-1", 0, 0, 0, "false-alarm probabilities"),
-        SIM_OPT_CHOICE("--texture", &texture, "cell|scan", texture_values, "cell",
-                       "K texture drawn per detection (i.i.d. K amplitudes) or once\n"
-                       "per scan (bursty clutter, see tools/sim/single_target.h)"),
+        SIM_OPT_TEXTURE(&texture),
         SIM_OPT_START(&init),
         SIM_OPT_ALIAS("--init", "--start"),
         SIM_OPT_GATE_CAP(&gate_cap),
@@ -249,9 +344,10 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     struct fileio_out l_out;
     FILE *fl_ = sim_csv_open(&com, &l_out, "_loss.csv", lpath, sizeof lpath,
                              "# brekke-trackloss: loss times (scan of the loss, 10 bins of the run) and the position RMSE "
-                             "of the tracks kept (over all their scans, 95% interval)");
+                             "of the tracks kept (over all their scans, 95% interval; the quantiles of the per-run RMSE)");
     double *kv = malloc((size_t)runs * sizeof *kv);
-    if (!fl_ || !kv) {
+    long *lbins = calloc((size_t)nmod * 20, sizeof *lbins); /* [model][filter][bin], for the plot */
+    if (!fl_ || !kv || !lbins) {
         if (fl_) sim_csv_discard(&l_out);
         free(kv);
         return 1;
@@ -260,7 +356,8 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     fprintf(fl_, "cell_m2,nu,snr_db,pfa,filter,kept,kept_rmse_m,kept_rmse_lo95,kept_rmse_hi95");
     for (int b = 0; b < 10; b++)
         fprintf(fl_, ",lost_scans_%ld_%ld", scans * b / 10 + 1, scans * (b + 1) / 10);
-    fprintf(fl_, "\n");
+    fprintf(fl_, ",kept_rmse_q05,kept_rmse_q25,kept_rmse_q50,kept_rmse_q75,kept_rmse_q95\n");
+    static const double qp[5] = {0.05, 0.25, 0.5, 0.75, 0.95};
     for (int c = 0; c < ncell; c++)
         for (int s = 0; s < nscen; s++) {
             const int a = s / (nsnr * npfa), b = (s / npfa) % nsnr, cc = s % npfa;
@@ -281,7 +378,10 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
                 if (nk > 0) mc_mean_ci(kv, nk, 0.95, &m, &lo, &hi);
                 fprintf(fl_, "%g,%g,%g,%g,%s,%zu,%.6g,%.6g,%.6g", cells[c], nus[a], snrs[b], pfas[cc],
                         fl ? "PDAFAI" : "PDAF", nk, sqrt(m), sqrt(fmax(lo, 0)), sqrt(hi));
-                for (int k = 0; k < 10; k++) fprintf(fl_, ",%ld", bins[k]);
+                for (int k = 0; k < 10; k++) fprintf(fl_, ",%ld", bins[k]), lbins[(mi * 2 + fl) * 10 + k] = bins[k];
+                /* the per-run RMSE's distribution (sqrt is monotone: quantiles of the MSE) */
+                mc_sort(kv, nk);
+                for (int k = 0; k < 5; k++) fprintf(fl_, ",%.6g", sqrt(mc_quantile_sorted(kv, nk, qp[k])));
                 fprintf(fl_, "\n");
             }
         }
@@ -335,7 +435,9 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         sim_text_add(&t, "unset multiplot\n");
         if (!t.failed) sim_plot(&com, "", t.s);
         sim_text_free(&t);
+        if (plot_loss(&com, lpath, lbins, cells, ncell, nus, nnu, snrs, nsnr, pfas, npfa, runs, scans, as)) return 1;
     }
+    free(lbins);
     for (int fl = 0; fl < 2; fl++) free(lostv[fl]), free(lov[fl]), free(hiv[fl]);
     for (int s = 0; s < namp; s++) st_amp_free(&amp[s]);
     free(amp);
