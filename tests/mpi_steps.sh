@@ -5,7 +5,7 @@
 #   tablegen  a q2 PDAF table, a q2 PDAFAI table (K clutter) and a K amplitude table:
 #             `mpirun -np 3` with 1 and 2 OpenMP threads per rank gives the bytes of
 #             the single-process trk-tablegen (1 thread)
-#   sim       the same for trk-sim brekke-trackloss, mtt (cpu_* columns aside: a CPU
+#   sim       the same for trk-sim brekke-trackloss, brekke-errpdf, mtt (cpu_* columns aside: a CPU
 #             time), clutter-null, kennedy-null and blanding-add-arl (both CSVs)
 #   resume    a rank that fails: TRK_PAR_FAIL_AFTER makes rank 1 of a q2 job exit
 #             halfway; a trk-sim job loses a rank to SIGKILL once its checkpoint holds
@@ -69,9 +69,10 @@ tablegen)
     ;;
 sim)
     n=0
-    for job in tl mtt cn kn bl; do
+    for job in tl ep mtt cn kn bl; do
         case $job in
         tl) args="brekke-trackloss --runs 40 --scans 60 --cell-m2 0.25 --k-shape 1 --snr-db 10 --pfa 1e-2,1e-1" ;;
+        ep) args="brekke-errpdf --runs 30 --scans 60 --from 31 --pfa 1e-3,1e-1 --q2-samples 20000" ;;
         mtt) args="mtt --scans 30 --seeds 2 --clutter-count 0,50" ;;
         cn) args="clutter-null --runs 3000 --scans 30" ;;
         kn) args="kennedy-null --runs 100 --max-scans 8" ;;
@@ -99,7 +100,7 @@ sim)
             done
         done
     done
-    echo "mpi-sim: trk-sim brekke-trackloss, mtt, clutter-null, kennedy-null, blanding-add-arl of 3 ranks x 1 and 2 threads identical to trk-sim ($n CSV files)"
+    echo "mpi-sim: trk-sim brekke-trackloss, brekke-errpdf, mtt, clutter-null, kennedy-null, blanding-add-arl of 3 ranks x 1 and 2 threads identical to trk-sim ($n CSV files)"
     ;;
 resume)
     # --- a q2 table: rank 1 exits after 40 of its work units (fault injection)
