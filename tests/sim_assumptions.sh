@@ -16,7 +16,9 @@
 #       --gate-cap lost:20 loses tracks by the cap (gate_cap_lost > 0);
 #       bad values are refused (exit 2)
 #   (c) the CSV headers and the gnuplot titles name start, gate cap and MRE
-#       start (toc: the MRE start)
+#       start (toc: the MRE start); brekke-errpdf also the histogram's scans
+#       and tracks, its PDAF line at P_FA 0.2 drawn with --mre-start zero
+#       only, --tracks all taking at least the kept runs' samples
 set -u
 sim=$1
 STEP=sim-assumptions
@@ -108,4 +110,21 @@ done
 $sim toc --mre-start none > /dev/null 2>&1
 [ $? = 2 ] || fail "toc --mre-start none was not refused"
 ok "--gate-cap truncate:32: $t32 PDAFAI runs truncated (default truncate:256: $t0); lost:20: $gl PDAF runs lost by the cap; bad values refused"
+# brekke-errpdf: the assumptions named; --mre-start zero draws the PDAF's line at P_FA 0.2 where
+# two-point has none (inf); --tracks all takes more samples than kept (the lost runs' scans)
+E="--runs 40 --scans 60 --from 21 --pfa 1e-1,0.2 --q2-samples 2000 --seed 3 --quiet"
+$sim brekke-errpdf $E --out "$T/ep" > /dev/null &&
+    $sim brekke-errpdf $E --start steady --mre-start zero --tracks all --out "$T/epz" > /dev/null || fail "brekke-errpdf failed"
+grep -q '^# assumptions: start two-point .*gate cap truncate:256 .*, MRE start two-point (--mre-start)' "$T/ep.csv" &&
+    grep -q '^# assumptions: start steady .*, MRE start zero (--mre-start)' "$T/epz.csv" &&
+    grep -q '^# assumptions: start steady .*, MRE start zero' "$T/epz_fig4.csv" || fail "brekke-errpdf CSV: assumptions not named"
+grep -q 'title ".*\\nstart two-point, gate cap truncate:256, MRE start two-point\\nscans >= 21 of 40 runs x 60 scans, tracks not lost' "$T/ep_fig3.gp" &&
+    grep -q 'title ".*\\nstart steady, gate cap truncate:256, MRE start zero\\nscans >= 21 of 40 runs x 60 scans, all tracks before loss' "$T/epz_fig4.gp" ||
+    fail "brekke-errpdf plot titles: assumptions not named"
+ea=$(grep -c '^set arrow' "$T/ep_fig4.gp") ez=$(grep -c '^set arrow' "$T/epz_fig4.gp")
+[ "$ea" = 3 ] && [ "$ez" = 4 ] && grep -q "PDAF (MRE [a-z q2]*: no line" "$T/ep_fig4.gp" ||
+    fail "brekke-errpdf P_FA 0.2: $ea lines with the two-point MRE start (expected 3: no PDAF MRE), $ez with zero (4)"
+awk -F, 'NR == FNR { if ($1 ~ /^[0-9]/) n[$1 $8] = $14; next } $1 ~ /^[0-9]/ && $14 < n[$1 $8] { bad++ } END { exit bad > 0 }' \
+    "$T/ep.csv" "$T/epz.csv" || fail "brekke-errpdf --tracks all: fewer samples than kept"
+ok "brekke-errpdf: assumptions in CSV headers and titles; PDAF MRE line at P_FA 0.2 with --mre-start zero only ($ea / $ez lines)"
 echo "sim-assumptions: defaults unchanged, the options act, CSV headers and plot titles name them"

@@ -359,9 +359,10 @@ SIM_EXPERIMENT(brekke_errpdf, "brekke-errpdf", "Brekke 2011 Figs. 3-5: error pdf
             if (isfinite(mre))
                 snprintf(key[fl], sizeof key[fl], "%s (MRE %.3f m: solid line; mean %.3f m: dashed; mode %.3f m)",
                          fl ? "PDAFAI" : "PDAF", mre, st[j][fl].mean, st[j][fl].mode);
-            else
+            else /* "off_table" without the underscore (a subscript to gnuplot) */
                 snprintf(key[fl], sizeof key[fl], "%s (MRE %s: no line; mean %.3f m: dashed; mode %.3f m)",
-                         fl ? "PDAFAI" : "PDAF", toc_status_name(at[j].status[fl]), st[j][fl].mean, st[j][fl].mode);
+                         fl ? "PDAFAI" : "PDAF", at[j].status[fl] == TOC_OFF_TABLE ? "off the q2 table" : "diverged",
+                         st[j][fl].mean, st[j][fl].mode);
         }
         sim_text_add(&t,
                      "plot '%s' every ::1 using 3:4 with histeps lw 2 lc 1 title '%s', \\\n"

@@ -105,9 +105,18 @@ static int plot_loss(const struct sim_common *com, const char *lpath, const long
                 fprintf(d, "\n\n");
             }
     if (sim_csv_close(&d_out) != 0) return -1;
+    char base[1040];
+    snprintf(base, sizeof base, "%s_loss", com->out);
     struct sim_text t = {NULL, 0, 0, 0};
     sim_text_add(&t,
-                 "set datafile separator ','\nset grid\nset logscale y\nset key outside right font ',7'\n"
+                 "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+                 "  set terminal pngcairo size 1400,%d enhanced font 'sans,10'\n"
+                 "} else {\n  set terminal png size 1400,%d\n}\nset output '%s.png'\n",
+                 320 * ncell + 90, 320 * ncell + 90, base);
+    sim_text_add(&t,
+                 "set datafile separator ','\nset grid\nset logscale y\nset key outside right font ',8'\n"
+                 "set xtics %ld\n", scans / 5 > 0 ? scans / 5 : 1);
+    sim_text_add(&t,
                  "set xlabel 'scan of the loss (tenths of the run)'\nset ylabel 'lost per 10000 in the tenth'\n"
                  "set xrange [0:%ld]\nset yrange [*:*]\n"
                  "set multiplot layout %d,2 title \"Brekke 2011 track losses: when the tracks are lost (%ld runs x %ld "
@@ -138,8 +147,14 @@ static int plot_loss(const struct sim_common *com, const char *lpath, const long
     /* kept-track RMSE: PREFIX_loss.csv's rows, in the order cell, scenario, filter ($0 - 1 = data row) */
     struct sim_text k = {NULL, 0, 0, 0};
     sim_text_add(&k,
+                 "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+                 "  set terminal pngcairo size %d,700 enhanced font 'sans,10'\n"
+                 "} else {\n  set terminal png size %d,700\n}\nset output '%s_kept.png'\n",
+                 80 + 520 * ncell, 80 + 520 * ncell, com->out);
+    sim_text_add(&k,
                  "set datafile separator ','\nset datafile missing 'nan'\nset grid\nset logscale y\n"
-                 "set key top left font ',8'\nset ylabel 'position RMSE of a kept run (m)'\n"
+                 "set yrange [0.1:50]\n"
+                 "set key top right font ',8'\nset ylabel 'position RMSE of a kept run (m)'\n"
                  "set xrange [-0.6:%d.6]\nset boxwidth 0.25\nset xtics rotate by 60 right font ',7' (",
                  nscen - 1);
     for (int s = 0; s < nscen; s++) {
