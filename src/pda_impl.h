@@ -94,30 +94,52 @@ TRK_INLINE void trk_i_pda_set_w(struct trk_i_pda_set *s, size_t i, trk_real log_
     }
 }
 
+/* The normalisation's first half: e_i = exp(ln e_i - mx) in place over
+ * w[0..n), with the shift mx (o->e_max) and *e0 = exp(ln e_0 - mx). The
+ * shift is ln e_0 itself when the largest ln e_i (w_max) lies within 30 of
+ * it: e_0 = 1 needs no exponential, and the largest e_i stays in [e^-30,
+ * e^30]; else the larger of the two, as usual. 0 (w zeroed, o->e_max and
+ * o->e_sum 0) when every weight is zero (e.g. no detection and lambda = 0),
+ * else 1. */
+TRK_INLINE int trk_i_pda_exp(trk_real log_e0, size_t n, trk_real *w, trk_real w_max, trk_real *e0,
+                             struct trk_i_pda_out *o)
+{
+    const int near = trk_fabs(w_max - log_e0) <= 30; /* (false for an infinite one) */
+    const trk_real mx = near || !(w_max > log_e0) ? log_e0 : w_max;
+    o->e_max = 0;
+    o->e_sum = 0;
+    if (!(mx > -TRK_REAL_MAX)) { /* all -inf */
+        for (size_t i = 0; i < n; i++) w[i] = 0;
+        return 0;
+    }
+    *e0 = near ? 1 : trk_exp(log_e0 - mx);
+    for (size_t i = 0; i < n; i++) w[i] = trk_exp(w[i] - mx);
+    o->e_max = mx;
+    return 1;
+}
+
+/* The second half: sum e_i (o->e_sum) given, w[i] = beta_i = e_i / (e_0 +
+ * sum e_i); the factor 1 / (e_0 + sum e_i) returned. */
+TRK_INLINE trk_real trk_i_pda_exp_scale(trk_real e0, trk_real sum_meas, size_t n, trk_real *w,
+                                        struct trk_i_pda_out *o)
+{
+    o->e_sum = sum_meas;
+    const trk_real inv = 1 / (e0 + sum_meas);
+    for (size_t i = 0; i < n; i++) w[i] *= inv;
+    return inv;
+}
+
 /* Normalise in the log domain: log_e0 and log_w[0..n) (in, w_max their
- * largest) -> beta0 and w[0..n) = beta_i (out, in place). When every weight
- * is zero (e.g. no detection and lambda = 0) beta0 = 1. o->e_max, o->e_sum
- * get ln sum_i e_i over the detections (trk_i_pda_log_sum_e). */
+ * largest) -> beta0 (returned) and w[0..n) = beta_i (out, in place). When
+ * every weight is zero beta0 = 1. o->e_max, o->e_sum get ln sum_i e_i over
+ * the detections (trk_i_pda_log_sum_e). */
 TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, trk_real w_max,
                                         struct trk_i_pda_out *o)
 {
-    const trk_real mx = w_max > log_e0 ? w_max : log_e0;
-    if (!(mx > -TRK_REAL_MAX)) { /* all -inf */
-        for (size_t i = 0; i < n; i++) w[i] = 0;
-        o->e_max = 0;
-        o->e_sum = 0;
-        return 1;
-    }
-    trk_real e0 = trk_exp(log_e0 - mx), sum_meas = 0;
-    for (size_t i = 0; i < n; i++) {
-        w[i] = trk_exp(w[i] - mx);
-        sum_meas += w[i];
-    }
-    o->e_max = mx;
-    o->e_sum = sum_meas;
-    trk_real inv = 1 / (e0 + sum_meas);
-    for (size_t i = 0; i < n; i++) w[i] *= inv;
-    return e0 * inv;
+    trk_real e0, sum_meas = 0;
+    if (!trk_i_pda_exp(log_e0, n, w, w_max, &e0, o)) return 1;
+    for (size_t i = 0; i < n; i++) sum_meas += w[i];
+    return e0 * trk_i_pda_exp_scale(e0, sum_meas, n, w, o);
 }
 
 /* S_j = H P H' + R_j of a detection with its own covariance (gating and the
@@ -273,9 +295,10 @@ TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const t
  * detection sharing S, the usual case, has a path of its own (issue 19: the
  * per-track update within 1.25x of a hand-written loop): the same moment
  * match as the general code below, written out over the model's fixed
- * indices, with the weights' moments taken in one pass that may also form
- * the weights. test_pda checks it against the general code (the same track
- * embedded in 5 states). Size builds keep the general code alone. */
+ * indices, with the weights' moments taken in one pass about a shift (see
+ * struct trk_i_cv2_moments) and the weight-free Joseph part formed first.
+ * test_pda checks it against the general code (the same track embedded in 5
+ * states). Size builds keep the general code alone. */
 TRK_INLINE int trk_i_pda_is_cv2(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s)
 {
 #if TRK_SIZE_OPT
@@ -357,36 +380,27 @@ TRK_INLINE void trk_i_pda_moments_cv2(const struct trk_i_pda_pred *pr, const str
     *m = acc;
 }
 
-/* trk_i_pda_normalise and the moments in one pass: ln e_i (s->w, largest
- * s->w_max at s->w_arg) -> beta_i (in place), beta0 (returned), *m, and
- * o->e_max, o->e_sum as trk_i_pda_normalise. */
+/* trk_i_pda_normalise with the moments taken on the way: ln e_i (s->w,
+ * largest s->w_max at s->w_arg) -> beta_i (in place), beta0 (returned), *m
+ * (of the unnormalised e_i, in a loop without calls, then scaled: the
+ * division and the moments do not wait for each other), and o->e_max,
+ * o->e_sum as trk_i_pda_normalise. */
 TRK_INLINE trk_real trk_i_pda_normalise_cv2(trk_real log_e0, const struct trk_i_pda_pred *pr,
                                             const struct trk_i_pda_set *s, struct trk_i_pda_out *o,
                                             struct trk_i_cv2_moments *m)
 {
-    const trk_real mx = s->w_max > log_e0 ? s->w_max : log_e0;
     struct trk_i_cv2_moments acc = {0, 0, 0, 0, 0, 0};
-    if (!(mx > -TRK_REAL_MAX)) { /* all -inf */
-        for (size_t i = 0; i < s->n; i++) s->w[i] = 0;
-        o->e_max = 0;
-        o->e_sum = 0;
-        *m = acc;
-        return 1;
-    }
-    trk_real c0 = 0, c1 = 0, y0, y1;
+    trk_real e0, c0 = 0, c1 = 0, y0, y1;
+    *m = acc;
+    if (!trk_i_pda_exp(log_e0, s->n, s->w, s->w_max, &e0, o)) return 1;
     if (s->w_max > -TRK_REAL_MAX) trk_i_cv2_whiten(pr, s, s->w_arg, &c0, &c1);
-    for (size_t i = 0; i < s->n; i++) s->w[i] = trk_exp(s->w[i] - mx);
-    for (size_t i = 0; i < s->n; i++) {
+    for (size_t i = 0; i < s->n; i++) { /* the moments of e_i (sum e_i = acc.b) */
         const trk_real e = s->w[i];
         if (e == 0) continue; /* (outside the gate; its y may be infinite) */
         trk_i_cv2_whiten(pr, s, i, &y0, &y1);
         trk_i_cv2_moments_add(&acc, e, y0 - c0, y1 - c1);
     }
-    const trk_real e0 = trk_exp(log_e0 - mx);
-    o->e_max = mx;
-    o->e_sum = acc.b;
-    const trk_real inv = 1 / (e0 + acc.b);
-    for (size_t i = 0; i < s->n; i++) s->w[i] *= inv;
+    const trk_real inv = trk_i_pda_exp_scale(e0, acc.b, s->n, s->w, o);
     trk_i_cv2_moments_end(&acc, inv, c0, c1);
     *m = acc;
     return e0 * inv;
@@ -404,7 +418,9 @@ TRK_INLINE size_t trk_i_pda_arg_max(size_t n, const trk_real *w)
 /* The CV path's weight-free part: u = P H' L^-T, K = u L^-1 and the Joseph
  * form P_c = A - E K' with A = P - K (P H')', E = A H' - K R
  * (trk_i_joseph_upper); formed before the weights, so that it overlaps
- * their chain of exponentials and sums. */
+ * their chain of exponentials and sums. P H' is read from the rows of x and
+ * y (P is symmetric: contiguous, so the float build forms u and K four
+ * lanes at a time; 8 ns of 123 at m = 10). */
 struct trk_i_cv2_gain {
     trk_real u0[TRK_CV2_NX], u1[TRK_CV2_NX];         /* u (columns) */
     trk_real pc[TRK_CV2_NX * TRK_CV2_NX];             /* P_c (rows; the upper triangle is used) */
@@ -417,8 +433,8 @@ TRK_INLINE void trk_i_pda_gain_cv2(const struct trk_i_pda_pred *pr, struct trk_i
     const trk_real m00 = li[0], m10 = li[2], m11 = li[3]; /* L^-1 */
     trk_real ph0[N], ph1[N], k0[N], k1[N], e0[N], e1[N];
     for (int a = 0; a < N; a++) {
-        ph0[a] = p[a * N + TRK_CV2_X];
-        ph1[a] = p[a * N + TRK_CV2_Y];
+        ph0[a] = p[TRK_CV2_X * N + a]; /* P H' from the rows of P (symmetric) */
+        ph1[a] = p[TRK_CV2_Y * N + a];
         g->u0[a] = ph0[a] * m00;
         g->u1[a] = ph0[a] * m10 + ph1[a] * m11;
         k0[a] = g->u0[a] * m00 + g->u1[a] * m10;
@@ -598,7 +614,7 @@ TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const stru
         return TRK_OK;
     }
     const trk_real log_e0 = trk_i_pda_log_e0(pda, o->lambda);
-    if (trk_i_pda_is_cv2(pr, s)) { /* the weights and their moments in one pass */
+    if (trk_i_pda_is_cv2(pr, s)) { /* the Joseph part first, then the weights and their moments */
         struct trk_i_cv2_gain g;
         struct trk_i_cv2_moments m;
         trk_real x[TRK_CV2_NX], acc[TRK_CV2_NX * TRK_CV2_NX];
