@@ -135,9 +135,10 @@ TRK_INLINE int trk_i_spd4_sure(const trk_real *a)
     const trk_real m01 = det_p * a[11] - (b00 * g01 + b10 * g11);
     const trk_real m11 = det_p * a[15] - (b01 * g01 + b11 * g11);
     const trk_real det_m = m00 * m11 - m01 * m01;
-    return p00 >= TRK_REAL_MIN && det_p > TRK_I_SPD4_MARGIN * (p00 * p11) && det_p >= TRK_REAL_MIN &&
-           m00 > TRK_I_SPD4_MARGIN * (det_p * a[10]) && m11 > TRK_I_SPD4_MARGIN * (det_p * a[15]) &&
-           det_m > TRK_I_SPD4_MARGIN * (m00 * m11) && det_m >= TRK_REAL_MIN && det_m <= TRK_REAL_MAX;
+    /* every test evaluated (no branch per test: a NaN fails each) */
+    return (p00 >= TRK_REAL_MIN) & (det_p > TRK_I_SPD4_MARGIN * (p00 * p11)) & (det_p >= TRK_REAL_MIN) &
+           (m00 > TRK_I_SPD4_MARGIN * (det_p * a[10])) & (m11 > TRK_I_SPD4_MARGIN * (det_p * a[15])) &
+           (det_m > TRK_I_SPD4_MARGIN * (m00 * m11)) & (det_m >= TRK_REAL_MIN) & (det_m <= TRK_REAL_MAX);
 }
 
 TRK_INLINE void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)
