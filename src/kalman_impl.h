@@ -102,11 +102,15 @@ TRK_INLINE trk_status trk_i_innovation_sel(int nx, int nz, const trk_real *h, co
     }
     trk_i_symmetrize(nz, inn->s);
     inn->nz = nz;
-    trk_status st = trk_i_chol(nz, inn->s, inn->s_chol);
-    if (st != TRK_OK) return st;
-    trk_i_tril_inverse(nz, inn->s_chol, inn->s_chol_inv);
     trk_real sqrt_det = 1;
-    for (int i = 0; i < nz; i++) sqrt_det *= inn->s_chol[i * nz + i]; /* = prod L_ii */
+    /* 2 x 2: in closed form (speed; size builds keep the loop alone) */
+    if (TRK_SIZE_OPT || nz != 2 || !trk_i_chol2(inn->s, inn->s_chol, inn->s_chol_inv, &sqrt_det)) {
+        trk_status st = trk_i_chol(nz, inn->s, inn->s_chol);
+        if (st != TRK_OK) return st;
+        trk_i_tril_inverse(nz, inn->s_chol, inn->s_chol_inv);
+        sqrt_det = 1;
+        for (int i = 0; i < nz; i++) sqrt_det *= inn->s_chol[i * nz + i]; /* = prod L_ii */
+    }
     /* one log instead of nz; the product of nz <= 3 square roots of finite
      * pivots overflows only in float for |S| above ~1e25 */
     inn->log_det_s = (sqrt_det > 0 && sqrt_det <= TRK_REAL_MAX) ? 2 * trk_log(sqrt_det)

@@ -90,6 +90,57 @@ TRK_INLINE trk_status trk_i_spd_inline(int n, const trk_real *a)
     return TRK_OK;
 }
 
+/* A (2x2, symmetric) = L L' in closed form: L, L^-1 (both lower, row-major)
+ * and sqrt det A = l00 l11, from det A = a00 a11 - a01^2 with the two square
+ * roots and the two divisions independent (trk_i_chol's square root,
+ * division, square root, division is one chain of four). 0 when a00 or
+ * det A is not a positive finite normal number: the caller then factors by
+ * trk_i_chol, which decides. */
+TRK_INLINE int trk_i_chol2(const trk_real *a, trk_real *l, trk_real *m, trk_real *sqrt_det)
+{
+    const trk_real det = a[0] * a[3] - a[2] * a[2];
+    if (!(a[0] >= TRK_REAL_MIN && a[0] <= TRK_REAL_MAX && det >= TRK_REAL_MIN && det <= TRK_REAL_MAX)) return 0;
+    const trk_real l00 = trk_sqrt(a[0]), sd = trk_sqrt(det);
+    const trk_real m00 = 1 / l00, r = 1 / sd; /* 1 / l00, 1 / (l00 l11) */
+    l[0] = l00;
+    l[1] = 0;
+    l[2] = a[2] * m00;
+    l[3] = sd * m00;
+    m[0] = m00;
+    m[1] = 0;
+    m[2] = -a[2] * m00 * r;
+    m[3] = l00 * r;
+    *sqrt_det = sd;
+    return 1;
+}
+
+/* Is the symmetric 4x4 A positive definite beyond doubt? 1 when it is, by
+ * the blocks A = [P B; B' C] (2x2 each, P on indices 0-1): P > 0 and its
+ * Schur complement C - B' P^-1 B > 0, both tested by determinants scaled by
+ * det P (division-free: a chain of multiplications where LDL' has four
+ * divisions in a row), every pivot at least SPD4_MARGIN of its scale so that
+ * rounding (relative eps / SPD4_MARGIN at most) cannot decide it. 0 when it
+ * is not, or nearly not, or a product left the finite normal range: the
+ * caller then decides by trk_i_spd_inline. */
+#define TRK_I_SPD4_MARGIN (TRK_REAL_C(1.0) / 256)
+TRK_INLINE int trk_i_spd4_sure(const trk_real *a)
+{
+    const trk_real p00 = a[0], p01 = a[1], p11 = a[5];
+    const trk_real b00 = a[2], b01 = a[3], b10 = a[6], b11 = a[7];
+    const trk_real det_p = p00 * p11 - p01 * p01;
+    /* G = adj(P) B, H = B' G = det P B' P^-1 B, M = det P C - H */
+    const trk_real g00 = p11 * b00 - p01 * b10, g01 = p11 * b01 - p01 * b11;
+    const trk_real g10 = p00 * b10 - p01 * b00, g11 = p00 * b11 - p01 * b01;
+    const trk_real m00 = det_p * a[10] - (b00 * g00 + b10 * g10);
+    const trk_real m01 = det_p * a[11] - (b00 * g01 + b10 * g11);
+    const trk_real m11 = det_p * a[15] - (b01 * g01 + b11 * g11);
+    const trk_real det_m = m00 * m11 - m01 * m01;
+    /* every test evaluated (no branch per test: a NaN fails each) */
+    return (p00 >= TRK_REAL_MIN) & (det_p > TRK_I_SPD4_MARGIN * (p00 * p11)) & (det_p >= TRK_REAL_MIN) &
+           (m00 > TRK_I_SPD4_MARGIN * (det_p * a[10])) & (m11 > TRK_I_SPD4_MARGIN * (det_p * a[15])) &
+           (det_m > TRK_I_SPD4_MARGIN * (m00 * m11)) & (det_m >= TRK_REAL_MIN) & (det_m <= TRK_REAL_MAX);
+}
+
 TRK_INLINE void trk_i_chol_forward(int n, const trk_real *l, const trk_real *b, trk_real *y)
 {
     for (int i = 0; i < n; i++) {

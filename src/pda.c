@@ -64,6 +64,34 @@ trk_status trk_i_pda_update_beta_rt(const struct trk_i_pda_pred *pr, const struc
     return trk_i_pda_update_beta(pr, s, beta0);
 }
 
+/* Gate the set's detections (s->n of them at z): d2 (into d2 when not
+ * NULL) and w = ln e_i, -inf outside (with log_lr when not NULL); *finite
+ * cleared for a detection or log_lr that is not finite. The detections in
+ * the gate, returned. */
+TRK_INLINE size_t gate(const struct trk_pda *pda, const int nz, const struct trk_innovation *inn, const trk_real *z,
+                       const trk_real *log_lr, trk_real *d2, struct trk_i_pda_set *s, int *finite)
+{
+    size_t n_gated = 0;
+    int ok = 1;
+    for (size_t i = 0; i < s->n; i++) {
+        trk_real nu[TRK_MAX_MEAS];
+        for (int t = 0; t < nz; t++) nu[t] = z[i * nz + t] - inn->z_pred[t];
+        if (log_lr) ok &= isfinite(log_lr[i]) != 0;
+        const trk_real di = trk_i_mahalanobis2(nz, inn->s_chol_inv, nu);
+        /* a finite d2 needs finite nu, so finite z: the components are
+         * checked only for d2 = inf or NaN (rare) */
+        if (!(di <= TRK_REAL_MAX))
+            for (int t = 0; t < nz; t++) ok &= isfinite(z[i * nz + t]) != 0;
+        const int in = trk_gate_inside(di, pda->gamma);
+        if (d2) d2[i] = di;
+        n_gated += (size_t)in;
+        trk_i_pda_set_w(s, i, (in || !pda->params.gating) ? trk_i_pda_log_e(pda, inn->log_det_s, di, log_lr ? log_lr[i] : 0)
+                                                         : -(trk_real)INFINITY);
+    }
+    *finite = ok;
+    return n_gated;
+}
+
 /* The update for given dimensions; called with constants for the 2-D CV
  * model so the compiler unrolls it, and with run-time dimensions otherwise.
  * inn_in: the caller's innovation, or NULL to compute it here. */
@@ -89,27 +117,16 @@ TRK_INLINE trk_status pda_update(const struct trk_pda *pda, const int nx, const 
         inn = &inn_own;
     }
     /* gate: d2, and the unnormalised log weights (beta[] holds ln e_i, -inf
-     * outside); the detections' finiteness checked on the way */
-    size_t n_gated = 0;
+     * outside); the detections' finiteness checked on the way. The usual
+     * call (no amplitudes, no d2 wanted) gets a copy of its own (not in a
+     * size build) */
     int finite = 1;
-    for (size_t i = 0; i < m; i++) {
-        trk_real nu[TRK_MAX_MEAS];
-        for (int t = 0; t < nz; t++) nu[t] = z[i * nz + t] - inn->z_pred[t];
-        if (log_lr) finite &= isfinite(log_lr[i]) != 0;
-        const trk_real di = trk_i_mahalanobis2(nz, inn->s_chol_inv, nu);
-        /* a finite d2 needs finite nu, so finite z: the components are
-         * checked only for d2 = inf or NaN (rare) */
-        if (!(di <= TRK_REAL_MAX))
-            for (int t = 0; t < nz; t++) finite &= isfinite(z[i * nz + t]) != 0;
-        const int in = trk_gate_inside(di, pda->gamma);
-        if (d2) d2[i] = di;
-        n_gated += (size_t)in;
-        beta[i] = (in || !pda->params.gating) ? trk_i_pda_log_e(pda, inn->log_det_s, di, log_lr ? log_lr[i] : 0)
-                                              : -(trk_real)INFINITY;
-    }
+    struct trk_i_pda_set set = {m, m, 0, z, beta, NULL, -(trk_real)INFINITY, 0};
+    const size_t n_gated = (TRK_SIZE_OPT || log_lr || d2) ? gate(pda, nz, inn, z, log_lr, d2, &set, &finite)
+                                                          : gate(pda, nz, inn, z, NULL, NULL, &set, &finite);
     if (!finite) return TRK_E_NAN;
     const struct trk_i_pda_pred pred = {nx, nz, h, sel, r, x, p, pht, inn};
-    struct trk_i_pda_set set = {m, m, pda->params.gating ? n_gated : m, z, beta, NULL};
+    set.m_gated = pda->params.gating ? n_gated : m;
     struct trk_i_pda_out out;
     /* x, P: the posterior. The CV copy inlines the update (speed); other
      * dimensions share the one out-of-line copy (and so does every caller in
@@ -194,6 +211,6 @@ trk_status trk_pda_update_weights(int nx, const trk_real *h, const trk_real *r, 
     const struct trk_i_pda_pred pred = {nx, nz, h, sel, r, x, p, pht, inn};
     /* the combination only reads the weights (s->w is not const for the
      * update that normalises them in place) */
-    const struct trk_i_pda_set set = {m, m, m, z, (trk_real *)(uintptr_t)(beta + 1), NULL};
+    const struct trk_i_pda_set set = {m, m, m, z, (trk_real *)(uintptr_t)(beta + 1), NULL, 0, 0};
     return trk_i_pda_update_beta_rt(&pred, &set, beta[0]);
 }

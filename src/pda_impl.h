@@ -37,6 +37,10 @@ struct trk_i_pda_set {
     const trk_real *z;
     trk_real *w;           /* in: ln e_i (-inf: weight 0); out: beta_i */
     const trk_real *r_own; /* R_j of detection n_shared + j at r_own + j nz^2 */
+    trk_real w_max;        /* the largest ln e_i in w (-inf: none), at w[w_arg]:
+                              kept by whoever fills w (trk_i_pda_set_w), so that
+                              the normalisation needs no pass of its own */
+    size_t w_arg;
 };
 
 struct trk_i_pda_out {
@@ -67,31 +71,75 @@ TRK_INLINE trk_real trk_i_pda_log_e0(const struct trk_pda *pda, trk_real lambda)
                                                         : trk_log(lambda) + pda->log_miss;
 }
 
-/* Normalise in the log domain: log_e0 and log_w[0..n) (in) -> beta0 and
- * w[0..n) = beta_i (out, in place). When every weight is zero (e.g. no
- * detection and lambda = 0) beta0 = 1. o->e_max, o->e_sum get ln sum_i e_i
- * over the detections (trk_i_pda_log_sum_e). */
-TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, struct trk_i_pda_out *o)
+/* s->w_max and s->w_arg from w, for a caller that fills w in one go. */
+TRK_INLINE void trk_i_pda_find_w_max(struct trk_i_pda_set *s)
 {
-    trk_real mx = log_e0;
-    for (size_t i = 0; i < n; i++)
-        if (w[i] > mx) mx = w[i];
+    s->w_max = -(trk_real)INFINITY;
+    s->w_arg = 0;
+    for (size_t i = 0; i < s->n; i++)
+        if (s->w[i] > s->w_max) {
+            s->w_max = s->w[i];
+            s->w_arg = i;
+        }
+}
+
+/* w[i] = ln e_i into the set, keeping w_max and w_arg (w_max starts at
+ * -inf). */
+TRK_INLINE void trk_i_pda_set_w(struct trk_i_pda_set *s, size_t i, trk_real log_e)
+{
+    s->w[i] = log_e;
+    if (log_e > s->w_max) {
+        s->w_max = log_e;
+        s->w_arg = i;
+    }
+}
+
+/* The normalisation's first half: e_i = exp(ln e_i - mx) in place over
+ * w[0..n), with the shift mx (o->e_max) and *e0 = exp(ln e_0 - mx). The
+ * shift is ln e_0 itself when the largest ln e_i (w_max) lies within 30 of
+ * it: e_0 = 1 needs no exponential, and the largest e_i stays in [e^-30,
+ * e^30]; else the larger of the two, as usual. 0 (w zeroed, o->e_max and
+ * o->e_sum 0) when every weight is zero (e.g. no detection and lambda = 0),
+ * else 1. */
+TRK_INLINE int trk_i_pda_exp(trk_real log_e0, size_t n, trk_real *w, trk_real w_max, trk_real *e0,
+                             struct trk_i_pda_out *o)
+{
+    const int near = trk_fabs(w_max - log_e0) <= 30; /* (false for an infinite one) */
+    const trk_real mx = near || !(w_max > log_e0) ? log_e0 : w_max;
+    o->e_max = 0;
+    o->e_sum = 0;
     if (!(mx > -TRK_REAL_MAX)) { /* all -inf */
         for (size_t i = 0; i < n; i++) w[i] = 0;
-        o->e_max = 0;
-        o->e_sum = 0;
-        return 1;
+        return 0;
     }
-    trk_real e0 = trk_exp(log_e0 - mx), sum_meas = 0;
-    for (size_t i = 0; i < n; i++) {
-        w[i] = trk_exp(w[i] - mx);
-        sum_meas += w[i];
-    }
+    *e0 = near ? 1 : trk_exp(log_e0 - mx);
+    for (size_t i = 0; i < n; i++) w[i] = trk_exp(w[i] - mx);
     o->e_max = mx;
+    return 1;
+}
+
+/* The second half: sum e_i (o->e_sum) given, w[i] = beta_i = e_i / (e_0 +
+ * sum e_i); the factor 1 / (e_0 + sum e_i) returned. */
+TRK_INLINE trk_real trk_i_pda_exp_scale(trk_real e0, trk_real sum_meas, size_t n, trk_real *w,
+                                        struct trk_i_pda_out *o)
+{
     o->e_sum = sum_meas;
-    trk_real inv = 1 / (e0 + sum_meas);
+    const trk_real inv = 1 / (e0 + sum_meas);
     for (size_t i = 0; i < n; i++) w[i] *= inv;
-    return e0 * inv;
+    return inv;
+}
+
+/* Normalise in the log domain: log_e0 and log_w[0..n) (in, w_max their
+ * largest) -> beta0 (returned) and w[0..n) = beta_i (out, in place). When
+ * every weight is zero beta0 = 1. o->e_max, o->e_sum get ln sum_i e_i over
+ * the detections (trk_i_pda_log_sum_e). */
+TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, trk_real w_max,
+                                        struct trk_i_pda_out *o)
+{
+    trk_real e0, sum_meas = 0;
+    if (!trk_i_pda_exp(log_e0, n, w, w_max, &e0, o)) return 1;
+    for (size_t i = 0; i < n; i++) sum_meas += w[i];
+    return e0 * trk_i_pda_exp_scale(e0, sum_meas, n, w, o);
 }
 
 /* S_j = H P H' + R_j of a detection with its own covariance (gating and the
@@ -243,58 +291,154 @@ TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const t
     trk_i_pda_rank1(nx, acc, bsum, d);
 }
 
-/* trk_i_pda_combine for the 2-D CV model (state [x, vx, y, vy], H
- * selecting x and y) when every detection shares S, the usual case: the
- * same moment match as the general code below, with the same whitened
- * moments and the Joseph form, written out over the model's fixed indices
- * and fused into one pass over P, so that it stays in registers (issue 19:
- * the per-track update within 1.25x of a hand-written loop). test_pda
- * checks it against the general code (the same track embedded in 5
- * states). */
-TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
-                                      trk_real beta0, trk_real *x_new, trk_real *acc)
+/* The 2-D CV model (state [x, vx, y, vy], H selecting x and y) with every
+ * detection sharing S, the usual case, has a path of its own (issue 19: the
+ * per-track update within 1.25x of a hand-written loop): the same moment
+ * match as the general code below, written out over the model's fixed
+ * indices, with the weights' moments taken in one pass about a shift (see
+ * struct trk_i_cv2_moments) and the weight-free Joseph part formed first.
+ * test_pda checks it against the general code (the same track embedded in 5
+ * states). Size builds keep the general code alone. */
+TRK_INLINE int trk_i_pda_is_cv2(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s)
+{
+#if TRK_SIZE_OPT
+    (void)pr;
+    (void)s;
+    return 0;
+#else
+    return pr->nx == TRK_CV2_NX && pr->nz == TRK_CV2_NZ && s->n_shared == s->n && pr->sel &&
+           pr->sel[0] == TRK_CV2_X && pr->sel[1] == TRK_CV2_Y;
+#endif
+}
+
+/* The weights' moments in whitened coordinates y_i = L^-1 nu_i: B = sum
+ * beta_i, sy = sum beta_i y_i and W = sum beta_i (y_i - ybar)(y_i - ybar)'
+ * about ybar = sy / B, accumulated as sums about a shift c (the whitened
+ * innovation of the detection with the largest weight) and corrected at the
+ * end: W = sum beta_i (y_i - c)(y_i - c)' - B (ybar - c)(ybar - c)'. With
+ * beta_c >= B / n, B |ybar - c|^2 <= n tr W, so the correction cancels at
+ * most n times the rounding of W itself (the unshifted one-pass form lost
+ * up to all of a float covariance's digits with clustered detections and
+ * H P H' >> R; test_pda's clustered cases). */
+struct trk_i_cv2_moments {
+    trk_real b, y0, y1, w00, w01, w11; /* B, ybar (sums about c while accumulated), W */
+};
+
+/* The whitened innovation of detection i: y = L^-1 (z_i - z_pred) */
+TRK_INLINE void trk_i_cv2_whiten(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s, size_t i,
+                                 trk_real *y0, trk_real *y1)
+{
+    const trk_real *li = pr->inn->s_chol_inv;
+    const trk_real n0 = s->z[2 * i] - pr->inn->z_pred[0], n1 = s->z[2 * i + 1] - pr->inn->z_pred[1];
+    *y0 = li[0] * n0;
+    *y1 = li[2] * n0 + li[3] * n1;
+}
+
+/* acc += e (y - c)(y - c)' and its first moments (upper triangle) */
+TRK_INLINE void trk_i_cv2_moments_add(struct trk_i_cv2_moments *acc, trk_real e, trk_real d0, trk_real d1)
+{
+    const trk_real e0 = e * d0, e1 = e * d1;
+    acc->b += e;
+    acc->y0 += e0;
+    acc->y1 += e1;
+    acc->w00 += e0 * d0;
+    acc->w01 += e0 * d1;
+    acc->w11 += e1 * d1;
+}
+
+/* The sums about c of weights e_i, scaled by f (the normalisation), into
+ * the moments of beta_i = f e_i (see struct trk_i_cv2_moments; 1 / sum e_i
+ * here and f computed side by side, not one after the other). */
+TRK_INLINE void trk_i_cv2_moments_end(struct trk_i_cv2_moments *m, trk_real f, trk_real c0, trk_real c1)
+{
+    const trk_real inv = m->b > 0 ? 1 / m->b : 0, d0 = m->y0 * inv, d1 = m->y1 * inv; /* ybar - c */
+    m->w00 = f * (m->w00 - m->y0 * d0);
+    m->w01 = f * (m->w01 - m->y0 * d1);
+    m->w11 = f * (m->w11 - m->y1 * d1);
+    m->b *= f;
+    m->y0 = d0 + c0;
+    m->y1 = d1 + c1;
+}
+
+/* The moments of the weights s->w = beta_i about the shift c = y_k, the
+ * whitened innovation of detection k (the one with the largest weight), in
+ * one pass (in registers: no call in the loop). Entries with beta = 0 are
+ * skipped (outside the gate: their y may be infinite). */
+TRK_INLINE void trk_i_pda_moments_cv2(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s, size_t k,
+                                      struct trk_i_cv2_moments *m)
+{
+    trk_real c0 = 0, c1 = 0, y0, y1;
+    if (k < s->n && s->w[k] > 0) trk_i_cv2_whiten(pr, s, k, &c0, &c1);
+    struct trk_i_cv2_moments acc = {0, 0, 0, 0, 0, 0};
+    for (size_t i = 0; i < s->n; i++) {
+        const trk_real b = s->w[i];
+        if (b == 0) continue;
+        trk_i_cv2_whiten(pr, s, i, &y0, &y1);
+        trk_i_cv2_moments_add(&acc, b, y0 - c0, y1 - c1);
+    }
+    trk_i_cv2_moments_end(&acc, 1, c0, c1);
+    *m = acc;
+}
+
+/* trk_i_pda_normalise with the moments taken on the way: ln e_i (s->w,
+ * largest s->w_max at s->w_arg) -> beta_i (in place), beta0 (returned), *m
+ * (of the unnormalised e_i, in a loop without calls, then scaled: the
+ * division and the moments do not wait for each other), and o->e_max,
+ * o->e_sum as trk_i_pda_normalise. */
+TRK_INLINE trk_real trk_i_pda_normalise_cv2(trk_real log_e0, const struct trk_i_pda_pred *pr,
+                                            const struct trk_i_pda_set *s, struct trk_i_pda_out *o,
+                                            struct trk_i_cv2_moments *m)
+{
+    struct trk_i_cv2_moments acc = {0, 0, 0, 0, 0, 0};
+    trk_real e0, c0 = 0, c1 = 0, y0, y1;
+    *m = acc;
+    if (!trk_i_pda_exp(log_e0, s->n, s->w, s->w_max, &e0, o)) return 1;
+    if (s->w_max > -TRK_REAL_MAX) trk_i_cv2_whiten(pr, s, s->w_arg, &c0, &c1);
+    for (size_t i = 0; i < s->n; i++) { /* the moments of e_i (sum e_i = acc.b) */
+        const trk_real e = s->w[i];
+        if (e == 0) continue; /* (outside the gate; its y may be infinite) */
+        trk_i_cv2_whiten(pr, s, i, &y0, &y1);
+        trk_i_cv2_moments_add(&acc, e, y0 - c0, y1 - c1);
+    }
+    const trk_real inv = trk_i_pda_exp_scale(e0, acc.b, s->n, s->w, o);
+    trk_i_cv2_moments_end(&acc, inv, c0, c1);
+    *m = acc;
+    return e0 * inv;
+}
+
+/* The index of the largest of w[0..n) (0 for none) */
+TRK_INLINE size_t trk_i_pda_arg_max(size_t n, const trk_real *w)
+{
+    size_t k = 0;
+    for (size_t i = 1; i < n; i++)
+        if (w[i] > w[k]) k = i;
+    return k;
+}
+
+/* The CV path's weight-free part: u = P H' L^-T, K = u L^-1 and the Joseph
+ * form P_c = A - E K' with A = P - K (P H')', E = A H' - K R
+ * (trk_i_joseph_upper); formed before the weights, so that it overlaps
+ * their chain of exponentials and sums. P H' is read from the rows of x and
+ * y (P is symmetric: contiguous, so the float build forms u and K four
+ * lanes at a time; 8 ns of 123 at m = 10). */
+struct trk_i_cv2_gain {
+    trk_real u0[TRK_CV2_NX], u1[TRK_CV2_NX];         /* u (columns) */
+    trk_real pc[TRK_CV2_NX * TRK_CV2_NX];             /* P_c (rows; the upper triangle is used) */
+};
+
+TRK_INLINE void trk_i_pda_gain_cv2(const struct trk_i_pda_pred *pr, struct trk_i_cv2_gain *g)
 {
     enum { N = TRK_CV2_NX };
     const trk_real *p = pr->p, *r = pr->r, *li = pr->inn->s_chol_inv;
     const trk_real m00 = li[0], m10 = li[2], m11 = li[3]; /* L^-1 */
-    const trk_real zx = pr->inn->z_pred[0], zy = pr->inn->z_pred[1];
-    /* the whitened moments B, sy, and W about ybar in a second pass
-     * (trk_i_pda_shared_sums) */
-    trk_real bsum = 0, sy0 = 0, sy1 = 0, w00 = 0, w01 = 0, w11 = 0;
-    for (size_t i = 0; i < s->n; i++) {
-        const trk_real b = s->w[i];
-        if (b == 0) continue; /* (outside the gate; its y may be infinite) */
-        const trk_real n0 = s->z[2 * i] - zx, n1 = s->z[2 * i + 1] - zy;
-        bsum += b;
-        sy0 += b * (m00 * n0);
-        sy1 += b * (m10 * n0 + m11 * n1);
-    }
-    const trk_real inv_b = bsum > 0 ? 1 / bsum : 0, yb0 = sy0 * inv_b, yb1 = sy1 * inv_b;
-    for (size_t i = 0; i < s->n; i++) {
-        const trk_real b = s->w[i];
-        if (b == 0) continue;
-        const trk_real n0 = s->z[2 * i] - zx, n1 = s->z[2 * i + 1] - zy;
-        const trk_real y0 = m00 * n0 - yb0, y1 = m10 * n0 + m11 * n1 - yb1, by0 = b * y0;
-        w00 += by0 * y0;
-        w01 += by0 * y1;
-        w11 += b * y1 * y1;
-    }
-    /* u = P H' L^-T, K = u L^-1, the moves dxbar = u sy and u ybar */
-    trk_real u0[N], u1[N], k0[N], k1[N], dx[N], d[N];
+    trk_real ph0[N], ph1[N], k0[N], k1[N], e0[N], e1[N];
     for (int a = 0; a < N; a++) {
-        const trk_real h0 = p[a * N + TRK_CV2_X], h1 = p[a * N + TRK_CV2_Y];
-        u0[a] = h0 * m00;
-        u1[a] = h0 * m10 + h1 * m11;
-        k0[a] = u0[a] * m00 + u1[a] * m10;
-        k1[a] = u1[a] * m11;
-        dx[a] = u0[a] * sy0 + u1[a] * sy1;
-        d[a] = dx[a] * inv_b - dx[a]; /* u ybar - dxbar */
-    }
-    /* Joseph: A = P - K (P H')', E = A H' - K R (trk_i_joseph_upper) */
-    trk_real e0[N], e1[N], ph0[N], ph1[N];
-    for (int a = 0; a < N; a++) {
-        ph0[a] = p[a * N + TRK_CV2_X];
-        ph1[a] = p[a * N + TRK_CV2_Y];
+        ph0[a] = p[TRK_CV2_X * N + a]; /* P H' from the rows of P (symmetric) */
+        ph1[a] = p[TRK_CV2_Y * N + a];
+        g->u0[a] = ph0[a] * m00;
+        g->u1[a] = ph0[a] * m10 + ph1[a] * m11;
+        k0[a] = g->u0[a] * m00 + g->u1[a] * m10;
+        k1[a] = g->u1[a] * m11;
     }
     for (int a = 0; a < N; a++) {
         const trk_real a0 = ph0[a] - (k0[a] * ph0[TRK_CV2_X] + k1[a] * ph1[TRK_CV2_X]);
@@ -302,23 +446,42 @@ TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const str
         e0[a] = a0 - (k0[a] * r[0] + k1[a] * r[2]);
         e1[a] = a2 - (k0[a] * r[1] + k1[a] * r[3]);
     }
-    /* P = beta0 (P- + dxbar dxbar') + B P_c + u W u' + B d d' (B = 0: W,
-     * dxbar and d are 0), with P_c = A - E K', as one sum of rank-one
-     * terms per entry: whole rows (they vectorise), then the upper
-     * triangle mirrored */
-    const trk_real c_p = beta0 + bsum;
-    for (int a = 0; a < N; a++) {
-        const trk_real c_k0 = bsum * k0[a], c_k1 = bsum * k1[a], c_e0 = bsum * e0[a], c_e1 = bsum * e1[a];
-        const trk_real c_dx = beta0 * dx[a], c_d = bsum * d[a];
-        const trk_real c_u0 = u0[a] * w00 + u1[a] * w01, c_u1 = u0[a] * w01 + u1[a] * w11;
+    for (int a = 0; a < N; a++) { /* whole rows (they vectorise) */
+        const trk_real ka0 = k0[a], ka1 = k1[a], ea0 = e0[a], ea1 = e1[a];
         for (int b = 0; b < N; b++)
-            acc[a * N + b] = c_p * p[a * N + b] - (c_k0 * ph0[b] + c_k1 * ph1[b]) - (c_e0 * k0[b] + c_e1 * k1[b]) +
-                             (c_dx * dx[b] + c_d * d[b]) + (c_u0 * u0[b] + c_u1 * u1[b]);
+            g->pc[a * N + b] = p[a * N + b] - (ka0 * ph0[b] + ka1 * ph1[b]) - (ea0 * k0[b] + ea1 * k1[b]);
     }
+}
+
+/* trk_i_pda_combine for the CV path, from the gain part *g and the
+ * moments *m. */
+TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const struct trk_i_cv2_gain *g,
+                                      const struct trk_i_cv2_moments *m, trk_real beta0, trk_real *x_new,
+                                      trk_real *acc)
+{
+    enum { N = TRK_CV2_NX };
+    const trk_real *p = pr->p;
+    const trk_real bsum = m->b, yb0 = m->y0, yb1 = m->y1;
+    /* The moves: u ybar, dxbar = B u ybar, and d = u ybar - dxbar; their
+     * terms beta0 dxbar dxbar' + B d d' = c (u ybar)(u ybar)' join u W u'
+     * as u W' u', W' = W + c ybar ybar' (c >= 0) */
+    const trk_real c = bsum * (beta0 * bsum + (1 - bsum) * (1 - bsum));
+    const trk_real w00 = m->w00 + c * yb0 * yb0, w01 = m->w01 + c * yb0 * yb1, w11 = m->w11 + c * yb1 * yb1;
+    trk_real v0[N], v1[N];
     for (int a = 0; a < N; a++) {
-        x_new[a] = pr->x[a] + dx[a];
-        for (int b = a + 1; b < N; b++) acc[b * N + a] = acc[a * N + b];
+        x_new[a] = pr->x[a] + bsum * (g->u0[a] * yb0 + g->u1[a] * yb1);
+        v0[a] = g->u0[a] * w00 + g->u1[a] * w01; /* u W' */
+        v1[a] = g->u0[a] * w01 + g->u1[a] * w11;
     }
+    /* P = beta0 P- + B P_c + u W' u' (B = 0: W' = 0): whole rows, then the
+     * upper triangle mirrored */
+    for (int a = 0; a < N; a++) {
+        const trk_real va0 = v0[a], va1 = v1[a];
+        for (int b = 0; b < N; b++)
+            acc[a * N + b] = beta0 * p[a * N + b] + bsum * g->pc[a * N + b] + (va0 * g->u0[b] + va1 * g->u1[b]);
+    }
+    for (int a = 0; a < N; a++)
+        for (int b = a + 1; b < N; b++) acc[b * N + a] = acc[a * N + b];
 }
 
 /* The PDA state and covariance update as the moment match of a Gaussian
@@ -336,13 +499,14 @@ TRK_INLINE void trk_i_pda_combine(const struct trk_i_pda_pred *pr, const struct 
                                   trk_real beta0, trk_real *x_new, trk_real *acc)
 {
     const int nx = pr->nx, nz = pr->nz;
-#if !TRK_SIZE_OPT /* size builds keep the general code alone */
-    if (nx == TRK_CV2_NX && nz == TRK_CV2_NZ && s->n_shared == s->n && pr->sel && pr->sel[0] == TRK_CV2_X &&
-        pr->sel[1] == TRK_CV2_Y) {
-        trk_i_pda_combine_cv2(pr, s, beta0, x_new, acc);
+    if (trk_i_pda_is_cv2(pr, s)) {
+        struct trk_i_cv2_gain g;
+        struct trk_i_cv2_moments m;
+        trk_i_pda_gain_cv2(pr, &g);
+        trk_i_pda_moments_cv2(pr, s, trk_i_pda_arg_max(s->n, s->w), &m);
+        trk_i_pda_combine_cv2(pr, &g, &m, beta0, x_new, acc);
         return;
     }
-#endif
     trk_real u[TRK_MAX_STATE * TRK_MAX_MEAS], sy[TRK_MAX_MEAS], w[TRK_MAX_MEAS * TRK_MAX_MEAS];
     trk_real dxbar[TRK_MAX_STATE], d[TRK_MAX_STATE];
     const trk_real bsum = trk_i_pda_shared_sums(pr, s, sy, w, acc); /* acc = pc_sum first */
@@ -390,8 +554,8 @@ TRK_INLINE trk_status trk_i_pda_check_posterior(int nx, const trk_real *x, const
     for (int a = 0; a < nx; a++) finite &= isfinite(x[a]) != 0;
 #if TRK_SIZE_OPT
     const trk_status st = trk_i_spd(nx, p); /* out of line */
-#else
-    const trk_status st = trk_i_spd_inline(nx, p); /* unrolled at the caller's nx */
+#else /* unrolled at the caller's nx; the CV state's 4 x 4 division-free first */
+    const trk_status st = (nx == 4 && trk_i_spd4_sure(p)) ? TRK_OK : trk_i_spd_inline(nx, p);
 #endif
     if (finite && st == TRK_OK) return TRK_OK;
     const trk_status why = trk_i_pda_check(nx, x, p);
@@ -411,6 +575,18 @@ TRK_INLINE void trk_i_pda_clutter(const struct trk_pda *pda, const struct trk_i_
     o->e_sum = 0;
 }
 
+/* The posterior (x, P) checked (trk_i_pda_check_posterior), then written
+ * over the prediction pr->x, pr->p; left untouched on a failure. */
+TRK_INLINE trk_status trk_i_pda_commit(const struct trk_i_pda_pred *pr, const trk_real *x, const trk_real *p)
+{
+    const int nx = pr->nx;
+    const trk_status st = trk_i_pda_check_posterior(nx, x, p);
+    if (st != TRK_OK) return st;
+    for (int a = 0; a < nx; a++) pr->x[a] = x[a];
+    for (int a = 0; a < nx * nx; a++) pr->p[a] = p[a];
+    return TRK_OK;
+}
+
 /* The posterior for given weights (s->w = beta_i, beta0), checked, written
  * over the prediction pr->x, pr->p: TRK_E_NAN / TRK_E_NOT_SPD for a
  * posterior that is not finite or not positive definite (its factorisation
@@ -419,14 +595,9 @@ TRK_INLINE void trk_i_pda_clutter(const struct trk_pda *pda, const struct trk_i_
 TRK_INLINE trk_status trk_i_pda_update_beta(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
                                             trk_real beta0)
 {
-    const int nx = pr->nx;
     trk_real x[TRK_MAX_STATE], acc[TRK_MAX_STATE * TRK_MAX_STATE];
     trk_i_pda_combine(pr, s, beta0, x, acc);
-    const trk_status st = trk_i_pda_check_posterior(nx, x, acc);
-    if (st != TRK_OK) return st;
-    for (int a = 0; a < nx; a++) pr->x[a] = x[a];
-    for (int a = 0; a < nx * nx; a++) pr->p[a] = acc[a];
-    return TRK_OK;
+    return trk_i_pda_commit(pr, x, acc);
 }
 
 /* One track's PDA over its gated set *s (CONVENTIONS "PDA"): lambda (given,
@@ -442,7 +613,17 @@ TRK_INLINE trk_status trk_i_pda_update_set(const struct trk_pda *pda, const stru
         for (size_t i = 0; i < s->n; i++) s->w[i] = 0;
         return TRK_OK;
     }
-    o->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, o->lambda), s->n, s->w, o);
+    const trk_real log_e0 = trk_i_pda_log_e0(pda, o->lambda);
+    if (trk_i_pda_is_cv2(pr, s)) { /* the Joseph part first, then the weights and their moments */
+        struct trk_i_cv2_gain g;
+        struct trk_i_cv2_moments m;
+        trk_real x[TRK_CV2_NX], acc[TRK_CV2_NX * TRK_CV2_NX];
+        trk_i_pda_gain_cv2(pr, &g);
+        o->beta0 = trk_i_pda_normalise_cv2(log_e0, pr, s, o, &m);
+        trk_i_pda_combine_cv2(pr, &g, &m, o->beta0, x, acc);
+        return trk_i_pda_commit(pr, x, acc);
+    }
+    o->beta0 = trk_i_pda_normalise(log_e0, s->n, s->w, s->w_max, o);
     return trk_i_pda_update_beta(pr, s, o->beta0);
 }
 

@@ -13,11 +13,17 @@
 #include "tracker_impl.h"
 
 /* What initiation knows of the table within one scan (initiation only
- * fills slots): no free slot below free_from; no_tentative once a search
- * found the table full of confirmed (or terminated) tracks. */
+ * fills slots, and changes no other track's quality): no free slot below
+ * free_from; no_tentative once a search found the table full of confirmed
+ * (or terminated) tracks; weakest (when >= 0) the full table's weakest
+ * tentative track, of quality q_weakest, kept until it is replaced (issue
+ * 19: a refused start then costs no search of the table, so that a full
+ * table's initiation is not tracks x detections). */
 struct slots {
     size_t free_from;
     int no_tentative;
+    long weakest; /* -1: not known */
+    trk_real q_weakest;
 };
 
 /* What bounds every velocity gate of a scan: no candidate farther than
@@ -62,7 +68,7 @@ static void detection_r(const struct trk_tracker *t, const struct trk_scan *scan
  * candidates. */
 static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
-    struct slots sl = {0, 0};
+    struct slots sl = {0, 0, -1, 0};
     uint16_t *idx = t->ws.cand; /* the gated-set scratch is free by now */
     size_t n = 0;
     for (size_t j = 0; j < t->ws.n_valid; j++)
@@ -124,6 +130,7 @@ static trk_real quality(const struct trk_tracker *t, const struct trk_track *tr)
 static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep)
 {
     if (t->n_live < TRK_MAX_TRACKS) return 1;
+    if (sl->weakest >= 0) return 1;
     if (!sl->no_tentative) { /* not known yet: look */
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
             if (t->track[i].status == TRK_TRACK_TENTATIVE) return 1;
@@ -145,16 +152,18 @@ static struct trk_track *take_slot(struct trk_tracker *t, struct slots *sl, trk_
                 t->n_live++;
                 return &t->track[i];
             }
-    struct trk_track *weakest = NULL;
-    trk_real q_weakest = 0;
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
-        struct trk_track *tr = &t->track[i];
-        if (tr->status != TRK_TRACK_TENTATIVE) continue;
-        const trk_real qi = quality(t, tr);
-        if (!weakest || qi < q_weakest) weakest = tr, q_weakest = qi;
+    if (sl->weakest < 0) { /* the first slot in series since the last replacement */
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *tr = &t->track[i];
+            if (tr->status != TRK_TRACK_TENTATIVE) continue;
+            const trk_real qi = quality(t, tr);
+            if (sl->weakest < 0 || qi < sl->q_weakest) sl->weakest = (long)i, sl->q_weakest = qi;
+        }
+        sl->no_tentative = sl->weakest < 0;
     }
-    sl->no_tentative = weakest == NULL;
-    if (weakest && q_weakest < q) {
+    if (sl->weakest >= 0 && sl->q_weakest < q) {
+        struct trk_track *weakest = &t->track[sl->weakest];
+        sl->weakest = -1; /* its new track's quality is q: search again next time */
         rep->n_replaced++;
         return weakest;
     }

@@ -107,6 +107,8 @@ static void joint_set(struct trk_tracker *t, const struct trk_scan *scan, size_t
     const size_t off = t->ws.pair_first[k], n = (size_t)(t->ws.pair_first[k + 1] - off);
     set->n = set->m_gated = n;
     set->n_shared = 0;
+    set->w_max = -(trk_real)INFINITY; /* (w: marginals, not normalised here) */
+    set->w_arg = 0;
     set->z = t->ws.u.set.z;
     set->w = t->ws.w + off;
     set->r_own = t->ws.u.set.r_own;

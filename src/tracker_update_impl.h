@@ -110,8 +110,10 @@ static trk_status track_pda(struct trk_tracker *t, const struct trk_scan *scan, 
 #if TRK_WITH_IMM
     if (imm_on(t)) {
         trk_i_pda_clutter(pda, &pr->pp, set, out);
-        if (set->m_gated > 0)
-            out->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, out->lambda), set->n, set->w, out);
+        if (set->m_gated > 0) {
+            trk_i_pda_find_w_max(set);
+            out->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, out->lambda), set->n, set->w, set->w_max, out);
+        }
         return imm_update(t, scan, set, out->beta0, pr);
     }
 #endif
@@ -186,7 +188,7 @@ static void gate_ellipse(struct trk_tracker *t, struct gate *gt, size_t j, const
     const trk_real d2 = trk_i_mahalanobis2(NZ, l_inv, nu);
     if (!gate_inside(t, gt, j, d2)) return;
     const size_t n = gate_add(t, gt, j, r_j);
-    if (n < gt->cap) gt->set->w[n] = trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]);
+    if (n < gt->cap) trk_i_pda_set_w(gt->set, n, trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]));
 }
 
 /* Detection j (its R_j when r_j is not NULL) into the gated set: its index
@@ -233,6 +235,8 @@ static struct gate gate_begin(struct trk_tracker *t, const struct trk_track *tr,
     struct gate gt = {pda, pda->gamma, tr->status == TRK_TRACK_CONFIRMED && excl > pda->gamma ? excl : pda->gamma,
                       set, t->ws.cand + off, TRK_I_PAIRS - off, 0};
     set->n = set->n_shared = set->m_gated = 0;
+    set->w_max = -(trk_real)INFINITY;
+    set->w_arg = 0;
     set->z = t->ws.u.set.z;
     set->w = t->ws.w + off;
     set->r_own = t->ws.u.set.r_own;

@@ -65,8 +65,10 @@ struct trk_pda_report {
     trk_real lambda;       /* clutter density used */
 };
 
-/* One PDA update of (x, P), given the predicted state and covariance (in) and
- * m detections z (m x nz, row-major). Writes the posterior into x and P.
+/* One PDA update of (x, P), given the predicted state and covariance (in;
+ * P symmetric, as every covariance: trk_cv2_predict and trk_kalman_predict
+ * keep it exactly so) and m detections z (m x nz, row-major). Writes the
+ * posterior into x and P.
  *   h, r       measurement matrix (nz x nx) and noise covariance (nz x nz)
  *   log_lr     m amplitude log-likelihood ratios, or NULL (PDAF)
  *   beta       m outputs: association probabilities (0 outside the gate);
@@ -80,7 +82,16 @@ struct trk_pda_report {
  *
  * This is the one per-track PDA of the library: the tracker runs the same
  * code for each track (with detections that carry their own covariance in
- * the same gated set), and the simulators call it. */
+ * the same gated set), and the simulators call it.
+ *
+ * The 2-D CV model's path (issue 19): nx = 4, nz = 2 and an H that selects
+ * x and y of the state [x, vx, y, vy] (trk_cv2_h, recognised by its address
+ * without a scan, or an equal array), with no detection of its own
+ * covariance, run a copy written over the model's fixed indices, within
+ * 1.2-1.3x of a hand-written loop of the same arithmetic (README
+ * "Benchmarks"). There is no separate entry point to choose: every other
+ * model takes the general code. Builds with TRK_SIZE_OPT (the -Os default)
+ * keep the general code alone. */
 TRK_NODISCARD trk_status trk_pda_update(const struct trk_pda *pda, int nx, const trk_real *h,
                                         const trk_real *r, trk_real *x, trk_real *p, size_t m,
                                         const trk_real *z, const trk_real *log_lr, trk_real *beta,

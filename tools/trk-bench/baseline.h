@@ -21,5 +21,8 @@ struct baseline_pda {
  * beta[0, m) the detections' weights (0 outside the gate). */
 void baseline_pda_cv2(const struct baseline_pda *b, trk_real x[4], trk_real p[16], size_t m,
                       const trk_real *z, trk_real *beta);
+/* The same loop compiled at -O2 -funroll-loops (baseline_pda_o2.c). */
+void baseline_pda_cv2_o2(const struct baseline_pda *b, trk_real x[4], trk_real p[16], size_t m,
+                         const trk_real *z, trk_real *beta);
 
 #endif

@@ -4,6 +4,9 @@
  *                     trk_pda_update), alternating in the same run with
  *                     pda_update_m<m>_baseline, the hand-written loop of
  *                     baseline_pda.c, and their ratio pda_update_m<m>_vs_baseline;
+ *                     and pda_update_m<m>_baseline_o2 / _vs_baseline_o2
+ *                     the same loop compiled at -O2 -funroll-loops
+ *                     (baseline_pda_o2.c: gcc 12's -O3 slows the float loop);
  *                     pda_update_m<m>_baseline_rel_diff is the largest
  *                     difference of the two posteriors (x, P) relative to
  *                     the largest |value|: the same arithmetic
@@ -63,6 +66,15 @@ static void baseline_once(void *arg)
     bench_sink((double)j->x[TRK_CV2_X]);
 }
 
+static void baseline_o2_once(void *arg)
+{
+    struct pda_job *j = arg;
+    memcpy(j->x, j->x0, sizeof j->x);
+    memcpy(j->p, j->p0, sizeof j->p);
+    baseline_pda_cv2_o2(&j->base, j->x, j->p, j->m, j->z, j->beta);
+    bench_sink((double)j->x[TRK_CV2_X]);
+}
+
 /* max |a - b| over x and P relative to max |a| */
 static double rel_diff(void (*one)(void *), void (*two)(void *), struct pda_job *j)
 {
@@ -84,14 +96,18 @@ static double rel_diff(void (*one)(void *), void (*two)(void *), struct pda_job 
 }
 
 /* name, name_baseline, name_vs_baseline: fn and base alternating, 5 times
- * each, the fastest of each */
-static void time_vs_baseline(const char *name, void (*fn)(void *), void (*base)(void *), void *arg)
+ * each, the fastest of each; base_o2 (not NULL) the same loop at -O2, with
+ * name_baseline_o2 and name_vs_baseline_o2 */
+static void time_vs_baseline(const char *name, void (*fn)(void *), void (*base)(void *), void (*base_o2)(void *),
+                             void *arg)
 {
-    double t_fn = 1e300, t_base = 1e300;
+    double t_fn = 1e300, t_base = 1e300, t_o2 = 1e300;
     for (int rep = 0; rep < 5; rep++) {
         const double a = bench_time_ns(fn, arg, 3), b = bench_time_ns(base, arg, 3);
+        const double c = base_o2 ? bench_time_ns(base_o2, arg, 3) : 1e300;
         if (a < t_fn) t_fn = a;
         if (b < t_base) t_base = b;
+        if (c < t_o2) t_o2 = c;
     }
     char what[96];
     bench_print(name, t_fn, "ns");
@@ -99,6 +115,11 @@ static void time_vs_baseline(const char *name, void (*fn)(void *), void (*base)(
     bench_print(what, t_base, "ns");
     snprintf(what, sizeof what, "%s_vs_baseline", name);
     bench_print(what, t_fn / t_base, "x");
+    if (!base_o2) return;
+    snprintf(what, sizeof what, "%s_baseline_o2", name);
+    bench_print(what, t_o2, "ns");
+    snprintf(what, sizeof what, "%s_vs_baseline_o2", name);
+    bench_print(what, t_fn / t_o2, "x");
 }
 
 TRK_BENCH(pda_update)
@@ -128,7 +149,7 @@ TRK_BENCH(pda_update)
         }
         char name[64], what[96];
         snprintf(name, sizeof name, "pda_update_m%zu", j.m);
-        time_vs_baseline(name, pda_once, baseline_once, &j);
+        time_vs_baseline(name, pda_once, baseline_once, baseline_o2_once, &j);
         snprintf(what, sizeof what, "%s_baseline_rel_diff", name);
         bench_print(what, rel_diff(pda_once, baseline_once, &j), "-");
     }
