@@ -57,23 +57,20 @@ static void pda_once(void *arg)
     bench_sink((double)j->x[TRK_CV2_X] + (double)st);
 }
 
-static void baseline_once(void *arg)
+typedef void baseline_fn(const struct baseline_pda *b, trk_real x[4], trk_real p[16], size_t m,
+                         const trk_real *z, trk_real *beta);
+
+/* one baseline update from the job's prior */
+static void baseline_run(struct pda_job *j, baseline_fn *fn)
 {
-    struct pda_job *j = arg;
     memcpy(j->x, j->x0, sizeof j->x);
     memcpy(j->p, j->p0, sizeof j->p);
-    baseline_pda_cv2(&j->base, j->x, j->p, j->m, j->z, j->beta);
+    fn(&j->base, j->x, j->p, j->m, j->z, j->beta);
     bench_sink((double)j->x[TRK_CV2_X]);
 }
 
-static void baseline_o2_once(void *arg)
-{
-    struct pda_job *j = arg;
-    memcpy(j->x, j->x0, sizeof j->x);
-    memcpy(j->p, j->p0, sizeof j->p);
-    baseline_pda_cv2_o2(&j->base, j->x, j->p, j->m, j->z, j->beta);
-    bench_sink((double)j->x[TRK_CV2_X]);
-}
+static void baseline_once(void *arg) { baseline_run(arg, baseline_pda_cv2); }
+static void baseline_o2_once(void *arg) { baseline_run(arg, baseline_pda_cv2_o2); }
 
 /* max |a - b| over x and P relative to max |a| */
 static double rel_diff(void (*one)(void *), void (*two)(void *), struct pda_job *j)
