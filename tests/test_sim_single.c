@@ -20,6 +20,22 @@
 #include "trk/crlb.h"
 #include "trk/mre.h"
 
+/* The heavy-clutter Brekke model both tests below run: Table I, K clutter
+ * nu 1, SNR 10 dB, P_FA 0.1 in 0.25 m^2 cells, 60 scans, this seed; amp
+ * is its amplitude model (st_amp_free after). */
+static void heavy_brekke_model(struct st_amp *amp, uint64_t seed, struct st_model *m)
+{
+    char err[256];
+    if (st_amp_init(amp, TRK_AMP_K, 1, 10, 0.1, 0, 64, err, sizeof err)) fail_msg("%s", err);
+    struct st_params p;
+    st_params_brekke(&p);
+    p.amp = &amp->m;
+    p.lambda_per_m2 = 0.1 / 0.25;
+    p.n_scans = 60;
+    p.seed = seed;
+    if (st_model_init(m, &p, err, sizeof err)) fail_msg("%s", err);
+}
+
 /* Brekke Table I model, K clutter nu 1, SNR 10 dB, P_FA 0.1, cell 0.25 m^2:
  * the PDAF loses nearly every track, the PDAFAI most of them keep (paper:
  * 9549 vs 721 of 10000 with its cell). */
@@ -27,16 +43,8 @@ static void test_brekke_pdafai_loses_fewer(void **state)
 {
     (void)state;
     struct st_amp amp;
-    char err[256];
-    if (st_amp_init(&amp, TRK_AMP_K, 1, 10, 0.1, 0, 64, err, sizeof err)) fail_msg("%s", err);
-    struct st_params p;
-    st_params_brekke(&p);
-    p.amp = &amp.m;
-    p.lambda_per_m2 = 0.1 / 0.25;
-    p.n_scans = 60;
-    p.seed = 2024;
     struct st_model m;
-    if (st_model_init(&m, &p, err, sizeof err)) fail_msg("%s", err);
+    heavy_brekke_model(&amp, 2024, &m);
     struct st_ws ws = {NULL, 0, NULL, 0};
     const int runs = 60;
     int lost[2] = {0, 0}, failed = 0;
@@ -149,16 +157,8 @@ static void test_brekke_err_by_scan(void **state)
 {
     (void)state;
     struct st_amp amp;
-    char err[256];
-    if (st_amp_init(&amp, TRK_AMP_K, 1, 10, 0.1, 0, 64, err, sizeof err)) fail_msg("%s", err);
-    struct st_params p;
-    st_params_brekke(&p);
-    p.amp = &amp.m;
-    p.lambda_per_m2 = 0.1 / 0.25;
-    p.n_scans = 60;
-    p.seed = 5;
     struct st_model m;
-    if (st_model_init(&m, &p, err, sizeof err)) fail_msg("%s", err);
+    heavy_brekke_model(&amp, 5, &m);
     struct st_ws ws = {NULL, 0, NULL, 0};
     double e[60];
     int stopped = 0;
