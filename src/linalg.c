@@ -1,6 +1,7 @@
 /* linalg.c - public wrappers of the small-matrix kernels (linalg_impl.h). */
 #include "trk/linalg.h"
 
+#define TRK_I_LINALG_DEFINE /* the external copies of the loop kernels in size builds */
 #include "linalg_impl.h"
 
 #define DIM_OK(n) ((n) >= 1 && (n) <= TRK_MAX_STATE)

@@ -9,6 +9,24 @@
 #include "internal.h"
 #include "trk/types.h"
 
+/* The loop kernels marked TRK_I_LOOP_KERNEL (symmetrize, chol,
+ * tril_inverse, tril_mul) are inline everywhere, except in size builds
+ * (TRK_SIZE_OPT): there the compiler kept one static copy per file that
+ * calls them (tracker.c, pda.c, kalman.c), so linalg.c defines the one
+ * external copy (TRK_I_LINALG_DEFINE) and the others see prototypes
+ * (measured: 0.9 KB of the Cortex-M4F library). */
+#if !TRK_SIZE_OPT
+#define TRK_I_LOOP_KERNEL TRK_INLINE
+#else
+#ifdef TRK_I_LINALG_DEFINE
+#define TRK_I_LOOP_KERNEL
+#endif
+void trk_i_symmetrize(int n, trk_real *a);
+trk_status trk_i_chol(int n, const trk_real *a, trk_real *l);
+void trk_i_tril_inverse(int n, const trk_real *l, trk_real *m);
+void trk_i_tril_mul(int n, const trk_real *m, const trk_real *v, trk_real *y);
+#endif
+
 TRK_INLINE void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_real *b,
                                  trk_real *c)
 {
@@ -31,7 +49,8 @@ TRK_INLINE void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const 
         }
 }
 
-TRK_INLINE void trk_i_symmetrize(int n, trk_real *a)
+#ifdef TRK_I_LOOP_KERNEL
+TRK_I_LOOP_KERNEL void trk_i_symmetrize(int n, trk_real *a)
 {
     for (int i = 0; i < n; i++)
         for (int j = i + 1; j < n; j++) {
@@ -43,7 +62,7 @@ TRK_INLINE void trk_i_symmetrize(int n, trk_real *a)
 
 /* Cholesky-Banachiewicz. Rejects a pivot that is not > 0 or not finite
  * (a NaN pivot fails the comparison). */
-TRK_INLINE trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
+TRK_I_LOOP_KERNEL trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
 {
     for (int i = 0; i < n; i++) {
         for (int j = 0; j <= i; j++) {
@@ -60,6 +79,7 @@ TRK_INLINE trk_status trk_i_chol(int n, const trk_real *a, trk_real *l)
     }
     return TRK_OK;
 }
+#endif
 
 /* Is the symmetric A (n x n, its lower triangle read) positive definite?
  * TRK_OK or TRK_E_NOT_SPD, by an LDL' factorisation without square roots:
@@ -159,8 +179,9 @@ TRK_INLINE void trk_i_chol_backward(int n, const trk_real *l, const trk_real *y,
     }
 }
 
+#ifdef TRK_I_LOOP_KERNEL
 /* Inverse of a lower-triangular L (non-zero diagonal): M = L^-1, lower. */
-TRK_INLINE void trk_i_tril_inverse(int n, const trk_real *l, trk_real *m)
+TRK_I_LOOP_KERNEL void trk_i_tril_inverse(int n, const trk_real *l, trk_real *m)
 {
     for (int j = 0; j < n; j++) {
         for (int i = 0; i < j; i++) m[i * n + j] = 0;
@@ -174,7 +195,7 @@ TRK_INLINE void trk_i_tril_inverse(int n, const trk_real *l, trk_real *m)
 }
 
 /* y = M v for a lower-triangular M. */
-TRK_INLINE void trk_i_tril_mul(int n, const trk_real *m, const trk_real *v, trk_real *y)
+TRK_I_LOOP_KERNEL void trk_i_tril_mul(int n, const trk_real *m, const trk_real *v, trk_real *y)
 {
     for (int i = n - 1; i >= 0; i--) {
         trk_real s = 0;
@@ -182,6 +203,7 @@ TRK_INLINE void trk_i_tril_mul(int n, const trk_real *m, const trk_real *v, trk_
         y[i] = s;
     }
 }
+#endif
 
 /* y = M' v for a lower-triangular M. */
 TRK_INLINE void trk_i_tril_mul_t(int n, const trk_real *m, const trk_real *v, trk_real *y)

@@ -16,7 +16,7 @@
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
-static void order_by_x(struct trk_tracker *t);
+static void order_by_grid(struct trk_tracker *t);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 #if TRK_WITH_JOINT
 static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
@@ -145,8 +145,8 @@ static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, s
 }
 
 /* The valid detections into the workspace: those with the sensor's
- * covariance first [0, n_shared), in x order (gating's spatial index,
- * x_window in tracker_update_impl.h), own-covariance ones after, in scan
+ * covariance first [0, n_shared), in gating's 2-D index (ws.grid,
+ * src/grid_impl.h), own-covariance ones after, in scan
  * order; rejections are counted. The amplitudes (dB) are then doubled (see
  * clutter_look in tracker_update_impl.h). */
 static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
@@ -162,7 +162,7 @@ static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, 
             if ((scan->detections[i].has_cov != 0) == own) load_detection(t, scan, i, &au, rep);
         if (!own) t->ws.n_shared = t->ws.n_valid;
     }
-    order_by_x(t);
+    order_by_grid(t);
     for (size_t k = 0; k + 1 < t->ws.n_amp; k++) t->ws.amp_db[t->ws.n_amp + k] = t->ws.amp_db[k];
 }
 
@@ -177,16 +177,16 @@ static void ws_move(struct trk_tracker *t, size_t j, size_t k)
     t->ws.amp_pos[j] = t->ws.amp_pos[k];
 }
 
-/* The shared-covariance group [0, n_shared) sorted by x, once per scan
- * (sort_by_x: O(n) for spread positions): position j takes detection
- * idx[j], cycle by cycle in place, with used[] (all 0 at load) marking the
- * positions filled. */
-static void order_by_x(struct trk_tracker *t)
+/* The shared-covariance group [0, n_shared) in gating's 2-D index, once
+ * per scan (ws.grid, grid_order: O(n) for spread positions): position j
+ * takes detection idx[j], cycle by cycle in place, with used[] (all 0 at
+ * load) marking the positions filled. */
+static void order_by_grid(struct trk_tracker *t)
 {
     const size_t n = t->ws.n_shared;
     uint16_t *idx = t->ws.cand; /* free until the first track is gated */
     for (size_t j = 0; j < n; j++) idx[j] = (uint16_t)j;
-    sort_by_x(t, idx, n);
+    grid_order(t, t->ws.x, t->ws.y, idx, n, &t->ws.grid, t->ws.cell_end);
     for (size_t i = 0; i < n; i++) {
         if (t->ws.used[i] || idx[i] == i) continue;
         const trk_real x = t->ws.x[i], y = t->ws.y[i], llr = t->ws.log_lr[i];
@@ -362,53 +362,66 @@ static void merge_all_pairs(struct trk_tracker *t, struct trk_scan_report *rep)
             merge_pair(t, &t->track[i], &t->track[j], rep);
 }
 
-/* The pairs of live tracks that may_duplicate can pass, by a sweep over the
- * tracks in x order (a pair's |dx| is at most sqrt(g (P_xx + max P_xx))),
- * as (i, j) slot pairs (i < j) sorted, into ws.u.merge.pair[0, 2 n): n, or
- * -1 when they do not fit. O(tracks log tracks + pairs) for tracks spread
- * over the area, instead of tracks^2. */
+/* The pairs of live tracks that may_duplicate can pass, by box queries in a
+ * 2-D index of the tracks' positions (a pair's |dx| is at most sqrt(g
+ * (P_xx + max P_xx)), |dy| likewise), as (i, j) slot pairs (i < j) sorted,
+ * into ws.u.merge.pair[0, 2 n): n, or -1 when they do not fit. O(tracks +
+ * pairs) for tracks spread over the area, instead of tracks^2. Needs 2
+ * TRK_MAX_TRACKS <= TRK_I_PAIRS and TRK_MAX_TRACKS <= TRK_MAX_DETECTIONS
+ * (the positions in ws.w, the cells' ends in ws.cell_end, gating's index
+ * no longer needed). */
 static long merge_candidates(struct trk_tracker *t)
 {
     const size_t cap = sizeof t->ws.u.merge.pair / sizeof t->ws.u.merge.pair[0] / 2;
     const trk_real g = t->params.merge_gate_d2;
     uint16_t *idx = t->ws.cand;
-    trk_real *key = t->ws.w, pmax = 0; /* the pair workspace is free between the updates and initiation */
+    trk_real *kx = t->ws.w, *ky = t->ws.w + TRK_MAX_TRACKS; /* free between the updates and initiation */
+    trk_real pmax_x = 0, pmax_y = 0;
     size_t n = 0, n_pair = 0;
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
         if (is_live(&t->track[i])) {
+            const struct trk_track *a = &t->track[i];
             idx[n++] = (uint16_t)i;
-            key[i] = t->track[i].x[X];
-            if (t->track[i].p[P(X, X)] > pmax) pmax = t->track[i].p[P(X, X)];
+            kx[i] = a->x[X];
+            ky[i] = a->x[Y];
+            if (a->p[P(X, X)] > pmax_x) pmax_x = a->p[P(X, X)];
+            if (a->p[P(Y, Y)] > pmax_y) pmax_y = a->p[P(Y, Y)];
         }
-    sort_by_key(t, key, idx, n);
-    uint16_t *out = t->ws.u.merge.pair; /* after the sort: its scratch shares the union */
+    struct trk_i_grid grid;
+    grid_order(t, kx, ky, idx, n, &grid, t->ws.cell_end);
+    uint16_t *out = t->ws.u.merge.pair; /* after the index: its scratch shares the union */
     for (size_t k = 0; k < n; k++) {
         const struct trk_track *a = &t->track[idx[k]];
-        const trk_real reach = trk_sqrt(g * (a->p[P(X, X)] + pmax)) * (1 + 16 * TRK_REAL_EPS);
-        for (size_t l = k + 1; l < n && key[idx[l]] - key[idx[k]] <= reach; l++) {
-            if (!may_duplicate(a, &t->track[idx[l]], g)) continue;
-            if (n_pair == cap) return -1;
-            const uint16_t i = idx[k] < idx[l] ? idx[k] : idx[l], j = idx[k] < idx[l] ? idx[l] : idx[k];
-            size_t m = n_pair++; /* insertion in (i, j) order: the pairs are few */
-            for (; m > 0 && (out[2 * m - 2] > i || (out[2 * m - 2] == i && out[2 * m - 1] > j)); m--) {
-                out[2 * m] = out[2 * m - 2];
-                out[2 * m + 1] = out[2 * m - 1];
+        const trk_real rx = trk_sqrt(g * (a->p[P(X, X)] + pmax_x)) * (1 + 16 * TRK_REAL_EPS);
+        const trk_real ry = trk_sqrt(g * (a->p[P(Y, Y)] + pmax_y)) * (1 + 16 * TRK_REAL_EPS);
+        struct trk_i_grid_box box = trk_i_grid_box(&grid, t->ws.cell_end, a->x[X] - rx, a->x[X] + rx, a->x[Y] - ry,
+                                                   a->x[Y] + ry);
+        size_t l0, l1;
+        while (trk_i_grid_next(&box, &l0, &l1))
+            for (size_t l = l0; l < l1; l++) {
+                const uint16_t i = idx[k], j = idx[l];
+                if (i >= j || !may_duplicate(a, &t->track[j], g)) continue; /* each pair once */
+                if (n_pair == cap) return -1;
+                size_t m = n_pair++; /* insertion in (i, j) order: the pairs are few */
+                for (; m > 0 && (out[2 * m - 2] > i || (out[2 * m - 2] == i && out[2 * m - 1] > j)); m--) {
+                    out[2 * m] = out[2 * m - 2];
+                    out[2 * m + 1] = out[2 * m - 1];
+                }
+                out[2 * m] = i;
+                out[2 * m + 1] = j;
             }
-            out[2 * m] = i;
-            out[2 * m + 1] = j;
-        }
     }
     return (long)n_pair;
 }
 
 /* End the weaker of every pair of live tracks that follow one target
  * (PDA tracks sharing detections converge onto it), pair by pair in slot
- * order: the candidate pairs of the sweep (merge_candidates), or every
- * pair when there are more than the workspace holds or than the sort's
- * scratch can take (the same decisions). */
+ * order: the candidate pairs of the index (merge_candidates), or every
+ * pair when there are more than the workspace holds or than its arrays can
+ * take (the same decisions). */
 static TRK_NOINLINE void merge_duplicates(struct trk_tracker *t, struct trk_scan_report *rep)
 {
-    const long n = TRK_MAX_TRACKS <= TRK_MAX_DETECTIONS && TRK_MAX_TRACKS <= TRK_I_PAIRS ? merge_candidates(t) : -1;
+    const long n = TRK_MAX_TRACKS <= TRK_MAX_DETECTIONS && 2 * TRK_MAX_TRACKS <= TRK_I_PAIRS ? merge_candidates(t) : -1;
     const uint16_t *pair = t->ws.u.merge.pair;
     if (n < 0) {
         merge_all_pairs(t, rep);
@@ -447,6 +460,7 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     }
     t->scan_no = 0;
     t->n_cand = 0;
+    t->run_first = t->n_runs = 0;
     t->last_time_us = 0;
     {   /* seconds (<= 1e9) to microseconds with 32-bit conversions only: a
          * float -> int64 conversion is soft double on Cortex-M (__aeabi_f2lz) */

@@ -112,50 +112,70 @@ static trk_real imm_d2_own(struct trk_tracker *t, const struct trk_scan *scan, i
     return trk_i_mahalanobis2(NZ, l_inv, nu);
 }
 
+/* An IMM track's models' gates: per model (of weight > 0) the half-widths
+ * of its bounding box of d2 <= g (-1: the model bounds nothing), and the
+ * box that bounds them all. */
+struct imm_box {
+    int n_models, tentative;
+    trk_real wx[TRK_MAX_MODELS], wy[TRK_MAX_MODELS];
+    trk_real lo_x, hi_x, lo_y, hi_y;
+};
+
+/* Workspace detection j into the IMM track's set when some model's
+ * ellipse d2 <= gamma holds it (a detection of the shared group only
+ * inside the box of all the models' boxes). */
+static void imm_gate_one(struct trk_tracker *t, const struct trk_scan *scan, struct gate *gt,
+                         const struct imm_box *b, size_t j)
+{
+    const struct trk_innovation *inn = t->ws.imm.inn;
+    const trk_real x = t->ws.x[j], y = t->ws.y[j];
+    const int own = j >= t->ws.n_shared;
+    if ((b->tentative && t->ws.used[j] == USED_CONFIRMED) ||
+        (!own && (x < b->lo_x || x > b->hi_x || y < b->lo_y || y > b->hi_y)))
+        return;
+    trk_real d2 = (trk_real)INFINITY;
+    for (int m = 0; m < b->n_models; m++) {
+        if (!(b->wx[m] >= 0)) continue;
+        const trk_real nu[NZ] = {x - inn[m].z_pred[ZX], y - inn[m].z_pred[ZY]};
+        trk_real d2_m = (trk_real)INFINITY;
+        if (own) d2_m = imm_d2_own(t, scan, m, j, gt->g);
+        else if (trk_fabs(nu[ZX]) <= b->wx[m] && trk_fabs(nu[ZY]) <= b->wy[m])
+            d2_m = trk_i_mahalanobis2(NZ, inn[m].s_chol_inv, nu);
+        if (d2_m < d2) d2 = d2_m;
+    }
+    if (!gate_inside(t, gt, j, d2)) return;
+    trk_real r_j[NZ * NZ];
+    if (own) trk_i_cov2_matrix(scan->detections[t->ws.src[j]].cov_m2, r_j); /* checked at load */
+    (void)gate_add(t, gt, j, own ? r_j : NULL);
+}
+
 /* gate() for an IMM track: the union of its models' gates, into the set
  * (no weights yet: imm_weights). A detection with the sensor's covariance
  * is tested against the models' ellipses only inside the box that bounds
- * all their bounding boxes of d2 <= g. */
+ * all their bounding boxes of d2 <= g (gating's index), then the ones with
+ * their own covariance. */
 static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan, size_t off,
                     struct trk_i_pda_set *set)
 {
     struct gate gt = gate_begin(t, tr, scan, off, set);
-    const int n = t->params.imm.n_models, tentative = tr->status == TRK_TRACK_TENTATIVE;
     const struct trk_innovation *inn = t->ws.imm.inn;
-    trk_real wx[TRK_MAX_MODELS] = {0}, wy[TRK_MAX_MODELS] = {0};
-    trk_real lo_x = TRK_REAL_MAX, hi_x = -TRK_REAL_MAX, lo_y = TRK_REAL_MAX, hi_y = -TRK_REAL_MAX;
-    for (int m = 0; m < n; m++) {
-        wx[m] = wy[m] = -1; /* a model of weight 0 bounds nothing */
+    struct imm_box b = {t->params.imm.n_models, tr->status == TRK_TRACK_TENTATIVE, {0}, {0},
+                        TRK_REAL_MAX, -TRK_REAL_MAX, TRK_REAL_MAX, -TRK_REAL_MAX};
+    for (int m = 0; m < b.n_models; m++) {
+        b.wx[m] = b.wy[m] = -1; /* a model of weight 0 bounds nothing */
         if (!(t->ws.imm.c[m] > 0)) continue;
-        wx[m] = trk_sqrt(gt.g * inn[m].s[S(ZX, ZX)]);
-        wy[m] = trk_sqrt(gt.g * inn[m].s[S(ZY, ZY)]);
-        if (inn[m].z_pred[ZX] - wx[m] < lo_x) lo_x = inn[m].z_pred[ZX] - wx[m];
-        if (inn[m].z_pred[ZX] + wx[m] > hi_x) hi_x = inn[m].z_pred[ZX] + wx[m];
-        if (inn[m].z_pred[ZY] - wy[m] < lo_y) lo_y = inn[m].z_pred[ZY] - wy[m];
-        if (inn[m].z_pred[ZY] + wy[m] > hi_y) hi_y = inn[m].z_pred[ZY] + wy[m];
+        b.wx[m] = trk_sqrt(gt.g * inn[m].s[S(ZX, ZX)]);
+        b.wy[m] = trk_sqrt(gt.g * inn[m].s[S(ZY, ZY)]);
+        if (inn[m].z_pred[ZX] - b.wx[m] < b.lo_x) b.lo_x = inn[m].z_pred[ZX] - b.wx[m];
+        if (inn[m].z_pred[ZX] + b.wx[m] > b.hi_x) b.hi_x = inn[m].z_pred[ZX] + b.wx[m];
+        if (inn[m].z_pred[ZY] - b.wy[m] < b.lo_y) b.lo_y = inn[m].z_pred[ZY] - b.wy[m];
+        if (inn[m].z_pred[ZY] + b.wy[m] > b.hi_y) b.hi_y = inn[m].z_pred[ZY] + b.wy[m];
     }
+    struct trk_i_grid_box box = ws_box(t, b.lo_x, b.hi_x, b.lo_y, b.hi_y);
     size_t j0, j1;
-    x_window(t, lo_x, hi_x, &j0, &j1); /* the shared group in the box's x range, then the own ones */
-    for (size_t j = j0 < j1 ? j0 : t->ws.n_shared; j < t->ws.n_valid; j = j + 1 == j1 ? t->ws.n_shared : j + 1) {
-        const trk_real x = t->ws.x[j], y = t->ws.y[j];
-        const int own = j >= t->ws.n_shared;
-        if ((tentative && t->ws.used[j] == USED_CONFIRMED) || (!own && (x < lo_x || x > hi_x || y < lo_y || y > hi_y)))
-            continue;
-        trk_real d2 = (trk_real)INFINITY;
-        for (int m = 0; m < n; m++) {
-            if (!(wx[m] >= 0)) continue;
-            const trk_real nu[NZ] = {x - inn[m].z_pred[ZX], y - inn[m].z_pred[ZY]};
-            trk_real d2_m = (trk_real)INFINITY;
-            if (own) d2_m = imm_d2_own(t, scan, m, j, gt.g);
-            else if (trk_fabs(nu[ZX]) <= wx[m] && trk_fabs(nu[ZY]) <= wy[m])
-                d2_m = trk_i_mahalanobis2(NZ, inn[m].s_chol_inv, nu);
-            if (d2_m < d2) d2 = d2_m;
-        }
-        if (!gate_inside(t, &gt, j, d2)) continue;
-        trk_real r_j[NZ * NZ];
-        if (own) trk_i_cov2_matrix(scan->detections[t->ws.src[j]].cov_m2, r_j); /* checked at load */
-        (void)gate_add(t, &gt, j, own ? r_j : NULL);
-    }
+    while (trk_i_grid_next(&box, &j0, &j1))
+        for (size_t j = j0; j < j1; j++) imm_gate_one(t, scan, &gt, &b, j);
+    for (size_t j = t->ws.n_shared; j < t->ws.n_valid; j++) imm_gate_one(t, scan, &gt, &b, j);
     set->m_gated = set->n;
     return gt.full;
 }

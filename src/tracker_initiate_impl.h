@@ -10,6 +10,7 @@
 
 #include <string.h>
 
+#include "grid_impl.h"
 #include "tracker_impl.h"
 
 /* What initiation knows of the table within one scan (initiation only
@@ -26,21 +27,15 @@ struct slots {
     trk_real q_weakest;
 };
 
-/* What bounds every velocity gate of a scan: no candidate farther than
- * reach_m in x from a detection can pair with it. */
-struct cand_reach {
-    trk_real reach_m;
-};
 
-static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n);
-static void sort_by_key(struct trk_tracker *t, const trk_real *key, uint16_t *idx, size_t n);
+static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real *y, uint16_t *idx, size_t n,
+                       struct trk_i_grid *g, uint16_t *end);
 static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep);
-static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
-                                           size_t n);
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real *r_j,
-                           size_t from, trk_real reach_m);
-static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t c, size_t j,
-                      const trk_real *r_j, struct trk_scan_report *rep);
+static trk_real expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx, size_t n);
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real var_j,
+                           trk_real *r_j, size_t *run_k);
+static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t run_k, size_t c,
+                      size_t j, const trk_real *r_j, struct trk_scan_report *rep);
 static int start_single(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t j,
                         const trk_real *r_j, struct trk_scan_report *rep);
 static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
@@ -62,9 +57,10 @@ static void detection_r(const struct trk_tracker *t, const struct trk_scan *scan
     }
 }
 
-/* Every valid detection no track used starts a track (single point), or
- * pairs with a candidate (two points: a sweep over the detections in x
- * order against the store, also in x order); the unpaired ones become
+/* Every valid detection no track used starts a track (single point, in
+ * scan order), or pairs with a candidate (two points: the detections in
+ * workspace order, gating's cells then scan order, each against the
+ * store's runs, box queries in their 2-D indices); the unpaired ones become
  * candidates. */
 static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
@@ -75,35 +71,35 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
         if (!t->ws.used[j]) idx[n++] = (uint16_t)j;
     if (t->params.init.method == TRK_INIT_SINGLE_POINT) {
         /* in scan order, as the detections came (the workspace holds the
-         * shared ones in x order): slots and ids do not depend on gating's
-         * index */
-        trk_real *src = t->ws.w; /* free after the updates and the merge */
-        for (size_t k = 0; k < n; k++) src[idx[k]] = (trk_real)t->ws.src[idx[k]];
-        sort_by_key(t, src, idx, n);
+         * shared ones in gating's cells): slots and ids do not depend on
+         * gating's index */
+        uint16_t *at = t->ws.u.sort.tmp; /* workspace index by scan index */
+        for (size_t i = 0; i < scan->n_detections; i++) at[i] = UINT16_MAX;
+        for (size_t k = 0; k < n; k++) at[t->ws.src[idx[k]]] = idx[k];
+        n = 0;
+        for (size_t i = 0; i < scan->n_detections; i++)
+            if (at[i] != UINT16_MAX) idx[n++] = at[i];
         for (size_t k = 0; k < n; k++) {
             trk_real r_j[NZ * NZ];
             detection_r(t, scan, idx[k], r_j);
             (void)start_single(t, &sl, scan, idx[k], r_j, rep);
         }
     } else {
-        sort_by_x(t, idx, n);
-        const struct cand_reach reach = expire_candidates(t, scan, idx, n);
-        size_t lo = 0, n_new = 0;
+        const trk_real var_j = expire_candidates(t, scan, idx, n);
+        size_t n_new = 0;
         if (!slot_possible(t, &sl, NULL)) { /* every slot confirmed: no pair could start */
             rep->n_init_refused_full += (uint32_t)n;
             store_candidates(t, scan, idx, n, rep);
             rep->n_candidates = (uint32_t)t->n_cand;
             return;
         }
-        for (size_t k = 0; k < n; k++) { /* idx[k] by increasing x: lo only moves up */
+        for (size_t k = 0; k < n; k++) { /* in workspace order */
             const size_t j = idx[k];
-            while (lo < t->n_cand && t->cand[lo].x_m < t->ws.x[j] - reach.reach_m) lo++;
-            if (lo < t->n_cand && t->cand[lo].x_m <= t->ws.x[j] + reach.reach_m) { /* a candidate in reach */
-                trk_real r_j[NZ * NZ];
-                const long c = best_candidate(t, scan, j, r_j, lo, reach.reach_m);
-                if (c >= 0 && start_pair(t, &sl, scan, (size_t)c, j, r_j, rep)) continue;
-            }
-            idx[n_new++] = (uint16_t)j; /* stays in x order */
+            trk_real r_j[NZ * NZ] = {0}; /* set when c >= 0 */
+            size_t run_k = 0;
+            const long c = best_candidate(t, scan, j, var_j, r_j, &run_k);
+            if (c >= 0 && start_pair(t, &sl, scan, run_k, (size_t)c, j, r_j, rep)) continue;
+            idx[n_new++] = (uint16_t)j;
         }
         store_candidates(t, scan, idx, n_new, rep);
     }
@@ -268,70 +264,85 @@ static void candidate_r(const struct trk_candidate *c, trk_real *r)
     trk_i_cov2_matrix(c->cov_m2, r); /* stored from a checked detection */
 }
 
-/* Drop the candidates older than max_gap_scans (the store stays sorted);
- * the reach of the velocity gates of the others with the scan's n
- * unexplained detections idx: v_max dt_max + sqrt(gamma (tr R_c + tr R_j)),
- * maxima over both (lambda_max(R_c + R_j) <= tr R_c + tr R_j). */
-static struct cand_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
-                                           size_t n)
+/* Run k of the store (0 the oldest). */
+static struct trk_i_cand_run *cand_run(struct trk_tracker *t, size_t k)
 {
-    trk_real dt_max = 0, var_c = 0, var_j = 0;
-    size_t kept = 0;
-    for (size_t i = 0; i < t->n_cand; i++) {
-        struct trk_candidate *c = &t->cand[i];
-        if (t->scan_no - c->scan_no > t->params.init.max_gap_scans) continue;
-        const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
-        const trk_real var = c->cov_m2[TRK_COV2_XX] + c->cov_m2[TRK_COV2_YY];
-        if (dt > dt_max) dt_max = dt;
-        if (var > var_c) var_c = var;
-        if (kept != i) t->cand[kept] = *c;
-        t->cand[kept++].used = 0;
-    }
-    t->n_cand = kept;
+    return &t->run[(t->run_first + k) % TRK_MAX_CANDIDATE_SCANS];
+}
+
+static const struct trk_i_cand_run *cand_run_c(const struct trk_tracker *t, size_t k)
+{
+    return &t->run[(t->run_first + k) % TRK_MAX_CANDIDATE_SCANS];
+}
+
+/* Drop the oldest run. */
+static void drop_oldest_run(struct trk_tracker *t)
+{
+    t->n_cand -= cand_run(t, 0)->n_unused;
+    t->run_first = (uint16_t)((t->run_first + 1) % TRK_MAX_CANDIDATE_SCANS);
+    t->n_runs--;
+}
+
+/* Drop the runs older than max_gap_scans (runs are in scan order); the
+ * largest tr R_j of the scan's n unexplained detections idx (the pairing's
+ * reach, best_candidate). */
+static trk_real expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx, size_t n)
+{
+    while (t->n_runs > 0 && t->scan_no - cand_run(t, 0)->scan_no > t->params.init.max_gap_scans) drop_oldest_run(t);
     const trk_real *r = t->r[scan->sensor_id];
-    var_j = r[S(ZX, ZX)] + r[S(ZY, ZY)];
+    trk_real var_j = r[S(ZX, ZX)] + r[S(ZY, ZY)];
     for (size_t k = 0; k < n; k++) {
         const struct trk_detection *d = &scan->detections[t->ws.src[idx[k]]];
         if (d->has_cov && d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY] > var_j)
             var_j = d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY];
     }
-    const trk_real gamma = t->pda[scan->sensor_id].gamma;
-    const struct cand_reach reach = {(t->params.init.max_speed_mps * dt_max + trk_sqrt(gamma * (var_c + var_j))) *
-                                     TRK_REAL_C(1.0001)};
-    return reach;
+    return var_j;
 }
 
 /* The candidate detection j pairs with (trk_init_params: within the velocity
- * gate, the highest ln l^a - ln r), or -1, from the store's entries from
- * `from` on (x >= x_j - reach) up to x_j + reach. r_j gets the detection's
- * covariance once a candidate is near enough in y to need it (it is set
- * whenever the result is not -1). */
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real *r_j,
-                           size_t from, trk_real reach)
+ * gate, the highest ln l^a - ln r; ties: the smaller x), its index in cand[]
+ * and its run's in *run_k, or -1. Each run is searched in the box of half
+ * side v_max dt + sqrt(gamma (var_max + var_j)), which holds its velocity
+ * gates (lambda_max(R_c + R_j) <= tr R_c + tr R_j; var_j bounds tr R_j of
+ * the scan's detections). r_j gets the detection's covariance once a
+ * candidate is in a box (it is set whenever the result is not -1). */
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real var_j,
+                           trk_real *r_j, size_t *run_k)
 {
     const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
     const trk_real xj = t->ws.x[j], yj = t->ws.y[j];
     long best = -1;
     int have_r = 0;
     trk_real best_score = 0;
-    for (size_t i = from; i < t->n_cand && t->cand[i].x_m <= xj + reach; i++) {
-        const struct trk_candidate *c = &t->cand[i];
-        if (c->used || trk_fabs(yj - c->y_m) > reach) continue;
-        if (!have_r) detection_r(t, scan, j, r_j), have_r = 1;
-        const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
-        if (!(dt > 0)) continue;
-        trk_real r_sum[NZ * NZ];
-        candidate_r(c, r_sum);
-        for (int k = 0; k < NZ * NZ; k++) r_sum[k] += r_j[k];
-        const trk_real dx = xj - c->x_m, dy = yj - c->y_m, d2 = dx * dx + dy * dy;
-        const trk_real lim = vmax * dt + trk_sqrt(gamma * lambda_max2(r_sum));
-        if (d2 > lim * lim) continue;
-        /* ln l^a - ln r: a speed uniform in [0, v_max] puts the displacement r
-         * at density 1 / (2 pi r v_max dt), so nearer partners weigh more (r
-         * no smaller than the noise) */
-        const trk_real noise2 = r_sum[S(ZX, ZX)] + r_sum[S(ZY, ZY)];
-        const trk_real score = c->log_lr - TRK_REAL_C(0.5) * trk_log(d2 > noise2 ? d2 : noise2);
-        if (best < 0 || score > best_score) best = (long)i, best_score = score;
+    for (size_t k = 0; k < t->n_runs; k++) {
+        const struct trk_i_cand_run *run = cand_run_c(t, k);
+        const trk_real dt = (trk_real)(scan->time_us - run->time_us) * TRK_REAL_C(1e-6);
+        if (!(dt > 0) || run->n_unused == 0) continue;
+        const trk_real reach = (vmax * dt + trk_sqrt(gamma * (run->var_max_m2 + var_j))) * TRK_REAL_C(1.0001);
+        struct trk_i_grid_box box =
+            trk_i_grid_box(&run->grid, t->cand_cell_end + run->start, xj - reach, xj + reach, yj - reach, yj + reach);
+        size_t i0, i1;
+        while (trk_i_grid_next(&box, &i0, &i1))
+            for (size_t i = run->start + i0; i < run->start + i1; i++) {
+                const struct trk_candidate *c = &t->cand[i];
+                if (c->used || trk_fabs(xj - c->x_m) > reach || trk_fabs(yj - c->y_m) > reach) continue;
+                if (!have_r) detection_r(t, scan, j, r_j), have_r = 1;
+                trk_real r_sum[NZ * NZ];
+                candidate_r(c, r_sum);
+                for (int q = 0; q < NZ * NZ; q++) r_sum[q] += r_j[q];
+                const trk_real dx = xj - c->x_m, dy = yj - c->y_m, d2 = dx * dx + dy * dy;
+                const trk_real lim = vmax * dt + trk_sqrt(gamma * lambda_max2(r_sum));
+                if (d2 > lim * lim) continue;
+                /* ln l^a - ln r: a speed uniform in [0, v_max] puts the displacement r
+                 * at density 1 / (2 pi r v_max dt), so nearer partners weigh more (r
+                 * no smaller than the noise) */
+                const trk_real noise2 = r_sum[S(ZX, ZX)] + r_sum[S(ZY, ZY)];
+                const trk_real score = c->log_lr - TRK_REAL_C(0.5) * trk_log(d2 > noise2 ? d2 : noise2);
+                if (best < 0 || score > best_score || (score == best_score && c->x_m < t->cand[best].x_m)) {
+                    best = (long)i, best_score = score;
+                    *run_k = k;
+                }
+            }
     }
     return best;
 }
@@ -340,16 +351,17 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
  * differencing, trk_init_params): x = z_j, v = (z_j - z_c) / dt,
  * P_pp = R_j, P_pv = R_j / dt, P_vv = (R_c + R_j) / dt^2. 0 when no slot,
  * or when that P is not positive definite in this arithmetic. */
-static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t ci, size_t j,
-                      const trk_real *r_j, struct trk_scan_report *rep)
+static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t run_k, size_t ci,
+                      size_t j, const trk_real *r_j, struct trk_scan_report *rep)
 {
     if (!slot_possible(t, sl, rep)) return 0;
+    struct trk_i_cand_run *run = cand_run(t, run_k);
     struct trk_candidate *c = &t->cand[ci];
-    const trk_real dt = (trk_real)(scan->time_us - c->time_us) * TRK_REAL_C(1e-6);
+    const trk_real dt = (trk_real)(scan->time_us - run->time_us) * TRK_REAL_C(1e-6);
     const trk_real vdt = t->params.init.max_speed_mps * dt;
     /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v */
     const trk_real pi = TRK_REAL_C(3.14159265358979323846);
-    const trk_real log_odds = t->init_log_odds[c->sensor_id].first + c->log_lr +
+    const trk_real log_odds = t->init_log_odds[run->sensor_id].first + c->log_lr +
                               t->init_log_odds[scan->sensor_id].second + t->ws.log_lr[j] - trk_log(pi * vdt * vdt);
     const trk_real psi0 = initial_existence(t, log_odds);
     trk_real r_c[NZ * NZ], x[NX], p[NX * NX];
@@ -376,69 +388,48 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
     for (int k = 0; k < NX; k++) tr->x[k] = x[k];
     for (int k = 0; k < NX * NX; k++) tr->p[k] = p[k];
     c->used = 1;
+    run->n_unused--;
+    t->n_cand--;
     new_track(t, tr, scan, psi0, 2, rep);
     return 1;
 }
 
 /* ------------------------------------------------------------------ the store */
 
-/* Sort idx[0..n) by the workspace x of the detection (sort_by_key). */
-static void sort_by_x(struct trk_tracker *t, uint16_t *idx, size_t n) { sort_by_key(t, t->ws.x, idx, n); }
-
-/* Sort idx[0..n) (n <= TRK_MAX_DETECTIONS) by key[idx[i]]: a counting sort
- * on n buckets of equal width over [min, max], then an insertion sort that
- * finishes the buckets (O(n) for spread keys; correct for any; stable).
- * Scratch: ws.u.sort. */
-static void sort_by_key(struct trk_tracker *t, const trk_real *key, uint16_t *idx, size_t n)
+/* idx[0, n) of the points (x[idx[i]], y[idx[i]]) in the 2-D index g
+ * (grid_impl.h), its cells' ends in end[] (O(n)). Scratch: ws.u.sort. */
+static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real *y, uint16_t *idx, size_t n,
+                       struct trk_i_grid *g, uint16_t *end)
 {
-    const trk_real *x = key;
-    if (n < 2) return;
-    trk_real lo = x[idx[0]], hi = lo;
-    for (size_t i = 1; i < n; i++) {
-        if (x[idx[i]] < lo) lo = x[idx[i]];
-        if (x[idx[i]] > hi) hi = x[idx[i]];
+    trk_real lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
+    for (size_t i = 0; i < n; i++) {
+        const trk_real xi = x[idx[i]], yi = y[idx[i]];
+        if (i == 0 || xi < lo_x) lo_x = xi;
+        if (i == 0 || xi > hi_x) hi_x = xi;
+        if (i == 0 || yi < lo_y) lo_y = yi;
+        if (i == 0 || yi > hi_y) hi_y = yi;
     }
-    /* skipped when all are equal, or the span overflows (hi - lo = inf
-     * would give scale 0 and bucket inf * 0 = NaN: found by fuzz_lcm_copy) */
-    const trk_real span = hi - lo, scale = (trk_real)(n - 1) / span;
-    if (span > 0 && span <= TRK_REAL_MAX && isfinite(scale)) {
-        uint16_t *count = t->ws.u.sort.count, *tmp = t->ws.u.sort.tmp;
-        for (size_t b = 0; b <= n; b++) count[b] = 0;
-        for (size_t i = 0; i < n; i++) count[(size_t)((x[idx[i]] - lo) * scale) + 1]++; /* bucket <= n - 1 */
-        for (size_t b = 1; b <= n; b++) count[b] = (uint16_t)(count[b] + count[b - 1]);
-        for (size_t i = 0; i < n; i++) tmp[count[(size_t)((x[idx[i]] - lo) * scale)]++] = idx[i];
-        for (size_t i = 0; i < n; i++) idx[i] = tmp[i];
-    }
-    for (size_t i = 1; i < n; i++) {
-        const uint16_t v = idx[i];
-        size_t k = i;
-        for (; k > 0 && x[idx[k - 1]] > x[v]; k--) idx[k] = idx[k - 1];
-        idx[k] = v;
-    }
+    trk_i_grid_plan(g, n, lo_x, hi_x, lo_y, hi_y);
+    trk_i_grid_fill(g, x, y, idx, n, end, t->ws.u.sort.count, t->ws.u.sort.tmp);
 }
 
-/* Remove the paired candidates, and while the new ones do not fit, the
- * oldest scan's. */
-static void make_room(struct trk_tracker *t, size_t n_new)
+/* Where a run of n (1 .. TRK_MAX_CANDIDATES) candidates goes: after the
+ * newest run, else at 0, over no live run; the oldest runs make room. */
+static size_t place_run(struct trk_tracker *t, size_t n)
 {
-    size_t n = 0;
-    for (size_t i = 0; i < t->n_cand; i++)
-        if (!t->cand[i].used) {
-            if (n != i) t->cand[n] = t->cand[i];
-            n++;
-        }
-    t->n_cand = n;
-    while (t->n_cand > 0 && t->n_cand + n_new > TRK_MAX_CANDIDATES) {
-        uint32_t oldest = t->cand[0].scan_no;
-        for (size_t i = 1; i < t->n_cand; i++)
-            if (t->scan_no - t->cand[i].scan_no > t->scan_no - oldest) oldest = t->cand[i].scan_no;
-        n = 0;
-        for (size_t i = 0; i < t->n_cand; i++)
-            if (t->cand[i].scan_no != oldest) {
-                if (n != i) t->cand[n] = t->cand[i];
-                n++;
+    for (;;) {
+        if (t->n_runs == 0) return 0;
+        if (t->n_runs < TRK_MAX_CANDIDATE_SCANS) {
+            const struct trk_i_cand_run *oldest = cand_run(t, 0), *newest = cand_run(t, t->n_runs - 1u);
+            const size_t a = oldest->start, end = (size_t)newest->start + newest->n;
+            if (a < end) { /* the live runs in [a, end) */
+                if (end + n <= TRK_MAX_CANDIDATES) return end;
+                if (n <= a) return 0;
+            } else if (end + n <= a) { /* in [a, TRK_MAX_CANDIDATES) and [0, end) */
+                return end;
             }
-        t->n_cand = n;
+        }
+        drop_oldest_run(t);
     }
 }
 
@@ -454,27 +445,36 @@ static void fill_candidate(const struct trk_tracker *t, const struct trk_scan *s
     c->cov_m2[TRK_COV2_XY] = r[S(ZX, ZY)];
     c->cov_m2[TRK_COV2_YY] = r[S(ZY, ZY)];
     c->log_lr = t->ws.log_lr[j];
-    c->time_us = scan->time_us;
-    c->scan_no = t->scan_no;
-    c->sensor_id = (uint8_t)scan->sensor_id;
     c->used = 0;
 }
 
-/* The scan's unpaired detections idx[0..n) (in x order) into the store,
- * merged in x order; what does not fit even after evicting every older
- * candidate is counted as dropped (the last in x order). */
+/* The scan's unpaired detections idx[0..n) (in workspace order) into the
+ * store as the newest run, in its 2-D index (grid_order); what does not fit
+ * even after evicting every older run is counted as dropped (the last in
+ * workspace order). */
 static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
                              struct trk_scan_report *rep)
 {
-    make_room(t, n);
-    if (n > TRK_MAX_CANDIDATES - t->n_cand) {
-        rep->n_candidates_dropped += (uint32_t)(n - (TRK_MAX_CANDIDATES - t->n_cand));
-        n = TRK_MAX_CANDIDATES - t->n_cand;
+    if (n > TRK_MAX_CANDIDATES) {
+        rep->n_candidates_dropped += (uint32_t)(n - TRK_MAX_CANDIDATES);
+        n = TRK_MAX_CANDIDATES;
     }
-    size_t i = t->n_cand, k = n, w = t->n_cand + n;
-    while (k > 0) { /* merge from the back, in place */
-        if (i > 0 && t->cand[i - 1].x_m > t->ws.x[idx[k - 1]]) t->cand[--w] = t->cand[--i];
-        else fill_candidate(t, scan, idx[--k], &t->cand[--w]);
+    if (n == 0) return;
+    const size_t start = place_run(t, n);
+    struct trk_i_cand_run *run = cand_run(t, t->n_runs);
+    t->n_runs++;
+    run->time_us = scan->time_us;
+    run->scan_no = t->scan_no;
+    run->start = (uint16_t)start;
+    run->n = run->n_unused = (uint16_t)n;
+    run->sensor_id = (uint8_t)scan->sensor_id;
+    grid_order(t, t->ws.x, t->ws.y, idx, n, &run->grid, t->cand_cell_end + start);
+    run->var_max_m2 = 0;
+    for (size_t k = 0; k < n; k++) {
+        struct trk_candidate *c = &t->cand[start + k];
+        fill_candidate(t, scan, idx[k], c);
+        if (c->cov_m2[TRK_COV2_XX] + c->cov_m2[TRK_COV2_YY] > run->var_max_m2)
+            run->var_max_m2 = c->cov_m2[TRK_COV2_XX] + c->cov_m2[TRK_COV2_YY];
     }
     t->n_cand += n;
 }

@@ -148,7 +148,9 @@ static trk_status check_init(const struct trk_init_params *in, const char **fiel
         return st;
     if (in->method == TRK_INIT_SINGLE_POINT) return TRK_OK;
     if ((st = check_real(in->max_speed_mps, 0, 1, TRK_REAL_MAX, "init.max_speed_mps", field)) != TRK_OK) return st;
-    return in->max_gap_scans >= 1 ? TRK_OK : refuse(field, "init.max_gap_scans", TRK_E_RANGE);
+    return in->max_gap_scans >= 1 && in->max_gap_scans < TRK_MAX_CANDIDATE_SCANS
+               ? TRK_OK
+               : refuse(field, "init.max_gap_scans", TRK_E_RANGE);
 }
 
 /* Joint association weighs events by 1 / lambda: parametric clutter with a

@@ -12,6 +12,7 @@
 #ifndef TRK_TRACKER_UPDATE_IMPL_H
 #define TRK_TRACKER_UPDATE_IMPL_H
 
+#include "grid_impl.h"
 #include "tracker_impl.h"
 
 /* One track's prediction for this scan, and the same as the PDA takes it
@@ -33,7 +34,8 @@ static trk_status predict(const struct trk_tracker *t, const struct trk_track *t
 static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr);
 static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                 const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set);
-static void x_window(const struct trk_tracker *t, trk_real lo, trk_real hi, size_t *j0, size_t *j1);
+static struct trk_i_grid_box ws_box(const struct trk_tracker *t, trk_real lo_x, trk_real hi_x, trk_real lo_y,
+                                    trk_real hi_y);
 static trk_status update_visibility(const struct trk_tracker *t, const struct trk_pda *pda,
                                     const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
                                     struct trk_visibility *vis);
@@ -261,15 +263,16 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
     const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;
     const uint8_t *used = t->ws.used;
     const int tentative = tr->status == TRK_TRACK_TENTATIVE;
+    struct trk_i_grid_box box = ws_box(t, zx - wx, zx + wx, zy - wy, zy + wy);
     size_t j0, j1;
-    x_window(t, zx - wx, zx + wx, &j0, &j1);
-    for (size_t j = j0; j < j1; j++) {
-        const trk_real dx = t->ws.x[j] - zx, dy = t->ws.y[j] - zy;
-        if (trk_fabs(dx) <= wx && trk_fabs(dy) <= wy && !(tentative && used[j] == USED_CONFIRMED)) {
-            const trk_real nu[NZ] = {dx, dy}; /* formed in the box only (measured: 2 % of the scan) */
-            gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
+    while (trk_i_grid_next(&box, &j0, &j1))
+        for (size_t j = j0; j < j1; j++) {
+            const trk_real dx = t->ws.x[j] - zx, dy = t->ws.y[j] - zy;
+            if (trk_fabs(dx) <= wx && trk_fabs(dy) <= wy && !(tentative && used[j] == USED_CONFIRMED)) {
+                const trk_real nu[NZ] = {dx, dy}; /* formed in the box only (measured: 2 % of the scan) */
+                gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
+            }
         }
-    }
     for (size_t j = n_shared; j < n_valid; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
         trk_real r_j[NZ * NZ], l_inv[NZ * NZ], log_det;
@@ -280,29 +283,12 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
     return gt.full;
 }
 
-/* The detections of the shared group (x order) that may lie in [lo, hi]
- * in x: [*j0, *j1), by binary search, widened by a few ulps so that the
- * caller's own box test decides at the edges; empty for a NaN bound. */
-static void x_window(const struct trk_tracker *t, trk_real lo, trk_real hi, size_t *j0, size_t *j1)
+/* The box query of the shared group (gating's index ws.grid, grid_impl.h):
+ * per column the box overlaps, the points of its rows. */
+static struct trk_i_grid_box ws_box(const struct trk_tracker *t, trk_real lo_x, trk_real hi_x, trk_real lo_y,
+                                    trk_real hi_y)
 {
-    const trk_real *x = t->ws.x;
-    const trk_real slack = 4 * TRK_REAL_EPS * (trk_fabs(lo) > trk_fabs(hi) ? trk_fabs(lo) : trk_fabs(hi));
-    size_t a = 0, b = t->ws.n_shared;
-    lo -= slack;
-    hi += slack;
-    while (a < b) { /* the first x >= lo */
-        const size_t c = a + (b - a) / 2;
-        if (x[c] < lo) a = c + 1;
-        else b = c;
-    }
-    *j0 = a;
-    b = t->ws.n_shared;
-    while (a < b) { /* the first x > hi */
-        const size_t c = a + (b - a) / 2;
-        if (x[c] <= hi) a = c + 1;
-        else b = c;
-    }
-    *j1 = (lo <= hi) ? a : *j0;
+    return trk_i_grid_box(&t->ws.grid, t->ws.cell_end, lo_x, hi_x, lo_y, hi_y);
 }
 
 /* Kennedy eqs 21-24 with the PDA weights: ln sum_i (g_D,i / rho) l_i =

@@ -365,7 +365,47 @@ static void test_no_duplicates(void **state)
     assert_true(confirmed_scans >= 85);
 }
 
-/* The store stays sorted by x, holds only candidates within max_gap_scans,
+/* The candidate store's invariants: the runs (one per scan, oldest first)
+ * lie in cand[] without overlap, n_cand counts their unused candidates, and
+ * each run's index puts every candidate in its cell (trk/tracker.h struct
+ * trk_i_cand_run; the index itself: test_grid). */
+static void check_store(const struct trk_tracker *t)
+{
+    size_t n_unused = 0;
+    static uint8_t taken[TRK_MAX_CANDIDATES];
+    memset(taken, 0, sizeof taken);
+    assert_true(t->n_runs <= TRK_MAX_CANDIDATE_SCANS);
+    for (size_t k = 0; k < t->n_runs; k++) {
+        const struct trk_i_cand_run *r = &t->run[(t->run_first + k) % TRK_MAX_CANDIDATE_SCANS];
+        if (k > 0) assert_true(r->scan_no - t->run[(t->run_first + k - 1) % TRK_MAX_CANDIDATE_SCANS].scan_no > 0);
+        assert_true(r->n > 0 && (size_t)r->start + r->n <= TRK_MAX_CANDIDATES);
+        size_t unused = 0;
+        for (size_t i = r->start; i < (size_t)r->start + r->n; i++) {
+            assert_int_equal(taken[i], 0);
+            taken[i] = 1;
+            unused += !t->cand[i].used;
+        }
+        assert_int_equal(unused, r->n_unused);
+        n_unused += unused;
+        const size_t n_cell = (size_t)r->grid.n_col * r->grid.n_row;
+        assert_true(n_cell >= 1 && n_cell <= r->n);
+        assert_int_equal(t->cand_cell_end[r->start + n_cell - 1], r->n);
+        for (size_t c = 0, i = 0; c < n_cell; c++)
+            for (; i < t->cand_cell_end[r->start + c]; i++) {
+                const struct trk_candidate *a = &t->cand[r->start + i];
+                const double u = ((double)a->x_m - (double)r->grid.x0_m) * (double)r->grid.inv_w_per_m;
+                const double v = ((double)a->y_m - (double)r->grid.y0_m) * (double)r->grid.inv_h_per_m;
+                /* its column and row, to within the rounding of the library's arithmetic */
+                assert_true(u >= (double)(c / r->grid.n_row) - 1e-3 || c / r->grid.n_row == 0);
+                assert_true(u <= (double)(c / r->grid.n_row + 1) + 1e-3 || c / r->grid.n_row == r->grid.n_col - 1u);
+                assert_true(v >= (double)(c % r->grid.n_row) - 1e-3 || c % r->grid.n_row == 0);
+                assert_true(v <= (double)(c % r->grid.n_row + 1) + 1e-3 || c % r->grid.n_row == r->grid.n_row - 1u);
+            }
+    }
+    assert_int_equal(n_unused, t->n_cand);
+}
+
+/* The store holds only candidates within max_gap_scans,
  * and when a scan's unexplained detections do not fit, the oldest scan's
  * candidates make room first (a full scan of far-apart detections never
  * pairs: each scan replaces the previous one's). */
@@ -387,8 +427,9 @@ static void test_candidate_store(void **state)
         assert_int_equal(rep.n_candidates, TRK_MAX_CANDIDATES < TRK_MAX_DETECTIONS ? TRK_MAX_CANDIDATES : TRK_MAX_DETECTIONS);
         assert_int_equal(rep.n_candidates_dropped,
                          TRK_MAX_CANDIDATES < TRK_MAX_DETECTIONS ? TRK_MAX_DETECTIONS - TRK_MAX_CANDIDATES : 0);
-        for (size_t i = 0; i + 1 < tk.n_cand; i++) assert_true(tk.cand[i].x_m <= tk.cand[i + 1].x_m);
-        for (size_t i = 0; i < tk.n_cand; i++) assert_int_equal(tk.cand[i].scan_no, tk.scan_no); /* the newest */
+        check_store(&tk);
+        assert_int_equal(tk.n_runs, 1); /* the newest scan's only */
+        assert_int_equal(tk.run[tk.run_first].scan_no, tk.scan_no);
     }
     /* small scans: three scans' worth kept, then the oldest expires */
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
@@ -397,7 +438,37 @@ static void test_candidate_store(void **state)
         struct trk_scan_report rep;
         TRK_ASSERT_OK(run_scan(k, d, 4, &rep));
         assert_int_equal(rep.n_candidates, 4 * (k < 3 ? k + 1 : 4)); /* ages 0 .. 3 */
+        check_store(&tk);
     }
+    /* scans of varying size wrap the runs round the store; a target seen
+     * in every scan still pairs with its previous detection, whichever
+     * runs were evicted to make room, and its track starts at once */
+    p.init.max_gap_scans = TRK_MAX_CANDIDATE_SCANS - 1;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    size_t n_started = 0;
+    for (int k = 0; k < 40; k++) {
+        const size_t n = 1 + (size_t)(urand() * 0.6 * TRK_MAX_DETECTIONS);
+        d[0] = det_at(3.0 * k, 0); /* 3 m/s in x; a new target once the first starts */
+        for (size_t i = 1; i < n; i++) { /* over 1e5 m x 1e8 m: a clutter pair has odds ~1e-4 */
+            const double x = 1e5 * urand(), y = 1000.0 + 1e8 * urand();
+            d[i] = det_at(x, y);
+        }
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(run_scan(k, d, n, &rep));
+        assert_int_equal(rep.n_candidates_dropped, 0);
+        n_started += rep.n_started;
+        check_store(&tk);
+        if (k == 1) assert_int_equal(rep.n_started, 1);
+    }
+    assert_int_equal(n_started, 1);
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    TRK_ASSERT_NEAR(tr->x[TRK_CV2_X], 3.0 * 39, 5.0, 0);
+    /* max_gap_scans is bounded by the runs the store holds */
+    p.init.max_gap_scans = TRK_MAX_CANDIDATE_SCANS;
+    const char *field = NULL;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "init.max_gap_scans");
 }
 
 /* The example's old mistake: M/N and K/N members written while the methods

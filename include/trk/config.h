@@ -50,12 +50,27 @@
 
 /* Initiation candidates (trk/tracker.h, two-point initiation): the
  * unexplained detections of recent scans that may pair with a later one to
- * start a track. One full scan's worth by default; each costs 40 bytes in
- * float, 64 in double. A scan whose unexplained
- * detections do not fit evicts the oldest candidates first, then counts the
- * rest as dropped (trk_scan_report.n_candidates_dropped). */
+ * start a track. One full scan's worth by default; each costs 30 bytes in
+ * float, 58 in double (with its index entry). A scan's candidates are kept
+ * together (one run per scan, contiguous): a scan whose unexplained
+ * detections do not fit evicts the oldest scans' candidates first, then
+ * counts the rest as dropped (trk_scan_report.n_candidates_dropped). At
+ * most 65535. */
 #ifndef TRK_MAX_CANDIDATES
 #define TRK_MAX_CANDIDATES TRK_MAX_DETECTIONS
+#endif
+#if TRK_MAX_CANDIDATES < 1 || TRK_MAX_CANDIDATES > 65535
+#error "TRK_MAX_CANDIDATES must be in 1..65535 (initiation candidates); set -DTRK_MAX_CANDIDATES=256"
+#endif
+
+/* Scans whose candidates the store holds at once: trk_init_params.
+ * max_gap_scans is at most TRK_MAX_CANDIDATE_SCANS - 1 (a candidate pairs
+ * with the next max_gap_scans scans). */
+#ifndef TRK_MAX_CANDIDATE_SCANS
+#define TRK_MAX_CANDIDATE_SCANS 8
+#endif
+#if TRK_MAX_CANDIDATE_SCANS < 2 || TRK_MAX_CANDIDATE_SCANS > 256
+#error "TRK_MAX_CANDIDATE_SCANS must be in 2..256 (candidate runs); set -DTRK_MAX_CANDIDATE_SCANS=8"
 #endif
 
 /* Sensors (e.g. multistatic receivers) with their own noise and detection

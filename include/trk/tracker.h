@@ -14,9 +14,13 @@
  *      leaves the table untouched; free the slots of tracks terminated by the
  *      previous scan
  *   2. validate each detection (finite position, SPD covariance); bad ones are
- *      counted in the report and skipped, the rest of the scan is processed
- *   3. every live track: predict to the scan time, gate (a cheap bounding box
- *      of the gate ellipse first, then d2 <= gamma), then the association
+ *      counted in the report and skipped, the rest of the scan is processed;
+ *      the valid ones with the sensor's covariance go into a 2-D index (a
+ *      grid of about one detection per cell, built in O(detections))
+ *   3. every live track: predict to the scan time, gate (the index's cells
+ *      under the bounding box of the gate ellipse, then the box, then d2 <=
+ *      gamma; detections with their own covariance one by one), then the
+ *      association
  *      (params.association):
  *      - TRK_ASSOC_PDA: each track's own PDA over every detection in its
  *        gate (a detection may serve several tracks; confirmed tracks go
@@ -36,7 +40,8 @@
  *   4. tracks that have converged onto one target (PDA tracks sharing
  *      detections do) are merged: of two live tracks whose 4-D states are
  *      within merge_gate_d2, the confirmed (else the one with more hits,
- *      else the older) is kept
+ *      else the older) is kept (the pairs to test from a 2-D index of the
+ *      tracks' positions)
  *   5. initiation (struct trk_init_params) from the valid detections no live
  *      track gated (tentative ones included: no track starts inside another's
  *      gate) nor fell within a confirmed track's init_exclusion_d2:
@@ -250,9 +255,13 @@ enum trk_init_method {
  * in [0, v_max] puts r at density 1 / (2 pi r v_max dt): nearer partners
  * weigh more; measured against "highest l^a, then nearest" and "nearest",
  * within the seeds' intervals on both trk-sim mtt families); a candidate
- * serves one track. Detections are taken in x order. A
- * candidate pairs with detections of the next max_gap_scans scans (scans
- * processed by this tracker, any sensor), then it is dropped.
+ * serves one track. Detections are taken in the workspace's order (by the
+ * cells of gating's 2-D index, then in scan order; ties of the score: the
+ * candidate of smaller x). A candidate pairs with detections of the next
+ * max_gap_scans scans (scans processed by this tracker, any sensor), then
+ * it is dropped. The store keeps each scan's candidates together, in a 2-D
+ * index of their own, so that pairing costs the candidates near each
+ * detection and storing costs the scan's new ones (issue 19).
  *
  * Initial existence (the track score of Blackman & Popoli, "Design and
  * Analysis of Modern Tracking Systems" 1999, sec. 6.2: new-target over
@@ -272,7 +281,8 @@ enum trk_init_method {
 struct trk_init_params {
     enum trk_init_method method;
     trk_real max_speed_mps;           /* two-point velocity gate, > 0 */
-    uint32_t max_gap_scans;           /* two-point: candidate lifetime in scans, >= 1 */
+    uint32_t max_gap_scans;           /* two-point: candidate lifetime in scans, 1 ..
+                                         TRK_MAX_CANDIDATE_SCANS - 1 (config.h) */
     trk_real birth_density_per_m2;    /* new targets per m^2 per scan, >= 0 (0: pv0) */
 };
 
@@ -464,15 +474,13 @@ struct trk_scan_report {
 
 /* ---------------------------------------------------------------- tracker */
 
-/* An unexplained detection kept for two-point initiation. */
+/* An unexplained detection kept for two-point initiation (its scan's
+ * time, count and sensor are its run's, struct trk_i_cand_run). */
 struct trk_candidate {
     trk_real x_m, y_m;
     trk_real cov_m2[3];      /* its covariance [xx, xy, yy] (own or the sensor's) */
     trk_real log_lr;         /* ln l^a (0 without amplitude) */
-    int64_t time_us;
-    uint32_t scan_no;        /* the tracker's scan count when it was seen */
-    uint8_t sensor_id;
-    uint8_t used;            /* paired this scan */
+    uint8_t used;            /* it started a track: it pairs no more */
 };
 
 /* The pair store: every track's gated pairs with joint association, else
@@ -482,6 +490,27 @@ struct trk_candidate {
 #else
 #define TRK_I_PAIRS TRK_MAX_DETECTIONS
 #endif
+
+/* The 2-D index of a set of points (the scan's detections, or one scan's
+ * initiation candidates): cells of a regular grid, column by column, about
+ * one point per cell (src/grid_impl.h); the cells' ends are kept beside it. */
+struct trk_i_grid {
+    trk_real x0_m, y0_m;               /* the cell of (x, y): column floor((x - x0) inv_w), */
+    trk_real inv_w_per_m, inv_h_per_m; /* row floor((y - y0) inv_h), both clamped */
+    uint16_t n_col, n_row;             /* n_col n_row <= max(1, points) */
+};
+
+/* One scan's initiation candidates: cand[start, start + n) in the run's
+ * 2-D index, its cells' ends at cand_cell_end[start ..]. */
+struct trk_i_cand_run {
+    int64_t time_us;
+    uint32_t scan_no;    /* the tracker's scan count when it was seen */
+    uint16_t start, n;
+    uint16_t n_unused;   /* of them not used */
+    uint8_t sensor_id;
+    trk_real var_max_m2; /* the largest tr R_c of its candidates (the pairing's reach) */
+    struct trk_i_grid grid;
+};
 
 struct trk_tracker {
     struct trk_tracker_params params;
@@ -506,13 +535,22 @@ struct trk_tracker {
     trk_real log_clutter_density[TRK_MAX_SENSORS]; /* ln lambda of the joint weights (lambda > 0) */
 #endif
     uint32_t scan_no;                           /* scans processed (initiation ages) */
-    size_t n_cand;                              /* initiation candidates, sorted by x */
+    size_t n_cand;                              /* initiation candidates not used */
+    uint16_t run_first, n_runs;                 /* their runs, one per scan, oldest first:
+                                                   run[(run_first + k) % TRK_MAX_CANDIDATE_SCANS],
+                                                   in cand[] in that order, wrapping round
+                                                   (a run is contiguous) */
+    struct trk_i_cand_run run[TRK_MAX_CANDIDATE_SCANS];
     struct trk_candidate cand[TRK_MAX_CANDIDATES];
+    uint16_t cand_cell_end[TRK_MAX_CANDIDATES];
     /* per-scan workspace (contents meaningless between calls) */
     struct {
         size_t n_valid;                                        /* valid detections, */
         size_t n_shared;                                       /* [0, n_shared) with the sensor's
                                                                   covariance, then own ones */
+        struct trk_i_grid grid;                                /* gating's index of [0, n_shared), */
+        uint16_t cell_end[TRK_MAX_DETECTIONS];                 /* its cells' ends (after the
+                                                                  updates: the merge's index) */
         trk_real x[TRK_MAX_DETECTIONS], y[TRK_MAX_DETECTIONS]; /* their positions */
         trk_real log_lr[TRK_MAX_DETECTIONS];                   /* amplitude ln l^a */
         uint16_t src[TRK_MAX_DETECTIONS];                      /* index in the scan */
@@ -520,11 +558,11 @@ struct trk_tracker {
         uint16_t cand[TRK_I_PAIRS];                            /* gated pairs: one track's set
                                                                   (per-track PDA), or every
                                                                   track's (joint); before and
-                                                                  after the updates the sorts'
-                                                                  index arrays */
+                                                                  after the updates the 2-D
+                                                                  indices' index arrays */
         trk_real w[TRK_I_PAIRS];                               /* their weights; after the
-                                                                  updates the sort keys of the
-                                                                  merge and the initiation */
+                                                                  updates the merge's track
+                                                                  positions */
 #if TRK_WITH_JOINT
         uint16_t joint_slot[TRK_MAX_TRACKS];                   /* joint: the slot of joint track k, */
         uint16_t pair_first[TRK_MAX_TRACKS + 1];               /* its pairs [pair_first[k],
@@ -563,9 +601,11 @@ struct trk_tracker {
                 trk_real p_miss[TRK_MAX_TRACKS];
             } joint;
 #endif
-            struct {                                           /* the sorts' scratch (sort_by_key:
-                                                                  the scan's x order at load,
-                                                                  the merge's tracks, initiation) */
+            struct {                                           /* the 2-D indices' scratch
+                                                                  (grid_order: the scan's at
+                                                                  load, the merge's tracks, a
+                                                                  run of candidates; and the
+                                                                  single-point scan order) */
                 uint16_t tmp[TRK_MAX_DETECTIONS];
                 uint16_t count[TRK_MAX_DETECTIONS + 1];
             } sort;
