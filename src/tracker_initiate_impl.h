@@ -413,8 +413,20 @@ static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real 
     trk_i_grid_fill(g, x, y, idx, n, end, t->ws.u.sort.count, t->ws.u.sort.tmp);
 }
 
-/* Where a run of n (1 .. TRK_MAX_CANDIDATES) candidates goes: after the
- * newest run, else at 0, over no live run; the oldest runs make room. */
+/* The live runs, all in [a, end), moved down to [0, end - a). */
+static void compact_runs(struct trk_tracker *t, size_t a, size_t end)
+{
+    memmove(t->cand, t->cand + a, (end - a) * sizeof t->cand[0]);
+    memmove(t->cand_cell_end, t->cand_cell_end + a, (end - a) * sizeof t->cand_cell_end[0]);
+    for (size_t k = 0; k < t->n_runs; k++) cand_run(t, k)->start = (uint16_t)(cand_run(t, k)->start - a);
+}
+
+/* Where a run of n (1 .. TRK_MAX_CANDIDATES) candidates goes, over no live
+ * run: after the newest run, else at 0; else, when the free room is split
+ * in two that each are too small, after the live runs moved down to 0; the
+ * oldest runs make room while the store holds too many. (When the runs
+ * wrap round, the free room is the one gap between the newest and the
+ * oldest.) A used candidate keeps its place until its run goes. */
 static size_t place_run(struct trk_tracker *t, size_t n)
 {
     for (;;) {
@@ -425,6 +437,10 @@ static size_t place_run(struct trk_tracker *t, size_t n)
             if (a < end) { /* the live runs in [a, end) */
                 if (end + n <= TRK_MAX_CANDIDATES) return end;
                 if (n <= a) return 0;
+                if (n <= TRK_MAX_CANDIDATES - (end - a)) {
+                    compact_runs(t, a, end);
+                    return end - a;
+                }
             } else if (end + n <= a) { /* in [a, TRK_MAX_CANDIDATES) and [0, end) */
                 return end;
             }
