@@ -413,36 +413,55 @@ static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real 
     trk_i_grid_fill(g, x, y, idx, n, end, t->ws.u.sort.count, t->ws.u.sort.tmp);
 }
 
-/* The live runs, all in [a, end), moved down to [0, end - a). */
-static void compact_runs(struct trk_tracker *t, size_t a, size_t end)
+/* The live runs by their place in cand[]: order[0, n_runs) their ages
+ * (cand_run's k), by increasing start. */
+static void runs_by_start(struct trk_tracker *t, uint8_t *order)
 {
-    memmove(t->cand, t->cand + a, (end - a) * sizeof t->cand[0]);
-    memmove(t->cand_cell_end, t->cand_cell_end + a, (end - a) * sizeof t->cand_cell_end[0]);
-    for (size_t k = 0; k < t->n_runs; k++) cand_run(t, k)->start = (uint16_t)(cand_run(t, k)->start - a);
+    for (size_t k = 0; k < t->n_runs; k++) {
+        size_t m = k;
+        for (; m > 0 && cand_run(t, order[m - 1])->start > cand_run(t, k)->start; m--) order[m] = order[m - 1];
+        order[m] = (uint8_t)k;
+    }
+}
+
+/* The live runs (by start, order) moved down to be contiguous from 0: each
+ * moves down, so it never overwrites one not yet moved. */
+static void pack_runs(struct trk_tracker *t, const uint8_t *order)
+{
+    size_t w = 0;
+    for (size_t k = 0; k < t->n_runs; k++) {
+        struct trk_i_cand_run *r = cand_run(t, order[k]);
+        if (r->start != w) {
+            memmove(t->cand + w, t->cand + r->start, r->n * sizeof t->cand[0]);
+            memmove(t->cand_cell_end + w, t->cand_cell_end + r->start, r->n * sizeof t->cand_cell_end[0]);
+            r->start = (uint16_t)w;
+        }
+        w += r->n;
+    }
 }
 
 /* Where a run of n (1 .. TRK_MAX_CANDIDATES) candidates goes, over no live
- * run: after the newest run, else at 0; else, when the free room is split
- * in two that each are too small, after the live runs moved down to 0; the
- * oldest runs make room while the store holds too many. (When the runs
- * wrap round, the free room is the one gap between the newest and the
- * oldest.) A used candidate keeps its place until its run goes. */
+ * run: the first gap between the runs (in cand[] order) that holds it;
+ * else, when the free room is split into gaps each too small, after the
+ * live runs moved down to 0; the oldest runs make room while the store
+ * holds too many. A used candidate keeps its place until its run goes. */
 static size_t place_run(struct trk_tracker *t, size_t n)
 {
     for (;;) {
-        if (t->n_runs == 0) return 0;
         if (t->n_runs < TRK_MAX_CANDIDATE_SCANS) {
-            const struct trk_i_cand_run *oldest = cand_run(t, 0), *newest = cand_run(t, t->n_runs - 1u);
-            const size_t a = oldest->start, end = (size_t)newest->start + newest->n;
-            if (a < end) { /* the live runs in [a, end) */
-                if (end + n <= TRK_MAX_CANDIDATES) return end;
-                if (n <= a) return 0;
-                if (n <= TRK_MAX_CANDIDATES - (end - a)) {
-                    compact_runs(t, a, end);
-                    return end - a;
-                }
-            } else if (end + n <= a) { /* in [a, TRK_MAX_CANDIDATES) and [0, end) */
-                return end;
+            uint8_t order[TRK_MAX_CANDIDATE_SCANS];
+            size_t prev = 0, held = 0;
+            runs_by_start(t, order);
+            for (size_t k = 0; k < t->n_runs; k++) {
+                const struct trk_i_cand_run *r = cand_run(t, order[k]);
+                if ((size_t)r->start - prev >= n) return prev;
+                prev = (size_t)r->start + r->n;
+                held += r->n;
+            }
+            if (TRK_MAX_CANDIDATES - prev >= n) return prev;
+            if (TRK_MAX_CANDIDATES - held >= n) {
+                pack_runs(t, order);
+                return held;
             }
         }
         drop_oldest_run(t);

@@ -464,6 +464,28 @@ static void test_candidate_store(void **state)
     const struct trk_track *tr = only_live_track();
     assert_non_null(tr);
     TRK_ASSERT_NEAR(tr->x[TRK_CV2_X], 3.0 * 39, 5.0, 0);
+    /* runs of 39, 39, 23 and 35 % of the store, never pairing: the third
+     * evicts the first, and the fourth finds the free room split in two
+     * gaps each too small (the runs wrapped round): the runs move down and
+     * all three are kept. The store keeps the newest scans whose sizes sum
+     * to at most TRK_MAX_CANDIDATES. */
+    p.init.max_gap_scans = TRK_MAX_CANDIDATE_SCANS - 1;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    static const double part[4] = {0.39, 0.39, 0.234, 0.35};
+    size_t size[4], first = 0, held = 0;
+    for (int k = 0; k < 4; k++) {
+        const size_t n = size[k] = (size_t)(part[k] * TRK_MAX_CANDIDATES);
+        assert_true(n >= 1 && n <= TRK_MAX_DETECTIONS);
+        for (size_t i = 0; i < n; i++) d[i] = det_at(1e5 * (double)k, 1000.0 * (double)i);
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(run_scan(k, d, n, &rep));
+        check_store(&tk);
+        for (held += n; held > TRK_MAX_CANDIDATES;) held -= size[first++];
+        assert_int_equal(rep.n_candidates, held);
+        assert_int_equal(tk.n_runs, (size_t)k + 1 - first);
+        assert_int_equal(rep.n_started, 0);
+    }
+    assert_int_equal(first, 1);
     /* max_gap_scans is bounded by the runs the store holds */
     p.init.max_gap_scans = TRK_MAX_CANDIDATE_SCANS;
     const char *field = NULL;

@@ -538,8 +538,7 @@ struct trk_tracker {
     size_t n_cand;                              /* initiation candidates not used */
     uint16_t run_first, n_runs;                 /* their runs, one per scan, oldest first:
                                                    run[(run_first + k) % TRK_MAX_CANDIDATE_SCANS],
-                                                   in cand[] in that order, wrapping round
-                                                   (a run is contiguous) */
+                                                   each contiguous in cand[], without overlap */
     struct trk_i_cand_run run[TRK_MAX_CANDIDATE_SCANS];
     struct trk_candidate cand[TRK_MAX_CANDIDATES];
     uint16_t cand_cell_end[TRK_MAX_CANDIDATES];
