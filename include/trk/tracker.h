@@ -261,7 +261,9 @@ enum trk_init_method {
  * max_gap_scans scans (scans processed by this tracker, any sensor), then
  * it is dropped. The store keeps each scan's candidates together, in a 2-D
  * index of their own, so that pairing costs the candidates near each
- * detection and storing costs the scan's new ones (issue 19).
+ * detection and storing costs the scan's new ones (issue 19); a used
+ * candidate keeps its place until its scan's candidates go (under capacity
+ * pressure the store holds fewer than a store that squeezed it out).
  *
  * Initial existence (the track score of Blackman & Popoli, "Design and
  * Analysis of Modern Tracking Systems" 1999, sec. 6.2: new-target over
