@@ -31,11 +31,20 @@ struct slots {
 static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real *y, uint16_t *idx, size_t n,
                        struct trk_i_grid *g, uint16_t *end);
 static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep);
-static trk_real expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx, size_t n);
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real var_j,
-                           trk_real *r_j, size_t *run_k);
+/* What two-point pairing needs of each run of the store in one scan, run
+ * k (cand_run) at [k]: dt_s the time since its scan (<= 0: it cannot pair),
+ * reach_m the half side of the box that holds its velocity gates. Once per
+ * scan (expire_candidates), not per detection. */
+struct run_reach {
+    trk_real dt_s[TRK_MAX_CANDIDATE_SCANS], reach_m[TRK_MAX_CANDIDATE_SCANS];
+};
+
+static struct run_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
+                                          size_t n);
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
+                           const struct run_reach *rr, trk_real *r_j, size_t *run_k);
 static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t run_k, size_t c,
-                      size_t j, const trk_real *r_j, struct trk_scan_report *rep);
+                      size_t j, const trk_real *r_j, const struct run_reach *rr, struct trk_scan_report *rep);
 static int start_single(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t j,
                         const trk_real *r_j, struct trk_scan_report *rep);
 static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
@@ -85,7 +94,7 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
             (void)start_single(t, &sl, scan, idx[k], r_j, rep);
         }
     } else {
-        const trk_real var_j = expire_candidates(t, scan, idx, n);
+        const struct run_reach rr = expire_candidates(t, scan, idx, n);
         size_t n_new = 0;
         if (!slot_possible(t, &sl, NULL)) { /* every slot confirmed: no pair could start */
             rep->n_init_refused_full += (uint32_t)n;
@@ -97,8 +106,8 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
             const size_t j = idx[k];
             trk_real r_j[NZ * NZ] = {0}; /* set when c >= 0 */
             size_t run_k = 0;
-            const long c = best_candidate(t, scan, j, var_j, r_j, &run_k);
-            if (c >= 0 && start_pair(t, &sl, scan, run_k, (size_t)c, j, r_j, rep)) continue;
+            const long c = best_candidate(t, scan, j, &rr, r_j, &run_k);
+            if (c >= 0 && start_pair(t, &sl, scan, run_k, (size_t)c, j, r_j, &rr, rep)) continue;
             idx[n_new++] = (uint16_t)j;
         }
         store_candidates(t, scan, idx, n_new, rep);
@@ -264,16 +273,10 @@ static void candidate_r(const struct trk_candidate *c, trk_real *r)
     trk_i_cov2_matrix(c->cov_m2, r); /* stored from a checked detection */
 }
 
-/* Run k of the store (0 the oldest). */
-static struct trk_i_cand_run *cand_run(struct trk_tracker *t, size_t k)
-{
-    return &t->run[(t->run_first + k) % TRK_MAX_CANDIDATE_SCANS];
-}
+/* The slot in t->run of run k of the store (0 the oldest). */
+static size_t run_slot(const struct trk_tracker *t, size_t k) { return (t->run_first + k) % TRK_MAX_CANDIDATE_SCANS; }
 
-static const struct trk_i_cand_run *cand_run_c(const struct trk_tracker *t, size_t k)
-{
-    return &t->run[(t->run_first + k) % TRK_MAX_CANDIDATE_SCANS];
-}
+static struct trk_i_cand_run *cand_run(struct trk_tracker *t, size_t k) { return &t->run[run_slot(t, k)]; }
 
 /* Drop the oldest run. */
 static void drop_oldest_run(struct trk_tracker *t)
@@ -283,10 +286,13 @@ static void drop_oldest_run(struct trk_tracker *t)
     t->n_runs--;
 }
 
-/* Drop the runs older than max_gap_scans (runs are in scan order); the
- * largest tr R_j of the scan's n unexplained detections idx (the pairing's
- * reach, best_candidate). */
-static trk_real expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx, size_t n)
+/* Drop the runs older than max_gap_scans (runs are in scan order); what
+ * pairing needs of the others this scan (struct run_reach): their dt, and
+ * the half side v_max dt + sqrt(gamma (var_max + var_j)) of the box that
+ * holds their velocity gates, var_j the largest tr R_j of the scan's n
+ * unexplained detections idx (lambda_max(R_c + R_j) <= tr R_c + tr R_j). */
+static struct run_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
+                                          size_t n)
 {
     while (t->n_runs > 0 && t->scan_no - cand_run(t, 0)->scan_no > t->params.init.max_gap_scans) drop_oldest_run(t);
     const trk_real *r = t->r[scan->sensor_id];
@@ -296,18 +302,24 @@ static trk_real expire_candidates(struct trk_tracker *t, const struct trk_scan *
         if (d->has_cov && d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY] > var_j)
             var_j = d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY];
     }
-    return var_j;
+    struct run_reach rr;
+    const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
+    for (size_t k = 0; k < t->n_runs; k++) {
+        const struct trk_i_cand_run *run = cand_run(t, k);
+        rr.dt_s[k] = (trk_real)(scan->time_us - run->time_us) * TRK_REAL_C(1e-6);
+        rr.reach_m[k] = (vmax * rr.dt_s[k] + trk_sqrt(gamma * (run->var_max_m2 + var_j))) * TRK_REAL_C(1.0001);
+    }
+    return rr;
 }
 
 /* The candidate detection j pairs with (trk_init_params: within the velocity
  * gate, the highest ln l^a - ln r; ties: the smaller x), its index in cand[]
- * and its run's in *run_k, or -1. Each run is searched in the box of half
- * side v_max dt + sqrt(gamma (var_max + var_j)), which holds its velocity
- * gates (lambda_max(R_c + R_j) <= tr R_c + tr R_j; var_j bounds tr R_j of
- * the scan's detections). r_j gets the detection's covariance once a
- * candidate is in a box (it is set whenever the result is not -1). */
-static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real var_j,
-                           trk_real *r_j, size_t *run_k)
+ * and its run's in *run_k, or -1. Each run is searched in its box of
+ * half side rr->reach_m (expire_candidates). r_j gets the detection's
+ * covariance once a candidate is in a box (it is set whenever the result is
+ * not -1). */
+static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
+                           const struct run_reach *rr, trk_real *r_j, size_t *run_k)
 {
     const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
     const trk_real xj = t->ws.x[j], yj = t->ws.y[j];
@@ -315,10 +327,9 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
     int have_r = 0;
     trk_real best_score = 0;
     for (size_t k = 0; k < t->n_runs; k++) {
-        const struct trk_i_cand_run *run = cand_run_c(t, k);
-        const trk_real dt = (trk_real)(scan->time_us - run->time_us) * TRK_REAL_C(1e-6);
+        const struct trk_i_cand_run *run = &t->run[run_slot(t, k)];
+        const trk_real dt = rr->dt_s[k], reach = rr->reach_m[k];
         if (!(dt > 0) || run->n_unused == 0) continue;
-        const trk_real reach = (vmax * dt + trk_sqrt(gamma * (run->var_max_m2 + var_j))) * TRK_REAL_C(1.0001);
         struct trk_i_grid_box box =
             trk_i_grid_box(&run->grid, t->cand_cell_end + run->start, xj - reach, xj + reach, yj - reach, yj + reach);
         size_t i0, i1;
@@ -352,12 +363,12 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
  * P_pp = R_j, P_pv = R_j / dt, P_vv = (R_c + R_j) / dt^2. 0 when no slot,
  * or when that P is not positive definite in this arithmetic. */
 static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t run_k, size_t ci,
-                      size_t j, const trk_real *r_j, struct trk_scan_report *rep)
+                      size_t j, const trk_real *r_j, const struct run_reach *rr, struct trk_scan_report *rep)
 {
     if (!slot_possible(t, sl, rep)) return 0;
     struct trk_i_cand_run *run = cand_run(t, run_k);
     struct trk_candidate *c = &t->cand[ci];
-    const trk_real dt = (trk_real)(scan->time_us - run->time_us) * TRK_REAL_C(1e-6);
+    const trk_real dt = rr->dt_s[run_k];
     const trk_real vdt = t->params.init.max_speed_mps * dt;
     /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v */
     const trk_real pi = TRK_REAL_C(3.14159265358979323846);
