@@ -2,6 +2,7 @@
  * (CONVENTIONS "General"; Bar-Shalom's Kalman filter, Joseph form). */
 #include "trk/kalman.h"
 
+#define TRK_I_KALMAN_DEFINE /* the external copies of the Kalman kernels in size builds */
 #include "kalman_impl.h"
 
 const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX] = {1, 0, 0, 0, 0, 0, 1, 0};

@@ -6,6 +6,21 @@
 #include "linalg_impl.h"
 #include "trk/kalman.h"
 
+/* The kernels marked TRK_I_KALMAN_KERNEL (gain, joseph_upper) are inline everywhere except in size builds (TRK_SIZE_OPT),
+ * where kalman.c defines the one external copy (TRK_I_KALMAN_DEFINE) that
+ * pda.c, imm.c and the tracker call, as linalg_impl.h does for the loop
+ * kernels (measured on the Cortex-M4F library: 0.9 KB). */
+#if !TRK_SIZE_OPT
+#define TRK_I_KALMAN_KERNEL TRK_INLINE
+#else
+#ifdef TRK_I_KALMAN_DEFINE
+#define TRK_I_KALMAN_KERNEL
+#endif
+void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *s_chol_inv, trk_real *k);
+void trk_i_joseph_upper(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r, const trk_real *k,
+                        const trk_real *p, const trk_real *pht, trk_real c, trk_real *pc);
+#endif
+
 /* P = F P F' + Q, x = F x. */
 TRK_INLINE void trk_i_predict(int nx, const trk_real *f, const trk_real *q, trk_real *x,
                                  trk_real *p)
@@ -86,9 +101,9 @@ TRK_INLINE void trk_i_mul_ht(int n, int nx, int nz, const trk_real *a, const trk
 }
 
 /* PH' (nx x nz), S = H P H' + R, its Cholesky factor and log-determinant. */
-TRK_INLINE trk_status trk_i_innovation_sel(int nx, int nz, const trk_real *h, const int *sel,
-                                          const trk_real *r, const trk_real *x, const trk_real *p,
-                                          trk_real *pht, struct trk_innovation *inn)
+TRK_INLINE trk_status trk_i_innovation_sel(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r,
+                                          const trk_real *x, const trk_real *p, trk_real *pht,
+                                          struct trk_innovation *inn)
 {
     trk_i_mul_ht(nx, nx, nz, p, h, sel, pht);
     if (sel) {
@@ -127,9 +142,9 @@ TRK_INLINE trk_status trk_i_innovation(int nx, int nz, const trk_real *h, const 
     return trk_i_innovation_sel(nx, nz, h, NULL, r, x, p, pht, inn);
 }
 
+#ifdef TRK_I_KALMAN_KERNEL
 /* K = P H' S^-1 = P H' L^-T L^-1 (row i of K: L^-T L^-1 (PH')_i'). */
-TRK_INLINE void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *s_chol_inv,
-                              trk_real *k)
+TRK_I_KALMAN_KERNEL void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *s_chol_inv, trk_real *k)
 {
     for (int i = 0; i < nx; i++) {
         trk_real y[TRK_MAX_MEAS];
@@ -145,9 +160,9 @@ TRK_INLINE void trk_i_gain(int nx, int nz, const trk_real *pht, const trk_real *
  * cost of the three explicit products. pht = P H' (given); sel as for
  * trk_i_innovation_sel. The upper triangle of Pc (a <= b) only, scaled by
  * c: pc[a][b] = c Pc_ab (the PDA's B P_c); the lower is left as it was. */
-TRK_INLINE void trk_i_joseph_upper(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r,
-                                   const trk_real *k, const trk_real *p, const trk_real *pht, trk_real c,
-                                   trk_real *pc)
+TRK_I_KALMAN_KERNEL void trk_i_joseph_upper(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r,
+                                            const trk_real *k, const trk_real *p, const trk_real *pht, trk_real c,
+                                            trk_real *pc)
 {
     /* A H' = P H' - K (H P H') (H P H' = H pht, nz x nz), so A itself is
      * formed only where Pc needs it, entry by entry (no nx x nx array) */
@@ -171,6 +186,7 @@ TRK_INLINE void trk_i_joseph_upper(int nx, int nz, const trk_real *h, const int 
             pc[i * nx + j] = c * s; /* A - E K' is symmetric in exact arithmetic */
         }
 }
+#endif
 
 /* The whole Pc (symmetric). */
 TRK_INLINE void trk_i_joseph_sel(int nx, int nz, const trk_real *h, const int *sel, const trk_real *r,

