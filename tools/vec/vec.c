@@ -323,18 +323,17 @@ void vec_compare(const struct vec_file *f, const struct vec_case *c, const struc
         const struct vec_entry *got = vec_out_find(o, want->name);
         double abs, rel;
         vec_tolerance(f, c, want->name, &abs, &rel);
-        const char *why = NULL;
-        char buf[256];
+        const char *why = NULL; /* a literal: its length bounds the message (gcc -Os -Wformat-truncation) */
         if (!got) why = "not computed";
         else if (want->word[0]) why = "word outputs are not supported";
-        else if (got->n != want->n) {
-            snprintf(buf, sizeof buf, "%s length %zu want %zu", want->name, got->n, want->n);
-            why = buf;
-        }
-        if (why) {
+        const int bad_length = !why && got->n != want->n;
+        if (why || bad_length) {
             if (chk->ok || !chk->first_fail[0]) {
-                if (why != buf) snprintf(buf, sizeof buf, "%s %s", want->name, why);
-                snprintf(chk->first_fail, sizeof chk->first_fail, "%s", buf);
+                if (bad_length)
+                    snprintf(chk->first_fail, sizeof chk->first_fail, "%s length %zu want %zu", want->name, got->n,
+                             want->n);
+                else
+                    snprintf(chk->first_fail, sizeof chk->first_fail, "%s %s", want->name, why);
             }
             chk->ok = 0;
             chk->n_fail_names++;
