@@ -15,7 +15,7 @@
  * one static copy per file that calls them (tracker.c, pda.c, kalman.c), so
  * linalg.c defines the one external copy (TRK_I_LINALG_DEFINE) and the
  * others see prototypes (measured on the Cortex-M4F library: 0.9 KB for the
- * first four, 0.4 KB for mat_mul, mat_mul_abt and chol_logdet). */
+ * first four, 0.6 KB for mat_mul, mat_mul_abt and chol_logdet). */
 #if !TRK_SIZE_OPT
 #define TRK_I_LOOP_KERNEL TRK_INLINE
 #else
