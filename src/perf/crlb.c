@@ -3,6 +3,7 @@
 
 #include "internal.h"
 #include "fixed_point_impl.h"
+#include "two_point_impl.h"
 #include "trk/kalman.h"
 #include "trk/linalg.h"
 
@@ -61,14 +62,7 @@ trk_status trk_crlb_initial_info(const struct trk_crlb *c, const trk_real *p0, t
         if (!finite_all(nx * nx, p0)) return TRK_E_NAN;
         for (int i = 0; i < nx * nx; i++) p[i] = p0[i];
     } else {
-        const trk_real r = c->params.r_m2, t = c->params.dt_s;
-        for (int i = 0; i < nx * nx; i++) p[i] = 0;
-        for (int k = 0; k < c->params.nz; k++) {
-            const int o = 2 * k;
-            p[o * nx + o] = r;
-            p[o * nx + o + 1] = p[(o + 1) * nx + o] = r / t;
-            p[(o + 1) * nx + o + 1] = 2 * r / (t * t);
-        }
+        trk_i_two_point_cov(c->params.nz, c->params.r_m2, c->params.dt_s, p);
     }
     return spd_inverse(nx, p, j0);
 }

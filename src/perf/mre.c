@@ -4,6 +4,7 @@
 
 #include "internal.h"
 #include "fixed_point_impl.h"
+#include "two_point_impl.h"
 #include "trk/gate.h"
 #include "trk/kalman.h"
 #include "trk/linalg.h"
@@ -55,15 +56,7 @@ trk_status trk_mre_init(struct trk_mre *m, const struct trk_mre_params *pr)
 
 void trk_mre_initial_cov(const struct trk_mre *m, trk_real *p)
 {
-    const int nx = m->nx;
-    const trk_real r = m->params.r_m2, t = m->params.dt_s;
-    for (int i = 0; i < nx * nx; i++) p[i] = 0;
-    for (int c = 0; c < m->params.nz; c++) {
-        const int o = 2 * c;
-        p[o * nx + o] = r;
-        p[o * nx + o + 1] = p[(o + 1) * nx + o] = r / t;
-        p[(o + 1) * nx + o + 1] = 2 * r / (t * t);
-    }
+    trk_i_two_point_cov(m->params.nz, m->params.r_m2, m->params.dt_s, p);
 }
 
 trk_status trk_mre_step(const struct trk_mre *m, trk_real *p, struct trk_mre_step_info *info)
