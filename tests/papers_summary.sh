@@ -5,14 +5,15 @@
 #   - summary.csv: the header experiment,source,cell,paper,trk,lo95,hi95,
 #     agree,rule; 9 fields per row; agree yes, no or n/a; paper and trk
 #     numbers (inf / nan only in n/a rows); lo95 <= hi95 where given; the
-#     seven experiments with their row counts (brekke-trackloss 24 at one
+#     eight experiments with their row counts (brekke-trackloss 24 at one
 #     cell area, willett-table1 30, kennedy-null 2 per run length 2..6 = 10,
 #     blanding-add-arl 2, brekke-toc 6 (nu 1, three P_FA, two filters),
 #     willett-crlb 13 (7 points' RMSE against the bound, 6 with a printed q2),
+#     hyca 6 (3 points x lost fraction and life),
 #     brekke-errpdf 12 (3 figures x 2 filters x mode and mean))
 #   - each experiment's agreement recomputed from the row's numbers:
 #     brekke-trackloss paper in [lo95, hi95]; brekke-toc |trk/paper - 1| <=
-#     0.2; willett-crlb |trk/paper - 1| <= 0.03 (CRLB rows), lo95 > paper
+#     0.2; hyca paper (the prediction) in [lo95, hi95]; willett-crlb |trk/paper - 1| <= 0.03 (CRLB rows), lo95 > paper
 #     (RMSE rows); brekke-errpdf mode < MRE, |mean/MRE - 1| <= 0.2
 #   - one MRE: brekke-errpdf's MRE lines are brekke-toc's MRE values (same
 #     scenario, seed and q2 samples)
@@ -36,12 +37,15 @@ bad=$(awk -F, 'function num(x) { return x ~ /^-?[0-9.e+-]+$/ }
     ($8 != "n/a" && (!num($4) || !num($5) || ($6 != "" && $6 + 0 > $7 + 0))) ||
     ($8 == "n/a" && ((!num($4) && $4 !~ /^(inf|nan)$/) || (!num($5) && $5 !~ /^(inf|nan)$/))))' "$c" | wc -l)
 [ "$bad" = 0 ] || fail "$bad malformed summary.csv rows"
-for e in brekke-trackloss:24 willett-table1:30 kennedy-null:10 blanding-add-arl:2 brekke-toc:6 willett-crlb:13 brekke-errpdf:12; do
+for e in brekke-trackloss:24 willett-table1:30 kennedy-null:10 blanding-add-arl:2 brekke-toc:6 willett-crlb:13 hyca:6 brekke-errpdf:12; do
     n=$(grep -c "^${e%%:*}," "$c")
     [ "$n" = "${e#*:}" ] || fail "${e%%:*}: $n rows, expected ${e#*:}"
 done
 wrong=$(awk -F, '$1 == "brekke-trackloss" && (($4 + 0 >= $6 + 0 && $4 + 0 <= $7 + 0) != ($8 == "yes"))' "$c" | wc -l)
 [ "$wrong" = 0 ] || fail "$wrong brekke-trackloss rows with an agreement other than paper in [lo95, hi95]"
+# hyca: the prediction inside the interval, up to the rounding of a prediction on its end
+wrong=$(awk -F, '$1 == "hyca" && (($4 + 0 >= ($6 + 0) - 1e-6 * (1 + $6) && $4 + 0 <= ($7 + 0) + 1e-6 * (1 + $7)) != ($8 == "yes"))' "$c" | wc -l)
+[ "$wrong" = 0 ] || fail "$wrong hyca rows with an agreement other than the prediction in [lo95, hi95]"
 wrong=$(awk -F, 'function ab(x) { return x < 0 ? -x : x } $8 != "n/a" && (0 ||
     ($1 == "brekke-toc" && ((ab($5 / $4 - 1) <= 0.2) != ($8 == "yes"))) ||
     ($1 == "willett-crlb" && $3 ~ /CRLB with trk q2/ && ((ab($5 / $4 - 1) <= 0.03) != ($8 == "yes"))) ||
@@ -88,7 +92,7 @@ done
 rows=$(($(wc -l < "$c") - 1))
 tl=$(grep -c -E '^\| .* \| (yes|no|n/a) \|$' "$m")
 [ "$tl" = "$rows" ] || fail "summary.md: $tl table rows for $rows CSV rows"
-for e in brekke-trackloss willett-table1 kennedy-null blanding-add-arl brekke-toc willett-crlb brekke-errpdf; do
+for e in brekke-trackloss willett-table1 kennedy-null blanding-add-arl brekke-toc willett-crlb hyca brekke-errpdf; do
     grep -q "^## $e (" "$m" || fail "summary.md: no section $e"
     y=$(awk -F, -v e="$e" '$1 == e && $8 == "yes"' "$c" | wc -l)
     n=$(grep -c "^$e," "$c")
@@ -117,5 +121,5 @@ awk -F, 'NR == FNR { if ($0 !~ /^#/ && $1 != "cell_m2") lost[$1 "," $2 "," $3 ",
     if (!(k in lost) || lost[k] != s) bad++ } END { exit bad > 0 }' "$T/p/brekke-trackloss.csv" "$l" ||
     fail "brekke-trackloss_loss.csv: the loss times do not add up to the lost tracks"
 grep -q '^# assumptions: start two-point' "$l" || fail "brekke-trackloss_loss.csv: no assumptions line"
-ok "summary.csv: $rows rows of 7 experiments, $(grep -c ',yes,' "$c") agree; summary.md: one table line per row, counts per experiment"
+ok "summary.csv: $rows rows of 8 experiments, $(grep -c ',yes,' "$c") agree; summary.md: one table line per row, counts per experiment"
 echo "papers-summary: the summary of make papers (tiny size): $rows rows, format checked"

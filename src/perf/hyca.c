@@ -283,15 +283,17 @@ static trk_real chain_change(int ml, int n, const struct chain *a, const struct 
 }
 
 /* The horizon's figures past the last iterated scan k, where S falls
- * geometrically: S(k + j) = S(k) (1 - p)^j. */
-static void horizon_tail(int horizon, int k, trk_real s_k, trk_real p, struct trk_hyca_result *res)
+ * geometrically: S(k + i) = S(k) r^i, r = 1 - p, ln S(k) = log_s. */
+static void horizon_tail(int horizon, int k, trk_real log_s, trk_real p, struct trk_hyca_result *res)
 {
     if (horizon <= k) return;
     const int j = horizon - k; /* scans k+1 .. horizon */
-    const trk_real r = 1 - p, rj = trk_exp((trk_real)j * trk_log1p(-p));
-    /* sum_{i=1}^{j-1} S(k) r^i, the terms below the horizon */
-    res->mean_life_horizon += p > 0 ? s_k * (r - rj) / p : s_k * (trk_real)(j - 1);
-    res->lost_by_horizon = 1 - s_k * rj;
+    const trk_real ln_r = trk_log1p(-p);
+    /* sum_{i=1}^{j-1} S(k) r^i = S(k) r (1 - r^(j-1)) / p (without cancellation) */
+    const trk_real s_k = trk_exp(log_s);
+    res->mean_life_horizon += p > 0 ? s_k * (1 - p) * -trk_expm1((trk_real)(j - 1) * ln_r) / p
+                                    : s_k * (trk_real)(j - 1);
+    res->lost_by_horizon = -trk_expm1(log_s + (trk_real)j * ln_r);
 }
 
 trk_status trk_hyca_run(const struct trk_hyca *h, const trk_real *p0, struct trk_hyca_result *res)
@@ -345,7 +347,7 @@ trk_status trk_hyca_run(const struct trk_hyca *h, const trk_real *p0, struct trk
         sum_s += s_k;
         if (!isfinite(median) && s_k <= TRK_REAL_C(0.5)) median = (trk_real)it;
         if (it < horizon) res->mean_life_horizon += s_k;
-        if (it == horizon) res->lost_by_horizon = 1 - s_k;
+        if (it == horizon) res->lost_by_horizon = -trk_expm1(log_s);
         fill_held(h, &c[1 - cur], loss, res);
         res->iterations = it;
         const trk_real scale = max_abs(n, res->p_held);
@@ -357,7 +359,7 @@ trk_status trk_hyca_run(const struct trk_hyca *h, const trk_real *p0, struct trk
         loss_prev = loss;
         cur = 1 - cur;
         if (s_k < TRK_REAL_C(1e-15) * sum_s) { /* the rest of the sum is negligible */
-            if (horizon > it) res->lost_by_horizon = 1 - s_k;
+            if (horizon > it) res->lost_by_horizon = -trk_expm1(log_s);
             res->mean_life_scans = sum_s;
             res->median_life_scans = median;
             return TRK_OK;
@@ -365,7 +367,7 @@ trk_status trk_hyca_run(const struct trk_hyca *h, const trk_real *p0, struct trk
         if (trk_i_fixed_point_done(&fp, change, 1, pr->rel_tol)) {
             /* geometric tail: S(k + j) = S(k) (1 - p)^j */
             res->converged = 1;
-            horizon_tail(horizon, it, s_k, loss, res);
+            horizon_tail(horizon, it, log_s, loss, res);
             if (!(loss > 0)) {
                 res->mean_life_scans = res->median_life_scans = (trk_real)INFINITY;
                 return TRK_OK;

@@ -27,6 +27,11 @@
 #                     above the bound (its lower 95 % limit; Willett: "all
 #                     trackers have significantly higher error than the
 #                     CRLB"), the bound with the paper's q2 where printed
+#   hyca              Willett 2010 I.D.2 (HYCA, Fig. 8; no printed values):
+#                     HYCA's predicted track life against the simulated
+#                     PDAF's, both with the gate-count loss of the chain
+#                     (lost within the run, and E[min(life, scans)]): the
+#                     prediction inside the simulation's 95 % interval
 #   brekke-errpdf     Brekke 2011 Figs. 3-5 (histograms, no values): the
 #                     histogram's mode below the MRE line ("a slightly
 #                     positive (i.e., pessimistic) bias of the MRE as compared
@@ -56,6 +61,7 @@ if [ "$size" = paper ]; then
     run blanding-add-arl
     run brekke-toc
     run willett-crlb
+    run hyca --runs 2000
     run brekke-errpdf
 elif [ "$size" = tiny ]; then
     run brekke-trackloss --runs 40 --scans 60 --cell-m2 1 --seed 3
@@ -64,6 +70,7 @@ elif [ "$size" = tiny ]; then
     run blanding-add-arl --runs 150 --max-scans 4000 --seed 5
     run brekke-toc --runs 40 --k-shape 1 --pfa 1e-4,1e-2,1e-1 --q2-samples 20000 --seed 3
     run willett-crlb --runs 100 --q2-samples 20000 --seed 3
+    run hyca --runs 100 --scans 100 --pd 0.9 --lambda 1e-4,1e-3,3e-3 --seed 3
     run brekke-errpdf --runs 40 --scans 150 --from 51 --q2-samples 20000 --seed 3
 else
     echo "papers: size must be paper or tiny" >&2
@@ -100,6 +107,11 @@ csv=$out/summary.csv md=$out/summary.md
         b = fin($6) ? $6 : $7
         printf "willett-crlb,Willett 2010 I.B-I.D,P_D %s lambda %s: PDAF RMSE above the CRLB (%s q2),%s,%s,%s,%s,%s,PDAF RMSE lower 95%% limit above the CRLB\n",
             $1, $2, fin($6) ? "printed" : "trk", b, $9, $10, $11, fin($9) ? ($10 > b ? "yes" : "no") : "n/a" }' "$out/willett-crlb.csv"
+    awk -F, '/^#/ || /^pd,/ { next } {
+        printf "hyca,Willett 2010 I.D.2 (HYCA),P_D %s lambda %s: lost within the run (fraction),%s,%s,%s,%s,%s,HYCA inside the simulated 95%% interval\n",
+            $1, $2, $3, $10, $11, $12, $13 == 1 ? "yes" : "no"
+        printf "hyca,Willett 2010 I.D.2 (HYCA),P_D %s lambda %s: E[min(life; scans)],%s,%s,%s,%s,%s,HYCA inside the simulated 95%% interval\n",
+            $1, $2, $4, $14, $15, $16, $17 == 1 ? "yes" : "no" }' "$out/hyca.csv"
     awk -F, 'function fin(x) { return x != "" && x !~ /inf|nan/ } /^#/ || /^fig,/ { next } {
         ok = fin($9) && fin($24)
         printf "brekke-errpdf,Brekke 2011 Figs. 3-5,Fig. %s nu %s P_FA %s %s: histogram mode below the MRE,%s,%s,%s,%s,%s,mode < MRE (the paper: MRE pessimistic against the modes)\n",

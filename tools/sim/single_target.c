@@ -150,11 +150,13 @@ int st_model_init(struct st_model *m, const struct st_params *p, char *err, size
         snprintf(err, errlen, "texture per scan needs a K amplitude model");
         return -1;
     }
-    if (p->gate_cap.mode == ST_GATE_TRUNCATE ? !(p->gate_cap.n >= 0 && p->gate_cap.n <= TRK_MAX_DETECTIONS)
-                                              : p->gate_cap.mode != ST_GATE_LOST ||
-                                                    !(p->gate_cap.lambda_vg > 0 && isfinite(p->gate_cap.lambda_vg))) {
-        snprintf(err, errlen, "gate cap: truncate to 1..%d detections or lost above a lambda V_G > 0",
-                 TRK_MAX_DETECTIONS);
+    const struct st_gate_cap *gc = &p->gate_cap;
+    if (gc->mode == ST_GATE_TRUNCATE   ? !(gc->n >= 0 && gc->n <= TRK_MAX_DETECTIONS)
+        : gc->mode == ST_GATE_COUNT ? !(gc->n >= 1 && gc->n <= TRK_MAX_DETECTIONS)
+                                    : gc->mode != ST_GATE_LOST || !(gc->lambda_vg > 0 && isfinite(gc->lambda_vg))) {
+        snprintf(err, errlen,
+                 "gate cap: truncate to 1..%d detections, lost above a lambda V_G > 0, or lost at a count 1..%d",
+                 TRK_MAX_DETECTIONS, TRK_MAX_DETECTIONS);
         return -1;
     }
     if (p->init != ST_INIT_TWOPOINT && p->init != ST_INIT_STEADY) {
@@ -445,6 +447,12 @@ int st_run(const struct st_model *m, struct st_ws *ws, uint32_t run, int ai, lon
             break;
         }
         res->gated += (long)m_g;
+        if (p->gate_cap.mode == ST_GATE_COUNT && m_g >= (size_t)p->gate_cap.n) {
+            res->lost = res->gate_lost = 1; /* the gate-count rule: lost here */
+            res->lost_scan = k;
+            res->scans = k;
+            break;
+        }
         for (size_t i = 0; i < m_g; i++) res->gated_clutter += !ws->cand[i].target;
         res->scans = k;
         const double ex = (double)x[X] - xt[X], ey = (double)x[Y] - xt[Y];

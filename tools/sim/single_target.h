@@ -125,10 +125,13 @@ enum st_loss { ST_LOSS_BREKKE = 0, ST_LOSS_WILLETT = 1 };
  * lambda_vg clutter detections, lambda V_G > lambda_vg with the filter's
  * lambda and V_G of the prediction (lost; a gate that still holds more than
  * TRK_MAX_DETECTIONS passes its nearest, as the library takes no more). */
-enum st_gate_cap_mode { ST_GATE_TRUNCATE = 0, ST_GATE_LOST = 1 };
+/* count: the track is lost at the first scan whose gate holds n or more
+ * detections (target and clutter; the lost state of HYCA's chain over the
+ * gated count, trk/hyca.h), n in 1..TRK_MAX_DETECTIONS. */
+enum st_gate_cap_mode { ST_GATE_TRUNCATE = 0, ST_GATE_LOST = 1, ST_GATE_COUNT = 2 };
 struct st_gate_cap {
     int mode;                 /* enum st_gate_cap_mode */
-    long n;                   /* truncate: detections passed */
+    long n;                   /* truncate: detections passed; count: the lost count */
     double lambda_vg;         /* lost: the cap on lambda V_G, > 0 */
 };
 

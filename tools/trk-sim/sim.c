@@ -237,6 +237,12 @@ int sim_parse_gate_cap(const char *v, void *dst)
         *g = (struct st_gate_cap){ST_GATE_TRUNCATE, n, 0};
         return 0;
     }
+    if (strncmp(v, "count:", 6) == 0) {
+        long n;
+        if (cli_parse_long(v + 6, &n) != 0 || n < 1 || n > TRK_MAX_DETECTIONS) return -1;
+        *g = (struct st_gate_cap){ST_GATE_COUNT, n, 0};
+        return 0;
+    }
     if (strncmp(v, "lost:", 5) == 0) {
         double l;
         if (cli_parse_double(v + 5, &l) != 0 || !(l > 0 && l < INFINITY)) return -1;
@@ -251,6 +257,7 @@ const char *sim_start_name(int init) { return init == ST_INIT_STEADY ? "steady" 
 char *sim_gate_cap_name(const struct st_gate_cap *g, char *buf, size_t n)
 {
     if (g->mode == ST_GATE_LOST) snprintf(buf, n, "lost:%g", g->lambda_vg);
+    else if (g->mode == ST_GATE_COUNT) snprintf(buf, n, "count:%ld", g->n);
     else snprintf(buf, n, "truncate:%ld", g->n > 0 ? g->n : (long)TRK_MAX_DETECTIONS);
     return buf;
 }
@@ -262,8 +269,9 @@ void sim_assumptions_csv(FILE *f, int init, const struct st_gate_cap *g, int mre
             sim_start_name(init),
             init == ST_INIT_STEADY ? "the clutter-free Kalman steady state" : "by two-point differencing",
             sim_gate_cap_name(g, gc, sizeof gc),
-            g->mode == ST_GATE_LOST ? "the track is lost when lambda V_G exceeds the cap"
-                                    : "a gate holding more passes its nearest by d2");
+            g->mode == ST_GATE_LOST    ? "the track is lost when lambda V_G exceeds the cap"
+            : g->mode == ST_GATE_COUNT ? "the track is lost when its gate holds that many detections"
+                                       : "a gate holding more passes its nearest by d2");
     if (mre_start >= 0) fprintf(f, ", MRE start %s (--mre-start)", toc_start_name(mre_start));
     fprintf(f, "\n");
 }

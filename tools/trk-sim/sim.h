@@ -187,7 +187,7 @@ int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *a
  *   --start two-point|steady   the single-target runs' initial track
  *                              covariance (enum st_init; --init twopoint,
  *                              the old spelling, is accepted)
- *   --gate-cap truncate:N|lost:L  the runaway-gate rule (struct st_gate_cap)
+ *   --gate-cap truncate:N|lost:L|count:M  the runaway-gate rule (struct st_gate_cap)
  *   --mre-start two-point|zero|steady  the MRE's start (enum toc_start) */
 #define SIM_START_HELP                                                                      \
     "initial track covariance P0 (the estimate drawn from N(truth, P0)):\n"                 \
@@ -197,9 +197,11 @@ int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *a
 #define SIM_GATE_CAP_HELP                                                                   \
     "runaway gate: truncate:N passes the N nearest (d2) of a gate holding\n"                \
     "more (N <= TRK_MAX_DETECTIONS); lost:L declares the track lost when\n"                 \
-    "lambda V_G exceeds L"
+    "lambda V_G exceeds L; count:M declares it lost when its gate holds M\n"                \
+    "or more detections (HYCA's lost state)"
 #define SIM_OPT_GATE_CAP(dst_) \
-    SIM_OPT_CUSTOM("--gate-cap", dst_, sim_parse_gate_cap, "truncate:N|lost:L", sim_gate_cap_default, SIM_GATE_CAP_HELP)
+    SIM_OPT_CUSTOM("--gate-cap", dst_, sim_parse_gate_cap, "truncate:N|lost:L|count:M", sim_gate_cap_default, \
+                   SIM_GATE_CAP_HELP)
 #define SIM_MRE_START_HELP                                                                  \
     "the MRE's start at every P_FA: two-point differencing (a new track),\n"                \
     "P = 0, or the clutter-free Kalman steady state"
@@ -210,7 +212,7 @@ extern const int sim_mre_start_values[3];
 int sim_parse_start(const char *v, void *dst);     /* int *: enum st_init */
 int sim_parse_gate_cap(const char *v, void *dst);  /* struct st_gate_cap * */
 const char *sim_start_name(int init);              /* "two-point", "steady" */
-/* "truncate:256" or "lost:50" into buf[n]; returns buf. */
+/* "truncate:256", "lost:50" or "count:10" into buf[n]; returns buf. */
 char *sim_gate_cap_name(const struct st_gate_cap *g, char *buf, size_t n);
 /* The CSV header line "# assumptions: start S (--start), gate cap G
  * (--gate-cap: ...)[, MRE start M (--mre-start)]" (mre_start < 0: none). */
