@@ -101,9 +101,10 @@ static void test_irf_limits(void **state)
             TRK_ASSERT_OK(trk_irf_q2(&irf, TRK_REAL_C(0.8), 0, &q2));
             TRK_ASSERT_NEAR(q2, 0.8 * trk_chi2_cdf(nz + 2, gammas[g]), TRK_TOL(1e-12, 1e-5), 0);
             TRK_ASSERT_NEAR(irf.pg, trk_chi2_cdf(nz, gammas[g]), 0, TRK_TOL(1e-15, 1e-6));
-            /* phi(t) + (1 - phi(t)) = 1 at every node */
+            /* phi(t) + (1 - phi(t)) = 1 at every node (each a sum of up to
+             * 800 radial terms: in float a few 1e-6 of rounding) */
             for (int k = 0; k < irf.n; k++)
-                TRK_ASSERT_NEAR(irf.phi[k] + irf.one_m_phi[k], 1, TRK_TOL(1e-14, 1e-6), 0);
+                TRK_ASSERT_NEAR(irf.phi[k] + irf.one_m_phi[k], 1, TRK_TOL(1e-14, 1e-5), 0);
         }
     }
 }

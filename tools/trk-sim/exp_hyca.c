@@ -246,13 +246,14 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
               "set title \"Track life: HYCA (lines) vs simulated PDAF (95%% CI), %s setting, %ld scans\"\n"
               "set xlabel 'clutter density lambda (1/m^2)'\nset ylabel 'E[min(life, %ld)] (scans)'\n"
               "set logscale x\nset yrange [0:*]\n"
-              "plot for [pd in '%s'] '%s' every ::1 using ($1==pd+0?$2:NaN):14:15:16 with yerrorbars pt 7 "
-              "title sprintf('PDAF, gate rule, P_D %%s', pd), \\\n"
-              "     for [pd in '%s'] '%s' every ::1 using ($1==pd+0?$2:NaN):21:22:23 with yerrorbars pt 6 "
-              "title sprintf('PDAF, 4-sigma rule, P_D %%s', pd), \\\n"
-              "     for [pd in '%s'] '%s' every ::1 using ($1==pd+0?$2:NaN):4 with linespoints dt 2 pt 4 "
-              "title sprintf('HYCA, P_D %%s', pd)\n",
-              s->name, scans, scans, pd_words, path, pd_words, path, pd_words, path);
+              "P = '%s'\n"
+              "plot for [i=1:words(P)] '%s' every ::1 using ($1==word(P,i)+0?$2:NaN):14:15:16 with yerrorbars "
+              "pt 7 lc i title sprintf('PDAF, gate rule, P_D %%s', word(P,i)), \\\n"
+              "     for [i=1:words(P)] '%s' every ::1 using ($1==word(P,i)+0?$2:NaN):21:22:23 with yerrorbars "
+              "pt 6 lc i title sprintf('PDAF, 4-sigma rule, P_D %%s', word(P,i)), \\\n"
+              "     for [i=1:words(P)] '%s' every ::1 using ($1==word(P,i)+0?$2:NaN):4 with linespoints dt 2 pt 4 "
+              "lc i title sprintf('HYCA, P_D %%s', word(P,i))\n",
+              s->name, scans, scans, pd_words, path, path, path);
     free(pred);
     free(mod);
     free(out);

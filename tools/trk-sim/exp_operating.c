@@ -301,15 +301,21 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
     }
     if (sim_csv_close(&f_out) != 0) return 1;
     printf("# %ld points in %.2f s\n# file: %s\n", points, secs, path);
+    char mark[320] = "";
+    if (have_best)
+        snprintf(mark, sizeof mark,
+                 "set arrow from %.6g, graph 0 to %.6g, graph 1 nohead dt 3 lc rgb 'gray40'\n"
+                 "set label 'TOC optimum' at %.6g, graph 0.95 offset 0.5,0 tc rgb 'gray40'\n",
+                 best.pfa, best.pfa, best.pfa);
     sim_plotf(&com, "",
               "set datafile separator ','\nset datafile missing 'inf'\nset grid\nset key top left\n"
               "set title \"Operating point: %s, SNR %g dB, %s\"\n"
-              "set logscale x\nset xlabel 'P_{FA}'\nset ylabel 'position RMSE (m)'\n"
-              "set logscale y2\nset y2label 'mean track life (scans)'\nset y2tics\nset ytics nomirror\n"
-              "set yrange [0:*]\n"
+              "set logscale x\nset format x '10^{%%L}'\nset xlabel 'P_{FA}'\nset ylabel 'position RMSE (m)'\n"
+              "set logscale y2\nset format y2 '10^{%%L}'\nset y2label 'mean track life (scans)'\nset y2tics\n"
+              "set ytics nomirror\nset yrange [0:*]\n%s"
               "plot '%s' every ::1 using 1:4 with linespoints pt 7 title 'MRE RMSE (PDAF)', \\\n"
               "     '%s' every ::1 using 1:7 with linespoints dt 2 pt 4 title 'CRLB with q2', \\\n"
-              "     '%s' every ::1 using 1:8 axes x1y2 with linespoints pt 5 title 'mean track life (HYCA)'%s\n",
-              sensor, snr_db, model, path, path, path, "");
+              "     '%s' every ::1 using 1:8 axes x1y2 with linespoints pt 5 title 'mean track life (HYCA)'\n",
+              sensor, snr_db, model, mark, path, path, path);
     return 0;
 }
