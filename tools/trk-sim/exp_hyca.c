@@ -15,6 +15,11 @@
  *             |x error| or |y error| exceeds 4 sqrt(r) for 3 scans in a row
  *             (Willett's footnote 5); a life is the scan of the loss, or the
  *             run's length when the track holds.
+ * With --pdafai-snr-db D the PDAFAI runs beside the PDAF on the same random
+ * numbers: a Swerling I target of SNR D in Rayleigh clutter, the threshold
+ * at the P_FA whose P_D is the point's (pd = pfa^(1/(1+SNR))), the same
+ * clutter density; its life shows what amplitude information adds to the
+ * PDAF that HYCA models.
  * The gate-count rule is the like-for-like check of the prediction; the
  * error rule is what a user calls lost, and it also loses tracks to runs of
  * missed detections with a small gate, which HYCA's chain does not count.
@@ -44,10 +49,14 @@ struct hy_out {
     double mse;    /* over scans >= from of a track not lost */
 };
 
+/* One run: the PDAF [0] and, with an amplitude model, the PDAFAI [1]. */
+struct hy_slot {
+    struct hy_out f[2];
+};
+
 static void keep(void *slot, int ai, const struct st_result *res)
 {
-    struct hy_out *o = slot;
-    (void)ai;
+    struct hy_out *o = &((struct hy_slot *)slot)->f[ai];
     o->lost = (unsigned char)res->lost;
     o->life = (int32_t)(res->lost ? res->lost_scan : res->scans);
     o->mse = res->n_sse ? res->sse / (double)res->n_sse : NAN;
@@ -87,11 +96,29 @@ static int hyca_point(const struct hy_setting *s, double pd, double lambda, int 
     return 0;
 }
 
+/* Loss and life of one (rule, point, filter) over the runs: the fraction
+ * lost with its exact 95 % interval, E[min(L, scans)] with its interval. */
+struct hy_stats {
+    double lost, lost_lo, lost_hi, life, life_lo, life_hi;
+};
+
+static void hy_stats_of(const struct hy_slot *out, long runs, int filter, double *vals, struct hy_stats *st)
+{
+    long lost = 0;
+    for (long run = 0; run < runs; run++) {
+        lost += out[run].f[filter].lost;
+        vals[run] = out[run].f[filter].life;
+    }
+    st->lost = (double)lost / (double)runs;
+    mc_binom_ci(lost, runs, 0.95, &st->lost_lo, &st->lost_hi);
+    mc_mean_ci(vals, (size_t)runs, 0.95, &st->life, &st->life_lo, &st->life_hi);
+}
+
 SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a simulated PDAF")
 {
     long runs, scans, from, m_lost;
     int setting;
-    double dt_o = 0, q_o = 0, r_o = 0;
+    double dt_o = 0, q_o = 0, r_o = 0, ai_snr_db = NAN;
     double pds[MAXPD], lambdas[MAXL];
     int n_pd, n_lambda;
     static const char *setting_words = "willett|sonar";
@@ -106,6 +133,8 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
                      "clutter densities per m^2 (default: the setting's)"),
         SIM_OPT_LONG("--m-lost", &m_lost, "M", "10", SIM_IN, 2, TRK_HYCA_MAX_STATES,
                      "HYCA: a gate holding M or more measurements is lost (Willett: 10)"),
+        SIM_OPT_DOUBLE("--pdafai-snr-db", &ai_snr_db, "D", NULL, SIM_IN, -30, 60,
+                       "also run the PDAFAI: Rayleigh clutter, Swerling I target of this SNR"),
         SIM_OPT_LONG("--runs", &runs, "N", "1000", SIM_GE, 1, 0, "runs per point"),
         SIM_OPT_LONG("--scans", &scans, "N", "300", SIM_IN, 2, 1000000, "scans per run (HYCA's horizon)"),
         SIM_OPT_LONG("--from", &from, "K", "21", SIM_GE, 1, 0, "first scan of the simulated RMSE"),
@@ -142,7 +171,20 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
     static struct trk_hyca h;
     struct trk_hyca_result *pred = calloc((size_t)np, sizeof *pred);
     struct st_model *mod = calloc(2 * (size_t)np, sizeof *mod);
-    struct hy_out *out = calloc(2 * (size_t)np * (size_t)runs, sizeof *out);
+    struct hy_slot *out = calloc(2 * (size_t)np * (size_t)runs, sizeof *out);
+    static struct st_amp amps[MAXPD];
+    const int with_ai = !isnan(ai_snr_db);
+    if (with_ai)
+        for (int i = 0; i < n_pd; i++) {
+            /* the P_FA whose Rayleigh ROC value is pd: pd = pfa^(1/(1+SNR)) */
+            const double snr = pow(10, ai_snr_db / 10), pfa = pow(pds[i], 1 + snr);
+            char e[256];
+            if (!(pfa > 0) || st_amp_init(&amps[i], TRK_AMP_RAYLEIGH, 0, ai_snr_db, pfa, 0, 0, e, sizeof e)) {
+                fprintf(stderr, "hyca: PDAFAI at P_D %g, SNR %g dB: %s\n", pds[i], ai_snr_db,
+                        pfa > 0 ? e : "P_FA underflows");
+                return 1;
+            }
+        }
     double *vals = malloc((size_t)runs * sizeof *vals);
     if (!pred || !mod || !out || !vals) return 1;
     const double t0 = progress_now_s();
@@ -160,6 +202,7 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
         sp.gate_gamma = gamma;
         sp.lambda_per_m2 = lambdas[kp % n_lambda];
         sp.pd = pds[kp / n_lambda];
+        if (with_ai) sp.amp = &amps[kp / n_lambda].m;
         sp.n_scans = scans;
         sp.loss = ST_LOSS_WILLETT;
         sp.thresh_m = count_rule ? HUGE_VAL : thresh;
@@ -174,7 +217,7 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
         }
     }
     int bad_call;
-    const double wall = sim_st_runs(&com, cli.name, mod, 2 * np, runs, 1, from, keep, out, sizeof *out, &bad_call);
+    const double wall = sim_st_runs(&com, cli.name, mod, 2 * np, runs, with_ai ? 2 : 1, from, keep, out, sizeof *out, &bad_call);
     if (bad_call) return 1;
     char path[1024];
     struct fileio_out f_out;
@@ -188,7 +231,9 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
     fprintf(f, "pd,lambda_per_m2,hyca_lost_frac,hyca_life_horizon,hyca_mean_life,hyca_median_life,hyca_loss_per_scan,"
                "hyca_rmse_m,hyca_mean_gated,cnt_lost_frac,cnt_lost_lo95,cnt_lost_hi95,cnt_lost_in_ci,cnt_life,"
                "cnt_life_lo95,cnt_life_hi95,cnt_life_in_ci,err_lost_frac,err_lost_lo95,err_lost_hi95,err_life,"
-               "err_life_lo95,err_life_hi95,sim_rmse_m,sim_rmse_lo95,sim_rmse_hi95\n");
+               "err_life_lo95,err_life_hi95,sim_rmse_m,sim_rmse_lo95,sim_rmse_hi95,ai_cnt_lost_frac,"
+               "ai_cnt_lost_lo95,ai_cnt_lost_hi95,ai_cnt_life,ai_cnt_life_lo95,ai_cnt_life_hi95,ai_err_lost_frac,"
+               "ai_err_life\n");
     printf("# hyca (%s): T %g s, q %g, r %g, gate g %g, m_lost %ld; %ld runs x %ld scans; life L = scans until lost, "
            "E[min(L, %ld)]\n",
            s->name, s->dt_s, s->q, s->r, s->gate_g, m_lost, runs, scans, scans);
@@ -198,21 +243,20 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
            "sim error L [95% CI]", "HYCA E[L]", "HYCA", "sim RMSE [95% CI]");
     for (int k = 0; k < np; k++) {
         const struct trk_hyca_result *r = &pred[k];
-        double lost_f[2], llo[2], lhi[2], life[2], life_lo[2], life_hi[2];
-        for (int rule = 0; rule < 2; rule++) {
-            long lost = 0;
-            for (long run = 0; run < runs; run++) {
-                const struct hy_out *o = &out[((size_t)rule * (size_t)np + (size_t)k) * (size_t)runs + (size_t)run];
-                lost += o->lost;
-                vals[run] = o->life;
-            }
-            lost_f[rule] = (double)lost / (double)runs;
-            mc_binom_ci(lost, runs, 0.95, &llo[rule], &lhi[rule]);
-            mc_mean_ci(vals, (size_t)runs, 0.95, &life[rule], &life_lo[rule], &life_hi[rule]);
+        const struct hy_slot *cnt = &out[(size_t)k * (size_t)runs], *err = &out[((size_t)np + (size_t)k) * (size_t)runs];
+        struct hy_stats sc, se, ac = {NAN, NAN, NAN, NAN, NAN, NAN}, ae = ac;
+        hy_stats_of(cnt, runs, 0, vals, &sc);
+        hy_stats_of(err, runs, 0, vals, &se);
+        if (with_ai) {
+            hy_stats_of(cnt, runs, 1, vals, &ac);
+            hy_stats_of(err, runs, 1, vals, &ae);
         }
+        const double lost_f[2] = {sc.lost, se.lost}, llo[2] = {sc.lost_lo, se.lost_lo}, lhi[2] = {sc.lost_hi, se.lost_hi},
+                     life[2] = {sc.life, se.life}, life_lo[2] = {sc.life_lo, se.life_lo},
+                     life_hi[2] = {sc.life_hi, se.life_hi};
         size_t n_mse = 0;
         for (long run = 0; run < runs; run++) {
-            const struct hy_out *o = &out[((size_t)np + (size_t)k) * (size_t)runs + (size_t)run];
+            const struct hy_out *o = &err[run].f[0];
             if (!o->lost && !isnan(o->mse)) vals[n_mse++] = o->mse;
         }
         double m = NAN, mlo = NAN, mhi = NAN;
@@ -228,12 +272,18 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
                lost_in ? "y" : "n", hm, life[0], life_lo[0], life_hi[0], life_in ? "y" : "n", 100 * lost_f[1],
                100 * llo[1], 100 * lhi[1], life[1], life_lo[1], life_hi[1], (double)r->mean_life_scans,
                (double)r->rmse_m, sqrt(m), sqrt(fmax(mlo, 0)), sqrt(mhi));
+        if (with_ai)
+            printf("%14s | PDAFAI (SNR %g dB): gate rule lost %6.2f %% [%6.2f, %6.2f], life %7.1f [%6.1f, %6.1f]; "
+                   "4-sigma rule lost %6.2f %%, life %7.1f\n",
+                   "", ai_snr_db, 100 * ac.lost, 100 * ac.lost_lo, 100 * ac.lost_hi, ac.life, ac.life_lo, ac.life_hi,
+                   100 * ae.lost, ae.life);
         fprintf(f, "%g,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%.6g,"
-                   "%.6g,%.6g,%.6g,%.6g,%.6g\n",
+                   "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
                 pds[k / n_lambda], lambdas[k % n_lambda], hl, hm, (double)r->mean_life_scans,
                 (double)r->median_life_scans, (double)r->loss_per_scan, (double)r->rmse_m, (double)r->mean_gated,
                 lost_f[0], llo[0], lhi[0], lost_in, life[0], life_lo[0], life_hi[0], life_in, lost_f[1], llo[1],
-                lhi[1], life[1], life_lo[1], life_hi[1], sqrt(m), sqrt(fmax(mlo, 0)), sqrt(mhi));
+                lhi[1], life[1], life_lo[1], life_hi[1], sqrt(m), sqrt(fmax(mlo, 0)), sqrt(mhi), ac.lost, ac.lost_lo,
+                ac.lost_hi, ac.life, ac.life_lo, ac.life_hi, ae.lost, ae.life);
     }
     if (sim_csv_close(&f_out) != 0) return 1;
     char pd_words[MAXPD * 24] = "";
@@ -254,6 +304,8 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
               "     for [i=1:words(P)] '%s' every ::1 using ($1==word(P,i)+0?$2:NaN):4 with linespoints dt 2 pt 4 "
               "lc i title sprintf('HYCA, P_D %%s', word(P,i))\n",
               s->name, scans, scans, pd_words, path, path, path);
+    if (with_ai)
+        for (int i = 0; i < n_pd; i++) st_amp_free(&amps[i]);
     free(pred);
     free(mod);
     free(out);
