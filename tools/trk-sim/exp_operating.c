@@ -24,8 +24,9 @@
  *           ln P_FA, then golden section)
  * The model is 2-D constant velocity with R = r I. A polar sensor is given
  * as --sigma-range-m, --sigma-bearing-deg at --range-m: r = sigma_r (R0
- * sigma_b), the circular R with the same determinant (the same gate area);
- * the analysis does not follow the ellipse's shape. Everything here is the
+ * sigma_b), the circular R with the same determinant (the same gate area),
+ * and so is a Cartesian sensor with --sigma-m (x) and --sigma-y-m (y):
+ * r = sigma_x sigma_y; the analysis does not follow the ellipse's shape. Everything here is the
  * PDAF (no amplitude information in the update). */
 #include <math.h>
 #include <stdio.h>
@@ -171,14 +172,17 @@ static int op_point_at(const struct op_model *m, double pfa, struct trk_hyca *h,
 
 SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, MRE RMSE, CRLB, track life (HYCA)")
 {
-    double sigma_m = 0, sigma_r = 0, sigma_b_deg = 0, range_m = 0;
+    double sigma_m = 0, sigma_y = 0, sigma_r = 0, sigma_b_deg = 0, range_m = 0;
     double dt_s, q, snr_db, nu, cell_m2, gate_g, pfa_min, pfa_max;
     long points, m_lost;
     int clutter;
     static const int clutter_values[2] = {TRK_AMP_RAYLEIGH, TRK_AMP_K};
     const struct sim_opt opts[] = {
         SIM_OPT_DOUBLE("--sigma-m", &sigma_m, "S", NULL, SIM_GT, 0, 0,
-                       "measurement noise per Cartesian axis (m); or the three below"),
+                       "measurement noise per Cartesian axis (m; sigma_x with --sigma-y-m);\n"
+                       "or the three polar figures below"),
+        SIM_OPT_DOUBLE("--sigma-y-m", &sigma_y, "S", NULL, SIM_GT, 0, 0,
+                       "y measurement noise (m) when it differs from --sigma-m's x; r = sigma_x sigma_y"),
         SIM_OPT_DOUBLE("--sigma-range-m", &sigma_r, "S", NULL, SIM_GT, 0, 0, "polar sensor: range noise (m)"),
         SIM_OPT_DOUBLE("--sigma-bearing-deg", &sigma_b_deg, "S", NULL, SIM_GT, 0, 0,
                        "polar sensor: bearing noise (degrees)"),
@@ -204,13 +208,14 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
         "The operating point of a sonar: per detection threshold (P_FA), the detection probability,\n"
         "the PDAF's steady-state position RMSE (MRE), the CRLB with q2, the mean track life (HYCA),\n"
         "and the P_FA that minimises the RMSE (TOC). Give --sigma-m, or the polar figures\n"
-        "--sigma-range-m, --sigma-bearing-deg and --range-m.",
+        "--sigma-range-m, --sigma-bearing-deg and --range-m (or --sigma-m and --sigma-y-m).",
         opts, "operating_point", NULL, SIM_UNUSED_RUNS, "Writes PREFIX.csv, PREFIX.gp, PREFIX.png.", NULL, NULL};
     struct sim_common com;
     const int parsed = sim_parse(&cli, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     const int polar = sigma_r > 0 || sigma_b_deg > 0 || range_m > 0;
-    if (polar == (sigma_m > 0) || (polar && !(sigma_r > 0 && sigma_b_deg > 0 && range_m > 0))) {
+    if (polar == (sigma_m > 0) || (polar && !(sigma_r > 0 && sigma_b_deg > 0 && range_m > 0)) ||
+        (sigma_y > 0 && !(sigma_m > 0))) {
         fprintf(stderr, "operating-point: give --sigma-m, or all of --sigma-range-m, --sigma-bearing-deg, --range-m\n");
         return 2;
     }
@@ -224,7 +229,7 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
     m.snr_db = snr_db;
     m.dt_s = dt_s;
     m.q = q;
-    m.r = polar ? sigma_r * range_m * sigma_b_deg * (double)TRK_PI / 180 : sigma_m * sigma_m;
+    m.r = polar ? sigma_r * range_m * sigma_b_deg * (double)TRK_PI / 180 : sigma_m * (sigma_y > 0 ? sigma_y : sigma_m);
     m.gamma = gate_g * gate_g;
     m.cell_m2 = cell_m2;
     m.m_lost = (int)m_lost;
@@ -268,7 +273,8 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
         snprintf(sensor, sizeof sensor, "sigma_r %g m, sigma_b %g deg at %g m (r = %g m^2)", sigma_r, sigma_b_deg,
                  range_m, m.r);
     else
-        snprintf(sensor, sizeof sensor, "sigma %g m (r = %g m^2)", sigma_m, m.r);
+        snprintf(sensor, sizeof sensor, "sigma_x %g m, sigma_y %g m (r = %g m^2)", sigma_m, sigma_y > 0 ? sigma_y : sigma_m,
+                 m.r);
     char model[64];
     if (clutter == TRK_AMP_K) snprintf(model, sizeof model, "K clutter, shape %g", nu);
     else snprintf(model, sizeof model, "Rayleigh clutter");
