@@ -1,5 +1,5 @@
 # mk/track-life.mk - the track-life tools as documented (a step of `make
-# test`): trk-sim operating-point and trk-sim hyca, their CSV invariants
+# test`): trk-sim operating-point, trk-sim hyca and trk-sim fading, their CSV invariants
 # checked by tests/track_life.sh.
 .PHONY: track-life
 TEST_EXTRA += track-life

@@ -8,6 +8,8 @@
 #     optimum inside the range with an RMSE at most every row's
 #   hyca: the predicted loss and life inside [0, 1] and [1, scans]; the
 #     simulated intervals ordered; a longer life at lower clutter (simulated)
+#   fading: per test, the faded run length and the vanished delay rise with
+#     the threshold (a laxer test keeps tracks longer both ways)
 set -u
 sim=$1
 STEP=track-life
@@ -45,3 +47,11 @@ awk -F, '/^#/ || /^pd,/ { next }
     END { if (!(life[1] > life[2])) { print "simulated life not longer at lower clutter"; bad++ } exit bad > 0 }' "$h" ||
     fail "hyca: CSV invariants"
 ok "hyca: predictions in range, simulated life falls with clutter"
+"$sim" fading --runs 30 --scans 40 --existence 0.1,0.001 --kn 3,6 --page 3,6 --shiryaev -3,0 --seed 2 --quiet --no-plot \
+    --out "$T/fd" > "$T/fd.txt" 2>&1 || { cat "$T/fd.txt"; fail "fading failed"; }
+awk -F, '/^#/ || /^method,/ { next }
+    { n++; if (!($4 >= 0 && $4 <= 40 && $8 >= 0 && $8 <= 40 && $3 > 0)) { print "out of range: " $0; bad++ }
+      if ($1 == m && !($4 >= arl && $8 >= add)) { print "ARL/ADD not rising with the threshold: " $0; bad++ }
+      m = $1; arl = $4; add = $8 }
+    END { if (n != 8) { print n " rows"; bad++ } exit bad > 0 }' "$T/fd.csv" || fail "fading: CSV invariants"
+ok "fading: 4 tests x 2 thresholds, run length and delay rise with the threshold"
