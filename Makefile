@@ -250,8 +250,8 @@ $(BUILD)/bin/example-%: $(BUILD)/obj/examples/%.o $(HOSTLIB) $(LIB)
 STEP = CFG='$(CFG)' sh tests/run_step.sh $(RESULTS)
 SUMMARY = sh tests/summary.sh
 
-# ../shared/vectors when the checkout sits next to it, else the copy in tests/vectors
-VECTORS_DIR ?= $(if $(wildcard ../shared/vectors/*.vec),../shared/vectors,tests/vectors)
+# the reference vectors (every kind; format in tests/vectors/FORMAT.md)
+VECTORS_DIR ?= tests/vectors
 # The kinds registered VEC_SLOW (Monte Carlo q2 estimators, ~20 s in all)
 # run only where VEC_SLOW=1: `make test` sets it in one configuration.
 VEC_SLOW ?= 0

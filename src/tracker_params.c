@@ -186,7 +186,7 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
 }
 
 /* Sensor s: its PDA (P_D at the amplitude threshold with an amplitude
- * model: CONVENTIONS "PDA") and its covariance. */
+ * model: docs/conventions.md "PDA") and its covariance. */
 static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, const char **field,
                                const struct trk_i_tracker_built *b)
 {

@@ -671,7 +671,7 @@ static void test_is_limits(void **state)
         assert_int_equal(q2_is_cell(nz, g, 0.9, 1e-7, NULL, &o, &q2, &se, err, sizeof err), 0);
         TRK_ASSERT_NEAR(q2, 0.9 * Fn, 2e-5, 0);
     }
-    /* b of the CONVENTIONS formula: nz = 2, pd = 1: b = 2 lambda_vg (1 - pg) / gamma */
+    /* b of the docs/conventions.md formula: nz = 2, pd = 1: b = 2 lambda_vg (1 - pg) / gamma */
     TRK_ASSERT_NEAR(q2_is_b(2, gamma, 1.0, 3.0), 2 * 3.0 * 0.01 / gamma, 0, 1e-6);
 }
 

@@ -1,7 +1,7 @@
 /* trk/amplitude.h - amplitude likelihood of thresholded detections (PDAFAI)
  * and inverse-CDF amplitude sampling; Kennedy's dB amplitude model.
  *
- * CONVENTIONS "Amplitude models" (Brekke eqs 6-9, 19-20, 39-49): given the
+ * docs/conventions.md "Amplitude models" (Brekke eqs 6-9, 19-20, 39-49): given the
  * texture eta, an amplitude a (linear envelope) is Rayleigh with
  * E[a^2|eta] = eta (clutter) or eta + d (Swerling I target + clutter).
  *   Rayleigh clutter of power P:  S0(a) = exp(-a^2/P),  S1(a) = exp(-a^2/(P+d))

@@ -1,7 +1,7 @@
 /* trk/pda.h - probabilistic data association update (PDAF, and PDAFAI when
  * each detection carries an amplitude log-likelihood ratio).
  *
- * CONVENTIONS "PDA" (Bar-Shalom's standard form; Brekke eqs 21-25):
+ * docs/conventions.md "PDA" (Bar-Shalom's standard form; Brekke eqs 21-25):
  *   e_0 = lambda (1 - P_D P_G)                       missed detection
  *   e_i = P_D N(nu_i; 0, S) l^a(a_i)                 detection i in the gate
  *   beta_i = e_i / (e_0 + sum_j e_j)                 (log domain: never underflows)
@@ -112,7 +112,7 @@ TRK_NODISCARD trk_status trk_pda_update_inn(const struct trk_pda *pda, int nx, c
  * beta[0] = beta_0 (no detection is the target's), beta[1..m] for the m
  * detections z (m x nz), summing to 1 (within 1e-3); inn the innovation of
  * (x, P) under (h, r) from trk_kalman_innovation. The combination is the
- * one of trk_pda_update (CONVENTIONS "PDA"), so a detection with weight 0
+ * one of trk_pda_update (docs/conventions.md "PDA"), so a detection with weight 0
  * does not enter. TRK_E_ARG, TRK_E_CAPACITY m > TRK_MAX_DETECTIONS,
  * TRK_E_NAN / TRK_E_RANGE bad weights or z, TRK_E_NOT_SPD a posterior
  * that is not positive definite; x and P untouched on error. */

@@ -300,7 +300,7 @@ enum trk_assoc_method {
 struct trk_tracker_params {
     unsigned n_sensors;                               /* 1 .. TRK_MAX_SENSORS */
     struct trk_sensor_params sensor[TRK_MAX_SENSORS];
-    trk_real process_noise_q;                         /* m^2/s^3 (CONVENTIONS Q), >= 0 */
+    trk_real process_noise_q;                         /* m^2/s^3 (docs/conventions.md), >= 0 */
     trk_real gate_prob;                               /* P_G, (0, 1) */
     enum trk_clutter_mode clutter;                    /* parametric: the sensor's density */
     trk_real init_speed_sigma_mps;                    /* velocity prior std per axis, > 0 */
@@ -345,7 +345,7 @@ struct trk_tracker_params {
 #endif
 };
 
-/* Tests and their inputs per scan (CONVENTIONS "Track confirmation and
+/* Tests and their inputs per scan (docs/conventions.md "Track confirmation and
  * termination"): a scan "detects" a track when a detection is in its gate;
  * P_FA of the gate is 1 - exp(-lambda V_G); the sensor id of the scan selects
  * the HMM of multisensor tests. The clutter tests use the detection nearest

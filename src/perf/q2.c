@@ -1,5 +1,5 @@
 /* q2.c - q2 lookup by tensor-product interpolation on a grid, tabulated ROC
- * (trk/q2.h; CONVENTIONS "q2, MRE and CRLB"). */
+ * (trk/q2.h; docs/conventions.md "q2, MRE and CRLB"). */
 #include "trk/q2.h"
 
 #include "trk/amplitude.h"

@@ -2,7 +2,7 @@
  * model for the offline tools (trk-tablegen, the amp_* vector kinds, tests and
  * benchmarks). Double precision always, whatever the library's trk_real.
  *
- * Convention (CONVENTIONS "Amplitude models", amplitude.vec header): given the
+ * Convention (docs/conventions.md "Amplitude models", amplitude.vec header): given the
  * texture eta, a is Rayleigh with E[a^2|eta] = eta (clutter) or eta + d
  * (target + clutter); eta ~ Gamma(shape nu, scale b), clutter power P = nu b,
  * SNR = d / P. Everything here works in normalised units P = 1 (amplitudes in

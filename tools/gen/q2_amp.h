@@ -2,7 +2,7 @@
  * on the library's amplitude module (trk/amplitude.h): the one
  * implementation of the amplitude formulas.
  *
- * CONVENTIONS "Amplitude models" (Brekke eqs 6-9, 19-20, 41-47), clutter
+ * docs/conventions.md "Amplitude models" (Brekke eqs 6-9, 19-20, 41-47), clutter
  * power 1: a thresholded amplitude is drawn by inverse CDF from x ~ Exp(1)
  * (x = -ln u, u the sampler's uniform), a = trk_amplitude_inv_sf(x) (target or
  * clutter law), and the sampler needs ln l^a(a) = trk_amplitude_log_lr(a).

@@ -6,7 +6,7 @@
 # per experiment:
 #   brekke-trackloss  Brekke 2011 Tables II-III, lost tracks per 10000: the
 #                     paper's count inside trk's exact 95 % binomial interval
-#                     (every cell area, CONVENTIONS asks for all three)
+#                     (every cell area, docs/conventions.md asks for all three)
 #   willett-table1    Willett 2010 Table I, q2: |paper / trk - 1| <= 3 % (the
 #                     printed values are Monte Carlo estimates themselves, of
 #                     unknown error; trk's interval is +-1.96 se)

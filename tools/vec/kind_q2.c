@@ -1,5 +1,5 @@
 /* kind_q2.c - vector kinds q2_pdaf, q2_pdafai, mre_steady, crlb_irf
- * (../shared/vectors/q2.vec; CONVENTIONS "q2, MRE and CRLB").
+ * (tests/vectors/q2.vec; docs/conventions.md "q2, MRE and CRLB").
  *
  * q2_pdaf, q2_pdafai: the importance-sampling estimator of tools/gen/q2_is.c
  * (Monte Carlo). The file's tolerance is abs = 4 sqrt(2) se_ref, rel 0, valid
