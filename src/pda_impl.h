@@ -292,7 +292,7 @@ TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const t
 }
 
 /* The 2-D CV model (state [x, vx, y, vy], H selecting x and y) with every
- * detection sharing S, the usual case, has a path of its own (issue 19: the
+ * detection sharing S, the usual case, has a path of its own (the
  * per-track update within 1.25x of a hand-written loop): the same moment
  * match as the general code below, written out over the model's fixed
  * indices, with the weights' moments taken in one pass about a shift (see

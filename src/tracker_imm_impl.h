@@ -1,6 +1,6 @@
 /* tracker_imm_impl.h (private) - IMM tracks in the scan (TRK_WITH_IMM,
- * params.imm.n_models >= 1; trk/imm.h, docs/conventions.md "Multiple models (IMM)"; README
- * "Manoeuvres"). A track's update keeps the stages of a CV track (predict,
+ * params.imm.n_models >= 1; trk/imm.h, docs/conventions.md "Multiple models (IMM)";
+ * docs/library.md "Manoeuvres"). A track's update keeps the stages of a CV track (predict,
  * gate, weights, update, commit, look); at each stage an IMM track does:
  *   predict  mixing and each model's prediction (trk_imm_mix,
  *            trk_imm_predict), each model's innovation with the sensor's R,

@@ -176,7 +176,7 @@ static void test_lookup_uniform_equals_explicit(void **state)
     }
 }
 
-/* Issue 17 item 5: a PDAF table that passes every other check (values in
+/* A PDAF table that passes every other check (values in
  * [0, 1], pd nodes in (0, 1], CRC) with cubic interpolation and an explicit
  * pd axis holding one short interval returned 1.30, 6.61, 5 927 and 5.9e9:
  * the interpolation gain bound was not enforced for explicit axes. Such a

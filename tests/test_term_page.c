@@ -321,7 +321,7 @@ static void test_forms_agree_at_small_pfa(void **state)
     }
 }
 
-/* The coasting track of the issue (docs/conventions.md "Complete detection-event
+/* The coasting track that the complete model exists for (docs/conventions.md "Complete detection-event
  * model"): a fading HMM (pd_high 0.9, pd_low 0.1, p = 0.1, q = 0.02), 12
  * looks detected at pfa 1e-3, then only misses while the coasting gate
  * grows: lambda V_k = 0.2 + (41 - 0.2) k / 39 over 40 looks, pfa_k = 1 -

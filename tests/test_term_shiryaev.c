@@ -213,7 +213,7 @@ static void test_fixed_pd_both_forms(void **state)
     }
 }
 
-/* The coasting track of the issue (see test_term_page.c,
+/* The coasting track of the complete event model (see test_term_page.c,
  * test_coasting_track_terminates, for the scenario and pfa_k): fading HMM
  * (pd_high 0.9, pd_low 0.1, p = 0.1, q = 0.02), 12 hits at pfa 1e-3, then
  * 40 misses with lambda V_k = 0.2 .. 41; Shiryaev beta0 = rho = 0.01,

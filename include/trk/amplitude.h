@@ -33,7 +33,7 @@
  *     (variable TRK_TABLE_VAR_LN_AMP) from ln(t/sqrt P) to ln(a_max/sqrt P),
  *     a_max = the larger of the clutter and target amplitudes at x = x_max;
  *     cells (ln l^a, d ln l^a / ds); cubic Hermite in s (error measured:
- *     ~h^4, see README). Beyond the last node (probability < e^-x_max under
+ *     ~h^4, see docs/library.md). Beyond the last node (probability < e^-x_max under
  *     either hypothesis) ln l^a relaxes to its limit as a power of a:
  *       L(s) = L_inf - (L_inf - L_N) exp(-k (s - s_N)),  k = L'_N / (L_inf - L_N),
  *     continuous with continuous slope at s_N; when k <= 0 (the curve moves

@@ -84,11 +84,11 @@ struct trk_pda_report {
  * code for each track (with detections that carry their own covariance in
  * the same gated set), and the simulators call it.
  *
- * The 2-D CV model's path (issue 19): nx = 4, nz = 2 and an H that selects
+ * The 2-D CV model's path: nx = 4, nz = 2 and an H that selects
  * x and y of the state [x, vx, y, vy] (trk_cv2_h, recognised by its address
  * without a scan, or an equal array), with no detection of its own
  * covariance, run a copy written over the model's fixed indices, within
- * 1.2-1.3x of a hand-written loop of the same arithmetic (README
+ * 1.2-1.3x of a hand-written loop of the same arithmetic (docs/results.md
  * "Benchmarks"). There is no separate entry point to choose: every other
  * model takes the general code. Builds with TRK_SIZE_OPT (the -Os default)
  * keep the general code alone. */

@@ -35,8 +35,7 @@ int kdist_init(struct kdist *k, double nu, double snr_db);
 /* The direct evaluation's range: A = (a/sqrt(P))^2 <= KDIST_MAX_A, i.e. a
  * normalised amplitude up to 1e8. Beyond it the log-moments are of order
  * 2 sqrt(nu A) > 2e8 and their difference (ln l^a) keeps no digits (at 1e20
- * it came out 0, at 1e50 NaN, and at 1e100 the quadrature hung: issue 17
- * item 7): every function below returns NaN (or -1) there instead. */
+ * it came out 0, at 1e50 NaN, and at 1e100 the quadrature hung): every function below returns NaN (or -1) there instead. */
 #define KDIST_MAX_A 1e16
 
 /* ln E[w^-m exp(-A/w)], w = v (target == 0) or v + D (target == 1), m in 0..3,

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tools/scripts/papers.sh TRK_SIM OUTDIR [paper|tiny] - issue 18 item 5: run
+# tools/scripts/papers.sh TRK_SIM OUTDIR [paper|tiny] - run
 # the papers' experiments (trk-sim) into OUTDIR and write OUTDIR/summary.csv
 # and OUTDIR/summary.md: per printed value of a paper, the paper's value,
 # trk's value with its 95 % interval and whether they agree, by a rule stated

@@ -15,7 +15,7 @@
 #include "tablegen.h"
 #include "trk/q2.h"
 
-/* Defaults (q2_table.h; README "Performance prediction": chosen by the
+/* Defaults (q2_table.h; docs/library.md "Performance prediction": chosen by the
  * measured interpolation error, `--measure-interp`). */
 #define DEF_PD Q2_TABLE_DEFAULT_PD
 #define DEF_SNR Q2_TABLE_DEFAULT_SNR_DB

