@@ -15,14 +15,14 @@
 #                        per configuration and a final "test: N passed, N failed"
 #   make bench           trk-bench in double and float
 #   make bench-instr     instructions per scan_64x256 (callgrind), double and float
-#   make bench-grid      the scan over a grid of tracks x detections (issue 19)
+#   make bench-grid      the scan over a grid of tracks x detections
 #   make demo            trk's main job (see README)
 #   make cross           libtrk for Cortex-M (build/cross/<target>/libtrk.a)
 #   make check-heap      fail if libtrk references a heap/stdio/abort symbol
 #   make install PREFIX=/usr/local [DESTDIR=]   (float beside it: make install
-#                        REAL=float BUILD=build/float PREFIX=...; README "Install")
+#                        REAL=float BUILD=build/float PREFIX=...; docs/firmware.md "Install")
 #   MPI=1|0              the MPI builds bin/trk-tablegen-mpi, bin/trk-sim-mpi
-#                        (default: when mpicc is found; mk/mpi.mk, README "MPI")
+#                        (default: when mpicc is found; mk/mpi.mk, docs/analysis.md "MPI")
 #
 # Configuration variables (one build directory per configuration):
 #   BUILD=build  CC=gcc|clang  REAL=double|float  SAN=0|1 (ASan+UBSan)  OPT=-O2
@@ -92,7 +92,7 @@ LIBWARN := -Wmissing-prototypes -Wdouble-promotion
 # measurements); gcc -O2 does not unroll them all, -funroll-loops does
 # (trk-bench pda_update_m10: 303 -> 256 ns with gcc 12), and -O3 vectorises
 # the 4 x 4 covariance rows that -O2's cheap cost model leaves scalar
-# (issue 19: pda_update_m10 / its baseline 1.25 -> 1.18 double, 1.46 ->
+# (pda_update_m10 / its baseline 1.25 -> 1.18 double, 1.46 ->
 # 1.33 float, gcc 12, same run). An -O2 build (the default, the benchmarks)
 # compiles the library at -O3; other levels (the sanitizer builds' -O1, -O0)
 # are left as given. Firmware builds (mk/cross.mk) choose their own flags.
@@ -250,8 +250,8 @@ $(BUILD)/bin/example-%: $(BUILD)/obj/examples/%.o $(HOSTLIB) $(LIB)
 STEP = CFG='$(CFG)' sh tests/run_step.sh $(RESULTS)
 SUMMARY = sh tests/summary.sh
 
-# ../shared/vectors when the checkout sits next to it, else the copy in tests/vectors
-VECTORS_DIR ?= $(if $(wildcard ../shared/vectors/*.vec),../shared/vectors,tests/vectors)
+# the reference vectors (every kind; format in tests/vectors/FORMAT.md)
+VECTORS_DIR ?= tests/vectors
 # The kinds registered VEC_SLOW (Monte Carlo q2 estimators, ~20 s in all)
 # run only where VEC_SLOW=1: `make test` sets it in one configuration.
 VEC_SLOW ?= 0
@@ -341,7 +341,7 @@ check-bad-config:
 	  echo "check-bad-config: TRK_MAX_MEAS=4 compiled but must fail"; exit 1; fi
 	@echo "check-bad-config: an impossible configuration fails to compile, as it must"
 
-# (the IMM build: issue 16's per-track cost of three models against CV, and
+# (the IMM build: the per-track cost of three models against CV, and
 # the default build's scans against the IMM build's CV scans: IMM compiled in
 # but off)
 BENCH_IMM_DEFS := -DTRK_WITH_IMM=1 -DTRK_MAX_MODELS=3
@@ -356,7 +356,7 @@ bench:
 	@echo "== the size grid (TRK_MAX_TRACKS 256, TRK_MAX_DETECTIONS 4096)"; $(MAKE) --no-print-directory bench-grid
 	@echo "== instructions"; $(MAKE) --no-print-directory bench-instr
 
-# Issue 19's size grid: the scan at tracks 64 / 256 and detections 256 /
+# The size grid: the scan at tracks 64 / 256 and detections 256 /
 # 1024 / 4096 at a fixed density in a build of 256 tracks and 4096
 # detections, and the growth over four times the area with the table's
 # slack kept (64 targets in the default 64-slot build against 256 targets in
@@ -380,7 +380,7 @@ bench-grid:
 	echo "bench scan_grid_T64_D256_default_build $$small ns"; \
 	awk -v a=$$small -v b=$$big 'BEGIN { printf "bench scan_grid_growth_4x_area_same_slack %.3g x\n", b / a }'
 
-# The instruction count of one scan_64x256 (issue 19): machine-independent,
+# The instruction count of one scan_64x256: machine-independent,
 # unlike the times. trk-bench scan_64x256_instr under callgrind with the
 # instrumentation on for the timed scans only; Ir / scans.
 bench-instr:
@@ -397,7 +397,7 @@ bench-instr:
 demo: all
 	$(BUILD)/bin/example-firmware_loop
 
-# --- install (README "Install"): headers, libraries, pkg-config files, tools,
+# --- install (docs/firmware.md "Install"): headers, libraries, pkg-config files, tools,
 # the LCM types (mk/lcm.mk, mk/lcm_java.mk, mk/python.mk add theirs as
 # prerequisites install-lcm-types, install-java, install-python; commands
 # in INSTALL_EXTRA run last). A double build (the default) installs libtrk.a,

@@ -73,7 +73,7 @@ TARGET_cortex-m4f-nojoint_CC := $(ARM_CC)
 TARGET_cortex-m4f-nojoint_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_WITH_JOINT=0
 TARGET_cortex-m4f-nojoint_FLOAT := 1
 # the M4F library with IMM tracks in the table (TRK_WITH_IMM=1, three models:
-# issue 16's budgets in size-check), not in the default list
+# their size budgets in size-check), not in the default list
 TARGET_cortex-m4f-imm_CC := $(ARM_CC)
 TARGET_cortex-m4f-imm_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_WITH_IMM=1 -DTRK_MAX_MODELS=3
 TARGET_cortex-m4f-imm_FLOAT := 1
@@ -91,7 +91,7 @@ SOFT_DOUBLE_RE := __aeabi_(c?d[a-z0-9]+|[a-z0-9]*2d)|__[a-z]*df[0-9a-z]*
 # (_fixsfdi/_fixunssfdi) compute through soft double (__aeabi_dmul, ...):
 # ~2.2 KB of double code in a Cortex-M4F image. Reported as a warning;
 # CROSS_F2LZ_FATAL=1 makes it an error (to be the default once the library
-# has no such conversion: see the README, "Firmware").
+# has no such conversion: see docs/firmware.md).
 # (RISC-V rv32 libgcc: __fixsfdi -> __fixunssfdi -> __muldf3, ...: the same.)
 INDIRECT_SOFT_DOUBLE_RE := __aeabi_f2u?lz|__fixu?n?s?sfdi
 CROSS_F2LZ_FATAL ?= 0

@@ -1,4 +1,4 @@
-# mk/hostile.mk - `make hostile-tools`: issue 17's hostile input to the tools
+# mk/hostile.mk - `make hostile-tools`: hostile input to the tools
 # (hangs and unbounded reads, write errors and destroyed outputs, parsing),
 # a step of `make test` (tests/hostile_tools.sh; a few seconds).
 TEST_EXTRA += hostile-tools

@@ -15,7 +15,7 @@
 #                       log reader) with their corpora tests/fuzz/corpus/
 #                       lcm_copy and lcm_log, run by mk/fuzz.mk (make fuzz
 #                       FUZZ_TARGETS='lcm_copy lcm_log'; replayed by make test)
-#   make test-lcm-walkthrough  the README's walk-through, run literally
+#   make test-lcm-walkthrough  the walk-through of docs/lcm.md, run literally
 #   make install        also installs the .lcm files to $(PREFIX)/share/trk/lcm
 #                       and the generated C (include/trk/lcm, libtrk_lcmtypes.a,
 #                       trk-lcm.pc) and C++ (include/trk/lcm-cpp) types
@@ -122,10 +122,10 @@ TEST_EXTRA_DEPS_test-lcm-udpm := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm
 test-lcm-udpm: $(TEST_EXTRA_DEPS_test-lcm-udpm)
 	@sh tests/lcm_udpm_netns.sh $(BUILD)
 
-# --- the README's LCM walk-through, run literally (offline and live over
+# --- the LCM walk-through of docs/lcm.md, run literally (offline and live over
 # udpm in a network namespace): as many confirmed tracks as targets
 .PHONY: test-lcm-walkthrough
 TEST_EXTRA += test-lcm-walkthrough
 TEST_EXTRA_DEPS_test-lcm-walkthrough := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
 test-lcm-walkthrough: $(TEST_EXTRA_DEPS_test-lcm-walkthrough)
-	@$(if $(filter build,$(BUILD)),sh tests/lcm_walkthrough.sh README.md,echo "test-lcm-walkthrough: the README's commands name build/bin: run with BUILD=build")
+	@$(if $(filter build,$(BUILD)),sh tests/lcm_walkthrough.sh docs/lcm.md,echo "test-lcm-walkthrough: the commands of docs/lcm.md name build/bin: run with BUILD=build")

@@ -1,5 +1,5 @@
 # mk/lcm_java.mk - trk's LCM message types for Java, and lcm-spy that starts
-# (README "Watching the channels: make spy").
+# (docs/lcm.md "Watching the channels: make spy").
 #
 #   make java        $(BUILD)/java/trk_lcm.jar: lcm-gen -j of tools/lcm/types,
 #                    compiled against liblcm-java's lcm.jar (javac, jar: a JDK)

@@ -1,4 +1,4 @@
-# mk/mpi.mk - the work distribution layer (tools/par, issue 20) and the MPI
+# mk/mpi.mk - the work distribution layer (tools/par) and the MPI
 # builds of trk-tablegen and trk-sim.
 #
 # tools/par/*.c (libtrk_par.a) runs batches of work units on OpenMP threads,

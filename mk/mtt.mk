@@ -1,4 +1,4 @@
-# mk/mtt.mk - `make mtt`: issue 14's multi-target evaluation (trk-sim mtt) with the
+# mk/mtt.mk - `make mtt`: the multi-target evaluation (trk-sim mtt) with the
 # default track table and a large-capacity build, and their comparison.
 #
 #   make mtt        builds trk-sim in build/ (TRK_MAX_TRACKS of include/trk/config.h, 64)
@@ -14,12 +14,12 @@
 #                   make mtt MTT_ARGS="--scans 60 --seeds 3 --set term=page"
 #                   make mtt MTT_ARGS="--speed-max 20"   (targets faster than the 15 m/s
 #                                                         two-point velocity gate)
-#                   make mtt MTT_ARGS="--family fixed"   (b9ce836's 8 fixed targets, the
+#                   make mtt MTT_ARGS="--family fixed"   (the 8 fixed targets, the
 #                                                         scenario the peer was measured on)
 # The default run (10 seeds x 200 scans x 7 clutter levels x 2 configurations per build)
 # takes seconds per build on 2 cores; compiling the large build dominates.
 #   make mtt-smoke  the `make test` step: a short run, its CSV checked (tests/mtt_smoke.sh)
-#   make mtt-imm    issue 16 item 3: manoeuvring targets, CV-only (new) against IMM (imm).
+#   make mtt-imm    manoeuvring targets, CV-only (new) against IMM (imm).
 #                   Builds trk-sim in $(MTT_IMM_BUILD) (CONFIG_DEFS=$(MTT_IMM_DEFS): IMM tracks),
 #                   then `trk-sim mtt --config new,imm $(MTT_IMM_ARGS)` (10 seeds, the default
 #                   clutter levels) once per turn rate R of $(MTT_IMM_RATES) deg/s, each turn

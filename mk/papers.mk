@@ -1,9 +1,9 @@
-# mk/papers.mk - issue 18 item 5: one command that reproduces the papers.
+# mk/papers.mk - one command that reproduces the papers.
 #   make papers        the papers' experiments at their paper sizes into
 #                      build/papers/ (CSV, PNG with gnuplot) and
 #                      build/papers/summary.{md,csv}: per printed value the
 #                      paper's, trk's with its 95 % interval, and whether they
-#                      agree (tools/scripts/papers.sh). Long (README: trk-sim);
+#                      agree (tools/scripts/papers.sh). Long (docs/analysis.md: trk-sim);
 #                      not part of make test.
 #   papers-summary     the `make test` step: the same script at a tiny size
 #                      (seconds), the summary's format checked.

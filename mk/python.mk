@@ -1,6 +1,6 @@
 # mk/python.mk - the Python tools for analysts (tools/python: the lcm-gen -p
 # types of trk's messages, a pure-Python LCM log reader, trk-sim CSV readers,
-# a track-log plotting example; README "Python").
+# a track-log plotting example; docs/analysis.md "Python").
 #
 #   make test-python   a step of `make test` (tests/python_tools.sh): the reader
 #                      and types against trk-lcm-bridge --summarize and the

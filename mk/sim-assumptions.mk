@@ -1,5 +1,5 @@
 # mk/sim-assumptions.mk - the assumptions that change trk-sim's results as
-# options (issue 18 item 4: --start, --gate-cap, --mre-start), a step of
+# options (--start, --gate-cap, --mre-start), a step of
 # `make test` (tests/sim_assumptions.sh, ~20 s): the defaults keep the numbers
 # of before (tests/sim_assumptions/*.rows), the options act in the expected
 # direction, the CSV headers and plot titles name them.

@@ -1,5 +1,5 @@
-# mk/sim-kn.mk - blanding-add-arl's K range of the K/N rules (issue 18 item
-# 4), a step of `make test`: --kn-k full (K = 0..N-1) holds every rule of the
+# mk/sim-kn.mk - blanding-add-arl's K range of the K/N rules, a
+# step of `make test`: --kn-k full (K = 0..N-1) holds every rule of the
 # default trimmed range (K = N/16..N/3) with the same values (common random
 # numbers: a rule's first passage does not depend on the others), holds N
 # rules per window N, and both CSV files and the gnuplot script name the range;

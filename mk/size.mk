@@ -9,7 +9,7 @@
 #                       - what a typical firmware image links (tools/scripts/
 #                         fw_footprint.c: tracker + amplitude from a ROM table,
 #                         --gc-sections), per library (libtrk, libm, libc, libgcc)
-#                       - the goals of issue 9 (M4F .text <= 32 KB, RAM for 64
+#                       - the footprint goals (M4F .text <= 32 KB, RAM for 64
 #                         tracks x 256 detections <= 64 KB, stack <= 2 KB)
 #   make size-check     (part of make test) fails when, on cortex-m4f:
 #                       - libtrk has static data (.data/.bss: no global state)
@@ -20,8 +20,8 @@
 #                         RAM_LIMIT (65536) at the default capacities
 #                       - the libtrk code a typical firmware image links
 #                         (fw_footprint.c) exceeds TEXT_LIMIT_JOINT (36864) with
-#                         the defaults (joint association, issue 15: +5.5 KB), or
-#                         TEXT_LIMIT (32768, issue 9's goal) in a build without
+#                         the defaults (joint association: +5.5 KB), or
+#                         TEXT_LIMIT (32768, the goal) in a build without
 #                         joint association (TRK_WITH_JOINT=0, target
 #                         cortex-m4f-nojoint)
 #                       - the whole libtrk.a's .text exceeds LIB_TEXT_LIMIT
@@ -45,16 +45,16 @@
 #   bounded; a preempting interrupt's own stack and exception frame are not
 #   included; the riscv build has no C library to link, so its figures are
 #   libtrk's own frames only. stack_elf.awk applied to libtrk's own functions
-#   gives the same numbers as step 3 (a cross-check, see the README).
+#   gives the same numbers as step 3 (a cross-check, see docs/firmware.md).
 
 SIZE_SMALL_DEFS := -DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2
 STACK_LIMIT ?= 2048
 TEXT_LIMIT ?= 32768
 TEXT_LIMIT_JOINT ?= 36864
 RAM_LIMIT ?= 65536
-# 40 KB until issue 14's initiation, existence tests and complete detection
-# model (+3.8 KB), 44 KB until the tracker's joint association (issue 15,
-# +3.5 KB); the goal stays 32 KB (issue 13)
+# 40 KB until two-point initiation, the existence tests and the complete
+# detection model (+3.8 KB), 44 KB until the tracker's joint association
+# (+3.5 KB); the goal stays 32 KB
 LIB_TEXT_LIMIT ?= 49152
 SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
 TARGET_cortex-m4f_ARCH := arm

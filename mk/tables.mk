@@ -1,4 +1,4 @@
-# mk/tables.mk - amplitude tables made by trk-tablegen (issue 4).
+# mk/tables.mk - amplitude tables made by trk-tablegen.
 #
 #   make tables   the default amplitude tables into $(BUILD)/tables/:
 #                 K clutter nu = 1 and nu = 8 (Brekke's setting) and Rayleigh,

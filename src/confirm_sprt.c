@@ -1,6 +1,6 @@
 /* confirm_sprt.c - Wald SPRT track confirmation (trk/confirm_sprt.h;
  * Willett eqs 49-57 in sequential form; complete or paper event model,
- * CONVENTIONS "Complete detection-event model"). */
+ * docs/conventions.md "Complete detection-event model"). */
 #include "trk/confirm_sprt.h"
 
 trk_status trk_sprt_model_init(struct trk_sprt_model *m, const struct trk_sprt_params *p)

@@ -1,4 +1,4 @@
-/* gate.c - gate threshold, volume and distance (CONVENTIONS "Gating"). */
+/* gate.c - gate threshold, volume and distance (docs/conventions.md "Gating"). */
 #include "trk/gate.h"
 
 #include "gate_impl.h"

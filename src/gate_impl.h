@@ -1,6 +1,6 @@
 /* gate_impl.h (private) - the gate-volume formula, inline for the PDA's hot
  * path; gate.c's public trk_gate_unit_volume, trk_gate_volume and
- * trk_gate_volume_inn wrap these (CONVENTIONS "Gating"). */
+ * trk_gate_volume_inn wrap these (docs/conventions.md "Gating"). */
 #ifndef TRK_GATE_IMPL_H
 #define TRK_GATE_IMPL_H
 

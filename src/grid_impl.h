@@ -5,7 +5,7 @@
  * column it overlaps, one contiguous range of points: gating (the scan's
  * detections) and two-point initiation (each scan's candidates) cost the
  * points near the box, not the whole strip of a sort by x, whose content
- * grows with the side of the area (issue 19's grid). Built by one counting
+ * grows with the side of the area. Built by one counting
  * sort, O(n).
  *
  * The cells' ends are kept outside the struct (end[cell], one past its last

@@ -1,6 +1,6 @@
 /* hmm_detect.c - two-state Markov detection model: predictive likelihood f1
  * per sensor, complete or paper event model (trk/hmm_detect.h; Blanding
- * 2007 eqs 7-10, Willett eqs 60-64; CONVENTIONS "Complete detection-event
+ * 2007 eqs 7-10, Willett eqs 60-64; docs/conventions.md "Complete detection-event
  * model"). */
 #include "trk/hmm_detect.h"
 
@@ -100,7 +100,7 @@ static void update_paper(const struct trk_hmm_model *m, struct trk_hmm_state *st
 }
 
 /* Complete event model: per state e = 1 - (1-Pd)(1-pfa) for a hit and
- * (1-Pd)(1-pfa) for a miss (CONVENTIONS "Complete detection-event model"). */
+ * (1-Pd)(1-pfa) for a miss (docs/conventions.md "Complete detection-event model"). */
 static void update_complete(const struct trk_hmm_model *m, struct trk_hmm_state *st,
                             unsigned sensor, int detected, trk_real pfa, trk_real ph,
                             trk_real *log_f1)

@@ -1,5 +1,5 @@
 /* imm.c - interacting multiple model estimator, alone and with PDA
- * (trk/imm.h; CONVENTIONS "Multiple models (IMM)"). */
+ * (trk/imm.h; docs/conventions.md "Multiple models (IMM)"). */
 #include "trk/imm.h"
 
 #include <math.h>

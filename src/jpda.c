@@ -1,6 +1,6 @@
 /* jpda.c - JPDA / JIPDA marginal association probabilities (trk/jpda.h;
- * CONVENTIONS "Joint association"): clusters by union-find over the gated
- * pairs, a closed form for a lone track, an exact subset dynamic programme
+ * docs/conventions.md "Joint association (JPDA / JIPDA)"): clusters by
+ * union-find over the gated pairs, a closed form for a lone track, an exact subset dynamic programme
  * per cluster, loopy belief propagation beyond the exact bound. */
 #include "trk/jpda.h"
 

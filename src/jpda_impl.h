@@ -6,8 +6,8 @@
 #include "trk/jpda.h"
 
 /* JIPDA posterior existence and conditional weights of one track
- * (trk_jpda_existence, CONVENTIONS "Joint association"), in place: p[0, n)
- * holds the track's marginals P(t <- j) and gets beta_j; *beta0 and
+ * (trk_jpda_existence, docs/conventions.md "Joint association (JPDA /
+ * JIPDA)"), in place: p[0, n) holds the track's marginals P(t <- j) and gets beta_j; *beta0 and
  * *psi_post the rest. psi' is in [0, 1] whatever the rounding; when every
  * term underflows (psi tiny) psi' = 0 and beta0 = 1. Statuses as
  * trk_jpda_existence; p untouched on error. */

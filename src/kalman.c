@@ -1,5 +1,6 @@
 /* kalman.c - linear-Gaussian predict/update and the 2-D CV model
- * (CONVENTIONS "General"; Bar-Shalom's Kalman filter, Joseph form). */
+ * (docs/conventions.md "State and covariance layout"; Bar-Shalom's Kalman
+ * filter, Joseph form). */
 #include "trk/kalman.h"
 
 #define TRK_I_KALMAN_DEFINE /* the external copies of the Kalman kernels in size builds */
@@ -8,7 +9,7 @@
 const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX] = {1, 0, 0, 0, 0, 0, 1, 0};
 
 /* F = blkdiag([[1, T], [0, 1]] x n), Q = blkdiag(q [[T^3/3, T^2/2], [T^2/2, T]] x n)
- * (CONVENTIONS "General"); either output may be NULL. */
+ * (docs/conventions.md "State and covariance layout"); either output may be NULL. */
 static void cv_blocks(int n_axes, trk_real t, trk_real qd, trk_real *f, trk_real *q)
 {
     const int nx = 2 * n_axes;

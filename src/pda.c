@@ -1,4 +1,4 @@
-/* pda.c - one-track PDA update (trk/pda.h; CONVENTIONS "PDA", Brekke eqs 21-25).
+/* pda.c - one-track PDA update (trk/pda.h; docs/conventions.md "PDA", Brekke eqs 21-25).
  * The update itself is trk_i_pda_update_set (pda_impl.h), shared with the
  * tracker; this file gates the caller's detections into a gated set. */
 #include "trk/pda.h"

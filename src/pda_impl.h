@@ -1,6 +1,6 @@
 /* pda_impl.h (private) - one track's PDA update over its gated set, shared
  * by pda.c (the public one-track API) and the tracker (every track of a
- * scan). See trk/pda.h for the formulas (CONVENTIONS "PDA").
+ * scan). See trk/pda.h for the formulas (docs/conventions.md "PDA").
  *
  * The caller predicts, computes the innovation and gates; the gated set
  * holds the detections with their unnormalised log weights ln e_i. Detections
@@ -292,7 +292,7 @@ TRK_INLINE void trk_i_pda_shared_spread(const struct trk_i_pda_pred *pr, const t
 }
 
 /* The 2-D CV model (state [x, vx, y, vy], H selecting x and y) with every
- * detection sharing S, the usual case, has a path of its own (issue 19: the
+ * detection sharing S, the usual case, has a path of its own (the
  * per-track update within 1.25x of a hand-written loop): the same moment
  * match as the general code below, written out over the model's fixed
  * indices, with the weights' moments taken in one pass about a shift (see
@@ -600,7 +600,7 @@ TRK_INLINE trk_status trk_i_pda_update_beta(const struct trk_i_pda_pred *pr, con
     return trk_i_pda_commit(pr, x, acc);
 }
 
-/* One track's PDA over its gated set *s (CONVENTIONS "PDA"): lambda (given,
+/* One track's PDA over its gated set *s (docs/conventions.md "PDA"): lambda (given,
  * or m_G / V_G), beta (into s->w), and the posterior written over the
  * prediction pr->x, pr->p, with *o. With m_G = 0 the prediction is the
  * posterior (left as the caller made it). Statuses as

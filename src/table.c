@@ -1,5 +1,5 @@
 /* table.c - validation of lookup tables and in-place views on them
- * (trk/table.h; CONVENTIONS "Lookup tables").
+ * (trk/table.h; docs/conventions.md "Lookup tables").
  *
  * Every read is preceded by a bounds check against the total size, which is
  * itself checked against the caller's length first: whatever the bytes, the

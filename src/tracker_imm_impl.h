@@ -1,13 +1,13 @@
 /* tracker_imm_impl.h (private) - IMM tracks in the scan (TRK_WITH_IMM,
- * params.imm.n_models >= 1; trk/imm.h, CONVENTIONS "Multiple models"; README
- * "Manoeuvres"). A track's update keeps the stages of a CV track (predict,
+ * params.imm.n_models >= 1; trk/imm.h, docs/conventions.md "Multiple models (IMM)";
+ * docs/library.md "Manoeuvres"). A track's update keeps the stages of a CV track (predict,
  * gate, weights, update, commit, look); at each stage an IMM track does:
  *   predict  mixing and each model's prediction (trk_imm_mix,
  *            trk_imm_predict), each model's innovation with the sensor's R,
  *            and their combination with the predicted mode probabilities c_m
  *            (moment matching), which the look, the clutter tests and the
  *            gate volume of the PDA's clutter terms use;
- *   gate     the union of the models' gates (CONVENTIONS IMM-PDA: d2_m <=
+ *   gate     the union of the models' gates (docs/conventions.md IMM-PDA: d2_m <=
  *            gamma for at least one model m); the exclusion zone likewise;
  *   weights  per model and gated detection the PDA's ln e_mi with model m's
  *            S (no gate of its own), and the track's weight of the
@@ -21,7 +21,7 @@
  *            mu_m = sum_i beta_i rho_mi + beta0 c_m and its PDA update takes
  *            beta_mi = beta_i rho_mi / mu_m, beta_m0 = beta0 c_m / mu_m
  *            (the Gaussian mixture over association events and modes,
- *            collapsed per mode). Alone this is the IMM-PDA of CONVENTIONS
+ *            collapsed per mode). Alone this is the IMM-PDA of docs/conventions.md
  *            (mu_m ~ c_m Lambda_m, each model's own PDA weights); with
  *            one model the PDA. Then the combination into the track's x, P.
  * Existence (IPDA/JIPDA) takes the mixture weights as a CV track takes its

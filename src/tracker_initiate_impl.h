@@ -17,9 +17,9 @@
  * fills slots, and changes no other track's quality): no free slot below
  * free_from; no_tentative once a search found the table full of confirmed
  * (or terminated) tracks; weakest (when >= 0) the full table's weakest
- * tentative track, of quality q_weakest, kept until it is replaced (issue
- * 19: a refused start then costs no search of the table, so that a full
- * table's initiation is not tracks x detections). */
+ * tentative track, of quality q_weakest, kept until it is replaced (a
+ * refused start then costs no search of the table, so that a full table's
+ * initiation is not tracks x detections). */
 struct slots {
     size_t free_from;
     int no_tentative;

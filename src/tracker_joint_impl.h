@@ -1,5 +1,5 @@
 /* tracker_joint_impl.h (private) - joint association of a scan
- * (TRK_ASSOC_JOINT; trk/jpda.h, CONVENTIONS "Joint association"):
+ * (TRK_ASSOC_JOINT; trk/jpda.h, docs/conventions.md "Joint association (JPDA / JIPDA)"):
  *   1. joint_gate: every live track (confirmed first, as the per-track
  *      update) is predicted and gated into the scan's pair store, its ln e_i
  *      turned into the JIPDA weights ln w_tj = ln psi_t + ln e_i - ln lambda,

@@ -20,7 +20,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->clutter = TRK_CLUTTER_PARAMETRIC;
     p->init_speed_sigma_mps = 5;
     p->max_dt_s = 3600;
-    /* existence-based confirmation and termination (README "Defaults") */
+    /* existence-based confirmation and termination (docs/tracker.md "Defaults") */
     p->confirm.method = TRK_CONFIRM_EXISTENCE;
     p->confirm.u.existence.p_confirm = TRK_REAL_C(0.999);
     p->confirm.u.existence.reject_odds_ratio = TRK_REAL_C(0.01);
@@ -32,7 +32,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
     p->max_pos_sigma_ratio = 20;
-    p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: README "Association" */
+    p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: docs/tracker.md "Association" */
     p->merge_gate_d2 = 4;
     p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
                                                               detections */
@@ -186,7 +186,7 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
 }
 
 /* Sensor s: its PDA (P_D at the amplitude threshold with an amplitude
- * model: CONVENTIONS "PDA") and its covariance. */
+ * model: docs/conventions.md "PDA") and its covariance. */
 static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, const char **field,
                                const struct trk_i_tracker_built *b)
 {

@@ -1,5 +1,5 @@
 /* visibility.c - IPDA target visibility of one track (trk/visibility.h;
- * Kennedy 2008 eqs 1-2, 21-24; CONVENTIONS "Visibility (IPDA)"). */
+ * Kennedy 2008 eqs 1-2, 21-24; docs/conventions.md "Existence and visibility"). */
 #include "trk/visibility.h"
 
 #include <limits.h>

@@ -12,7 +12,7 @@
  * P(u_1) prod P(u_j | u_j-1) prod P(d_j | u_j); m <= 20. pfa NULL: the
  * paper's event model, P(d | u) = pd or 1 - pd; else the complete one with
  * the gate's P_FA pfa[j]: P(miss | u) = (1 - pd)(1 - pfa_j), P(hit | u) =
- * 1 - P(miss | u) (CONVENTIONS "Complete detection-event model"). */
+ * 1 - P(miss | u) (docs/conventions.md "Complete detection-event model"). */
 static inline double brute_log_lik_events(int m, const int *d, const double *pfa, double p,
                                           double q, double pd_low, double pd_high,
                                           double pi0_high)

@@ -1,21 +1,21 @@
 #!/bin/sh
 # tests/hostile_tools.sh BIN - the `make test` step hostile-tools (mk/hostile.mk):
-# issue 17's hostile input to the tools, items 7, 8 and 10, each a check that
+# hostile input to the tools (hangs, write errors, parsing), each a check that
 # failed before the fix:
-#   item 7 (hangs, unbounded reads): `trk-tablegen info /dev/zero` and
+#   hangs, unbounded reads: `trk-tablegen info /dev/zero` and
 #     `trk-vectors /dev/zero` refuse at once (they read until malloc failed);
 #     `trk-sonar-sim --region 0,1e9,0,1e9` is refused with a message (it drew
 #     5e12 clutter points a scan, forever); a live trk-sonar-sim stops cleanly
 #     (exit 0, "stopped by signal") on SIGTERM and on SIGINT
-#   item 8 (write errors, destroyed outputs): with writes failing (a file size
+#   write errors, destroyed outputs: with writes failing (a file size
 #     limit, as a full disk; /dev/full) trk-tablegen, trk-sim demo and
 #     kennedy-null and trk-sonar-sim exit 1, and a failed regeneration leaves
 #     the old table byte-identical, with no temporary file left; demo prints
 #     no "files:" line; `trk-sonar-sim --scan-period-s 1e13` is refused (it
 #     wrote 1 of 3 scans and exited 0)
-#   item 7 also: trk-sim mtt-compare refuses a CSV line longer than its
+#   unbounded reads also: trk-sim mtt-compare refuses a CSV line longer than its
 #     buffer, naming it (the rest was read as a line of its own)
-#   item 10 (parsing): `trk-tablegen amp --clutter-power 1e31 --no-measure`
+#   parsing: `trk-tablegen amp --clutter-power 1e31 --no-measure`
 #     exits 1 without a table (the library refused what it wrote); `info` on a
 #     table of unknown kind 99 says DEFECT (it said OK); `kennedy-null --runs
 #     2147483648` names the failure (it exited 1 without a word)
@@ -36,7 +36,7 @@ limited() {
     (ulimit -f "$blocks" && trap '' XFSZ && exec "$@")
 }
 
-# ---- item 7
+# ---- hangs, unbounded reads
 out=$(timeout -k 1 20 "$bin/trk-tablegen" info /dev/zero 2>&1)
 rc=$?
 [ $rc -eq 2 ] || fail "tablegen info /dev/zero: exit $rc, want 2 ($out)"
@@ -64,7 +64,7 @@ for sig in TERM INT; do
     ok
 done
 
-# ---- item 8
+# ---- write errors, destroyed outputs
 "$bin/trk-tablegen" amp --clutter-model rayleigh --snr-db 15 --pfa 1e-2 --no-measure --out "$d/t.tbl" > /dev/null ||
     fail "tablegen amp: a valid table"
 cp "$d/t.tbl" "$d/t.orig"
@@ -106,7 +106,7 @@ rc=$?
 echo "$out" | grep -q "beyond the tracker's time range" || fail "sonar-sim --scan-period-s 1e13: message ($out)"
 ok
 
-# ---- item 10
+# ---- parsing
 out=$("$bin/trk-tablegen" amp --clutter-model rayleigh --snr-db 15 --pfa 1e-3 --clutter-power 1e31 --no-measure \
     --out "$d/big.tbl" 2>&1)
 rc=$?

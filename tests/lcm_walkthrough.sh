@@ -1,9 +1,9 @@
 #!/bin/sh
-# lcm_walkthrough.sh [README] - the README's LCM walk-through, run literally
+# lcm_walkthrough.sh [PAGE] - the LCM walk-through of docs/lcm.md, run literally
 # (make test-lcm-walkthrough, part of make test; run from the top of the
 # checkout, after `make`).
 #
-# The commands below must appear in README.md word for word (checked first),
+# The commands below must appear in PAGE (docs/lcm.md) word for word (checked first),
 # so the walk-through a reader copies is the one tested. Then, in a scratch
 # directory (build/ linked into it):
 #   offline: trk-sonar-sim --out -> trk-lcm-bridge --replay -> --summarize
@@ -16,7 +16,7 @@
 # (the bridge's defaults: P_D 0.9, 1 m, 1e-4 per m^2 against the sonar's
 # 0.73, 3 m, 5e-6): it confirms 12 tracks for 4 targets.
 set -u
-README=${1:-README.md}
+README=${1:-docs/lcm.md}
 ROOT=$(pwd)
 STEP=test-lcm-walkthrough
 . tests/step_lib.sh

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/mpi_steps.sh STEP BIN - the MPI steps of `make test` (mk/mpi.mk, issue 20),
+# tests/mpi_steps.sh STEP BIN - the MPI steps of `make test` (mk/mpi.mk),
 # BIN holding trk-tablegen, trk-sim and their MPI builds trk-tablegen-mpi, trk-sim-mpi.
 #
 #   tablegen  a q2 PDAF table, a q2 PDAFAI table (K clutter) and a K amplitude table:

@@ -15,7 +15,7 @@
 #     after the death, 8 between)
 #   - at clutter 0 the three configurations hold the targets: coverage > 0.3, every
 #     target confirmed at some scan
-#   - the manoeuvres (issue 16 item 3): a run with a 120 deg turn at 1 deg/s and the
+#   - the manoeuvres: a run with a 120 deg turn at 1 deg/s and the
 #     straight target accelerating (--accel 0.1) passes the same checks, its
 #     turn_*/accel_* fractions in [0, 1], the acceleration's defined (not nan) and
 #     RMSE >= 0; without --accel the accel_* columns are nan; --config imm in a build

@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/papers_summary.sh TRK_SIM - the `make test` step papers-summary
-# (mk/papers.mk; issue 18 item 5): tools/scripts/papers.sh at its tiny size
+# (mk/papers.mk): tools/scripts/papers.sh at its tiny size
 # (the machinery of `make papers`), its summary checked:
 #   - summary.csv: the header experiment,source,cell,paper,trk,lo95,hi95,
 #     agree,rule; 9 fields per row; agree yes, no or n/a; paper and trk

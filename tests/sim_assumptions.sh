@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/sim_assumptions.sh TRK_SIM - the `make test` step sim-assumptions
-# (mk/sim-assumptions.mk; issue 18 item 4): the assumptions that change the
+# (mk/sim-assumptions.mk): the assumptions that change the
 # results are options, named in every CSV header and plot title.
 #   (a) the defaults give the numbers of before the options (the data rows of
 #       tests/sim_assumptions/*.rows, written by the build before them, gcc
@@ -10,7 +10,7 @@
 #   (b) the options act in the expected direction, same seed:
 #       --start steady loses fewer PDAF tracks than two-point (Brekke, 1 m^2);
 #       --mre-start zero and steady give the PDAF at P_FA 0.2 (K nu 1, 1 m^2) a
-#       finite MRE RMSE of 0.25-0.275 m (issue 18: 0.261 m) where two-point
+#       finite MRE RMSE of 0.25-0.275 m (measured 0.261 m) where two-point
 #       gives inf, and leave the other points' MRE unchanged;
 #       --gate-cap truncate:32 truncates in more runs than the default;
 #       --gate-cap lost:20 loses tracks by the cap (gate_cap_lost > 0);

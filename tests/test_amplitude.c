@@ -132,7 +132,7 @@ static void check_k_table(double nu, double snr_db, double pfa)
     const double pd = exp(kdist_log_sf(&k, 1, tk));
     TRK_ASSERT_NEAR(trk_amplitude_threshold(&m), tk, 0, TRK_TOL(1e-15, 1e-7));
     TRK_ASSERT_NEAR(trk_amplitude_pd(&m), pd, 0, TRK_TOL(1e-15, 1e-7));
-    /* ln l^a: 128 nodes uniform in ln a reach ~1e-6 (README); float tables
+    /* ln l^a: 128 nodes uniform in ln a reach ~1e-6 (docs/library.md); float tables
      * carry float rounding of values up to ~|ln l^a| ~ 100 */
     for (int i = 0; i <= 60; i++) {
         const double a = tk * pow(10.0, 1.2 * i / 60); /* t .. 16 t: the tail beyond a_max too */
@@ -407,7 +407,7 @@ static void test_bad_tables(void **state)
 /* A K table built by hand whose nodes are consistent with its threshold t
  * (ln l^a axis from ln(t/sqrt P), inverse-survival curves u(x) from t/sqrt P,
  * explicit x nodes, all within the node bounds): only the bound t/sqrt(P) <=
- * TRK_AMP_MAX_NORM_THRESHOLD can refuse it (issue 17 item 6: t = 1e160 passed
+ * TRK_AMP_MAX_NORM_THRESHOLD can refuse it (t = 1e160 passed
  * every check and dropped every detection as below threshold). */
 static trk_status consistent_k_table(double thr, double power)
 {

@@ -460,12 +460,12 @@ static void test_set(void **state)
     assert_int_equal(kv_parse_assignment("gate_prob= ", tcfg_set, &cfg, err, sizeof err), -1);
 }
 
-/* Issue 17 item 10: one number syntax everywhere (kv_strtod): decimal only
+/* One number syntax everywhere (kv_strtod): decimal only
  * (strtod took "0x10" as 16), subnormals are finite and accepted (4.9e-324
  * was "not a finite number"), overflow and total underflow named as such;
  * blank values refused; "sensor.-1" named as a negative index (it was
  * "sensor index 18446744073709551615"). */
-static void test_numbers_issue17(void **state)
+static void test_numbers_one_syntax(void **state)
 {
     (void)state;
     double d, v[4];
@@ -616,7 +616,7 @@ int main(void)
         cmocka_unit_test(test_refused_values), cmocka_unit_test(test_usage_errors),
         cmocka_unit_test(test_help),         cmocka_unit_test(test_common_table),
         cmocka_unit_test(test_set),
-        cmocka_unit_test(test_numbers_issue17),          cmocka_unit_test(test_dispatch),
+        cmocka_unit_test(test_numbers_one_syntax),       cmocka_unit_test(test_dispatch),
         cmocka_unit_test(test_internal_errors), cmocka_unit_test(test_stop_signals),
     };
     return trk_run_tests("cli", tests, NULL, NULL);

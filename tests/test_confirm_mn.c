@@ -7,7 +7,7 @@
 
 #define UNWRITTEN ((enum trk_decision)77)
 
-/* The rule of CONVENTIONS "M/N confirmation", stated directly: the decision
+/* The rule of docs/conventions.md "M/N confirmation", stated directly: the decision
  * after scan t (1-based) of the pattern d[0..t-1]. */
 static enum trk_decision reference(const int *d, int t, int m, int n, enum trk_mn_mode mode)
 {

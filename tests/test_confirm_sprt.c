@@ -1,7 +1,7 @@
 /* test_confirm_sprt.c - Wald SPRT confirmation: thresholds and llr against
  * closed forms, ties (>= / <=), sticky decisions, the HMM model against
  * Willett's eq 49 by enumeration, both in the paper's and the complete
- * event model (CONVENTIONS "Complete detection-event model"), bad input,
+ * event model (docs/conventions.md "Complete detection-event model"), bad input,
  * one model shared by several tracks, 10^6-step runs. */
 #include "trk_test.h"
 #include "hmm_brute.h"
@@ -253,7 +253,7 @@ static void test_long_runs(void **state)
     }
 }
 
-/* Complete event model with fixed P_D = 0.8 (the default; CONVENTIONS
+/* Complete event model with fixed P_D = 0.8 (the default; docs/conventions.md
  * "Complete detection-event model"): hit ln f1 = ln(1 - (1-P_D)(1-P_FA)),
  * miss ln f1 = ln(1-P_D) + ln(1-P_FA), so a miss adds ln(1-P_D) whatever
  * the gate (pfa near 1 included). */

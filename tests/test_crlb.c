@@ -144,7 +144,7 @@ static void test_crlb_vectors_and_steps(void **state)
     TRK_ASSERT_NEAR(res.j_inv[3], 1.2121359597551464, 1e-12, TRK_TOL(1e-9, 1e-4));
 }
 
-/* The bound lies below the MRE with the same q2 (CONVENTIONS: 2-4x larger). */
+/* The bound lies below the MRE with the same q2 (docs/conventions.md: 2-4x larger). */
 static void test_crlb_below_mre(void **state)
 {
     (void)state;

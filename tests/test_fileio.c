@@ -3,7 +3,7 @@
  * (NULL, errno from fopen, length 0); the bound of fileio_read_max (an
  * endless /dev/zero refused); the atomic writer: a failed write (a file size
  * limit, a full device) leaves the old file byte-identical and no temporary
- * file, a good one replaces it (issue 17 items 7 and 8). */
+ * file, a good one replaces it. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <errno.h>

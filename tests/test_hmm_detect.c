@@ -1,6 +1,6 @@
 /* test_hmm_detect.c - two-state Markov detection model (Blanding eqs 7-10):
  * predictive likelihoods against brute-force enumeration (Willett eq 53)
- * for the paper's and the complete event model (CONVENTIONS "Complete
+ * for the paper's and the complete event model (docs/conventions.md "Complete
  * detection-event model"), closed forms of the complete model, the two
  * forms agreeing at pfa = 0, priors, per-sensor independence, accuracy near
  * 1, bad parameters. */
@@ -227,7 +227,7 @@ static void test_bad_params(void **state)
 }
 
 /* ---------------------------------------------------------------- event models
- * CONVENTIONS "Complete detection-event model": under TRK_EVENTS_COMPLETE
+ * docs/conventions.md "Complete detection-event model": under TRK_EVENTS_COMPLETE
  * (the default) e = 1 - (1-Pd)(1-pfa) for a hit, (1-Pd)(1-pfa) for a miss. */
 
 /* Zeroed or uniform-filled parameters are the complete model; the model

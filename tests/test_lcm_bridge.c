@@ -197,7 +197,7 @@ static struct bad make_bad(int kind, int k)
     case 6: m.n_detections = 257, r.want = LCMC_COUNT, r.what = "count 257"; break;
     case 7: m.n_detections = 0x40000001, r.want = LCMC_COUNT, r.what = "count 2^30+1"; break;
     /* a NaN, an infinite amplitude or a flag 2 in one detection no longer
-     * rejects the scan (issue 17 item 9): test_bad_detection_dropped_alone */
+     * rejects the scan: test_bad_detection_dropped_alone */
     case 8: m.utime = INT64_MAX, r.want = LCMC_FIELD, r.what = "utime INT64_MAX"; break;
     case 9: m.n_detections = INT32_MIN, r.want = LCMC_COUNT, r.what = "count INT32_MIN"; break;
     case 10: m.sensor_id = -1, r.want = LCMC_SENSOR, r.what = "sensor -1"; break;
@@ -358,7 +358,7 @@ static void test_bad_detection_dropped_alone(void **state)
 
 /* Sequence numbers: a small forward step counts the missing scans; a repeat,
  * a step back or a step above BRIDGE_SEQ_GAP_MAX + 1 is one jump (seq 2^63-1
- * after 4 used to add 9.2e18 "gaps", issue 17 item 9). */
+ * after 4 used to add 9.2e18 "gaps"). */
 static void test_seq_gaps(void **state)
 {
     (void)state;
@@ -389,7 +389,7 @@ static void test_seq_gaps(void **state)
 
 /* Detections below the amplitude threshold are counted (status, summary):
  * with sensor.0.pfa 1e-9 the demo log lost most detections while the
- * summary said "detections dropped 0" (issue 17 item 9). */
+ * summary said "detections dropped 0". */
 static void test_below_threshold_counted(void **state)
 {
     (void)state;
@@ -474,8 +474,8 @@ static void test_refuses_bad_config(void **state)
     assert_int_equal(tcfg_set(&bad, "sensor.0.amplitude", "k", err, sizeof err), 0); /* no table */
     assert_null(bridge_new(&bad, &opts, err, sizeof err));
     assert_non_null(strstr(err, "amp_table"));
-    /* its square overflows trk_real: refused at init, the field named (issue
-     * 17 item 2; 1e160 is beyond float itself, so the float build squares 1e20) */
+    /* its square overflows trk_real: refused at init, the field named
+     * (1e160 is beyond float itself, so the float build squares 1e20) */
     bad = cfg;
     assert_int_equal(tcfg_set(&bad, "init_speed_sigma_mps", TRK_TEST_IS_FLOAT ? "1e20" : "1e160", err,
                               sizeof err),
@@ -811,7 +811,7 @@ static void raw_record(FILE *f, int64_t ts, const char *ch, size_t chlen, const 
 }
 
 /* "TRK_DETECTIONS\0hidden" is another channel: channels are compared by
- * their full length (issue 17 item 9); --keep-input copies it exactly.
+ * their full length; --keep-input copies it exactly.
  * (--summarize: tests/lcm_udpm_netns.sh) */
 static void test_replay_channel_full_length(void **state)
 {
@@ -846,7 +846,7 @@ static void test_replay_channel_full_length(void **state)
 }
 
 /* Log times near INT64_MAX: the next status time saturates instead of
- * overflowing (issue 17 item 3), so no status is due before the end. */
+ * overflowing, so no status is due before the end. */
 static void test_replay_time_near_int64_max(void **state)
 {
     (void)state;
@@ -868,7 +868,7 @@ static void test_replay_time_near_int64_max(void **state)
 }
 
 /* Inputs that are no log end with a clear error instead of spinning or
- * "0 events" (issue 17 items 7 and 10): zeros, a first record cut short, a
+ * "0 events": zeros, a first record cut short, a
  * directory; /dev/zero stops at the resynchronisation bound or at once on
  * the stop flag. (--summarize and SIGTERM: tests/lcm_udpm_netns.sh) */
 static void test_not_a_log(void **state)

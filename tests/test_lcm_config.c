@@ -226,7 +226,7 @@ static void test_file(void **state)
     assert_int_equal(kv_parse_file("/nonexistent/trk.conf", tcfg_set, &c, err, sizeof err), -1);
     assert_non_null(strstr(err, "cannot open"));
 
-    /* issue 17 items 7 and 10: a NUL byte hid the rest of its line (and
+    /* a NUL byte hid the rest of its line (and
      * /dev/zero, all NULs, never returned); a comment of 1 020 bytes with a
      * setting after it, NUL-padded so that the old line test missed it */
     const char nul[] = "gate_prob = 0.9\0 trailing text\nsensor.0.pd = 0.8\n";

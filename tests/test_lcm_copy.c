@@ -198,7 +198,7 @@ static void test_capacity(void **state)
     expect_reject(&msg, 2, LCMC_CAPACITY);
 }
 
-/* A bad detection is dropped alone (issue 17 item 9): the scan is accepted,
+/* A bad detection is dropped alone: the scan is accepted,
  * the other detections are copied in order, the drop is counted by reason
  * and detail names it. */
 static void expect_dropped(const trk_detection_scan_t *m, size_t bad, enum lcmc_reason why)
@@ -299,7 +299,7 @@ static void test_fields(void **state)
     msg.utime = INT64_MIN;
     expect_reject(&msg, 2, LCMC_FIELD);
     /* beyond the tracker's time range: a field error, not "gap since the
-     * previous scan" (issue 17 item 9) */
+     * previous scan" */
     make_msg(&msg);
     msg.utime = TRK_TIME_US_MAX + 1;
     expect_reject(&msg, 2, LCMC_FIELD);

@@ -10,18 +10,19 @@
  * 40 scans, the turn, each structure target present where its feature
  * happens), the scan capacity (clutter never makes a scan exceed
  * TRK_MAX_DETECTIONS, the tracker accepts every scan). The fixed family
- * (b9ce836's): the scenario b9ce836 produced (seed 1, values kept from it),
+ * (the first 8-target scenario): what its first implementation produced
+ * (seed 1, values kept from it),
  * 8 targets, all alive but BIRTH before its birth and DEATH after its death,
  * speeds drawn in [5, 15] m/s and kept where the path stays inside, else
  * the largest that keeps it in, the X and the pair 60 m apart, determinism,
  * the scan capacity; what the two families share (the structure's draws,
- * the clutter). Issue 16 item 3's manoeuvres: the straight target's
+ * the clutter). The manoeuvres: the straight target's
  * acceleration (truth continuous, exact, the speed up by accel x accel_s,
  * the life cut where it leaves; accel 0 the scenario unchanged, bit for
  * bit; nothing else changes with it) and turns up to a full circle. And the
  * helpers the experiment uses: Student t intervals
- * (mc_stats.h), the per-target assignment of mtt_eval.h, the pre-issue-14
- * defaults. */
+ * (mc_stats.h), the per-target assignment of mtt_eval.h, the defaults
+ * before two-point initiation. */
 #include "trk_test.h"
 
 #include "mc_stats.h"
@@ -438,13 +439,14 @@ static void test_capacity(void **state)
 
 /* ---------------------------------------------------------------- the fixed family */
 
-/* The fixed family is b9ce836's: seed 1 at the defaults (200 scans) gives
- * the targets b9ce836 gave (its mtt_scenario.c printed with %.17g) and the
+/* The fixed family is the first 8-target scenario: seed 1 at the defaults
+ * (200 scans) gives the targets its first implementation gave (printed
+ * with %.17g) and the
  * same scans (the count, the targets detected in shuffled order, the sums
  * of the positions and amplitudes at 37 clutter). Bit for bit on the
  * machine that took them (x86-64, glibc); the tolerances leave room for
  * another libm. */
-static void test_fixed_b9ce836(void **state)
+static void test_fixed_first_scenario(void **state)
 {
     (void)state;
     static const struct {
@@ -943,7 +945,7 @@ static void test_eval_assign(void **state)
     mtt_eval_free(&e);
 }
 
-/* The `old` configuration: the pre-issue-14 defaults, accepted by the tracker. */
+/* The `old` configuration: the defaults before two-point initiation, accepted by the tracker. */
 static void test_old_defaults(void **state)
 {
     (void)state;
@@ -967,7 +969,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_determinism), cmocka_unit_test(test_common_random_numbers),
         cmocka_unit_test(test_presence),    cmocka_unit_test(test_geometry),
-        cmocka_unit_test(test_capacity),    cmocka_unit_test(test_fixed_b9ce836),
+        cmocka_unit_test(test_capacity),    cmocka_unit_test(test_fixed_first_scenario),
         cmocka_unit_test(test_fixed_presence), cmocka_unit_test(test_fixed_geometry),
         cmocka_unit_test(test_fixed_determinism), cmocka_unit_test(test_fixed_capacity),
         cmocka_unit_test(test_families_share), cmocka_unit_test(test_student_t),

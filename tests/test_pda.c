@@ -119,7 +119,7 @@ static void test_cv_fast_path(void **state)
     }
 }
 
-/* Found by review of issue 19's kernel: a huge finite detection outside
+/* Found by review of the CV fast path's kernel: a huge finite detection outside
  * the gate (weight 0, whitened innovation infinite) is accepted by the
  * general path too, not turned into TRK_E_NAN; clustered detections with
  * H P H' >> R keep the float covariance accurate (the centred spread); a

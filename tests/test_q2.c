@@ -176,7 +176,7 @@ static void test_lookup_uniform_equals_explicit(void **state)
     }
 }
 
-/* Issue 17 item 5: a PDAF table that passes every other check (values in
+/* A PDAF table that passes every other check (values in
  * [0, 1], pd nodes in (0, 1], CRC) with cubic interpolation and an explicit
  * pd axis holding one short interval returned 1.30, 6.61, 5 927 and 5.9e9:
  * the interpolation gain bound was not enforced for explicit axes. Such a
@@ -671,7 +671,7 @@ static void test_is_limits(void **state)
         assert_int_equal(q2_is_cell(nz, g, 0.9, 1e-7, NULL, &o, &q2, &se, err, sizeof err), 0);
         TRK_ASSERT_NEAR(q2, 0.9 * Fn, 2e-5, 0);
     }
-    /* b of the CONVENTIONS formula: nz = 2, pd = 1: b = 2 lambda_vg (1 - pg) / gamma */
+    /* b of the docs/conventions.md formula: nz = 2, pd = 1: b = 2 lambda_vg (1 - pg) / gamma */
     TRK_ASSERT_NEAR(q2_is_b(2, gamma, 1.0, 3.0), 2 * 3.0 * 0.01 / gamma, 0, 1e-6);
 }
 

@@ -135,7 +135,7 @@ static void test_chi2_large_x(void **state)
 }
 
 /* Huge and infinite x: the upper tail is 0 and the cdf 1 at every dof,
- * never NaN (issue 17 item 4: x = +inf at dof >= 3 and x = 1e300 or the
+ * never NaN (x = +inf at dof >= 3 and x = 1e300 or the
  * largest real at odd dof >= 5 gave NaN). */
 static void test_chi2_huge_x(void **state)
 {

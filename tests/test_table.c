@@ -479,7 +479,7 @@ static void test_file(void **state)
     TRK_ASSERT_STATUS(trk_table_load_file("/nonexistent/trk.tbl", buf, sizeof buf, &t, &n), TRK_E_IO);
     TRK_ASSERT_STATUS(trk_table_file_size("/nonexistent/trk.tbl", &n), TRK_E_IO);
     /* an endless file is no table: the count stops at the format's bound
-     * (issue 17 item 7: /dev/zero never returned) */
+     * (/dev/zero never returned) */
     FILE *zero = fopen("/dev/zero", "rb");
     if (zero) {
         fclose(zero);

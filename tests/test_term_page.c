@@ -1,5 +1,5 @@
 /* test_term_page.c - Page (CUSUM) termination with the HMM detection model
- * (Blanding eqs 5-10), paper and complete event models (CONVENTIONS
+ * (Blanding eqs 5-10), paper and complete event models (docs/conventions.md
  * "Complete detection-event model"): recursion against closed forms and
  * brute-force likelihoods, strict threshold, sticky decision, multisensor,
  * bad input, one shared model for many tracks, 10^6-step runs that stay
@@ -267,7 +267,7 @@ static void test_long_runs(void **state)
     }
 }
 
-/* Complete event model, fixed P_D = 0.6 (CONVENTIONS "Complete
+/* Complete event model, fixed P_D = 0.6 (docs/conventions.md "Complete
  * detection-event model"): s = ln pfa - ln(1 - 0.4 (1-pfa)) on a hit and
  * s = -ln 0.4 on a miss, whatever pfa (near 1 included: finite, > 0). */
 static void test_fixed_pd_complete_closed_form(void **state)
@@ -321,7 +321,7 @@ static void test_forms_agree_at_small_pfa(void **state)
     }
 }
 
-/* The coasting track of the issue (CONVENTIONS "Complete detection-event
+/* The coasting track that the complete model exists for (docs/conventions.md "Complete detection-event
  * model"): a fading HMM (pd_high 0.9, pd_low 0.1, p = 0.1, q = 0.02), 12
  * looks detected at pfa 1e-3, then only misses while the coasting gate
  * grows: lambda V_k = 0.2 + (41 - 0.2) k / 39 over 40 looks, pfa_k = 1 -

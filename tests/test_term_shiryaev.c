@@ -2,7 +2,7 @@
  * recursion against the probability form (eq 12) where that is accurate,
  * rho = 0, strict threshold and sticky decision, runs past exp's overflow and
  * underflow limits, bad input, closed forms of the paper's and the complete
- * event model (CONVENTIONS "Complete detection-event model") and the
+ * event model (docs/conventions.md "Complete detection-event model") and the
  * coasting track that only the complete model terminates. */
 #include "trk_test.h"
 #include "trk/term_shiryaev.h"
@@ -177,7 +177,7 @@ static void test_bad_input(void **state)
     assert_memory_equal(&m, &mbefore, sizeof m);
 }
 
-/* Fixed P_D = 0.7 in both event models (CONVENTIONS "Complete
+/* Fixed P_D = 0.7 in both event models (docs/conventions.md "Complete
  * detection-event model"): paper s = ln(pfa / pd) on a hit, ln((1-pfa) /
  * (1-pd)) on a miss; complete s = ln pfa - ln(1 - (1-pd)(1-pfa)) on a hit,
  * -ln(1-pd) on a miss (pfa near 1 included), and
@@ -213,7 +213,7 @@ static void test_fixed_pd_both_forms(void **state)
     }
 }
 
-/* The coasting track of the issue (see test_term_page.c,
+/* The coasting track of the complete event model (see test_term_page.c,
  * test_coasting_track_terminates, for the scenario and pfa_k): fading HMM
  * (pd_high 0.9, pd_low 0.1, p = 0.1, q = 0.02), 12 hits at pfa 1e-3, then
  * 40 misses with lambda V_k = 0.2 .. 41; Shiryaev beta0 = rho = 0.01,

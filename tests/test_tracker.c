@@ -344,7 +344,7 @@ static void test_check_params(void **state)
         REFUSE_SENSOR(clutter_density_per_m2, -1, "clutter_density_per_m2", TRK_E_RANGE);
         REFUSE_SENSOR(use_amplitude, 2, "use_amplitude", TRK_E_ARG);
         REFUSE_SENSOR(use_amplitude, 1, "amplitude", TRK_E_ARG); /* a zero model: not built by its init */
-        /* a model filled by hand (issue 17 item 6): a copy of a built one with
+        /* a model filled by hand: a copy of a built one with
          * its table pointer cleared, or one that never went through an init */
         base_params(&p);
         p.sensor[0].use_amplitude = 1;
@@ -730,7 +730,7 @@ static void test_amplitude_pdafai(void **state)
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &rep));
     assert_amplitude_counts(&rep, 1, 2);
-    /* issue 17 item 6: finite amplitudes whose ln l^a = lr0 + lr1 a^2 overflows (1e155 .. 1e308
+    /* finite amplitudes whose ln l^a = lr0 + lr1 a^2 overflows (1e155 .. 1e308
      * in double) are bad amplitudes, not ones below the threshold (they were counted so) */
     {
         static struct trk_tracker tk2;

@@ -1,4 +1,4 @@
-/* test_tracker_init.c - the track table in clutter (issue 14): two-point
+/* test_tracker_init.c - the track table in clutter: two-point
  * initiation (state, covariance and initial existence in closed form; the
  * velocity gate; the candidates' lifetime), a full table that replaces its
  * weakest tentative track and never a confirmed one, existence-based
@@ -25,7 +25,7 @@ static uint64_t rng_state; /* the generator of trk_test.h */
 static double urand(void) { return trk_test_urand(&rng_state); }
 static double nrand(void) { return trk_test_nrand(&rng_state); }
 
-/* The sonar-like sensor of issue 14: P_D 0.8, R = 25 I, clutter density lambda. */
+/* The sonar-like sensor of the track-table tests: P_D 0.8, R = 25 I, clutter density lambda. */
 #define sonar_params trk_test_sonar_params
 #define det_at trk_test_det_at
 
@@ -267,7 +267,7 @@ static void set_term(struct trk_tracker_params *p, enum term_case c)
         p->term.u.page.hmm = hmm;
         p->term.u.page.h = 5;
         break;
-    case T_SHIRYAEV: /* issue 14's reproduction */
+    case T_SHIRYAEV: /* a coasting track of a fading target must end */
         p->term.method = TRK_TERM_SHIRYAEV;
         p->term.u.shiryaev.hmm = hmm;
         p->term.u.shiryaev.beta0 = TRK_REAL_C(0.01);

@@ -1,5 +1,5 @@
 /* test_tracker_joint.c - joint association in the track table
- * (TRK_ASSOC_JOINT, issue 15): a track alone in its cluster gets exactly its
+ * (TRK_ASSOC_JOINT): a track alone in its cluster gets exactly its
  * per-track PDA / IPDA update (states, covariances, existence and decisions
  * scan after scan); two tracks sharing detections get the JIPDA update
  * composed from the public pieces (trk_jpda_track_weights,
@@ -20,7 +20,7 @@ static uint64_t rng_state; /* the generator of trk_test.h */
 static double urand(void) { return trk_test_urand(&rng_state); }
 static double nrand(void) { return trk_test_nrand(&rng_state); }
 
-/* issue 14's sonar (trk_test_sonar.h) with association a */
+/* the sonar of trk_test_sonar.h with association a */
 static void sonar_params(struct trk_tracker_params *p, double lambda, enum trk_assoc_method a)
 {
     trk_test_sonar_params(p, lambda);

@@ -1,5 +1,5 @@
 /* test_tracker_random.c - the track table under long random and hostile
- * input (issue 17, library items 1-3): after every scan of a long random
+ * input: after every scan of a long random
  * run every live track's covariance is symmetric and positive definite (its
  * Cholesky succeeds) and finite, ids are unique, the live count and the
  * report agree; near-singular, overflowing and tiny covariances, squared

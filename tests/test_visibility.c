@@ -37,7 +37,7 @@ static trk_status vis_init(struct trk_visibility *v, const struct trk_visibility
 static const struct trk_visibility_params kp = {
     TRK_REAL_C(0.5), TRK_REAL_C(0.5), TRK_REAL_C(0.99), TRK_REAL_C(0.01), TRK_REAL_C(0.75), TRK_REAL_C(0.7), 0};
 
-/* the CONVENTIONS statement, in double */
+/* the docs/conventions.md statement, in double */
 static void reference_step(double *pv, double *pcv, double pd, double pg, int n, const double *gd, double rho,
                            const double *la, double *pv_pred_out)
 {

@@ -1,4 +1,4 @@
-/* trk_test_sonar.h - what the track-table tests of issues 14 and 15 share:
+/* trk_test_sonar.h - what the track-table tests (initiation, joint association) share:
  * the sonar-like sensor (P_D 0.8, R = 25 I, clutter density lambda, q 1e-3
  * on the library defaults) and a detection at a point. */
 #ifndef TRK_TEST_SONAR_H

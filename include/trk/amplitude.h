@@ -1,7 +1,7 @@
 /* trk/amplitude.h - amplitude likelihood of thresholded detections (PDAFAI)
  * and inverse-CDF amplitude sampling; Kennedy's dB amplitude model.
  *
- * CONVENTIONS "Amplitude models" (Brekke eqs 6-9, 19-20, 39-49): given the
+ * docs/conventions.md "Amplitude models" (Brekke eqs 6-9, 19-20, 39-49): given the
  * texture eta, an amplitude a (linear envelope) is Rayleigh with
  * E[a^2|eta] = eta (clutter) or eta + d (Swerling I target + clutter).
  *   Rayleigh clutter of power P:  S0(a) = exp(-a^2/P),  S1(a) = exp(-a^2/(P+d))
@@ -33,7 +33,7 @@
  *     (variable TRK_TABLE_VAR_LN_AMP) from ln(t/sqrt P) to ln(a_max/sqrt P),
  *     a_max = the larger of the clutter and target amplitudes at x = x_max;
  *     cells (ln l^a, d ln l^a / ds); cubic Hermite in s (error measured:
- *     ~h^4, see README). Beyond the last node (probability < e^-x_max under
+ *     ~h^4, see docs/library.md). Beyond the last node (probability < e^-x_max under
  *     either hypothesis) ln l^a relaxes to its limit as a power of a:
  *       L(s) = L_inf - (L_inf - L_N) exp(-k (s - s_N)),  k = L'_N / (L_inf - L_N),
  *     continuous with continuous slope at s_N; when k <= 0 (the curve moves

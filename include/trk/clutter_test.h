@@ -1,5 +1,5 @@
 /* trk/clutter_test.h - Kennedy's clutter-based confirmation tests (Kennedy
- * 2008 sec. 1.2-1.4; CONVENTIONS "Track confirmation and termination",
+ * 2008 sec. 1.2-1.4; docs/conventions.md "Track confirmation and termination",
  * clutter density / clutter amplitude).
  *
  * H0: the tentative track is on clutter. H0 rejected -> confirm the track.

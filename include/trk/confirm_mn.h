@@ -1,4 +1,4 @@
-/* trk/confirm_mn.h - M-of-N track confirmation (CONVENTIONS "M/N
+/* trk/confirm_mn.h - M-of-N track confirmation (docs/conventions.md "M/N
  * confirmation"; 'Tracking Radar' 2.2.4, Willett II.A item 1).
  *
  * Per scan t = 1, 2, ... the caller passes whether the tentative track had a

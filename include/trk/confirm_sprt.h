@@ -1,10 +1,10 @@
 /* trk/confirm_sprt.h - Wald sequential probability ratio test for track
  * confirmation on binary detections (Willett II.B eqs 49-57 in sequential
- * form; CONVENTIONS "Track confirmation and termination", SPRT).
+ * form; docs/conventions.md "Track confirmation and termination", SPRT).
  *
  * H1 target present, H0 track on clutter. Per look:
  *   llr_t = llr_{t-1} + ln f1 - ln f0,  llr_0 = 0,  f0 = P_FA or 1 - P_FA
- *   fixed P_D, event model hmm.events (trk/hmm_detect.h; CONVENTIONS
+ *   fixed P_D, event model hmm.events (trk/hmm_detect.h; docs/conventions.md
  *   "Complete detection-event model"):
  *     TRK_EVENTS_COMPLETE (default): ln f1 = ln(1 - (1-P_D)(1-P_FA)) for a
  *       hit, ln(1 - P_D) + ln(1 - P_FA) for a miss (the gate of a present

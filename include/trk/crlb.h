@@ -2,7 +2,8 @@
  * information-reduction factor q2 (Willett eqs 28-37, Proposition 2).
  *
  * Information recursion (Willett eq 37), constant-velocity model of
- * CONVENTIONS "General" with nz position coordinates, R = r I:
+ * docs/conventions.md "State and covariance layout" with nz position
+ * coordinates, R = r I:
  *   J+ = Q^-1 + q2 H' R^-1 H - Q^-1 F (J + F' Q^-1 F)^-1 F' Q^-1
  * Evaluated in the algebraically equal form (matrix inversion lemma)
  *   J+ = (Q + F J^-1 F')^-1 + q2 H' R^-1 H,

@@ -1,4 +1,4 @@
-/* trk/gate.h - ellipsoidal gating (CONVENTIONS "Gating").
+/* trk/gate.h - ellipsoidal gating (docs/conventions.md "Gating").
  *
  * A measurement is in the gate when d2 = nu' S^-1 nu <= gamma (less-or-equal),
  * gamma the chi-square inverse CDF of the gate probability P_G with nz degrees

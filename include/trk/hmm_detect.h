@@ -1,7 +1,7 @@
 /* trk/hmm_detect.h - predictive likelihood of a detection under the
  * two-state Markov (fluctuating SNR) detection model, per sensor
  * (Blanding et al. 2007 eqs 1-2 and 7-10; Willett II.C eqs 60-64;
- * CONVENTIONS "Track confirmation and termination", HMM f1 and "Complete
+ * docs/conventions.md "Track confirmation and termination", HMM f1 and "Complete
  * detection-event model").
  *
  * Each sensor i has a hidden detection state u in {0 low, 1 high} with
@@ -16,7 +16,7 @@
  *   f0      = pfa if detected else 1-pfa             (eq 7)
  *   s       = ln f0 - ln f1                          (eq 5, the Page increment)
  * with e, per state (Pd = pd_low or pd_high, pfa the gate's P_FA, eq 4):
- *   TRK_EVENTS_COMPLETE (the default, CONVENTIONS "Complete detection-event
+ *   TRK_EVENTS_COMPLETE (the default, docs/conventions.md "Complete detection-event
  *     model"): the gate of a present target may hold clutter too,
  *       hit   e = 1 - (1-Pd)(1-pfa),   miss   e = (1-Pd)(1-pfa),
  *     so ln f1 of a miss = ln(1-pfa) + ln(miss mixture), the posterior of a
@@ -59,7 +59,7 @@ struct trk_hmm_sensor_params {
 /* What a "detected" look means under H1 (the type of trk_hmm_params.events;
  * see the top of this file). Zero, the default, is the complete model. */
 enum trk_event_model {
-    TRK_EVENTS_COMPLETE = 0, /* target or clutter in the gate (CONVENTIONS) */
+    TRK_EVENTS_COMPLETE = 0, /* target or clutter in the gate (docs/conventions.md) */
     TRK_EVENTS_PAPER = 1     /* Blanding eq 8 as printed: target only */
 };
 

@@ -1,6 +1,6 @@
 /* trk/imm.h - the interacting multiple model estimator (IMM; Blom &
  * Bar-Shalom 1988) for the 2-D state [x, vx, y, vy], alone or with PDA
- * (IMM-PDA), following CONVENTIONS "Multiple models (IMM)":
+ * (IMM-PDA), following docs/conventions.md "Multiple models (IMM)":
  *
  *   models     j = 1..n: a coordinated turn at the known rate omega_j
  *              (omega_j = 0: constant velocity), F_ct below, Q the CV Q

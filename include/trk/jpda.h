@@ -1,5 +1,5 @@
 /* trk/jpda.h - joint association of several tracks on one scan: JPDA and
- * JIPDA marginals (CONVENTIONS "Joint association (JPDA / JIPDA)").
+ * JIPDA marginals (docs/conventions.md "Joint association (JPDA / JIPDA)").
  *
  * A joint event gives each track at most one of its gated detections and each
  * detection at most one track. Its weight is the product over tracks of
@@ -153,7 +153,7 @@ TRK_NODISCARD trk_status trk_jpda_track_weights(const struct trk_pda *pda, trk_r
                                                 trk_real *log_w_miss, trk_real *d2);
 
 /* JIPDA posterior existence and the weights of the state update, conditional
- * on existence, for one track (CONVENTIONS):
+ * on existence, for one track (docs/conventions.md):
  *   psi' = sum_j P(t <- j) + P(t <- none) psi (1 - P_D P_G) / (1 - P_D P_G psi)
  *   beta_j = P(t <- j) / psi',  beta_0 = P(t <- none) psi (1 - P_D P_G) / (1 - P_D P_G psi) / psi'
  * p_assoc is the track's row (n_dets values), beta gets n_dets + 1 values

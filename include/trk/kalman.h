@@ -1,5 +1,5 @@
 /* trk/kalman.h - linear-Gaussian prediction and update, and the 2-D
- * constant-velocity model (CONVENTIONS "General").
+ * constant-velocity model (docs/conventions.md "State and covariance layout").
  *
  * State order of the CV model: [x, vx, y, vy]; measurement [x, y].
  * All matrices row-major. nx in 1..TRK_MAX_STATE, nz in 1..TRK_MAX_MEAS.

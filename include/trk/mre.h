@@ -3,9 +3,10 @@
  * characteristic (TOC): the RMSE along a ROC and the false-alarm probability
  * that minimises it.
  *
- * MRE (Brekke eq 27; CONVENTIONS "q2, MRE and CRLB"), constant-velocity model
- * of CONVENTIONS "General" with nz position coordinates (nz = 1: state
- * [x, vx]; nz = 2: [x, vx, y, vy]), R = r I:
+ * MRE (Brekke eq 27; docs/conventions.md "q2, MRE and CRLB"), the
+ * constant-velocity model of docs/conventions.md "State and covariance
+ * layout" with nz position coordinates (nz = 1: state [x, vx]; nz = 2:
+ * [x, vx, y, vy]), R = r I:
  *   P-  = F P F' + Q
  *   S   = H P- H' + R
  *   K   = P- H' S^-1
@@ -36,7 +37,7 @@
 struct trk_mre_params {
     int nz;                    /* 1 or 2 position coordinates */
     trk_real dt_s;             /* scan interval T > 0 */
-    trk_real q_m2_per_s3;      /* process noise PSD q~ > 0 (CONVENTIONS "General") */
+    trk_real q_m2_per_s3;      /* process noise PSD q~ > 0 (m^2/s^3, docs/conventions.md) */
     trk_real r_m2;             /* measurement noise variance r > 0 (R = r I) */
     trk_real gate_prob;        /* P_G in (0, 1): gamma and V_G (unless gate_gamma > 0) */
     trk_real gate_gamma;       /* > 0: the gate threshold on d2 itself (Brekke's g^2,

@@ -1,7 +1,7 @@
 /* trk/pda.h - probabilistic data association update (PDAF, and PDAFAI when
  * each detection carries an amplitude log-likelihood ratio).
  *
- * CONVENTIONS "PDA" (Bar-Shalom's standard form; Brekke eqs 21-25):
+ * docs/conventions.md "PDA" (Bar-Shalom's standard form; Brekke eqs 21-25):
  *   e_0 = lambda (1 - P_D P_G)                       missed detection
  *   e_i = P_D N(nu_i; 0, S) l^a(a_i)                 detection i in the gate
  *   beta_i = e_i / (e_0 + sum_j e_j)                 (log domain: never underflows)
@@ -84,11 +84,11 @@ struct trk_pda_report {
  * code for each track (with detections that carry their own covariance in
  * the same gated set), and the simulators call it.
  *
- * The 2-D CV model's path (issue 19): nx = 4, nz = 2 and an H that selects
+ * The 2-D CV model's path: nx = 4, nz = 2 and an H that selects
  * x and y of the state [x, vx, y, vy] (trk_cv2_h, recognised by its address
  * without a scan, or an equal array), with no detection of its own
  * covariance, run a copy written over the model's fixed indices, within
- * 1.2-1.3x of a hand-written loop of the same arithmetic (README
+ * 1.2-1.3x of a hand-written loop of the same arithmetic (docs/results.md
  * "Benchmarks"). There is no separate entry point to choose: every other
  * model takes the general code. Builds with TRK_SIZE_OPT (the -Os default)
  * keep the general code alone. */
@@ -112,7 +112,7 @@ TRK_NODISCARD trk_status trk_pda_update_inn(const struct trk_pda *pda, int nx, c
  * beta[0] = beta_0 (no detection is the target's), beta[1..m] for the m
  * detections z (m x nz), summing to 1 (within 1e-3); inn the innovation of
  * (x, P) under (h, r) from trk_kalman_innovation. The combination is the
- * one of trk_pda_update (CONVENTIONS "PDA"), so a detection with weight 0
+ * one of trk_pda_update (docs/conventions.md "PDA"), so a detection with weight 0
  * does not enter. TRK_E_ARG, TRK_E_CAPACITY m > TRK_MAX_DETECTIONS,
  * TRK_E_NAN / TRK_E_RANGE bad weights or z, TRK_E_NOT_SPD a posterior
  * that is not positive definite; x and P untouched on error. */

@@ -2,7 +2,7 @@
  * precomputed values, and receiver operating characteristics (ROC) as inputs
  * of the tracking operating characteristic (TOC, trk/mre.h).
  *
- * q2 (CONVENTIONS "q2, MRE and CRLB"; Brekke eqs 26-30, Willett eqs 14-16, 36)
+ * q2 (docs/conventions.md "q2, MRE and CRLB"; Brekke eqs 26-30, Willett eqs 14-16, 36)
  * is the scalar with E[nubar nubar'] = q2 S. It has no closed form: the
  * offline tool computes it by importance sampling over a grid and the library
  * interpolates. q2 depends on S only through lambda_vg = lambda V_G, the

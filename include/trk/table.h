@@ -2,7 +2,7 @@
  * container made offline by trk-tablegen and used in place by the library
  * (from a const array in ROM or from a file read into RAM; no copy, no heap).
  *
- * CONVENTIONS "Lookup tables". One container for every kind of table
+ * docs/conventions.md "Lookup tables". One container for every kind of table
  * (amplitude models, PDAF / PDAFAI q2, ...): a kind, named numeric parameters
  * and up to TRK_TABLE_MAX_SECTIONS sections, each an array over 1..3 axes with
  * ncomp values per cell.

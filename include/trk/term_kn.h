@@ -1,4 +1,4 @@
-/* trk/term_kn.h - K-of-N track termination (CONVENTIONS "K/N termination";
+/* trk/term_kn.h - K-of-N track termination (docs/conventions.md "K/N termination";
  * Blanding sec. 1, Willett II.A).
  *
  * count = detections in the last min(t, N) scans; terminate iff t >= N and

@@ -1,6 +1,6 @@
 /* trk/term_page.h - Page (CUSUM) track termination for a target with
  * fluctuating SNR (Blanding et al. 2007 eqs 5-10; Willett II.C eqs 58-64;
- * CONVENTIONS "Track confirmation and termination", Page).
+ * docs/conventions.md "Track confirmation and termination", Page).
  *
  * Per look (one scan of one sensor, in arrival order):
  *   s   = ln f0 - ln f1      (eq 5; f1 the HMM predictive likelihood of

@@ -1,6 +1,6 @@
 /* trk/term_shiryaev.h - Shiryaev (Bayesian quickest detection) track
  * termination with the fluctuating-SNR detection model (Blanding et al. 2007
- * eqs 11-14; Willett II.C eqs 65-68; CONVENTIONS "Track confirmation and
+ * eqs 11-14; Willett II.C eqs 65-68; docs/conventions.md "Track confirmation and
  * termination", Shiryaev).
  *
  * Prior on the change time k_c (eq 11): P(k_c = 0) = beta0, then geometric

@@ -261,7 +261,7 @@ enum trk_init_method {
  * max_gap_scans scans (scans processed by this tracker, any sensor), then
  * it is dropped. The store keeps each scan's candidates together, in a 2-D
  * index of their own, so that pairing costs the candidates near each
- * detection and storing costs the scan's new ones (issue 19); a used
+ * detection and storing costs the scan's new ones; a used
  * candidate keeps its place until its scan's candidates go (under capacity
  * pressure the store holds fewer than a store that squeezed it out).
  *
@@ -300,7 +300,7 @@ enum trk_assoc_method {
 struct trk_tracker_params {
     unsigned n_sensors;                               /* 1 .. TRK_MAX_SENSORS */
     struct trk_sensor_params sensor[TRK_MAX_SENSORS];
-    trk_real process_noise_q;                         /* m^2/s^3 (CONVENTIONS Q), >= 0 */
+    trk_real process_noise_q;                         /* m^2/s^3 (docs/conventions.md), >= 0 */
     trk_real gate_prob;                               /* P_G, (0, 1) */
     enum trk_clutter_mode clutter;                    /* parametric: the sensor's density */
     trk_real init_speed_sigma_mps;                    /* velocity prior std per axis, > 0 */
@@ -335,7 +335,7 @@ struct trk_tracker_params {
                                                          sensor; >= 0, 0 = no bound */
     enum trk_assoc_method association;                /* per-track PDA or joint (JIPDA) */
 #if TRK_WITH_IMM
-    /* Manoeuvring targets (TRK_WITH_IMM, config.h; README "Manoeuvres"):
+    /* Manoeuvring targets (TRK_WITH_IMM, config.h; docs/library.md "Manoeuvres"):
      * imm.n_models = 0 (default) runs every track on the CV model of
      * process_noise_q, as a build without IMM; 1 .. TRK_MAX_MODELS makes
      * every track an IMM track on these models (trk/imm.h: turn rates, each
@@ -345,7 +345,7 @@ struct trk_tracker_params {
 #endif
 };
 
-/* Tests and their inputs per scan (CONVENTIONS "Track confirmation and
+/* Tests and their inputs per scan (docs/conventions.md "Track confirmation and
  * termination"): a scan "detects" a track when a detection is in its gate;
  * P_FA of the gate is 1 - exp(-lambda V_G); the sensor id of the scan selects
  * the HMM of multisensor tests. The clutter tests use the detection nearest
@@ -358,7 +358,7 @@ struct trk_tracker_params {
  * pair them with max_tentative_scans.
  *
  * The defaults are in trk_tracker_default_params() (src/tracker_params.c),
- * documented there and in the README; they live in code only. */
+ * documented there and in docs/parameters.md; they live in code only. */
 void trk_tracker_default_params(struct trk_tracker_params *p);
 
 /* The configuration the defaults were before existence-based confirmation
@@ -369,12 +369,12 @@ void trk_tracker_default_params(struct trk_tracker_params *p);
 void trk_tracker_mn_kn_params(struct trk_tracker_params *p);
 
 #if TRK_WITH_IMM
-/* The manoeuvre models of README "Manoeuvres" into p->imm: CV, and
+/* The manoeuvre models of docs/library.md "Manoeuvres" into p->imm: CV, and
  * coordinated turns at +omega_rad_s (left) and -omega_rad_s (right), each
  * with p->process_noise_q; the model stays with probability p_stay per scan
  * and switches to each other one with (1 - p_stay) / 2. Meant for
  * 0 < omega_rad_s <= 1 and p_stay in (0, 1): with p_stay = 1 the turn models
- * are never reached from CV (and never gate; README "Manoeuvres"); values
+ * are never reached from CV (and never gate; docs/library.md "Manoeuvres"); values
  * are checked by trk_tracker_init, not here. TRK_E_ARG p NULL,
  * TRK_E_CAPACITY a build with TRK_MAX_MODELS < 3 (p untouched). */
 TRK_NODISCARD trk_status trk_tracker_imm_params(struct trk_tracker_params *p, trk_real omega_rad_s, trk_real p_stay);

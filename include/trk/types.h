@@ -127,7 +127,7 @@ const char *trk_status_str(trk_status s);
  * starts it afresh). The statistics are not frozen: they keep following
  * their recurrence after the decision, so a display can always show them
  * (trk_track.confirm_stat / term_stat) and the reference vectors check them
- * after decisions (CONVENTIONS "Track confirmation and termination"); they
+ * after decisions (docs/conventions.md "Track confirmation and termination"); they
  * just no longer change the decision. The one change allowed is
  * CONFIRM -> TERMINATE, and only the visibility test makes it: it serves one
  * track in both roles with one state (pcv reaches p_con: confirm; later pcv

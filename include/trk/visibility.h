@@ -1,6 +1,6 @@
 /* trk/visibility.h - target visibility (IPDA-style existence) of one track,
  * for confirmation and deletion (Kennedy 2008 eqs 1-2 and 21-32;
- * CONVENTIONS "Track confirmation and termination" -> Visibility).
+ * docs/conventions.md "Track confirmation and termination" -> Visibility).
  *
  * Per scan, with the previous posterior pv:
  *   pv_pred = Delta pv + Delta_bar (1 - pv)                         (eq 1)
@@ -104,7 +104,7 @@ trk_real trk_visibility_predict(const struct trk_visibility_model *m, const stru
  * JIPDA existence of trk_jpda_existence, from pv_pred = trk_visibility_predict):
  * pv_pred, pv, pcv (eq 2) and the decision as trk_visibility_update_log.
  * With the track alone in its cluster, JIPDA's posterior is the pv of
- * trk_visibility_update_log (CONVENTIONS). TRK_E_ARG NULL m or v, TRK_E_NAN
+ * trk_visibility_update_log (docs/conventions.md). TRK_E_ARG NULL m or v, TRK_E_NAN
  * non-finite pv_post, TRK_E_RANGE outside [0, 1]; *v untouched on error. */
 TRK_NODISCARD trk_status trk_visibility_update_posterior(const struct trk_visibility_model *m,
                                                          struct trk_visibility *v, trk_real pv_post);

@@ -1,5 +1,5 @@
 /* mre.c - modified Riccati equation, steady-state RMSE and TOC optimum
- * (trk/mre.h; Brekke eqs 27, 35, Sec. V-C; CONVENTIONS "q2, MRE and CRLB"). */
+ * (trk/mre.h; Brekke eqs 27, 35, Sec. V-C; docs/conventions.md "q2, MRE and CRLB"). */
 #include "trk/mre.h"
 
 #include "internal.h"

@@ -1,5 +1,5 @@
 /* q2.c - q2 lookup by tensor-product interpolation on a grid, tabulated ROC
- * (trk/q2.h; CONVENTIONS "q2, MRE and CRLB"). */
+ * (trk/q2.h; docs/conventions.md "q2, MRE and CRLB"). */
 #include "trk/q2.h"
 
 #include "trk/amplitude.h"
@@ -339,7 +339,7 @@ static trk_status axis_weights(const struct trk_q2_axis *a, trk_real x, struct a
  * every cell at TRK_Q2_GAIN_SAMPLES + 1 points (the ends included). Linear
  * weights sum to 1; uniform cubic ones (Catmull-Rom) to at most 1.25; on
  * explicit nodes the slopes divide by the neighbouring intervals, so a short
- * interval next to a long one gives a large gain (issue 17 item 5: pd nodes
+ * interval next to a long one gives a large gain (pd nodes
  * 0.01 and 1e-12 apart returned 5.9e9 from values in [0, 1]). */
 #define TRK_Q2_GAIN_SAMPLES 64
 static trk_real axis_max_gain(const struct trk_q2_axis *a)

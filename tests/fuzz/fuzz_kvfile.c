@@ -1,6 +1,6 @@
 /* fuzz_kvfile.c - libFuzzer target: the "key = value" configuration reader
  * (tools/cli/kvfile.c) and the tracker settings behind it
- * (tools/cli/tracker_config.c) on arbitrary bytes (issue 17: config files
+ * (tools/cli/tracker_config.c) on arbitrary bytes (config files
  * are hostile input).
  *
  * The input is read as a config file (kv_parse_stream over fmemopen) twice:

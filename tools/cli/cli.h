@@ -3,7 +3,7 @@
  * subcommand dispatcher, the deprecation notes of old spellings, and a clean
  * stop on SIGINT/SIGTERM.
  *
- * VOCABULARY (issue 13). The same quantity has one name in every tool; the
+ * VOCABULARY. The same quantity has one name in every tool; the
  * old spellings stay accepted for one release, each printing one note
  * "PROG: note: OLD is deprecated ..., use NEW" on stderr:
  *

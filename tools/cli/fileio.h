@@ -1,5 +1,5 @@
 /* fileio.h - whole-file reading and atomic file writing for the tools and
- * tests (issue 17 items 7 and 8: every read bounded, every write checked, a
+ * tests (every read bounded, every write checked, a
  * failed write never destroys the file it was to replace). */
 #ifndef TRK_TOOLS_FILEIO_H
 #define TRK_TOOLS_FILEIO_H

@@ -1,5 +1,5 @@
 /* number.h - the one decimal number syntax of the tools (config values,
- * options, vector files; issue 17 item 10). No stdio: the QEMU vector image
+ * options, vector files). No stdio: the QEMU vector image
  * compiles it too (mk/qemu.mk). */
 #ifndef TRK_TOOLS_NUMBER_H
 #define TRK_TOOLS_NUMBER_H

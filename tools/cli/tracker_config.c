@@ -291,7 +291,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strncmp(key, "sensor.", 7) == 0) {
         char *end;
         errno = 0;
-        /* digits only: strtoul took "-1" as 18446744073709551615 (issue 17 item 10) */
+        /* digits only: strtoul took "-1" as 18446744073709551615 */
         if (key[7] == '-' || key[7] == '+') {
             snprintf(err, n, "sensor index '%.*s': must be an integer >= 0", (int)strcspn(key + 7, "."), key + 7);
             return -1;
@@ -831,7 +831,7 @@ void tcfg_help(FILE *f)
             "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
-            "  association = pda|joint           per-track PDA, or joint association (JPDA / JIPDA) (pda)\n"
+            "  association = pda|joint           per-track PDA, or joint association (JPDA / JIPDA) (joint)\n"
             "  init.method = two_point|single_point   how tracks start (two_point)\n"
             "    init.max_speed_mps               two-point velocity gate, > 0 (15)\n"
             "    init.max_gap_scans               candidate lifetime in scans, >= 1 (2)\n"

@@ -398,7 +398,7 @@ int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, 
                       err, errlen))
             goto out;
     }
-    /* the library must accept what is written (issue 17 item 10: a clutter power of 1e31 gave a
+    /* the library must accept what is written (a clutter power of 1e31 gave a
      * table trk_amplitude_init_table refuses); tables of the other real width cannot be loaded here */
     if (rs == sizeof(trk_real)) {
         struct trk_table t;

@@ -2,7 +2,7 @@
  * model for the offline tools (trk-tablegen, the amp_* vector kinds, tests and
  * benchmarks). Double precision always, whatever the library's trk_real.
  *
- * Convention (CONVENTIONS "Amplitude models", amplitude.vec header): given the
+ * Convention (docs/conventions.md "Amplitude models", amplitude.vec header): given the
  * texture eta, a is Rayleigh with E[a^2|eta] = eta (clutter) or eta + d
  * (target + clutter); eta ~ Gamma(shape nu, scale b), clutter power P = nu b,
  * SNR = d / P. Everything here works in normalised units P = 1 (amplitudes in
@@ -35,8 +35,7 @@ int kdist_init(struct kdist *k, double nu, double snr_db);
 /* The direct evaluation's range: A = (a/sqrt(P))^2 <= KDIST_MAX_A, i.e. a
  * normalised amplitude up to 1e8. Beyond it the log-moments are of order
  * 2 sqrt(nu A) > 2e8 and their difference (ln l^a) keeps no digits (at 1e20
- * it came out 0, at 1e50 NaN, and at 1e100 the quadrature hung: issue 17
- * item 7): every function below returns NaN (or -1) there instead. */
+ * it came out 0, at 1e50 NaN, and at 1e100 the quadrature hung): every function below returns NaN (or -1) there instead. */
 #define KDIST_MAX_A 1e16
 
 /* ln E[w^-m exp(-A/w)], w = v (target == 0) or v + D (target == 1), m in 0..3,

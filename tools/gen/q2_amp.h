@@ -2,7 +2,7 @@
  * on the library's amplitude module (trk/amplitude.h): the one
  * implementation of the amplitude formulas.
  *
- * CONVENTIONS "Amplitude models" (Brekke eqs 6-9, 19-20, 41-47), clutter
+ * docs/conventions.md "Amplitude models" (Brekke eqs 6-9, 19-20, 41-47), clutter
  * power 1: a thresholded amplitude is drawn by inverse CDF from x ~ Exp(1)
  * (x = -ln u, u the sampler's uniform), a = trk_amplitude_inv_sf(x) (target or
  * clutter law), and the sampler needs ln l^a(a) = trk_amplitude_log_lr(a).
@@ -12,7 +12,7 @@
  *             exactly this (nu, snr_db, pfa), uniform grid of `amp_size`
  *             points (default Q2_AMP_TABLE_SIZE); the table's own errors can
  *             be measured against the direct K model (kdist.h): ln l^a and
- *             a(x) to ~1e-7 at 256 points (see README), negligible against
+ *             a(x) to ~1e-7 at 256 points (see docs/library.md), negligible against
  *             the Monte Carlo standard errors (>= 1e-5)
  * pd is S1(t), the ROC value: the library's for Rayleigh; for K the
  * generator's double-precision value (kdist.h), which the table stores.

@@ -1,8 +1,8 @@
 /* q2_is.h - importance-sampling estimator of the information-reduction factor
- * q2 for the offline tools (CONVENTIONS "q2, MRE and CRLB"; Brekke eqs 28-30,
+ * q2 for the offline tools (docs/conventions.md "q2, MRE and CRLB"; Brekke eqs 28-30,
  * 36-38, 50-54; Willett eqs 14-16).
  *
- * Estimator (Brekke eq 38 with eq 28 folded in, CONVENTIONS):
+ * Estimator (Brekke eq 38 with eq 28 folded in, docs/conventions.md):
  *   q2 = pd F_{nz+2}(gamma) sum_{n>=0} Poisson(n; lambda_vg) E_n[beta_1],
  *   beta_1 = L_1 / (b + L_1 + sum_{j=2}^{n+1} L_j),  L_i = l^a(a_i) exp(-rho_i^2/2),
  *   b = (2 pi)^(nz/2) lambda_vg (1 - pd pg) / (pd c_nz gamma^(nz/2)),
@@ -57,7 +57,7 @@ struct par; /* tools/par/par.h */
 /* Pluggable amplitude law (PDAFAI; tools/gen/q2_amp.h builds it on the
  * library's amplitude module). log_lr draws n thresholded amplitudes by
  * inverse transform from the uniforms u[i] in (0, 1) (x = -ln u[i] ~ Exp(1)
- * is the negative log truncated survival, CONVENTIONS "Amplitude models") --
+ * is the negative log truncated survival, docs/conventions.md "Amplitude models") --
  * target != 0: from the target law p1^a; 0: the clutter law p0^a -- and writes
  * out[i] = ln l^a(a_i); returns 0, or -1 when the model refuses a value. It
  * must be a pure function of (ctx, target, u[i]) (called concurrently from
@@ -136,7 +136,7 @@ int q2_is_cell(int nz, double gamma, double pd, double lambda_vg,
                const struct q2_amp_sampler *amp, const struct q2_is_options *opt, double *q2,
                double *se, char *err, size_t err_len);
 
-/* The PDA constant b of a cell (CONVENTIONS "q2"); pg from gamma. */
+/* The PDA constant b of a cell (docs/conventions.md "q2"); pg from gamma. */
 double q2_is_b(int nz, double gamma, double pd, double lambda_vg);
 
 /* Threads the parallel build would use for `threads` (<= 0: default); 1 in

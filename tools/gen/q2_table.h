@@ -34,7 +34,7 @@
 #define Q2_TABLE_QUIET_SE 1e-4   /* see interp_max_quiet */
 
 /* Default grids (trk-tablegen q2, `make tables`, the TOC's sampled grids),
- * chosen by the measured interpolation error (README "Performance
+ * chosen by the measured interpolation error (docs/library.md "Performance
  * prediction"): LIST and LOG syntax of q2_table_parse_list / _log. */
 #define Q2_TABLE_DEFAULT_PD "0.02:0.1:0.02,0.15:0.85:0.05,0.87:0.97:0.02,0.98,0.99,0.995,1"
 #define Q2_TABLE_DEFAULT_SNR_DB "5:8:1,9.5:14:1.5,16:20:2,22.5,25"

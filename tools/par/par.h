@@ -1,4 +1,4 @@
-/* par.h - work distribution of the host tools (issue 20): a batch of N
+/* par.h - work distribution of the host tools: a batch of N
  * independent work units, each writing a result of known size into its own
  * slot of one buffer, run on the OpenMP threads of this process or over the
  * ranks of an MPI job, with every result on every rank in index order when

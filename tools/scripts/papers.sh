@@ -1,12 +1,12 @@
 #!/bin/sh
-# tools/scripts/papers.sh TRK_SIM OUTDIR [paper|tiny] - issue 18 item 5: run
+# tools/scripts/papers.sh TRK_SIM OUTDIR [paper|tiny] - run
 # the papers' experiments (trk-sim) into OUTDIR and write OUTDIR/summary.csv
 # and OUTDIR/summary.md: per printed value of a paper, the paper's value,
 # trk's value with its 95 % interval and whether they agree, by a rule stated
 # per experiment:
 #   brekke-trackloss  Brekke 2011 Tables II-III, lost tracks per 10000: the
 #                     paper's count inside trk's exact 95 % binomial interval
-#                     (every cell area, CONVENTIONS asks for all three)
+#                     (every cell area, docs/conventions.md asks for all three)
 #   willett-table1    Willett 2010 Table I, q2: |paper / trk - 1| <= 3 % (the
 #                     printed values are Monte Carlo estimates themselves, of
 #                     unknown error; trk's interval is +-1.96 se)

@@ -10,7 +10,7 @@
 #   stack.txt            stack_ci.awk output (public functions, libm included
 #                        where stack-extern.txt could be made from a linked image)
 # POSIX sh + awk only (mawk on Debian).
-# Goals checked (issue 9): .text <= 32 KB on cortex-m4f; RAM for 64 tracks x
+# Goals checked: .text <= 32 KB on cortex-m4f; RAM for 64 tracks x
 # 256 detections <= 64 KB; worst stack of trk_tracker_process_scan <= 2 KB.
 # Exit status 0; size-check (mk/size.mk) turns goal misses into failures.
 set -eu
@@ -142,7 +142,7 @@ done
 
 # --- goals
 echo
-echo "== goals (issue 9)"
+echo "== goals"
 m4=cortex-m4f
 if [ -f "$dir/$m4/size-A.txt" ]; then
     awk -v dir="$dir" '

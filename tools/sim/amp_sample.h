@@ -1,7 +1,7 @@
 /* amp_sample.h - amplitudes of detections that crossed a detection threshold,
  * for simulators (trk-sonar-sim, trk-sim).
  *
- * Convention (CONVENTIONS "Amplitude models"): amplitudes are linear envelope
+ * Convention (docs/conventions.md "Amplitude models"): amplitudes are linear envelope
  * values in units of sqrt(mean clutter power) (P = 1). Given the texture v,
  * clutter is Rayleigh with E[a^2 | v] = v, a Swerling I target with
  * E[a^2 | v] = v + D, D = 10^(snr_db/10):

@@ -1,6 +1,6 @@
 /* mtt_eval.h - multi-target tracking evaluation: GOSPA per scan and the
- * track-maintenance statistics of the survey (../shared/seeds/002, ch. 6.3),
- * accumulated over the scans of one run.
+ * track-maintenance statistics of the "Tracking Radar" MTT survey (2002,
+ * ch. 6.3), accumulated over the scans of one run.
  *
  * Per scan the caller gives the true targets present (id, position) and the
  * tracks to score (id, position; normally the confirmed ones). Each scan is

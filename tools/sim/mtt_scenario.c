@@ -554,7 +554,8 @@ static double fit_speed(const struct mtt_scenario *s, const struct mtt_target *a
 
 /* Lives fixed (the whole run; BIRTH from its birth, DEATH to its death),
  * the pair at its drawn offsets, the turn where drawn, then each speed
- * reduced until the path stays inside over its life (b9ce836). */
+ * reduced until the path stays inside over its life (as the first
+ * 8-target scenario did). */
 static void place_fixed(struct mtt_scenario *s, struct mtt_target dg[MTT_N_SLOTS], const struct structure *st)
 {
     const long ns = s->p.n_scans;
@@ -803,5 +804,5 @@ void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, str
 
 void mtt_old_defaults(struct trk_tracker_params *p)
 {
-    trk_tracker_mn_kn_params(p); /* the library keeps the pre-issue-14 defaults */
+    trk_tracker_mn_kn_params(p); /* the library keeps the defaults before two-point initiation */
 }

@@ -1,5 +1,5 @@
 /* mtt_scenario.h - the multi-target scenario families of `trk-sim mtt`
- * (issue 14 item 7): targets in a square region, at most eight at a time,
+ *: targets in a square region, at most eight at a time,
  * seeded, deterministic. Two families (mtt_scen_params.family, `trk-sim mtt
  * --family transit|fixed`):
  *   transit  (MTT_FAMILY_TRANSIT, the default) targets enter and leave the
@@ -9,11 +9,11 @@
  *   fixed    (MTT_FAMILY_FIXED) the eight structure targets alone, alive the
  *            whole run but the birth (present from its birth on) and the
  *            death (gone from its death on); speeds drawn in 5-15 m/s and
- *            reduced until each path stays inside. The family of commit
- *            b9ce836, issue 14's 8-target scenario against which the peer
- *            (Stone Soup JPDA) was measured: the same parameters and seed
- *            give the same scenario as b9ce836 did, bit for bit (targets,
- *            truth and every scan's detections).
+ *            reduced until each path stays inside. The first 8-target
+ *            scenario, against which the peer (Stone Soup JPDA) was
+ *            measured: the same parameters and seed give the same
+ *            scenario as its first implementation did, bit for bit
+ *            (targets, truth and every scan's detections).
  * What the families share is one code path: the region, the slots and
  * roles, the structure's random draws and its geometry (the X, the pair's
  * side-by-side placement, the straight targets, the turn), the motion, the
@@ -56,7 +56,7 @@
  *                     direction to the centre (+- 10 deg)
  *   STRAIGHT          straight, through a point 300-700 m from the centre at
  *                     mid-run, heading tangential +- 30 deg (either way);
- *                     with accel_mps2 > 0 (issue 16 item 3: "a target that
+ *                     with accel_mps2 > 0 ("a target that
  *                     accelerates") it speeds up along its line at
  *                     accel_mps2 from its mid-life for accel_s seconds
  *                     (0.1 m/s^2 for 60 s: +6 m/s) and keeps the new speed;
@@ -131,7 +131,7 @@
  * scans (17-29), 7.4 present per scan on average, 6-8 in 96 % of the scans
  * (fewer near the run's ends and where several slots change at once).
  *
- * ---- The fixed family (MTT_FAMILY_FIXED; commit b9ce836)
+ * ---- The fixed family (MTT_FAMILY_FIXED; the first 8-target scenario)
  *
  * The eight structure targets and no others (n_targets = 8, slot j holds
  * target j alone; min_life_scans and gap_max_scans unused).
@@ -194,7 +194,7 @@
 
 enum mtt_family {
     MTT_FAMILY_TRANSIT = 0,     /* targets enter and leave, slots re-used (the default) */
-    MTT_FAMILY_FIXED,           /* the eight structure targets alone (b9ce836) */
+    MTT_FAMILY_FIXED,           /* the eight structure targets alone */
     MTT_N_FAMILIES
 };
 
@@ -306,7 +306,7 @@ const char *mtt_role_name(int role);
 const char *mtt_family_name(int family);
 int mtt_family_parse(const char *name);
 
-/* The tracker defaults as they were before issue 14 (the `old`
+/* The tracker defaults before two-point initiation (the `old`
  * configuration of trk-sim mtt): trk_tracker_mn_kn_params (M/N 3 of 5, K/N
  * 0/5, single-point initiation, no covariance bound, Delta_bar 0.01). The
  * sensor, q and the clutter density are the caller's to set. (Replacement of

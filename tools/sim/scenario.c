@@ -68,7 +68,7 @@ int scen_init(struct scenario *s, const struct scen_params *p, char *err, size_t
         snprintf(err, n, "clutter density must be >= 0");
         return -1;
     }
-    /* bounded work per scan (issue 17 item 7: a 1e9 m region drew 5e12 clutter points a scan) */
+    /* bounded work per scan (a 1e9 m region drew 5e12 clutter points a scan) */
     const double mean_clutter =
         p->clutter_density_per_m2 * (p->x_max_m - p->x_min_m) * (p->y_max_m - p->y_min_m);
     if (p->clutter_count > SCEN_MAX_CLUTTER || (p->clutter_count < 0 && p->clutter_around_m <= 0 &&

@@ -17,7 +17,8 @@
  * given at the start and never terminated), so the track table is not used:
  * it would start tentative tracks on clutter and end tracks by its own tests.
  *
- * PDA run (st_run): 2-D constant velocity (CONVENTIONS "General"), R = r I.
+ * PDA run (st_run): 2-D constant velocity (docs/conventions.md "State and
+ * covariance layout"), R = r I.
  *   truth: x_0 = [0, speed, 0, 0], x_k = F x_{k-1} + w_k, w ~ N(0, Q(T, q))
  *   initial estimate x^_0 = x_0 + e, e ~ N(0, P_0) (a consistent start):
  *     twopoint  P_0 per axis [[r, r/T], [r/T, 2 r/T^2]] (two-point
@@ -29,7 +30,7 @@
  *   truncated target law; clutter is the Poisson field of scenario.h with
  *   density lambda, taken in the bounding box of the track's gate ellipse
  *   (d2 <= gamma) around its prediction: exact, since clutter outside the
- *   gate gets weight 0 (CONVENTIONS "PDA"). Detections in the gate (d2 <=
+ *   gate gets weight 0 (docs/conventions.md "PDA"). Detections in the gate (d2 <=
  *   gamma by trk_gate_d2) go to trk_pda_update_inn with parametric lambda, P_D
  *   and P_G = 1 - exp(-gamma/2).
  *   K texture (the clutter's local power eta ~ Gamma(nu, 1/nu) x P):

@@ -1,12 +1,12 @@
 /* toc.h - tracking operating characteristic (TOC) for the tools: the
  * steady-state position RMSE of the modified Riccati equation (MRE) along a
  * detector's ROC, for the PDAF and the PDAFAI, and the false-alarm
- * probability that minimises it (Brekke Sec. V-C, Fig. 2; CONVENTIONS
+ * probability that minimises it (Brekke Sec. V-C, Fig. 2; docs/conventions.md
  * "q2, MRE and CRLB"). Used by `trk-sim toc`, `trk-sim brekke-toc` and
  * `make demo`.
  *
  * Model. A Swerling I target of snr_db in Rayleigh or K (shape nu) clutter
- * (CONVENTIONS "Amplitude models"); at false-alarm probability pfa the
+ * (docs/conventions.md "Amplitude models"); at false-alarm probability pfa the
  * detection probability is the ROC value pd = S1(t), S0(t) = pfa, and the
  * clutter density is lambda = pfa / cell_m2 per m^2 (one false alarm per
  * resolution cell with probability pfa). The MRE (trk/mre.h, Brekke eq 27)
@@ -30,7 +30,7 @@
  * Brekke's Table I model (toc_scenario_brekke): nz = 2, T = 1 s,
  * q~ = 0.0125^2 m^2/s^3, R = I/12 m^2, gate g = 6 (gamma = 36). The
  * resolution cell is not printed in the paper: 1 m^2 is consistent with
- * R = I/12 (a uniform 1 m cell); CONVENTIONS asks for results at 1, 0.25
+ * R = I/12 (a uniform 1 m cell); docs/conventions.md asks for results at 1, 0.25
  * and 0.1 m^2 -- state the area with every result.
  *
  * q2 source. Either q2 tables made by `trk-tablegen q2` (loaded by the

@@ -1,4 +1,4 @@
-/* baseline.h - BENCHMARK BASELINES, NOT LIBRARY CODE (issue 19): plain
+/* baseline.h - BENCHMARK BASELINES, NOT LIBRARY CODE: plain
  * fixed-size loops of the arithmetic a library function does, timed in the
  * same run as the library for trk-bench's "<name>_vs_baseline" ratio lines. */
 #ifndef TRK_BENCH_BASELINE_H

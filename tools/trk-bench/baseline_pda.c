@@ -1,4 +1,4 @@
-/* baseline_pda.c - BENCHMARK BASELINE, NOT LIBRARY CODE (issue 19).
+/* baseline_pda.c - BENCHMARK BASELINE, NOT LIBRARY CODE.
  *
  * A plain fixed-size C99 loop of the arithmetic that trk_cv2_predict +
  * trk_pda_update do for one 2-D CV track (state [x, vx, y, vy], H picks x

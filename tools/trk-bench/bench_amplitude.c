@@ -1,4 +1,4 @@
-/* bench_amplitude.c - amplitude tables (issue 4): accuracy against the direct
+/* bench_amplitude.c - amplitude tables: accuracy against the direct
  * evaluation, bytes against error, lookup speed.
  *
  *   amp_err_*        Brekke's setting (K clutter nu = 1 and 8, SNR 15 dB,

@@ -1,4 +1,4 @@
-/* bench_grid.c - how the whole scan grows with the surveyed area (issue 19):
+/* bench_grid.c - how the whole scan grows with the surveyed area:
  *   scan_grid_T<t>_D<d>   ns per trk_tracker_process_scan with t confirmed
  *                         tracks and d detections (t targets + d - t
  *                         clutter) at the fixed detection density of
@@ -7,7 +7,7 @@
  *   scan_grid_growth_4x_area   scan_grid_T256_D1024 / scan_grid_T64_D256:
  *                         four times the area, tracks and detections (brute
  *                         force gating, every track against every
- *                         detection: 16x; issue 19's bound: 5x)
+ *                         detection: 16x; the bound aimed at: 5x)
  * Sizes beyond the build's capacities are skipped (`make bench` runs a
  * build with TRK_MAX_TRACKS 256 and TRK_MAX_DETECTIONS 4096). The grid
  * runs round-robin, 3 repetitions, the fastest of each. */

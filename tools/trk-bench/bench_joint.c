@@ -1,4 +1,4 @@
-/* bench_joint.c - joint association's worst cases (issue 15), the default
+/* bench_joint.c - joint association's worst cases, the default
  * configuration (joint association) with single-point starts:
  *   joint_chain_64x256  ns per scan of 64 tracks 5 m apart on a line and 256
  *                       detections 1.25 m apart along it: every detection in

@@ -1,4 +1,4 @@
-/* bench_lcm.c - trk-lcm-bridge throughput and added latency (issue 7), with
+/* bench_lcm.c - trk-lcm-bridge throughput and added latency, with
  * 64 tracks and 256 detections per scan (64 targets always detected + 192
  * uniform clutter over 1200 m x 1200 m, the setting of scan_64x256):
  *   lcm_direct_64x256         ns per scan: trk_tracker_process_scan alone

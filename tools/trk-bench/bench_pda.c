@@ -1,4 +1,4 @@
-/* bench_pda.c - PDA track update and whole-scan benchmarks (issue 3):
+/* bench_pda.c - PDA track update and whole-scan benchmarks:
  *   pda_update_m<m>   ns per predict + gate + PDA update of one track with m
  *                     detections in its gate (public API: trk_cv2_predict +
  *                     trk_pda_update), alternating in the same run with
@@ -17,7 +17,7 @@
  *                     per-track PDA, alternating with it in the same run, and
  *                     the ratio scan_64x256_vs_scan_64x256_pda
  *   scan_64x256_mn_kn the same scans with trk_tracker_mn_kn_params (M/N 2/3
- *                     here, single-point initiation): the path before issue 14,
+ *                     here, single-point initiation): the old default path,
  *                     for the ratio in the same run
  *   scan_64x256_imm   (TRK_WITH_IMM builds) scan_64x256_cv, the default scans
  *                     of this build, against scan_64x256_imm3, every track an
@@ -292,7 +292,7 @@ TRK_BENCH(scan_64x256)
     scan_bench(names, cfg, 2);
 }
 
-/* The instruction count of one scan_64x256 (issue 19: a figure that does
+/* The instruction count of one scan_64x256 (a figure that does
  * not depend on the machine's load): the default configuration's timed
  * scans once, with callgrind's instrumentation on for them alone (make
  * bench-instr runs this under valgrind --instr-atstart=no and divides its
@@ -332,7 +332,7 @@ TRK_BENCH(scan_64x256_mn_kn)
     scan_bench(names, cfg, 1);
 }
 
-/* Issue 16's budget: the same scans with every track an IMM track of
+/* The IMM budget: the same scans with every track an IMM track of
  * three models (CV and turns at +-2 deg/s, joint association) against the
  * CV tracks of the same build, alternating in the same run; the per-track
  * update is the scan over the tracks updated per scan (initiation and the

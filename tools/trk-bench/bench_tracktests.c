@@ -1,5 +1,5 @@
 /* bench_tracktests.c - cost of the per-track confirmation / termination
- * tests (issue 6):
+ * tests:
  *   tt_<test>          ns per step of one test on one track (Blanding Table 1
  *                      model, 4 sensors looked at in turn, a fixed pseudo-random
  *                      pattern of detections and gate P_FA)

@@ -3,11 +3,11 @@
 # bridge benchmarks (bench_lcm.c) run the bridge core of libtrk_lcm.a over
 # liblcm.
 TOOL_LDLIBS_trk-bench += $(or $(shell pkg-config --libs lcm 2>/dev/null),-llcm)
-# The baseline loops (baseline_*.c, issue 19) are compiled with the library's
+# The baseline loops (baseline_*.c) are compiled with the library's
 # own optimisation flags, so a ratio compares code, not flags.
 $(BUILD)/obj/tools/trk-bench/baseline_pda.o: CFLAGS_ALL += $(LIBOPT)
-# ... and once more at -O2 -funroll-loops (the library's flags before issue
-# 19 moved it to -O3, which slows gcc 12's float loop): the _vs_baseline_o2
+# ... and once more at -O2 -funroll-loops (the library's flags before it
+# moved to -O3, which slows gcc 12's float loop): the _vs_baseline_o2
 # lines
 $(BUILD)/obj/tools/trk-bench/baseline_pda_o2.o: CFLAGS_ALL += -funroll-loops
 $(BUILD)/obj/tools/trk-bench/baseline_pda_o2.o: tools/trk-bench/baseline_pda.c

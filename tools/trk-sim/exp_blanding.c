@@ -21,7 +21,7 @@
  *   (the paper's f1: no false alarm under H1). H0 (false track): a look
  *   detects with the gate's P_FA. The tests run the paper's event model too
  *   (hmm.events = TRK_EVENTS_PAPER, Blanding eq 8 as printed; the library's
- *   default is the complete model, CONVENTIONS "Complete detection-event
+ *   default is the complete model, docs/conventions.md "Complete detection-event
  *   model"), so that the paper's figures are reproduced.
  *   Every test starts with its initial statistic at the first look after
  *   initiation (Page c_0 = 0, Shiryaev g_0 = logit beta0 with beta0 = 0.5,

@@ -12,7 +12,7 @@
  * the same target, detections and clutter field (common random numbers), so
  * their difference is measured pairwise.
  *
- * The paper's unprinted choices, ours (CONVENTIONS "Brekke Table I mapping"):
+ * The paper's unprinted choices, ours (docs/conventions.md "Brekke Table I mapping"):
  *   resolution cell  lambda = P_FA / cell; 1, 0.25 and 0.1 m^2 all reported
  *   initial track    two-point differencing (per axis [[r, r/T],
  *                    [r/T, 2r/T^2]]), estimate drawn from N(truth, P_0)
@@ -201,7 +201,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         SIM_OPT_LONG("--scans", &scans, "N", "300", SIM_IN, 1, 1000000, "scans per run"),
         SIM_OPT_LIST("--cell-m2", cells, &ncell, MAXL, "1,0.25,0.1", SIM_GT, 0, 0,
                      "resolution cell areas, lambda = P_FA / cell\n"
-                     "(the paper does not print it, CONVENTIONS asks for all three)"),
+                     "(the paper does not print it; all three are reported)"),
         SIM_OPT_LIST("--k-shape", nus, &nnu, MAXL, "1,8", SIM_GT, 0, 0, "K shapes nu"),
         SIM_OPT_ALIAS("--nu", "--k-shape"),
         SIM_OPT_LIST("--snr-db", snrs, &nsnr, MAXL, "10,15", 0, 0, 0, "target SNRs"),

@@ -101,7 +101,7 @@ SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-trac
     const int threads = sim_threads(&com);
     const long nlen = max_scans - 1; /* lengths 2 .. max_scans */
     struct kn_out *out = calloc((size_t)(nlen * runs), sizeof *out);
-    if (!out) { /* issue 17 item 10: --runs 2147483648 exited 1 without a word */
+    if (!out) { /* --runs 2147483648 must say why it stops */
         fprintf(stderr, "kennedy-null: out of memory for %ld x %ld run results (%.3g GB): fewer --runs or --max-scans\n",
                 nlen, runs, (double)nlen * (double)runs * (double)sizeof *out / 1e9);
         return 1;

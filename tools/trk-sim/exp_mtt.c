@@ -1,12 +1,12 @@
-/* exp_mtt.c - trk-sim mtt and mtt-compare: the multi-target evaluation of
- * issue 14 (item 7).
+/* exp_mtt.c - trk-sim mtt and mtt-compare: the multi-target evaluation
+ * (GOSPA and track maintenance over clutter levels).
  *
  * mtt: a scenario family of tools/sim/mtt_scenario.h (--family): transit
  * (the default; eight slots of one target at a time: an X, a pair 60 m
  * apart, a birth, a death, a 90 deg turn, one straight, and targets crossing
  * the region in the slots freed by those that left; speeds in [--speed-min,
- * --speed-max], 5-15 m/s) or fixed (the eight structure targets of commit
- * b9ce836 alone, alive the whole run but the birth and the death, speeds
+ * --speed-max], 5-15 m/s) or fixed (the eight structure targets
+ * alone, alive the whole run but the birth and the death, speeds
  * reduced to keep each path inside; the scenario the peer was measured on);
  * 3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes,
  * seeds S, S+1, ..., S+seeds-1, each at every clutter count of the list
@@ -16,14 +16,14 @@
  * detections, and a level's clutter is the first N points of the largest's):
  *   new  trk_tracker_default_params() with the scenario's sensor
  *   pda  the same with association = pda
- *   old  mtt_old_defaults() (the defaults before issue 14) with the same
+ *   old  mtt_old_defaults() (the defaults before two-point initiation) with the same
  *   imm  new with IMM tracks (a build with TRK_WITH_IMM = 1 only, `make
- *        mtt-imm`; issue 16 item 3): CV at q and coordinated turns at
+ *        mtt-imm`): CV at q and coordinated turns at
  *        +-omega (--imm-rate, --imm-stay, --imm-turn-q; MTT_IMM_* below)
  * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
  * of the scenario with use_amplitude, q = 1e-3; then every --set).
  *
- * The manoeuvres (issue 16 item 3): the turning target (--turn-rate,
+ * The manoeuvres: the turning target (--turn-rate,
  * --turn-deg) and, with --accel, the straight target accelerating along
  * its line from its mid-life (--accel-s); per run over the manoeuvre's
  * scans the target's coverage and its assigned track's RMSE, the coverage
@@ -73,7 +73,7 @@
 #define MAN_LOST 10    /* a manoeuvre's track loss: its track at the first scan against this many
                           scans after its last */
 
-/* The imm configuration (TRK_WITH_IMM; issue 16 item 3): CV (q = --q,
+/* The imm configuration (TRK_WITH_IMM): CV (q = --q,
  * 1e-3) and coordinated turns at +-MTT_IMM_RATE_DPS (q = MTT_IMM_TURN_Q),
  * keeping the model with MTT_IMM_STAY per scan. Chosen by measurement
  * (transit family, 200 scans, turns of 30 scans at 1, 2 and 3 deg/s, each
@@ -842,7 +842,7 @@ static void mtt_ws_free(void *ctx, void *wsp)
     free(ws);
 }
 
-SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track maintenance) over clutter levels")
+SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) over clutter levels")
 {
     long scans, seeds;
     double levels[MAX_LEVELS], c_m, pd, snr_db, q, v_min, v_max, par_sep, turn_rate, turn_deg, accel, accel_s;
@@ -854,7 +854,7 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         SIM_OPT_CHOICE("--family", &family, "transit|fixed", family_values, "transit",
                        "the scenario family (mtt_scenario.h): transit,\n"
                        "targets entering and leaving, slots re-used; fixed, the 8\n"
-                       "targets of b9ce836 alive the whole run but the birth and the\n"
+                       "targets alone, alive the whole run but the birth and the\n"
                        "death, speeds reduced to keep each path inside (the scenario\n"
                        "the peer was measured on)"),
         SIM_OPT_LONG("--scans", &scans, "N", "200", SIM_IN, 10, 100000, "scans per run, one every 4 s"),
@@ -867,7 +867,7 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         SIM_OPT_STRING("--config", &configs, "LIST", "new,pda,old",
                        "configurations: new (trk_tracker_default_params: joint\n"
                        "association), pda (the same with association = pda: each\n"
-                       "track's own PDA), old (the defaults before issue 14, per-track\n"
+                       "track's own PDA), old (the defaults before two-point initiation, per-track\n"
                        "PDA), imm (new with IMM tracks: CV and turns at +-omega,\n"
                        "--imm-*; only in a build with TRK_WITH_IMM = 1: make mtt-imm);\n"
                        "with association = joint and no clutter, the tracker\n"
@@ -908,15 +908,15 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
         SIM_OPT_END};
     const struct sim_cli cli = {
         "mtt", "[options] [--set key=value ...]",
-        "Issue 14's multi-target evaluation: a scenario family of tools/sim/mtt_scenario.h\n"
+        "Multi-target evaluation: a scenario family of tools/sim/mtt_scenario.h\n"
         "(3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes; eight\n"
         "slots, each holding one target at a time: an X through the centre, a pair 60 m\n"
         "apart, a birth at ~20 % of the run, a death at ~70 %, a 90 deg turn at ~3 deg/s\n"
         "mid-run, one straight; speeds drawn in [--speed-min, --speed-max], 5-15 m/s).\n"
         "--family transit (the default): a target is present while inside the region and\n"
         "keeps its speed, and a slot whose target has left or died takes a new target\n"
-        "entering at the edge 1-10 scans later: 6-8 present. --family fixed (commit\n"
-        "b9ce836's family, the issue's 8-target scenario the peer was measured on): the\n"
+        "entering at the edge 1-10 scans later: 6-8 present. --family fixed (the\n"
+        "8-target scenario the peer, Stone Soup's JPDA, was measured on): the\n"
         "eight alone, alive the whole run but the birth and the death, each speed reduced\n"
         "until its path stays inside (at 200 scans about 3-6 m/s). Each seed at every\n"
         "clutter count through every configuration (the same scenarios: common random\n"
@@ -1029,7 +1029,7 @@ SIM_EXPERIMENT(mtt, "mtt", "issue 14: multi-target evaluation (GOSPA, track main
            sc[0].p.scan_period_s, sc[0].p.region_m / 1000, sc[0].p.region_m / 1000, TRK_MAX_TRACKS,
            TRK_MAX_DETECTIONS, threads);
     if (family == MTT_FAMILY_FIXED)
-        printf("   fixed family (b9ce836): 8 targets, alive the whole run but the birth (from ~20 %%) and the death "
+        printf("   fixed family: 8 targets, alive the whole run but the birth (from ~20 %%) and the death "
                "(to ~70 %%), %.2f present per scan (%d-%d); speeds %.1f-%.1f m/s (drawn in [%g, %g]; %ld of %ld "
                "reduced to keep the path inside)\n",
                pres_sum / ((double)seeds * (double)scans), pres_min, pres_max, vmin, vmax, sc[0].p.speed_min_mps,
@@ -1164,7 +1164,7 @@ static int split(char *line, char **fld, int max)
 #define MAX_COLS (7 + 3 * M_N + 64)
 
 /* Did fgets read a whole line (its '\n', or the file's last line)? A
- * longer line fills the buffer without one (issue 17 item 7). */
+ * longer line fills the buffer without one. */
 static int whole_line(const char *line, FILE *f)
 {
     const size_t n = strlen(line);
@@ -1284,7 +1284,7 @@ static int same_group(const struct mtt_row *x, const struct mtt_row *y)
     return strcmp(x->family, y->family) == 0 && strcmp(x->config, y->config) == 0;
 }
 
-SIM_EXPERIMENT(mtt_compare, "mtt-compare", "issue 14: merge trk-sim mtt CSVs of builds with other TRK_MAX_TRACKS, ratios")
+SIM_EXPERIMENT(mtt_compare, "mtt-compare", "merge trk-sim mtt CSVs of builds with other TRK_MAX_TRACKS, ratios")
 {
     struct compare_files files = {{NULL}, 0};
     const struct sim_opt opts[] = {SIM_OPT_END};

@@ -5,7 +5,7 @@
  * (bias); and the steady-state CRLB with IRF (Willett eq 37) with the
  * paper's q2 and with ours.
  *
- * Mapping (CONVENTIONS "Willett Table I mapping"): nz = 2, R = I, "V = 400"
+ * Mapping (docs/conventions.md "Willett Table I mapping"): nz = 2, R = I, "V = 400"
  * is a gate of area 400 around the truth: gamma = 400/pi (pi gamma sqrt|R|
  * = 400), P_G = 1 (to 1e-27), lambda_vg = 400 lambda. CRLB: q~ = 1, R = I,
  * T = 1 s (the paper's Table I setting); Willett plots the (1,1) element of

@@ -8,7 +8,7 @@
  *   CRLB     the library's information recursion (trk/crlb.h, eq 37) to its
  *            steady state, position bound sqrt(Jinv11 + Jinv22), with q2 of
  *            Table I (the paper's) and with q2 from the importance sampler
- *            (q2_is.h) for Table I's mapping (CONVENTIONS: a gate of area
+ *            (q2_is.h) for Table I's mapping (docs/conventions.md: a gate of area
  *            V = 400 around the truth, gamma = 400/pi, P_G = 1,
  *            lambda_vg = 400 lambda).
  *   PDAF     simulated (single_target.h: one target, one track, the

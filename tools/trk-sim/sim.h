@@ -181,7 +181,7 @@ struct st_gate_cap;
 int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *amp, double cell_m2, long scans,
                      int init, int texture, const struct st_gate_cap *gate_cap, uint64_t seed);
 
-/* The assumptions that change the results (issue 18 item 4), one option
+/* The assumptions that change the results, one option
  * each, the same name and meaning in every experiment, named in every CSV
  * header and plot title:
  *   --start two-point|steady   the single-target runs' initial track
@@ -288,8 +288,8 @@ int sim_load_table(const char *exp, const char *dir, const char *file, struct tr
 FILE *sim_csv_open(const struct sim_common *c, struct fileio_out *o, const char *suffix, char *path,
                    size_t pathlen, const char *header);
 /* Every write of o checked, flushed, closed and renamed into place: 0, or -1
- * with a message "trk-sim: PATH: write error: ..." on stderr (issue 17 item 8:
- * a full disk gave cut CSVs and exit status 0). */
+ * with a message "trk-sim: PATH: write error: ..." on stderr (a full disk
+ * must not leave cut CSVs and exit status 0). */
 int sim_csv_close(struct fileio_out *o);
 /* An error elsewhere: o's temporary file removed, its PATH untouched. */
 void sim_csv_discard(struct fileio_out *o);

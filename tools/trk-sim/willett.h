@@ -5,7 +5,7 @@
 #define TRK_SIM_WILLETT_H
 
 #define WILLETT_NL 10     /* clutter densities (rows) */
-#define WILLETT_AREA 400.0 /* V: gamma = V / pi, lambda_vg = V lambda (CONVENTIONS) */
+#define WILLETT_AREA 400.0 /* V: gamma = V / pi, lambda_vg = V lambda (docs/conventions.md) */
 
 /* Table I, typed from seed 000: q2 at the clutter densities willett_lambda
  * (per unit area) and the detection probabilities willett_pd. */

@@ -277,7 +277,7 @@ int main(int argc, char **argv)
         return 2;
     }
     if (start_utime < 0) start_utime = log_path ? 1700000000000000LL : wall_us();
-    /* every scan's time in the tracker's range (issue 17 item 8: --scan-period-s 1e13 wrote
+    /* every scan's time in the tracker's range (--scan-period-s 1e13 wrote
      * 1 of 3 scans and exited 0) */
     const double last_us = (double)start_utime + (double)(scans > 0 ? scans - 1 : 0) * p.scan_period_s * 1e6;
     if (!(last_us <= (double)TRK_TIME_US_MAX)) {

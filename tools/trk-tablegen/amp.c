@@ -79,7 +79,7 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape -
         .about = "Amplitude table for one (clutter model, nu, SNR, P_FA): threshold t (S0(t) = P_FA),\n"
                  "P_D = S1(t), ln l^a over [t, a_max] and the inverse truncated survival a(x),\n"
                  "x = -ln(S(a)/S(t)) in [0, x_max], of clutter and of target (Brekke eqs 19-20, 41-47;\n"
-                 "CONVENTIONS \"Amplitude models\"). Amplitudes in units of sqrt(clutter power).",
+                 "docs/conventions.md \"Amplitude models\"). Amplitudes in units of sqrt(clutter power).",
         .opts = opts};
     const int parsed = cli_parse(&cli, argc, argv);
     if (parsed != CLI_RUN) return parsed;

@@ -176,7 +176,7 @@ static int check_kind(const unsigned char *b, size_t len, const struct trk_table
 /* How much of FILE to read: the size its header declares (+ 1 MiB, to count
  * bytes after the table's end), 1 MiB when it starts with no table magic
  * (enough for the check's own message), never more than the format's
- * maximum (issue 17 item 7: /dev/zero was read until malloc failed). */
+ * maximum (/dev/zero was read until malloc failed). */
 static size_t read_bound(const char *file)
 {
     unsigned char h[20];

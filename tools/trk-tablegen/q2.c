@@ -15,7 +15,7 @@
 #include "tablegen.h"
 #include "trk/q2.h"
 
-/* Defaults (q2_table.h; README "Performance prediction": chosen by the
+/* Defaults (q2_table.h; docs/library.md "Performance prediction": chosen by the
  * measured interpolation error, `--measure-interp`). */
 #define DEF_PD Q2_TABLE_DEFAULT_PD
 #define DEF_SNR Q2_TABLE_DEFAULT_SNR_DB
@@ -153,10 +153,10 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
         .prog = "trk-tablegen q2",
         .usage = "--detector pdaf|pdafai --out FILE [options]",
         .about = "\n"
-                 "q2, the information-reduction factor of the PDAF / PDAFAI (CONVENTIONS \"q2, MRE and\n"
-                 "CRLB\"; Brekke eqs 28-30, 38), by importance sampling over a grid, written with its\n"
-                 "Monte Carlo standard error per cell as a q2 table (trk/q2.h \"Q2 TABLE\": versioned,\n"
-                 "CRC-checked, used in place by trk_q2_lookup_init_table).\n"
+                 "q2, the information-reduction factor of the PDAF / PDAFAI (docs/conventions.md\n"
+                 "\"q2, MRE and CRLB\"; Brekke eqs 28-30, 38), by importance sampling over a grid,\n"
+                 "written with its Monte Carlo standard error per cell as a q2 table (trk/q2.h\n"
+                 "\"Q2 TABLE\": versioned, CRC-checked, used in place by trk_q2_lookup_init_table).\n"
                  "  pdaf    2-D table over (pd, lambda_vg) for one measurement dimension and gate\n"
                  "  pdafai  3-D table over (snr_db, pfa, lambda_vg) for one clutter model (Rayleigh, or\n"
                  "          K with shape nu); pd = S1(t) follows from the ROC (library amplitude module)\n"

@@ -1,5 +1,5 @@
 /* kind_amplitude.c - vector kinds amp_threshold, amp_loglr, amp_inv_sf,
- * amp_kennedy_loglr (../shared/vectors/amplitude.vec).
+ * amp_kennedy_loglr (tests/vectors/amplitude.vec).
  *
  * Direct evaluation, one implementation each: model k through the offline
  * high-accuracy texture integrals (tools/gen/kdist.c, double precision in

@@ -1,5 +1,5 @@
 /* kind_imm.c - vector kinds imm_update and imm_pda_update
- * (../shared/vectors/imm.vec; CONVENTIONS "Multiple models (IMM)"): one IMM
+ * (tests/vectors/imm.vec; docs/conventions.md "Multiple models (IMM)"): one IMM
  * cycle through the library (trk/imm.h): trk_imm_mix, trk_imm_predict, then
  * trk_imm_update (one measurement) or trk_imm_pda_update (a scan with
  * clutter), and trk_imm_combine.

@@ -1,6 +1,6 @@
-/* kind_jpda.c - vector kind jpda_update (../shared/vectors/jpda.vec;
- * CONVENTIONS "Joint association"): N tracks on one scan through the
- * library: the CV-2D predict and innovation of each track, its row of
+/* kind_jpda.c - vector kind jpda_update (tests/vectors/jpda.vec;
+ * docs/conventions.md "Joint association (JPDA / JIPDA)"): N tracks on one
+ * scan through the library: the CV-2D predict and innovation of each track, its row of
  * weights (trk_jpda_track_weights), the joint marginals
  * (trk_jpda_marginals), the JIPDA existence and conditional weights
  * (trk_jpda_existence) and the PDA update of each track with them

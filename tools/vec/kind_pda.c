@@ -1,5 +1,5 @@
 /* kind_pda.c - vector kinds pda_update, pda_track, pdafai_update
- * (../shared/vectors/pda.vec, pdafai.vec): the library's CV-2D predict followed
+ * (tests/vectors/pda.vec, pdafai.vec): the library's CV-2D predict followed
  * by trk_pda_update (pda_track) or, with the innovation that the single-step
  * kinds output, trk_pda_update_inn.
  *

@@ -1,5 +1,5 @@
 /* kind_q2.c - vector kinds q2_pdaf, q2_pdafai, mre_steady, crlb_irf
- * (../shared/vectors/q2.vec; CONVENTIONS "q2, MRE and CRLB").
+ * (tests/vectors/q2.vec; docs/conventions.md "q2, MRE and CRLB").
  *
  * q2_pdaf, q2_pdafai: the importance-sampling estimator of tools/gen/q2_is.c
  * (Monte Carlo). The file's tolerance is abs = 4 sqrt(2) se_ref, rel 0, valid
@@ -52,7 +52,7 @@
 #define Q2_VEC_SEED 0x7132763ULL
 #define Q2_VEC_SAMPLES_PDAF 6000000ULL
 #define Q2_VEC_SAMPLES_PDAFAI 2250000ULL
-#define Q2_VEC_AMP_SIZE 128u /* K amplitude table points: q2 error ~2e-7 (README) */
+#define Q2_VEC_AMP_SIZE 128u /* K amplitude table points: q2 error ~2e-7, measured */
 
 /* gamma from the gate probability, in double where the closed form exists
  * (nz = 2: a pg of 1 - 1.5e-8 is 1.0f in float). */

@@ -1,5 +1,5 @@
 /* kind_tracktests.c - vector kinds page_hmm, shiryaev_hmm, sprt, clutter_chi2,
- * clutter_amp_f (../shared/vectors/tracktests.vec): the library's step
+ * clutter_amp_f (tests/vectors/tracktests.vec): the library's step
  * functions fed scan by scan; every per-scan output is recorded.
  *
  * Capacity: a case with more sensors (ns) than this build's TRK_MAX_SENSORS
@@ -28,14 +28,14 @@
  * tolerance of 2e-5 normwise relative (abs 1e-6): margin for hidden cases
  * with longer runs.
  *
- * Event model (CONVENTIONS "Complete detection-event model"): the cases of
+ * Event model (docs/conventions.md "Complete detection-event model"): the cases of
  * tracktests.vec use the paper's form (Blanding eq 8 and the SPRT as
  * printed); a case of page_hmm, shiryaev_hmm or sprt with `in model complete`
  * runs the library's complete model (TRK_EVENTS_COMPLETE), any other word
  * or no `model` line the paper's (TRK_EVENTS_PAPER); a numeric `model` is
  * an error.
  *
- * Decisions: the vector file codes them as numbers (CONVENTIONS "Track
+ * Decisions: the vector file codes them as numbers (docs/conventions.md "Track
  * confirmation and termination"): confirmation tests +1 confirm, -1 reject,
  * 0 pending; termination tests 1 terminate, 0 continue. The library's
  * enum trk_decision (the step's output, and the SPRT's per-look fire) is

@@ -1,4 +1,4 @@
-/* kind_visibility.c - vector kind visibility (../shared/vectors/tracktests.vec):
+/* kind_visibility.c - vector kind visibility (tests/vectors/tracktests.vec):
  * the library's IPDA visibility recurrence (trk/visibility.h) scan by scan.
  *
  * Float tolerance (normwise): probabilities in (0, 1) through ~20 steps of

@@ -1,8 +1,8 @@
-/* kind_window.c - vector kinds kn and mn (../shared/vectors/tracktests.vec):
+/* kind_window.c - vector kinds kn and mn (tests/vectors/tracktests.vec):
  * K/N termination and M/N confirmation, step by step. Integer outputs only,
  * so the float build uses the same (exact) tolerances.
  *
- * The vector file codes decisions as numbers (CONVENTIONS "Track
+ * The vector file codes decisions as numbers (docs/conventions.md "Track
  * confirmation and termination"): a confirmation test +1 confirm, -1 reject,
  * 0 pending; a termination test 1 terminate, 0 continue. The library's
  * enum trk_decision is translated here, once, into that coding. */

@@ -83,7 +83,7 @@ static int parse_entry(struct vec_file *f, struct vec_case *c, char *rest, struc
     while ((t = token(&rest)) != NULL) {
         char *end;
         double v = 0;
-        const int bad = kv_strtod(t, &end, &v); /* decimal only: no hex (issue 17 item 10) */
+        const int bad = kv_strtod(t, &end, &v); /* decimal only: no hex */
         const char *d = t + (t[0] == '+' || t[0] == '-');
         const int numeric = isdigit((unsigned char)d[0]) || (d[0] == '.' && isdigit((unsigned char)d[1]));
         if (numeric && (bad == KV_NUM_BAD || *end != '\0')) return perr(f, "bad number (decimal numbers only)");
@@ -141,7 +141,7 @@ int vec_next(struct vec_file *f, struct vec_case *c)
             if (*n >= VEC_MAX_ENTRIES) return perr(f, "too many entries in a case");
             struct vec_entry *e = (is_in ? c->in : c->out) + *n;
             if (parse_entry(f, c, rest, e)) return -1;
-            /* one value per name: a second one would silently win or lose (issue 17 item 10) */
+            /* one value per name: a second one would silently win or lose */
             for (size_t j = 0; j < *n; j++)
                 if (strcmp((is_in ? c->in : c->out)[j].name, e->name) == 0)
                     return perr(f, is_in ? "duplicate in name" : "duplicate out name");

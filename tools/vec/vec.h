@@ -1,5 +1,5 @@
 /* vec.h - reader, checker and kind registry for the reference-vector format
- * (../shared/vectors/FORMAT.md). Fixed buffers only; shared by trk-vectors,
+ * (tests/vectors/FORMAT.md). Fixed buffers only; shared by trk-vectors,
  * the tests and the fuzz target.
  *
  * Adding a kind: create tools/vec/kind_<family>.c and write

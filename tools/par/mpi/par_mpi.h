@@ -1,4 +1,4 @@
-/* par_mpi.h - par's message layer over MPI (issue 20): the one piece of trk
+/* par_mpi.h - par's message layer over MPI: the one piece of trk
  * that includes mpi.h, linked only into the tools' MPI builds
  * (build/bin/trk-tablegen-mpi, trk-sim-mpi: mk/mpi.mk). libtrk never sees
  * MPI.
