@@ -36,6 +36,7 @@
 #define CKPT_VERSION 1u
 #define CKPT_ENDIAN 0x01020304u
 #define CKPT_MAX_BYTES ((size_t)1 << 40)
+#define CKPT_GROWTH 8 /* a write waits for 1/8 of the file's results in new ones (ckpt_maybe_write) */
 
 /* ---------------------------------------------------------------- basics */
 
@@ -143,6 +144,8 @@ struct par_ckpt {
     char *key;
     size_t key_len;
     double interval_s, last_write;
+    /* result bytes in the file last written (or read), and finished since */
+    uint64_t file_bytes, new_bytes;
     int dirty, write_failed;
     struct par_rec *rec;
     size_t n_rec, cap_rec;
@@ -253,19 +256,29 @@ static int ckpt_write(struct par_ckpt *c)
     const uint64_t h = w.h;
     fwrite(&h, sizeof h, 1, o.f);
     if (fileio_commit(&o) != 0) return -1;
+    c->file_bytes += c->new_bytes;
+    c->new_bytes = 0;
     c->dirty = 0;
     c->last_write = now_s();
     return 0;
 }
 
-/* Write when due (force: now). A failed write is reported once; the run
- * goes on (the checkpoint is an aid, the output is what matters) and the
- * next write tries again. */
+/* Write when due (force: now): interval_s after the last write, and once
+ * the results finished since are at least CKPT_GROWTH of those in the file.
+ * Every write rewrites the whole file, so a write per chunk would cost the
+ * square of the results (a 4.7 s job unfinished after 240 s); growing the
+ * file by a factor of at least 1 + 1/CKPT_GROWTH per write bounds the bytes
+ * written to (CKPT_GROWTH + 1) x the results plus the first few chunks, and
+ * the writes to about CKPT_GROWTH + ln(chunks / CKPT_GROWTH) / ln(1 +
+ * 1/CKPT_GROWTH), at most 1/(CKPT_GROWTH + 1) of the finished work being
+ * unwritten when a rank dies. A failed write is reported once; the run goes
+ * on (the checkpoint is an aid, the output is what matters) and the next
+ * write tries again. */
 static void ckpt_maybe_write(struct par *p, int force)
 {
     struct par_ckpt *c = p->ckpt;
     if (!c || !c->dirty) return;
-    if (!force && now_s() - c->last_write < c->interval_s) return;
+    if (!force && (now_s() - c->last_write < c->interval_s || c->new_bytes * CKPT_GROWTH < c->file_bytes)) return;
     if (ckpt_write(c) != 0) {
         if (!c->write_failed)
             fprintf(stderr, "%s: checkpoint %s: cannot write: %s (the run goes on)\n", p->prog, c->path,
@@ -273,6 +286,7 @@ static void ckpt_maybe_write(struct par *p, int force)
         c->write_failed = 1;
     } else {
         c->write_failed = 0;
+        p->ckpt_writes++;
     }
 }
 
@@ -324,6 +338,7 @@ static int ckpt_load(struct par_ckpt *c, const unsigned char *buf, size_t len, c
         if (!x.data) return errmsg_fail(err, errlen, "checkpoint %s: out of memory", c->path);
         memcpy(x.data, buf + r.at, (size_t)x.bytes);
         r.at += (size_t)x.bytes;
+        c->file_bytes += x.bytes;
         if (rec_add(c, &x) != 0) {
             free(x.data);
             return errmsg_fail(err, errlen, "checkpoint %s: out of memory", c->path);
@@ -394,9 +409,9 @@ int par_finish(struct par *p, int ok)
     if (!p) return 0;
     if (p->stats)
         fprintf(stderr, "%s: rank %d of %d: %llu batches (%.3g MB of results), %llu work units here, %.3f s on them, "
-                        "%.3f s waiting for the other ranks\n",
+                        "%.3f s waiting for the other ranks; %llu checkpoint writes\n",
                 p->prog, p->rank, p->size, (unsigned long long)p->batches, 1e-6 * (double)p->result_bytes,
-                (unsigned long long)p->units_here, p->work_s, p->wait_s);
+                (unsigned long long)p->units_here, p->work_s, p->wait_s, (unsigned long long)p->ckpt_writes);
     struct par_ckpt *c = p->ckpt;
     int rc = 0;
     if (c) {
@@ -609,6 +624,7 @@ static void root_done(struct run *r, size_t first, size_t count)
         size_t j = i;
         while (j < first + count && !r->done[j]) r->done[j++] = 1;
         if (b->done) b->done(b->done_ctx ? b->done_ctx : b->ctx, i, j - i);
+        if (r->p->ckpt) r->p->ckpt->new_bytes += unit_off(b, j) - unit_off(b, i);
         i = j;
     }
     if (r->p->ckpt) r->p->ckpt->dirty = 1;
