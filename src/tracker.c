@@ -462,11 +462,12 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     t->n_cand = 0;
     t->run_first = t->n_runs = 0;
     t->last_time_us = 0;
-    {   /* seconds (<= 1e9) to microseconds with 32-bit conversions only: a
-         * float -> int64 conversion is soft double on Cortex-M (__aeabi_f2lz) */
+    {   /* seconds (<= 1e9) to the nearest microsecond (>= 1: TRK_MAX_DT_S_MIN)
+         * with 32-bit conversions only: a float -> int64 conversion is soft
+         * double on Cortex-M (__aeabi_f2lz) */
         const trk_real whole = trk_floor(p->max_dt_s);
         t->max_dt_us = (int64_t)(int32_t)whole * 1000000 +
-                       (int64_t)(int32_t)((p->max_dt_s - whole) * TRK_REAL_C(1e6));
+                       (int64_t)(int32_t)((p->max_dt_s - whole) * TRK_REAL_C(1e6) + TRK_REAL_C(0.5));
     }
     t->has_time = 0;
     t->next_id = 1;

@@ -175,7 +175,7 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
         return refuse(field, "clutter", TRK_E_ARG);
     if ((st = check_real(p->process_noise_q, 0, 0, TRK_REAL_MAX, "process_noise_q", field)) != TRK_OK ||
         (st = check_speed_sigma(p->init_speed_sigma_mps, field)) != TRK_OK ||
-        (st = check_real(p->max_dt_s, 0, 1, TRK_REAL_C(1e9), "max_dt_s", field)) != TRK_OK ||
+        (st = check_real(p->max_dt_s, TRK_MAX_DT_S_MIN, 0, TRK_REAL_C(1e9), "max_dt_s", field)) != TRK_OK ||
         (st = check_real(p->merge_gate_d2, 0, 0, TRK_REAL_MAX, "merge_gate_d2", field)) != TRK_OK ||
         (st = check_real(p->init_exclusion_d2, 0, 0, TRK_REAL_MAX, "init_exclusion_d2", field)) != TRK_OK)
         return st;

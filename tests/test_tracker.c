@@ -320,6 +320,19 @@ static void test_check_params(void **state)
     REFUSE(init_speed_sigma_mps, 0, "init_speed_sigma_mps", TRK_E_RANGE);
     REFUSE(max_dt_s, TRK_REAL_C(2e9), "max_dt_s", TRK_E_RANGE);
     REFUSE(max_dt_s, 0, "max_dt_s", TRK_E_RANGE);
+    /* below the scan times' 1 us resolution no gap would be allowed: every
+     * scan after the first refused (it passed init) */
+    REFUSE(max_dt_s, (trk_real)TRK_TOL(1e-300, 1e-30), "max_dt_s", TRK_E_RANGE);
+    REFUSE(max_dt_s, TRK_REAL_C(0.9e-6), "max_dt_s", TRK_E_RANGE);
+    base_params(&p);
+    p.max_dt_s = TRK_REAL_C(1e-6); /* the least: scans 1 us apart */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    {
+        const struct trk_scan s0 = {SEC(1), 0, 0, NULL}, s1 = {SEC(1) + 1, 0, 0, NULL}, s2 = {SEC(1) + 3, 0, 0, NULL};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, NULL));
+        TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &s2, NULL), TRK_E_RANGE);
+    }
     REFUSE(merge_gate_d2, -1, "merge_gate_d2", TRK_E_RANGE);
     REFUSE(init_exclusion_d2, (trk_real)INFINITY, "init_exclusion_d2", TRK_E_NAN);
     REFUSE(track_visibility, 2, "track_visibility", TRK_E_ARG);

@@ -109,6 +109,10 @@ struct trk_detection {
 /* Largest |time_us| of a scan: 2^62 - 1 us (146,000 years), so that any two
  * times subtract without overflow (the difference stays below 2^63 - 1). */
 #define TRK_TIME_US_MAX ((INT64_C(1) << 62) - 1)
+/* Least max_dt_s: one microsecond, the resolution of the scan times (a
+ * smaller one would allow no gap at all and refuse every scan after the
+ * first; refused at init, TRK_E_RANGE "max_dt_s"). */
+#define TRK_MAX_DT_S_MIN TRK_REAL_C(1e-6)
 
 struct trk_scan {
     int64_t time_us;                        /* scan time (microseconds, any epoch);
@@ -304,7 +308,9 @@ struct trk_tracker_params {
     trk_real gate_prob;                               /* P_G, (0, 1) */
     enum trk_clutter_mode clutter;                    /* parametric: the sensor's density */
     trk_real init_speed_sigma_mps;                    /* velocity prior std per axis, > 0 */
-    trk_real max_dt_s;                                /* longest gap between scans, (0, 1e9];
+    trk_real max_dt_s;                                /* longest gap between scans, [1e-6, 1e9]
+                                                         (TRK_MAX_DT_S_MIN: the scan times'
+                                                         resolution, 1 us; to the nearest us);
                                                          a larger gap is refused (TRK_E_RANGE) */
     /* Visibility (IPDA existence, Kennedy eqs 1-2, 21-24), updated for every
      * track each scan with its PDA weights (amplitude included) when

@@ -211,7 +211,7 @@ static const struct range R_PROB_CO = {0, 1, 0, 1};    /* [0, 1) */
 static const struct range R_POS = {0, 1e308, 1, 0};    /* > 0 */
 static const struct range R_NONNEG = {0, 1e308, 0, 0}; /* >= 0 */
 static const struct range R_ANY = {-1e308, 1e308, 0, 0};
-static const struct range R_MAXDT = {0, 1e9, 1, 0};
+static const struct range R_MAXDT = {1e-6, 1e9, 0, 0}; /* TRK_MAX_DT_S_MIN: 1 us */
 
 static const char *const CLUTTER_NAMES[] = {"parametric", "nonparametric", NULL};
 static const char *const MODE_NAMES[] = {"fixed", "sliding", NULL};
@@ -827,7 +827,7 @@ void tcfg_help(FILE *f)
             "  gate_prob = P                     gate probability P_G, (0,1) (0.99)\n"
             "  clutter = parametric|nonparametric  clutter density: configured (parametric) or m/V_G (nonparametric)\n"
             "  init_speed_sigma_mps = S          velocity prior of a new track, per axis, > 0 (5)\n"
-            "  max_dt_s = S                      longest accepted gap between scans, (0,1e9] (3600)\n"
+            "  max_dt_s = S                      longest accepted gap between scans, [1e-6,1e9] (3600)\n"
             "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
