@@ -306,6 +306,31 @@ static void test_checkpoint_writes_bounded(void **state)
     assert_int_equal(access(path, F_OK), -1);
 }
 
+/* A rank killed while writing the checkpoint leaves PATH.tmp-XXXXXX (the
+ * atomic write's temporary file, fileio.h): the next run with the
+ * checkpoint removes it, and nothing else. A checkpoint path that cannot be
+ * written is said at once; the run goes on. */
+static void test_checkpoint_leftovers(void **state)
+{
+    (void)state;
+    char path[128], tmp[160], other[3][160], err[1600];
+    tmp_path(path, sizeof path, "ck4");
+    snprintf(tmp, sizeof tmp, "%s.tmp-Ab3xYz", path);
+    snprintf(other[0], sizeof other[0], "%s.tmp-keep", path);    /* not mkstemp's 6 characters */
+    snprintf(other[1], sizeof other[1], "%s.tmp-ABCDEFG", path); /* 7 */
+    snprintf(other[2], sizeof other[2], "%sx.tmp-Ab3xYz", path); /* another file's */
+    assert_int_equal(fileio_write(tmp, "cut", 3), 0);
+    for (int i = 0; i < 3; i++) assert_int_equal(fileio_write(other[i], "keep", 4), 0);
+    struct par p;
+    assert_int_equal(start(&p, path, "job D", err, sizeof err), 0);
+    assert_int_equal(access(tmp, F_OK), -1);
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal(access(other[i], F_OK), 0);
+        remove(other[i]);
+    }
+    assert_int_equal(par_finish(&p, 1), 0);
+}
+
 static void test_job_key(void **state)
 {
     (void)state;
@@ -351,6 +376,7 @@ int main(void)
         cmocka_unit_test(test_checkpoint_resume),
         cmocka_unit_test(test_checkpoint_refused),
         cmocka_unit_test(test_checkpoint_writes_bounded),
+        cmocka_unit_test(test_checkpoint_leftovers),
         cmocka_unit_test(test_job_key),
         cmocka_unit_test(test_amp_exec),
     };

@@ -146,7 +146,7 @@ struct par_ckpt {
     double interval_s, last_write;
     /* result bytes in the file last written (or read), and finished since */
     uint64_t file_bytes, new_bytes;
-    int dirty, write_failed;
+    int dirty, write_failed, write_errno;
     struct par_rec *rec;
     size_t n_rec, cap_rec;
     /* the batch running (rank 0): its done units are written from out */
@@ -184,16 +184,17 @@ static void ckpt_free(struct par_ckpt *c)
     free(c);
 }
 
-/* little helpers of the file format: native u64s */
+/* little helpers of the file format: native u64s (a failed write is kept
+ * by fileio_put, with its errno, for fileio_commit) */
 struct wr {
-    FILE *f;
+    struct fileio_out *o;
     uint64_t h;
 };
 
 static void wr_bytes(struct wr *w, const void *p, size_t n)
 {
     if (n == 0) return;
-    fwrite(p, 1, n, w->f);
+    (void)fileio_put(w->o, p, n);
     w->h = fnv(w->h, p, n);
 }
 
@@ -236,7 +237,7 @@ static int ckpt_write(struct par_ckpt *c)
 {
     struct fileio_out o;
     if (!fileio_create(&o, c->path, 1)) return -1;
-    struct wr w = {o.f, FNV0};
+    struct wr w = {&o, FNV0};
     const uint32_t ver[2] = {CKPT_VERSION, CKPT_ENDIAN};
     wr_bytes(&w, CKPT_MAGIC, 8);
     wr_bytes(&w, ver, sizeof ver);
@@ -254,7 +255,7 @@ static int ckpt_write(struct par_ckpt *c)
     }
     done_runs(c, 1, &w);
     const uint64_t h = w.h;
-    fwrite(&h, sizeof h, 1, o.f);
+    (void)fileio_put(&o, &h, sizeof h);
     if (fileio_commit(&o) != 0) return -1;
     c->file_bytes += c->new_bytes;
     c->new_bytes = 0;
@@ -274,20 +275,44 @@ static int ckpt_write(struct par_ckpt *c)
  * unwritten when a rank dies. A failed write is reported once; the run goes
  * on (the checkpoint is an aid, the output is what matters) and the next
  * write tries again. */
+static void ckpt_failed(struct par *p, int e);
+
 static void ckpt_maybe_write(struct par *p, int force)
 {
     struct par_ckpt *c = p->ckpt;
     if (!c || !c->dirty) return;
     if (!force && (now_s() - c->last_write < c->interval_s || c->new_bytes * CKPT_GROWTH < c->file_bytes)) return;
     if (ckpt_write(c) != 0) {
-        if (!c->write_failed)
-            fprintf(stderr, "%s: checkpoint %s: cannot write: %s (the run goes on)\n", p->prog, c->path,
-                    strerror(errno));
-        c->write_failed = 1;
+        ckpt_failed(p, errno);
     } else {
         c->write_failed = 0;
         p->ckpt_writes++;
     }
+}
+
+/* A write of the checkpoint failed with errno e: said once (until a write
+ * succeeds again); the run goes on (the checkpoint is an aid, the output
+ * is what matters). */
+static void ckpt_failed(struct par *p, int e)
+{
+    struct par_ckpt *c = p->ckpt;
+    if (!c->write_failed)
+        fprintf(stderr, "%s: checkpoint %s: cannot write: %s (the run goes on)\n", p->prog, c->path, strerror(e));
+    c->write_failed = 1;
+    c->write_errno = e;
+}
+
+/* At the start: can the checkpoint be written at all (its directory exists
+ * and takes a file)? A temporary file created and removed; a failure said
+ * now, not only at the first write (which may never come in a short run). */
+static void ckpt_probe(struct par *p)
+{
+    struct fileio_out o;
+    if (!fileio_create(&o, p->ckpt->path, 1)) {
+        ckpt_failed(p, errno);
+        return;
+    }
+    fileio_discard(&o);
 }
 
 struct rd {
@@ -364,6 +389,11 @@ int par_checkpoint(struct par *p, const char *path, double interval_s, const cha
             c->key_len = strlen(job_key);
             c->interval_s = interval_s > 0 ? interval_s : 0;
             c->last_write = now_s();
+            /* a rank killed in a write left its temporary file */
+            const size_t n_stale = fileio_remove_stale(path);
+            if (n_stale && !p->quiet)
+                fprintf(stderr, "%s: checkpoint %s: removed %zu temporary file%s of a write that never finished\n",
+                        p->prog, path, n_stale, n_stale > 1 ? "s" : "");
             size_t len = 0;
             unsigned char *buf = fileio_read_max(path, CKPT_MAX_BYTES, &len);
             if (buf) {
@@ -377,6 +407,7 @@ int par_checkpoint(struct par *p, const char *path, double interval_s, const cha
                         path, c->n_rec);
             if (st == 0) {
                 p->ckpt = c;
+                ckpt_probe(p);
             } else {
                 ckpt_free(c);
             }
@@ -420,7 +451,11 @@ int par_finish(struct par *p, int ok)
                 fprintf(stderr, "%s: checkpoint %s: cannot remove: %s\n", p->prog, c->path, strerror(errno));
                 rc = -1;
             }
-            if (!p->quiet)
+            if (c->write_failed) /* the last write failed: nothing of this run is in it */
+                fprintf(stderr, "%s: checkpoint %s: %llu work units resumed, %llu computed; not written (%s)\n",
+                        p->prog, c->path, (unsigned long long)p->units_resumed,
+                        (unsigned long long)p->units_computed, strerror(c->write_errno));
+            else if (!p->quiet)
                 fprintf(stderr, "%s: checkpoint %s: %llu work units resumed, %llu computed; removed\n", p->prog,
                         c->path, (unsigned long long)p->units_resumed, (unsigned long long)p->units_computed);
         } else {
