@@ -107,13 +107,18 @@ struct amp_use {
     trk_real ref_db;   /* mean clutter power (dB): the amplitudes' reference */
 };
 
-/* Take scan detection i into the workspace, or count why not: the checks
- * above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs 19-20,
+/* Take scan detection i into the workspace, or count why not: a finite
+ * position outside the surveillance bound, the checks above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs 19-20,
  * once per scan), refusing amplitudes below the threshold. */
 static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, size_t i,
                            const struct amp_use *au, struct trk_scan_report *rep)
 {
     const struct trk_detection *d = &scan->detections[i];
+    const trk_real bound = t->params.max_coord_m;
+    if (isfinite(d->x_m) && isfinite(d->y_m) && !(trk_fabs(d->x_m) <= bound && trk_fabs(d->y_m) <= bound)) {
+        rep->n_rejected_region++; /* outside the surveillance bound: no position (trk/tracker.h) */
+        return;
+    }
     trk_status st = check_detection(d);
     if (st != TRK_OK) {
         if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
