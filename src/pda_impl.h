@@ -94,13 +94,26 @@ TRK_INLINE void trk_i_pda_set_w(struct trk_i_pda_set *s, size_t i, trk_real log_
     }
 }
 
+/* The rule for association weights (e_i, beta_i, an IMM model's
+ * beta_i rho_mi / mu_m): a weight below the smallest normal (a subnormal)
+ * is an exactly-zero contribution. Its reciprocal, or that of a sum of
+ * such weights (the moments' 1 / B), overflows to inf and the moment match
+ * turns to NaN; the detection it weighs lies some 38 sigma (double; 13 in
+ * float) from the prediction, so 0 changes the posterior by less than the
+ * rounding of the normal weights. Every other value passes unchanged (a NaN
+ * stays NaN: no clamping). */
+TRK_INLINE trk_real trk_i_pda_weight(trk_real w)
+{
+    return w > 0 && w < TRK_REAL_MIN ? 0 : w;
+}
+
 /* The normalisation's first half: e_i = exp(ln e_i - mx) in place over
  * w[0..n), with the shift mx (o->e_max) and *e0 = exp(ln e_0 - mx). The
  * shift is ln e_0 itself when the largest ln e_i (w_max) lies within 30 of
  * it: e_0 = 1 needs no exponential, and the largest e_i stays in [e^-30,
  * e^30]; else the larger of the two, as usual. 0 (w zeroed, o->e_max and
  * o->e_sum 0) when every weight is zero (e.g. no detection and lambda = 0),
- * else 1. */
+ * else 1. A subnormal e_i is 0 (trk_i_pda_weight). */
 TRK_INLINE int trk_i_pda_exp(trk_real log_e0, size_t n, trk_real *w, trk_real w_max, trk_real *e0,
                              struct trk_i_pda_out *o)
 {
@@ -113,7 +126,7 @@ TRK_INLINE int trk_i_pda_exp(trk_real log_e0, size_t n, trk_real *w, trk_real w_
         return 0;
     }
     *e0 = near ? 1 : trk_exp(log_e0 - mx);
-    for (size_t i = 0; i < n; i++) w[i] = trk_exp(w[i] - mx);
+    for (size_t i = 0; i < n; i++) w[i] = trk_i_pda_weight(trk_exp(w[i] - mx));
     o->e_max = mx;
     return 1;
 }

@@ -107,13 +107,18 @@ struct amp_use {
     trk_real ref_db;   /* mean clutter power (dB): the amplitudes' reference */
 };
 
-/* Take scan detection i into the workspace, or count why not: the checks
- * above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs 19-20,
+/* Take scan detection i into the workspace, or count why not: a finite
+ * position outside the surveillance bound, the checks above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs 19-20,
  * once per scan), refusing amplitudes below the threshold. */
 static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, size_t i,
                            const struct amp_use *au, struct trk_scan_report *rep)
 {
     const struct trk_detection *d = &scan->detections[i];
+    const trk_real bound = t->params.max_coord_m;
+    if (isfinite(d->x_m) && isfinite(d->y_m) && !(trk_fabs(d->x_m) <= bound && trk_fabs(d->y_m) <= bound)) {
+        rep->n_rejected_region++; /* outside the surveillance bound: no position (trk/tracker.h) */
+        return;
+    }
     trk_status st = check_detection(d);
     if (st != TRK_OK) {
         if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
@@ -462,11 +467,12 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     t->n_cand = 0;
     t->run_first = t->n_runs = 0;
     t->last_time_us = 0;
-    {   /* seconds (<= 1e9) to microseconds with 32-bit conversions only: a
-         * float -> int64 conversion is soft double on Cortex-M (__aeabi_f2lz) */
+    {   /* seconds (<= 1e9) to the nearest microsecond (>= 1: TRK_MAX_DT_S_MIN)
+         * with 32-bit conversions only: a float -> int64 conversion is soft
+         * double on Cortex-M (__aeabi_f2lz) */
         const trk_real whole = trk_floor(p->max_dt_s);
         t->max_dt_us = (int64_t)(int32_t)whole * 1000000 +
-                       (int64_t)(int32_t)((p->max_dt_s - whole) * TRK_REAL_C(1e6));
+                       (int64_t)(int32_t)((p->max_dt_s - whole) * TRK_REAL_C(1e6) + TRK_REAL_C(0.5));
     }
     t->has_time = 0;
     t->next_id = 1;

@@ -25,7 +25,11 @@
  *            (mu_m ~ c_m Lambda_m, each model's own PDA weights); with
  *            one model the PDA. Then the combination into the track's x, P.
  * Existence (IPDA/JIPDA) takes the mixture weights as a CV track takes its
- * own. A model with mu_m = 0 (it underflowed) keeps its prediction.
+ * own. A model with mu_m = 0 (it underflowed) keeps its prediction. A
+ * model's weight beta_mi below the smallest normal is exactly 0
+ * (trk_i_pda_weight: a detection gated by one model but some 38 sigma from
+ * another gives that one about 1e-315, whose moments overflow); mu_m itself
+ * is left as computed.
  *
  * Included by tracker_update_impl.h only. */
 #ifndef TRK_TRACKER_IMM_IMPL_H
@@ -237,7 +241,7 @@ static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan,
         s->mu[m] = mu;
         total += mu;
         if (!(mu > 0)) continue; /* keeps its prediction */
-        for (size_t i = 0; i < set->n; i++) b[i] /= mu;
+        for (size_t i = 0; i < set->n; i++) b[i] = trk_i_pda_weight(b[i] / mu); /* subnormal: 0 */
         struct trk_i_pda_set sm = *set;
         sm.w = b;
         const struct trk_i_pda_pred pp = imm_model_pred(t, scan, m);

@@ -32,6 +32,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
     p->max_pos_sigma_ratio = 20;
+    p->max_coord_m = TRK_MAX_COORD_M_DEFAULT;
     p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: docs/tracker.md "Association" */
     p->merge_gate_d2 = 4;
     p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
@@ -175,12 +176,13 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
         return refuse(field, "clutter", TRK_E_ARG);
     if ((st = check_real(p->process_noise_q, 0, 0, TRK_REAL_MAX, "process_noise_q", field)) != TRK_OK ||
         (st = check_speed_sigma(p->init_speed_sigma_mps, field)) != TRK_OK ||
-        (st = check_real(p->max_dt_s, 0, 1, TRK_REAL_C(1e9), "max_dt_s", field)) != TRK_OK ||
+        (st = check_real(p->max_dt_s, TRK_MAX_DT_S_MIN, 0, TRK_REAL_C(1e9), "max_dt_s", field)) != TRK_OK ||
         (st = check_real(p->merge_gate_d2, 0, 0, TRK_REAL_MAX, "merge_gate_d2", field)) != TRK_OK ||
         (st = check_real(p->init_exclusion_d2, 0, 0, TRK_REAL_MAX, "init_exclusion_d2", field)) != TRK_OK)
         return st;
     if (p->track_visibility != 0 && p->track_visibility != 1) return refuse(field, "track_visibility", TRK_E_ARG);
-    if ((st = check_real(p->max_pos_sigma_ratio, 0, 0, TRK_REAL_MAX, "max_pos_sigma_ratio", field)) != TRK_OK)
+    if ((st = check_real(p->max_pos_sigma_ratio, 0, 0, TRK_REAL_MAX, "max_pos_sigma_ratio", field)) != TRK_OK ||
+        (st = check_real(p->max_coord_m, 0, 1, TRK_MAX_COORD_M_LIMIT, "max_coord_m", field)) != TRK_OK)
         return st;
     return check_init(&p->init, field);
 }

@@ -185,6 +185,16 @@ static void test_device_in_place(void **state)
     assert_int_equal(stat("/dev/full", &st), 0);
     assert_true(S_ISCHR(st.st_mode));
     assert_int_equal(count_prefixed("/dev", "full.tmp-"), 0);
+    /* a write that fails at once (more than the stream's buffer): its own
+     * errno, not EIO */
+    static unsigned char big[1 << 20];
+    assert_non_null(fileio_create(&o, "/dev/full", 1));
+    assert_int_equal(fileio_put(&o, big, sizeof big), -1);
+    assert_int_equal(errno, ENOSPC);
+    assert_int_equal(fileio_put(&o, b, 1), -1); /* nothing more after a failure */
+    errno = 0;
+    assert_int_equal(fileio_commit(&o), -1);
+    assert_int_equal(errno, ENOSPC);
     /* /dev/null: written in place, success */
     assert_int_equal(fileio_write("/dev/null", b, sizeof b), 0);
     /* a directory that does not exist: NULL with errno */

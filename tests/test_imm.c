@@ -173,6 +173,55 @@ static void test_bad_params(void **state)
     TRK_ASSERT_STATUS(trk_imm_update(NULL, R, z, mu_pred, &s, NULL), TRK_E_ARG);
 }
 
+/* Two models far apart and one detection at model 0's prediction: as it
+ * moves away from model 1 (d2_1 from 0 to 1600), model 1's weight of it,
+ * e_1 / (e_0 + e_1), falls through the subnormals (ln e_1 - ln e_0 about
+ * 3.4 - d2_1 / 2: d2_1 in 1423..1495 in double, 180..215 in float). A
+ * subnormal weight is an exactly-zero contribution: every update succeeds,
+ * and beyond the band (d2_1 >= 1500; 220 in float) model 1 keeps its
+ * prediction exactly (beta_1 = 0, beta0 = 1). */
+static void test_subnormal_weight_is_zero(void **state)
+{
+    (void)state;
+    struct trk_imm_params m;
+    struct trk_imm_state s0;
+    static struct trk_imm_work w;
+    memset(&m, 0, sizeof m);
+    memset(&s0, 0, sizeof s0);
+    m.n_models = 2;
+    m.q_m2_per_s3[0] = m.q_m2_per_s3[1] = TRK_REAL_C(0.05);
+    m.p_switch[0] = m.p_switch[3] = TRK_REAL_C(0.9);
+    m.p_switch[1] = m.p_switch[2] = TRK_REAL_C(0.1);
+    struct trk_pda pda;
+    const struct trk_pda_params pp = {2, TRK_REAL_C(0.9), TRK_REAL_C(0.99), TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(1e-3), 1};
+    TRK_ASSERT_OK(trk_pda_init(&pda, &pp));
+    const trk_real mu_pred[TRK_MAX_MODELS] = {TRK_REAL_C(0.5), TRK_REAL_C(0.5)};
+    int n_zero = 0;
+    for (int k = 0; k <= 6400; k++) {
+        const double d2 = 0.25 * k; /* S_1 = P_xx + R_xx = 45 */
+        struct trk_imm_state s = s0;
+        s.mu[0] = s.mu[1] = TRK_REAL_C(0.5);
+        memcpy(s.x[0], X0, sizeof X0);
+        memcpy(s.x[1], X0, sizeof X0);
+        s.x[1][0] -= (trk_real)sqrt(d2 * 45);
+        memcpy(s.p[0], P0, sizeof P0);
+        memcpy(s.p[1], P0, sizeof P0);
+        const trk_real z[2] = {X0[0], X0[2]};
+        trk_real ll[TRK_MAX_MODELS];
+        const trk_status st = trk_imm_pda_update(&m, &pda, R, 1, z, NULL, mu_pred, &s, &w, NULL, ll);
+        if (st != TRK_OK) fail_msg("d2 %.2f: %s", d2, trk_status_str(st));
+        TRK_ASSERT_NEAR(s.mu[0] + s.mu[1], 1, 1e-6, 0);
+        for (int i = 0; i < 16; i++) assert_true(isfinite(s.p[1][i]));
+        /* ln e_1 - ln e_0 below ln of the smallest normal: model 1 untouched */
+        const trk_real x1 = X0[0] - (trk_real)sqrt(d2 * 45);
+        const int kept = s.x[1][0] == x1 && s.p[1][0] == P0[0];
+        if (d2 >= TRK_TOL(1500, 220)) assert_true(kept);
+        n_zero += kept;
+    }
+    print_message("model 1 kept its prediction in %d of 6401\n", n_zero);
+    assert_true(n_zero >= 6400 - 4 * TRK_TOL(1500, 220));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -181,6 +230,7 @@ int main(void)
         cmocka_unit_test(test_turn_tends_to_cv),
         cmocka_unit_test(test_mix_and_combine),
         cmocka_unit_test(test_bad_params),
+        cmocka_unit_test(test_subnormal_weight_is_zero),
     };
     return trk_run_tests("imm", tests, NULL, NULL);
 }

@@ -869,7 +869,7 @@ static void test_replay_time_near_int64_max(void **state)
 
 /* Inputs that are no log end with a clear error instead of spinning or
  * "0 events": zeros, a first record cut short, a
- * directory; /dev/zero stops at the resynchronisation bound or at once on
+ * directory and an empty file (neither leaving an output log); /dev/zero stops at the resynchronisation bound or at once on
  * the stop flag. (--summarize and SIGTERM: tests/lcm_udpm_netns.sh) */
 static void test_not_a_log(void **state)
 {
@@ -898,10 +898,20 @@ static void test_not_a_log(void **state)
     assert_int_equal(bridge_replay(b, "/dev/zero", out, 0, NULL, &st, err, sizeof err), -1);
     assert_non_null(strstr(err, "no LCM log record found"));
     assert_true(st.bytes_skipped > LCMLOG_MAX_RESYNC - 4);
-    /* a directory is not a log either */
+    /* a directory is not a log either, and leaves no output log */
     const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    remove(out);
     assert_int_equal(bridge_replay(b, dir, out, 0, NULL, &st, err, sizeof err), -1);
     assert_non_null(strstr(err, "Is a directory"));
+    assert_int_equal(access(out, F_OK), -1);
+    /* nor is an empty file (it holds no record): an error, no output */
+    f = fopen(cut, "wb");
+    assert_non_null(f);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(bridge_replay(b, cut, out, 0, NULL, &st, err, sizeof err), -1);
+    assert_non_null(strstr(err, "empty"));
+    assert_non_null(strstr(err, cut));
+    assert_int_equal(access(out, F_OK), -1);
     bridge_free(b);
     /* the reader: a lower bound, and the stop flag checked while skipping */
     struct lcmlog_reader r;

@@ -274,6 +274,63 @@ static void test_checkpoint_refused(void **state)
     remove(path);
 }
 
+/* The checkpoint's cost is proportional to the results: with interval 0, a
+ * batch of 1000 one-unit chunks on one thread (each chunk a chance to
+ * write) writes the file about 8 + ln(1000 / 8) / ln(9 / 8) ~ 49 times, not
+ * once per chunk (every write rewrites the whole file: 1000 writes were
+ * quadratic); a failed batch's file still holds every finished unit. */
+static void test_checkpoint_writes_bounded(void **state)
+{
+    (void)state;
+    char path[128], err[1600];
+    tmp_path(path, sizeof path, "ck3");
+    struct par p;
+    assert_int_equal(start(&p, path, "job C", err, sizeof err), 0);
+    struct job *j = fresh(990);
+    struct par_batch b;
+    batch(&b, j, 1, 1, NULL);
+    uint64_t out[N_UNITS];
+    assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_E_UNIT);
+    print_message("checkpoint: %llu writes for %d chunks\n", (unsigned long long)p.ckpt_writes, N_UNITS);
+    assert_true(p.ckpt_writes >= 8 && p.ckpt_writes <= 64);
+    assert_int_equal(par_finish(&p, 0), 0);
+    /* resumed: every unit that finished (all but the failed odd ones >= 990) */
+    assert_int_equal(start(&p, path, "job C", err, sizeof err), 0);
+    j = fresh(N_UNITS);
+    batch(&b, j, 1, 1, NULL);
+    memset(out, 0, sizeof out);
+    assert_int_equal(par_run(&p, &b, out, err, sizeof err), PAR_OK);
+    assert_int_equal(p.units_resumed, 995);
+    for (size_t i = 0; i < N_UNITS; i++) assert_true(out[i] == value(i));
+    assert_int_equal(par_finish(&p, 1), 0);
+    assert_int_equal(access(path, F_OK), -1);
+}
+
+/* A rank killed while writing the checkpoint leaves PATH.tmp-XXXXXX (the
+ * atomic write's temporary file, fileio.h): the next run with the
+ * checkpoint removes it, and nothing else. A checkpoint path that cannot be
+ * written is said at once; the run goes on. */
+static void test_checkpoint_leftovers(void **state)
+{
+    (void)state;
+    char path[128], tmp[160], other[3][160], err[1600];
+    tmp_path(path, sizeof path, "ck4");
+    snprintf(tmp, sizeof tmp, "%s.tmp-Ab3xYz", path);
+    snprintf(other[0], sizeof other[0], "%s.tmp-keep", path);    /* not mkstemp's 6 characters */
+    snprintf(other[1], sizeof other[1], "%s.tmp-ABCDEFG", path); /* 7 */
+    snprintf(other[2], sizeof other[2], "%sx.tmp-Ab3xYz", path); /* another file's */
+    assert_int_equal(fileio_write(tmp, "cut", 3), 0);
+    for (int i = 0; i < 3; i++) assert_int_equal(fileio_write(other[i], "keep", 4), 0);
+    struct par p;
+    assert_int_equal(start(&p, path, "job D", err, sizeof err), 0);
+    assert_int_equal(access(tmp, F_OK), -1);
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal(access(other[i], F_OK), 0);
+        remove(other[i]);
+    }
+    assert_int_equal(par_finish(&p, 1), 0);
+}
+
 static void test_job_key(void **state)
 {
     (void)state;
@@ -318,6 +375,8 @@ int main(void)
         cmocka_unit_test(test_failure),
         cmocka_unit_test(test_checkpoint_resume),
         cmocka_unit_test(test_checkpoint_refused),
+        cmocka_unit_test(test_checkpoint_writes_bounded),
+        cmocka_unit_test(test_checkpoint_leftovers),
         cmocka_unit_test(test_job_key),
         cmocka_unit_test(test_amp_exec),
     };

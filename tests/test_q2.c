@@ -5,7 +5,12 @@
  * for 1 and 2 threads (this test links the OpenMP object, tests/test_q2.mk);
  * the fast exp/log and the amplitude sampler on the library's amplitude
  * module (Rayleigh closed forms, K table lookup). */
+#define _POSIX_C_SOURCE 200809L
+#include <unistd.h>
+
 #include "trk_test.h"
+#include "fileio.h"
+#include "par.h"
 #include "q2_amp.h"
 #include "q2_fastmath.h"
 #include "q2_is.h"
@@ -772,6 +777,86 @@ static void test_is_bad_input(void **state)
     assert_true(q2 == -1);
 }
 
+/* FNV-1a 64 of a checkpoint file's bytes (tools/par/par.c's checksum) */
+static uint64_t fnv1a(const unsigned char *b, size_t n)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    for (size_t i = 0; i < n; i++) h = (h ^ b[i]) * 0x100000001b3ull;
+    return h;
+}
+
+/* A checkpoint with a valid checksum whose results were forged: the first
+ * amplitude model's slot says "refused" with no reason. The build fails
+ * with a message that names the model and the damage (it printed an empty
+ * one). */
+static void test_q2_forged_checkpoint(void **state)
+{
+    (void)state;
+    char path[128], err[1600];
+    snprintf(path, sizeof path, "%.60s/trk_test_q2_%ld.ckpt", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp",
+             (long)getpid());
+    remove(path);
+    struct q2_table_spec s;
+    memset(&s, 0, sizeof s);
+    s.detector = TRK_Q2_PDAFAI;
+    s.nz = 2;
+    s.gate_gamma = 9.21;
+    s.amp_model = TRK_AMP_RAYLEIGH;
+    s.snr_db = (struct q2_table_axis){2, 10, 15, NULL};
+    s.pfa = (struct q2_table_axis){2, 1e-3, 1e-2, NULL};
+    s.lambda_vg = (struct q2_table_axis){2, 0.1, 10, NULL};
+    struct q2_table_run r;
+    memset(&r, 0, sizeof r);
+    r.samples = 200;
+    r.seed = 5;
+    r.threads = 1;
+    struct par p;
+    par_init(&p, "test_q2");
+    p.quiet = 1;
+    assert_int_equal(par_checkpoint(&p, path, 0, "forged", err, sizeof err), 0);
+    r.par = &p;
+    struct q2_table_result res;
+    if (q2_table_build(&s, &r, &res, err, sizeof err)) fail_msg("%s", err);
+    q2_table_result_free(&res);
+    assert_int_equal(par_finish(&p, 0), 0); /* kept: every batch in the file */
+    size_t len;
+    unsigned char *b = fileio_read(path, &len);
+    assert_non_null(b);
+    /* magic, version, key, records (6 u64 and the data): batch 0 is the models' */
+    uint64_t klen, n, h[6];
+    memcpy(&klen, b + 16, 8);
+    size_t at = 24 + (size_t)klen;
+    memcpy(&n, b + at, 8);
+    at += 8;
+    int forged = 0;
+    for (uint64_t i = 0; i < n && !forged; i++) {
+        memcpy(h, b + at, sizeof h);
+        at += sizeof h;
+        if (h[0] == 0 && h[3] == 0) {
+            const int32_t refused = 1;
+            memcpy(b + at, &refused, sizeof refused);
+            memset(b + at + 8, 0, 256); /* no reason */
+            forged = 1;
+        }
+        at += (size_t)h[5];
+    }
+    assert_true(forged);
+    const uint64_t sum = fnv1a(b, len - 8);
+    memcpy(b + len - 8, &sum, 8);
+    assert_int_equal(fileio_write(path, b, len), 0);
+    free(b);
+    par_init(&p, "test_q2");
+    p.quiet = 1;
+    assert_int_equal(par_checkpoint(&p, path, 0, "forged", err, sizeof err), 0);
+    err[0] = 0;
+    assert_int_equal(q2_table_build(&s, &r, &res, err, sizeof err), -1);
+    print_message("forged: %s\n", err);
+    assert_non_null(strstr(err, "amplitude model 0"));
+    assert_non_null(strstr(err, "damaged"));
+    assert_int_equal(par_finish(&p, 0), 0);
+    remove(path);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -784,6 +869,7 @@ int main(void)
         cmocka_unit_test(test_roc_table),
         cmocka_unit_test(test_q2_table),
         cmocka_unit_test(test_q2_table_generated),
+        cmocka_unit_test(test_q2_forged_checkpoint),
         cmocka_unit_test(test_fastmath),
         cmocka_unit_test(test_amp_sampler),
         cmocka_unit_test(test_is_limits),

@@ -219,19 +219,22 @@ static void test_bad_input(void **state)
     check_invariants(&tk);
 }
 
-/* Finite positions whose span overflows the real type: initiation's sort
- * by x must not form inf * 0 (UBSan trapped on the NaN bucket index; found
- * by fuzz_lcm_copy). Every detection is kept as a candidate, in x order. */
+/* Finite positions whose span is the widest the surveillance bound allows
+ * (max_coord_m at its limit; beyond it: test_absurd_coordinates): the
+ * initiation's sort by x must not form inf * 0 (UBSan trapped on the NaN
+ * bucket index when the span overflowed the real type; found by
+ * fuzz_lcm_copy). Every detection is kept as a candidate, in x order. */
 static void test_extreme_positions(void **state)
 {
     (void)state;
     struct trk_tracker_params p;
     trk_tracker_default_params(&p); /* two-point initiation: candidates in a 2-D index */
+    p.max_coord_m = TRK_MAX_COORD_M_LIMIT;
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_detection d[3];
     memset(d, 0, sizeof d);
-    d[0].x_m = TRK_REAL_MAX * TRK_REAL_C(0.9);
-    d[1].x_m = -TRK_REAL_MAX * TRK_REAL_C(0.9);
+    d[0].x_m = TRK_MAX_COORD_M_LIMIT;
+    d[1].x_m = -TRK_MAX_COORD_M_LIMIT;
     d[2].x_m = 10;
     struct trk_scan_report rep;
     const struct trk_scan scan = {SEC(1), 0, 3, d};
@@ -243,6 +246,48 @@ static void test_extreme_positions(void **state)
         for (size_t k = 0; k < 3; k++) held += tk.cand[i].x_m == d[k].x_m ? 1 << k : 0;
     assert_int_equal(held, 7);
     check_invariants(&tk);
+}
+
+/* Finite but absurd coordinates (+-1e300; 1e30 in float) are outside the
+ * surveillance bound (max_coord_m, default TRK_MAX_COORD_M_DEFAULT): counted
+ * (n_rejected_region) and skipped, in every scan, never started or tracked
+ * (a target there started and confirmed tracks), with either initiation.
+ * Inside the bound a target is tracked as usual; the bound itself is a
+ * checked parameter. */
+static void test_absurd_coordinates(void **state)
+{
+    (void)state;
+    const double big = TRK_TOL(1e300, 1e30);
+    for (int two_point = 0; two_point < 2; two_point++) {
+        struct trk_tracker_params p;
+        if (two_point) trk_tracker_default_params(&p);
+        else base_params(&p);
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        uint32_t rejected = 0, started = 0;
+        for (int k = 0; k < 12; k++) {
+            struct trk_detection d[5];
+            memset(d, 0, sizeof d);
+            d[0].x_m = (trk_real)big;                          /* a "target" standing there */
+            d[1].x_m = (trk_real)-big, d[1].y_m = (trk_real)big;
+            d[2].x_m = 100 + 5 * k, d[2].y_m = (trk_real)(big / 2); /* one coordinate only */
+            d[3].x_m = 2 * TRK_MAX_COORD_M_DEFAULT;              /* just beyond the default */
+            d[4].x_m = 100 + 5 * k, d[4].y_m = 50;               /* a real target */
+            const struct trk_scan scan = {SEC(k), 0, 5, d};
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+            rejected += rep.n_rejected_region;
+            started += rep.n_started;
+            check_invariants(&tk);
+        }
+        assert_int_equal(rejected, 4 * 12);
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *a = trk_tracker_track(&tk, i);
+            if (!a) continue;
+            assert_true(fabs((double)a->x[TRK_CV2_X]) < 1e4 && fabs((double)a->x[TRK_CV2_Y]) < 1e4);
+        }
+        assert_int_equal(count_status(&tk, TRK_TRACK_CONFIRMED), 1);
+        assert_true(started >= 1);
+    }
 }
 
 /* Bad parameters are refused at init, nothing half-initialised. */
@@ -320,8 +365,24 @@ static void test_check_params(void **state)
     REFUSE(init_speed_sigma_mps, 0, "init_speed_sigma_mps", TRK_E_RANGE);
     REFUSE(max_dt_s, TRK_REAL_C(2e9), "max_dt_s", TRK_E_RANGE);
     REFUSE(max_dt_s, 0, "max_dt_s", TRK_E_RANGE);
+    /* below the scan times' 1 us resolution no gap would be allowed: every
+     * scan after the first refused (it passed init) */
+    REFUSE(max_dt_s, (trk_real)TRK_TOL(1e-300, 1e-30), "max_dt_s", TRK_E_RANGE);
+    REFUSE(max_dt_s, TRK_REAL_C(0.9e-6), "max_dt_s", TRK_E_RANGE);
+    base_params(&p);
+    p.max_dt_s = TRK_REAL_C(1e-6); /* the least: scans 1 us apart */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    {
+        const struct trk_scan s0 = {SEC(1), 0, 0, NULL}, s1 = {SEC(1) + 1, 0, 0, NULL}, s2 = {SEC(1) + 3, 0, 0, NULL};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, NULL));
+        TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &s2, NULL), TRK_E_RANGE);
+    }
     REFUSE(merge_gate_d2, -1, "merge_gate_d2", TRK_E_RANGE);
     REFUSE(init_exclusion_d2, (trk_real)INFINITY, "init_exclusion_d2", TRK_E_NAN);
+    REFUSE(max_coord_m, 0, "max_coord_m", TRK_E_RANGE);
+    REFUSE(max_coord_m, 2 * TRK_MAX_COORD_M_LIMIT, "max_coord_m", TRK_E_RANGE);
+    REFUSE(max_coord_m, NAN, "max_coord_m", TRK_E_NAN);
     REFUSE(track_visibility, 2, "track_visibility", TRK_E_ARG);
     REFUSE(visibility.pv0, TRK_REAL_C(1.5), "visibility", TRK_E_RANGE);
     /* the sensors: the first and the last index of this build */
@@ -995,6 +1056,7 @@ int main(void)
         cmocka_unit_test(test_termination_and_slot_reuse),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_extreme_positions),
+        cmocka_unit_test(test_absurd_coordinates),
         cmocka_unit_test(test_bad_params),
         cmocka_unit_test(test_check_params),
         cmocka_unit_test(test_full_table),

@@ -372,6 +372,64 @@ static void test_turn(void **state)
     assert_true(mu_cv_straight / n_straight > 0.6); /* 0.84 */
 }
 
+/* A detection at model 0's prediction and model 1's estimate moved away
+ * from it (no switching, so no mixing pulls it back; mu = 1/2, 1/2): as
+ * d2_1 goes from 0 to 1700, model 1's weight of the detection, beta_i
+ * rho_1i / mu_1, falls through the subnormals (ln rho_1i about -d2_1 / 2).
+ * A subnormal weight is an exactly-zero contribution: every update
+ * succeeds, the track stays confirmed, and beyond the band (d2_1 >= 1500;
+ * 220 in float) model 1 keeps its prediction exactly. With either
+ * association. */
+static void test_subnormal_model_weight(void **state)
+{
+    (void)state;
+    static struct trk_tracker base;
+    for (int assoc = 0; assoc < 2; assoc++) {
+        struct trk_tracker_params p;
+        const struct trk_track *tr = lone_track(assoc ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA, &p);
+        const size_t slot = (size_t)(tr - tk.track);
+        p.imm.p_switch[0] = p.imm.p_switch[4] = p.imm.p_switch[8] = 1;
+        p.imm.p_switch[1] = p.imm.p_switch[2] = p.imm.p_switch[3] = 0;
+        p.imm.p_switch[5] = p.imm.p_switch[6] = p.imm.p_switch[7] = 0;
+        tk.params.imm = p.imm;
+        struct trk_track *w = &tk.track[slot];
+        w->imm.mu[0] = w->imm.mu[1] = TRK_REAL_C(0.5);
+        w->imm.mu[2] = 0;
+        memcpy(w->imm.x[1], w->imm.x[0], sizeof w->imm.x[1]);
+        memcpy(w->imm.p[1], w->imm.p[0], sizeof w->imm.p[1]);
+        /* model 0's (and unmoved model 1's) predicted innovation */
+        struct trk_imm_state s = w->imm;
+        TRK_ASSERT_OK(trk_imm_predict(&p.imm, (trk_real)DT_S, &s));
+        struct trk_innovation inn;
+        TRK_ASSERT_OK(trk_kalman_innovation(TRK_CV2_NX, TRK_CV2_NZ, trk_cv2_h, tk.r[0], s.x[0], s.p[0], &inn));
+        const trk_real unit[2] = {1, 0};
+        const double d2_per_m2 = (double)trk_gate_d2(&inn, unit);
+        struct trk_detection d = trk_test_det_at(inn.z_pred[TRK_CV2_ZX], inn.z_pred[TRK_CV2_ZY]);
+        const struct trk_scan scan = {SCAN_US(8), 0, 1, &d};
+        base = tk;
+        int n_kept = 0;
+        for (int k = 0; k <= 3400; k++) {
+            const double d2 = 0.5 * k, dx = sqrt(d2 / d2_per_m2);
+            tk = base;
+            tk.track[slot].imm.x[1][TRK_CV2_X] -= (trk_real)dx;
+            struct trk_imm_state s1 = tk.track[slot].imm; /* model 1's prediction */
+            TRK_ASSERT_OK(trk_imm_predict(&p.imm, (trk_real)DT_S, &s1));
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+            const struct trk_track *t1 = &tk.track[slot];
+            if (t1->status != TRK_TRACK_CONFIRMED || rep.n_terminated != 0)
+                fail_msg("d2_1 %.1f: track %d, end reason %d", d2, (int)t1->status, (int)t1->end_reason);
+            assert_int_equal(t1->n_gated_last, 1);
+            TRK_ASSERT_NEAR(t1->imm.mu[0] + t1->imm.mu[1], 1, TRK_TOL(1e-12, 1e-6), 0);
+            const int kept = t1->imm.x[1][TRK_CV2_X] == s1.x[1][TRK_CV2_X] && t1->imm.p[1][0] == s1.p[1][0];
+            if (d2 >= TRK_TOL(1500, 220)) assert_true(kept); /* its weight below the smallest normal: 0 */
+            n_kept += kept;
+        }
+        print_message("%s: model 1 kept its prediction in %d of 3401\n", assoc ? "joint" : "pda", n_kept);
+        assert_true(n_kept > 0);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -382,6 +440,7 @@ int main(void)
         cmocka_unit_test(test_maneuver_d2_imm),
         cmocka_unit_test(test_same_time_and_unreachable),
         cmocka_unit_test(test_turn),
+        cmocka_unit_test(test_subnormal_model_weight),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -109,6 +109,20 @@ struct trk_detection {
 /* Largest |time_us| of a scan: 2^62 - 1 us (146,000 years), so that any two
  * times subtract without overflow (the difference stays below 2^63 - 1). */
 #define TRK_TIME_US_MAX ((INT64_C(1) << 62) - 1)
+/* Least max_dt_s: one microsecond, the resolution of the scan times (a
+ * smaller one would allow no gap at all and refuse every scan after the
+ * first; refused at init, TRK_E_RANGE "max_dt_s"). */
+#define TRK_MAX_DT_S_MIN TRK_REAL_C(1e-6)
+/* The surveillance bound (max_coord_m): a detection with |x_m| or |y_m|
+ * above it is no position but an error (a unit slip, a corrupt value): it
+ * is counted (n_rejected_region) and skipped, never gated or started.
+ * Default 1e8 m, 2.5 times round the Earth: beyond any sonar's range and
+ * any projected map coordinate (UTM northings stay below 1e7 m). At most
+ * TRK_MAX_COORD_M_LIMIT = 1e15 m: a difference of two coordinates inside it
+ * squared, 4e30 m^2, stays 1e8 below float's largest value, so that gates,
+ * distances and covariances of accepted detections never overflow. */
+#define TRK_MAX_COORD_M_DEFAULT TRK_REAL_C(1e8)
+#define TRK_MAX_COORD_M_LIMIT TRK_REAL_C(1e15)
 
 struct trk_scan {
     int64_t time_us;                        /* scan time (microseconds, any epoch);
@@ -304,7 +318,9 @@ struct trk_tracker_params {
     trk_real gate_prob;                               /* P_G, (0, 1) */
     enum trk_clutter_mode clutter;                    /* parametric: the sensor's density */
     trk_real init_speed_sigma_mps;                    /* velocity prior std per axis, > 0 */
-    trk_real max_dt_s;                                /* longest gap between scans, (0, 1e9];
+    trk_real max_dt_s;                                /* longest gap between scans, [1e-6, 1e9]
+                                                         (TRK_MAX_DT_S_MIN: the scan times'
+                                                         resolution, 1 us; to the nearest us);
                                                          a larger gap is refused (TRK_E_RANGE) */
     /* Visibility (IPDA existence, Kennedy eqs 1-2, 21-24), updated for every
      * track each scan with its PDA weights (amplitude included) when
@@ -334,6 +350,11 @@ struct trk_tracker_params {
                                                          > ratio^2 trace R of the scan's
                                                          sensor; >= 0, 0 = no bound */
     enum trk_assoc_method association;                /* per-track PDA or joint (JIPDA) */
+    trk_real max_coord_m;                             /* surveillance bound: |x_m|, |y_m| of a
+                                                         detection at most this, else counted
+                                                         (n_rejected_region) and skipped;
+                                                         (0, TRK_MAX_COORD_M_LIMIT], default
+                                                         TRK_MAX_COORD_M_DEFAULT (1e8 m) */
 #if TRK_WITH_IMM
     /* Manoeuvring targets (TRK_WITH_IMM, config.h; docs/library.md "Manoeuvres"):
      * imm.n_models = 0 (default) runs every track on the CV model of
@@ -446,6 +467,8 @@ struct trk_scan_report {
     uint32_t n_rejected_cov;        /* own covariance not SPD */
     uint32_t n_rejected_amplitude;  /* amplitude NaN, infinite or negative, or one whose
                                        ln l^a overflows the real type */
+    uint32_t n_rejected_region;     /* finite position outside the surveillance bound
+                                       (|x_m| or |y_m| > params.max_coord_m) */
     uint32_t n_below_threshold;     /* amplitude below the sensor's detection threshold */
     uint32_t n_tracks_updated;      /* live tracks predicted and updated */
     uint32_t n_tracks_hit;          /* ... with at least one detection gated */
@@ -624,7 +647,7 @@ struct trk_tracker {
  *   "init_speed_sigma_mps", "max_dt_s", "merge_gate_d2", "init_exclusion_d2",
  *   "track_visibility", "visibility" (its model refused the parameters),
  *   "init.method", "init.max_speed_mps", "init.max_gap_scans",
- *   "init.birth_density_per_m2", "max_pos_sigma_ratio", "association"
+ *   "init.birth_density_per_m2", "max_pos_sigma_ratio", "max_coord_m", "association"
  *   (unknown, or joint without parametric clutter of density > 0), "imm"
  *   (TRK_WITH_IMM: n_models not 0 and trk_imm_check_params refused it),
  *   "sensor[i].pd", "sensor[i].meas_cov_m2", "sensor[i].clutter_density_per_m2",

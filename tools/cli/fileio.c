@@ -2,6 +2,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "fileio.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -91,13 +92,28 @@ FILE *fileio_create(struct fileio_out *o, const char *path, int binary)
     return o->f;
 }
 
+int fileio_put(struct fileio_out *o, const void *bytes, size_t len)
+{
+    if (o->err || !o->f) {
+        errno = o->err ? o->err : EBADF;
+        return -1;
+    }
+    errno = 0;
+    if (len && fwrite(bytes, 1, len, o->f) != len) {
+        o->err = errno ? errno : EIO; /* write(2)'s reason, e.g. ENOSPC */
+        errno = o->err;
+        return -1;
+    }
+    return 0;
+}
+
 int fileio_commit(struct fileio_out *o)
 {
     if (!o->f) {
         errno = EBADF;
         return -1;
     }
-    int err = ferror(o->f) ? EIO : 0;
+    int err = o->err ? o->err : ferror(o->f) ? EIO : 0;
     if (fflush(o->f) != 0 && !err) err = errno ? errno : EIO;
     if (!o->in_place && !err && fsync(fileno(o->f)) != 0) err = errno;
     if (fclose(o->f) != 0 && !err) err = errno ? errno : EIO;
@@ -123,16 +139,44 @@ void fileio_discard(struct fileio_out *o)
     errno = e;
 }
 
+/* name is base + ".tmp-" + 6 letters or digits (fileio_create's pattern) */
+static int stale_name(const char *name, const char *base, size_t nb)
+{
+    if (strncmp(name, base, nb) != 0 || strncmp(name + nb, ".tmp-", 5) != 0) return 0;
+    const char *x = name + nb + 5;
+    for (int i = 0; i < 6; i++)
+        if (!((x[i] >= 'a' && x[i] <= 'z') || (x[i] >= 'A' && x[i] <= 'Z') || (x[i] >= '0' && x[i] <= '9')))
+            return 0;
+    return x[6] == 0;
+}
+
+size_t fileio_remove_stale(const char *path)
+{
+    char dir[1024] = ".";
+    const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+    const size_t nd = slash ? (size_t)(slash - path) : 0, nb = strlen(base);
+    if (nd >= sizeof dir || nb == 0) return 0;
+    if (slash && nd == 0) strcpy(dir, "/");
+    else if (slash) memcpy(dir, path, nd), dir[nd] = 0;
+    DIR *d = opendir(dir);
+    if (!d) return 0;
+    size_t n = 0;
+    const struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        char full[1100];
+        struct stat st;
+        if (!stale_name(e->d_name, base, nb)) continue;
+        if (snprintf(full, sizeof full, "%s/%s", dir, e->d_name) >= (int)sizeof full) continue;
+        if (lstat(full, &st) == 0 && S_ISREG(st.st_mode) && remove(full) == 0) n++;
+    }
+    closedir(d);
+    return n;
+}
+
 int fileio_write(const char *path, const void *bytes, size_t len)
 {
     struct fileio_out o;
     if (!fileio_create(&o, path, 1)) return -1;
-    errno = 0;
-    if (len && fwrite(bytes, 1, len, o.f) != len) {
-        const int e = errno ? errno : EIO; /* write(2)'s reason, e.g. ENOSPC */
-        fileio_discard(&o);
-        errno = e;
-        return -1;
-    }
+    (void)fileio_put(&o, bytes, len); /* a failure: fileio_commit reports it */
     return fileio_commit(&o);
 }

@@ -211,7 +211,8 @@ static const struct range R_PROB_CO = {0, 1, 0, 1};    /* [0, 1) */
 static const struct range R_POS = {0, 1e308, 1, 0};    /* > 0 */
 static const struct range R_NONNEG = {0, 1e308, 0, 0}; /* >= 0 */
 static const struct range R_ANY = {-1e308, 1e308, 0, 0};
-static const struct range R_MAXDT = {0, 1e9, 1, 0};
+static const struct range R_COORD = {0, 1e15, 1, 0}; /* TRK_MAX_COORD_M_LIMIT */
+static const struct range R_MAXDT = {1e-6, 1e9, 0, 0}; /* TRK_MAX_DT_S_MIN: 1 us */
 
 static const char *const CLUTTER_NAMES[] = {"parametric", "nonparametric", NULL};
 static const char *const MODE_NAMES[] = {"fixed", "sliding", NULL};
@@ -348,6 +349,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "init.birth_density_per_m2") == 0)
         return get_real(v, R_NONNEG, &p->init.birth_density_per_m2, err, n);
     if (strcmp(key, "max_pos_sigma_ratio") == 0) return get_real(v, R_NONNEG, &p->max_pos_sigma_ratio, err, n);
+    if (strcmp(key, "max_coord_m") == 0) return get_real(v, R_COORD, &p->max_coord_m, err, n);
     /* visibility (IPDA existence) */
     if (strcmp(key, "visibility") == 0) {
         if (get_long(v, 0, 1, &l, err, n) != 0) return -1;
@@ -754,6 +756,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     fprintf(f, "init.max_gap_scans = %lu\n", (unsigned long)p->init.max_gap_scans);
     put_num(f, "init.birth_density_per_m2", (double)p->init.birth_density_per_m2);
     put_num(f, "max_pos_sigma_ratio", (double)p->max_pos_sigma_ratio);
+    put_num(f, "max_coord_m", (double)p->max_coord_m);
     fprintf(f, "visibility = %d\n", p->track_visibility);
     put_num(f, "visibility.pv0", (double)p->visibility.pv0);
     put_num(f, "visibility.pcv0", (double)p->visibility.pcv0);
@@ -827,7 +830,7 @@ void tcfg_help(FILE *f)
             "  gate_prob = P                     gate probability P_G, (0,1) (0.99)\n"
             "  clutter = parametric|nonparametric  clutter density: configured (parametric) or m/V_G (nonparametric)\n"
             "  init_speed_sigma_mps = S          velocity prior of a new track, per axis, > 0 (5)\n"
-            "  max_dt_s = S                      longest accepted gap between scans, (0,1e9] (3600)\n"
+            "  max_dt_s = S                      longest accepted gap between scans, [1e-6,1e9] (3600)\n"
             "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
@@ -839,6 +842,8 @@ void tcfg_help(FILE *f)
             "                                     >= 0, 0 = visibility.pv0 (1e-9)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
             "                                    sensor's, 0 = off (20)\n"
+            "  max_coord_m = M                   surveillance bound: a detection with |x| or |y| > M\n"
+            "                                    is counted and skipped, (0,1e15] (1e8)\n"
             "  visibility = 0|1                  track each track's visibility / existence (1)\n"
             "    visibility.pv0, .pcv0            at initiation (0.5, 0.5)\n"
             "    visibility.delta_stay, .delta_become   Markov visibility model (0.99, 0)\n"

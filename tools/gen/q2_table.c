@@ -338,6 +338,24 @@ static int amp_unit(void *ctx, size_t k, void *res, void **ws)
     return 0; /* a refused model is the caller's message, in model order */
 }
 
+/* The message of model k's slot that says refused (status st != 0): its
+ * reason as amp_unit wrote it, or, when the slot cannot be amp_unit's (a
+ * status other than 1, no text, no NUL or a byte that is not printable
+ * text: a slot resumed from a forged or damaged checkpoint), that. */
+static void amp_slot_refusal(const unsigned char *slot, size_t k, int32_t st, char *err, size_t errlen)
+{
+    const char *msg = (const char *)slot + 8;
+    const char *end = memchr(msg, 0, 256);
+    int text = st == 1 && end && end > msg;
+    for (const char *c = msg; text && c < end; c++) text = *c >= 0x20 && *c < 0x7f;
+    if (text) snprintf(err, errlen, "%s", msg);
+    else
+        snprintf(err, errlen,
+                 "amplitude model %zu: its result is damaged (refused, status %ld, without a reason: a forged or "
+                 "damaged checkpoint?)",
+                 k, (long)st);
+}
+
 static int cmp_double(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
@@ -465,7 +483,7 @@ int q2_table_build(const struct q2_table_spec *s, const struct q2_table_run *r, 
             int32_t st;
             memcpy(&st, sl, sizeof st);
             if (st) {
-                snprintf(err, errlen, "%.255s", (const char *)sl + 8);
+                amp_slot_refusal(sl, k, st, err, errlen);
                 bad = 1;
             } else if (q2_amp_unpack(&amp[k], sl + AMP_SLOT_HEAD, slot - AMP_SLOT_HEAD, err, errlen) != 0) {
                 bad = 1;

@@ -224,11 +224,11 @@ enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, i
         log_event(b, BRIDGE_LOG_DETECTION, now_us, what, detail, b->scan.seq);
     }
     b->c.det_nonfinite += (uint64_t)b->scan.n_dropped_nonfinite + rep.n_rejected_nonfinite;
-    b->c.det_field += b->scan.n_dropped_field;
+    b->c.det_field += (uint64_t)b->scan.n_dropped_field + rep.n_rejected_region; /* a position out of bounds */
     b->c.det_cov += rep.n_rejected_cov;
     b->c.det_amplitude += rep.n_rejected_amplitude;
     b->c.det_rejected += (uint64_t)dropped + rep.n_rejected_nonfinite + rep.n_rejected_cov +
-                         rep.n_rejected_amplitude;
+                         rep.n_rejected_amplitude + rep.n_rejected_region;
     b->c.det_below_threshold += rep.n_below_threshold;
     b->c.started += rep.n_started;
     b->c.confirmed += rep.n_confirmed;

@@ -69,7 +69,8 @@ struct bridge_counts {
     uint64_t det_rejected;                /* detections dropped inside accepted scans:
                                              the sum of the four below */
     uint64_t det_nonfinite;               /* NaN/inf or out-of-range used field */
-    uint64_t det_field;                   /* boolean not 0/1, negative amplitude */
+    uint64_t det_field;                   /* boolean not 0/1, negative amplitude, a position
+                                             outside the tracker's max_coord_m */
     uint64_t det_cov;                     /* own covariance not SPD (tracker) */
     uint64_t det_amplitude;               /* amplitude refused by the tracker */
     uint64_t det_below_threshold;         /* below the sensor's amplitude threshold */

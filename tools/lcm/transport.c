@@ -113,6 +113,14 @@ static int64_t add_sat(int64_t t, int64_t d) { return t > INT64_MAX - d ? INT64_
  * are skipped without being read. A detection scan is 12,832 bytes. */
 #define REPLAY_MAX_DATA (1u << 20)
 
+/* What the reader met in the input: corrupt records, skipped bytes, a cut end. */
+static void input_stats(struct replay_stats *st, const struct lcmlog_reader *r)
+{
+    st->corrupt = r->n_corrupt;
+    st->bytes_skipped = r->n_bytes_skipped;
+    st->truncated = r->truncated;
+}
+
 int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_input,
                   volatile sig_atomic_t *stop, struct replay_stats *st, char *err, size_t n)
 {
@@ -127,19 +135,28 @@ int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_in
         snprintf(err, n, "%s: cannot open: %s", in, strerror(errno));
         return -1;
     }
+    /* the first record before the output is created: an input that is no
+     * log (a directory, an empty file: no record) leaves no output log */
+    r.stop = stop;
+    struct lcmlog_event ev;
+    int k = stop && *stop ? 0 : lcmlog_read(&r, &ev);
+    if ((k < 0 && r.error != LCMLOG_E_STOPPED) || (k == 0 && !(stop && *stop))) {
+        if (k < 0) snprintf(err, n, "%s: %s", in, lcmlog_strerror(&r));
+        else snprintf(err, n, "%s: not an LCM log (empty: no record)", in);
+        input_stats(st, &r);
+        lcmlog_close_read(&r);
+        return -1;
+    }
     if (lcmlog_open_write(&w, out) != 0) {
         snprintf(err, n, "%s: cannot create: %s", out, strerror(errno));
         lcmlog_close_read(&r);
         return -1;
     }
-    r.stop = stop;
     const struct bridge_opts *o = &b->o;
     const int64_t period_us = (int64_t)(o->status_period_s * 1e6);
     int have_next = 0, rc = 0;
     int64_t next_status = 0, last_ts = 0;
-    struct lcmlog_event ev;
-    int k = 0;
-    while (!(stop && *stop) && (k = lcmlog_read(&r, &ev)) > 0) {
+    for (; k > 0 && !(stop && *stop); k = stop && *stop ? 0 : lcmlog_read(&r, &ev)) {
         st->events++;
         last_ts = ev.timestamp;
         if (keep_input && ev.data) {
@@ -181,9 +198,7 @@ int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_in
         bridge_status(b, last_ts, &buf, &len);
         if (lcmlog_write(&w, last_ts, o->status_channel, buf, len) == 0) st->written++;
     }
-    st->corrupt = r.n_corrupt;
-    st->bytes_skipped = r.n_bytes_skipped;
-    st->truncated = r.truncated;
+    input_stats(st, &r);
     lcmlog_close_read(&r);
     if (lcmlog_close_write(&w) != 0 && rc == 0) {
         snprintf(err, n, "%s: write error: %s", out, strerror(errno));

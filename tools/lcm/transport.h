@@ -59,7 +59,9 @@ struct replay_stats {
  * gives a byte-identical output. keep_input: also copy every input event
  * (all channels) to the output, before what it produced. *stop (may be
  * NULL) ends the replay early; the output is still a valid log.
- * 0, or -1 with a message (cannot open/read/write, in == out). */
+ * 0, or -1 with a message (cannot open/read/write, in == out, an input
+ * that is no log: empty, a directory, no complete record; then no output
+ * log is created). */
 int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_input,
                   volatile sig_atomic_t *stop, struct replay_stats *st, char *err, size_t errlen);
 

@@ -36,6 +36,7 @@
 #define CKPT_VERSION 1u
 #define CKPT_ENDIAN 0x01020304u
 #define CKPT_MAX_BYTES ((size_t)1 << 40)
+#define CKPT_GROWTH 8 /* a write waits for 1/8 of the file's results in new ones (ckpt_maybe_write) */
 
 /* ---------------------------------------------------------------- basics */
 
@@ -143,7 +144,9 @@ struct par_ckpt {
     char *key;
     size_t key_len;
     double interval_s, last_write;
-    int dirty, write_failed;
+    /* result bytes in the file last written (or read), and finished since */
+    uint64_t file_bytes, new_bytes;
+    int dirty, write_failed, write_errno;
     struct par_rec *rec;
     size_t n_rec, cap_rec;
     /* the batch running (rank 0): its done units are written from out */
@@ -181,16 +184,17 @@ static void ckpt_free(struct par_ckpt *c)
     free(c);
 }
 
-/* little helpers of the file format: native u64s */
+/* little helpers of the file format: native u64s (a failed write is kept
+ * by fileio_put, with its errno, for fileio_commit) */
 struct wr {
-    FILE *f;
+    struct fileio_out *o;
     uint64_t h;
 };
 
 static void wr_bytes(struct wr *w, const void *p, size_t n)
 {
     if (n == 0) return;
-    fwrite(p, 1, n, w->f);
+    (void)fileio_put(w->o, p, n);
     w->h = fnv(w->h, p, n);
 }
 
@@ -233,7 +237,7 @@ static int ckpt_write(struct par_ckpt *c)
 {
     struct fileio_out o;
     if (!fileio_create(&o, c->path, 1)) return -1;
-    struct wr w = {o.f, FNV0};
+    struct wr w = {&o, FNV0};
     const uint32_t ver[2] = {CKPT_VERSION, CKPT_ENDIAN};
     wr_bytes(&w, CKPT_MAGIC, 8);
     wr_bytes(&w, ver, sizeof ver);
@@ -251,29 +255,64 @@ static int ckpt_write(struct par_ckpt *c)
     }
     done_runs(c, 1, &w);
     const uint64_t h = w.h;
-    fwrite(&h, sizeof h, 1, o.f);
+    (void)fileio_put(&o, &h, sizeof h);
     if (fileio_commit(&o) != 0) return -1;
+    c->file_bytes += c->new_bytes;
+    c->new_bytes = 0;
     c->dirty = 0;
     c->last_write = now_s();
     return 0;
 }
 
-/* Write when due (force: now). A failed write is reported once; the run
- * goes on (the checkpoint is an aid, the output is what matters) and the
- * next write tries again. */
+/* Write when due (force: now): interval_s after the last write, and once
+ * the results finished since are at least CKPT_GROWTH of those in the file.
+ * Every write rewrites the whole file, so a write per chunk would cost the
+ * square of the results (a 4.7 s job unfinished after 240 s); growing the
+ * file by a factor of at least 1 + 1/CKPT_GROWTH per write bounds the bytes
+ * written to (CKPT_GROWTH + 1) x the results plus the first few chunks, and
+ * the writes to about CKPT_GROWTH + ln(chunks / CKPT_GROWTH) / ln(1 +
+ * 1/CKPT_GROWTH), at most 1/(CKPT_GROWTH + 1) of the finished work being
+ * unwritten when a rank dies. A failed write is reported once; the run goes
+ * on (the checkpoint is an aid, the output is what matters) and the next
+ * write tries again. */
+static void ckpt_failed(struct par *p, int e);
+
 static void ckpt_maybe_write(struct par *p, int force)
 {
     struct par_ckpt *c = p->ckpt;
     if (!c || !c->dirty) return;
-    if (!force && now_s() - c->last_write < c->interval_s) return;
+    if (!force && (now_s() - c->last_write < c->interval_s || c->new_bytes * CKPT_GROWTH < c->file_bytes)) return;
     if (ckpt_write(c) != 0) {
-        if (!c->write_failed)
-            fprintf(stderr, "%s: checkpoint %s: cannot write: %s (the run goes on)\n", p->prog, c->path,
-                    strerror(errno));
-        c->write_failed = 1;
+        ckpt_failed(p, errno);
     } else {
         c->write_failed = 0;
+        p->ckpt_writes++;
     }
+}
+
+/* A write of the checkpoint failed with errno e: said once (until a write
+ * succeeds again); the run goes on (the checkpoint is an aid, the output
+ * is what matters). */
+static void ckpt_failed(struct par *p, int e)
+{
+    struct par_ckpt *c = p->ckpt;
+    if (!c->write_failed)
+        fprintf(stderr, "%s: checkpoint %s: cannot write: %s (the run goes on)\n", p->prog, c->path, strerror(e));
+    c->write_failed = 1;
+    c->write_errno = e;
+}
+
+/* At the start: can the checkpoint be written at all (its directory exists
+ * and takes a file)? A temporary file created and removed; a failure said
+ * now, not only at the first write (which may never come in a short run). */
+static void ckpt_probe(struct par *p)
+{
+    struct fileio_out o;
+    if (!fileio_create(&o, p->ckpt->path, 1)) {
+        ckpt_failed(p, errno);
+        return;
+    }
+    fileio_discard(&o);
 }
 
 struct rd {
@@ -324,6 +363,7 @@ static int ckpt_load(struct par_ckpt *c, const unsigned char *buf, size_t len, c
         if (!x.data) return errmsg_fail(err, errlen, "checkpoint %s: out of memory", c->path);
         memcpy(x.data, buf + r.at, (size_t)x.bytes);
         r.at += (size_t)x.bytes;
+        c->file_bytes += x.bytes;
         if (rec_add(c, &x) != 0) {
             free(x.data);
             return errmsg_fail(err, errlen, "checkpoint %s: out of memory", c->path);
@@ -349,6 +389,11 @@ int par_checkpoint(struct par *p, const char *path, double interval_s, const cha
             c->key_len = strlen(job_key);
             c->interval_s = interval_s > 0 ? interval_s : 0;
             c->last_write = now_s();
+            /* a rank killed in a write left its temporary file */
+            const size_t n_stale = fileio_remove_stale(path);
+            if (n_stale && !p->quiet)
+                fprintf(stderr, "%s: checkpoint %s: removed %zu temporary file%s of a write that never finished\n",
+                        p->prog, path, n_stale, n_stale > 1 ? "s" : "");
             size_t len = 0;
             unsigned char *buf = fileio_read_max(path, CKPT_MAX_BYTES, &len);
             if (buf) {
@@ -362,6 +407,7 @@ int par_checkpoint(struct par *p, const char *path, double interval_s, const cha
                         path, c->n_rec);
             if (st == 0) {
                 p->ckpt = c;
+                ckpt_probe(p);
             } else {
                 ckpt_free(c);
             }
@@ -394,9 +440,9 @@ int par_finish(struct par *p, int ok)
     if (!p) return 0;
     if (p->stats)
         fprintf(stderr, "%s: rank %d of %d: %llu batches (%.3g MB of results), %llu work units here, %.3f s on them, "
-                        "%.3f s waiting for the other ranks\n",
+                        "%.3f s waiting for the other ranks; %llu checkpoint writes\n",
                 p->prog, p->rank, p->size, (unsigned long long)p->batches, 1e-6 * (double)p->result_bytes,
-                (unsigned long long)p->units_here, p->work_s, p->wait_s);
+                (unsigned long long)p->units_here, p->work_s, p->wait_s, (unsigned long long)p->ckpt_writes);
     struct par_ckpt *c = p->ckpt;
     int rc = 0;
     if (c) {
@@ -405,7 +451,11 @@ int par_finish(struct par *p, int ok)
                 fprintf(stderr, "%s: checkpoint %s: cannot remove: %s\n", p->prog, c->path, strerror(errno));
                 rc = -1;
             }
-            if (!p->quiet)
+            if (c->write_failed) /* the last write failed: nothing of this run is in it */
+                fprintf(stderr, "%s: checkpoint %s: %llu work units resumed, %llu computed; not written (%s)\n",
+                        p->prog, c->path, (unsigned long long)p->units_resumed,
+                        (unsigned long long)p->units_computed, strerror(c->write_errno));
+            else if (!p->quiet)
                 fprintf(stderr, "%s: checkpoint %s: %llu work units resumed, %llu computed; removed\n", p->prog,
                         c->path, (unsigned long long)p->units_resumed, (unsigned long long)p->units_computed);
         } else {
@@ -609,6 +659,7 @@ static void root_done(struct run *r, size_t first, size_t count)
         size_t j = i;
         while (j < first + count && !r->done[j]) r->done[j++] = 1;
         if (b->done) b->done(b->done_ctx ? b->done_ctx : b->ctx, i, j - i);
+        if (r->p->ckpt) r->p->ckpt->new_bytes += unit_off(b, j) - unit_off(b, i);
         i = j;
     }
     if (r->p->ckpt) r->p->ckpt->dirty = 1;

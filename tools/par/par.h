@@ -32,8 +32,11 @@
  * CHECKPOINT (par_checkpoint; rank 0 only). A file of finished units per
  * batch, keyed by the job key (the tool's arguments that determine the
  * results, and the library's configuration): another run's file is refused.
- * It is rewritten as units finish, at most every interval_s seconds (0:
- * after every chunk), always whole: written to a temporary file, fsync'd and
+ * It is rewritten as units finish, at most every interval_s seconds and
+ * only once the results finished since the last write are at least 1/8 of
+ * those in the file (so the writes cost in proportion to the results, about
+ * 8 + 17 ln(chunks / 8) of them with interval 0), always whole: written to
+ * a temporary file, fsync'd and
  * renamed onto the path (fileio.h), so it is never cut. A run with the same
  * arguments takes the units it holds instead of computing them (their bytes
  * are those of the first run), and par_finish removes it after the output
@@ -48,8 +51,9 @@
  * Fault injection for the tests: TRK_PAR_FAIL_AFTER=N makes rank
  * TRK_PAR_FAIL_RANK (default 0) print a line and _exit(3) once it has
  * finished N units (counted over the batches of the process).
- * TRK_PAR_STATS=1: every rank says at the end how long it worked and how
- * long it waited for the others (the balance of the assignment).
+ * TRK_PAR_STATS=1: every rank says at the end how long it worked, how
+ * long it waited for the others (the balance of the assignment) and how
+ * many checkpoint files it wrote.
  *
  * Host code: heap, stdio, OpenMP. */
 #ifndef TRK_TOOLS_PAR_H
@@ -92,6 +96,7 @@ struct par {
     int fail_rank;                /* TRK_PAR_FAIL_RANK */
     uint64_t units_here;          /* units finished by this process */
     uint64_t units_resumed, units_computed; /* over all ranks (rank 0) */
+    uint64_t ckpt_writes;         /* checkpoint files written (rank 0) */
     /* TRK_PAR_STATS=1: par_finish prints, per rank, the batches, the time
      * this rank worked on its units and the time it waited for the others */
     int stats;
@@ -177,9 +182,16 @@ int par_for_each(void *p, size_t n, size_t size, int (*fn)(void *ctx, size_t i, 
  * the file when it exists: refused (-1, message in err) when it is not a
  * checkpoint, is damaged or was written for another job key; else its units
  * are resumed by the batches that follow. interval_s: the least time between
- * two writes (0: after every chunk). 0, or -1 on every rank. */
+ * two writes (0: none; the 1/8 rule above holds at any interval). 0, or -1
+ * on every rank. */
 int par_checkpoint(struct par *p, const char *path, double interval_s, const char *job_key, char *err,
                    size_t errlen);
+
+/* The tools' --help text of --checkpoint-interval. */
+#define PAR_CHECKPOINT_INTERVAL_HELP                                        \
+    "least seconds between two writes of FILE; a write also waits for\n"   \
+    "new results of at least 1/8 of those in FILE, so that the writes\n"   \
+    "cost in proportion to the results (0: no least time)"
 
 /* par_checkpoint for a tool's command line (argv[0] its subcommand): the
  * job key from tool ("trk-sim kennedy-null") and the arguments but

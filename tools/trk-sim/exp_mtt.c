@@ -106,10 +106,10 @@
 
 /* Every counter of struct trk_scan_report (summed over a run's scans). */
 #define MTT_REPORT_COUNTERS(X)                                                                             \
-    X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_below_threshold) \
-    X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_terminated) X(n_init_refused_full) \
-    X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)       \
-    X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
+    X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_rejected_region) \
+    X(n_below_threshold) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_terminated)   \
+    X(n_init_refused_full) X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates)        \
+    X(n_candidates_dropped) X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
 
 enum {
     M_GOSPA, M_LOC, M_MISSED, M_FALSE, M_STC, M_NEVER, M_COV, M_TURN, M_TURN_RMSE, M_TURN_AFTER, M_TURN_LOST,

@@ -57,8 +57,7 @@ static void common_table(struct cli_opt t[C_N + 1], struct sim_common *com, long
                        "with the same arguments resumes from it (the same bytes); removed\n"
                        "once the output is written"),
         CLI_OPT_DOUBLE("--checkpoint-interval", &com->checkpoint_s, "S", "5", CLI_GE, 0, 1e6,
-                       "least seconds between two writes of the checkpoint (0: after every\n"
-                       "chunk of runs)"),
+                       PAR_CHECKPOINT_INTERVAL_HELP),
 #endif
         CLI_OPT_END};
     memcpy(t, c, sizeof c);

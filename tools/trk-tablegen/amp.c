@@ -66,7 +66,7 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape -
                        "trk-tablegen-mpi: write the finished table nodes to FILE; a run\n"
                        "with the same arguments resumes from it (removed once written)"),
         CLI_OPT_DOUBLE("--checkpoint-interval", &ckpt_s, "S", "5", CLI_GE, 0, 1e6,
-                       "least seconds between two writes of FILE (0: after every chunk)"),
+                       PAR_CHECKPOINT_INTERVAL_HELP),
 #endif
         CLI_OPT_ALIAS("--clutter", "--clutter-model"),
         CLI_OPT_ALIAS("--nu", "--k-shape"),

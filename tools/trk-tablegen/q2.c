@@ -142,7 +142,7 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
                        "with the same arguments resumes from it (the same bytes); removed\n"
                        "once the table is written"),
         CLI_OPT_DOUBLE("--checkpoint-interval", &ckpt_s, "S", "5", CLI_GE, 0, 1e6,
-                       "least seconds between two writes of FILE (0: after every unit)"),
+                       PAR_CHECKPOINT_INTERVAL_HELP),
 #endif
         CLI_OPT_ALIAS("--model", "--clutter-model"),
         CLI_OPT_ALIAS("--nu", "--k-shape"),
