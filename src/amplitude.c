@@ -132,6 +132,34 @@ trk_status trk_amplitude_inv_sf(const struct trk_amplitude *m, int source, trk_r
     return TRK_OK;
 }
 
+trk_status trk_amplitude_log_sf(const struct trk_amplitude *m, int source, trk_real a, trk_real *x)
+{
+    if (!m || !x || (source != TRK_AMP_CLUTTER && source != TRK_AMP_TARGET)) return TRK_E_ARG;
+    if (!isfinite(a)) return TRK_E_NAN;
+    if (!(a >= m->threshold)) return TRK_E_RANGE;
+    if (!m->tabulated) { /* a^2 = t^2 + Q x (trk_amplitude_inv_sf) */
+        const trk_real q = source == TRK_AMP_TARGET ? m->clutter_power * (1 + m->snr) : m->clutter_power;
+        const trk_real v = (a * a - m->t2) / q;
+        if (!isfinite(v)) return TRK_E_RANGE;
+        *x = v > 0 ? v : 0;
+        return TRK_OK;
+    }
+    /* a(x) increases: bracket [lo, hi] with a(lo) <= a < a(hi), then halve it */
+    trk_real lo = 0, hi = 1, ah;
+    int k = 0;
+    for (; k < 64; k++, lo = hi, hi *= 2)
+        if (trk_amplitude_inv_sf(m, source, hi, &ah) != TRK_OK || ah > a) break;
+    if (k == 64) return TRK_E_RANGE;
+    for (k = 0; k < 64; k++) {
+        const trk_real mid = lo + (hi - lo) / 2;
+        if (!(mid > lo && mid < hi)) break;
+        if (trk_amplitude_inv_sf(m, source, mid, &ah) == TRK_OK && ah <= a) lo = mid;
+        else hi = mid;
+    }
+    *x = lo;
+    return TRK_OK;
+}
+
 #define SAMPLE_BLOCK 32 /* reals on the stack: 256 bytes in double */
 
 trk_status trk_amplitude_sample_log_lr(const struct trk_amplitude *m, int source, size_t n, const trk_real *x,

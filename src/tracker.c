@@ -13,9 +13,22 @@
 #include "tracker_joint_impl.h"
 #endif
 
+/* How the scan's detections are read. */
+struct amp_use {
+    const struct trk_sensor_params *sp;
+    trk_real max_coord_m; /* the surveillance bound (params.max_coord_m) */
+    int want_db;       /* the clutter-amplitude test needs the amplitudes in dB */
+    trk_real ref_db;   /* mean clutter power (dB): the amplitudes' reference */
+};
+
+static int detection_usable(const struct trk_detection *d, const struct amp_use *au, struct trk_scan_report *rep,
+                            trk_real *llr);
+#include "tracker_thin_impl.h" /* a scan beyond capacity: uses the two above */
+
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
-static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
+static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct thin *th,
+                            struct trk_scan_report *rep);
 static void order_by_grid(struct trk_tracker *t);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 #if TRK_WITH_JOINT
@@ -35,9 +48,11 @@ static int is_live(const struct trk_track *tr)
     return tr->status == TRK_TRACK_TENTATIVE || tr->status == TRK_TRACK_CONFIRMED;
 }
 
-/* Check the scan; load its detections; per live track (confirmed ones
- * first), update (predict, gate, PDA or joint association) then step its
- * test; merge; initiate. */
+/* Check the scan; load its detections (the most useful
+ * TRK_MAX_DETECTIONS of a scan beyond capacity); per live track (confirmed
+ * ones first), update (predict, gate, PDA or joint association; with the
+ * model of what was kept when a gate was thinned) then step its test;
+ * merge; initiate. */
 trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,
                                     struct trk_scan_report *report)
 {
@@ -49,12 +64,16 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     rep.n_detections = (uint32_t)scan->n_detections;
     t->scan_no++;
     free_terminated(t);
-    load_detections(t, scan, &rep);
+    struct thin th = {0, 0, 0, 0, 0};
+    load_detections(t, scan, &th, &rep);
+    struct thin_saved saved;
+    const int model = th.in_gates && thin_apply(t, scan->sensor_id, &th, &saved) == TRK_OK;
 #if TRK_WITH_JOINT
     if (t->params.association == TRK_ASSOC_JOINT) update_joint(t, scan, &rep);
     else
 #endif
         update_each(t, scan, &rep);
+    if (model) thin_restore(t, scan->sensor_id, &saved);
     if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
     initiate(t, scan, &rep);
     t->last_time_us = scan->time_us;
@@ -69,7 +88,7 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan)
 {
     if (!t || !scan) return TRK_E_ARG;
-    if (scan->n_detections > TRK_MAX_DETECTIONS) return TRK_E_CAPACITY;
+    if (scan->n_detections > TRK_MAX_SCAN_DETECTIONS) return TRK_E_CAPACITY;
     if (scan->n_detections > 0 && !scan->detections) return TRK_E_ARG;
     if (scan->sensor_id >= t->params.n_sensors) return TRK_E_SENSOR;
     /* |time| <= 2^62 keeps every difference of two times representable */
@@ -100,42 +119,45 @@ static trk_status check_detection(const struct trk_detection *d)
     return d->has_cov ? trk_i_cov2_unpack(d->cov_m2, r) : TRK_OK;
 }
 
-/* How the scan's amplitudes are read. */
-struct amp_use {
-    const struct trk_sensor_params *sp;
-    int want_db;       /* the clutter-amplitude test needs the amplitudes in dB */
-    trk_real ref_db;   /* mean clutter power (dB): the amplitudes' reference */
-};
-
-/* Take scan detection i into the workspace, or count why not: a finite
- * position outside the surveillance bound, the checks above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs 19-20,
- * once per scan), refusing amplitudes below the threshold. */
-static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, size_t i,
-                           const struct amp_use *au, struct trk_scan_report *rep)
+/* Is detection d usable: 1 with its ln l^a in *llr, else 0 and counted
+ * why not: a finite position outside the surveillance bound, the checks
+ * above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs
+ * 19-20, once per scan), refusing amplitudes below the threshold. */
+static int detection_usable(const struct trk_detection *d, const struct amp_use *au, struct trk_scan_report *rep,
+                            trk_real *llr)
 {
-    const struct trk_detection *d = &scan->detections[i];
-    const trk_real bound = t->params.max_coord_m;
-    if (isfinite(d->x_m) && isfinite(d->y_m) && !(trk_fabs(d->x_m) <= bound && trk_fabs(d->y_m) <= bound)) {
+    if (isfinite(d->x_m) && isfinite(d->y_m) && !(trk_fabs(d->x_m) <= au->max_coord_m && trk_fabs(d->y_m) <= au->max_coord_m)) {
         rep->n_rejected_region++; /* outside the surveillance bound: no position (trk/tracker.h) */
-        return;
+        return 0;
     }
     trk_status st = check_detection(d);
     if (st != TRK_OK) {
         if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
         else if (st == TRK_E_RANGE) rep->n_rejected_amplitude++;
         else rep->n_rejected_cov++;
-        return;
+        return 0;
     }
-    trk_real llr = 0; /* positions only: l^a = 1 */
+    *llr = 0; /* positions only: l^a = 1 */
     if (au->sp->use_amplitude && d->has_amplitude) {
-        st = trk_amplitude_log_lr(&au->sp->amplitude, d->amplitude, &llr);
+        st = trk_amplitude_log_lr(&au->sp->amplitude, d->amplitude, llr);
         /* TRK_E_RANGE at or above the threshold: ln l^a beyond the real type (a Rayleigh
          * amplitude above ~1e154 sqrt(P)), a bad amplitude, not one below the threshold */
         if (st == TRK_E_RANGE && d->amplitude < trk_amplitude_threshold(&au->sp->amplitude))
             rep->n_below_threshold++;
         else if (st != TRK_OK) rep->n_rejected_amplitude++;
-        if (st != TRK_OK) return;
+        if (st != TRK_OK) return 0;
     }
+    return 1;
+}
+
+/* Take scan detection i into the workspace, or count why not
+ * (detection_usable). */
+static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, size_t i,
+                           const struct amp_use *au, struct trk_scan_report *rep)
+{
+    const struct trk_detection *d = &scan->detections[i];
+    trk_real llr;
+    if (!detection_usable(d, au, rep, &llr)) return;
     const size_t n = t->ws.n_valid++;
     t->ws.x[n] = d->x_m;
     t->ws.y[n] = d->y_m;
@@ -152,21 +174,29 @@ static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, s
 /* The valid detections into the workspace: those with the sensor's
  * covariance first [0, n_shared), in gating's 2-D index (ws.grid,
  * src/grid_impl.h), own-covariance ones after, in scan
- * order; rejections are counted. The amplitudes (dB) are then doubled (see
+ * order; rejections are counted. A scan beyond capacity loads the ones
+ * thin_select kept (their scan indices, ascending, in ws.cand), the model
+ * of what it kept into *th. The amplitudes (dB) are then doubled (see
  * clutter_look in tracker_update_impl.h). */
-static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
+static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct thin *th,
+                            struct trk_scan_report *rep)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
     const struct amp_use au = {
-        sp, t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP, /* the dB values' only user */
+        sp, t->params.max_coord_m, t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP, /* the dB values' only user */
         TRK_REAL_C(10.0) * trk_log10(sp->use_amplitude ? sp->amplitude.clutter_power : 1)};
+    const int over = scan->n_detections > TRK_MAX_DETECTIONS;
+    const size_t n_load = over ? thin_select(t, scan, &au, th, rep) : scan->n_detections;
     t->ws.n_valid = 0;
     t->ws.n_amp = 0;
     for (int own = 0; own <= 1; own++) {
-        for (size_t i = 0; i < scan->n_detections; i++)
+        for (size_t k = 0; k < n_load; k++) {
+            const size_t i = over ? t->ws.cand[k] : k;
             if ((scan->detections[i].has_cov != 0) == own) load_detection(t, scan, i, &au, rep);
+        }
         if (!own) t->ws.n_shared = t->ws.n_valid;
     }
+    rep->n_kept = (uint32_t)t->ws.n_valid;
     order_by_grid(t);
     for (size_t k = 0; k + 1 < t->ws.n_amp; k++) t->ws.amp_db[t->ws.n_amp + k] = t->ws.amp_db[k];
 }

@@ -30,6 +30,7 @@ struct slots {
 
 static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real *y, uint16_t *idx, size_t n,
                        struct trk_i_grid *g, uint16_t *end);
+static void sort_u16_by(uint16_t *a, size_t n, const uint16_t *key); /* tracker_thin_impl.h */
 static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep);
 /* What two-point pairing needs of each run of the store in one scan, run
  * k (cand_run) at [k]: dt_s the time since its scan (<= 0: it cannot pair),
@@ -82,12 +83,16 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
         /* in scan order, as the detections came (the workspace holds the
          * shared ones in gating's cells): slots and ids do not depend on
          * gating's index */
-        uint16_t *at = t->ws.u.sort.tmp; /* workspace index by scan index */
-        for (size_t i = 0; i < scan->n_detections; i++) at[i] = UINT16_MAX;
-        for (size_t k = 0; k < n; k++) at[t->ws.src[idx[k]]] = idx[k];
-        n = 0;
-        for (size_t i = 0; i < scan->n_detections; i++)
-            if (at[i] != UINT16_MAX) idx[n++] = at[i];
+        if (scan->n_detections <= TRK_MAX_DETECTIONS) {
+            uint16_t *at = t->ws.u.sort.tmp; /* workspace index by scan index */
+            for (size_t i = 0; i < scan->n_detections; i++) at[i] = UINT16_MAX;
+            for (size_t k = 0; k < n; k++) at[t->ws.src[idx[k]]] = idx[k];
+            n = 0;
+            for (size_t i = 0; i < scan->n_detections; i++)
+                if (at[i] != UINT16_MAX) idx[n++] = at[i];
+        } else { /* a thinned scan: its indices reach past the scratch */
+            sort_u16_by(idx, n, t->ws.src);
+        }
         for (size_t k = 0; k < n; k++) {
             trk_real r_j[NZ * NZ];
             detection_r(t, scan, idx[k], r_j);

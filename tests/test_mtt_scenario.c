@@ -426,7 +426,7 @@ static void capacity(int family)
         assert_true(sc.n_detections <= 10 && sc.n_detections == info.n_target + info.n_clutter);
     }
     mtt_scen_free(&small);
-    p.max_det = TRK_MAX_DETECTIONS + 1;
+    p.max_det = (size_t)TRK_MAX_SCAN_DETECTIONS + 1;
     assert_int_equal(mtt_scen_init(&small, &p, err, sizeof err), -1); /* nothing to free */
     mtt_scen_free(&s);
 }

@@ -177,9 +177,9 @@ static void test_bad_input(void **state)
     scan.time_us = SEC(5) - 1;
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_TIME);
     assert_int_equal(rep.n_detections, 0);
-    /* over capacity */
+    /* beyond the largest scan (one beyond TRK_MAX_DETECTIONS is thinned) */
     scan.time_us = SEC(6);
-    scan.n_detections = TRK_MAX_DETECTIONS + 1;
+    scan.n_detections = (size_t)TRK_MAX_SCAN_DETECTIONS + 1;
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_CAPACITY);
     /* unknown sensor */
     scan.n_detections = 1;

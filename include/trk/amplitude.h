@@ -156,6 +156,17 @@ TRK_NODISCARD trk_status trk_amplitude_log_lr(const struct trk_amplitude *m, trk
 TRK_NODISCARD trk_status trk_amplitude_inv_sf(const struct trk_amplitude *m, int source, trk_real x,
                                               trk_real *a);
 
+/* The inverse of trk_amplitude_inv_sf: x = -ln(S(a)/S(t)) >= 0 of an
+ * amplitude a >= t under the law of `source`, so that a threshold raised
+ * from t to a has P_FA = pfa e^-x (clutter) and P_D = pd e^-x (target)
+ * (Brekke eqs 41, 46-47; the survey's adaptive thresholding). Rayleigh:
+ * x = (a^2 - t^2) / Q, Q = P or P (1 + SNR); a table: its a(x) curve
+ * inverted by bisection (at most 64 doublings of the bracket and 64
+ * halvings, to the real type's resolution). TRK_E_ARG NULL pointer or bad
+ * source, TRK_E_NAN a not finite, TRK_E_RANGE a < t or beyond the curve's
+ * reach (x > 2^64). */
+TRK_NODISCARD trk_status trk_amplitude_log_sf(const struct trk_amplitude *m, int source, trk_real a, trk_real *x);
+
 /* Monte Carlo of thresholded detections (e.g. the q2 estimator of the
  * tools): log_lr[i] = ln l^a(a_i) of the amplitude a_i drawn from the law of
  * `source` by inverse CDF at x[i] (the composition of trk_amplitude_inv_sf

@@ -10,11 +10,13 @@
  * (multistatic sonar); a detection may carry its own covariance instead.
  *
  * One scan, trk_tracker_process_scan():
- *   1. validate the scan (capacity, time order, sensor id); a refused scan
- *      leaves the table untouched; free the slots of tracks terminated by the
- *      previous scan
+ *   1. validate the scan (at most TRK_MAX_SCAN_DETECTIONS, time order,
+ *      sensor id); a refused scan leaves the table untouched; free the slots
+ *      of tracks terminated by the previous scan
  *   2. validate each detection (finite position, SPD covariance); bad ones are
- *      counted in the report and skipped, the rest of the scan is processed;
+ *      counted in the report and skipped, the rest of the scan is processed
+ *      (beyond TRK_MAX_DETECTIONS valid ones: the most useful of them, see
+ *      "Scans beyond capacity" below);
  *      the valid ones with the sensor's covariance go into a 2-D index (a
  *      grid of about one detection per cell, built in O(detections))
  *   3. every live track: predict to the scan time, gate (the index's cells
@@ -61,6 +63,49 @@
  * next scan, so a consumer sees its end; its slot is then reused. A
  * replaced tentative track is the exception: its slot is taken at once
  * (trk_scan_report.n_replaced).
+ *
+ * Scans beyond capacity (docs/overcapacity.md). A scan may hold up to
+ * TRK_MAX_SCAN_DETECTIONS (65535) detections, however many the build's
+ * workspace takes: of its valid detections the scan keeps TRK_MAX_DETECTIONS
+ * and counts the rest (n_kept, n_thinned; the caller's array is only read).
+ * Rank, highest kept:
+ *   1. in a gate box: within the bounding box of some live track's gate
+ *      d2 <= gamma (its CV prediction to the scan time with the process
+ *      noise q, S = H P H' + R with the detection's R; an IMM track's
+ *      combined estimate predicted so: an approximation of its models'
+ *      gates); all live tracks while TRK_MAX_TRACKS <= TRK_MAX_DETECTIONS,
+ *      else the first TRK_MAX_DETECTIONS, confirmed first;
+ *   2. then, when the sensor has an amplitude model (use_amplitude), the
+ *      larger amplitude, detections without one after every one with an
+ *      amplitude; without a model, a hash of the position's bits (x_m, y_m):
+ *      a deterministic thinning that does not depend on the scan's order;
+ *   3. ties: the earlier in the scan.
+ * The cut (the last kept detection) falls in one class: the gate boxes' or
+ * the rest. What was kept of that class follows a known model:
+ *   amplitudes: the detection threshold raised to the last kept amplitude
+ *     a (the survey's adaptive thresholding): P_D' = S1(a), lambda' = lambda
+ *     S0(a) / S0(t) (trk_amplitude_log_sf; thin_threshold = a);
+ *   no amplitudes: a uniform thinning to the kept fraction f of the class:
+ *     lambda' = f lambda, P_D' = f P_D (a target's detection is left out as
+ *     often as a clutter one).
+ * They are reported (thin_pd, thin_clutter_density) and used where they
+ * hold: when the cut falls in the gate boxes (more gated detections than
+ * the workspace holds; thin_in_gates = 1) every track's update (PDA or
+ * joint, visibility, the tests' gate P_FA) runs with P_D', lambda' and
+ * ln l^a at the raised threshold. When it falls outside, the gates are
+ * complete at the sensor's threshold and the updates keep its P_D and
+ * lambda; initiation is unchanged either way: its odds beta l^a / lambda and
+ * P_D l^a / lambda do not depend on the threshold when the birth density
+ * counts detected births (it scales with P_D). Should P_D' or lambda'
+ * underflow (a cut beyond ~e^700 of the model's scale), the sensor's values
+ * are kept.
+ * Cost of a thinned scan, n detections, T live tracks, K =
+ * TRK_MAX_DETECTIONS: one CV prediction per track, then per detection its
+ * checks, a bisection over the boxes sorted by x and a test of the boxes
+ * within the widest half-width (at most T), and a bounded heap of K
+ * entries: O(T^2 + n (log T + T_strip + log K) + K log K), worst case
+ * (every box overlapping every detection) O(n (T + log K)); memory: the
+ * workspace only (no heap, nothing per scan detection).
  */
 #ifndef TRK_TRACKER_H
 #define TRK_TRACKER_H
@@ -124,12 +169,18 @@ struct trk_detection {
 #define TRK_MAX_COORD_M_DEFAULT TRK_REAL_C(1e8)
 #define TRK_MAX_COORD_M_LIMIT TRK_REAL_C(1e15)
 
+/* The most detections a scan may hold: 65535, so that a scan index fits
+ * the workspace's 16-bit indices. A longer scan is refused (TRK_E_CAPACITY). */
+#define TRK_MAX_SCAN_DETECTIONS 65535u
+
 struct trk_scan {
     int64_t time_us;                        /* scan time (microseconds, any epoch);
                                                never decreasing. Integer time keeps
                                                float builds free of soft double. */
     unsigned sensor_id;                     /* 0 .. n_sensors-1 */
-    size_t n_detections;                    /* <= TRK_MAX_DETECTIONS */
+    size_t n_detections;                    /* <= TRK_MAX_SCAN_DETECTIONS; beyond
+                                               TRK_MAX_DETECTIONS the scan is thinned
+                                               (see "Scans beyond capacity") */
     const struct trk_detection *detections; /* may be NULL when n_detections = 0 */
 };
 
@@ -470,6 +521,11 @@ struct trk_scan_report {
     uint32_t n_rejected_region;     /* finite position outside the surveillance bound
                                        (|x_m| or |y_m| > params.max_coord_m) */
     uint32_t n_below_threshold;     /* amplitude below the sensor's detection threshold */
+    uint32_t n_kept;                /* valid detections processed (at most TRK_MAX_DETECTIONS);
+                                       n_detections = n_kept + n_thinned + n_rejected_nonfinite
+                                       + n_rejected_cov + n_rejected_amplitude + n_below_threshold */
+    uint32_t n_thinned;             /* valid detections left out: the scan held more than
+                                       TRK_MAX_DETECTIONS ("Scans beyond capacity") */
     uint32_t n_tracks_updated;      /* live tracks predicted and updated */
     uint32_t n_tracks_hit;          /* ... with at least one detection gated */
     uint32_t n_started;             /* new tentative tracks */
@@ -495,6 +551,14 @@ struct trk_scan_report {
                                        exceeded TRK_MAX_GATED_PAIRS, or (cannot happen) the
                                        solver refused; also a track whose prediction failed
                                        (it then ends as numerical) */
+    /* a thinned scan (n_thinned > 0; all 0 otherwise): the model of what it kept */
+    uint8_t thin_in_gates;          /* 1: the cut fell inside the gate boxes (more gated
+                                       detections than TRK_MAX_DETECTIONS): the updates used
+                                       thin_pd and thin_clutter_density */
+    trk_real thin_threshold;        /* the raised threshold: the amplitude of the last kept
+                                       detection (0: thinned without amplitudes) */
+    trk_real thin_pd;               /* P_D and clutter density (per m^2) of the kept part */
+    trk_real thin_clutter_density;  /* of the class the cut fell in */
 };
 
 /* ---------------------------------------------------------------- tracker */
@@ -673,8 +737,9 @@ TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct tr
 
 /* Process one scan (see the top of this file). report may be NULL.
  * Whole-scan refusals (table untouched, report zeroed):
- * TRK_E_ARG NULL pointers, TRK_E_CAPACITY more than TRK_MAX_DETECTIONS
- * detections, TRK_E_TIME time before the previous scan, TRK_E_RANGE gap
+ * TRK_E_ARG NULL pointers, TRK_E_CAPACITY more than TRK_MAX_SCAN_DETECTIONS
+ * (65535) detections (a scan of TRK_MAX_DETECTIONS + 1 .. 65535 is
+ * thinned, never refused), TRK_E_TIME time before the previous scan, TRK_E_RANGE gap
  * longer than max_dt_s or |time_us| > 2^62, TRK_E_SENSOR unknown sensor.
  * Per-detection and per-track problems are counted in the report; the call
  * then still returns TRK_OK. */

@@ -17,7 +17,7 @@ static const char *const REASON_TEXT[LCMC_N_REASONS] = {
     "accepted",
     "message does not decode as trk.detection_scan_t (wrong type, truncated or trailing bytes)",
     "n_detections outside 0 .. MAX_DETECTIONS",
-    "n_detections above the tracker's capacity (TRK_MAX_DETECTIONS)",
+    "scan refused by the tracker for its size (beyond TRK_MAX_SCAN_DETECTIONS)",
     "a used field is NaN, infinite or beyond the tracker's real range",
     "invalid field (boolean not 0/1, negative amplitude or utime)",
     "sensor_id is not a configured sensor",
@@ -95,11 +95,6 @@ enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_se
     if (m->n_detections < 0 || m->n_detections > TRK_DETECTION_SCAN_T_MAX_DETECTIONS) {
         DETAIL("n_detections = %ld", (long)m->n_detections);
         return LCMC_COUNT;
-    }
-    if ((size_t)m->n_detections > TRK_MAX_DETECTIONS) {
-        DETAIL("n_detections = %ld > TRK_MAX_DETECTIONS = %d", (long)m->n_detections,
-               TRK_MAX_DETECTIONS);
-        return LCMC_CAPACITY;
     }
     if (m->utime < 0 || m->utime > TRK_TIME_US_MAX) { /* the tracker's range, not a gap */
         DETAIL("utime = %lld, outside 0 .. 2^62 - 1", (long long)m->utime);

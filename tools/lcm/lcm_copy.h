@@ -6,7 +6,7 @@
  * of variable-length arrays is unsafe on hostile input (TOOLCHAIN.md 3):
  * decoding a fixed-size type allocates nothing and checks one constant size.
  * This file then validates every field before anything reaches the tracker:
- * a scan whose header is bad (decode, count, capacity, utime, sensor) is
+ * a scan whose header is bad (decode, count, utime, sensor) is
  * rejected whole with one reason; a bad detection (NaN/inf or out-of-range
  * used field, boolean not 0/1, negative amplitude) is dropped alone and
  * counted by reason, the other detections are copied in order. Pure C: no
@@ -24,17 +24,21 @@
 #include "lcm/trk_track_list_t.h"
 #include "trk/tracker.h"
 
-/* Why a scan message was rejected (LCMC_OK: accepted). DECODE, COUNT,
- * CAPACITY and FIELD (utime) come from the message alone (lcmc_scan_from_*);
- * SENSOR from the configuration; TIME, GAP and OTHER from the tracker's
- * refusal of the scan. NONFINITE and FIELD are also the reasons a single
+/* Why a scan message was rejected (LCMC_OK: accepted). DECODE, COUNT and
+ * FIELD (utime) come from the message alone (lcmc_scan_from_*); SENSOR
+ * from the configuration; CAPACITY, TIME, GAP and OTHER from the tracker's
+ * refusal of the scan. A message's detections beyond the build's
+ * TRK_MAX_DETECTIONS are passed on: the tracker thins the scan
+ * (trk/tracker.h "Scans beyond capacity"); CAPACITY (a scan beyond
+ * TRK_MAX_SCAN_DETECTIONS) cannot come from a message of at most
+ * MAX_DETECTIONS. NONFINITE and FIELD are also the reasons a single
  * detection is dropped (struct lcmc_scan counts them); NONFINITE never
  * rejects a scan. */
 enum lcmc_reason {
     LCMC_OK = 0,
     LCMC_DECODE,    /* not a detection_scan_t: wrong hash, truncated, trailing bytes */
     LCMC_COUNT,     /* n_detections outside [0, MAX_DETECTIONS] */
-    LCMC_CAPACITY,  /* n_detections above this build's TRK_MAX_DETECTIONS */
+    LCMC_CAPACITY,  /* the tracker refused the scan's size (TRK_E_CAPACITY) */
     LCMC_NONFINITE, /* a detection: NaN/inf in a used field, or beyond trk_real's range */
     LCMC_FIELD,     /* utime outside 0 .. 2^62-1; a detection: boolean not 0/1,
                        negative amplitude */
@@ -53,14 +57,16 @@ const char *lcmc_reason_text(enum lcmc_reason r);
 enum lcmc_reason lcmc_reason_of_status(trk_status st);
 
 /* A validated scan in the library's structs. scan.detections points into det
- * (so the struct must not be copied by value while scan is in use). */
+ * (so the struct must not be copied by value while scan is in use). det
+ * holds a whole message (MAX_DETECTIONS, 256: ~14 KB in double), whatever
+ * the build's TRK_MAX_DETECTIONS: the tracker thins what it cannot take. */
 struct lcmc_scan {
     struct trk_scan scan;               /* the valid detections only */
     int64_t seq;
     size_t n_msg_detections;            /* n_detections of the message */
     uint32_t n_dropped_nonfinite;       /* detections dropped: LCMC_NONFINITE */
     uint32_t n_dropped_field;           /* ... LCMC_FIELD */
-    struct trk_detection det[TRK_MAX_DETECTIONS];
+    struct trk_detection det[TRK_DETECTION_SCAN_T_MAX_DETECTIONS];
 };
 
 /* Wire sizes (constant: fixed-size arrays). */

@@ -30,7 +30,7 @@ void mtt_scen_defaults(struct mtt_scen_params *p)
     p->meas_sigma_m = 5;
     p->amplitude = 1;
     p->snr_db = 13;
-    p->max_det = TRK_MAX_DETECTIONS;
+    p->max_det = TRK_MAX_SCAN_DETECTIONS;
     p->speed_min_mps = 5;
     p->speed_max_mps = 15;
     p->parallel_sep_m = 60;
@@ -601,8 +601,9 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         snprintf(err, n, "pd must be in (0, 1), sigma > 0, snr_db in [0, 40]");
         return -1;
     }
-    if (p->max_det > TRK_MAX_DETECTIONS) {
-        snprintf(err, n, "scan capacity %zu exceeds TRK_MAX_DETECTIONS = %d", p->max_det, TRK_MAX_DETECTIONS);
+    if (p->max_det > TRK_MAX_SCAN_DETECTIONS) {
+        snprintf(err, n, "scan capacity %zu exceeds TRK_MAX_SCAN_DETECTIONS = %u", p->max_det,
+                 TRK_MAX_SCAN_DETECTIONS);
         return -1;
     }
     if (!(p->speed_min_mps > 0) || !(p->speed_max_mps >= p->speed_min_mps) || !(p->speed_max_mps <= 1000) ||
@@ -627,7 +628,7 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         return -1;
     }
     s->p = *p;
-    if (s->p.max_det == 0) s->p.max_det = TRK_MAX_DETECTIONS;
+    if (s->p.max_det == 0) s->p.max_det = TRK_MAX_SCAN_DETECTIONS;
     /* P_D = pfa^(1 / (1 + SNR)) (Swerling I in Rayleigh): pfa = pd^(1 + SNR) */
     const double d = pow(10.0, p->snr_db / 10);
     s->pfa = pow(p->pd, 1 + d);

@@ -165,7 +165,8 @@
  * (amp_sample.h), the threshold's P_FA chosen so that P_D = S1(t) = pd:
  * pfa = pd^(1 + SNR). Clutter: exactly clutter_count detections uniform over
  * the region (Rayleigh amplitudes above the threshold), capped so that the
- * scan never holds more than max_det (<= TRK_MAX_DETECTIONS) detections:
+ * scan never holds more than max_det (<= TRK_MAX_SCAN_DETECTIONS; the
+ * tracker thins a scan beyond TRK_MAX_DETECTIONS) nor the caller's max:
  * targets' first, then at most max_det - n_target clutter ones
  * (n_clutter_capped counts the clutter left out). The scan is shuffled.
  *
@@ -222,7 +223,7 @@ struct mtt_scen_params {
     double meas_sigma_m;        /* position noise per axis, > 0 */
     int amplitude;              /* 1: Rayleigh amplitudes (target snr_db), 0: none */
     double snr_db;              /* target SNR, [0, 40] */
-    size_t max_det;             /* scan capacity, 1 .. TRK_MAX_DETECTIONS (0: TRK_MAX_DETECTIONS) */
+    size_t max_det;             /* scan capacity, 1 .. TRK_MAX_SCAN_DETECTIONS (0: that) */
     double speed_min_mps, speed_max_mps; /* 0 < min <= max <= 1000 */
     double parallel_sep_m;      /* (0, 500) */
     double turn_deg;            /* (0, 360]: up to a full circle */
@@ -234,7 +235,7 @@ struct mtt_scen_params {
 };
 
 /* Defaults: the transit family, seed 1, 200 scans of 4 s, 3 km region, margin 50 m, pd 0.8,
- * sigma 5 m, amplitudes at 13 dB, capacity TRK_MAX_DETECTIONS, speeds
+ * sigma 5 m, amplitudes at 13 dB, capacity TRK_MAX_SCAN_DETECTIONS, speeds
  * 5-15 m/s, pair 60 m apart, a 90 deg turn at 3 deg/s, transit targets
  * present >= 25 scans, gaps of 1-10 scans, no acceleration (accel_s 60). */
 void mtt_scen_defaults(struct mtt_scen_params *p);
@@ -295,8 +296,8 @@ struct mtt_scan_info {
 };
 
 /* Scan k (0 <= k < n_scans) with clutter_count clutter detections (>= 0)
- * into det[0 .. max) and *scan (scan->detections = det). max must be at
- * least the scan capacity p.max_det. origin (may be NULL; max entries):
+ * into det[0 .. max) and *scan (scan->detections = det): at most
+ * min(max, p.max_det) detections. origin (may be NULL; max entries):
  * the target index of each detection, -1 for clutter. *info may be NULL. */
 void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
                    size_t max, long *origin, struct trk_scan *scan, struct mtt_scan_info *info);

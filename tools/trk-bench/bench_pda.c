@@ -22,6 +22,12 @@
  *   scan_64x256_imm   (TRK_WITH_IMM builds) scan_64x256_cv, the default scans
  *                     of this build, against scan_64x256_imm3, every track an
  *                     IMM track of three models, same run, and their ratio
+ *   scan_64x1024      a scan of 4 x capacity: the scans of scan_64x256 with
+ *                     768 more clutter detections over the area (960, the
+ *                     sensor's density to match), thinned to the build's 256
+ *                     (trk/tracker.h "Scans beyond capacity"), alternating
+ *                     with scan_64x256 in the same run; the ratio
+ *                     scan_64x1024_vs_scan_64x256
  *   candidates_full   ns per scan of the initiation stage at full scan capacity
  *                     (TRK_MAX_DETECTIONS unexplained detections) and the store's bytes
  *   sizeof_tracker    bytes of struct trk_tracker at this build's capacities */
@@ -157,10 +163,11 @@ TRK_BENCH(pda_update)
 #define N_SCANS 64
 #define N_TGT 64
 #define N_DET 256
+#define N_DET_OVER (4 * N_DET) /* scan_64x1024 */
 
 struct scan_job {
     struct trk_tracker tk;
-    struct trk_detection det[N_SCANS][N_DET];
+    struct trk_detection det[N_SCANS][N_DET_OVER]; /* the first N_DET: scan_64x256's */
     struct trk_scan scan[N_SCANS];
     struct trk_scan_report rep;
     double n_updated; /* track updates in the timed scans (all repetitions) */
@@ -168,7 +175,10 @@ struct scan_job {
 
 /* The scans' configurations: the defaults (joint association), the same
  * with the per-track PDA, and the M/N path. */
-enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM };
+enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER };
+
+/* Detections per scan of a configuration. */
+static size_t scan_n_det(enum scan_cfg cfg) { return cfg == SCAN_OVER ? N_DET_OVER : N_DET; }
 
 static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
 {
@@ -181,7 +191,7 @@ static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
     }
     if (cfg == SCAN_PDA) p->association = TRK_ASSOC_PDA;
     p->sensor[0].pd = TRK_REAL_C(0.9);
-    p->sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
+    p->sensor[0].clutter_density_per_m2 = (trk_real)((double)(scan_n_det(cfg) - N_TGT) / (1200.0 * 1200.0));
     p->process_noise_q = TRK_REAL_C(0.01);
 #if TRK_WITH_IMM
     if (cfg == SCAN_IMM && trk_tracker_imm_params(p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)) != TRK_OK) /* turns at 2 deg/s */
@@ -217,13 +227,20 @@ static struct scan_job *scan_job_new(void)
         j->scan[k].n_detections = N_DET;
         j->scan[k].detections = j->det[k];
     }
+    for (int k = 0; k < N_SCANS; k++) /* scan_64x1024's extra clutter, after: the rest unchanged */
+        for (int i = N_DET; i < N_DET_OVER; i++) {
+            struct trk_detection *d = &j->det[k][i];
+            memset(d, 0, sizeof *d);
+            d->x_m = (trk_real)(-100 + 1200 * urand() + k);
+            d->y_m = (trk_real)(-100 + 1200 * urand() + k);
+        }
     return j;
 }
 
 /* One repetition: init, warm up (targets first, so all 64 tracks exist),
  * then the timed full scans; ns per scan, or -1. *n_conf: confirmed tracks
  * at the end. */
-static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, int *n_conf)
+static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, size_t n_det, int *n_conf)
 {
     if (trk_tracker_init(&j->tk, p) != TRK_OK) return -1;
     for (int k = 0; k < 4; k++) {
@@ -236,6 +253,7 @@ static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, i
     double t0 = bench_now_ns();
     for (int k = 4; k < N_SCANS; k++) {
         j->scan[k].time_us = (int64_t)k * 1000000;
+        j->scan[k].n_detections = n_det;
         if (trk_tracker_process_scan(&j->tk, &j->scan[k], &j->rep) != TRK_OK) return -1;
         j->n_updated += j->rep.n_tracks_updated;
     }
@@ -265,7 +283,7 @@ static void scan_bench(const char *const *names, const enum scan_cfg *cfg, int n
             struct trk_tracker_params p;
             scan_params(cfg[c], &p);
             j->n_updated = 0;
-            const double per = scan_rep(j, &p, &n_conf[c]);
+            const double per = scan_rep(j, &p, scan_n_det(cfg[c]), &n_conf[c]);
             if (per >= 0 && per < best[c]) best[c] = per;
             updated[c] += j->n_updated;
         }
@@ -323,6 +341,14 @@ TRK_BENCH(scan_64x256_instr)
     BENCH_INSTR_STOP();
     if (ok) bench_print("scan_64x256_instr_scans", N_SCANS - 4, "scans");
     free(j);
+}
+
+/* A scan of 4 x capacity against scan_64x256, same run. */
+TRK_BENCH(scan_64x1024)
+{
+    static const char *const names[] = {"scan_64x256", "scan_64x1024"};
+    static const enum scan_cfg cfg[] = {SCAN_DEFAULT, SCAN_OVER};
+    scan_bench(names, cfg, 2);
 }
 
 TRK_BENCH(scan_64x256_mn_kn)

@@ -24,8 +24,9 @@ static void more_help(FILE *f)
     fprintf(f, "\n");
     tcfg_help(f);
     fprintf(f,
-            "\nThe tracker is built for %d tracks and %d detections per scan; the messages\n"
-            "carry at most %d detections and %d tracks.\n",
+            "\nThe tracker is built for %d tracks and %d detections per scan (a larger scan is\n"
+            "thinned to the most useful ones, never refused); the messages carry at most %d\n"
+            "detections and %d tracks.\n",
             TRK_MAX_TRACKS, TRK_MAX_DETECTIONS, TRK_DETECTION_SCAN_T_MAX_DETECTIONS,
             TRK_TRACK_LIST_T_MAX_TRACKS);
 }

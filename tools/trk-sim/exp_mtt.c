@@ -10,8 +10,11 @@
  * reduced to keep each path inside; the scenario the peer was measured on);
  * 3 km x 3 km, a scan every 4 s, P_D 0.8, sigma 5 m, Rayleigh amplitudes,
  * seeds S, S+1, ..., S+seeds-1, each at every clutter count of the list
- * (exactly N uniform clutter detections per scan, capped so that a scan never
- * exceeds TRK_MAX_DETECTIONS) through each configuration (common random
+ * (exactly N uniform clutter detections per scan; --clutter-sweep: 0 to 4 x
+ * TRK_MAX_DETECTIONS; every detection goes to the tracker, which thins a
+ * scan beyond its capacity: kept, thinned and refused counts per level;
+ * --over-capacity refuse / cap for the behaviours before) through each
+ * configuration (common random
  * numbers: every configuration and clutter level sees the same targets'
  * detections, and a level's clutter is the first N points of the largest's):
  *   new  trk_tracker_default_params() with the scenario's sensor
@@ -48,6 +51,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,16 +111,17 @@
 /* Every counter of struct trk_scan_report (summed over a run's scans). */
 #define MTT_REPORT_COUNTERS(X)                                                                             \
     X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_rejected_region) \
-    X(n_below_threshold) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_terminated)   \
-    X(n_init_refused_full) X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates)        \
-    X(n_candidates_dropped) X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
+    X(n_below_threshold) \
+    X(n_kept) X(n_thinned) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_terminated) X(n_init_refused_full) \
+    X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)       \
+    X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
 
 enum {
     M_GOSPA, M_LOC, M_MISSED, M_FALSE, M_STC, M_NEVER, M_COV, M_TURN, M_TURN_RMSE, M_TURN_AFTER, M_TURN_LOST,
     M_ACC, M_ACC_RMSE, M_ACC_AFTER, M_ACC_LOST, M_PAR, M_CROSS,
     M_CROSS_IDSW, M_CROSS_DUP, M_CROSS_COAL, M_PAR_IDSW, M_PAR_DUP, M_PAR_COAL, M_FALSE_TRK,
     M_FALSE_TS, M_DUP_TS, M_FRAG, M_IDSW, M_RMSE, M_CPU, M_CONF, M_LIVE, M_FULL, M_CLUTTER, M_CAPPED,
-    M_TARGETS, M_PRESENT,
+    M_TARGETS, M_PRESENT, M_KEPT, M_THINNED, M_THIN_SCANS, M_THIN_GATES, M_REFUSED,
 #define X(f) M_REP_##f,
     MTT_REPORT_COUNTERS(X)
 #undef X
@@ -134,7 +139,8 @@ static const char *const metric_name[M_N] = {
     "false_track_scans_per_100", "duplicate_track_scans_per_100", "fragmentations", "id_switches", "rmse_m",
     "cpu_us_per_scan", "confirmed_per_scan", "live_per_scan", "table_full_frac", "clutter_per_scan",
     "clutter_capped_scans",
-    "targets_per_run", "targets_present_per_scan",
+    "targets_per_run", "targets_present_per_scan", "kept_per_scan", "thinned_per_scan", "thinned_scans",
+    "thinned_in_gates_scans", "refused_scans",
 #define X(f) "rep_" #f,
     MTT_REPORT_COUNTERS(X)
 #undef X
@@ -295,10 +301,19 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
 
 /* ---------------------------------------------------------------- one run */
 
+/* What a scan beyond TRK_MAX_DETECTIONS becomes (--over-capacity): the
+ * tracker thins it (the library's behaviour), or, for comparison, the
+ * behaviours before: the library refused it (TRK_E_CAPACITY: the tracker
+ * does not see the scan), or the tool cut its clutter to fit. */
+enum { OVER_THIN, OVER_REFUSE, OVER_CAP };
+static const int over_values[] = {OVER_THIN, OVER_REFUSE, OVER_CAP};
+
+/* One thread's buffers: a scan of up to TRK_MAX_SCAN_DETECTIONS (the
+ * library's bound; 4 MB in double, allocated once per thread). */
 struct run_ws {
     struct trk_tracker *tk;
-    struct trk_detection det[TRK_MAX_DETECTIONS];
-    long origin[TRK_MAX_DETECTIONS];
+    struct trk_detection det[TRK_MAX_SCAN_DETECTIONS];
+    long origin[TRK_MAX_SCAN_DETECTIONS];
     struct mtt_obj est[TRK_MAX_TRACKS];
 };
 
@@ -396,8 +411,8 @@ static void man_result(const struct man_stats *ms, double *v, int m0)
     v[m0 + 3] = ms->lost;
 }
 
-static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk_tracker_params *tp, double c_m,
-                   struct run_ws *ws, struct run_result *res)
+static int run_one(const struct mtt_scenario *sc, long clutter, int over, const struct trk_tracker_params *tp,
+                   double c_m, struct run_ws *ws, struct run_result *res)
 {
     struct pair_stats cross = {{-1, -1}, 0, 0, 0, 0}, par = {{-1, -1}, 0, 0, 0, 0};
     struct mtt_eval ev;
@@ -408,23 +423,32 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
     if (trk_tracker_init(ws->tk, tp) != TRK_OK) return -1;
     const long ns = sc->p.n_scans;
     double cpu = 0, rep_sum[N_REP] = {0};
-    long conf_sum = 0, live_sum = 0, full = 0, clutter_sum = 0, capped = 0;
+    long conf_sum = 0, live_sum = 0, full = 0, clutter_sum = 0, capped = 0, thin_scans = 0, thin_gates = 0;
+    long refused = 0;
     long par_n = 0, par_hit = 0, cross_n = 0, cross_hit = 0, present_sum = 0;
     int rc = 0;
     for (long k = 0; k < ns && rc == 0; k++) {
         struct trk_scan scan;
         struct mtt_scan_info info;
-        mtt_scen_scan(sc, k, clutter, ws->det, TRK_MAX_DETECTIONS, ws->origin, &scan, &info);
+        mtt_scen_scan(sc, k, clutter, ws->det, over == OVER_CAP ? TRK_MAX_DETECTIONS : TRK_MAX_SCAN_DETECTIONS,
+                      ws->origin, &scan, &info);
         clutter_sum += (long)info.n_clutter;
         capped += info.n_clutter_capped > 0;
-        struct trk_scan_report rep;
-        const double t0 = thread_cpu_s();
-        const trk_status st = trk_tracker_process_scan(ws->tk, &scan, &rep);
-        cpu += thread_cpu_s() - t0;
-        if (st != TRK_OK) {
+        struct trk_scan_report rep = {0};
+        trk_status st = TRK_E_CAPACITY;
+        if (over != OVER_REFUSE || scan.n_detections <= TRK_MAX_DETECTIONS) {
+            const double t0 = thread_cpu_s();
+            st = trk_tracker_process_scan(ws->tk, &scan, &rep);
+            cpu += thread_cpu_s() - t0;
+        }
+        if (st == TRK_E_CAPACITY) { /* refused: the table as before the scan */
+            refused++;
+        } else if (st != TRK_OK) {
             rc = -1;
             break;
         }
+        thin_scans += rep.n_thinned > 0;
+        thin_gates += rep.thin_in_gates;
         {
             int j = 0;
 #define X(f) rep_sum[j++] += (double)rep.f;
@@ -524,6 +548,11 @@ static int run_one(const struct mtt_scenario *sc, long clutter, const struct trk
         v[M_CAPPED] = (double)capped;
         v[M_TARGETS] = (double)su.n_targets;
         v[M_PRESENT] = (double)present_sum / dn;
+        v[M_KEPT] = rep_sum[M_REP_n_kept - M_REP_FIRST] / dn;
+        v[M_THINNED] = rep_sum[M_REP_n_thinned - M_REP_FIRST] / dn;
+        v[M_THIN_SCANS] = (double)thin_scans;
+        v[M_THIN_GATES] = (double)thin_gates;
+        v[M_REFUSED] = (double)refused;
         for (int j = 0; j < N_REP; j++) v[M_REP_FIRST + j] = rep_sum[j];
     }
     mtt_eval_free(&ev);
@@ -611,6 +640,12 @@ static void print_tables(const struct mtt_row *rows, int n)
         {"conf", M_CONF, 6, 1, 0, 1},                {"refused", M_REP_n_init_refused_full, 9, 0, 0, 1},
         {"replaced", M_REP_n_replaced, 8, 0, 0, 1},  {"merged", M_REP_n_merged, 7, 0, 0, 1},
     };
+    static const struct column capacity[] = {
+        {"dets/scan", M_CLUTTER, 9, 1, 0, 1},        {"kept/scan", M_KEPT, 9, 1, 0, 1},
+        {"thinned/scan", M_THINNED, 12, 1, 0, 1},    {"thinned scans", M_THIN_SCANS, 13, 1, 0, 1},
+        {"in gates", M_THIN_GATES, 8, 1, 0, 1},      {"refused scans", M_REFUSED, 13, 1, 0, 1},
+        {"capped scans", M_CAPPED, 12, 1, 0, 1},
+    };
     static const struct column pairs[] = {
         {"X both", M_CROSS, 7, 2, 0, 1},        {"X idsw", M_CROSS_IDSW, 7, 2, 0, 1},
         {"X dup%", M_CROSS_DUP, 7, 1, 0, 1},    {"X coal%", M_CROSS_COAL, 7, 1, 0, 1},
@@ -632,6 +667,10 @@ static void print_tables(const struct mtt_row *rows, int n)
     print_table(rows, n, accuracy, N_COLS(accuracy));
     printf("-- track management and cost (per run of %ld scans unless noted)\n", n ? rows[0].scans : 0L);
     print_table(rows, n, management, N_COLS(management));
+    printf("-- scans beyond capacity (TRK_MAX_DETECTIONS %d): clutter, kept and thinned detections per scan,\n"
+           "   per run: scans thinned (in gates: the cut inside the gate boxes), refused, clutter capped\n",
+           TRK_MAX_DETECTIONS);
+    print_table(rows, n, capacity, N_COLS(capacity));
     printf("-- the crossing (X) and the parallel pair: both held (fraction of scans), identity switches per run,\n"
            "   duplicate target-scans and coalesced scans per 100 (X: from %d scans before to %d after)\n",
            CROSS_WINDOW, CROSS_AFTER);
@@ -813,6 +852,7 @@ static const int family_values[] = {MTT_FAMILY_TRANSIT, MTT_FAMILY_FIXED};
 struct mtt_units {
     const struct mtt_scenario *sc;
     const double *levels;
+    int over;
     const struct trk_tracker_params *tp;
     double c_m;
     long nl, nc;
@@ -831,7 +871,7 @@ static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
         *wsp = ws;
     }
     const long i = (long)j / (u->nl * u->nc), l = ((long)j / u->nc) % u->nl, c = (long)j % u->nc;
-    return run_one(&u->sc[i], (long)u->levels[l], &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
+    return run_one(&u->sc[i], (long)u->levels[l], u->over, &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
 }
 
 static void mtt_ws_free(void *ctx, void *wsp)
@@ -847,7 +887,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     long scans, seeds;
     double levels[MAX_LEVELS], c_m, pd, snr_db, q, v_min, v_max, par_sep, turn_rate, turn_deg, accel, accel_s;
     struct imm_opts im;
-    int n_levels, no_amp = 0, family;
+    int n_levels, no_amp = 0, family, over, sweep = 0;
     const char *configs;
     struct mtt_settings set = {{NULL}, 0};
     const struct sim_opt opts[] = {
@@ -862,8 +902,17 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                      "scenarios of the family: seeds S .. S+N-1 (S = --seed)"),
         SIM_OPT_LIST("--clutter-count", levels, &n_levels, MAX_LEVELS, "0,20,50,100,150,200,256", SIM_IN, 0,
                      100000,
-                     "clutter detections per scan (exactly N, uniform over the region),\n"
-                     "each capped at TRK_MAX_DETECTIONS minus the scan's target detections"),
+                     "clutter detections per scan (exactly N, uniform over the region;\n"
+                     "a scan beyond TRK_MAX_DETECTIONS is thinned by the tracker)"),
+        SIM_OPT_FLAG("--clutter-sweep", &sweep,
+                     "clutter levels from 0 to 4 x TRK_MAX_DETECTIONS (0, 1/8, 1/4,\n"
+                     "1/2, 1, 2, 3, 4 x), in place of --clutter-count"),
+        SIM_OPT_CHOICE("--over-capacity", &over, "thin|refuse|cap", over_values, "thin",
+                       "a scan beyond TRK_MAX_DETECTIONS: thin, the tracker keeps the\n"
+                       "most useful detections (trk/tracker.h); for comparison, the\n"
+                       "behaviours before: refuse, the library refused the scan\n"
+                       "(TRK_E_CAPACITY; counted, the run goes on), cap, the clutter\n"
+                       "cut to TRK_MAX_DETECTIONS minus the target detections"),
         SIM_OPT_STRING("--config", &configs, "LIST", "new,pda,old",
                        "configurations: new (trk_tracker_default_params: joint\n"
                        "association), pda (the same with association = pda: each\n"
@@ -943,15 +992,20 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         fprintf(stderr, "trk-sim mtt: %s\n", err);
         return 2;
     }
+    if (sweep) {
+        static const double frac[] = {0, 0.125, 0.25, 0.5, 1, 2, 3, 4};
+        n_levels = (int)(sizeof frac / sizeof frac[0]);
+        for (int l = 0; l < n_levels; l++) levels[l] = floor(frac[l] * TRK_MAX_DETECTIONS);
+    }
     for (int l = 0; l < n_levels; l++)
         if (levels[l] != floor(levels[l])) {
             fprintf(stderr, "trk-sim mtt: --clutter-count: %g is not a whole number\n", levels[l]);
             return 2;
         }
-    if (sizeof(struct trk_scan_report) != (size_t)N_REP * sizeof(uint32_t))
-        fprintf(stderr, "trk-sim mtt: note: struct trk_scan_report holds %zu bytes, the %d counters listed "
+    if (offsetof(struct trk_scan_report, thin_in_gates) != (size_t)N_REP * sizeof(uint32_t))
+        fprintf(stderr, "trk-sim mtt: note: struct trk_scan_report holds %zu bytes of counters, the %d listed "
                         "here %zu: update MTT_REPORT_COUNTERS in %s\n",
-                sizeof(struct trk_scan_report), N_REP, (size_t)N_REP * sizeof(uint32_t), __FILE__);
+                offsetof(struct trk_scan_report, thin_in_gates), N_REP, (size_t)N_REP * sizeof(uint32_t), __FILE__);
     if (v_min > v_max) {
         fprintf(stderr, "trk-sim mtt: --speed-min %g exceeds --speed-max %g\n", v_min, v_max);
         return 2;
@@ -1010,7 +1064,8 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     if (!tp || !rts) return 1;
     for (int l = 0; l < nl; l++)
         for (int c = 0; c < nc; c++) {
-            const double n_eff = fmin(levels[l], (double)TRK_MAX_DETECTIONS);
+            /* the clutter density the tracker sees: all of it, but what a cut left */
+            const double n_eff = over == OVER_CAP ? fmin(levels[l], (double)TRK_MAX_DETECTIONS) : levels[l];
             if (build_params(kinds[c], &sc[0], n_eff / area, q, &im, &set, &tp[l * nc + c], &rts[l * nc + c], err,
                              sizeof err) != 0) {
                 fprintf(stderr, "trk-sim mtt: %s (see trk-sim mtt --help)\n", err);
@@ -1064,8 +1119,10 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                sc[0].pfa, sc[0].amp_tg.pd);
     printf("   clutter per scan:");
     for (int l = 0; l < nl; l++) printf(" %g", levels[l]);
-    printf(" (a scan holds at most %d detections: the clutter is cut to %d minus the target detections)\n",
-           TRK_MAX_DETECTIONS, TRK_MAX_DETECTIONS);
+    printf(over == OVER_THIN     ? " (a scan beyond TRK_MAX_DETECTIONS = %d is thinned by the tracker)\n"
+           : over == OVER_REFUSE ? " (a scan beyond TRK_MAX_DETECTIONS = %d is refused, as before thinning)\n"
+                                 : " (a scan holds at most TRK_MAX_DETECTIONS = %d: the clutter is cut to fit)\n",
+           TRK_MAX_DETECTIONS);
     if (set.n) {
         printf("   settings for every configuration:");
         for (int i = 0; i < set.n; i++) printf(" %s", set.kv[i]);
@@ -1073,7 +1130,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     }
     fflush(stdout);
     /* every (seed, level, configuration) a work unit */
-    struct mtt_units mu = {sc, levels, tp, c_m, nl, nc};
+    struct mtt_units mu = {sc, levels, over, tp, c_m, nl, nc};
     double wall;
     const int urc = sim_run_units(&com, "mtt", (size_t)n_jobs, sizeof *res, 1, mtt_unit, mtt_ws_free, &mu, res, &wall,
                                   NULL);

@@ -1,0 +1,294 @@
+/* tracker_thin_impl.h (private) - a scan beyond the workspace's capacity
+ * (trk/tracker.h "Scans beyond capacity", docs/overcapacity.md): which
+ * TRK_MAX_DETECTIONS of its valid detections the scan keeps, and the
+ * sensor's P_D and clutter density that hold for what it kept.
+ *
+ * One pass over the scan, fixed memory (the workspace before the
+ * detections are loaded): each valid detection gets a rank (in a live
+ * track's gate box first; then its amplitude, or without amplitudes a hash
+ * of its position) and a bounded min-heap of TRK_MAX_DETECTIONS entries
+ * keeps the highest ranks (ws.w the keys, ws.cand the scan indices, ws.used
+ * the in-a-gate flags); the heap's root is the last kept detection. The
+ * kept indices are then sorted, so that the workspace is loaded in scan
+ * order as for a scan within capacity.
+ *
+ * Included by tracker.c only, after tracker_update_impl.h (predict). */
+#ifndef TRK_TRACKER_THIN_IMPL_H
+#define TRK_TRACKER_THIN_IMPL_H
+
+#include <string.h>
+
+#include "tracker_impl.h"
+#include "tracker_update_impl.h"
+
+/* The live tracks whose gate boxes rank detections: all of them while
+ * TRK_MAX_TRACKS <= TRK_MAX_DETECTIONS (the boxes take 4 reals each of
+ * ws.u.set.r_own, 4 TRK_MAX_DETECTIONS reals), else the first this many in
+ * slot order, confirmed ones first. */
+#define THIN_MAX_BOXES (TRK_MAX_TRACKS < TRK_MAX_DETECTIONS ? TRK_MAX_TRACKS : TRK_MAX_DETECTIONS)
+
+/* The rank of a detection without an amplitude, from its position's bits:
+ * 23 bits (exact in float), the same wherever it stands in the scan. */
+static uint32_t thin_hash(const struct trk_detection *d)
+{
+    unsigned char b[2 * sizeof(trk_real)];
+    uint32_t h = 2166136261u; /* FNV-1a over the bytes of x_m, y_m, then a final mix */
+    memcpy(b, &d->x_m, sizeof(trk_real));
+    memcpy(b + sizeof(trk_real), &d->y_m, sizeof(trk_real));
+    for (size_t k = 0; k < sizeof b; k++) h = (h ^ b[k]) * 16777619u;
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    return h >> 9;
+}
+
+/* Is heap entry a ranked below entry b: not in a gate below in one, then
+ * the smaller key, then the later in the scan? */
+static int thin_below(const struct trk_tracker *t, size_t a, size_t b)
+{
+    if (t->ws.used[a] != t->ws.used[b]) return t->ws.used[a] < t->ws.used[b];
+    if (t->ws.w[a] != t->ws.w[b]) return t->ws.w[a] < t->ws.w[b];
+    return t->ws.cand[a] > t->ws.cand[b];
+}
+
+static void thin_swap(struct trk_tracker *t, size_t a, size_t b)
+{
+    const trk_real w = t->ws.w[a];
+    const uint16_t c = t->ws.cand[a];
+    const uint8_t u = t->ws.used[a];
+    t->ws.w[a] = t->ws.w[b];
+    t->ws.cand[a] = t->ws.cand[b];
+    t->ws.used[a] = t->ws.used[b];
+    t->ws.w[b] = w;
+    t->ws.cand[b] = c;
+    t->ws.used[b] = u;
+}
+
+/* The min-heap [0, n) after its root changed: sift it down. */
+static void thin_sift_down(struct trk_tracker *t, size_t n)
+{
+    for (size_t i = 0;;) {
+        size_t m = i;
+        const size_t l = 2 * i + 1, r = l + 1;
+        if (l < n && thin_below(t, l, m)) m = l;
+        if (r < n && thin_below(t, r, m)) m = r;
+        if (m == i) return;
+        thin_swap(t, i, m);
+        i = m;
+    }
+}
+
+/* a[0, n) sorted ascending by key[a[i]] (key NULL: by a[i]), in place:
+ * heapsort, O(n log n), no scratch. */
+static void sort_u16_by(uint16_t *a, size_t n, const uint16_t *key)
+{
+#define SORT_KEY(i) (key ? key[a[i]] : a[i])
+    for (size_t end = n, start = n / 2;;) {
+        if (start > 0) {
+            start--;
+        } else {
+            if (end <= 1) break;
+            end--;
+            const uint16_t v = a[0];
+            a[0] = a[end];
+            a[end] = v;
+        }
+        for (size_t i = start;;) { /* sift a[i] down in the max-heap [0, end) */
+            size_t m = i;
+            const size_t l = 2 * i + 1, r = l + 1;
+            if (l < end && SORT_KEY(l) > SORT_KEY(m)) m = l;
+            if (r < end && SORT_KEY(r) > SORT_KEY(m)) m = r;
+            if (m == i) break;
+            const uint16_t v = a[i];
+            a[i] = a[m];
+            a[m] = v;
+            i = m;
+        }
+    }
+#undef SORT_KEY
+}
+
+/* The gate boxes: per live track its predicted position and position
+ * variances H P H' (without R), sorted by x: n of them at b[4 k ..]
+ * (x, y, pxx, pyy). The largest pxx and pyy into *pmax. A track whose
+ * prediction fails has no box (its update will end it). */
+static size_t thin_boxes(struct trk_tracker *t, const struct trk_scan *scan, trk_real *b, trk_real pmax[2])
+{
+    size_t n = 0;
+    pmax[0] = pmax[1] = 0;
+    for (int confirmed = 1; confirmed >= 0; confirmed--)
+        for (size_t i = 0; i < TRK_MAX_TRACKS && n < THIN_MAX_BOXES; i++) {
+            const struct trk_track *tr = &t->track[i];
+            struct pred pr;
+            if (tr->status != (confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE)) continue;
+            if (predict(t, tr, scan, &pr) != TRK_OK) continue;
+            const trk_real v[4] = {pr.x[X], pr.x[Y], pr.p[P(X, X)], pr.p[P(Y, Y)]};
+            size_t k = n++; /* insertion by x: the boxes are few */
+            for (; k > 0 && b[4 * (k - 1)] > v[0]; k--) memcpy(b + 4 * k, b + 4 * (k - 1), 4 * sizeof *b);
+            memcpy(b + 4 * k, v, sizeof v);
+            if (v[2] > pmax[0]) pmax[0] = v[2];
+            if (v[3] > pmax[1]) pmax[1] = v[3];
+        }
+    return n;
+}
+
+/* Is detection d (covariance r) in a box |dx| <= sqrt(gamma (pxx + rxx)),
+ * |dy| likewise (the bounding box of the gate d2 <= gamma)? The boxes of
+ * x within the largest half width, by bisection on the sorted x. */
+static int thin_in_box(const trk_real *b, size_t n, const trk_real pmax[2], trk_real gamma,
+                       const struct trk_detection *d, const trk_real *r)
+{
+    const trk_real rxx = d->has_cov ? d->cov_m2[TRK_COV2_XX] : r[S(ZX, ZX)];
+    const trk_real ryy = d->has_cov ? d->cov_m2[TRK_COV2_YY] : r[S(ZY, ZY)];
+    const trk_real wmax = trk_sqrt(gamma * (pmax[0] + rxx)) * (1 + 16 * TRK_REAL_EPS);
+    size_t lo = 0, hi = n; /* the first box of x >= d->x_m - wmax */
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (b[4 * mid] < d->x_m - wmax) lo = mid + 1;
+        else hi = mid;
+    }
+    for (size_t k = lo; k < n && b[4 * k] <= d->x_m + wmax; k++) {
+        const trk_real dx = d->x_m - b[4 * k], dy = d->y_m - b[4 * k + 1];
+        if (dx * dx <= gamma * (b[4 * k + 2] + rxx) && dy * dy <= gamma * (b[4 * k + 3] + ryy)) return 1;
+    }
+    return 0;
+}
+
+/* What a thinned scan's selection found (when thinned is 1). */
+struct thin {
+    int thinned;          /* valid detections were left out */
+    int in_gates;         /* ... some of them in a gate box (the cut fell there) */
+    trk_real pd;          /* P_D and */
+    trk_real lambda;      /* clutter density at what was kept */
+    trk_real dl;          /* ln l^a at the raised threshold minus at the sensor's */
+};
+
+/* P_D and lambda of the kept part of the class the cut fell in (*th):
+ * with amplitudes, the model's at the raised threshold a_cut (PDAFAI:
+ * lambda' = lambda S0(a_cut) / S0(t), P_D' = S1(a_cut), and ln l^a gains
+ * ln(pfa'/pfa) - ln(P_D'/P_D)); else uniform thinning of a fraction f:
+ * lambda' = f lambda, P_D' = f P_D (a target's detection is left out as
+ * often as a clutter one). */
+static void thin_model(const struct trk_sensor_params *sp, const struct trk_pda *pda, int by_amp, trk_real a_cut,
+                       trk_real f, struct thin *th, struct trk_scan_report *rep)
+{
+    trk_real x0 = 0, x1 = 0;
+    if (by_amp && trk_amplitude_log_sf(&sp->amplitude, TRK_AMP_CLUTTER, a_cut, &x0) == TRK_OK &&
+        trk_amplitude_log_sf(&sp->amplitude, TRK_AMP_TARGET, a_cut, &x1) == TRK_OK) {
+        th->pd = pda->params.pd * trk_exp(-x1);
+        th->lambda = pda->params.clutter_density * trk_exp(-x0);
+        th->dl = x1 - x0;
+        rep->thin_threshold = a_cut;
+    } else {
+        th->pd = pda->params.pd * f;
+        th->lambda = pda->params.clutter_density * f;
+        th->dl = 0;
+    }
+}
+
+/* A scan of more than TRK_MAX_DETECTIONS detections: count the invalid
+ * ones (as load_detection would), rank the valid ones, keep the
+ * TRK_MAX_DETECTIONS highest: their scan indices, ascending, in
+ * ws.cand[0, n) (n returned); the rest counted as thinned, the model at
+ * the cut into *th and the report. O(n_det (log boxes + boxes in the strip
+ * + log TRK_MAX_DETECTIONS)) + O(TRK_MAX_TRACKS^2) for the boxes' order. */
+static size_t thin_select(struct trk_tracker *t, const struct trk_scan *scan, const struct amp_use *au,
+                          struct thin *th, struct trk_scan_report *rep)
+{
+    const struct trk_sensor_params *sp = au->sp;
+    const struct trk_pda *pda = &t->pda[scan->sensor_id];
+    const int by_amp = sp->use_amplitude;
+    trk_real *box = t->ws.u.set.r_own, pmax[2];
+    const size_t n_box = thin_boxes(t, scan, box, pmax);
+    size_t n = 0, n_valid = 0, n_gated = 0;
+    for (size_t i = 0; i < scan->n_detections; i++) {
+        const struct trk_detection *d = &scan->detections[i];
+        trk_real llr;
+        if (!detection_usable(d, au, rep, &llr)) continue;
+        n_valid++;
+        const uint8_t in = (uint8_t)thin_in_box(box, n_box, pmax, pda->gamma, d, t->r[scan->sensor_id]);
+        n_gated += in;
+        /* with amplitudes: the amplitude, detections without one after all
+         * those with one; else the position's hash */
+        const trk_real key = !by_amp ? (trk_real)thin_hash(d)
+                             : d->has_amplitude ? d->amplitude
+                                                : -1 - (trk_real)thin_hash(d);
+        if (n < TRK_MAX_DETECTIONS) { /* room: append, sift up */
+            t->ws.w[n] = key;
+            t->ws.cand[n] = (uint16_t)i;
+            t->ws.used[n] = in;
+            for (size_t c = n++; c > 0 && thin_below(t, c, (c - 1) / 2); c = (c - 1) / 2) thin_swap(t, c, (c - 1) / 2);
+            continue;
+        }
+        /* full: over the root (the lowest kept) when it ranks above it (a
+         * tie goes to the root: earlier in the scan) */
+        if (in != t->ws.used[0] ? in < t->ws.used[0] : !(key > t->ws.w[0])) continue;
+        t->ws.w[0] = key;
+        t->ws.cand[0] = (uint16_t)i;
+        t->ws.used[0] = in;
+        thin_sift_down(t, n);
+    }
+    th->thinned = n_valid > n;
+    rep->n_thinned = (uint32_t)(n_valid - n);
+    if (th->thinned) {
+        size_t kept_in_class = 0;
+        th->in_gates = t->ws.used[0];
+        for (size_t k = 0; k < n; k++) kept_in_class += t->ws.used[k] == t->ws.used[0];
+        const size_t class_total = th->in_gates ? n_gated : n_valid - n_gated;
+        const trk_real a_cut = t->ws.w[0];
+        thin_model(sp, pda, by_amp && a_cut >= 0, a_cut, (trk_real)kept_in_class / (trk_real)class_total, th, rep);
+        rep->thin_pd = th->pd;
+        rep->thin_clutter_density = th->lambda;
+        rep->thin_in_gates = (uint8_t)th->in_gates;
+    }
+    sort_u16_by(t->ws.cand, n, NULL);
+    return n;
+}
+
+/* The sensor's constants for the updates of a scan thinned inside the
+ * gates: P_D' and lambda' in its PDA (and the joint weights' ln lambda),
+ * each loaded ln l^a moved to the raised threshold (dl), the initial
+ * existence terms moved back by dl (initiation's odds beta l^a / lambda and
+ * P_D l^a / lambda are the same at either threshold when beta scales with
+ * P_D). The previous constants into *saved. TRK_OK, or the PDA's refusal
+ * of P_D' (below the smallest normal number): the scan then keeps the
+ * sensor's constants. */
+struct thin_saved {
+    struct trk_pda pda;
+    trk_real dl;
+#if TRK_WITH_JOINT
+    trk_real log_lambda;
+#endif
+};
+
+static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thin *th, struct thin_saved *saved)
+{
+    struct trk_pda_params pp = t->pda[s].params;
+    struct trk_pda built;
+    pp.pd = th->pd;
+    pp.clutter_density = th->lambda;
+    if (!(th->lambda > 0) && t->pda[s].params.clutter_density > 0) return TRK_E_RANGE; /* lambda' underflowed */
+    const trk_status st = trk_pda_init(&built, &pp);
+    if (st != TRK_OK) return st;
+    saved->pda = t->pda[s];
+    saved->dl = th->dl;
+    t->pda[s] = built;
+    for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] += th->dl;
+#if TRK_WITH_JOINT
+    saved->log_lambda = t->log_clutter_density[s];
+    if (th->lambda > 0) t->log_clutter_density[s] = trk_log(th->lambda);
+#endif
+    return TRK_OK;
+}
+
+/* Undo thin_apply once the updates are done. */
+static void thin_restore(struct trk_tracker *t, unsigned s, const struct thin_saved *saved)
+{
+    t->pda[s] = saved->pda;
+    for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] -= saved->dl;
+#if TRK_WITH_JOINT
+    t->log_clutter_density[s] = saved->log_lambda;
+#endif
+}
+
+#endif
