@@ -66,7 +66,7 @@ $(BUILD)/bin/py-gospa: $(BUILD)/obj/tests/python/gospa_csv.o $(TOOL_LIBS)
 
 TEST_EXTRA += test-python-binding
 TEST_EXTRA_DEPS_test-python-binding := $(SHARED_LIB) $(if $(filter double,$(REAL)),$(SHARED_FLOAT_BUILD)/libtrk_f.so) \
-  $(BUILD)/bin/py-replay-csv $(BUILD)/bin/py-gospa $(BUILD)/bin/trk-sim $(BUILD)/bin/trk-sonar-sim \
+  $(BUILD)/bin/py-replay-csv $(BUILD)/bin/py-gospa $(BUILD)/bin/py-lcm-big $(BUILD)/bin/trk-sim $(BUILD)/bin/trk-sonar-sim \
   $(BUILD)/bin/trk-lcm-bridge $(BUILD)/tables/amp_k1_snr15_pfa1e-2.tbl
 test-python-binding: $(TEST_EXTRA_DEPS_test-python-binding)
 	@sh tests/python_binding.sh $(BUILD)
@@ -74,3 +74,7 @@ test-python-binding: $(TEST_EXTRA_DEPS_test-python-binding)
 bench-python: $(SHARED_LIB) $(BUILD)/bin/trk-bench
 	@sh -c '. tests/step_lib.sh; find_python || { echo "bench-python: no python3 with numpy"; exit 1; }; \
 	  TRK_LIBRARY=$(abspath $(SHARED_LIB)) PYTHONPATH=tools/python $$PY tools/python/bench_scan.py --c-bench $(BUILD)/bin/trk-bench'
+$(BUILD)/bin/py-lcm-big: $(BUILD)/obj/tests/python/lcm_big_publish.o
+	@mkdir -p $(@D)
+	$(call say,LD,$@)
+	$(Q)$(CC) $(LDFLAGS_ALL) $< $(or $(shell pkg-config --libs lcm 2>/dev/null),-llcm) -o $@

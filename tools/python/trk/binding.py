@@ -173,7 +173,9 @@ class Params(View):
 
     def copy(self):
         q = Params()
-        q._arr[...] = self._arr
+        # byte for byte: the dtype names the public members only (an
+        # amplitude model's private ones would be lost field by field)
+        ctypes.memmove(q._arr.ctypes.data, self._arr.ctypes.data, self._arr.nbytes)
         q._keep.update(self._keep)
         return q
 
