@@ -49,10 +49,13 @@ install-shared: $(SHARED_LIB)
 	ln -sf $(SHARED_NAME).$(TRK_VERSION) $(DESTDIR)$(PREFIX)/lib/$(SHARED_NAME).0
 	ln -sf $(SHARED_NAME).$(TRK_VERSION) $(DESTDIR)$(PREFIX)/lib/$(SHARED_NAME)
 
-# --- the float library of this configuration (its own build directory)
+# --- the float library of this configuration (its own build directory,
+# the one `make bench` uses), with its C replay and its float table
 SHARED_FLOAT_BUILD := $(BUILD)/float
-$(SHARED_FLOAT_BUILD)/libtrk_f.so: FORCE
-	+@$(MAKE) --no-print-directory BUILD=$(SHARED_FLOAT_BUILD) REAL=float CONFIG_DEFS='$(CONFIG_DEFS)' shared
+.PHONY: shared-float
+shared-float:
+	+@$(MAKE) --no-print-directory BUILD=$(SHARED_FLOAT_BUILD) REAL=float CONFIG_DEFS='$(CONFIG_DEFS)' \
+	  shared $(SHARED_FLOAT_BUILD)/bin/py-replay-csv $(SHARED_FLOAT_BUILD)/tables/amp_k1_snr15_pfa1e-2.tbl
 
 # the C side of the identity test and of the GOSPA comparison
 $(BUILD)/bin/py-replay-csv: $(BUILD)/obj/tests/python/replay_csv.o $(HOSTLIB) $(LIB)
@@ -65,16 +68,22 @@ $(BUILD)/bin/py-gospa: $(BUILD)/obj/tests/python/gospa_csv.o $(TOOL_LIBS)
 	$(Q)$(CC) $(LDFLAGS_ALL) $< $(TOOL_LIBS) -lm -o $@
 
 TEST_EXTRA += test-python-binding
-TEST_EXTRA_DEPS_test-python-binding := $(SHARED_LIB) $(if $(filter double,$(REAL)),$(SHARED_FLOAT_BUILD)/libtrk_f.so) \
+TEST_EXTRA_DEPS_test-python-binding := $(SHARED_LIB) $(if $(filter double,$(REAL)),shared-float) \
   $(BUILD)/bin/py-replay-csv $(BUILD)/bin/py-gospa $(BUILD)/bin/py-lcm-big $(BUILD)/bin/trk-sim $(BUILD)/bin/trk-sonar-sim \
   $(BUILD)/bin/trk-lcm-bridge $(BUILD)/tables/amp_k1_snr15_pfa1e-2.tbl
 test-python-binding: $(TEST_EXTRA_DEPS_test-python-binding)
 	@sh tests/python_binding.sh $(BUILD)
 
-bench-python: $(SHARED_LIB) $(BUILD)/bin/trk-bench
+bench-python: $(SHARED_LIB) $(BUILD)/bin/py-replay-csv
 	@sh -c '. tests/step_lib.sh; find_python || { echo "bench-python: no python3 with numpy"; exit 1; }; \
-	  TRK_LIBRARY=$(abspath $(SHARED_LIB)) PYTHONPATH=tools/python $$PY tools/python/bench_scan.py --c-bench $(BUILD)/bin/trk-bench'
+	  TRK_LIBRARY=$(abspath $(SHARED_LIB)) PYTHONPATH=tools/python $$PY tools/python/bench_scan.py --c-replay $(BUILD)/bin/py-replay-csv'
 $(BUILD)/bin/py-lcm-big: $(BUILD)/obj/tests/python/lcm_big_publish.o
 	@mkdir -p $(@D)
 	$(call say,LD,$@)
 	$(Q)$(CC) $(LDFLAGS_ALL) $< $(or $(shell pkg-config --libs lcm 2>/dev/null),-llcm) -o $@
+
+# the examples beside mk/python.mk's tools in share/trk/python
+install: install-python-examples
+.PHONY: install-python-examples
+install-python-examples: install-python
+	install -m 755 tools/python/gospa_grid.py tools/python/bench_scan.py $(PY_SHARE)/

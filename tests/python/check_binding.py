@@ -7,6 +7,12 @@
       equal bits)
   check_binding.py layout      the layout table's invariants and the params
                                API (refusals name the field and the status)
+  check_binding.py gospa PY_GOSPA DEMO_DIR
+      trk.gospa against trk-sim's C GOSPA (build/bin/py-gospa) on random
+      cases and on the demo's truth and confirmed tracks, scan by scan
+  check_binding.py udpm        the UDP multicast reassembler on synthetic
+                               datagrams (short, fragmented, reordered,
+                               superseded, malformed)
 """
 import argparse
 import sys
@@ -129,6 +135,89 @@ def layout(_):
     print("layout: %d structs, params API and refusals ok (%s, %s)" % (len(st), trk.library_path, trk.REAL))
 
 
+def gospa_cases(a):
+    import csv
+    import subprocess
+    from trk.gospa import gospa
+    rng = np.random.default_rng(11)
+    cases = []
+    for k in range(300):
+        n, m = int(rng.integers(0, 9)), int(rng.integers(0, 9))
+        x = rng.uniform(0, 200, (n, 2))
+        y = np.concatenate([x[:min(n, m)] + rng.normal(0, 20, (min(n, m), 2)), rng.uniform(0, 200, (m - min(n, m), 2))])
+        if k % 7 == 0 and n and m:
+            y[0] = x[0] + [30, 40]  # exactly 50 m: at the cut-off, never assigned
+        cases.append((x, y))
+    # the demo's targets present and its confirmed tracks, scan by scan
+    truth, est = {}, {}
+    with open(a.demo + "/truth.csv") as f:
+        for r in csv.DictReader(f):
+            if int(r["present"]):
+                truth.setdefault(int(r["scan"]), []).append((float(r["x_m"]), float(r["y_m"])))
+    with open(a.demo + "/tracks.csv") as f:
+        for r in csv.DictReader(f):
+            if int(r["status"]) == 2:
+                est.setdefault(int(r["scan"]), []).append((float(r["x_m"]), float(r["y_m"])))
+    for k in sorted(truth):
+        cases.append((np.array(truth[k]).reshape(-1, 2), np.array(est.get(k, [])).reshape(-1, 2)))
+    c, p = 50.0, 2.0
+    path = a.cases
+    with open(path, "w") as f:
+        f.write("%r %r\n" % (c, p))
+        for x, y in cases:
+            f.write("%d %d\n" % (len(x), len(y)))
+            for v in list(x) + list(y):
+                f.write("%r %r\n" % (float(v[0]), float(v[1])))
+    out = subprocess.run([a.py_gospa, path], check=True, capture_output=True, text=True).stdout.split("\n")
+    worst = 0.0
+    for (x, y), line in zip(cases, out):
+        want = line.split()
+        r = gospa(x, y, c, p)
+        assert [r.n_assigned, r.n_missed, r.n_false] == [int(v) for v in want[4:]], (line, r)
+        for got, w in zip((r.gospa, r.loc, r.missed, r.false), want[:4]):
+            err = abs(got - float(w)) / max(1.0, abs(float(w)))
+            worst = max(worst, err)
+            assert err <= 1e-12, (line, r)
+    assert len([l for l in out if l]) == len(cases)
+    print("gospa: %d cases (%d from the demo), Python and C agree (largest relative difference %.1e)" % (
+        len(cases), len(cases) - 300, worst))
+
+
+def udpm(_):
+    from trk import lcm_udpm as u
+    payload = bytes((i * 13) % 256 for i in range(10000))
+    frags = u.fragment("TRK_TRACKS", payload, 5)
+    assert len(frags) == 8, len(frags)
+    r = u.Reassembler()
+    # reordered fragments complete the message once
+    got = [r.feed(d, "a") for d in frags[::-1]]
+    assert got[:-1] == [None] * 7 and got[-1] == ("TRK_TRACKS", payload), got[-1]
+    # a short message
+    assert r.feed(u.fragment("S", b"abc", 6)[0], "a") == ("S", b"abc")
+    # a message missing a fragment is dropped when the next one begins
+    for d in frags[:3]:
+        assert r.feed(d, "b") is None
+    new = u.fragment("TRK_TRACKS", payload, 6)
+    got = [r.feed(d, "b") for d in new]
+    assert got[-1] == ("TRK_TRACKS", payload) and r.n_dropped == 1
+    # two senders interleaved
+    f2 = u.fragment("X", payload[::-1], 1)
+    done = [m for pair in zip(frags, f2) for m in (r.feed(pair[0], "c"), r.feed(pair[1], "d")) if m]
+    assert sorted(done) == sorted([("TRK_TRACKS", payload), ("X", payload[::-1])])
+    # malformed: short, bad magic, no channel end, fragment beyond the payload
+    for bad in (b"LC", b"XXXXxxxxchan\0", b"LC02\0\0\0\1nochannelend",
+                frags[1][:8] + struct_pack(10000, 9990, 1, 8) + b"x" * 50):
+        assert r.feed(bad, "e") is None
+    assert r.n_bad == 4, r.n_bad
+    assert r.n_short == 1 and r.n_fragmented == 4
+    print("udpm: short, fragmented, reordered, interleaved, superseded and malformed datagrams as specified")
+
+
+def struct_pack(size, offset, no, n):
+    import struct
+    return struct.pack(">IIHH", size, offset, no, n)
+
+
 def main():
     ap = argparse.ArgumentParser()
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -140,8 +229,13 @@ def main():
     r.add_argument("--pd", type=float, default=0.9)
     r.add_argument("--table")
     sub.add_parser("layout")
+    g = sub.add_parser("gospa")
+    g.add_argument("py_gospa")
+    g.add_argument("demo")
+    g.add_argument("cases")
+    sub.add_parser("udpm")
     a = ap.parse_args()
-    {"replay": replay, "layout": layout}[a.cmd](a)
+    {"replay": replay, "layout": layout, "gospa": gospa_cases, "udpm": udpm}[a.cmd](a)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 /* replay_csv.c - the C side of the Python binding's identity test and
  * benchmark (tests/python_binding.sh, tools/python/bench_scan.py): the
  * detections of a CSV file (trk-sim demo's detections.csv: scan, time_s,
- * x_m, y_m, amplitude; one row per detection, scans in order) through
+ * x_m, y_m and optionally amplitude; one row per detection, scans in
+ * order) through
  * trk_tracker_process_scan, every live track of every scan printed exactly
  * (%.17g of each value: the Python side prints the same).
  *
@@ -28,6 +29,7 @@ static struct trk_detection det[TRK_MAX_DETECTIONS];
 struct row {
     long scan;
     double t, x, y, a;
+    int has_a;
 };
 
 static void print_tracks(long scan, const struct trk_scan_report *r)
@@ -123,7 +125,9 @@ int main(int argc, char **argv)
                     eof = 1;
                     break;
                 }
-                if (sscanf(line, "%ld,%lf,%lf,%lf,%lf", &next.scan, &next.t, &next.x, &next.y, &next.a) != 5) {
+                const int got = sscanf(line, "%ld,%lf,%lf,%lf,%lf", &next.scan, &next.t, &next.x, &next.y, &next.a);
+                next.has_a = got == 5;
+                if (got != 4 && got != 5) {
                     fprintf(stderr, "py-replay-csv: bad line: %s", line);
                     return 1;
                 }
@@ -142,7 +146,7 @@ int main(int argc, char **argv)
             det[n].x_m = (trk_real)r.x;
             det[n].y_m = (trk_real)r.y;
             det[n].amplitude = (trk_real)r.a;
-            det[n].has_amplitude = 1;
+            det[n].has_amplitude = (uint8_t)r.has_a;
             n++;
         }
         if (scan < 0) break;

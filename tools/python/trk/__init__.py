@@ -23,6 +23,7 @@ try:
     from .binding import (STATUS, TRACK_DTYPE, AmplitudeTable, ParamError, Params, Tracker,  # noqa: F401
                           TrkError, constants, default_params, library_path, mn_kn_params, status_name,
                           time_us)
+    from .binding import version as library_version  # noqa: F401
     from . import binding as _binding
     if _binding.version != __version__:
         raise AbiError("%s is version %s, this binding %s" % (_binding.library_path, _binding.version, __version__))

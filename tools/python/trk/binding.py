@@ -250,10 +250,20 @@ class AmplitudeTable(object):
 
 
 def _track_dtype():
+    """The tracks' view of struct trk_track: its members under the binding's
+    names, at the library's offsets (the struct's size: a slot array viewed
+    with it needs no copy)."""
+    f = ST["track"].fields
     nx = constants["CV2_NX"]
-    return np.dtype([("id", "u4"), ("status", "u1"), ("end_reason", "u1"), ("time_s", "f8"),
-                     ("state", REAL, (nx,)), ("covariance", REAL, (nx, nx)), ("existence", REAL),
-                     ("confidence", REAL), ("n_scans", "u4"), ("n_hits", "u4")])
+    names = [("id", "id", None), ("status", "status", None), ("end_reason", "end_reason", None),
+             ("time_us", "time_us", None), ("state", "x", (nx,)), ("covariance", "p", (nx, nx)),
+             ("existence", "vis.pv", None), ("confidence", "vis.pcv", None), ("n_scans", "n_scans", None),
+             ("n_hits", "n_hits", None)]
+    base = ST["track"].dtype
+    return np.dtype({"names": [n for n, _, _ in names],
+                     "formats": [(base.fields[c][0].base, shape) if shape else base.fields[c][0]
+                                 for _, c, shape in names],
+                     "offsets": [f[c].offset for _, c, _ in names], "itemsize": ST["track"].size})
 
 
 TRACK_DTYPE = _track_dtype()
@@ -273,8 +283,10 @@ class Tracker(object):
     """struct trk_tracker: one call per scan. process_scan returns
     (report, tracks): the scan report (dict of its counts) and the live
     tracks in slot order as a numpy structured array (TRACK_DTYPE: id,
-    status, end_reason, time_s, state [x, vx, y, vy], covariance 4 x 4,
-    existence vis.pv, confidence vis.pcv, n_scans, n_hits)."""
+    status, end_reason, time_us, state [x, vx, y, vy] (m, m/s), covariance
+    4 x 4, existence vis.pv, confidence vis.pcv, n_scans, n_hits; a copy of
+    the track slots, laid out as struct trk_track:
+    numpy.lib.recfunctions.repack_fields packs it)."""
 
     def __init__(self, params=None):
         self.params = (params if params is not None else default_params()).copy().check()
@@ -285,7 +297,7 @@ class Tracker(object):
         if st != 0:
             raise TrkError("trk_tracker_init", st)
         tf = ST["tracker"].fields["track"]
-        self._slots = np.ndarray((tf.count,), ST["track"].dtype, self._buf, tf.offset)
+        self._slots = np.ndarray((tf.count,), TRACK_DTYPE, self._buf, tf.offset)
         self._det = np.zeros(MAX_DETECTIONS, ST["detection"].dtype)
         self._scan = np.zeros(1, ST["scan"].dtype)
         self._scan["detections"] = self._det.ctypes.data
@@ -331,18 +343,8 @@ class Tracker(object):
 
     def report(self):
         """The last scan's report (dict of struct trk_scan_report)."""
-        r = self._report[0]
-        return {k: int(r[k]) for k in self._report.dtype.names}
+        return dict(zip(self._report.dtype.names, self._report[0].item()))
 
     def tracks(self):
         """The live tracks (TRACK_DTYPE), slot order."""
-        t = self._slots[self._slots["status"] != 0]
-        out = np.empty(len(t), TRACK_DTYPE)
-        for k in ("id", "status", "end_reason", "n_scans", "n_hits"):
-            out[k] = t[k]
-        out["time_s"] = t["time_us"] * 1e-6
-        out["state"] = t["x"]
-        out["covariance"] = t["p"].reshape(-1, constants["CV2_NX"], constants["CV2_NX"])
-        out["existence"] = t["vis.pv"]
-        out["confidence"] = t["vis.pcv"]
-        return out
+        return self._slots[self._slots["status"] != 0]
