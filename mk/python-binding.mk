@@ -28,6 +28,8 @@ SHARED_VERSION_DEF := -DTRK_VERSION_STRING='"$(TRK_VERSION)"'
 
 .PHONY: shared bench-python test-python-binding
 shared: $(SHARED_LIB)
+# `make` builds it beside the static archives
+all: shared
 
 $(BUILD)/pic/obj/src/%.o: src/%.c $(BUILD_CONFIG)
 	@mkdir -p $(@D)
