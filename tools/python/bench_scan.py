@@ -15,7 +15,7 @@ q 0.01). The scans are written to a CSV file and run
     tracks' structured array out), timed around the Python call;
   - through ctypes alone (the scan built once per scan outside the timing:
     the call's own overhead).
-The best of --rounds of each; prints ns per scan and the ratio Python / C.
+The best of --rounds (alternating) of each; prints ns per scan and the ratio Python / C.
 """
 import argparse
 import os
@@ -54,7 +54,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     ap.add_argument("--c-replay", required=True, help="build/bin/py-replay-csv")
     ap.add_argument("--scans", type=int, default=200)
-    ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--rounds", type=int, default=5)
     a = ap.parse_args()
     if trk.library_error:
         sys.exit("bench_scan: %s" % trk.library_error)
@@ -65,43 +65,41 @@ def main():
             f.write("scan,time_s,x_m,y_m\n")
             f.writelines(scenario(a.scans))
         scans = recorded.read_scans(path)
-        c_ns = []
-        for _ in range(a.rounds):
+        p = trk.default_params()
+        p.sensor[0].meas_cov_m2 = [SIGMA ** 2, 0, SIGMA ** 2]
+        p.sensor[0].clutter_density_per_m2 = lam
+        p.sensor[0].pd = 0.9
+        p.process_noise_q = Q
+        c_ns, py_ns, raw_ns, live = [], [], [], 0
+        for _ in range(a.rounds):  # the three alternate: a shared machine's load hits each alike
             out = subprocess.run([a.c_replay, path, "--bench", "--sigma", repr(SIGMA), "--q", repr(Q),
                                   "--lambda", repr(lam), "--pd", "0.9"], check=True, capture_output=True,
                                  text=True).stdout.split()
             c_ns.append(float(out[out.index("c_scan_ns") + 1]))
-    p = trk.default_params()
-    p.sensor[0].meas_cov_m2 = [SIGMA ** 2, 0, SIGMA ** 2]
-    p.sensor[0].clutter_density_per_m2 = lam
-    p.sensor[0].pd = 0.9
-    p.process_noise_q = Q
-    py_ns, raw_ns, live = [], [], 0
-    for _ in range(a.rounds):
-        tk = trk.Tracker(p)
-        t = 0.0
-        for s in scans:
-            t0 = time.perf_counter()
-            _, tracks = tk.process_scan(s.time_s, s.xy)
-            t += time.perf_counter() - t0
-        live = len(tracks)
-        py_ns.append(t / len(scans) * 1e9)
-        # the bare ctypes call: the detections written outside the timing
-        tk = trk.Tracker(p)
-        t = 0.0
-        for s in scans:
-            n = len(s.xy)
-            tk._det["x_m"][:n] = s.xy[:, 0]
-            tk._det["y_m"][:n] = s.xy[:, 1]
-            tk._det["has_cov"][:n] = 0
-            tk._det["has_amplitude"][:n] = 0
-            tk._scan["time_us"] = trk.time_us(s.time_s)
-            tk._scan["n_detections"] = n
-            t0 = time.perf_counter()
-            st = tk._process(tk._tk, tk._scan_p, tk._report_p)
-            t += time.perf_counter() - t0
-            assert st == 0
-        raw_ns.append(t / len(scans) * 1e9)
+            tk = trk.Tracker(p)
+            t = 0.0
+            for s in scans:
+                t0 = time.perf_counter()
+                _, tracks = tk.process_scan(s.time_s, s.xy)
+                t += time.perf_counter() - t0
+            live = len(tracks)
+            py_ns.append(t / len(scans) * 1e9)
+            # the bare ctypes call: the detections written outside the timing
+            tk = trk.Tracker(p)
+            t = 0.0
+            for s in scans:
+                n = len(s.xy)
+                tk._det["x_m"][:n] = s.xy[:, 0]
+                tk._det["y_m"][:n] = s.xy[:, 1]
+                tk._det["has_cov"][:n] = 0
+                tk._det["has_amplitude"][:n] = 0
+                tk._scan["time_us"] = trk.time_us(s.time_s)
+                tk._scan["n_detections"] = n
+                t0 = time.perf_counter()
+                st = tk._process(tk._tk, tk._scan_p, tk._report_p)
+                t += time.perf_counter() - t0
+                assert st == 0
+            raw_ns.append(t / len(scans) * 1e9)
     c, py, raw = min(c_ns), min(py_ns), min(raw_ns)
     print("bench python_scan_64x256_c %.0f ns (trk_tracker_process_scan in C, %d scans, %d live tracks at the end, "
           "%s)" % (c, len(scans), live, trk.REAL))
