@@ -67,6 +67,7 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     struct thin th = {0, 0, 0, 0, 0};
     load_detections(t, scan, &th, &rep);
     struct thin_saved saved;
+    memset(&saved, 0, sizeof saved); /* written by thin_apply when it returns TRK_OK */
     const int model = th.in_gates && thin_apply(t, scan->sensor_id, &th, &saved) == TRK_OK;
 #if TRK_WITH_JOINT
     if (t->params.association == TRK_ASSOC_JOINT) update_joint(t, scan, &rep);

@@ -239,7 +239,7 @@ static size_t thin_select(struct trk_tracker *t, const struct trk_scan *scan, co
         thin_model(sp, pda, by_amp && a_cut >= 0, a_cut, (trk_real)kept_in_class / (trk_real)class_total, th, rep);
         rep->thin_pd = th->pd;
         rep->thin_clutter_density = th->lambda;
-        rep->thin_in_gates = (uint8_t)th->in_gates;
+        rep->thin_in_gates = (uint32_t)th->in_gates;
     }
     sort_u16_by(t->ws.cand, n, NULL);
     return n;

@@ -105,8 +105,7 @@ static void test_struct_sizes_and_rows(void **state)
     }
     assert_int_equal(trk_tracker_sizeof(), sizeof(struct trk_tracker));
     /* every row inside its struct, of a known kind, its sub-struct described
-     * and as large as the row's element; the scan report is all uint32_t
-     * counters, every one described */
+     * and as large as the row's element; the scan report's members every one described */
     for (size_t i = 0; i < trk_layout_n_structs(); i++) {
         const char *sname;
         size_t ssize, nf, covered = 0;
@@ -129,7 +128,9 @@ static void test_struct_sizes_and_rows(void **state)
             if (kind == 'f') assert_int_equal(size, sizeof(trk_real));
             covered += size * count;
         }
-        if (strcmp(sname, "scan_report") == 0) assert_int_equal(covered, ssize);
+        /* the report: every member described; at most one alignment gap (the
+         * uint32_t counters are followed by trk_real members) */
+        if (strcmp(sname, "scan_report") == 0) assert_true(covered <= ssize && ssize - covered < sizeof(trk_real));
     }
 }
 

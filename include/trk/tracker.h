@@ -523,7 +523,8 @@ struct trk_scan_report {
     uint32_t n_below_threshold;     /* amplitude below the sensor's detection threshold */
     uint32_t n_kept;                /* valid detections processed (at most TRK_MAX_DETECTIONS);
                                        n_detections = n_kept + n_thinned + n_rejected_nonfinite
-                                       + n_rejected_cov + n_rejected_amplitude + n_below_threshold */
+                                       + n_rejected_cov + n_rejected_amplitude + n_rejected_region
+                                       + n_below_threshold */
     uint32_t n_thinned;             /* valid detections left out: the scan held more than
                                        TRK_MAX_DETECTIONS ("Scans beyond capacity") */
     uint32_t n_tracks_updated;      /* live tracks predicted and updated */
@@ -552,7 +553,7 @@ struct trk_scan_report {
                                        solver refused; also a track whose prediction failed
                                        (it then ends as numerical) */
     /* a thinned scan (n_thinned > 0; all 0 otherwise): the model of what it kept */
-    uint8_t thin_in_gates;          /* 1: the cut fell inside the gate boxes (more gated
+    uint32_t thin_in_gates;         /* 1: the cut fell inside the gate boxes (more gated
                                        detections than TRK_MAX_DETECTIONS): the updates used
                                        thin_pd and thin_clutter_density */
     trk_real thin_threshold;        /* the raised threshold: the amplitude of the last kept

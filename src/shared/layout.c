@@ -91,6 +91,7 @@ static const struct layout_row params_rows[] = {
     ROW(P, init.max_gap_scans, 'u', uint32_t, 1, "", "scans", "1 .. TRK_MAX_CANDIDATE_SCANS - 1"),
     REAL(P, init.birth_density_per_m2, 1, "1/m^2 per scan", ">= 0 (0: visibility.pv0)"),
     REAL(P, max_pos_sigma_ratio, 1, "", ">= 0 (0: no bound)"),
+    REAL(P, max_coord_m, 1, "m", "(0, 1e15]"),
     ENUM(P, association, "ASSOC_PDA, ASSOC_JOINT (TRK_WITH_JOINT)"),
 #if TRK_WITH_IMM
     ROW(P, imm, 's', struct trk_imm_params, 1, "imm_params", "", "n_models 0: CV only"),
@@ -163,7 +164,7 @@ static const struct layout_row detection_rows[] = {
 static const struct layout_row scan_rows[] = {
     ROW(C, time_us, 'i', int64_t, 1, "", "us", "|t| <= 2^62 - 1, never decreasing"),
     ROW(C, sensor_id, 'u', unsigned, 1, "", "", "0 .. n_sensors - 1"),
-    ROW(C, n_detections, 'u', size_t, 1, "", "", "<= TRK_MAX_DETECTIONS"),
+    ROW(C, n_detections, 'u', size_t, 1, "", "", "<= TRK_MAX_SCAN_DETECTIONS (beyond TRK_MAX_DETECTIONS: thinned)"),
     ROW(C, detections, 'p', const struct trk_detection *, 1, "", "", ""),
 };
 #undef C
@@ -171,10 +172,14 @@ static const struct layout_row scan_rows[] = {
 #define R(M) ROW(struct trk_scan_report, M, 'u', uint32_t, 1, "", "", "")
 static const struct layout_row report_rows[] = {
     R(n_detections), R(n_rejected_nonfinite), R(n_rejected_cov), R(n_rejected_amplitude),
-    R(n_below_threshold), R(n_tracks_updated), R(n_tracks_hit), R(n_started), R(n_confirmed),
+    R(n_rejected_region), R(n_below_threshold), R(n_kept), R(n_thinned), R(n_tracks_updated), R(n_tracks_hit), R(n_started), R(n_confirmed),
     R(n_terminated), R(n_init_refused_full), R(n_numerical), R(n_merged), R(n_replaced),
     R(n_covariance), R(n_candidates), R(n_candidates_dropped), R(n_clusters), R(n_clusters_approx),
     R(largest_cluster), R(n_assoc_overflow),
+    ROW(struct trk_scan_report, thin_in_gates, 'u', uint32_t, 1, "", "", "0, 1"),
+    REAL(struct trk_scan_report, thin_threshold, 1, "", ">= 0 (0: thinned without amplitudes)"),
+    REAL(struct trk_scan_report, thin_pd, 1, "", "[0, 1]"),
+    REAL(struct trk_scan_report, thin_clutter_density, 1, "1/m^2", ">= 0"),
 };
 #undef R
 
