@@ -41,15 +41,17 @@ $(SHARED_LIB): $(SHARED_OBJS)
 	$(call say,LD,$@)
 	$(Q)$(CC) -shared $(SANFLAGS) -Wl,-soname,$(SHARED_NAME).0 -Wl,--no-undefined $^ -lm -o $@
 
-# --- install: lib/libtrk.so.VERSION with its soname and development links;
-# the package beside mk/python.mk's tools
+# --- install: lib/libtrk.so.VERSION with its soname link, and no development
+# link lib/libtrk.so: `-ltrk` (pkg-config trk) must keep linking the static
+# libtrk.a, the firmware's own code; the package loads the soname. The
+# package beside mk/python.mk's tools
 install: install-shared
 .PHONY: install-shared
 install-shared: $(SHARED_LIB)
 	install -d $(DESTDIR)$(PREFIX)/lib
 	install -m 755 $(SHARED_LIB) $(DESTDIR)$(PREFIX)/lib/$(SHARED_NAME).$(TRK_VERSION)
 	ln -sf $(SHARED_NAME).$(TRK_VERSION) $(DESTDIR)$(PREFIX)/lib/$(SHARED_NAME).0
-	ln -sf $(SHARED_NAME).$(TRK_VERSION) $(DESTDIR)$(PREFIX)/lib/$(SHARED_NAME)
+	rm -f $(DESTDIR)$(PREFIX)/lib/$(SHARED_NAME)
 
 # --- the float library of this configuration (its own build directory,
 # the one `make bench` uses), with its C replay and its float table

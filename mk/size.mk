@@ -19,13 +19,13 @@
 #                         TRK_MAX_DETECTIONS detections + that stack exceed
 #                         RAM_LIMIT (65536) at the default capacities
 #                       - the libtrk code a typical firmware image links
-#                         (fw_footprint.c) exceeds TEXT_LIMIT_JOINT (36864) with
-#                         the defaults (joint association: +5.5 KB), or
-#                         TEXT_LIMIT (32768, the goal) in a build without
+#                         (fw_footprint.c) exceeds TEXT_LIMIT_JOINT (40960) with
+#                         the defaults (joint association: +6 KB), or
+#                         TEXT_LIMIT (34816) in a build without
 #                         joint association (TRK_WITH_JOINT=0, target
 #                         cortex-m4f-nojoint)
 #                       - the whole libtrk.a's .text exceeds LIB_TEXT_LIMIT
-#                         (49152): every firmware module, including the joint
+#                         (51200): every firmware module, including the joint
 #                         association (jpda.c) and IMM (imm.c) estimators a
 #                         firmware links only when it calls them. The
 #                         design-time analysis code (q2 lookup, MRE, TOC, ROC,
@@ -49,13 +49,18 @@
 
 SIZE_SMALL_DEFS := -DTRK_MAX_TRACKS=8 -DTRK_MAX_DETECTIONS=32 -DTRK_MAX_SENSORS=2
 STACK_LIMIT ?= 2048
-TEXT_LIMIT ?= 32768
-TEXT_LIMIT_JOINT ?= 36864
+# The image limits were 32 KB (no joint association) and 36 KB until scans
+# beyond capacity were thinned instead of refused (+3.4 KB in every image:
+# the gate boxes, the bounded heap, the amplitude models' survival
+# functions for the raised threshold) and detections outside the
+# surveillance bound were counted (max_coord_m); both run in every scan.
+TEXT_LIMIT ?= 34816
+TEXT_LIMIT_JOINT ?= 40960
 RAM_LIMIT ?= 65536
 # 40 KB until two-point initiation, the existence tests and the complete
 # detection model (+3.8 KB), 44 KB until the tracker's joint association
-# (+3.5 KB); the goal stays 32 KB
-LIB_TEXT_LIMIT ?= 49152
+# (+3.5 KB), 48 KB until the thinning of scans beyond capacity (+2.6 KB)
+LIB_TEXT_LIMIT ?= 51200
 SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
 TARGET_cortex-m4f_ARCH := arm
 TARGET_cortex-m4f-O2_ARCH := arm

@@ -328,6 +328,21 @@ static trk_real rescale(trk_real *f, size_t n)
     return m;
 }
 
+/* One more element of the programme's other side, with weight w0 when it
+ * is left out and x[i] when it joins member i of a subset (n members):
+ *   g(S) <- w0 g(S) + sum_{i in S} x[i] g(S - i),
+ * high to low (g(S - i) is still the old layer), then rescaled. */
+static void subset_layer(trk_real *g, size_t n, trk_real w0, const trk_real *x)
+{
+    for (size_t s = (size_t)1 << n; s-- > 0;) {
+        trk_real v = g[s] * w0;
+        for (size_t i = 0; i < n; i++)
+            if (s & ((size_t)1 << i)) v += g[s ^ ((size_t)1 << i)] * x[i];
+        g[s] = v;
+    }
+    (void)rescale(g, (size_t)1 << n);
+}
+
 /* track a's scaled weights over the cluster's detections (nd <= bits) */
 static void track_row(const struct cluster *c, size_t a, trk_real *row)
 {
@@ -351,15 +366,8 @@ static void exact_by_detections(const struct cluster *c, trk_real *p_pair, trk_r
         f[0] = 1;
         for (size_t o = 0; o < c->nt; o++) {
             if (o == a) continue;
-            const trk_real w0 = wmiss(c, o);
             track_row(c, o, row);
-            for (size_t s = ns; s-- > 0;) { /* high to low: f(S \ b) is still the old layer */
-                trk_real v = f[s] * w0;
-                for (size_t b = 0; b < c->nd; b++)
-                    if (s & ((size_t)1 << b)) v += f[s ^ ((size_t)1 << b)] * row[b];
-                f[s] = v;
-            }
-            (void)rescale(f, ns);
+            subset_layer(f, c->nd, wmiss(c, o), row);
         }
         trk_real total = 0;
         for (size_t b = 0; b < c->nd; b++) free_sum[b] = 0;
@@ -378,85 +386,109 @@ static void exact_by_detections(const struct cluster *c, trk_real *p_pair, trk_r
     }
 }
 
-/* Subsets of the cluster's tracks (nt <= bits): g(S) sums the events of the
- * detections processed so far in which exactly the tracks S took one; the
- * events close with the misses of the tracks outside S. Returns that sum
- * over the detections but skip_b, and with track skip_a left out (no
- * factor, excluded from S) when skip_a < nt, as total * exp(*ln_scale). */
-static trk_real exact_tracks_sum(const struct cluster *c, size_t skip_b, size_t skip_a, trk_real *ln_scale)
+/* Subsets of the cluster's tracks (nt <= bits), forward and backward over
+ * its detections. f_b(S) sums the events of the detections before b in
+ * which exactly the tracks S took one, h_b(S) those of the detections after
+ * b; the events in which b is free or taken by track a split into
+ *   Q_b(S) = sum over disjoint S1 u S2 = S of f_b(S1) h_b(S2),
+ *   Z_b(free) = sum_S Q_b(S) M(S),   Z_b(a) = w_ab sum_{S not a} Q_b(S) M(S + a),
+ * M(S) the product of the misses of the tracks outside S, and
+ *   P(a <- b) = Z_b(a) / (Z_b(free) + sum_a Z_b(a)):
+ * one normaliser per detection, so every layer's rescaling cancels, and
+ * every term a sum of products of weights (no subtraction): the marginals
+ * keep the working precision over any dynamic range. The misses come the
+ * same way at the first detection. The backward layers are kept at every
+ * B-th detection (B = ceil(sqrt(n_d))) and a block's recomputed from its
+ * checkpoint: 1 + B + ceil(n_d / B) layers of 2^nt reals, about
+ * n_d (3^nt + 4 nt 2^nt) operations (fb_work). */
+
+/* the block length B = ceil(sqrt(nd)) */
+static size_t fb_block(size_t nd)
 {
-    trk_real *g = c->w->u.dp;
-    trk_real col[TRK_JPDA_EXACT_BITS], miss[TRK_JPDA_EXACT_BITS];
-    size_t next[TRK_JPDA_EXACT_BITS]; /* per track, its first pair not yet passed */
-    trk_real prod = 1;                /* rescaling factors not yet in *ln_scale */
-    int n_prod = 0;
-    const size_t ns = (size_t)1 << c->nt;
-    for (size_t s = 0; s < ns; s++) g[s] = 0;
-    g[0] = 1;
-    *ln_scale = 0;
-    for (size_t o = 0; o < c->nt; o++) next[o] = c->s->first[c->tracks[o]];
-    for (size_t b = 0; b < c->nd; b++) {
-        /* the column of detection b: the tracks' pairs in detection order */
-        for (size_t o = 0; o < c->nt; o++) {
-            const size_t end = c->s->first[c->tracks[o] + 1];
-            col[o] = 0;
-            if (next[o] < end && c->s->det[next[o]] == c->dets[b]) col[o] = wpair(c, next[o]++);
-            if (o == skip_a) col[o] = 0;
-        }
-        if (b == skip_b) continue;
-        for (size_t s = ns; s-- > 0;) {
-            trk_real v = g[s];
-            for (size_t o = 0; o < c->nt; o++)
-                if (s & ((size_t)1 << o)) v += g[s ^ ((size_t)1 << o)] * col[o];
-            g[s] = v;
-        }
-        /* a layer only adds to the last (whose largest was 1) and each
-         * scaled weight is at most 1: its factor is in [1, nt + 1], so 16 of
-         * them multiply safely (<= 10^16) before one logarithm */
-        prod *= rescale(g, ns);
-        if (++n_prod == 16) {
-            *ln_scale += trk_log(prod);
-            prod = 1;
-            n_prod = 0;
-        }
-    }
-    *ln_scale += trk_log(prod);
-    for (size_t o = 0; o < c->nt; o++) miss[o] = o == skip_a ? 1 : wmiss(c, o);
-    trk_real total = 0;
-    for (size_t s = 0; s < ns; s++) {
-        trk_real v = g[s];
-        for (size_t o = 0; o < c->nt && v != 0; o++)
-            if (!(s & ((size_t)1 << o))) v *= miss[o];
-        total += v;
-    }
-    return total;
+    size_t b = 1;
+    while (b * b < nd) b++;
+    return b;
 }
 
-/* P(a <- b) = w_ab Z(-a, -b) / Z(-b, b free), with every programme over the
- * same detections (all but b) so that their rescalings agree:
- * Z(-b, b free) = Z(b clutter) + sum_a w_ab Z(-a, -b). P(a <- none) is what
- * is left of track a's unit row. Work: nd (nt + 1) (nd - 1) 2^nt nt. */
+/* detection b's column: col[a] = w_ab (0 outside a's gate), k_of[a] its pair */
+static void fb_column(const struct cluster *c, size_t b, trk_real *col, size_t *k_of)
+{
+    for (size_t a = 0; a < c->nt; a++) {
+        k_of[a] = pair_of(c->s, c->tracks[a], c->dets[b]);
+        col[a] = k_of[a] == NONE ? 0 : wpair(c, k_of[a]);
+    }
+}
+
+/* Detection b's marginals from f (the detections before it), h (those
+ * after), m (M) and its column; the misses too when p_miss is not NULL. */
+static void fb_detection(const struct cluster *c, const trk_real *f, const trk_real *h, const trk_real *m,
+                         const trk_real *col, const size_t *k_of, trk_real *p_pair, trk_real *p_miss)
+{
+    const size_t nt = c->nt, ns = (size_t)1 << nt;
+    trk_real za[TRK_JPDA_EXACT_BITS], zm[TRK_JPDA_EXACT_BITS], z = 0;
+    for (size_t a = 0; a < nt; a++) za[a] = zm[a] = 0;
+    for (size_t s = 0; s < ns; s++) {
+        trk_real q = 0;
+        for (size_t s1 = s;; s1 = (s1 - 1) & s) { /* the subsets of s */
+            q += f[s1] * h[s ^ s1];
+            if (s1 == 0) break;
+        }
+        z += q * m[s];
+        for (size_t a = 0; a < nt; a++) {
+            const size_t bit = (size_t)1 << a;
+            if (s & bit) continue;
+            za[a] += q * m[s | bit];
+            if (!p_miss) continue;
+            trk_real v = m[s]; /* a takes nothing: b free or taken by another track outside s */
+            for (size_t o = 0; o < nt; o++)
+                if (o != a && !(s & ((size_t)1 << o))) v += col[o] * m[s | ((size_t)1 << o)];
+            zm[a] += q * v;
+        }
+    }
+    for (size_t a = 0; a < nt; a++) z += za[a] *= col[a];
+    for (size_t a = 0; a < nt; a++) {
+        if (k_of[a] != NONE) p_pair[k_of[a]] = za[a] / z;
+        if (p_miss) p_miss[c->tracks[a]] = zm[a] / z;
+    }
+}
+
 static void exact_by_tracks(const struct cluster *c, trk_real *p_pair, trk_real *p_miss)
 {
-    for (size_t b = 0; b < c->nd; b++) {
-        trk_real ln0, lna;
-        trk_real z = exact_tracks_sum(c, b, (size_t)-1, &ln0);
-        size_t k_of[TRK_JPDA_EXACT_BITS];
-        for (size_t a = 0; a < c->nt; a++) {
-            const size_t t = c->tracks[a], k = k_of[a] = pair_of(c->s, t, c->dets[b]);
-            if (k == NONE) continue;
-            const trk_real v = exact_tracks_sum(c, b, a, &lna) * wpair(c, k) * trk_exp(lna - ln0);
-            p_pair[k] = v;
-            z += v;
-        }
-        for (size_t a = 0; a < c->nt; a++)
-            if (k_of[a] != NONE) p_pair[k_of[a]] /= z;
+    const size_t nt = c->nt, nd = c->nd, ns = (size_t)1 << nt, bl = fb_block(nd), len = ns * sizeof(trk_real);
+    trk_real *m = c->w->u.dp, *f = m + ns, *blk = f + ns, *chk = blk + bl * ns; /* chk[k - 1]: h from detection k bl */
+    trk_real col[TRK_JPDA_EXACT_BITS];
+    size_t k_of[TRK_JPDA_EXACT_BITS];
+    for (size_t s = 0; s < ns; s++) {
+        m[s] = 1;
+        for (size_t o = 0; o < nt; o++)
+            if (!(s & ((size_t)1 << o))) m[s] *= wmiss(c, o);
+        f[s] = blk[s] = 0;
     }
-    for (size_t a = 0; a < c->nt; a++) {
-        const size_t t = c->tracks[a];
-        trk_real sum = 0;
-        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++) sum += p_pair[k];
-        p_miss[t] = sum < 1 ? 1 - sum : 0;
+    f[0] = blk[0] = 1;
+    for (size_t b = nd; b-- > bl;) { /* backward: the checkpoints */
+        fb_column(c, b, col, k_of);
+        subset_layer(blk, nt, 1, col);
+        if (b % bl == 0) memcpy(chk + (b / bl - 1) * ns, blk, len);
+    }
+    for (size_t start = 0; start < nd; start += bl) {
+        const size_t end = start + bl < nd ? start + bl : nd;
+        trk_real *h = blk + (end - 1 - start) * ns; /* blk[i]: h after detection start + i */
+        if (end < nd) {
+            memcpy(h, chk + (end / bl - 1) * ns, len);
+        } else {
+            for (size_t s = 0; s < ns; s++) h[s] = 0;
+            h[0] = 1;
+        }
+        for (size_t b = end - 1; b > start; b--, h -= ns) {
+            fb_column(c, b, col, k_of);
+            memcpy(h - ns, h, len);
+            subset_layer(h - ns, nt, 1, col);
+        }
+        for (size_t b = start; b < end; b++) {
+            fb_column(c, b, col, k_of);
+            fb_detection(c, f, blk + (b - start) * ns, m, col, k_of, p_pair, b == 0 ? p_miss : NULL);
+            subset_layer(f, nt, 1, col);
+        }
     }
 }
 
@@ -475,8 +507,11 @@ static uint64_t work_by_detections(const struct cluster *c)
 static uint64_t work_by_tracks(const struct cluster *c)
 {
     if (c->nt > TRK_JPDA_EXACT_BITS) return 0;
-    const uint64_t ns = (uint64_t)1 << c->nt, nd = c->nd;
-    return nd * (c->nt + 1) * nd * (ns * (c->nt + 1) + c->nt + 8) + 1;
+    const uint64_t nt = c->nt, ns = (uint64_t)1 << nt, bl = fb_block(c->nd);
+    if ((1 + bl + (c->nd + bl - 1) / bl) * ns > ((uint64_t)1 << TRK_JPDA_EXACT_BITS)) return 0;
+    uint64_t pow3 = 1;
+    for (uint64_t a = 0; a < nt; a++) pow3 *= 3;
+    return c->nd * (pow3 + ns * (4 * nt + 6) + 30 * nt) + ns * nt * (nt + 1) + 1;
 }
 
 /* 1 when solved exactly: the cheaper method, within TRK_JPDA_MAX_WORK and

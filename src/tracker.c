@@ -27,7 +27,7 @@ static int detection_usable(const struct trk_detection *d, const struct amp_use 
 
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
-static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct thin *th,
+static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct thin *th,
                             struct trk_scan_report *rep);
 static void order_by_grid(struct trk_tracker *t);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
@@ -66,8 +66,7 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     free_terminated(t);
     struct thin th = {0, 0, 0, 0, 0};
     load_detections(t, scan, &th, &rep);
-    struct thin_saved saved;
-    memset(&saved, 0, sizeof saved); /* written by thin_apply when it returns TRK_OK */
+    struct thin_saved saved = {0}; /* written by thin_apply when it returns TRK_OK */
     const int model = th.in_gates && thin_apply(t, scan->sensor_id, &th, &saved) == TRK_OK;
 #if TRK_WITH_JOINT
     if (t->params.association == TRK_ASSOC_JOINT) update_joint(t, scan, &rep);
@@ -179,7 +178,7 @@ static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, s
  * thin_select kept (their scan indices, ascending, in ws.cand), the model
  * of what it kept into *th. The amplitudes (dB) are then doubled (see
  * clutter_look in tracker_update_impl.h). */
-static void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct thin *th,
+static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct thin *th,
                             struct trk_scan_report *rep)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];

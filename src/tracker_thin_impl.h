@@ -191,9 +191,11 @@ static void thin_model(const struct trk_sensor_params *sp, const struct trk_pda 
  * TRK_MAX_DETECTIONS highest: their scan indices, ascending, in
  * ws.cand[0, n) (n returned); the rest counted as thinned, the model at
  * the cut into *th and the report. O(n_det (log boxes + boxes in the strip
- * + log TRK_MAX_DETECTIONS)) + O(TRK_MAX_TRACKS^2) for the boxes' order. */
-static size_t thin_select(struct trk_tracker *t, const struct trk_scan *scan, const struct amp_use *au,
-                          struct thin *th, struct trk_scan_report *rep)
+ * + log TRK_MAX_DETECTIONS)) + O(TRK_MAX_TRACKS^2) for the boxes' order.
+ * Not inlined: its predictions' frame stays off the scan's deepest path
+ * (process_scan > update_track > the PDA update). */
+static TRK_NOINLINE size_t thin_select(struct trk_tracker *t, const struct trk_scan *scan, const struct amp_use *au,
+                                       struct thin *th, struct trk_scan_report *rep)
 {
     const struct trk_sensor_params *sp = au->sp;
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
@@ -254,7 +256,6 @@ static size_t thin_select(struct trk_tracker *t, const struct trk_scan *scan, co
  * of P_D' (below the smallest normal number): the scan then keeps the
  * sensor's constants. */
 struct thin_saved {
-    struct trk_pda pda;
     trk_real dl;
 #if TRK_WITH_JOINT
     trk_real log_lambda;
@@ -264,15 +265,18 @@ struct thin_saved {
 static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thin *th, struct thin_saved *saved)
 {
     struct trk_pda_params pp = t->pda[s].params;
-    struct trk_pda built;
     pp.pd = th->pd;
     pp.clutter_density = th->lambda;
     if (!(th->lambda > 0) && t->pda[s].params.clutter_density > 0) return TRK_E_RANGE; /* lambda' underflowed */
-    const trk_status st = trk_pda_init(&built, &pp);
-    if (st != TRK_OK) return st;
-    saved->pda = t->pda[s];
+    /* the sensor's constants kept in the tracker, not on the stack (a
+     * struct trk_pda is a few hundred bytes of a firmware's stack) */
+    t->pda_saved = t->pda[s];
+    const trk_status st = trk_pda_init(&t->pda[s], &pp);
+    if (st != TRK_OK) {
+        t->pda[s] = t->pda_saved;
+        return st;
+    }
     saved->dl = th->dl;
-    t->pda[s] = built;
     for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] += th->dl;
 #if TRK_WITH_JOINT
     saved->log_lambda = t->log_clutter_density[s];
@@ -284,7 +288,7 @@ static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thi
 /* Undo thin_apply once the updates are done. */
 static void thin_restore(struct trk_tracker *t, unsigned s, const struct thin_saved *saved)
 {
-    t->pda[s] = saved->pda;
+    t->pda[s] = t->pda_saved;
     for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] -= saved->dl;
 #if TRK_WITH_JOINT
     t->log_clutter_density[s] = saved->log_lambda;

@@ -163,7 +163,8 @@ else
 fi
 P=$T/prefix
 env -u T make --no-print-directory install BUILD="$BUILD" PREFIX="$P" > "$T/install.out" 2>&1 || fail "make install: $(tail -5 "$T/install.out")"
-[ -e "$P/lib/libtrk.so" ] && [ -e "$P/lib/libtrk.so.0" ] || fail "make install installed no libtrk.so: $(ls "$P/lib")"
+[ -e "$P/lib/libtrk.so.0" ] || fail "make install installed no libtrk.so.0: $(ls "$P/lib")"
+[ ! -e "$P/lib/libtrk.so" ] || fail "make install installed the development link libtrk.so: -ltrk would link the shared library"
 (cd "$T" && PYTHONPATH="$P/share/trk/python" TRK_LIBRARY= $PY -c "
 import trk
 assert trk.library_path.startswith('$P/lib/'), trk.library_path

@@ -605,6 +605,8 @@ struct trk_i_cand_run {
 struct trk_tracker {
     struct trk_tracker_params params;
     struct trk_pda pda[TRK_MAX_SENSORS];        /* per sensor: pd, gate, clutter */
+    struct trk_pda pda_saved;                   /* a thinned scan's sensor constants while
+                                                   pda[] holds its model (no caller use) */
     trk_real r[TRK_MAX_SENSORS][TRK_CV2_NZ * TRK_CV2_NZ];
     int64_t last_time_us;
     int64_t max_dt_us;

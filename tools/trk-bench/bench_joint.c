@@ -150,3 +150,46 @@ TRK_BENCH(jpda_solve_exact_worst)
     bench_print("jpda_solve_exact_worst_exact_clusters", rep.n_exact, "clusters");
     bench_print("jpda_solve_exact_worst_approx_clusters", rep.n_approx, "clusters");
 }
+
+/* Two tracks sharing nd detections (every pair gated): the exact solver's
+ * cost in the number of detections, up to a full scan. The two-track
+ * cluster was the scan's worst case (quadratic in the detections) before
+ * the forward-backward exact method (jpda.c), which is linear. */
+TRK_BENCH(jpda_two_tracks)
+{
+    enum { ND_MAX = 256 };
+    static uint16_t first[3], det[2 * ND_MAX];
+    static trk_real w0[2 * ND_MAX], w[2 * ND_MAX], miss[2], p[2 * ND_MAX], pm[2];
+    static struct trk_jpda_solver solver;
+    static const int nds[] = {16, 64, 128, 250, 256};
+    if (TRK_MAX_GATED_PAIRS < 2 * ND_MAX || TRK_MAX_DETECTIONS < ND_MAX) {
+        bench_print("jpda_two_tracks_skipped_capacity", 0, "-");
+        return;
+    }
+    for (size_t q = 0; q < sizeof nds / sizeof nds[0]; q++) {
+        const int nd = nds[q];
+        size_t n = 0;
+        for (int t = 0; t < 2; t++) {
+            first[t] = (uint16_t)n;
+            miss[t] = (trk_real)log(0.3);
+            for (int j = 0; j < nd; j++) {
+                det[n] = (uint16_t)j;
+                w0[n++] = (trk_real)(0.1 * ((t * 7 + j * 3) % 11) - 0.5);
+            }
+        }
+        first[2] = (uint16_t)n;
+        struct trk_jpda_report rep;
+        double best = 1e300;
+        for (int r = 0; r < 10; r++) {
+            memcpy(w, w0, n * sizeof w[0]);
+            const struct trk_jpda_pairs pairs = {2, (size_t)nd, first, det, w, miss};
+            const double t0 = bench_now_ns();
+            if (trk_jpda_solve(&pairs, &solver, p, pm, &rep) != TRK_OK) return;
+            const double dt = bench_now_ns() - t0;
+            if (dt < best) best = dt;
+        }
+        char name[64];
+        snprintf(name, sizeof name, "jpda_two_tracks_%d%s", nd, rep.n_exact ? "" : "_approx");
+        bench_print(name, best, "ns");
+    }
+}

@@ -39,12 +39,14 @@ def _candidates():
         return [os.environ["TRK_LIBRARY"]]
     here = os.path.dirname(os.path.abspath(__file__))
     root = os.path.normpath(os.path.join(here, "..", "..", ".."))
-    out = [os.path.normpath(os.path.join(here, "..", "..", "..", "..", "lib", name))]
+    # installed: the soname (make install puts no development link libtrk.so,
+    # so that -ltrk links the static libtrk.a)
+    out = [os.path.normpath(os.path.join(here, "..", "..", "..", "..", "lib", name + ".0"))]
     out.append(os.path.join(root, "build", "float", name) if real == "float" else os.path.join(root, "build", name))
     found = ctypes.util.find_library("trk_f" if real == "float" else "trk")
     if found:
         out.append(found)
-    out += [os.path.join(d, name) for d in ("/usr/local/lib", "/usr/lib")]
+    out += [os.path.join(d, n) for d in ("/usr/local/lib", "/usr/lib") for n in (name + ".0", name)]
     return out
 
 
