@@ -448,4 +448,4 @@ $(foreach s,$(sort $(TEST_EXTRA) $(CHECK_EXTRA)),$(eval $(call EXTRA_STEP_templa
 test-extra: $(call res,$(TEST_EXTRA))
 	@$(SUMMARY) '$(CFG)' $^
 
--include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+-include $(shell find $(BUILD)/obj $(BUILD)/pic/obj -name '*.d' 2>/dev/null)
