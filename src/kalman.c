@@ -58,6 +58,27 @@ trk_status trk_cv2_predict(trk_real dt_s, trk_real q_m2_per_s3, trk_real x[TRK_C
     return TRK_OK;
 }
 
+trk_status trk_cv2_two_point(const trk_real z0[TRK_CV2_NZ], const trk_real r0[TRK_CV2_NZ * TRK_CV2_NZ],
+                             const trk_real z1[TRK_CV2_NZ], const trk_real r1[TRK_CV2_NZ * TRK_CV2_NZ], trk_real dt_s,
+                             trk_real x[TRK_CV2_NX], trk_real p[TRK_CV2_NX * TRK_CV2_NX])
+{
+    if (!z0 || !r0 || !z1 || !r1 || !x || !p || !(dt_s > 0)) return TRK_E_ARG;
+    static const int pos[TRK_CV2_NZ] = {TRK_CV2_X, TRK_CV2_Y}, vel[TRK_CV2_NZ] = {TRK_CV2_VX, TRK_CV2_VY};
+    for (int a = 0; a < TRK_CV2_NZ; a++) {
+        x[pos[a]] = z1[a];
+        x[vel[a]] = (z1[a] - z0[a]) / dt_s;
+        for (int b = 0; b < TRK_CV2_NZ; b++) {
+            const trk_real rb = r1[TRK_CV2_S(a, b)];
+            p[TRK_CV2_P(pos[a], pos[b])] = rb;
+            p[TRK_CV2_P(pos[a], vel[b])] = p[TRK_CV2_P(vel[a], pos[b])] = rb / dt_s;
+            p[TRK_CV2_P(vel[a], vel[b])] = (r0[TRK_CV2_S(a, b)] + rb) / (dt_s * dt_s);
+        }
+    }
+    for (int k = 0; k < TRK_CV2_NX; k++)
+        if (!isfinite(x[k])) return TRK_E_NAN;
+    return trk_i_spd(TRK_CV2_NX, p) == TRK_OK ? TRK_OK : TRK_E_NOT_SPD;
+}
+
 static int dims_ok(int nx, int nz)
 {
     return nx >= 1 && nx <= TRK_MAX_STATE && nz >= 1 && nz <= TRK_MAX_MEAS && nz <= nx;

@@ -382,23 +382,10 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
     const trk_real psi0 = initial_existence(t, log_odds);
     trk_real r_c[NZ * NZ], x[NX], p[NX * NX];
     candidate_r(c, r_c);
-    const int pos[NZ] = {X, Y}, vel[NZ] = {VX, VY};
-    for (int a = 0; a < NZ; a++) {
-        x[pos[a]] = a == ZX ? t->ws.x[j] : t->ws.y[j];
-        x[vel[a]] = (x[pos[a]] - (a == ZX ? c->x_m : c->y_m)) / dt;
-        for (int b = 0; b < NZ; b++) {
-            const trk_real rj = r_j[S(a, b)];
-            p[P(pos[a], pos[b])] = rj;
-            p[P(pos[a], vel[b])] = p[P(vel[a], pos[b])] = rj / dt;
-            p[P(vel[a], vel[b])] = (r_c[S(a, b)] + rj) / (dt * dt);
-        }
-    }
-    /* SPD in exact arithmetic; rounding can break it when R_c is tiny
-     * against R_j (the Schur complement is R_c / dt^2): then no track, the
-     * detection stays a candidate */
-    for (int k = 0; k < NX; k++)
-        if (!isfinite(x[k])) return 0;
-    if (trk_i_spd(NX, p) != TRK_OK) return 0;
+    const trk_real z_c[NZ] = {c->x_m, c->y_m}, z_j[NZ] = {t->ws.x[j], t->ws.y[j]};
+    /* P is SPD in exact arithmetic; rounding can break it when R_c is tiny
+     * against R_j: then no track, the detection stays a candidate */
+    if (trk_cv2_two_point(z_c, r_c, z_j, r_j, dt, x, p) != TRK_OK) return 0;
     struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
     if (!tr) return 0;
     for (int k = 0; k < NX; k++) tr->x[k] = x[k];

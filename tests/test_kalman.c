@@ -128,11 +128,43 @@ static void test_bad_input(void **state)
     TRK_ASSERT_STATUS(trk_kalman_predict(4, NULL, q, x, p), TRK_E_ARG);
 }
 
+/* two-point differencing: x = z1, v = (z1 - z0) / dt, P per axis pair
+ * [[R1, R1/dt], [R1/dt, (R0 + R1)/dt^2]] with the xy terms; refusals */
+static void test_cv2_two_point(void **state)
+{
+    (void)state;
+    const trk_real z0[2] = {100, -20}, z1[2] = {112, -12}, r0[4] = {4, 1, 1, 9}, r1[4] = {16, -2, -2, 25};
+    trk_real x[4], p[16];
+    TRK_ASSERT_OK(trk_cv2_two_point(z0, r0, z1, r1, 4, x, p));
+    TRK_ASSERT_NEAR(x[X], 112, 0, 0);
+    TRK_ASSERT_NEAR(x[Y], -12, 0, 0);
+    TRK_ASSERT_NEAR(x[VX], 3, 0, 0);
+    TRK_ASSERT_NEAR(x[VY], 2, 0, 0);
+    TRK_ASSERT_NEAR(p[P(X, X)], 16, 0, 0);
+    TRK_ASSERT_NEAR(p[P(X, Y)], -2, 0, 0);
+    TRK_ASSERT_NEAR(p[P(Y, Y)], 25, 0, 0);
+    TRK_ASSERT_NEAR(p[P(X, VX)], 4, 0, 0);
+    TRK_ASSERT_NEAR(p[P(VY, Y)], 6.25, 0, 0);
+    TRK_ASSERT_NEAR(p[P(X, VY)], -0.5, 0, 0);
+    TRK_ASSERT_NEAR(p[P(VX, VX)], 20.0 / 16, 0, 0);
+    TRK_ASSERT_NEAR(p[P(VX, VY)], -1.0 / 16, 0, 0);
+    TRK_ASSERT_NEAR(p[P(VY, VY)], 34.0 / 16, 0, 0);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) assert_true(p[i * 4 + j] == p[j * 4 + i]);
+    TRK_ASSERT_STATUS(trk_cv2_two_point(z0, r0, z1, r1, 0, x, p), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_cv2_two_point(z0, r0, z1, NULL, 4, x, p), TRK_E_ARG);
+    const trk_real znan[2] = {NAN, 0}, rzero[4] = {0, 0, 0, 0};
+    TRK_ASSERT_STATUS(trk_cv2_two_point(znan, r0, z1, r1, 4, x, p), TRK_E_NAN);
+    /* R0 = 0: the velocity block's Schur complement R0 / dt^2 vanishes */
+    TRK_ASSERT_STATUS(trk_cv2_two_point(z0, rzero, z1, r1, 4, x, p), TRK_E_NOT_SPD);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cv_model),
         cmocka_unit_test(test_cv2_predict),
+        cmocka_unit_test(test_cv2_two_point),
         cmocka_unit_test(test_scalar_update),
         cmocka_unit_test(test_predict_update_cv),
         cmocka_unit_test(test_bad_input),

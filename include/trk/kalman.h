@@ -48,6 +48,19 @@ TRK_NODISCARD trk_status trk_cv2_predict(trk_real dt_s, trk_real q_m2_per_s3, tr
 TRK_NODISCARD trk_status trk_cv_model(int n_axes, trk_real dt_s, trk_real q_m2_per_s3, trk_real *f,
                                       trk_real *q);
 
+/* Two-point differencing (Bar-Shalom, Willett & Tian, "Tracking and Data
+ * Fusion" 2011): the CV state from a position z0 (covariance r0, 2 x 2
+ * row-major) and a position z1 (r1) dt_s later: x = z1, v = (z1 - z0) / dt,
+ * P_pp = R1, P_pv = P_vp = R1 / dt, P_vv = (R0 + R1) / dt^2 (per axis pair,
+ * with the xy terms). x and p are outputs only. TRK_E_ARG NULL pointer or
+ * dt_s not > 0, TRK_E_NAN a non-finite x, TRK_E_NOT_SPD P not positive
+ * definite in this arithmetic (R0 tiny against R1: its Schur complement is
+ * R0 / dt^2); x and p are then not usable. */
+TRK_NODISCARD trk_status trk_cv2_two_point(const trk_real z0[TRK_CV2_NZ], const trk_real r0[TRK_CV2_NZ * TRK_CV2_NZ],
+                                           const trk_real z1[TRK_CV2_NZ], const trk_real r1[TRK_CV2_NZ * TRK_CV2_NZ],
+                                           trk_real dt_s, trk_real x[TRK_CV2_NX],
+                                           trk_real p[TRK_CV2_NX * TRK_CV2_NX]);
+
 /* H = [[1,0,0,0],[0,0,1,0]]. */
 extern const trk_real trk_cv2_h[TRK_CV2_NZ * TRK_CV2_NX];
 
