@@ -23,6 +23,12 @@
  *   imm  new with IMM tracks (a build with TRK_WITH_IMM = 1 only, `make
  *        mtt-imm`): CV at q and coordinated turns at
  *        +-omega (--imm-rate, --imm-stay, --imm-turn-q; MTT_IMM_* below)
+ *   oracle  no tracker: per target a CV Kalman filter fed with that
+ *        target's own detections (known association, tools/sim/mtt_oracle.h)
+ *        with new's sensor R and q (after --set), started at its second
+ *        detection, reported until it leaves or dies; it sees every scan
+ *        (also one --over-capacity refuse withholds from the trackers). What
+ *        the sensor and the motion model allow: every table shows it
  * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
  * of the scenario with use_amplitude, q = 1e-3; then every --set).
  *
@@ -61,6 +67,7 @@
 #include "kvfile.h"
 #include "mc_stats.h"
 #include "mtt_eval.h"
+#include "mtt_oracle.h"
 #include "mtt_scenario.h"
 #include "sim.h"
 #include "tracker_config.h"
@@ -172,8 +179,8 @@ struct mtt_row {
 
 /* ---------------------------------------------------------------- configurations */
 
-enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, N_CFG_KINDS };
-static const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm"};
+enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, CFG_ORACLE, N_CFG_KINDS };
+static const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm", "oracle"};
 
 struct mtt_settings {
     const char *kv[MAX_SETTINGS];
@@ -202,7 +209,7 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
 {
     struct trk_tracker_params p;
     if (kind == CFG_OLD) mtt_old_defaults(&p);
-    else trk_tracker_default_params(&p); /* new, pda, imm */
+    else trk_tracker_default_params(&p); /* new, pda, imm; oracle: its sensor R and q */
     if (kind == CFG_PDA) p.association = TRK_ASSOC_PDA;
 #if !TRK_WITH_IMM
     (void)im;
@@ -411,16 +418,39 @@ static void man_result(const struct man_stats *ms, double *v, int m0)
     v[m0 + 3] = ms->lost;
 }
 
-static int run_one(const struct mtt_scenario *sc, long clutter, int over, const struct trk_tracker_params *tp,
-                   double c_m, struct run_ws *ws, struct run_result *res)
+/* The oracle's scan k (mtt_oracle.h): targets gone ended, the scan given
+ * with its detections' origins, the report's counters of what it did (it
+ * sees and keeps every detection). 0, or -1. */
+static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, long k, const struct trk_scan *scan,
+                       const long *origin, struct trk_scan_report *rep)
+{
+    uint32_t ended = 0;
+    for (size_t i = 0; i < sc->n_targets; i++)
+        if (k >= sc->tg[i].death_scan) ended += (uint32_t)mtt_oracle_end(orc, i);
+    struct mtt_oracle_report orep;
+    if (mtt_oracle_scan(orc, scan, origin, &orep) != 0) return -1;
+    rep->n_detections = rep->n_kept = (uint32_t)scan->n_detections;
+    rep->n_tracks_updated = (uint32_t)orep.n_updated;
+    rep->n_started = rep->n_confirmed = (uint32_t)orep.n_started;
+    rep->n_terminated = ended;
+    return 0;
+}
+
+/* One run of the trackers' configuration tp, or of the oracle (tp gives
+ * its sensor R and q). */
+static int run_one(const struct mtt_scenario *sc, long clutter, int over, int oracle,
+                   const struct trk_tracker_params *tp, double c_m, struct run_ws *ws, struct run_result *res)
 {
     struct pair_stats cross = {{-1, -1}, 0, 0, 0, 0}, par = {{-1, -1}, 0, 0, 0, 0};
     struct mtt_eval ev;
     struct man_stats turn, acc;
     man_init(&turn, sc->turn_first_scan, sc->turn_last_scan);
     man_init(&acc, sc->accel_first_scan, sc->accel_last_scan);
+    struct mtt_oracle orc;
+    if (oracle ? mtt_oracle_init(&orc, sc->n_targets, tp->sensor[0].meas_cov_m2, tp->process_noise_q) != 0
+               : trk_tracker_init(ws->tk, tp) != TRK_OK)
+        return -1;
     mtt_eval_init(&ev, c_m);
-    if (trk_tracker_init(ws->tk, tp) != TRK_OK) return -1;
     const long ns = sc->p.n_scans;
     double cpu = 0, rep_sum[N_REP] = {0};
     long conf_sum = 0, live_sum = 0, full = 0, clutter_sum = 0, capped = 0, thin_scans = 0, thin_gates = 0;
@@ -436,7 +466,11 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, const 
         capped += info.n_clutter_capped > 0;
         struct trk_scan_report rep = {0};
         trk_status st = TRK_E_CAPACITY;
-        if (over != OVER_REFUSE || scan.n_detections <= TRK_MAX_DETECTIONS) {
+        if (oracle) {
+            const double t0 = thread_cpu_s();
+            st = oracle_scan(&orc, sc, k, &scan, ws->origin, &rep) == 0 ? TRK_OK : TRK_E_ARG;
+            cpu += thread_cpu_s() - t0;
+        } else if (over != OVER_REFUSE || scan.n_detections <= TRK_MAX_DETECTIONS) {
             const double t0 = thread_cpu_s();
             st = trk_tracker_process_scan(ws->tk, &scan, &rep);
             cpu += thread_cpu_s() - t0;
@@ -459,7 +493,13 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, const 
         /* the confirmed tracks and the targets present */
         size_t ne = 0;
         long live = 0;
-        for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
+        for (size_t i = 0; oracle && i < sc->n_targets; i++) { /* the oracle's: one per target present */
+            const struct mtt_oracle_track *t = mtt_oracle_track(&orc, i);
+            if (!t) continue;
+            live++;
+            ws->est[ne++] = (struct mtt_obj){(long)i, (double)t->x[TRK_CV2_X], (double)t->x[TRK_CV2_Y]};
+        }
+        for (size_t s = 0; !oracle && s < TRK_MAX_TRACKS; s++) {
             const struct trk_track *t = trk_tracker_track(ws->tk, s);
             if (!t) continue;
             live++;
@@ -468,7 +508,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, const 
         }
         conf_sum += (long)ne;
         live_sum += live;
-        full += live >= TRK_MAX_TRACKS;
+        full += !oracle && live >= TRK_MAX_TRACKS;
         /* the targets present, one per occupied slot; a target's id is its
          * index (a slot re-used holds a new target, with a new id) */
         struct mtt_obj truth[MTT_N_SLOTS];
@@ -556,6 +596,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, const 
         for (int j = 0; j < N_REP; j++) v[M_REP_FIRST + j] = rep_sum[j];
     }
     mtt_eval_free(&ev);
+    if (oracle) mtt_oracle_free(&orc);
     return rc;
 }
 
@@ -607,12 +648,12 @@ struct column {
 
 static void print_table(const struct mtt_row *rows, int n, const struct column *col, int n_col)
 {
-    printf("%5s %-7s %-5s %7s", "slots", "family", "cfg", "clutter");
+    printf("%5s %-7s %-6s %7s", "slots", "family", "cfg", "clutter");
     for (int c = 0; c < n_col; c++) printf(" %*s", col[c].width, col[c].head);
     printf("\n");
     for (int i = 0; i < n; i++) {
         const struct mtt_row *r = &rows[i];
-        printf("%5ld %-7s %-5s %7g", r->capacity, r->family, r->config, r->clutter);
+        printf("%5ld %-7s %-6s %7g", r->capacity, r->family, r->config, r->clutter);
         for (int c = 0; c < n_col; c++) {
             if (col[c].ci) put_ci(r, col[c].m, col[c].width, col[c].prec);
             else if (isnan(r->mean[col[c].m])) printf(" %*s", col[c].width, "-");
@@ -813,7 +854,8 @@ static int take_configs(const char *s, int *kinds, int *n, char *err, size_t err
         for (int i = 0; i < N_CFG_KINDS; i++)
             if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
         if (k < 0 || *n >= N_CFG_KINDS) {
-            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm (each once)", (int)len, s);
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle (each once)", (int)len,
+                     s);
             return -1;
         }
         if (k == CFG_IMM && !TRK_WITH_IMM) {
@@ -854,6 +896,7 @@ struct mtt_units {
     const double *levels;
     int over;
     const struct trk_tracker_params *tp;
+    const int *kinds;           /* per configuration */
     double c_m;
     long nl, nc;
 };
@@ -871,7 +914,8 @@ static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
         *wsp = ws;
     }
     const long i = (long)j / (u->nl * u->nc), l = ((long)j / u->nc) % u->nl, c = (long)j % u->nc;
-    return run_one(&u->sc[i], (long)u->levels[l], u->over, &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
+    return run_one(&u->sc[i], (long)u->levels[l], u->over, u->kinds[c] == CFG_ORACLE, &u->tp[l * u->nc + c], u->c_m,
+                   ws, res) != 0;
 }
 
 static void mtt_ws_free(void *ctx, void *wsp)
@@ -913,12 +957,15 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                        "behaviours before: refuse, the library refused the scan\n"
                        "(TRK_E_CAPACITY; counted, the run goes on), cap, the clutter\n"
                        "cut to TRK_MAX_DETECTIONS minus the target detections"),
-        SIM_OPT_STRING("--config", &configs, "LIST", "new,pda,old",
+        SIM_OPT_STRING("--config", &configs, "LIST", "new,pda,old,oracle",
                        "configurations: new (trk_tracker_default_params: joint\n"
                        "association), pda (the same with association = pda: each\n"
                        "track's own PDA), old (the defaults before two-point initiation, per-track\n"
                        "PDA), imm (new with IMM tracks: CV and turns at +-omega,\n"
-                       "--imm-*; only in a build with TRK_WITH_IMM = 1: make mtt-imm);\n"
+                       "--imm-*; only in a build with TRK_WITH_IMM = 1: make mtt-imm),\n"
+                       "oracle (no tracker: per target a CV Kalman filter fed with\n"
+                       "its own detections, known association, new's R and q; the\n"
+                       "bound of what this sensor and motion model allow);\n"
                        "with association = joint and no clutter, the tracker\n"
                        "assumes one clutter detection per scan in the region"),
         SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
@@ -1130,7 +1177,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     }
     fflush(stdout);
     /* every (seed, level, configuration) a work unit */
-    struct mtt_units mu = {sc, levels, over, tp, c_m, nl, nc};
+    struct mtt_units mu = {sc, levels, over, tp, kinds, c_m, nl, nc};
     double wall;
     const int urc = sim_run_units(&com, "mtt", (size_t)n_jobs, sizeof *res, 1, mtt_unit, mtt_ws_free, &mu, res, &wall,
                                   NULL);
