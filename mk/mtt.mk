@@ -16,7 +16,8 @@
 #                                                         two-point velocity gate)
 #                   make mtt MTT_ARGS="--family fixed"   (the 8 fixed targets, the
 #                                                         scenario the peer was measured on)
-# The default run (10 seeds x 200 scans x 7 clutter levels x 2 configurations per build)
+# The default run (10 seeds x 200 scans x 7 clutter levels x 4 configurations per build:
+# new, pda, old and the known-association oracle)
 # takes seconds per build on 2 cores; compiling the large build dominates.
 #   make mtt-smoke  the `make test` step: a short run, its CSV checked (tests/mtt_smoke.sh)
 #   make mtt-imm    manoeuvring targets, CV-only (new) against IMM (imm).
