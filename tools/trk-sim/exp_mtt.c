@@ -1504,7 +1504,7 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "merge trk-sim mtt CSVs of builds wit
     printf("-- %ld slots / %ld slots: ratio of the means; '*' = the %ld-slot mean is outside the %ld-slot 95%% "
            "interval ('-': undefined)\n",
            small, large, small, large);
-    printf("%-30s %-7s %-4s", "metric", "family", "cfg");
+    printf("%-30s %-7s %-6s", "metric", "family", "cfg");
     for (int k = 0; k < np && same_group(&rows[pair_s[k]], &rows[pair_s[0]]); k++)
         printf(" %8g", rows[pair_s[k]].clutter);
     printf("   within\n");
@@ -1512,7 +1512,7 @@ SIM_EXPERIMENT(mtt_compare, "mtt-compare", "merge trk-sim mtt CSVs of builds wit
         for (int k0 = 0; k0 < np;) {
             int k1 = k0;
             while (k1 < np && same_group(&rows[pair_s[k1]], &rows[pair_s[k0]])) k1++;
-            printf("%-30s %-7s %-4s", metric_name[m], rows[pair_s[k0]].family, rows[pair_s[k0]].config);
+            printf("%-30s %-7s %-6s", metric_name[m], rows[pair_s[k0]].family, rows[pair_s[k0]].config);
             int within_n = 0, defined = 0;
             for (int k = k0; k < k1; k++) {
                 const struct mtt_row *a = &rows[pair_s[k]], *b = &rows[pair_l[k]];
