@@ -3,7 +3,9 @@
  * own detections (the scan generator's origin of each detection), with the
  * sensor's R and the process noise q the trackers get. What any tracker with
  * this sensor and motion model could at best do: no clutter, no other target
- * and no initiation logic in its way.
+ * and no initiation logic in its way. (Where a target manoeuvres beyond q
+ * the filter lags it and, unlike a tracker, never starts again: no bound
+ * there.)
  *
  * Per target:
  *   first detection   kept (no track yet)

@@ -28,7 +28,9 @@
  *        with new's sensor R and q (after --set), started at its second
  *        detection, reported until it leaves or dies; it sees every scan
  *        (also one --over-capacity refuse withholds from the trackers). What
- *        the sensor and the motion model allow: every table shows it
+ *        the sensor and the motion model allow: every table shows it. No
+ *        bound where a target manoeuvres beyond q (the 3 deg/s turn at
+ *        q 1e-3): the filter lags it past the cut-off and never restarts
  * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
  * of the scenario with use_amplitude, q = 1e-3; then every --set).
  *
@@ -964,8 +966,9 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                        "PDA), imm (new with IMM tracks: CV and turns at +-omega,\n"
                        "--imm-*; only in a build with TRK_WITH_IMM = 1: make mtt-imm),\n"
                        "oracle (no tracker: per target a CV Kalman filter fed with\n"
-                       "its own detections, known association, new's R and q; the\n"
-                       "bound of what this sensor and motion model allow);\n"
+                       "its own detections, known association, new's R and q: what\n"
+                       "this sensor and motion model allow; no bound on a target\n"
+                       "turning beyond q, which it never restarts on);\n"
                        "with association = joint and no clutter, the tracker\n"
                        "assumes one clutter detection per scan in the region"),
         SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
