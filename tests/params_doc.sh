@@ -8,7 +8,9 @@
 #   - every field name the check reports (the string literals of
 #     src/tracker_params.c, sensor[N].<member> for the sensors) is named in
 #     the page's "refused as" column, and every name there is one the check
-#     can report.
+#     can report;
+#   - every parameter field the shared library describes (src/shared/layout.c,
+#     whose units and ranges the Python binding shows) is a row of the page.
 set -u
 bin=$1
 STEP=params-doc
@@ -54,3 +56,16 @@ for f in $(cat "$T/doc_fields"); do
 done
 [ $bad = 0 ] || fail "$bad differences between $doc and the check's field names"
 ok "$(wc -l < "$T/fields") field names of the check, each named in $doc"
+# the fields the shared library describes (src/shared/layout.c: the names, units
+# and ranges the Python binding's parameters carry) against the page's C fields
+awk -F' [|] ' '/^[|] `/ { print $2 }' "$doc" | grep -o '`[^`]*`' | tr -d '`' | sort -u > "$T/doc_cfields"
+{ sed -n '/^static const struct layout_row params_rows/,/^};/p' src/shared/layout.c | grep -v "'s'" |
+      grep -oE '(REAL|ENUM|ROW)\(P, [a-z_.0-9]+' | sed 's/^.*(P, //'
+  sed -n '/^static const struct layout_row sensor_rows/,/^};/p' src/shared/layout.c |
+      grep -oE '(REAL|ENUM|ROW)\(S, [a-z_.0-9]+' | sed 's/^.*(S, /sensor[N]./'; } | sort -u > "$T/layout_fields"
+[ -s "$T/layout_fields" ] || fail "no parameter row in src/shared/layout.c"
+for f in $(cat "$T/layout_fields"); do
+    grep -qxF "$f" "$T/doc_cfields" || { echo "$STEP: the shared library describes $f, which $doc does not list"; bad=$((bad + 1)); }
+done
+[ $bad = 0 ] || fail "$bad fields of src/shared/layout.c missing from $doc"
+ok "$(wc -l < "$T/layout_fields") fields the Python binding reads from the shared library, each a row of $doc"
