@@ -1,5 +1,6 @@
-/* trk/check_config.h - reject impossible configurations at compile time.
- * Included by config.h after the defaults; each #error says how to fix it. */
+/** @file
+ * trk/check_config.h - reject impossible configurations at compile time.
+ * Included by config.h after the defaults; each `#error` says how to fix it. */
 #ifndef TRK_CHECK_CONFIG_H
 #define TRK_CHECK_CONFIG_H
 

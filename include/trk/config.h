@@ -1,11 +1,12 @@
-/* trk/config.h - every compile-time knob of trk: capacities, options and the
+/** @file
+ * trk/config.h - every compile-time knob of trk: capacities, options and the
  * scalar type, each with its default and a check that says how to fix an
  * impossible value.
  *
  * A knob is a default that a build may override with -DNAME=value or by
  * pointing TRK_CONFIG_FILE at a header of its own (-DTRK_CONFIG_FILE='"my_trk.h"'),
  * which is included first. check_config.h (included at the end) and the
- * #error lines below reject impossible combinations at compile time.
+ * `#error` lines below reject impossible combinations at compile time.
  *
  * The library and the program that links it must agree on every knob that
  * sets a struct layout (all of them except TRK_SIZE_OPT): trk_config_check()
@@ -30,7 +31,7 @@
  * (trk_config_check() compares sizeof(trk_real)); tables carry their real
  * width and a table of the other width is refused (TRK_E_TABLE_REAL).
  * types.h defines trk_real, TRK_REAL_C() and trk_sqrt/trk_exp/... from it.
- * It is tested with #ifdef, so -DTRK_REAL_FLOAT=0 or =double would select
+ * It is tested with `#ifdef`, so -DTRK_REAL_FLOAT=0 or =double would select
  * float: refused below. */
 #if defined(TRK_REAL_FLOAT) && (0 - TRK_REAL_FLOAT - 1) == -1
 #error "TRK_REAL_FLOAT is a switch tested with #ifdef: its value 0 (or a word such as double) would still select float. For double leave it undefined; for float use -DTRK_REAL_FLOAT (make REAL=float)"
@@ -38,17 +39,17 @@
 
 /* ---------------------------------------------------------------- capacities */
 
-/* Live tracks in one trk_tracker (tentative + confirmed). */
+/** Live tracks in one trk_tracker (tentative + confirmed). */
 #ifndef TRK_MAX_TRACKS
 #define TRK_MAX_TRACKS 64
 #endif
 
-/* Detections in one scan. A larger scan is refused whole (TRK_E_CAPACITY). */
+/** Detections in one scan. A larger scan is refused whole (TRK_E_CAPACITY). */
 #ifndef TRK_MAX_DETECTIONS
 #define TRK_MAX_DETECTIONS 256
 #endif
 
-/* Initiation candidates (trk/tracker.h, two-point initiation): the
+/** Initiation candidates (trk/tracker.h, two-point initiation): the
  * unexplained detections of recent scans that may pair with a later one to
  * start a track. One full scan's worth by default; each costs 30 bytes in
  * float, 58 in double (with its index entry). A scan's candidates are kept
@@ -63,7 +64,7 @@
 #error "TRK_MAX_CANDIDATES must be in 1..65535 (initiation candidates); set -DTRK_MAX_CANDIDATES=256"
 #endif
 
-/* Scans whose candidates the store holds at once: trk_init_params.
+/** Scans whose candidates the store holds at once: trk_init_params.
  * max_gap_scans is at most TRK_MAX_CANDIDATE_SCANS - 1 (a candidate pairs
  * with the next max_gap_scans scans). */
 #ifndef TRK_MAX_CANDIDATE_SCANS
@@ -73,23 +74,24 @@
 #error "TRK_MAX_CANDIDATE_SCANS must be in 2..256 (candidate runs); set -DTRK_MAX_CANDIDATE_SCANS=8"
 #endif
 
-/* Sensors (e.g. multistatic receivers) with their own noise and detection
+/** Sensors (e.g. multistatic receivers) with their own noise and detection
  * parameters that one tracker fuses. */
 #ifndef TRK_MAX_SENSORS
 #define TRK_MAX_SENSORS 4
 #endif
 
-/* Largest state and measurement dimension of the general linear-Gaussian
+/** Largest state and measurement dimension of the general linear-Gaussian
  * functions (kalman.h, gate.h, pda.h). The tracker itself runs the 2-D
  * constant-velocity model (4 states, 2 measurements). */
 #ifndef TRK_MAX_STATE
 #define TRK_MAX_STATE 6
 #endif
 #ifndef TRK_MAX_MEAS
+/** Largest measurement dimension (see TRK_MAX_STATE). */
 #define TRK_MAX_MEAS 3
 #endif
 
-/* Largest window (updates) of Kennedy's clutter tests (clutter_test.h): the
+/** Largest window (updates) of Kennedy's clutter tests (clutter_test.h): the
  * per-track states struct trk_clutter_chi2 / trk_clutter_amp and the density
  * test's threshold table hold TRK_CLUTTER_KMAX entries each, so their size
  * grows with it (at 25: about 0.45 KB per track in double, 0.28 KB in float).
@@ -103,7 +105,7 @@
 #error "TRK_CLUTTER_KMAX must be in 1..1024 (window of the clutter tests; Kennedy 2008 uses 25); set -DTRK_CLUTTER_KMAX=25"
 #endif
 
-/* Models of one IMM estimator (imm.h): struct trk_imm_state holds
+/** Models of one IMM estimator (imm.h): struct trk_imm_state holds
  * TRK_MAX_MODELS mode-conditioned estimates (20 reals each) and probabilities.
  * Default 4: the largest IMM of the reference vectors (CV, two turns and a
  * high-noise CV), so that the default build computes every case; 3 (CV and a
@@ -115,7 +117,7 @@
 #error "TRK_MAX_MODELS must be in 1..8 (models of one IMM, imm.h); set -DTRK_MAX_MODELS=4"
 #endif
 
-/* Joint association (jpda.h): a cluster is solved exactly by a programme over
+/** Joint association (jpda.h): a cluster is solved exactly by a programme over
  * the subsets of its smaller side while that side has at most
  * TRK_JPDA_EXACT_BITS members (struct trk_jpda_work holds 2^bits reals) and
  * the work stays under TRK_JPDA_MAX_WORK operations (about a nanosecond each
@@ -123,16 +125,16 @@
  * propagation runs at most TRK_JPDA_LBP_MAX_ITER iterations (each costing a
  * few operations per gated pair). */
 #ifndef TRK_JPDA_EXACT_BITS
-#define TRK_JPDA_EXACT_BITS 9 /* 2 KB of float workspace in the tracker; 10 doubles it */
+#define TRK_JPDA_EXACT_BITS 9 /**< 2 KB of float workspace in the tracker; 10 doubles it */
 #endif
 #if TRK_JPDA_EXACT_BITS < 1 || TRK_JPDA_EXACT_BITS > 16
 #error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=9"
 #endif
 #ifndef TRK_JPDA_MAX_WORK
-#define TRK_JPDA_MAX_WORK (1L << 22) /* about 5 ms of a host core; a firmware with a tight
+#define TRK_JPDA_MAX_WORK (1L << 22) /**< about 5 ms of a host core; a firmware with a tight
                                         scan budget lowers it (and TRK_JPDA_SCAN_WORK) */
 #endif
-/* ... and all exact programmes of one call (one scan) together at most
+/** ... and all exact programmes of one call (one scan) together at most
  * TRK_JPDA_SCAN_WORK: the clusters beyond take belief propagation, so a
  * scan's exact work is bounded however many large clusters it has. */
 #ifndef TRK_JPDA_SCAN_WORK
@@ -141,7 +143,7 @@
 #if TRK_JPDA_SCAN_WORK < TRK_JPDA_MAX_WORK
 #error "TRK_JPDA_SCAN_WORK must be at least TRK_JPDA_MAX_WORK (jpda.h); set -DTRK_JPDA_SCAN_WORK=4194304"
 #endif
-/* Gated track-detection pairs one scan may hold (the tracker's joint
+/** Gated track-detection pairs one scan may hold (the tracker's joint
  * association, and trk_jpda_marginals' sparse copy): at least
  * TRK_MAX_DETECTIONS (one track's gated set), at most 65535. A scan with more
  * is counted in the tracker's report (n_assoc_overflow, trk/tracker.h). */
@@ -152,6 +154,7 @@
 #error "TRK_MAX_GATED_PAIRS must be in TRK_MAX_DETECTIONS..65535 (trk/jpda.h); set -DTRK_MAX_GATED_PAIRS=512"
 #endif
 #ifndef TRK_JPDA_LBP_MAX_ITER
+/** Iteration cap of the loopy belief propagation of joint association (trk/jpda.h), at least 1. */
 #define TRK_JPDA_LBP_MAX_ITER 200
 #endif
 #if TRK_JPDA_LBP_MAX_ITER < 1
@@ -160,7 +163,7 @@
 
 /* ---------------------------------------------------------------- options */
 
-/* Kennedy's clutter tests (clutter_test.h) as confirmation methods of the
+/** Kennedy's clutter tests (clutter_test.h) as confirmation methods of the
  * tracker. Their per-track state carries a window of TRK_CLUTTER_KMAX updates,
  * by far the largest member of union trk_confirm_state (trk/tracker.h), which
  * every track slot holds. 0 leaves the clutter tests' states and models out of
@@ -172,7 +175,7 @@
 #define TRK_WITH_CLUTTER_TESTS 1
 #endif
 
-/* Joint association (JIPDA) in the track table (trk/tracker.h,
+/** Joint association (JIPDA) in the track table (trk/tracker.h,
  * TRK_ASSOC_JOINT, the default association). 0 leaves it out of the tracker:
  * its pair store shrinks to one track's gated set and its code (the cluster
  * solver, about 5 KB on a Cortex-M4F) is not linked; the default association
@@ -186,7 +189,7 @@
 #error "TRK_WITH_JOINT must be 0 or 1 (joint association in the tracker); set -DTRK_WITH_JOINT=1"
 #endif
 
-/* Manoeuvring targets: IMM tracks in the track table (trk/tracker.h,
+/** Manoeuvring targets: IMM tracks in the track table (trk/tracker.h,
  * trk_tracker_params.imm; trk/imm.h). 1 gives every track slot its
  * mode-conditioned estimates (TRK_MAX_MODELS x 20 reals and the mode
  * probabilities) and the manoeuvre statistic, and the scan workspace the
@@ -202,7 +205,7 @@
 #error "TRK_WITH_IMM must be 0 or 1 (IMM tracks in the tracker); set -DTRK_WITH_IMM=1"
 #endif
 
-/* The library's small kernels (the *_impl.h headers of src) are forced
+/** The library's small kernels (the *_impl.h headers of src) are forced
  * inline so that a caller passing constant dimensions (the 2-D CV model) gets
  * fully unrolled code. TRK_SIZE_OPT = 1 leaves the inlining decision to the
  * compiler and drops the CV-specialised copies instead: a firmware build then

@@ -1,4 +1,5 @@
-/* trk/confirm_sprt.h - Wald sequential probability ratio test for track
+/** @file
+ * trk/confirm_sprt.h - Wald sequential probability ratio test for track
  * confirmation on binary detections (Willett II.B eqs 49-57 in sequential
  * form; docs/conventions.md "Track confirmation and termination", SPRT).
  *
@@ -33,56 +34,63 @@
 #include "trk/hmm_detect.h"
 #include "trk/types.h"
 
-/* Detection model of a present target (the type of trk_sprt_params.model). */
+/** Detection model of a present target (the type of trk_sprt_params.model). */
 enum trk_sprt_pd_model {
-    TRK_SPRT_FIXED_PD = 0, /* one P_D for every look */
-    TRK_SPRT_HMM = 1       /* per-sensor two-state Markov model (hmm) */
+    TRK_SPRT_FIXED_PD = 0, /**< one P_D for every look */
+    TRK_SPRT_HMM = 1       /**< per-sensor two-state Markov model (hmm) */
 };
 
+/** Parameters of the SPRT: error probabilities and the detection model of a present target. */
 struct trk_sprt_params {
-    trk_real alpha;             /* (0, 1), alpha + beta < 1 */
-    trk_real beta;              /* (0, 1) */
-    enum trk_sprt_pd_model model;
-    trk_real pd;                /* TRK_SPRT_FIXED_PD: P_D in (0, 1) */
-    struct trk_hmm_params hmm;  /* TRK_SPRT_HMM: the model. hmm.events applies to
+    trk_real alpha;             /**< (0, 1), alpha + beta < 1 */
+    trk_real beta;              /**< (0, 1) */
+    enum trk_sprt_pd_model model;  /**< fixed P_D or the HMM */
+    trk_real pd;                /**< TRK_SPRT_FIXED_PD: P_D in (0, 1) */
+    struct trk_hmm_params hmm;  /**< TRK_SPRT_HMM: the model. hmm.events applies to
                                    both models; the rest of hmm is ignored with
                                    fixed P_D */
 };
 
-/* Shared, read-only after init. */
+/** Shared, read-only after init. */
 struct trk_sprt_model {
-    enum trk_sprt_pd_model pd_model;
-    trk_real ln_a, ln_b;        /* Wald thresholds */
-    enum trk_event_model events; /* hmm.events, both models */
-    trk_real pd, miss;          /* fixed P_D: P_D, 1 - P_D (HMM: 0, 1) */
-    trk_real log_pd, log_miss;  /* fixed P_D: ln P_D, ln(1 - P_D) */
-    struct trk_hmm_model hmm;   /* HMM (fixed P_D: a valid one-sensor model
+    enum trk_sprt_pd_model pd_model;  /**< fixed P_D or the HMM (from the parameters) */
+    /** @{ */
+    trk_real ln_a, ln_b;        /**< Wald thresholds */
+    /** @} */
+    enum trk_event_model events; /**< hmm.events, both models */
+    /** @{ */
+    trk_real pd, miss;          /**< fixed P_D: P_D, 1 - P_D (HMM: 0, 1) */
+    /** @} */
+    /** @{ */
+    trk_real log_pd, log_miss;  /**< fixed P_D: ln P_D, ln(1 - P_D) */
+    /** @} */
+    struct trk_hmm_model hmm;   /**< HMM (fixed P_D: a valid one-sensor model
                                    carrying the event model) */
 };
 
-/* Per track. */
+/** Per track. */
 struct trk_sprt {
-    struct trk_hmm_state hmm;   /* HMM posteriors (unused with fixed P_D) */
-    trk_real stat;              /* llr_t */
-    trk_real inc;               /* increment of the latest look */
-    uint32_t t;
-    enum trk_decision fire;     /* the latest look alone: CONFIRM llr >= ln A,
+    struct trk_hmm_state hmm;   /**< HMM posteriors (unused with fixed P_D) */
+    trk_real stat;              /**< llr_t */
+    trk_real inc;               /**< increment of the latest look */
+    uint32_t t;  /**< looks so far */
+    enum trk_decision fire;     /**< the latest look alone: CONFIRM llr >= ln A,
                                    TERMINATE llr <= ln B, CONTINUE between */
-    enum trk_decision decision; /* sticky: the first fire that is not CONTINUE */
+    enum trk_decision decision; /**< sticky: the first fire that is not CONTINUE */
 };
 
-/* TRK_E_ARG NULL, bad model or unknown hmm.events, TRK_E_NAN non-finite
+/** TRK_E_ARG NULL, bad model or unknown hmm.events, TRK_E_NAN non-finite
  * parameter, TRK_E_RANGE alpha, beta (or alpha + beta >= 1), pd or a model
  * probability out of range, TRK_E_CAPACITY too many sensors. *m untouched on
  * error. */
 TRK_NODISCARD trk_status trk_sprt_model_init(struct trk_sprt_model *m,
                                              const struct trk_sprt_params *p);
 
-/* Start state of a new track: llr = 0, no look, no decision. Does nothing
+/** Start state of a new track: llr = 0, no look, no decision. Does nothing
  * when m or s is NULL. */
 void trk_sprt_reset(const struct trk_sprt_model *m, struct trk_sprt *s);
 
-/* One look: detected 1 for a detection in the gate (0 for none), pfa the
+/** One look: detected 1 for a detection in the gate (0 for none), pfa the
  * gate's P_FA (both event models). `sensor` selects the Markov state (HMM model; ignored for
  * fixed P_D). Writes the (sticky) decision to *decision. TRK_E_ARG NULL m, s
  * or decision, TRK_E_RANGE detected not 0 or 1, TRK_E_NAN / TRK_E_RANGE pfa
@@ -92,7 +100,7 @@ TRK_NODISCARD trk_status trk_sprt_step(const struct trk_sprt_model *m, struct tr
                                        unsigned sensor, int detected, trk_real pfa,
                                        enum trk_decision *decision);
 
-/* One step with a given log-likelihood-ratio increment ln f1 - ln f0 (e.g.
+/** One step with a given log-likelihood-ratio increment ln f1 - ln f0 (e.g.
  * with kinematic or amplitude terms). TRK_E_ARG NULL, TRK_E_NAN not finite;
  * *s and *decision untouched on error. */
 TRK_NODISCARD trk_status trk_sprt_step_llr(const struct trk_sprt_model *m, struct trk_sprt *s,

@@ -1,4 +1,5 @@
-/* trk/hmm_detect.h - predictive likelihood of a detection under the
+/** @file
+ * trk/hmm_detect.h - predictive likelihood of a detection under the
  * two-state Markov (fluctuating SNR) detection model, per sensor
  * (Blanding et al. 2007 eqs 1-2 and 7-10; Willett II.C eqs 60-64;
  * docs/conventions.md "Track confirmation and termination", HMM f1 and "Complete
@@ -44,55 +45,61 @@
 
 #include "trk/types.h"
 
-/* pi0_high value meaning "the stationary probability p/(p+q)" (eq 2). */
+/** pi0_high value meaning "the stationary probability p/(p+q)" (eq 2). */
 #define TRK_HMM_PI0_STATIONARY TRK_REAL_C(-1.0)
 
+/** One sensor's two-state detection model: the transitions and the detection probability of each state. */
 struct trk_hmm_sensor_params {
-    trk_real p_low_high;  /* p = P(low -> high) per look of this sensor, [0, 1] */
-    trk_real q_high_low;  /* q = P(high -> low) per look, [0, 1] */
-    trk_real pd_low;      /* detection probability in the low state, (0, 1) */
-    trk_real pd_high;     /* detection probability in the high state, (0, 1) */
-    trk_real pi0_high;    /* P(u = 1) at the sensor's first look, [0, 1], or
+    trk_real p_low_high;  /**< p = P(low -> high) per look of this sensor, [0, 1] */
+    trk_real q_high_low;  /**< q = P(high -> low) per look, [0, 1] */
+    trk_real pd_low;      /**< detection probability in the low state, (0, 1) */
+    trk_real pd_high;     /**< detection probability in the high state, (0, 1) */
+    trk_real pi0_high;    /**< P(u = 1) at the sensor's first look, [0, 1], or
                              TRK_HMM_PI0_STATIONARY (needs p + q > 0) */
 };
 
-/* What a "detected" look means under H1 (the type of trk_hmm_params.events;
+/** What a "detected" look means under H1 (the type of trk_hmm_params.events;
  * see the top of this file). Zero, the default, is the complete model. */
 enum trk_event_model {
-    TRK_EVENTS_COMPLETE = 0, /* target or clutter in the gate (docs/conventions.md) */
-    TRK_EVENTS_PAPER = 1     /* Blanding eq 8 as printed: target only */
+    TRK_EVENTS_COMPLETE = 0, /**< target or clutter in the gate (docs/conventions.md) */
+    TRK_EVENTS_PAPER = 1     /**< Blanding eq 8 as printed: target only */
 };
 
+/** Parameters of the detection HMM: one model per sensor and the event model. */
 struct trk_hmm_params {
-    unsigned n_sensors;   /* 1 .. TRK_MAX_SENSORS */
-    struct trk_hmm_sensor_params sensor[TRK_MAX_SENSORS];
-    enum trk_event_model events; /* TRK_EVENTS_COMPLETE (0) or TRK_EVENTS_PAPER */
+    unsigned n_sensors;   /**< 1 .. TRK_MAX_SENSORS */
+    struct trk_hmm_sensor_params sensor[TRK_MAX_SENSORS];  /**< sensor[0 .. n_sensors - 1] */
+    enum trk_event_model events; /**< TRK_EVENTS_COMPLETE (0) or TRK_EVENTS_PAPER */
 };
 
-/* Fill params with n_sensors identical sensors and events =
+/** Fill params with n_sensors identical sensors and events =
  * TRK_EVENTS_COMPLETE (the default; set events afterwards for the paper's
  * form). n_sensors is not checked here; trk_hmm_model_init checks it. */
 void trk_hmm_params_uniform(struct trk_hmm_params *params, unsigned n_sensors,
                             const struct trk_hmm_sensor_params *each);
 
-/* Shared, read-only after init. */
+/** Shared, read-only after init. */
 struct trk_hmm_model {
-    unsigned n_sensors;
-    enum trk_event_model events;
+    unsigned n_sensors;  /**< sensors (from the parameters) */
+    enum trk_event_model events;  /**< event model (from the parameters) */
     struct {
-        trk_real p, q;             /* transitions per look */
-        trk_real pd_low, pd_high;  /* detection probabilities */
-        trk_real pi0_high;         /* resolved prior at the first look (eq 2) */
-    } s[TRK_MAX_SENSORS];
+        /** @{ */
+        trk_real p, q;             /**< transitions per look */
+        /** @} */
+        /** @{ */
+        trk_real pd_low, pd_high;  /**< detection probabilities */
+        /** @} */
+        trk_real pi0_high;         /**< resolved prior at the first look (eq 2) */
+    } s[TRK_MAX_SENSORS];  /**< per sensor, from the parameters */
 };
 
-/* Per track. */
+/** Per track. */
 struct trk_hmm_state {
-    trk_real post_high[TRK_MAX_SENSORS]; /* P(u = 1 | this sensor's looks so far) */
-    uint32_t n_looks[TRK_MAX_SENSORS];   /* looks of this sensor so far (saturates) */
+    trk_real post_high[TRK_MAX_SENSORS]; /**< P(u = 1 | this sensor's looks so far) */
+    uint32_t n_looks[TRK_MAX_SENSORS];   /**< looks of this sensor so far (saturates) */
 };
 
-/* Validate params and build the model. TRK_E_ARG NULL or an unknown
+/** Validate params and build the model. TRK_E_ARG NULL or an unknown
  * events value, TRK_E_CAPACITY
  * n_sensors > TRK_MAX_SENSORS, TRK_E_RANGE n_sensors = 0 or a probability
  * outside its range (also stationary prior with p = q = 0), TRK_E_NAN a
@@ -100,16 +107,16 @@ struct trk_hmm_state {
 TRK_NODISCARD trk_status trk_hmm_model_init(struct trk_hmm_model *m,
                                             const struct trk_hmm_params *params);
 
-/* "No look yet" on every sensor: the start state of a new track. Does
+/** "No look yet" on every sensor: the start state of a new track. Does
  * nothing when m or st is NULL. */
 void trk_hmm_state_reset(const struct trk_hmm_model *m, struct trk_hmm_state *st);
 
-/* P(u = 1) that sensor's next look will use (eq 10 prior); NaN for a bad
+/** P(u = 1) that sensor's next look will use (eq 10 prior); NaN for a bad
  * sensor or a NULL pointer. Pure. */
 trk_real trk_hmm_prior_high(const struct trk_hmm_model *m, const struct trk_hmm_state *st,
                             unsigned sensor);
 
-/* One look of `sensor` (detected != 0: a detection in the gate; pfa the
+/** One look of `sensor` (detected != 0: a detection in the gate; pfa the
  * gate's false-alarm probability, eq 4): writes ln f1 (eq 8, e of the
  * model's event model) and advances that sensor's posterior (eq 9). Other
  * sensors are unchanged. ln f1 is computed without cancellation (log1p of
@@ -122,12 +129,12 @@ TRK_NODISCARD trk_status trk_hmm_update(const struct trk_hmm_model *m, struct tr
                                         unsigned sensor, int detected, trk_real pfa,
                                         trk_real *log_f1);
 
-/* ln f0 of eq 7 (both event models): ln pfa if detected, else ln(1 - pfa)
+/** ln f0 of eq 7 (both event models): ln pfa if detected, else ln(1 - pfa)
  * (as log1p(-pfa)).
  * TRK_E_ARG NULL, TRK_E_NAN pfa not finite, TRK_E_RANGE pfa outside (0, 1). */
 TRK_NODISCARD trk_status trk_hmm_log_f0(int detected, trk_real pfa, trk_real *log_f0);
 
-/* P_FA of a gate of volume V in clutter of density lambda (Blanding eq 4):
+/** P_FA of a gate of volume V in clutter of density lambda (Blanding eq 4):
  * 1 - exp(-lambda V) computed as -expm1(-lambda V). */
 static inline trk_real trk_hmm_gate_pfa(trk_real lambda_v) { return -trk_expm1(-lambda_v); }
 

@@ -1,4 +1,5 @@
-/* trk/hyca.h - track-life prediction by hybrid conditional averaging (HYCA;
+/** @file
+ * trk/hyca.h - track-life prediction by hybrid conditional averaging (HYCA;
  * Willett 2010 section I.D.2, eqs 43-48 and Figs 7-8, after Li and
  * Bar-Shalom 1991; docs/conventions.md "HYCA").
  *
@@ -58,33 +59,36 @@
 #include "trk/irf.h"
 #include "trk/types.h"
 
+/** Largest state dimension (2 nz). */
 #define TRK_HYCA_MAX_NX 4
-#define TRK_HYCA_MAX_STATES 64   /* largest m_lost */
+#define TRK_HYCA_MAX_STATES 64   /**< largest m_lost */
 
 /* ---- 1. missed detections only ---- */
 
+/** The model of the missed-detections-only recursion (trk_hyca_md). */
 struct trk_hyca_md_params {
-    int nz;                  /* 1 or 2 position coordinates */
-    trk_real dt_s;           /* T > 0 */
-    trk_real q_m2_per_s3;    /* process noise PSD q~ > 0 */
-    trk_real r_m2;           /* measurement noise variance r > 0 */
-    trk_real pd;             /* detection probability in (0, 1] */
-    int max_iter;            /* iteration cap; 0: 1000000 */
-    trk_real rel_tol;        /* convergence rule of trk/mre.h; 0: 64 eps */
+    int nz;                  /**< 1 or 2 position coordinates */
+    trk_real dt_s;           /**< T > 0 */
+    trk_real q_m2_per_s3;    /**< process noise PSD q~ > 0 */
+    trk_real r_m2;           /**< measurement noise variance r > 0 */
+    trk_real pd;             /**< detection probability in (0, 1] */
+    int max_iter;            /**< iteration cap; 0: 1000000 */
+    trk_real rel_tol;        /**< convergence rule of trk/mre.h; 0: 64 eps */
 };
 
+/** The fixed point of trk_hyca_md. */
 struct trk_hyca_md_result {
-    int nx;                                          /* 2 nz */
-    trk_real p_det[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];  /* P_1: given a detection */
-    trk_real p_miss[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX]; /* P_2: given a miss */
-    trk_real p[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];      /* pd P_1 + (1 - pd) P_2 (eq 48) */
-    trk_real rmse_m;         /* sqrt of the position variances of p */
-    int iterations;          /* steps to the fixed point */
-    trk_real last_change;    /* max |change| of P_1, P_2 in the last step */
-    trk_real rel_tol;        /* the tolerance the convergence test used */
+    int nx;                                          /**< 2 nz */
+    trk_real p_det[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];  /**< P_1: given a detection */
+    trk_real p_miss[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX]; /**< P_2: given a miss */
+    trk_real p[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];      /**< pd P_1 + (1 - pd) P_2 (eq 48) */
+    trk_real rmse_m;         /**< sqrt of the position variances of p */
+    int iterations;          /**< steps to the fixed point */
+    trk_real last_change;    /**< max |change| of P_1, P_2 in the last step */
+    trk_real rel_tol;        /**< the tolerance the convergence test used */
 };
 
-/* Iterate eq 46 from P_1 = P_2 = 0 to its fixed point.
+/** Iterate eq 46 from P_1 = P_2 = 0 to its fixed point.
  * TRK_E_ARG NULL / nz not 1 or 2 / max_iter < 0, TRK_E_NAN non-finite
  * parameter, TRK_E_RANGE a parameter outside its range, TRK_E_DIVERGED no
  * convergence within max_iter (res holds the last iterate). */
@@ -93,57 +97,63 @@ TRK_NODISCARD trk_status trk_hyca_md(const struct trk_hyca_md_params *params,
 
 /* ---- 2. with clutter: the chain over the number of gated measurements ---- */
 
+/** The model of the chain with clutter (trk_hyca_init). */
 struct trk_hyca_params {
-    int nz;                  /* 1 or 2 */
-    trk_real dt_s, q_m2_per_s3, r_m2;  /* as above */
-    trk_real pd;             /* detection probability in (0, 1] */
-    trk_real gate_prob;      /* P_G in (0, 1) (gamma from it unless gate_gamma > 0) */
-    trk_real gate_gamma;     /* > 0: the gate threshold on d2 itself; 0: from gate_prob */
-    trk_real clutter_density;  /* lambda >= 0 per m^nz */
-    int m_lost;              /* gated count that counts as lost, 2..TRK_HYCA_MAX_STATES;
+    int nz;                  /**< 1 or 2 */
+    /** @{ */
+    trk_real dt_s, q_m2_per_s3, r_m2;  /**< as above */
+    /** @} */
+    trk_real pd;             /**< detection probability in (0, 1] */
+    trk_real gate_prob;      /**< P_G in (0, 1) (gamma from it unless gate_gamma > 0) */
+    trk_real gate_gamma;     /**< > 0: the gate threshold on d2 itself; 0: from gate_prob */
+    trk_real clutter_density;  /**< lambda >= 0 per m^nz */
+    int m_lost;              /**< gated count that counts as lost, 2..TRK_HYCA_MAX_STATES;
                                 0: 10 (Willett, Fig. 8) */
-    int max_scans;           /* iteration cap; 0: 100000 */
-    int horizon_scans;       /* > 0: also the figures of a run cut at this many scans
+    int max_scans;           /**< iteration cap; 0: 100000 */
+    int horizon_scans;       /**< > 0: also the figures of a run cut at this many scans
                                 (a simulation's length); 0: none */
-    trk_real rel_tol;        /* quasi-stationary convergence (rule of trk/mre.h) on the
+    trk_real rel_tol;        /**< quasi-stationary convergence (rule of trk/mre.h) on the
                                 covariances, the state probabilities and the loss rate;
                                 0: 1e-10 in double, 1e-5 in float */
 };
 
-/* Validated model and the quadrature tables (init once, then read-only). */
+/** Validated model and the quadrature tables (init once, then read-only). */
 struct trk_hyca {
-    struct trk_hyca_params params;
-    int nx;
-    trk_real gamma;          /* gate threshold on d2 */
-    trk_real f[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];
-    trk_real q[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];
-    struct trk_irf irf;      /* E_n[beta_1] at the chain's gate (trk/irf.h) */
+    struct trk_hyca_params params;  /**< as given to trk_hyca_init */
+    int nx;  /**< state dimension 2 nz */
+    trk_real gamma;          /**< gate threshold on d2 */
+    trk_real f[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];  /**< transition matrix F (nx x nx) */
+    trk_real q[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX];  /**< process noise covariance Q (nx x nx) */
+    struct trk_irf irf;      /**< E_n[beta_1] at the chain's gate (trk/irf.h) */
 };
 
-/* TRK_E_ARG NULL / nz / m_lost / max_scans, TRK_E_NAN non-finite parameter,
+/** TRK_E_ARG NULL / nz / m_lost / max_scans, TRK_E_NAN non-finite parameter,
  * TRK_E_RANGE a parameter outside its range (gamma above
  * TRK_IRF_MAX_GAMMA too). *h untouched on error. */
 TRK_NODISCARD trk_status trk_hyca_init(struct trk_hyca *h, const struct trk_hyca_params *params);
 
+/** The quasi-stationary figures of the chain (trk_hyca_run). */
 struct trk_hyca_result {
+    /** @{ state dimension 2 nz and the lost state's gated count (from the parameters) */
     int nx, m_lost;
-    trk_real p_held[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX]; /* E[P | held], quasi-stationary */
-    trk_real rmse_m;              /* sqrt of its position variances */
-    trk_real mu[TRK_HYCA_MAX_STATES]; /* P{m = j | held}, quasi-stationary */
-    trk_real mean_gated;          /* sum_j j mu_j */
-    trk_real loss_per_scan;       /* P{lost at the next scan | held}, quasi-stationary */
-    trk_real mean_life_scans;     /* E[L]; +inf when the loss probability is 0 */
-    trk_real median_life_scans;   /* first k with S(k) <= 1/2; +inf likewise */
-    trk_real lost_by_horizon;     /* 1 - S(horizon_scans) (0 without a horizon) */
-    trk_real mean_life_horizon;   /* E[min(L, horizon_scans)] (0 without a horizon) */
-    int iterations;               /* scans iterated */
-    int converged;                /* 1: quasi-stationary reached (geometric tail);
+    /** @} */
+    trk_real p_held[TRK_HYCA_MAX_NX * TRK_HYCA_MAX_NX]; /**< E[P | held], quasi-stationary */
+    trk_real rmse_m;              /**< sqrt of its position variances */
+    trk_real mu[TRK_HYCA_MAX_STATES]; /**< P{m = j | held}, quasi-stationary */
+    trk_real mean_gated;          /**< sum_j j mu_j */
+    trk_real loss_per_scan;       /**< P{lost at the next scan | held}, quasi-stationary */
+    trk_real mean_life_scans;     /**< E[L]; +inf when the loss probability is 0 */
+    trk_real median_life_scans;   /**< first k with S(k) <= 1/2; +inf likewise */
+    trk_real lost_by_horizon;     /**< 1 - S(horizon_scans) (0 without a horizon) */
+    trk_real mean_life_horizon;   /**< E[min(L, horizon_scans)] (0 without a horizon) */
+    int iterations;               /**< scans iterated */
+    int converged;                /**< 1: quasi-stationary reached (geometric tail);
                                      0: S(k) fell below 1e-15 first (the sums are
                                      then complete, the quasi-stationary figures are
                                      those of the last scan) */
 };
 
-/* Run the chain from a new track (m = 1, covariance p0: nx x nx SPD, or NULL
+/** Run the chain from a new track (m = 1, covariance p0: nx x nx SPD, or NULL
  * for the two-point-differencing covariance). TRK_OK with *res filled;
  * TRK_E_DIVERGED when max_scans pass without convergence (res holds the
  * last scan's figures); TRK_E_NOT_SPD / TRK_E_NAN a bad p0 or a non-finite

@@ -1,4 +1,5 @@
-/* trk/imm.h - the interacting multiple model estimator (IMM; Blom &
+/** @file
+ * trk/imm.h - the interacting multiple model estimator (IMM; Blom &
  * Bar-Shalom 1988) for the 2-D state [x, vx, y, vy], alone or with PDA
  * (IMM-PDA), following docs/conventions.md "Multiple models (IMM)":
  *
@@ -39,44 +40,46 @@
 #include "trk/pda.h"
 #include "trk/types.h"
 
-/* TRK_MAX_MODELS: trk/config.h (default 3). */
+/** TRK_MAX_MODELS: trk/config.h (default 3). */
 #define TRK_IMM_NX 4
+/** Measurement dimension of the IMM (position x, y). */
 #define TRK_IMM_NZ 2
 
+/** The models of an IMM track: constant velocity or coordinated turn each, and the switching matrix. */
 struct trk_imm_params {
-    int n_models;                                   /* 1 .. TRK_MAX_MODELS */
-    trk_real omega_rad_s[TRK_MAX_MODELS];           /* turn rate; 0 = CV; |omega| <= 1 rad/s */
-    trk_real q_m2_per_s3[TRK_MAX_MODELS];           /* CV process noise density, >= 0 */
-    trk_real p_switch[TRK_MAX_MODELS * TRK_MAX_MODELS]; /* row i: P(i -> j), n x n packed */
+    int n_models;                                   /**< 1 .. TRK_MAX_MODELS */
+    trk_real omega_rad_s[TRK_MAX_MODELS];           /**< turn rate; 0 = CV; |omega| <= 1 rad/s */
+    trk_real q_m2_per_s3[TRK_MAX_MODELS];           /**< CV process noise density, >= 0 */
+    trk_real p_switch[TRK_MAX_MODELS * TRK_MAX_MODELS]; /**< row i: P(i -> j), n x n packed */
 };
 
-/* The mode-conditioned estimates of one track. */
+/** The mode-conditioned estimates of one track. */
 struct trk_imm_state {
-    trk_real mu[TRK_MAX_MODELS];
-    trk_real x[TRK_MAX_MODELS][TRK_IMM_NX];
-    trk_real p[TRK_MAX_MODELS][TRK_IMM_NX * TRK_IMM_NX];
+    trk_real mu[TRK_MAX_MODELS];  /**< mode probabilities mu_i */
+    trk_real x[TRK_MAX_MODELS][TRK_IMM_NX];  /**< mode-conditioned states x_i */
+    trk_real p[TRK_MAX_MODELS][TRK_IMM_NX * TRK_IMM_NX];  /**< mode-conditioned covariances P_i (row-major) */
 };
 
-/* TRK_E_ARG NULL or n_models outside 1..TRK_MAX_MODELS, TRK_E_NAN non-finite,
+/** TRK_E_ARG NULL or n_models outside 1..TRK_MAX_MODELS, TRK_E_NAN non-finite,
  * TRK_E_RANGE a negative q, |omega| > 1 rad/s, a switching probability
  * outside [0, 1] or a row not summing to 1 (within 1e-6). */
 TRK_NODISCARD trk_status trk_imm_check_params(const struct trk_imm_params *m);
 
-/* F of a coordinated turn at omega (above); omega = 0 gives the CV F. */
+/** F of a coordinated turn at omega (above); omega = 0 gives the CV F. */
 void trk_ct_transition(trk_real dt_s, trk_real omega_rad_s, trk_real f[TRK_IMM_NX * TRK_IMM_NX]);
 
-/* Mixing: mu_pred[j] = c_j, and the mixed initial conditions of every model
+/** Mixing: mu_pred[j] = c_j, and the mixed initial conditions of every model
  * in place in s (s->mu is left as it was: the update replaces it).
  * TRK_E_ARG NULL, TRK_E_RANGE mode probabilities not a distribution,
  * TRK_E_NAN non-finite result. */
 TRK_NODISCARD trk_status trk_imm_mix(const struct trk_imm_params *m, struct trk_imm_state *s,
                                      trk_real mu_pred[TRK_MAX_MODELS]);
 
-/* Predict each model over dt_s > 0 (in place). TRK_E_RANGE dt_s <= 0,
+/** Predict each model over dt_s > 0 (in place). TRK_E_RANGE dt_s <= 0,
  * TRK_E_NAN non-finite result. */
 TRK_NODISCARD trk_status trk_imm_predict(const struct trk_imm_params *m, trk_real dt_s, struct trk_imm_state *s);
 
-/* One measurement z with noise covariance r (2 x 2): a Kalman update per
+/** One measurement z with noise covariance r (2 x 2): a Kalman update per
  * model, log_lik[j] = ln N(z; H x_j-, S_j) (may be NULL), s->mu = the
  * posterior mode probabilities from mu_pred. TRK_E_NOT_SPD, TRK_E_NAN; s
  * untouched on error. */
@@ -84,14 +87,14 @@ TRK_NODISCARD trk_status trk_imm_update(const struct trk_imm_params *m, const tr
                                         const trk_real z[TRK_IMM_NZ], const trk_real mu_pred[TRK_MAX_MODELS],
                                         struct trk_imm_state *s, trk_real *log_lik);
 
-/* Scratch of trk_imm_pda_update (caller-owned; nothing persists). */
+/** Scratch of trk_imm_pda_update (caller-owned; nothing persists). */
 struct trk_imm_work {
-    trk_real z[2 * TRK_MAX_DETECTIONS];
-    trk_real log_lr[TRK_MAX_DETECTIONS];
-    trk_real beta[TRK_MAX_DETECTIONS];
+    trk_real z[2 * TRK_MAX_DETECTIONS];  /**< the gated detections, 2 per row */
+    trk_real log_lr[TRK_MAX_DETECTIONS];  /**< their amplitude log-likelihood ratios */
+    trk_real beta[TRK_MAX_DETECTIONS];  /**< association probabilities */
 };
 
-/* IMM-PDA on a scan of n_det detections z (n_det x 2) with amplitude
+/** IMM-PDA on a scan of n_det detections z (n_det x 2) with amplitude
  * log-likelihood ratios log_lr (NULL: none). pda: the PDA parameters
  * (parametric clutter; its gating flag is ignored: the validated set is the
  * union of the models' gates). validated (n_det outputs, 1/0, may be NULL);
@@ -105,7 +108,7 @@ TRK_NODISCARD trk_status trk_imm_pda_update(const struct trk_imm_params *m, cons
                                             const trk_real mu_pred[TRK_MAX_MODELS], struct trk_imm_state *s,
                                             struct trk_imm_work *w, unsigned char *validated, trk_real *log_lik);
 
-/* The combined estimate (moment matching). */
+/** The combined estimate (moment matching). */
 void trk_imm_combine(const struct trk_imm_params *m, const struct trk_imm_state *s, trk_real x[TRK_IMM_NX],
                      trk_real p[TRK_IMM_NX * TRK_IMM_NX]);
 

@@ -1,4 +1,5 @@
-/* trk/irf.h - the PDAF's information-reduction factor by deterministic
+/** @file
+ * trk/irf.h - the PDAF's information-reduction factor by deterministic
  * quadrature: q2 as a function of lambda_vg, and its parts conditioned on the
  * number of gated measurements (the conditional factors HYCA needs).
  *
@@ -34,49 +35,50 @@
 
 #include "trk/types.h"
 
-#define TRK_IRF_MAX_NODES 640          /* nodes in s = ln t */
-#define TRK_IRF_STEP_S TRK_REAL_C(0.2) /* trapezoid step in s */
-#define TRK_IRF_PANEL_RHO TRK_REAL_C(0.125) /* radial panel width */
-#define TRK_IRF_MAX_GAMMA TRK_REAL_C(150.0) /* largest gate threshold (node budget) */
+#define TRK_IRF_MAX_NODES 640          /**< nodes in s = ln t */
+#define TRK_IRF_STEP_S TRK_REAL_C(0.2) /**< trapezoid step in s */
+#define TRK_IRF_PANEL_RHO TRK_REAL_C(0.125) /**< radial panel width */
+#define TRK_IRF_MAX_GAMMA TRK_REAL_C(150.0) /**< largest gate threshold (node budget) */
 
-/* Tabulated phi and psi for one (nz, gamma); read-only after init. */
+/** Tabulated phi and psi for one (nz, gamma); read-only after init. */
 struct trk_irf {
-    int nz;                         /* 1..3 */
-    trk_real gamma;                 /* gate threshold on d2 */
-    trk_real pg;                    /* P(chi2(nz) <= gamma) */
-    trk_real f_target;              /* F_{nz+2}(gamma) = P(chi2(nz+2) <= gamma) */
-    trk_real b_per_lambda_vg;       /* (2 pi)^(nz/2) / (c_nz gamma^(nz/2)) */
-    int n;                          /* nodes used */
-    trk_real t[TRK_IRF_MAX_NODES];  /* t_k = exp(s_k) */
-    trk_real w[TRK_IRF_MAX_NODES];  /* step t_k psi(t_k) (the rule's weight) */
-    trk_real phi[TRK_IRF_MAX_NODES];        /* phi(t_k) */
-    trk_real one_m_phi[TRK_IRF_MAX_NODES];  /* 1 - phi(t_k), computed directly */
+    int nz;                         /**< 1..3 */
+    trk_real gamma;                 /**< gate threshold on d2 */
+    trk_real pg;                    /**< P(chi2(nz) <= gamma) */
+    trk_real f_target;              /**< F_{nz+2}(gamma) = P(chi2(nz+2) <= gamma) */
+    trk_real b_per_lambda_vg;       /**< (2 pi)^(nz/2) / (c_nz gamma^(nz/2)) */
+    int n;                          /**< nodes used */
+    trk_real t[TRK_IRF_MAX_NODES];  /**< t_k = exp(s_k) */
+    trk_real w[TRK_IRF_MAX_NODES];  /**< step t_k psi(t_k) (the rule's weight) */
+    trk_real phi[TRK_IRF_MAX_NODES];        /**< phi(t_k) */
+    trk_real one_m_phi[TRK_IRF_MAX_NODES];  /**< 1 - phi(t_k), computed directly */
 };
 
-/* Tabulate phi and psi for nz in 1..3 and gate threshold gamma in
+/** Tabulate phi and psi for nz in 1..3 and gate threshold gamma in
  * (0, TRK_IRF_MAX_GAMMA]. TRK_E_ARG NULL or bad nz, TRK_E_NAN non-finite
  * gamma, TRK_E_RANGE gamma out of range. *irf untouched on error. */
 TRK_NODISCARD trk_status trk_irf_init(struct trk_irf *irf, int nz, trk_real gamma);
 
-/* The PDA constant b at detection probability pd in (0, 1] and lambda_vg >= 0
+/** The PDA constant b at detection probability pd in (0, 1] and lambda_vg >= 0
  * (NaN on bad input). */
 trk_real trk_irf_b(const struct trk_irf *irf, trk_real pd, trk_real lambda_vg);
 
-/* e[n] = E_n[beta_1] for n = 0..n_max at PDA constant b >= 0.
+/** e[n] = E_n[beta_1] for n = 0..n_max at PDA constant b >= 0.
  * TRK_E_ARG NULL or n_max < 0, TRK_E_NAN / TRK_E_RANGE bad b. */
 TRK_NODISCARD trk_status trk_irf_beta1(const struct trk_irf *irf, trk_real b, int n_max, trk_real *e);
 
-/* q2 of the PDAF at (pd, lambda_vg), pd in (0, 1], lambda_vg >= 0.
+/** q2 of the PDAF at (pd, lambda_vg), pd in (0, 1], lambda_vg >= 0.
  * TRK_E_ARG NULL, TRK_E_NAN non-finite input, TRK_E_RANGE out of range. */
 TRK_NODISCARD trk_status trk_irf_q2(const struct trk_irf *irf, trk_real pd, trk_real lambda_vg,
                                     trk_real *q2);
 
-/* q2 at one pd as a function of lambda_vg: a trk_q2_fn (trk/q2.h) whose ctx is
+/** q2 at one pd as a function of lambda_vg: a trk_q2_fn (trk/q2.h) whose ctx is
  * a struct trk_irf_line, e.g. the MRE's q2_fn without a table. */
 struct trk_irf_line {
-    const struct trk_irf *irf;
-    trk_real pd;
+    const struct trk_irf *irf;  /**< the integrals (trk_irf_init) */
+    trk_real pd;  /**< detection probability, (0, 1] */
 };
+/** Evaluate q2 at lambda_vg for the struct trk_irf_line ctx (trk_irf_q2). */
 TRK_NODISCARD trk_status trk_irf_line_eval(const void *ctx, trk_real lambda_vg, trk_real *q2);
 
 #endif /* TRK_IRF_H */

@@ -1,4 +1,5 @@
-/* trk/jpda.h - joint association of several tracks on one scan: JPDA and
+/** @file
+ * trk/jpda.h - joint association of several tracks on one scan: JPDA and
  * JIPDA marginals (docs/conventions.md "Joint association (JPDA / JIPDA)").
  *
  * A joint event gives each track at most one of its gated detections and each
@@ -51,71 +52,72 @@
 /* Capacities TRK_JPDA_EXACT_BITS, TRK_JPDA_MAX_WORK, TRK_JPDA_LBP_MAX_ITER,
  * TRK_MAX_GATED_PAIRS: trk/config.h. */
 
-/* One scan's association weights, sparse (the form a tracker has): track t's
+/** One scan's association weights, sparse (the form a tracker has): track t's
  * gated detections are the pairs [first[t], first[t+1]), each with its
  * detection det[k] (strictly increasing within a track, < n_dets) and its
  * ln w_tj = w[k] (finite). n_pairs = first[n_tracks] <= TRK_MAX_GATED_PAIRS.
  * The solver overwrites w (with the scaled linear weights: one exponential
  * per pair, and no copy). */
 struct trk_jpda_pairs {
-    size_t n_tracks;            /* 0 .. TRK_MAX_TRACKS */
-    size_t n_dets;              /* 0 .. TRK_MAX_DETECTIONS */
-    const uint16_t *first;      /* n_tracks + 1 offsets, first[0] = 0 */
-    const uint16_t *det;        /* n_pairs */
-    trk_real *w;                /* n_pairs: in ln w_tj, then overwritten */
-    const trk_real *log_w_miss; /* n_tracks: ln w_t0, finite (psi_t P_D P_G < 1) */
+    size_t n_tracks;            /**< 0 .. TRK_MAX_TRACKS */
+    size_t n_dets;              /**< 0 .. TRK_MAX_DETECTIONS */
+    const uint16_t *first;      /**< n_tracks + 1 offsets, first[0] = 0 */
+    const uint16_t *det;        /**< n_pairs */
+    trk_real *w;                /**< n_pairs: in ln w_tj, then overwritten */
+    const trk_real *log_w_miss; /**< n_tracks: ln w_t0, finite (psi_t P_D P_G < 1) */
 };
 
-/* The solver's caller-owned scratch (uninitialised is fine; nothing persists
+/** The solver's caller-owned scratch (uninitialised is fine; nothing persists
  * between calls): clusters and the exact programme or the LBP sums. */
 struct trk_jpda_solver {
     union {
-        trk_real dp[(size_t)1 << TRK_JPDA_EXACT_BITS]; /* exact: the subset programme */
-        struct {                                       /* LBP, per detection: */
-            trk_real top[TRK_MAX_DETECTIONS];          /* the largest track -> detection message */
-            trk_real rest[TRK_MAX_DETECTIONS];         /* the sum of the others */
+        trk_real dp[(size_t)1 << TRK_JPDA_EXACT_BITS]; /**< exact: the subset programme */
+        struct {                                       /**< LBP, per detection: */
+            trk_real top[TRK_MAX_DETECTIONS];          /**< the largest track -> detection message */
+            trk_real rest[TRK_MAX_DETECTIONS];         /**< the sum of the others */
         } lbp;
-    } u;
-    trk_real miss[TRK_MAX_TRACKS];                /* per track: w_t0 scaled by its largest weight */
-    uint16_t parent[TRK_MAX_TRACKS];              /* union-find over tracks, then each track's cluster */
-    uint16_t tr_first[TRK_MAX_TRACKS + 1];        /* cluster c's tracks: tracks[tr_first[c] ..] */
-    uint16_t det_first[TRK_MAX_TRACKS + 1];       /* and its detections: dets[det_first[c] ..] */
-    uint16_t tracks[TRK_MAX_TRACKS];
-    uint16_t dets[TRK_MAX_DETECTIONS];
-    union {                                       /* per detection: */
-        uint16_t local[TRK_MAX_DETECTIONS];       /* first gating track, then index in its cluster */
-        uint16_t lbp_top[TRK_MAX_DETECTIONS];     /* LBP: the pair of its largest message */
-    } det;
+    } u;  /**< exact programme or LBP sums, per cluster */
+    trk_real miss[TRK_MAX_TRACKS];                /**< per track: w_t0 scaled by its largest weight */
+    uint16_t parent[TRK_MAX_TRACKS];              /**< union-find over tracks, then each track's cluster */
+    uint16_t tr_first[TRK_MAX_TRACKS + 1];        /**< cluster c's tracks: tracks[tr_first[c] ..] */
+    uint16_t det_first[TRK_MAX_TRACKS + 1];       /**< and its detections: dets[det_first[c] ..] */
+    uint16_t tracks[TRK_MAX_TRACKS];  /**< tracks in cluster order */
+    uint16_t dets[TRK_MAX_DETECTIONS];  /**< detections in cluster order */
+    union {                                       /**< per detection: */
+        uint16_t local[TRK_MAX_DETECTIONS];       /**< first gating track, then index in its cluster */
+        uint16_t lbp_top[TRK_MAX_DETECTIONS];     /**< LBP: the pair of its largest message */
+    } det;  /**< per-detection indices */
 };
 
-/* The dense interface's workspace: the solver and the sparse copy of the scan. */
+/** The dense interface's workspace: the solver and the sparse copy of the scan. */
 struct trk_jpda_work {
-    struct trk_jpda_solver solver;
-    uint16_t first[TRK_MAX_TRACKS + 1];
-    uint16_t det[TRK_MAX_GATED_PAIRS];
-    trk_real w[TRK_MAX_GATED_PAIRS];
-    trk_real p_pair[TRK_MAX_GATED_PAIRS];
+    struct trk_jpda_solver solver;  /**< clusters and their solution */
+    uint16_t first[TRK_MAX_TRACKS + 1];  /**< per track: offset of its first pair (sparse copy) */
+    uint16_t det[TRK_MAX_GATED_PAIRS];  /**< per pair: detection index */
+    trk_real w[TRK_MAX_GATED_PAIRS];  /**< per pair: weight */
+    trk_real p_pair[TRK_MAX_GATED_PAIRS];  /**< per pair: association probability */
 };
 
-/* One scan's association weights, dense (the reference vectors' form). */
+/** One scan's association weights, dense (the reference vectors' form). */
 struct trk_jpda_scan {
-    size_t n_tracks;            /* 0 .. TRK_MAX_TRACKS */
-    size_t n_dets;              /* 0 .. TRK_MAX_DETECTIONS */
-    const trk_real *log_w_miss; /* n_tracks: ln w_t0, finite (psi_t P_D P_G < 1) */
-    const trk_real *log_w;      /* n_tracks x n_dets, row-major: ln w_tj; -inf outside the gate */
+    size_t n_tracks;            /**< 0 .. TRK_MAX_TRACKS */
+    size_t n_dets;              /**< 0 .. TRK_MAX_DETECTIONS */
+    const trk_real *log_w_miss; /**< n_tracks: ln w_t0, finite (psi_t P_D P_G < 1) */
+    const trk_real *log_w;      /**< n_tracks x n_dets, row-major: ln w_tj; -inf outside the gate */
 };
 
+/** What one joint-association solution did: clusters and how they were solved. */
 struct trk_jpda_report {
-    size_t n_clusters;      /* clusters with at least one track */
-    size_t n_exact;         /* of which solved exactly */
-    size_t n_approx;        /* of which by loopy belief propagation */
-    size_t largest_tracks;  /* tracks of the largest cluster */
-    size_t largest_dets;    /* gated detections of the largest cluster */
-    int lbp_iterations;     /* most iterations any LBP cluster took */
-    int lbp_converged;      /* 1 when every LBP cluster met its tolerance */
+    size_t n_clusters;      /**< clusters with at least one track */
+    size_t n_exact;         /**< of which solved exactly */
+    size_t n_approx;        /**< of which by loopy belief propagation */
+    size_t largest_tracks;  /**< tracks of the largest cluster */
+    size_t largest_dets;    /**< gated detections of the largest cluster */
+    int lbp_iterations;     /**< most iterations any LBP cluster took */
+    int lbp_converged;      /**< 1 when every LBP cluster met its tolerance */
 };
 
-/* Marginal association probabilities of every gated pair and track, from
+/** Marginal association probabilities of every gated pair and track, from
  * the sparse weights: p_pair[k] = P(t <- det[k]) for pair k of track t,
  * p_miss[t] = P(t <- none); each track's values sum to 1. rep may be NULL.
  * TRK_E_ARG NULL pointer (arrays may be NULL when their length is 0), or
@@ -128,7 +130,7 @@ struct trk_jpda_report {
 TRK_NODISCARD trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_solver *solver,
                                         trk_real *p_pair, trk_real *p_miss, struct trk_jpda_report *rep);
 
-/* Marginal association probabilities of every track:
+/** Marginal association probabilities of every track:
  *   p_assoc[t * n_dets + j] = P(t <- j)   (0 outside t's gate)
  *   p_miss[t]               = P(t <- none)
  * rep may be NULL. TRK_E_ARG NULL pointer (arrays may be NULL when their
@@ -140,7 +142,7 @@ TRK_NODISCARD trk_status trk_jpda_marginals(const struct trk_jpda_scan *scan, st
                                             trk_real *p_assoc, trk_real *p_miss,
                                             struct trk_jpda_report *rep);
 
-/* One track's row of the scan weights from its predicted measurement:
+/** One track's row of the scan weights from its predicted measurement:
  * log_w_row[j] = ln psi + ln(P_D N(nu_j; 0, S) l^a(a_j)) - ln lambda for the
  * detections in the gate (d2 <= gamma), -inf outside; *log_w_miss =
  * ln(1 - P_D P_G psi); d2 (n_dets outputs, may be NULL). pda gives P_D, P_G,
@@ -152,7 +154,7 @@ TRK_NODISCARD trk_status trk_jpda_track_weights(const struct trk_pda *pda, trk_r
                                                 const trk_real *z, const trk_real *log_lr, trk_real *log_w_row,
                                                 trk_real *log_w_miss, trk_real *d2);
 
-/* JIPDA posterior existence and the weights of the state update, conditional
+/** JIPDA posterior existence and the weights of the state update, conditional
  * on existence, for one track (docs/conventions.md):
  *   psi' = sum_j P(t <- j) + P(t <- none) psi (1 - P_D P_G) / (1 - P_D P_G psi)
  *   beta_j = P(t <- j) / psi',  beta_0 = P(t <- none) psi (1 - P_D P_G) / (1 - P_D P_G psi) / psi'

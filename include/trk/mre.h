@@ -1,4 +1,5 @@
-/* trk/mre.h - modified Riccati equation (MRE) of the PDAF / PDAFAI, its
+/** @file
+ * trk/mre.h - modified Riccati equation (MRE) of the PDAF / PDAFAI, its
  * steady state, the steady-state position RMSE, and the tracking operating
  * characteristic (TOC): the RMSE along a ROC and the false-alarm probability
  * that minimises it.
@@ -32,56 +33,58 @@
 #include "trk/q2.h"
 #include "trk/types.h"
 
+/** Largest state dimension (2 nz). */
 #define TRK_MRE_MAX_NX 4
 
+/** The model of the modified Riccati equation: constant velocity in nz coordinates, PDA gate and clutter, q2 from a function. */
 struct trk_mre_params {
-    int nz;                    /* 1 or 2 position coordinates */
-    trk_real dt_s;             /* scan interval T > 0 */
-    trk_real q_m2_per_s3;      /* process noise PSD q~ > 0 (m^2/s^3, docs/conventions.md) */
-    trk_real r_m2;             /* measurement noise variance r > 0 (R = r I) */
-    trk_real gate_prob;        /* P_G in (0, 1): gamma and V_G (unless gate_gamma > 0) */
-    trk_real gate_gamma;       /* > 0: the gate threshold on d2 itself (Brekke's g^2,
+    int nz;                    /**< 1 or 2 position coordinates */
+    trk_real dt_s;             /**< scan interval T > 0 */
+    trk_real q_m2_per_s3;      /**< process noise PSD q~ > 0 (m^2/s^3, docs/conventions.md) */
+    trk_real r_m2;             /**< measurement noise variance r > 0 (R = r I) */
+    trk_real gate_prob;        /**< P_G in (0, 1): gamma and V_G (unless gate_gamma > 0) */
+    trk_real gate_gamma;       /**< > 0: the gate threshold on d2 itself (Brekke's g^2,
                                   e.g. 36; a P_G of 1 - 1.5e-8 is 1.0f in float);
                                   0: gamma from gate_prob */
-    trk_real clutter_density;  /* lambda >= 0 per m^nz (only enters lambda_vg) */
-    trk_real q2;               /* constant q2 in (0, 1], used when q2_fn == NULL */
-    trk_q2_fn q2_fn;           /* or: q2 looked up at lambda_vg each step */
-    const void *q2_ctx;        /* ctx of q2_fn (e.g. struct trk_q2_line) */
-    int max_iter;              /* steady-state iteration cap; 0: 100000 */
-    trk_real rel_tol;          /* convergence: estimated distance to the fixed point
+    trk_real clutter_density;  /**< lambda >= 0 per m^nz (only enters lambda_vg) */
+    trk_real q2;               /**< constant q2 in (0, 1], used when q2_fn == NULL */
+    trk_q2_fn q2_fn;           /**< or: q2 looked up at lambda_vg each step */
+    const void *q2_ctx;        /**< ctx of q2_fn (e.g. struct trk_q2_line) */
+    int max_iter;              /**< steady-state iteration cap; 0: 100000 */
+    trk_real rel_tol;          /**< convergence: estimated distance to the fixed point
                                   (last change x max(1, r/(1-r)), r the contraction
                                   rate) <= rel_tol max|P|; 0: 64 eps */
-    trk_real max_pos_var_m2;   /* divergence: position variance above this while its
+    trk_real max_pos_var_m2;   /**< divergence: position variance above this while its
                                   growth accelerates (20 steps); 0: 1e4 times the
                                   largest of nz r, nz q T^3/3 and the initial one */
 };
 
-/* Validated model and derived constants (init once, then read-only). */
+/** Validated model and derived constants (init once, then read-only). */
 struct trk_mre {
-    struct trk_mre_params params;
-    int nx;                                     /* 2 nz */
-    trk_real f[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];
-    trk_real q[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];
-    trk_real gamma;                             /* gate threshold on d2 */
+    struct trk_mre_params params;  /**< as given to trk_mre_init */
+    int nx;                                     /**< 2 nz */
+    trk_real f[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];  /**< transition matrix F (nx x nx) */
+    trk_real q[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];  /**< process noise covariance Q (nx x nx) */
+    trk_real gamma;                             /**< gate threshold on d2 */
 };
 
-/* TRK_E_ARG NULL / nz not 1 or 2 / negative max_iter / q2 not given,
+/** TRK_E_ARG NULL / nz not 1 or 2 / negative max_iter / q2 not given,
  * TRK_E_NAN non-finite parameter, TRK_E_RANGE a parameter outside its range.
  * *m untouched on error. */
 TRK_NODISCARD trk_status trk_mre_init(struct trk_mre *m, const struct trk_mre_params *params);
 
-/* Two-point-differencing initial covariance (per coordinate
+/** Two-point-differencing initial covariance (per coordinate
  * [[r, r/T], [r/T, 2r/T^2]]), the default start of the iteration. */
 void trk_mre_initial_cov(const struct trk_mre *m, trk_real *p);
 
-/* What one step used. */
+/** What one step used. */
 struct trk_mre_step_info {
-    trk_real s[4];        /* S (nz x nz) of this step */
-    trk_real lambda_vg;   /* lambda V_G at this S */
-    trk_real q2;          /* q2 used */
+    trk_real s[4];        /**< S (nz x nz) of this step */
+    trk_real lambda_vg;   /**< lambda V_G at this S */
+    trk_real q2;          /**< q2 used */
 };
 
-/* One MRE step in place: p (nx x nx) holds P_{k-1} on entry and P_k on
+/** One MRE step in place: p (nx x nx) holds P_{k-1} on entry and P_k on
  * return. info may be NULL. TRK_E_ARG NULL, TRK_E_NOT_SPD S not positive
  * definite, TRK_E_NAN non-finite result, TRK_E_RANGE a q2_fn value outside
  * [0, 1] (0: the scan carries no information), or any status of q2_fn (e.g.
@@ -89,17 +92,18 @@ struct trk_mre_step_info {
 TRK_NODISCARD trk_status trk_mre_step(const struct trk_mre *m, trk_real *p,
                                       struct trk_mre_step_info *info);
 
+/** The steady state of the modified Riccati equation (trk_mre_steady_state). */
 struct trk_mre_result {
-    int nx;                                        /* 2 nz */
-    trk_real p[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];   /* steady-state E[P_k|k] */
-    trk_real s[4];                                 /* steady-state S (nz x nz) */
-    trk_real lambda_vg;                            /* lambda V_G at that S */
-    trk_real q2;                                   /* q2 at that S */
-    trk_real rmse_m;                               /* sqrt(P11 + P22) (eq 35) */
-    int iterations;
+    int nx;                                        /**< 2 nz */
+    trk_real p[TRK_MRE_MAX_NX * TRK_MRE_MAX_NX];   /**< steady-state E[P_k|k] */
+    trk_real s[4];                                 /**< steady-state S (nz x nz) */
+    trk_real lambda_vg;                            /**< lambda V_G at that S */
+    trk_real q2;                                   /**< q2 at that S */
+    trk_real rmse_m;                               /**< sqrt(P11 + P22) (eq 35) */
+    int iterations;  /**< steps to convergence */
 };
 
-/* Iterate the MRE to its steady state from p0 (nx x nx, SPD, or all zero:
+/** Iterate the MRE to its steady state from p0 (nx x nx, SPD, or all zero:
  * P_0 = 0, the first prediction is Q; NULL: the two-point-differencing
  * covariance). TRK_OK with *res filled; TRK_E_DIVERGED
  * when the position variance exceeds max_pos_var_m2 with accelerating growth
@@ -112,7 +116,7 @@ struct trk_mre_result {
 TRK_NODISCARD trk_status trk_mre_steady_state(const struct trk_mre *m, const trk_real *p0,
                                               struct trk_mre_result *res);
 
-/* Position RMSE sqrt(P11 + P22) (Brekke eq 35) of a CV covariance with nz
+/** Position RMSE sqrt(P11 + P22) (Brekke eq 35) of a CV covariance with nz
  * position coordinates (indices 0 and 2 of [x, vx, y, vy]); NaN for bad nz. */
 trk_real trk_mre_rmse(int nz, const trk_real *p);
 

@@ -1,4 +1,5 @@
-/* trk/pda.h - probabilistic data association update (PDAF, and PDAFAI when
+/** @file
+ * trk/pda.h - probabilistic data association update (PDAF, and PDAFAI when
  * each detection carries an amplitude log-likelihood ratio).
  *
  * docs/conventions.md "PDA" (Bar-Shalom's standard form; Brekke eqs 21-25):
@@ -25,47 +26,50 @@
 #include "trk/kalman.h"
 #include "trk/types.h"
 
+/** How the clutter density lambda of an update is found. */
 enum trk_clutter_mode {
-    TRK_CLUTTER_PARAMETRIC = 0,    /* lambda given */
-    TRK_CLUTTER_NONPARAMETRIC = 1  /* lambda = m_G / V_G */
+    TRK_CLUTTER_PARAMETRIC = 0,    /**< lambda given */
+    TRK_CLUTTER_NONPARAMETRIC = 1  /**< lambda = m_G / V_G */
 };
 
+/** Parameters of a PDA update. */
 struct trk_pda_params {
-    int nz;                         /* measurement dimension, 1..TRK_MAX_MEAS */
-    trk_real pd;                    /* detection probability, (0, 1] */
-    trk_real gate_prob;             /* P_G, (0, 1) */
-    enum trk_clutter_mode clutter;
-    trk_real clutter_density;       /* lambda per m^nz, >= 0 (parametric only) */
-    int gating;                     /* 1: only d2 <= gamma; 0: include all */
+    int nz;                         /**< measurement dimension, 1..TRK_MAX_MEAS */
+    trk_real pd;                    /**< detection probability, (0, 1] */
+    trk_real gate_prob;             /**< P_G, (0, 1) */
+    enum trk_clutter_mode clutter;  /**< parametric (clutter_density) or nonparametric (m_G / V_G) */
+    trk_real clutter_density;       /**< lambda per m^nz, >= 0 (parametric only) */
+    int gating;                     /**< 1: only d2 <= gamma; 0: include all */
 };
 
-/* Validated parameters and the constants derived from them (init once). */
+/** Validated parameters and the constants derived from them (init once). */
 struct trk_pda {
-    struct trk_pda_params params;
-    trk_real gamma;        /* gate threshold on d2 */
-    trk_real log_pd_norm;  /* ln P_D - (nz/2) ln 2 pi */
-    trk_real log_miss;     /* ln(1 - P_D P_G) (-inf when P_D P_G = 1) */
-    trk_real log_e0_param; /* ln lambda + log_miss for parametric clutter */
+    struct trk_pda_params params;  /**< as given to trk_pda_init */
+    trk_real gamma;        /**< gate threshold on d2 */
+    trk_real log_pd_norm;  /**< ln P_D - (nz/2) ln 2 pi */
+    trk_real log_miss;     /**< ln(1 - P_D P_G) (-inf when P_D P_G = 1) */
+    trk_real log_e0_param; /**< ln lambda + log_miss for parametric clutter */
 };
 
-/* Check params as trk_pda_init does, without building anything. On a
+/** Check params as trk_pda_init does, without building anything. On a
  * refusal *field (if field is not NULL) names the refused member: "nz",
  * "clutter", "gating", "pd", "gate_prob" or "clutter_density" ("params" for
  * a NULL params); NULL on success. Statuses as trk_pda_init. */
 TRK_NODISCARD trk_status trk_pda_check_params(const struct trk_pda_params *params, const char **field);
 
-/* TRK_E_ARG bad pointer/nz/enum, TRK_E_NAN non-finite, TRK_E_RANGE a
+/** TRK_E_ARG bad pointer/nz/enum, TRK_E_NAN non-finite, TRK_E_RANGE a
  * probability or density outside its range. *pda untouched on error. */
 TRK_NODISCARD trk_status trk_pda_init(struct trk_pda *pda, const struct trk_pda_params *params);
 
+/** What one PDA update found (optional output of trk_pda_update). */
 struct trk_pda_report {
-    trk_real beta0;        /* probability that no detection is the target's */
-    int n_gated;           /* detections with d2 <= gamma */
-    trk_real gate_volume;  /* V_G of this update */
-    trk_real lambda;       /* clutter density used */
+    trk_real beta0;        /**< probability that no detection is the target's */
+    int n_gated;           /**< detections with d2 <= gamma */
+    trk_real gate_volume;  /**< V_G of this update */
+    trk_real lambda;       /**< clutter density used */
 };
 
-/* One PDA update of (x, P), given the predicted state and covariance (in;
+/** One PDA update of (x, P), given the predicted state and covariance (in;
  * P symmetric, as every covariance: trk_cv2_predict and trk_kalman_predict
  * keep it exactly so) and m detections z (m x nz, row-major). Writes the
  * posterior into x and P.
@@ -97,7 +101,7 @@ TRK_NODISCARD trk_status trk_pda_update(const struct trk_pda *pda, int nx, const
                                         const trk_real *z, const trk_real *log_lr, trk_real *beta,
                                         trk_real *d2, struct trk_pda_report *rep);
 
-/* The same with the innovation of the prediction already computed (by
+/** The same with the innovation of the prediction already computed (by
  * trk_kalman_innovation from this x, P, h and r, e.g. for gating or to draw
  * clutter in the gate first): *inn is used as given, not recomputed.
  * TRK_E_ARG also for inn NULL or inn->nz other than the PDA's nz. */
@@ -107,7 +111,7 @@ TRK_NODISCARD trk_status trk_pda_update_inn(const struct trk_pda *pda, int nx, c
                                             const trk_real *z, const trk_real *log_lr, trk_real *beta,
                                             trk_real *d2, struct trk_pda_report *rep);
 
-/* The state update of the PDA with association weights given by the caller
+/** The state update of the PDA with association weights given by the caller
  * (e.g. the conditional weights of joint association, trk/jpda.h):
  * beta[0] = beta_0 (no detection is the target's), beta[1..m] for the m
  * detections z (m x nz), summing to 1 (within 1e-3); inn the innovation of

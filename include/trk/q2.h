@@ -1,4 +1,5 @@
-/* trk/q2.h - lookup of the information-reduction factor q2 on a grid of
+/** @file
+ * trk/q2.h - lookup of the information-reduction factor q2 on a grid of
  * precomputed values, and receiver operating characteristics (ROC) as inputs
  * of the tracking operating characteristic (TOC, trk/mre.h).
  *
@@ -69,61 +70,64 @@
 #include "trk/table.h"
 #include "trk/types.h"
 
+/** Largest number of axes of a q2 grid (PDAFAI: snr_db, pfa, lambda_vg). */
 #define TRK_Q2_MAX_AXES 3
-/* Largest noise gain sum|w| of one axis's interpolation weights (see above). */
+/** Largest noise gain sum|w| of one axis's interpolation weights (see above). */
 #define TRK_Q2_MAX_AXIS_GAIN TRK_REAL_C(3.0)
 
+/** The detector a q2 grid describes; its axes, in order. */
 enum trk_q2_detector {
-    TRK_Q2_PDAF = 1,   /* axes (pd, lambda_vg) */
-    TRK_Q2_PDAFAI = 2  /* axes (snr_db, pfa, lambda_vg) */
+    TRK_Q2_PDAF = 1,   /**< axes (pd, lambda_vg) */
+    TRK_Q2_PDAFAI = 2  /**< axes (snr_db, pfa, lambda_vg) */
 };
 
+/** Interpolation along one axis of a q2 grid (see above). */
 enum trk_q2_interp {
     TRK_Q2_LINEAR = 0,
     TRK_Q2_CUBIC = 1
 };
 
-/* One axis of a grid. Either explicit nodes (`nodes` != NULL, `count`
+/** One axis of a grid. Either explicit nodes (`nodes` != NULL, `count`
  * strictly increasing values of u) or a uniform grid in u (`nodes` == NULL:
  * count nodes from u_first to u_last). u = ln(x) when log_spacing is 1. */
 struct trk_q2_axis {
-    size_t count;            /* >= 1 */
-    const trk_real *nodes;   /* count values of u, or NULL (uniform) */
-    trk_real u_first;        /* uniform axes only */
-    trk_real u_last;         /* uniform axes only, > u_first when count > 1 */
-    int log_spacing;         /* 1: u = ln(x) (x > 0); 0: u = x */
-    int interp;              /* enum trk_q2_interp */
+    size_t count;            /**< >= 1 */
+    const trk_real *nodes;   /**< count values of u, or NULL (uniform) */
+    trk_real u_first;        /**< uniform axes only */
+    trk_real u_last;         /**< uniform axes only, > u_first when count > 1 */
+    int log_spacing;         /**< 1: u = ln(x) (x > 0); 0: u = x */
+    int interp;              /**< enum trk_q2_interp */
 };
 
-/* The grid: axes in the detector's order, values row-major with the last axis
+/** The grid: axes in the detector's order, values row-major with the last axis
  * (lambda_vg) fastest: cell (i0, i1[, i2]) is number c = (i0 * count1 + i1) * count2 + i2
  * and its value is values[c * value_stride] (value_stride 0 means 1; a q2
  * table stores (q2, se) pairs: value_stride 2). */
 struct trk_q2_grid {
-    int detector;                             /* enum trk_q2_detector */
-    struct trk_q2_axis axis[TRK_Q2_MAX_AXES]; /* 2 (PDAF) or 3 (PDAFAI) used */
-    const trk_real *values;                   /* prod(count) values in [0, 1] */
-    size_t value_stride;                      /* 0 or 1: contiguous; k: every k-th real */
+    int detector;                             /**< enum trk_q2_detector */
+    struct trk_q2_axis axis[TRK_Q2_MAX_AXES]; /**< 2 (PDAF) or 3 (PDAFAI) used */
+    const trk_real *values;                   /**< prod(count) values in [0, 1] */
+    size_t value_stride;                      /**< 0 or 1: contiguous; k: every k-th real */
 };
 
-/* A validated grid (initialise with trk_q2_lookup_init or
+/** A validated grid (initialise with trk_q2_lookup_init or
  * trk_q2_lookup_init_table, then read-only; one lookup object may be shared
  * by any number of readers). The documented fields may be read. */
 struct trk_q2_lookup {
-    struct trk_q2_grid grid;
-    int n_axes;
-    size_t stride[TRK_Q2_MAX_AXES];  /* in reals, value_stride included */
+    struct trk_q2_grid grid;  /**< the grid as given (the table's view for trk_q2_lookup_init_table) */
+    int n_axes;  /**< 2 (PDAF) or 3 (PDAFAI) */
+    size_t stride[TRK_Q2_MAX_AXES];  /**< in reals, value_stride included */
     /* what the q2 values are for: from a table's parameters
      * (trk_q2_lookup_init_table); 0 when unknown (trk_q2_lookup_init) */
-    int nz;                          /* measurement dimension */
-    trk_real gate_gamma;             /* gate threshold on d2 */
-    trk_real gate_prob;              /* P_G = P(chi2(nz) <= gate_gamma) */
-    int amp_model;                   /* PDAFAI: enum trk_amp_model (trk/amplitude.h) */
-    trk_real nu;                     /* PDAFAI, K clutter: shape (Rayleigh: 0) */
-    trk_real max_se;                 /* largest per-cell standard error of the values */
+    int nz;                          /**< measurement dimension */
+    trk_real gate_gamma;             /**< gate threshold on d2 */
+    trk_real gate_prob;              /**< P_G = P(chi2(nz) <= gate_gamma) */
+    int amp_model;                   /**< PDAFAI: enum trk_amp_model (trk/amplitude.h) */
+    trk_real nu;                     /**< PDAFAI, K clutter: shape (Rayleigh: 0) */
+    trk_real max_se;                 /**< largest per-cell standard error of the values */
 };
 
-/* Validate *grid and make *q a lookup over it (the arrays are referenced, not
+/** Validate *grid and make *q a lookup over it (the arrays are referenced, not
  * copied: they must outlive q). Checks: pointers, detector, counts >= 1,
  * axes finite and strictly increasing (a log axis: u = ln x with x in the
  * axis' domain: pd in (0, 1], pfa in (0, 1), lambda_vg > 0; snr_db finite),
@@ -159,10 +163,12 @@ TRK_NODISCARD trk_status trk_q2_lookup_init(struct trk_q2_lookup *q, const struc
  *     (a log axis is uniform in u = ln x, an explicit one lists x = u).
  * The lookup is a view on the table's bytes (no copy): the table must outlive it.
  */
+/** Version of the q2 section layout in a table file; another version is refused. */
 #define TRK_Q2_TABLE_VERSION 1u
+/** Section id of a q2 table's values. */
 #define TRK_Q2_SECTION_VALUES 1u
 
-/* Make *q a lookup over a parsed q2 table (trk_table_parse) of the given
+/** Make *q a lookup over a parsed q2 table (trk_table_parse) of the given
  * detector and measurement dimension nz. Checks, with *q untouched on error:
  * TRK_E_ARG NULL pointer, detector not PDAF/PDAFAI or nz outside 1..3;
  * TRK_E_TABLE_KIND a table of another kind (e.g. an amplitude table, or a
@@ -175,71 +181,73 @@ TRK_NODISCARD trk_status trk_q2_lookup_init(struct trk_q2_lookup *q, const struc
 TRK_NODISCARD trk_status trk_q2_lookup_init_table(struct trk_q2_lookup *q, const struct trk_table *t,
                                                   int detector, int nz);
 
-/* q2 at physical coordinates x[0..n_axes) (detector's axis order).
+/** q2 at physical coordinates x[0..n_axes) (detector's axis order).
  * TRK_E_ARG NULL, TRK_E_NAN non-finite coordinate, TRK_E_RANGE coordinate
  * outside its axis (or <= 0 on a log axis). *q2 untouched on error. */
 TRK_NODISCARD trk_status trk_q2_lookup_eval(const struct trk_q2_lookup *q, const trk_real *x,
                                             trk_real *q2);
 
-/* Typed entry points: TRK_E_TABLE_KIND when q is a grid of the other detector. */
+/** @{ */
+/** Typed entry points: TRK_E_TABLE_KIND when q is a grid of the other detector. */
 TRK_NODISCARD trk_status trk_q2_pdaf(const struct trk_q2_lookup *q, trk_real pd,
                                      trk_real lambda_vg, trk_real *q2);
 TRK_NODISCARD trk_status trk_q2_pdafai(const struct trk_q2_lookup *q, trk_real snr_db,
                                        trk_real pfa, trk_real lambda_vg, trk_real *q2);
+                                       /** @} */
 
 /* ---- q2 as a function of lambda_vg (the MRE's input, trk/mre.h) ---- */
 
-/* q2 at lambda_vg; ctx is the function's own data. Returns a status. */
+/** q2 at lambda_vg; ctx is the function's own data. Returns a status. */
 typedef trk_status (*trk_q2_fn)(const void *ctx, trk_real lambda_vg, trk_real *q2);
 
-/* A grid with every axis but lambda_vg fixed: PDAF at one pd, or PDAFAI at
+/** A grid with every axis but lambda_vg fixed: PDAF at one pd, or PDAFAI at
  * one (snr_db, pfa). Use as the ctx of trk_q2_line_eval. */
 struct trk_q2_line {
-    const struct trk_q2_lookup *lookup;
-    trk_real fixed[TRK_Q2_MAX_AXES - 1];  /* PDAF: {pd}; PDAFAI: {snr_db, pfa} */
+    const struct trk_q2_lookup *lookup;  /**< the grid, shared */
+    trk_real fixed[TRK_Q2_MAX_AXES - 1];  /**< PDAF: {pd}; PDAFAI: {snr_db, pfa} */
 };
 
-/* trk_q2_fn over a struct trk_q2_line (ctx). Statuses of trk_q2_lookup_eval. */
+/** trk_q2_fn over a struct trk_q2_line (ctx). Statuses of trk_q2_lookup_eval. */
 TRK_NODISCARD trk_status trk_q2_line_eval(const void *ctx, trk_real lambda_vg, trk_real *q2);
 
 /* ---- ROC and q2 along it (the TOC's input, trk/mre.h) ---- */
 
-/* Detection probability at the threshold with false-alarm probability pfa.
+/** Detection probability at the threshold with false-alarm probability pfa.
  * The amplitude module provides these for Rayleigh and K clutter; a
  * tabulated ROC is below. */
 typedef trk_status (*trk_roc_fn)(const void *ctx, trk_real pfa, trk_real *pd);
 
-/* Tabulated ROC: n >= 2 points, pfa strictly increasing in (0, 1), pd in
+/** Tabulated ROC: n >= 2 points, pfa strictly increasing in (0, 1), pd in
  * (0, 1]; interpolated linearly in (ln pfa, ln pd) (exact for Rayleigh
  * clutter, where pd = pfa^(1/(1+SNR))). Outside [pfa[0], pfa[n-1]]:
  * TRK_E_RANGE. The arrays are referenced, not copied. */
 struct trk_roc_table {
-    size_t n;
-    const trk_real *pfa;
-    const trk_real *pd;
+    size_t n;  /**< points, >= 2 */
+    const trk_real *pfa;  /**< n false-alarm probabilities, strictly increasing in (0, 1) */
+    const trk_real *pd;  /**< n detection probabilities in (0, 1] */
 };
 
-/* trk_roc_fn over a struct trk_roc_table (ctx). TRK_E_ARG NULL or n < 2,
+/** trk_roc_fn over a struct trk_roc_table (ctx). TRK_E_ARG NULL or n < 2,
  * TRK_E_NAN non-finite pfa, TRK_E_RANGE pfa outside the table,
  * TRK_E_TABLE_CORRUPT a table entry out of its domain. */
 TRK_NODISCARD trk_status trk_roc_table_eval(const void *ctx, trk_real pfa, trk_real *pd);
 
-/* q2 of a detector operated at false-alarm probability pfa, as a function
+/** q2 of a detector operated at false-alarm probability pfa, as a function
  * of lambda_vg. ctx is the function's own data. */
 typedef trk_status (*trk_q2_pfa_fn)(const void *ctx, trk_real pfa, trk_real lambda_vg,
                                     trk_real *q2);
 
-/* The usual trk_q2_pfa_fn: for a PDAF grid, pd = roc(pfa) then q2(pd,
+/** The usual trk_q2_pfa_fn: for a PDAF grid, pd = roc(pfa) then q2(pd,
  * lambda_vg); for a PDAFAI grid, q2(snr_db, pfa, lambda_vg) (the grid's pd
  * already follows the ROC; roc is not used and may be NULL). */
 struct trk_q2_roc {
-    const struct trk_q2_lookup *lookup;
-    trk_roc_fn roc;          /* PDAF only */
-    const void *roc_ctx;
-    trk_real snr_db;         /* PDAFAI only */
+    const struct trk_q2_lookup *lookup;  /**< the grid, shared */
+    trk_roc_fn roc;          /**< PDAF only */
+    const void *roc_ctx;  /**< the roc's ctx (PDAF only) */
+    trk_real snr_db;         /**< PDAFAI only */
 };
 
-/* trk_q2_pfa_fn over a struct trk_q2_roc (ctx). TRK_E_ARG NULL (or no roc for
+/** trk_q2_pfa_fn over a struct trk_q2_roc (ctx). TRK_E_ARG NULL (or no roc for
  * a PDAF grid), plus the statuses of the roc and of trk_q2_lookup_eval. */
 TRK_NODISCARD trk_status trk_q2_roc_eval(const void *ctx, trk_real pfa, trk_real lambda_vg,
                                          trk_real *q2);

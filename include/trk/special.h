@@ -1,4 +1,5 @@
-/* trk/special.h - special functions the library needs at run time:
+/** @file
+ * trk/special.h - special functions the library needs at run time:
  * chi-square distribution for integer degrees of freedom, F distribution for
  * even degrees of freedom.
  *
@@ -10,17 +11,20 @@
 
 #include "trk/types.h"
 
-/* P(chi2(dof) <= x) and P(chi2(dof) > x), dof >= 1, x >= 0.
+/** @{ */
+/** P(chi2(dof) <= x) and P(chi2(dof) > x), dof >= 1, x >= 0.
  * Return NaN for dof < 1, x < 0 or x NaN. */
 trk_real trk_chi2_cdf(int dof, trk_real x);
 trk_real trk_chi2_sf(int dof, trk_real x);
+/** @} */
 
-/* x with P(chi2(dof) <= x) = p, 0 < p < 1 (safeguarded Newton on the smaller
+/** x with P(chi2(dof) <= x) = p, 0 < p < 1 (safeguarded Newton on the smaller
  * tail in log space). TRK_E_RANGE for p outside (0,1), TRK_E_ARG for dof < 1
  * or dof > 1000. */
 TRK_NODISCARD trk_status trk_chi2_inv(int dof, trk_real p, trk_real *x);
 
-/* F distribution with EVEN degrees of freedom (the F of Kennedy's clutter
+/** @{ */
+/** F distribution with EVEN degrees of freedom (the F of Kennedy's clutter
  * amplitude test: dof1 = 2K, dof2 = 2 sum N_k). With a = dof2/2, b = dof1/2,
  * x = dof2 / (dof2 + dof1 z) and n = a + b - 1:
  *   P(F >= z) = P(Binomial(n, x) >= a) = sum_{m<b} C(n,m) (1-x)^m x^(n-m)
@@ -37,8 +41,9 @@ TRK_NODISCARD trk_status trk_chi2_inv(int dof, trk_real p, trk_real *x);
  * sf 0, cdf 1. */
 trk_real trk_f_sf(int dof1, int dof2, trk_real z);
 trk_real trk_f_cdf(int dof1, int dof2, trk_real z);
+/** @} */
 
-/* z with P(F(dof1, dof2) >= z) = p_upper, 0 < p_upper < 1 (even dof as above;
+/** z with P(F(dof1, dof2) >= z) = p_upper, 0 < p_upper < 1 (even dof as above;
  * closed form for dof1 = 2, else safeguarded Newton on ln P(F >= e^u)).
  * TRK_E_ARG NULL or bad dof, TRK_E_RANGE p_upper outside (0, 1),
  * TRK_E_DIVERGED no convergence (not seen). */

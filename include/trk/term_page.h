@@ -1,4 +1,5 @@
-/* trk/term_page.h - Page (CUSUM) track termination for a target with
+/** @file
+ * trk/term_page.h - Page (CUSUM) track termination for a target with
  * fluctuating SNR (Blanding et al. 2007 eqs 5-10; Willett II.C eqs 58-64;
  * docs/conventions.md "Track confirmation and termination", Page).
  *
@@ -27,39 +28,40 @@
 #include "trk/hmm_detect.h"
 #include "trk/types.h"
 
+/** Parameters of Page's test. */
 struct trk_page_params {
-    struct trk_hmm_params hmm; /* detection model of a present target and
+    struct trk_hmm_params hmm; /**< detection model of a present target and
                                   its event model (hmm.events) */
-    trk_real h;                /* threshold on c, > 0 */
+    trk_real h;                /**< threshold on c, > 0 */
 };
 
-/* Shared, read-only after init. */
+/** Shared, read-only after init. */
 struct trk_page_model {
-    struct trk_hmm_model hmm;
-    trk_real h;
+    struct trk_hmm_model hmm;  /**< detection model (from the parameters) */
+    trk_real h;  /**< threshold on c (from the parameters) */
 };
 
-/* Per track. */
+/** Per track. */
 struct trk_page {
-    struct trk_hmm_state hmm;
-    trk_real stat;   /* c_t (0 before the first look) */
-    trk_real s;      /* increment of the latest look */
-    uint32_t t;      /* looks so far */
-    int fire;        /* c_t > h at the latest look */
-    enum trk_decision decision; /* sticky: CONTINUE or TERMINATE */
+    struct trk_hmm_state hmm;  /**< HMM posteriors */
+    trk_real stat;   /**< c_t (0 before the first look) */
+    trk_real s;      /**< increment of the latest look */
+    uint32_t t;      /**< looks so far */
+    int fire;        /**< c_t > h at the latest look */
+    enum trk_decision decision; /**< sticky: CONTINUE or TERMINATE */
 };
 
-/* TRK_E_ARG NULL or unknown hmm.events, TRK_E_NAN non-finite parameter,
+/** TRK_E_ARG NULL or unknown hmm.events, TRK_E_NAN non-finite parameter,
  * TRK_E_RANGE h <= 0 or a model probability out of range, TRK_E_CAPACITY
  * too many sensors. *m untouched on error. */
 TRK_NODISCARD trk_status trk_page_model_init(struct trk_page_model *m,
                                              const struct trk_page_params *p);
 
-/* Start state of a new track: c = 0, no look, no decision. Does nothing when
+/** Start state of a new track: c = 0, no look, no decision. Does nothing when
  * m or s is NULL. */
 void trk_page_reset(const struct trk_page_model *m, struct trk_page *s);
 
-/* One look of `sensor`: detected 1 when the gate held a detection, 0 when
+/** One look of `sensor`: detected 1 when the gate held a detection, 0 when
  * not; pfa the gate's false-alarm probability (Blanding eq 4). Writes the
  * (sticky) decision to *decision. TRK_E_ARG NULL m, s or decision,
  * TRK_E_RANGE detected not 0 or 1, TRK_E_NAN / TRK_E_RANGE pfa not in
@@ -68,7 +70,7 @@ TRK_NODISCARD trk_status trk_page_step(const struct trk_page_model *m, struct tr
                                        unsigned sensor, int detected, trk_real pfa,
                                        enum trk_decision *decision);
 
-/* One step with a given increment s = ln f0 - ln f1 (e.g. a likelihood ratio
+/** One step with a given increment s = ln f0 - ln f1 (e.g. a likelihood ratio
  * that also uses amplitude); the HMM state is not touched. TRK_E_ARG NULL,
  * TRK_E_NAN s not finite; *s and *decision untouched on error. */
 TRK_NODISCARD trk_status trk_page_step_llr(const struct trk_page_model *m, struct trk_page *s,

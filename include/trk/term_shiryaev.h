@@ -1,4 +1,5 @@
-/* trk/term_shiryaev.h - Shiryaev (Bayesian quickest detection) track
+/** @file
+ * trk/term_shiryaev.h - Shiryaev (Bayesian quickest detection) track
  * termination with the fluctuating-SNR detection model (Blanding et al. 2007
  * eqs 11-14; Willett II.C eqs 65-68; docs/conventions.md "Track confirmation and
  * termination", Shiryaev).
@@ -26,52 +27,53 @@
 #include "trk/hmm_detect.h"
 #include "trk/types.h"
 
+/** Parameters of the Shiryaev test. */
 struct trk_shiryaev_params {
-    struct trk_hmm_params hmm; /* detection model of a present target and
+    struct trk_hmm_params hmm; /**< detection model of a present target and
                                   its event model (hmm.events) */
-    trk_real beta0;            /* P(change before the first look), (0, 1) */
-    trk_real rho;              /* per-look change probability, [0, 1) */
-    trk_real h;                /* threshold on the log-odds g, finite */
+    trk_real beta0;            /**< P(change before the first look), (0, 1) */
+    trk_real rho;              /**< per-look change probability, [0, 1) */
+    trk_real h;                /**< threshold on the log-odds g, finite */
 };
 
-/* Shared, read-only after init. */
+/** Shared, read-only after init. */
 struct trk_shiryaev_model {
-    struct trk_hmm_model hmm;
-    trk_real h;
-    trk_real g0;          /* ln(beta0 / (1 - beta0)) (eq 13 at k = 0) */
-    trk_real log_rho;     /* ln rho (unused when rho = 0) */
-    trk_real log1m_rho;   /* ln(1 - rho) */
-    int rho_zero;
+    struct trk_hmm_model hmm;  /**< detection model (from the parameters) */
+    trk_real h;  /**< threshold on g (from the parameters) */
+    trk_real g0;          /**< ln(beta0 / (1 - beta0)) (eq 13 at k = 0) */
+    trk_real log_rho;     /**< ln rho (unused when rho = 0) */
+    trk_real log1m_rho;   /**< ln(1 - rho) */
+    int rho_zero;  /**< 1 when rho = 0 */
 };
 
-/* Per track. */
+/** Per track. */
 struct trk_shiryaev {
-    struct trk_hmm_state hmm;
-    trk_real stat;        /* g_t (g_0 before the first look) */
-    trk_real s;           /* increment of the latest look */
-    uint32_t t;
-    int fire;             /* g_t > h at the latest look */
-    enum trk_decision decision; /* sticky: CONTINUE or TERMINATE */
+    struct trk_hmm_state hmm;  /**< HMM posteriors */
+    trk_real stat;        /**< g_t (g_0 before the first look) */
+    trk_real s;           /**< increment of the latest look */
+    uint32_t t;  /**< looks so far */
+    int fire;             /**< g_t > h at the latest look */
+    enum trk_decision decision; /**< sticky: CONTINUE or TERMINATE */
 };
 
-/* TRK_E_ARG NULL or unknown hmm.events, TRK_E_NAN non-finite parameter,
+/** TRK_E_ARG NULL or unknown hmm.events, TRK_E_NAN non-finite parameter,
  * TRK_E_RANGE beta0 or rho or a model probability out of range,
  * TRK_E_CAPACITY too many sensors. *m untouched on error. */
 TRK_NODISCARD trk_status trk_shiryaev_model_init(struct trk_shiryaev_model *m,
                                                  const struct trk_shiryaev_params *p);
 
-/* Start state of a new track: g = g_0, no look, no decision. Does nothing
+/** Start state of a new track: g = g_0, no look, no decision. Does nothing
  * when m or s is NULL. */
 void trk_shiryaev_reset(const struct trk_shiryaev_model *m, struct trk_shiryaev *s);
 
-/* One look of `sensor` (see trk_page_step). Same statuses; *s and
+/** One look of `sensor` (see trk_page_step). Same statuses; *s and
  * *decision untouched on error. */
 TRK_NODISCARD trk_status trk_shiryaev_step(const struct trk_shiryaev_model *m,
                                            struct trk_shiryaev *s, unsigned sensor,
                                            int detected, trk_real pfa,
                                            enum trk_decision *decision);
 
-/* One step with a given increment s = ln f0 - ln f1 (HMM state untouched).
+/** One step with a given increment s = ln f0 - ln f1 (HMM state untouched).
  * TRK_E_ARG NULL, TRK_E_NAN s not finite; *s and *decision untouched on
  * error. */
 TRK_NODISCARD trk_status trk_shiryaev_step_llr(const struct trk_shiryaev_model *m,

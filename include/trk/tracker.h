@@ -1,4 +1,5 @@
-/* trk/tracker.h - the preallocated track table: one call runs a whole scan.
+/** @file
+ * trk/tracker.h - the preallocated track table: one call runs a whole scan.
  *
  * struct trk_tracker is caller-owned (static storage in firmware) and holds
  * everything, sized at compile time by config.h: TRK_MAX_TRACKS track slots
@@ -126,23 +127,27 @@
 
 /* ---------------------------------------------------------------- inputs */
 
-/* One detection of a scan. Amplitude fields are used by amplitude-aided
+/** One detection of a scan. Amplitude fields are used by amplitude-aided
  * association when the sensor has an amplitude model. */
 struct trk_detection {
-    trk_real x_m, y_m;       /* position */
-    trk_real cov_m2[3];      /* own covariance [xx, xy, yy] (TRK_COV2_*), used when has_cov */
-    trk_real amplitude;      /* linear envelope amplitude, used when has_amplitude */
-    uint8_t has_cov;         /* 0: use the sensor's covariance */
-    uint8_t has_amplitude;
+    /** @{ */
+    trk_real x_m, y_m;       /**< position */
+    /** @} */
+    trk_real cov_m2[3];      /**< own covariance [xx, xy, yy] (TRK_COV2_*), used when has_cov */
+    trk_real amplitude;      /**< linear envelope amplitude, used when has_amplitude */
+    uint8_t has_cov;         /**< 0: use the sensor's covariance */
+    uint8_t has_amplitude;  /**< 0: no amplitude (position only) */
 };
 
-/* The elements of a packed 2x2 covariance [xx, xy, yy] (cov_m2,
+/** The elements of a packed 2x2 covariance [xx, xy, yy] (cov_m2,
  * meas_cov_m2). */
+/** @{ */
 #define TRK_COV2_XX 0
 #define TRK_COV2_XY 1
 #define TRK_COV2_YY 2
+/** @} */
 
-/* A covariance [xx, xy, yy] is usable when it is SPD, xx yy does not
+/** A covariance [xx, xy, yy] is usable when it is SPD, xx yy does not
  * overflow, and det >= TRK_COV2_MIN_REL_DET xx yy, i.e. its correlation
  * |xy| / sqrt(xx yy) is at most sqrt(1 - 64 eps) (eps the trk_real epsilon:
  * 0.999999999999993 in double, 0.999996 in float): nearer to singular, the
@@ -150,15 +155,14 @@ struct trk_detection {
  * n_rejected_cov; sensors: TRK_E_NOT_SPD at init). */
 #define TRK_COV2_MIN_REL_DET (64 * TRK_REAL_EPS)
 
-/* One scan of one sensor. The detections are read, never written. */
-/* Largest |time_us| of a scan: 2^62 - 1 us (146,000 years), so that any two
+/** Largest |time_us| of a scan: 2^62 - 1 us (146,000 years), so that any two
  * times subtract without overflow (the difference stays below 2^63 - 1). */
 #define TRK_TIME_US_MAX ((INT64_C(1) << 62) - 1)
-/* Least max_dt_s: one microsecond, the resolution of the scan times (a
+/** Least max_dt_s: one microsecond, the resolution of the scan times (a
  * smaller one would allow no gap at all and refuse every scan after the
  * first; refused at init, TRK_E_RANGE "max_dt_s"). */
 #define TRK_MAX_DT_S_MIN TRK_REAL_C(1e-6)
-/* The surveillance bound (max_coord_m): a detection with |x_m| or |y_m|
+/** The surveillance bound (max_coord_m): a detection with |x_m| or |y_m|
  * above it is no position but an error (a unit slip, a corrupt value): it
  * is counted (n_rejected_region) and skipped, never gated or started.
  * Default 1e8 m, 2.5 times round the Earth: beyond any sonar's range and
@@ -166,33 +170,37 @@ struct trk_detection {
  * TRK_MAX_COORD_M_LIMIT = 1e15 m: a difference of two coordinates inside it
  * squared, 4e30 m^2, stays 1e8 below float's largest value, so that gates,
  * distances and covariances of accepted detections never overflow. */
+/** @{ */
 #define TRK_MAX_COORD_M_DEFAULT TRK_REAL_C(1e8)
 #define TRK_MAX_COORD_M_LIMIT TRK_REAL_C(1e15)
+/** @} */
 
-/* The most detections a scan may hold: 65535, so that a scan index fits
+/** The most detections a scan may hold: 65535, so that a scan index fits
  * the workspace's 16-bit indices. A longer scan is refused (TRK_E_CAPACITY). */
 #define TRK_MAX_SCAN_DETECTIONS 65535u
 
+/** One scan of one sensor. The detections are read, never written. */
 struct trk_scan {
-    int64_t time_us;                        /* scan time (microseconds, any epoch);
+    int64_t time_us;                        /**< scan time (microseconds, any epoch);
                                                never decreasing. Integer time keeps
                                                float builds free of soft double. */
-    unsigned sensor_id;                     /* 0 .. n_sensors-1 */
-    size_t n_detections;                    /* <= TRK_MAX_SCAN_DETECTIONS; beyond
+    unsigned sensor_id;                     /**< 0 .. n_sensors-1 */
+    size_t n_detections;                    /**< <= TRK_MAX_SCAN_DETECTIONS; beyond
                                                TRK_MAX_DETECTIONS the scan is thinned
                                                (see "Scans beyond capacity") */
-    const struct trk_detection *detections; /* may be NULL when n_detections = 0 */
+    const struct trk_detection *detections; /**< may be NULL when n_detections = 0 */
 };
 
 /* ---------------------------------------------------------------- configuration */
 
+/** One sensor's parameters: detection probability, measurement covariance, clutter density and amplitude model. */
 struct trk_sensor_params {
-    trk_real pd;                      /* detection probability of a target, (0, 1];
+    trk_real pd;                      /**< detection probability of a target, (0, 1];
                                          with an amplitude model its P_D is used */
-    trk_real meas_cov_m2[3];          /* default measurement covariance [xx, xy, yy], SPD */
-    trk_real clutter_density_per_m2;  /* lambda for parametric clutter (and the clutter
+    trk_real meas_cov_m2[3];          /**< default measurement covariance [xx, xy, yy], SPD */
+    trk_real clutter_density_per_m2;  /**< lambda for parametric clutter (and the clutter
                                          tests' rho), >= 0 */
-    /* Amplitude-aided association (PDAFAI, Brekke eqs 19-25): when
+    /** Amplitude-aided association (PDAFAI, Brekke eqs 19-25): when
      * use_amplitude is 1 each detection's weight is multiplied by
      * l^a(amplitude) of this model (trk_amplitude_init_rayleigh or
      * trk_amplitude_init_table); P_D becomes the model's P_D at its threshold.
@@ -201,20 +209,20 @@ struct trk_sensor_params {
      * A table-backed model points into the table's bytes: they must outlive
      * the tracker. */
     int use_amplitude;
-    struct trk_amplitude amplitude;
+    struct trk_amplitude amplitude;  /**< the model used when use_amplitude is 1 */
 };
 
-/* Confirmation of a tentative track (one method per tracker). */
+/** Confirmation of a tentative track (one method per tracker). */
 enum trk_confirm_method {
-    TRK_CONFIRM_MN = 0,          /* M-of-N (confirm_mn.h) */
-    TRK_CONFIRM_SPRT = 1,        /* Wald SPRT on detections (confirm_sprt.h) */
-    TRK_CONFIRM_CLUTTER_CHI2 = 2,/* Kennedy clutter-density test (clutter_test.h) */
-    TRK_CONFIRM_CLUTTER_AMP = 3, /* Kennedy clutter-amplitude test (clutter_test.h);
+    TRK_CONFIRM_MN = 0,          /**< M-of-N (confirm_mn.h) */
+    TRK_CONFIRM_SPRT = 1,        /**< Wald SPRT on detections (confirm_sprt.h) */
+    TRK_CONFIRM_CLUTTER_CHI2 = 2,/**< Kennedy clutter-density test (clutter_test.h) */
+    TRK_CONFIRM_CLUTTER_AMP = 3, /**< Kennedy clutter-amplitude test (clutter_test.h);
                                     both need TRK_WITH_CLUTTER_TESTS (config.h) */
-    TRK_CONFIRM_VISIBILITY = 4,  /* visibility confidence: confirm at pcv >= p_con,
+    TRK_CONFIRM_VISIBILITY = 4,  /**< visibility confidence: confirm at pcv >= p_con,
                                     reject at pcv < p_term (visibility.h); needs
                                     track_visibility */
-    TRK_CONFIRM_EXISTENCE = 5    /* existence vis.pv (IPDA, with the initial value of
+    TRK_CONFIRM_EXISTENCE = 5    /**< existence vis.pv (IPDA, with the initial value of
                                     trk_init_params): confirm at pv >= p_confirm; reject
                                     when its odds fell below reject_odds_ratio times
                                     the track's initial odds (a Wald lower threshold on
@@ -222,92 +230,97 @@ enum trk_confirm_method {
                                     track_visibility */
 };
 
-/* The existence methods' probabilities must be normal numbers: a value
+/** The existence methods' probabilities must be normal numbers: a value
  * written through another member of the method union (e.g. confirm.u.mn.m = 4
  * while the method is existence) reads as a subnormal and is refused. */
 struct trk_existence_confirm_params {
-    trk_real p_confirm;          /* [0.5, 1): confirm what more likely exists than not */
-    trk_real reject_odds_ratio;  /* [0, 1), 0 = never reject */
+    trk_real p_confirm;          /**< [0.5, 1): confirm what more likely exists than not */
+    trk_real reject_odds_ratio;  /**< [0, 1), 0 = never reject */
 };
 
+/** Confirmation of tentative tracks: the method and its parameters. */
 struct trk_confirm_params {
-    enum trk_confirm_method method;
+    enum trk_confirm_method method;  /**< which test confirms tentative tracks */
     union {
         struct trk_mn_params mn;
         struct trk_sprt_params sprt;
         struct trk_clutter_chi2_params chi2;
         struct trk_clutter_amp_params amp;
         struct trk_existence_confirm_params existence;
-    } u;
+    } u;  /**< the parameters of the chosen method (the member of its name) */
 };
 
-/* Termination of a confirmed track (one method per tracker). */
+/** Termination of a confirmed track (one method per tracker). */
 enum trk_term_method {
-    TRK_TERM_KN = 0,      /* K-of-N (term_kn.h); K = 0 is "N consecutive misses" */
-    TRK_TERM_PAGE = 1,    /* Page CUSUM with the fluctuating-P_D HMM (term_page.h) */
-    TRK_TERM_SHIRYAEV = 2, /* Shiryaev rule with the same HMM (term_shiryaev.h) */
-    TRK_TERM_VISIBILITY = 3, /* visibility confidence pcv < p_term (visibility.h) */
-    TRK_TERM_EXISTENCE = 4   /* existence vis.pv < p_terminate; needs track_visibility */
+    TRK_TERM_KN = 0,      /**< K-of-N (term_kn.h); K = 0 is "N consecutive misses" */
+    TRK_TERM_PAGE = 1,    /**< Page CUSUM with the fluctuating-P_D HMM (term_page.h) */
+    TRK_TERM_SHIRYAEV = 2, /**< Shiryaev rule with the same HMM (term_shiryaev.h) */
+    TRK_TERM_VISIBILITY = 3, /**< visibility confidence pcv < p_term (visibility.h) */
+    TRK_TERM_EXISTENCE = 4   /**< existence vis.pv < p_terminate; needs track_visibility */
 };
 
+/** Parameters of the existence termination (TRK_TERM_EXISTENCE). */
 struct trk_existence_term_params {
-    trk_real p_terminate;        /* normal, in (0, 1); below p_confirm with existence
+    trk_real p_terminate;        /**< normal, in (0, 1); below p_confirm with existence
                                     confirmation */
 };
 
+/** Termination of confirmed tracks: the method and its parameters. */
 struct trk_term_params {
-    enum trk_term_method method;
+    enum trk_term_method method;  /**< which test ends confirmed tracks */
     union {
         struct trk_kn_params kn;
         struct trk_page_params page;
         struct trk_shiryaev_params shiryaev;
         struct trk_existence_term_params existence;
-    } u;
+    } u;  /**< the parameters of the chosen method (the member of its name) */
 };
 
-/* Per-track state of the chosen tests (fixed size: the largest method; with
+/** Per-track state of the chosen tests (fixed size: the largest method; with
  * TRK_WITH_CLUTTER_TESTS = 0 (config.h) the clutter tests are left out). The
  * parameters and derived constants live once in the tracker (struct
  * trk_tracker confirm_model / term_model), not per track. */
 union trk_confirm_state {
-    struct trk_mn mn;
-    struct trk_sprt sprt;
+    struct trk_mn mn;  /**< TRK_CONFIRM_MN */
+    struct trk_sprt sprt;  /**< TRK_CONFIRM_SPRT */
     struct {
-        trk_real reject_below; /* TRK_CONFIRM_EXISTENCE: pv below this rejects (set at start) */
-    } existence;
+        trk_real reject_below; /**< TRK_CONFIRM_EXISTENCE: pv below this rejects (set at start) */
+    } existence;  /**< TRK_CONFIRM_EXISTENCE */
 #if TRK_WITH_CLUTTER_TESTS
-    struct trk_clutter_chi2 chi2;
-    struct trk_clutter_amp amp;
+    struct trk_clutter_chi2 chi2;  /**< TRK_CONFIRM_CLUTTER_CHI2 */
+    struct trk_clutter_amp amp;  /**< TRK_CONFIRM_CLUTTER_AMP */
 #endif
 };
+/** Per-track state of the chosen termination test (see union trk_confirm_state). */
 union trk_term_state {
-    struct trk_kn kn;
-    struct trk_page page;
-    struct trk_shiryaev shiryaev;
+    struct trk_kn kn;  /**< TRK_TERM_KN */
+    struct trk_page page;  /**< TRK_TERM_PAGE */
+    struct trk_shiryaev shiryaev;  /**< TRK_TERM_SHIRYAEV */
 };
 
-/* The chosen tests' shared models (one per tracker). */
+/** The chosen tests' shared models (one per tracker). */
 union trk_confirm_model {
-    struct trk_mn_model mn;
-    struct trk_sprt_model sprt;
+    struct trk_mn_model mn;  /**< TRK_CONFIRM_MN */
+    struct trk_sprt_model sprt;  /**< TRK_CONFIRM_SPRT */
 #if TRK_WITH_CLUTTER_TESTS
-    struct trk_clutter_chi2_model chi2;
-    struct trk_clutter_amp_model amp;
+    struct trk_clutter_chi2_model chi2;  /**< TRK_CONFIRM_CLUTTER_CHI2 */
+    struct trk_clutter_amp_model amp;  /**< TRK_CONFIRM_CLUTTER_AMP */
 #endif
 };
+/** The chosen termination test's shared model (one per tracker). */
 union trk_term_model {
-    struct trk_kn_model kn;
-    struct trk_page_model page;
-    struct trk_shiryaev_model shiryaev;
+    struct trk_kn_model kn;  /**< TRK_TERM_KN */
+    struct trk_page_model page;  /**< TRK_TERM_PAGE */
+    struct trk_shiryaev_model shiryaev;  /**< TRK_TERM_SHIRYAEV */
 };
 
-/* How tracks start (step 5 above). */
+/** How tracks start (step 5 above). */
 enum trk_init_method {
-    TRK_INIT_SINGLE_POINT = 0, /* every unexplained detection starts a track */
-    TRK_INIT_TWO_POINT = 1     /* two detections of different scans within the velocity gate */
+    TRK_INIT_SINGLE_POINT = 0, /**< every unexplained detection starts a track */
+    TRK_INIT_TWO_POINT = 1     /**< two detections of different scans within the velocity gate */
 };
 
-/* Initiation and the existence a new track starts with.
+/** Initiation and the existence a new track starts with.
  *
  * Two-point initiation (Bar-Shalom, Willett & Tian, "Tracking and Data
  * Fusion" 2011, two-point differencing): candidate c (time t_c, R_c) and
@@ -346,68 +359,69 @@ enum trk_init_method {
  * trk_track.vis.pv (needs track_visibility); it orders replacement (lowest
  * first). Without track_visibility replacement orders by n_hits / n_scans. */
 struct trk_init_params {
-    enum trk_init_method method;
-    trk_real max_speed_mps;           /* two-point velocity gate, > 0 */
-    uint32_t max_gap_scans;           /* two-point: candidate lifetime in scans, 1 ..
-                                         TRK_MAX_CANDIDATE_SCANS - 1 (config.h) */
-    trk_real birth_density_per_m2;    /* new targets per m^2 per scan, >= 0 (0: pv0) */
+    enum trk_init_method method;  /**< single point or two points */
+    trk_real max_speed_mps;           /**< two-point velocity gate, > 0 */
+    uint32_t max_gap_scans;           /**< two-point: candidate lifetime in scans,
+                                         1 .. TRK_MAX_CANDIDATE_SCANS - 1 (config.h) */
+    trk_real birth_density_per_m2;    /**< new targets per m^2 per scan, >= 0 (0: pv0) */
 };
 
-/* How the live tracks share a scan's detections (step 3 above). */
+/** How the live tracks share a scan's detections (step 3 above). */
 enum trk_assoc_method {
-    TRK_ASSOC_PDA = 0,  /* per-track PDA (IPDA existence) */
-    TRK_ASSOC_JOINT = 1 /* joint: JPDA, or JIPDA with track_visibility (the track's
+    TRK_ASSOC_PDA = 0,  /**< per-track PDA (IPDA existence) */
+    TRK_ASSOC_JOINT = 1 /**< joint: JPDA, or JIPDA with track_visibility (the track's
                            existence trk_track.vis.pv is then the JIPDA existence);
                            needs parametric clutter with a density > 0 per sensor,
                            and TRK_WITH_JOINT (config.h) */
 };
 
+/** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */
 struct trk_tracker_params {
-    unsigned n_sensors;                               /* 1 .. TRK_MAX_SENSORS */
-    struct trk_sensor_params sensor[TRK_MAX_SENSORS];
-    trk_real process_noise_q;                         /* m^2/s^3 (docs/conventions.md), >= 0 */
-    trk_real gate_prob;                               /* P_G, (0, 1) */
-    enum trk_clutter_mode clutter;                    /* parametric: the sensor's density */
-    trk_real init_speed_sigma_mps;                    /* velocity prior std per axis, > 0 */
-    trk_real max_dt_s;                                /* longest gap between scans, [1e-6, 1e9]
+    unsigned n_sensors;                               /**< 1 .. TRK_MAX_SENSORS */
+    struct trk_sensor_params sensor[TRK_MAX_SENSORS];  /**< sensor[0 .. n_sensors - 1] */
+    trk_real process_noise_q;                         /**< m^2/s^3 (docs/conventions.md), >= 0 */
+    trk_real gate_prob;                               /**< P_G, (0, 1) */
+    enum trk_clutter_mode clutter;                    /**< parametric: the sensor's density */
+    trk_real init_speed_sigma_mps;                    /**< velocity prior std per axis, > 0 */
+    trk_real max_dt_s;                                /**< longest gap between scans, [1e-6, 1e9]
                                                          (TRK_MAX_DT_S_MIN: the scan times'
                                                          resolution, 1 us; to the nearest us);
                                                          a larger gap is refused (TRK_E_RANGE) */
-    /* Visibility (IPDA existence, Kennedy eqs 1-2, 21-24), updated for every
+    /** Visibility (IPDA existence, Kennedy eqs 1-2, 21-24), updated for every
      * track each scan with its PDA weights (amplitude included) when
      * track_visibility is 1; required by the visibility confirmation and
      * termination methods. */
     int track_visibility;
-    struct trk_visibility_params visibility;
-    struct trk_confirm_params confirm;                /* tentative -> confirmed / rejected */
-    struct trk_term_params term;                      /* confirmed -> terminated */
-    trk_real merge_gate_d2;                           /* two live tracks with state difference
+    struct trk_visibility_params visibility;  /**< the visibility model (track_visibility, the visibility and existence methods) */
+    struct trk_confirm_params confirm;                /**< tentative -> confirmed / rejected */
+    struct trk_term_params term;                      /**< confirmed -> terminated */
+    trk_real merge_gate_d2;                           /**< two live tracks with state difference
                                                          d2 = dx' (P_i + P_j)^-1 dx <= this
                                                          (4-D, positions and velocities) follow
                                                          one target: the weaker one ends
                                                          (TRK_END_MERGED). 0 = never merge */
-    trk_real init_exclusion_d2;                       /* a detection with d2 <= this to a
+    trk_real init_exclusion_d2;                       /**< a detection with d2 <= this to a
                                                          CONFIRMED track (outside its gate)
                                                          starts no new track: the target's
                                                          own stray detections would make
                                                          duplicates. <= gamma: gate only */
-    uint32_t max_tentative_scans;                     /* drop a tentative track after this
+    uint32_t max_tentative_scans;                     /**< drop a tentative track after this
                                                          many scans (0 = no limit) */
-    struct trk_init_params init;                      /* how tracks start */
-    trk_real max_pos_sigma_ratio;                     /* covariance bound (as Stone Soup's
+    struct trk_init_params init;                      /**< how tracks start */
+    trk_real max_pos_sigma_ratio;                     /**< covariance bound (as Stone Soup's
                                                          CovarianceBasedDeleter): a track
                                                          ends (TRK_END_COVARIANCE) when
                                                          trace of its position covariance
                                                          > ratio^2 trace R of the scan's
                                                          sensor; >= 0, 0 = no bound */
-    enum trk_assoc_method association;                /* per-track PDA or joint (JIPDA) */
-    trk_real max_coord_m;                             /* surveillance bound: |x_m|, |y_m| of a
+    enum trk_assoc_method association;                /**< per-track PDA or joint (JIPDA) */
+    trk_real max_coord_m;                             /**< surveillance bound: |x_m|, |y_m| of a
                                                          detection at most this, else counted
                                                          (n_rejected_region) and skipped;
                                                          (0, TRK_MAX_COORD_M_LIMIT], default
                                                          TRK_MAX_COORD_M_DEFAULT (1e8 m) */
 #if TRK_WITH_IMM
-    /* Manoeuvring targets (TRK_WITH_IMM, config.h; docs/library.md "Manoeuvres"):
+    /** Manoeuvring targets (TRK_WITH_IMM, config.h; docs/library.md "Manoeuvres"):
      * imm.n_models = 0 (default) runs every track on the CV model of
      * process_noise_q, as a build without IMM; 1 .. TRK_MAX_MODELS makes
      * every track an IMM track on these models (trk/imm.h: turn rates, each
@@ -417,7 +431,7 @@ struct trk_tracker_params {
 #endif
 };
 
-/* Tests and their inputs per scan (docs/conventions.md "Track confirmation and
+/** Tests and their inputs per scan (docs/conventions.md "Track confirmation and
  * termination"): a scan "detects" a track when a detection is in its gate;
  * P_FA of the gate is 1 - exp(-lambda V_G); the sensor id of the scan selects
  * the HMM of multisensor tests. The clutter tests use the detection nearest
@@ -433,7 +447,7 @@ struct trk_tracker_params {
  * documented there and in docs/parameters.md; they live in code only. */
 void trk_tracker_default_params(struct trk_tracker_params *p);
 
-/* The configuration the defaults were before existence-based confirmation
+/** The configuration the defaults were before existence-based confirmation
  * (kept for comparison and for users of M/N): the defaults with M/N 3-of-5
  * confirmation, termination after 5 consecutive misses (K/N 0/5),
  * single-point initiation at the visibility's pv0, no covariance bound,
@@ -441,7 +455,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p);
 void trk_tracker_mn_kn_params(struct trk_tracker_params *p);
 
 #if TRK_WITH_IMM
-/* The manoeuvre models of docs/library.md "Manoeuvres" into p->imm: CV, and
+/** The manoeuvre models of docs/library.md "Manoeuvres" into p->imm: CV, and
  * coordinated turns at +omega_rad_s (left) and -omega_rad_s (right), each
  * with p->process_noise_q; the model stays with probability p_stay per scan
  * and switches to each other one with (1 - p_stay) / 2. Meant for
@@ -454,6 +468,7 @@ TRK_NODISCARD trk_status trk_tracker_imm_params(struct trk_tracker_params *p, tr
 
 /* ---------------------------------------------------------------- tracks */
 
+/** Life stage of a track slot. */
 enum trk_track_status {
     TRK_TRACK_FREE = 0,
     TRK_TRACK_TENTATIVE = 1,
@@ -461,50 +476,51 @@ enum trk_track_status {
     TRK_TRACK_TERMINATED = 3
 };
 
-/* Why a track ended (valid when status is TRK_TRACK_TERMINATED). */
+/** Why a track ended (valid when status is TRK_TRACK_TERMINATED). */
 enum trk_track_end {
     TRK_END_NONE = 0,
-    TRK_END_REJECTED,     /* tentative track failed its confirmation test */
-    TRK_END_TENTATIVE_AGE,/* tentative longer than max_tentative_scans */
-    TRK_END_TERMINATED,   /* confirmed track's termination test fired */
-    TRK_END_NUMERICAL,    /* covariance lost positive definiteness */
-    TRK_END_MERGED,       /* duplicate of a stronger track (merge_gate_d2) */
-    TRK_END_COVARIANCE    /* position uncertainty over max_pos_sigma_ratio */
+    TRK_END_REJECTED,     /**< tentative track failed its confirmation test */
+    TRK_END_TENTATIVE_AGE,/**< tentative longer than max_tentative_scans */
+    TRK_END_TERMINATED,   /**< confirmed track's termination test fired */
+    TRK_END_NUMERICAL,    /**< covariance lost positive definiteness */
+    TRK_END_MERGED,       /**< duplicate of a stronger track (merge_gate_d2) */
+    TRK_END_COVARIANCE    /**< position uncertainty over max_pos_sigma_ratio */
 };
 
+/** One slot of the track table (trk_tracker_track); read-only for the caller. */
 struct trk_track {
-    uint32_t id;                      /* stable, > 0 */
-    uint8_t status;                   /* enum trk_track_status */
-    uint8_t end_reason;               /* enum trk_track_end */
-    int64_t time_us;                  /* time of x and P */
-    trk_real x[TRK_CV2_NX];           /* [x, vx, y, vy] */
-    trk_real p[TRK_CV2_NX * TRK_CV2_NX];
-    uint32_t n_scans;                 /* scans this track has seen (incl. its first) */
-    uint32_t n_hits;                  /* scans with at least one detection in the gate */
-    uint32_t n_misses_in_row;         /* consecutive scans without */
-    uint16_t n_gated_last;            /* detections in the gate at the last scan */
-    trk_real beta0_last;              /* P(no detection is the target's), last scan */
-    trk_real existence0;              /* existence at initiation (trk_init_params) */
-    struct trk_visibility vis;        /* existence (IPDA) vis.pv and its smoothed
+    uint32_t id;                      /**< stable, > 0 */
+    uint8_t status;                   /**< enum trk_track_status */
+    uint8_t end_reason;               /**< enum trk_track_end */
+    int64_t time_us;                  /**< time of x and P */
+    trk_real x[TRK_CV2_NX];           /**< [x, vx, y, vy] */
+    trk_real p[TRK_CV2_NX * TRK_CV2_NX];  /**< covariance of x (4 x 4, row-major; TRK_CV2_P) */
+    uint32_t n_scans;                 /**< scans this track has seen (incl. its first) */
+    uint32_t n_hits;                  /**< scans with at least one detection in the gate */
+    uint32_t n_misses_in_row;         /**< consecutive scans without */
+    uint16_t n_gated_last;            /**< detections in the gate at the last scan */
+    trk_real beta0_last;              /**< P(no detection is the target's), last scan */
+    trk_real existence0;              /**< existence at initiation (trk_init_params) */
+    struct trk_visibility vis;        /**< existence (IPDA) vis.pv and its smoothed
                                          confidence vis.pcv, when track_visibility:
                                          the track's quality (trk_init_params) */
-    trk_real confirm_stat;            /* current statistic of the confirmation test:
+    trk_real confirm_stat;            /**< current statistic of the confirmation test:
                                          M/N count, SPRT log-LR, clutter-test p-value */
-    trk_real term_stat;               /* current statistic of the termination test:
+    trk_real term_stat;               /**< current statistic of the termination test:
                                          K/N count, Page c_t, Shiryaev log-odds g_t */
-    union {                           /* a track needs one test at a time: */
-        union trk_confirm_state confirm; /* while tentative (params.confirm.method) */
-        union trk_term_state term;       /* once confirmed (params.term.method) */
-    } test;
+    union {                           /**< a track needs one test at a time: */
+        union trk_confirm_state confirm; /**< while tentative (params.confirm.method) */
+        union trk_term_state term;       /**< once confirmed (params.term.method) */
+    } test;  /**< the confirmation or termination test's state */
 #if TRK_WITH_IMM
-    trk_real maneuver_d2;             /* the survey's manoeuvre statistic (eqs 3.11-3.13):
+    trk_real maneuver_d2;             /**< the survey's manoeuvre statistic (eqs 3.11-3.13):
                                          d2 = nu' S^-1 nu of the last scan's innovation
                                          given a detection, nu = sum_i beta_i nu_i /
                                          sum_i beta_i, S that of the prediction with the
                                          sensor's R; chi-square with 2 degrees of freedom
                                          while the model fits (e.g. > 9.21: 1 %); 0 when
                                          nothing was gated or every weight is 0 */
-    struct trk_imm_state imm;         /* an IMM track (params.imm.n_models >= 1): its
+    struct trk_imm_state imm;         /**< an IMM track (params.imm.n_models >= 1): its
                                          models' estimates and mode probabilities imm.mu;
                                          x and P above are their combination */
 #endif
@@ -512,68 +528,71 @@ struct trk_track {
 
 /* ---------------------------------------------------------------- report */
 
+/** What one scan did (trk_tracker_process_scan): the detections' fate and the tracks' changes. n_detections = n_kept + n_thinned + the rejected and below-threshold counts. */
 struct trk_scan_report {
-    uint32_t n_detections;          /* in the scan */
-    uint32_t n_rejected_nonfinite;  /* NaN/inf position or covariance */
-    uint32_t n_rejected_cov;        /* own covariance not SPD */
-    uint32_t n_rejected_amplitude;  /* amplitude NaN, infinite or negative, or one whose
+    uint32_t n_detections;          /**< in the scan */
+    uint32_t n_rejected_nonfinite;  /**< NaN/inf position or covariance */
+    uint32_t n_rejected_cov;        /**< own covariance not SPD */
+    uint32_t n_rejected_amplitude;  /**< amplitude NaN, infinite or negative, or one whose
                                        ln l^a overflows the real type */
-    uint32_t n_rejected_region;     /* finite position outside the surveillance bound
+    uint32_t n_rejected_region;     /**< finite position outside the surveillance bound
                                        (|x_m| or |y_m| > params.max_coord_m) */
-    uint32_t n_below_threshold;     /* amplitude below the sensor's detection threshold */
-    uint32_t n_kept;                /* valid detections processed (at most TRK_MAX_DETECTIONS);
+    uint32_t n_below_threshold;     /**< amplitude below the sensor's detection threshold */
+    uint32_t n_kept;                /**< valid detections processed (at most TRK_MAX_DETECTIONS);
                                        n_detections = n_kept + n_thinned + n_rejected_nonfinite
                                        + n_rejected_cov + n_rejected_amplitude + n_rejected_region
                                        + n_below_threshold */
-    uint32_t n_thinned;             /* valid detections left out: the scan held more than
+    uint32_t n_thinned;             /**< valid detections left out: the scan held more than
                                        TRK_MAX_DETECTIONS ("Scans beyond capacity") */
-    uint32_t n_tracks_updated;      /* live tracks predicted and updated */
-    uint32_t n_tracks_hit;          /* ... with at least one detection gated */
-    uint32_t n_started;             /* new tentative tracks */
-    uint32_t n_confirmed;           /* tentative -> confirmed */
-    uint32_t n_terminated;          /* tracks ended this scan (any reason) */
-    uint32_t n_init_refused_full;   /* initiations refused: table full (single point: each
+    uint32_t n_tracks_updated;      /**< live tracks predicted and updated */
+    uint32_t n_tracks_hit;          /**< ... with at least one detection gated */
+    uint32_t n_started;             /**< new tentative tracks */
+    uint32_t n_confirmed;           /**< tentative -> confirmed */
+    uint32_t n_terminated;          /**< tracks ended this scan (any reason) */
+    uint32_t n_init_refused_full;   /**< initiations refused: table full (single point: each
                                        detection that could not start; two points: each pair
                                        without a slot, or, while every slot holds a confirmed
                                        track, each unexplained detection: no pairing runs) */
-    uint32_t n_numerical;           /* tracks ended for a numerical failure */
-    uint32_t n_merged;              /* tracks ended as duplicates of another */
-    uint32_t n_replaced;            /* tentative tracks whose slot a new track took */
-    uint32_t n_covariance;          /* tracks ended by the covariance bound */
-    uint32_t n_candidates;          /* initiation candidates held after the scan */
-    uint32_t n_candidates_dropped;  /* unexplained detections the store could not hold */
+    uint32_t n_numerical;           /**< tracks ended for a numerical failure */
+    uint32_t n_merged;              /**< tracks ended as duplicates of another */
+    uint32_t n_replaced;            /**< tentative tracks whose slot a new track took */
+    uint32_t n_covariance;          /**< tracks ended by the covariance bound */
+    uint32_t n_candidates;          /**< initiation candidates held after the scan */
+    uint32_t n_candidates_dropped;  /**< unexplained detections the store could not hold */
     /* joint association (TRK_ASSOC_JOINT) */
-    uint32_t n_clusters;            /* clusters of the joint problem (a track alone, with or
+    uint32_t n_clusters;            /**< clusters of the joint problem (a track alone, with or
                                        without gated detections, is a cluster of one) */
-    uint32_t n_clusters_approx;     /* ... solved by loopy belief propagation (jpda.h), not exactly */
-    uint32_t largest_cluster;       /* tracks in the largest cluster */
-    uint32_t n_assoc_overflow;      /* tracks left out of the joint problem and updated by their
+    uint32_t n_clusters_approx;     /**< ... solved by loopy belief propagation (jpda.h), not exactly */
+    uint32_t largest_cluster;       /**< tracks in the largest cluster */
+    uint32_t n_assoc_overflow;      /**< tracks left out of the joint problem and updated by their
                                        own PDA after the joint tracks: the scan's gated pairs
                                        exceeded TRK_MAX_GATED_PAIRS, or (cannot happen) the
                                        solver refused; also a track whose prediction failed
                                        (it then ends as numerical) */
     /* a thinned scan (n_thinned > 0; all 0 otherwise): the model of what it kept */
-    uint32_t thin_in_gates;         /* 1: the cut fell inside the gate boxes (more gated
+    uint32_t thin_in_gates;         /**< 1: the cut fell inside the gate boxes (more gated
                                        detections than TRK_MAX_DETECTIONS): the updates used
                                        thin_pd and thin_clutter_density */
-    trk_real thin_threshold;        /* the raised threshold: the amplitude of the last kept
+    trk_real thin_threshold;        /**< the raised threshold: the amplitude of the last kept
                                        detection (0: thinned without amplitudes) */
-    trk_real thin_pd;               /* P_D and clutter density (per m^2) of the kept part */
-    trk_real thin_clutter_density;  /* of the class the cut fell in */
+    trk_real thin_pd;               /**< P_D and clutter density (per m^2) of the kept part */
+    trk_real thin_clutter_density;  /**< of the class the cut fell in */
 };
 
 /* ---------------------------------------------------------------- tracker */
 
-/* An unexplained detection kept for two-point initiation (its scan's
+/** An unexplained detection kept for two-point initiation (its scan's
  * time, count and sensor are its run's, struct trk_i_cand_run). */
 struct trk_candidate {
+    /** @{ position (m) */
     trk_real x_m, y_m;
-    trk_real cov_m2[3];      /* its covariance [xx, xy, yy] (own or the sensor's) */
-    trk_real log_lr;         /* ln l^a (0 without amplitude) */
-    uint8_t used;            /* it started a track: it pairs no more */
+    /** @} */
+    trk_real cov_m2[3];      /**< its covariance [xx, xy, yy] (own or the sensor's) */
+    trk_real log_lr;         /**< ln l^a (0 without amplitude) */
+    uint8_t used;            /**< it started a track: it pairs no more */
 };
 
-/* The pair store: every track's gated pairs with joint association, else
+/** The pair store: every track's gated pairs with joint association, else
  * one track's gated set. */
 #if TRK_WITH_JOINT
 #define TRK_I_PAIRS TRK_MAX_GATED_PAIRS
@@ -581,118 +600,131 @@ struct trk_candidate {
 #define TRK_I_PAIRS TRK_MAX_DETECTIONS
 #endif
 
-/* The 2-D index of a set of points (the scan's detections, or one scan's
+/** The 2-D index of a set of points (the scan's detections, or one scan's
  * initiation candidates): cells of a regular grid, column by column, about
  * one point per cell (src/grid_impl.h); the cells' ends are kept beside it. */
 struct trk_i_grid {
-    trk_real x0_m, y0_m;               /* the cell of (x, y): column floor((x - x0) inv_w), */
-    trk_real inv_w_per_m, inv_h_per_m; /* row floor((y - y0) inv_h), both clamped */
-    uint16_t n_col, n_row;             /* n_col n_row <= max(1, points) */
+    /** @{ */
+    trk_real x0_m, y0_m;               /**< the cell of (x, y): column floor((x - x0) inv_w), */
+    /** @} */
+    /** @{ */
+    trk_real inv_w_per_m, inv_h_per_m; /**< row floor((y - y0) inv_h), both clamped */
+    /** @} */
+    /** @{ */
+    uint16_t n_col, n_row;             /**< n_col n_row <= max(1, points) */
+    /** @} */
 };
 
-/* One scan's initiation candidates: cand[start, start + n) in the run's
+/** One scan's initiation candidates: cand[start, start + n) in the run's
  * 2-D index, its cells' ends at cand_cell_end[start ..]. */
 struct trk_i_cand_run {
-    int64_t time_us;
-    uint32_t scan_no;    /* the tracker's scan count when it was seen */
+    int64_t time_us;  /**< the scan's time */
+    uint32_t scan_no;    /**< the tracker's scan count when it was seen */
+    /** @{ cand[start, start + n): its candidates */
     uint16_t start, n;
-    uint16_t n_unused;   /* of them not used */
-    uint8_t sensor_id;
-    trk_real var_max_m2; /* the largest tr R_c of its candidates (the pairing's reach) */
-    struct trk_i_grid grid;
+    /** @} */
+    uint16_t n_unused;   /**< of them not used */
+    uint8_t sensor_id;  /**< the scan's sensor */
+    trk_real var_max_m2; /**< the largest tr R_c of its candidates (the pairing's reach) */
+    struct trk_i_grid grid;  /**< the 2-D index of its candidates */
 };
 
+/** The track table: caller-owned (large: usually static; trk_tracker_sizeof), set up by trk_tracker_init, changed only by the tracker's functions. Read tracks through trk_tracker_track; the other members are private. */
 struct trk_tracker {
-    struct trk_tracker_params params;
-    struct trk_pda pda[TRK_MAX_SENSORS];        /* per sensor: pd, gate, clutter */
-    struct trk_pda pda_saved;                   /* a thinned scan's sensor constants while
+    struct trk_tracker_params params;  /**< as given to trk_tracker_init */
+    struct trk_pda pda[TRK_MAX_SENSORS];        /**< per sensor: pd, gate, clutter */
+    struct trk_pda pda_saved;                   /**< a thinned scan's sensor constants while
                                                    pda[] holds its model (no caller use) */
-    trk_real r[TRK_MAX_SENSORS][TRK_CV2_NZ * TRK_CV2_NZ];
-    int64_t last_time_us;
-    int64_t max_dt_us;
-    int has_time;                               /* a scan has been processed */
-    uint32_t next_id;
-    uint32_t n_live;                            /* tentative + confirmed + terminated */
-    struct trk_visibility_model vis_model;
-    union trk_confirm_model confirm_model;      /* the tests' validated parameters and */
-    union trk_term_model term_model;            /* derived constants, shared by all tracks */
-    struct trk_track track[TRK_MAX_TRACKS];
-    trk_real max_pos_var_m2[TRK_MAX_SENSORS];   /* covariance bound per sensor (0: none) */
-    struct {                                    /* initial existence terms per sensor
+    trk_real r[TRK_MAX_SENSORS][TRK_CV2_NZ * TRK_CV2_NZ];  /**< per sensor: the default measurement covariance R (2 x 2) */
+    int64_t last_time_us;  /**< time of the last scan processed */
+    int64_t max_dt_us;  /**< max_dt_s in microseconds */
+    int has_time;                               /**< a scan has been processed */
+    uint32_t next_id;  /**< id of the next new track */
+    uint32_t n_live;                            /**< tentative + confirmed + terminated */
+    struct trk_visibility_model vis_model;  /**< the visibility test's model */
+    union trk_confirm_model confirm_model;      /**< the tests' validated parameters and */
+    union trk_term_model term_model;            /**< derived constants, shared by all tracks */
+    struct trk_track track[TRK_MAX_TRACKS];  /**< the track slots */
+    trk_real max_pos_var_m2[TRK_MAX_SENSORS];   /**< covariance bound per sensor (0: none) */
+    struct {                                    /**< initial existence terms per sensor
                                                    (trk_init_params; +inf when lambda = 0): */
-        trk_real first;                         /* ln(beta / lambda), a track's first point */
-        trk_real second;                        /* ln(P_D / lambda), its second point */
-    } init_log_odds[TRK_MAX_SENSORS];
+        trk_real first;                         /**< ln(beta / lambda), a track's first point */
+        trk_real second;                        /**< ln(P_D / lambda), its second point */
+    } init_log_odds[TRK_MAX_SENSORS];  /**< per sensor */
 #if TRK_WITH_JOINT
-    trk_real log_clutter_density[TRK_MAX_SENSORS]; /* ln lambda of the joint weights (lambda > 0) */
+    trk_real log_clutter_density[TRK_MAX_SENSORS]; /**< ln lambda of the joint weights (lambda > 0) */
 #endif
-    uint32_t scan_no;                           /* scans processed (initiation ages) */
-    size_t n_cand;                              /* initiation candidates not used */
-    uint16_t run_first, n_runs;                 /* their runs, one per scan, oldest first:
+    uint32_t scan_no;                           /**< scans processed (initiation ages) */
+    size_t n_cand;                              /**< initiation candidates not used */
+    /** @{ */
+    uint16_t run_first, n_runs;                 /**< their runs, one per scan, oldest first:
                                                    run[(run_first + k) % TRK_MAX_CANDIDATE_SCANS],
                                                    each contiguous in cand[], without overlap */
-    struct trk_i_cand_run run[TRK_MAX_CANDIDATE_SCANS];
-    struct trk_candidate cand[TRK_MAX_CANDIDATES];
-    uint16_t cand_cell_end[TRK_MAX_CANDIDATES];
-    /* per-scan workspace (contents meaningless between calls) */
+    /** @} */
+    struct trk_i_cand_run run[TRK_MAX_CANDIDATE_SCANS];  /**< the candidates' runs (a ring) */
+    struct trk_candidate cand[TRK_MAX_CANDIDATES];  /**< initiation candidates, run after run */
+    uint16_t cand_cell_end[TRK_MAX_CANDIDATES];  /**< per candidate: the end of its cell in its run's index */
+    /** per-scan workspace (contents meaningless between calls) */
     struct {
-        size_t n_valid;                                        /* valid detections, */
-        size_t n_shared;                                       /* [0, n_shared) with the sensor's
+        size_t n_valid;                                        /**< valid detections, */
+        size_t n_shared;                                       /**< [0, n_shared) with the sensor's
                                                                   covariance, then own ones */
-        struct trk_i_grid grid;                                /* gating's index of [0, n_shared), */
-        uint16_t cell_end[TRK_MAX_DETECTIONS];                 /* its cells' ends (after the
+        struct trk_i_grid grid;                                /**< gating's index of [0, n_shared), */
+        uint16_t cell_end[TRK_MAX_DETECTIONS];                 /**< its cells' ends (after the
                                                                   updates: the merge's index) */
-        trk_real x[TRK_MAX_DETECTIONS], y[TRK_MAX_DETECTIONS]; /* their positions */
-        trk_real log_lr[TRK_MAX_DETECTIONS];                   /* amplitude ln l^a */
-        uint16_t src[TRK_MAX_DETECTIONS];                      /* index in the scan */
-        uint8_t used[TRK_MAX_DETECTIONS];                      /* gated by some track */
-        uint16_t cand[TRK_I_PAIRS];                            /* gated pairs: one track's set
+        /** @{ */
+        trk_real x[TRK_MAX_DETECTIONS], y[TRK_MAX_DETECTIONS]; /**< their positions */
+        /** @} */
+        trk_real log_lr[TRK_MAX_DETECTIONS];                   /**< amplitude ln l^a */
+        uint16_t src[TRK_MAX_DETECTIONS];                      /**< index in the scan */
+        uint8_t used[TRK_MAX_DETECTIONS];                      /**< gated by some track */
+        uint16_t cand[TRK_I_PAIRS];                            /**< gated pairs: one track's set
                                                                   (per-track PDA), or every
                                                                   track's (joint); before and
                                                                   after the updates the 2-D
                                                                   indices' index arrays */
-        trk_real w[TRK_I_PAIRS];                               /* their weights; after the
+        trk_real w[TRK_I_PAIRS];                               /**< their weights; after the
                                                                   updates the merge's track
                                                                   positions */
 #if TRK_WITH_JOINT
-        uint16_t joint_slot[TRK_MAX_TRACKS];                   /* joint: the slot of joint track k, */
-        uint16_t pair_first[TRK_MAX_TRACKS + 1];               /* its pairs [pair_first[k],
+        uint16_t joint_slot[TRK_MAX_TRACKS];                   /**< joint: the slot of joint track k, */
+        uint16_t pair_first[TRK_MAX_TRACKS + 1];               /**< its pairs [pair_first[k],
                                                                   pair_first[k + 1]) */
-        trk_real miss[TRK_MAX_TRACKS];                         /* ln w_k0, then P(k <- none) */
-        uint8_t in_joint[TRK_MAX_TRACKS];                      /* per slot: a joint track */
+        trk_real miss[TRK_MAX_TRACKS];                         /**< ln w_k0, then P(k <- none) */
+        uint8_t in_joint[TRK_MAX_TRACKS];                      /**< per slot: a joint track */
         size_t n_joint;
 #endif
-        trk_real amp_db[2 * TRK_MAX_DETECTIONS];               /* amplitudes (dB) of the
+        trk_real amp_db[2 * TRK_MAX_DETECTIONS];               /**< amplitudes (dB) of the
                                                                   detections that have one,
                                                                   twice over: the others of
                                                                   entry k are k+1 .. k+n-1 */
-        int16_t amp_pos[TRK_MAX_DETECTIONS];                   /* index in amp_db, -1 none */
+        int16_t amp_pos[TRK_MAX_DETECTIONS];                   /**< index in amp_db, -1 none */
         size_t n_amp;
 #if TRK_WITH_IMM
-        struct {                                               /* one IMM track's update: */
-            struct trk_imm_state s;                            /* mixed, predicted, posterior */
-            trk_real c[TRK_MAX_MODELS];                        /* predicted mode probabilities */
-            trk_real log_c[TRK_MAX_MODELS];                    /* ... their logarithms (-inf: 0) */
+        struct {                                               /**< one IMM track's update: */
+            struct trk_imm_state s;                            /**< mixed, predicted, posterior */
+            trk_real c[TRK_MAX_MODELS];                        /**< predicted mode probabilities */
+            trk_real log_c[TRK_MAX_MODELS];                    /**< ... their logarithms (-inf: 0) */
             trk_real pht[TRK_MAX_MODELS][TRK_CV2_NX * TRK_CV2_NZ];
-            struct trk_innovation inn[TRK_MAX_MODELS];         /* per model, the sensor's R */
-            trk_real rho[TRK_MAX_MODELS][TRK_MAX_DETECTIONS];  /* rho_mi = P(model m |
+            struct trk_innovation inn[TRK_MAX_MODELS];         /**< per model, the sensor's R */
+            trk_real rho[TRK_MAX_MODELS][TRK_MAX_DETECTIONS];  /**< rho_mi = P(model m |
                                                                   detection i), then beta_i
                                                                   rho_mi, then beta_mi */
         } imm;
 #endif
-        union {                                                /* used one at a time: */
-            struct {                                           /* one track's update: */
-                trk_real z[TRK_CV2_NZ * TRK_MAX_DETECTIONS];   /* its gated detections */
-                trk_real r_own[TRK_CV2_NZ * TRK_CV2_NZ * TRK_MAX_DETECTIONS]; /* their own R_j */
+        union {                                                /**< used one at a time: */
+            struct {                                           /**< one track's update: */
+                trk_real z[TRK_CV2_NZ * TRK_MAX_DETECTIONS];   /**< its gated detections */
+                trk_real r_own[TRK_CV2_NZ * TRK_CV2_NZ * TRK_MAX_DETECTIONS]; /**< their own R_j */
             } set;
 #if TRK_WITH_JOINT
-            struct {                                           /* the joint marginals: */
+            struct {                                           /**< the joint marginals: */
                 struct trk_jpda_solver solver;
                 trk_real p_pair[TRK_MAX_GATED_PAIRS];
                 trk_real p_miss[TRK_MAX_TRACKS];
             } joint;
 #endif
-            struct {                                           /* the 2-D indices' scratch
+            struct {                                           /**< the 2-D indices' scratch
                                                                   (grid_order: the scan's at
                                                                   load, the merge's tracks, a
                                                                   run of candidates; and the
@@ -700,14 +732,14 @@ struct trk_tracker {
                 uint16_t tmp[TRK_MAX_DETECTIONS];
                 uint16_t count[TRK_MAX_DETECTIONS + 1];
             } sort;
-            struct {                                           /* the merge's candidate pairs */
+            struct {                                           /**< the merge's candidate pairs */
                 uint16_t pair[2 * TRK_MAX_TRACKS];
             } merge;
         } u;
     } ws;
 };
 
-/* Check params as trk_tracker_init does, without a tracker. On a refusal
+/** Check params as trk_tracker_init does, without a tracker. On a refusal
  * *field (field may be NULL) names the refused member of struct
  * trk_tracker_params, a constant string:
  *   "n_sensors", "clutter", "process_noise_q", "gate_prob",
@@ -729,7 +761,7 @@ struct trk_tracker {
  * *field is NULL on success. Statuses as trk_tracker_init. */
 TRK_NODISCARD trk_status trk_tracker_check_params(const struct trk_tracker_params *p, const char **field);
 
-/* Validate params (trk_tracker_check_params), build the confirmation and
+/** Validate params (trk_tracker_check_params), build the confirmation and
  * termination models once (the clutter-density threshold table, HMMs, ...)
  * and initialise an empty table.
  * TRK_E_ARG NULL/enum, TRK_E_NAN non-finite, TRK_E_RANGE out of range,
@@ -738,7 +770,7 @@ TRK_NODISCARD trk_status trk_tracker_check_params(const struct trk_tracker_param
  * a build with TRK_WITH_CLUTTER_TESTS = 0; *t untouched on error. */
 TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_params *p);
 
-/* Process one scan (see the top of this file). report may be NULL.
+/** Process one scan (see the top of this file). report may be NULL.
  * Whole-scan refusals (table untouched, report zeroed):
  * TRK_E_ARG NULL pointers, TRK_E_CAPACITY more than TRK_MAX_SCAN_DETECTIONS
  * (65535) detections (a scan of TRK_MAX_DETECTIONS + 1 .. 65535 is
@@ -749,17 +781,17 @@ TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct tr
 TRK_NODISCARD trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,
                                                   struct trk_scan_report *report);
 
-/* Track in slot i (0 .. TRK_MAX_TRACKS-1), or NULL when the slot is free.
+/** Track in slot i (0 .. TRK_MAX_TRACKS-1), or NULL when the slot is free.
  * Iterate over all slots to list tracks (order = slot, not id). */
 const struct trk_track *trk_tracker_track(const struct trk_tracker *t, size_t slot);
 
-/* Number of slots in use (tentative, confirmed or terminated-this-scan). */
+/** Number of slots in use (tentative, confirmed or terminated-this-scan). */
 size_t trk_tracker_live_count(const struct trk_tracker *t);
 
-/* sizeof(struct trk_tracker) as the library was built. */
+/** sizeof(struct trk_tracker) as the library was built. */
 size_t trk_tracker_sizeof(void);
 
-/* TRK_OK when the library was built with the capacities, real type and
+/** TRK_OK when the library was built with the capacities, real type and
  * options (TRK_WITH_CLUTTER_TESTS, TRK_CLUTTER_KMAX, ...) that this
  * translation unit sees: call it once at start-up. */
 #define trk_tracker_abi_check()                                                        \
@@ -769,7 +801,7 @@ size_t trk_tracker_sizeof(void);
 
 /* ---------------------------------------------------------------- helpers */
 
-/* Range/bearing of a sensor at (sensor_x_m, sensor_y_m) to a Cartesian
+/** Range/bearing of a sensor at (sensor_x_m, sensor_y_m) to a Cartesian
  * detection. Bearing is clockwise from +y (north), x east:
  *   x = xs + r sin(b), y = ys + r cos(b).
  * The covariance is the first-order (Jacobian) transform of

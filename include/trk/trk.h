@@ -1,4 +1,5 @@
-/* trk/trk.h - umbrella header: includes every public header of libtrk. */
+/** @file
+ * trk/trk.h - umbrella header: includes every public header of libtrk. */
 #ifndef TRK_TRK_H
 #define TRK_TRK_H
 

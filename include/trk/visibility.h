@@ -1,4 +1,5 @@
-/* trk/visibility.h - target visibility (IPDA-style existence) of one track,
+/** @file
+ * trk/visibility.h - target visibility (IPDA-style existence) of one track,
  * for confirmation and deletion (Kennedy 2008 eqs 1-2 and 21-32;
  * docs/conventions.md "Track confirmation and termination" -> Visibility).
  *
@@ -35,46 +36,47 @@
 
 #include "trk/types.h"
 
+/** Parameters of the visibility test (confirmation and termination by the visibility confidence p_cv). */
 struct trk_visibility_params {
-    trk_real pv0;           /* p_v(1|1), visibility at the initiation scan, (0, 1) */
-    trk_real pcv0;          /* p_cv(1), confidence at the initiation scan, [0, 1] */
-    trk_real delta_stay;    /* Delta: P(visible -> visible) per scan, [0, 1] */
-    trk_real delta_become;  /* Delta_bar: P(invisible -> visible) per scan, [0, 1] */
-    trk_real omega_c;       /* smoothing weight of the confidence, [0, 1) */
-    trk_real p_con;         /* confirm when pcv >= p_con, (0, 1] */
-    trk_real p_term;        /* terminate when pcv < p_term, [0, p_con) (0: never) */
+    trk_real pv0;           /**< p_v(1|1), visibility at the initiation scan, (0, 1) */
+    trk_real pcv0;          /**< p_cv(1), confidence at the initiation scan, [0, 1] */
+    trk_real delta_stay;    /**< Delta: P(visible -> visible) per scan, [0, 1] */
+    trk_real delta_become;  /**< Delta_bar: P(invisible -> visible) per scan, [0, 1] */
+    trk_real omega_c;       /**< smoothing weight of the confidence, [0, 1) */
+    trk_real p_con;         /**< confirm when pcv >= p_con, (0, 1] */
+    trk_real p_term;        /**< terminate when pcv < p_term, [0, p_con) (0: never) */
 };
 
-/* Validated parameters, shared by every track. */
+/** Validated parameters, shared by every track. */
 struct trk_visibility_model {
-    struct trk_visibility_params params;
+    struct trk_visibility_params params;  /**< as given to trk_visibility_model_init */
 };
 
-/* Per-track state. */
+/** Per-track state. */
 struct trk_visibility {
-    trk_real pv_pred;       /* p_v(k|k-1) of the last scan (pv0 before the first) */
-    trk_real pv;            /* p_v(k|k) */
-    trk_real pcv;           /* smoothed confidence p_cv(k) */
-    enum trk_decision decision; /* CONTINUE, CONFIRM (pcv reached p_con) or
+    trk_real pv_pred;       /**< p_v(k|k-1) of the last scan (pv0 before the first) */
+    trk_real pv;            /**< p_v(k|k) */
+    trk_real pcv;           /**< smoothed confidence p_cv(k) */
+    enum trk_decision decision; /**< CONTINUE, CONFIRM (pcv reached p_con) or
                                    TERMINATE (pcv fell below p_term); see above */
-    int scans;              /* updates since init */
+    int scans;              /**< updates since init */
 };
 
-/* TRK_E_ARG NULL pointer, TRK_E_NAN non-finite parameter, TRK_E_RANGE a
+/** TRK_E_ARG NULL pointer, TRK_E_NAN non-finite parameter, TRK_E_RANGE a
  * parameter outside its range. *m untouched on error. */
 TRK_NODISCARD trk_status trk_visibility_model_init(struct trk_visibility_model *m,
                                                    const struct trk_visibility_params *p);
 
-/* Start state of a new track: pv = pv0, pcv = pcv0, no decision
+/** Start state of a new track: pv = pv0, pcv = pcv0, no decision
  * (CONTINUE). Does nothing when m or v is NULL. */
 void trk_visibility_reset(const struct trk_visibility_model *m, struct trk_visibility *v);
 
-/* Start state of a new track with a given existence pv0 in [0, 1] (the
+/** Start state of a new track with a given existence pv0 in [0, 1] (the
  * tracker's initial existence, trk/tracker.h): pv = pv_pred = pcv = pv0.
  * Does nothing when m or v is NULL. */
 void trk_visibility_reset_to(const struct trk_visibility_model *m, struct trk_visibility *v, trk_real pv0);
 
-/* One scan: the visibility test's step. log_sum is the log of the detection
+/** One scan: the visibility test's step. log_sum is the log of the detection
  * sum,
  *   log_sum = ln sum_i (g_D,i / rho) l_i  (-INFINITY: no gated detection;
  *             +INFINITY: a detection where clutter is impossible, rho = 0:
@@ -88,19 +90,19 @@ TRK_NODISCARD trk_status trk_visibility_step(const struct trk_visibility_model *
                                              struct trk_visibility *v, trk_real pd, trk_real pg,
                                              trk_real log_sum, enum trk_decision *decision);
 
-/* trk_visibility_step without the decision output (the decision is still
+/** trk_visibility_step without the decision output (the decision is still
  * updated in v->decision): the tracker's per-scan update of trk_track.vis.
  * Same statuses except that there is no decision pointer to check. */
 TRK_NODISCARD trk_status trk_visibility_update_log(const struct trk_visibility_model *m,
                                                    struct trk_visibility *v, trk_real pd,
                                                    trk_real pg, trk_real log_sum);
 
-/* Eq 1: the predicted visibility pv_pred = Delta pv + Delta_bar (1 - pv) of
+/** Eq 1: the predicted visibility pv_pred = Delta pv + Delta_bar (1 - pv) of
  * the coming scan (m and v not NULL): the existence psi a joint association
  * weighs the track's events with (trk/jpda.h). */
 trk_real trk_visibility_predict(const struct trk_visibility_model *m, const struct trk_visibility *v);
 
-/* One scan whose posterior pv_post in [0, 1] was formed elsewhere (the
+/** One scan whose posterior pv_post in [0, 1] was formed elsewhere (the
  * JIPDA existence of trk_jpda_existence, from pv_pred = trk_visibility_predict):
  * pv_pred, pv, pcv (eq 2) and the decision as trk_visibility_update_log.
  * With the track alone in its cluster, JIPDA's posterior is the pv of
@@ -109,7 +111,7 @@ trk_real trk_visibility_predict(const struct trk_visibility_model *m, const stru
 TRK_NODISCARD trk_status trk_visibility_update_posterior(const struct trk_visibility_model *m,
                                                          struct trk_visibility *v, trk_real pv_post);
 
-/* The step's log_sum from the n gated detections: spatial likelihoods
+/** The step's log_sum from the n gated detections: spatial likelihoods
  * gd[i] >= 0 and the clutter density rho > 0 (same units), and
  * log_la[i] = ln l_i (NULL: no amplitude, l_i = 1), by log-sum-exp
  * (-INFINITY for n = 0). n <= TRK_MAX_DETECTIONS. TRK_E_ARG NULL log_sum (or
