@@ -1,8 +1,8 @@
 /* amp_table_firmware.c - the firmware way to use an amplitude table.
  *
  * The table was generated offline as C source,
- *     trk-tablegen amp --clutter k --nu 1 --snr-db 15 --pfa 1e-3 \
- *         --format c --name amp_table -o amp_table_data.h
+ *     trk-tablegen amp --clutter-model k --k-shape 1 --snr-db 15 --pfa 1e-3 \
+ *         --format c --name amp_table --out amp_table_data.h
  * (mk/tables.mk does this into build/gen/ for every build, in the build's
  * real width), and is linked as a const array: on a microcontroller it stays
  * in flash. trk_table_parse checks it once at start-up (magic, version, real
