@@ -17,6 +17,8 @@
 #   make bench-instr     instructions per scan_64x256 (callgrind), double and float
 #   make bench-grid      the scan over a grid of tracks x detections
 #   make demo            trk's main job (see README)
+#   make docs            the API reference of include/trk (Doxygen), build/docs/html
+#   make docs-run        the runnable blocks of README.md and docs/*.md
 #   make cross           libtrk for Cortex-M (build/cross/<target>/libtrk.a)
 #   make check-heap      fail if libtrk references a heap/stdio/abort symbol
 #   make install PREFIX=/usr/local [DESTDIR=]   (float beside it: make install
