@@ -1,11 +1,11 @@
 # mk/docs.mk - `make docs`: the API reference of libtrk from its public
 # headers (include/trk, docs/Doxyfile, start page docs/api-main.md) by
 # Doxygen, in $(BUILD)/docs/html/index.html (the headers' indented layout
-# kept by the input filter tools/scripts/doxygen_filter.py, python3). Every public function, type,
-# member and macro must carry a Doxygen comment: any Doxygen warning (an
-# undocumented declaration, a broken reference or command) fails it, with
-# the warnings printed as file:line, and so does a header without a @file
-# comment. A step of `make test`.
+# kept by the input filter tools/scripts/doxygen_filter.awk). Every public
+# function, type, member and macro must carry a Doxygen comment: any Doxygen
+# warning (an undocumented declaration, a broken reference or command) fails
+# it, with the warnings printed as file:line, and so does a header without a
+# @file comment. A step of `make test`.
 DOXYGEN ?= doxygen
 DOCS_DIR := $(BUILD)/docs
 TEST_EXTRA += docs
