@@ -9,7 +9,7 @@
 DOCS_RUN_FLAGS ?=
 TEST_EXTRA += docs-run
 # what the runnable blocks use: the tools, libtrk.a (a program built against
-# it), libtrk.so (the Python example) and the demo's amplitude table
+# it), libtrk.so (the Python tracker example) and the demo's amplitude table
 TEST_EXTRA_DEPS_docs-run := $(BUILD)/bin/trk-sim $(BUILD)/bin/trk-tablegen $(BUILD)/bin/trk-sonar-sim \
   $(BUILD)/bin/trk-lcm-bridge $(LIB) $(BUILD)/libtrk.so $(DEMO_TABLES)
 .PHONY: docs-run
@@ -17,6 +17,7 @@ docs-run: $(TEST_EXTRA_DEPS_docs-run)
 	@[ '$(BUILD)' = build ] || { echo "docs-run: the documented commands use build/: run it without BUILD=$(BUILD)"; exit 1; }
 	@# the runner itself: a failing block fails at its FILE:LINE, skipped ones do not run
 	@sh tests/docs_run_selftest.sh
-	@# build/demo/detections.csv, the recorded scans docs/python.md reads
-	@$(MAKE) --no-print-directory demo-main > /dev/null
+	@# what the Python examples read: the demo's CSV files (build/demo) and
+	@# the LCM demo's track log (build/demo-lcm)
+	@$(MAKE) --no-print-directory demo-main demo-lcm > /dev/null
 	@python3 tools/scripts/docs_run.py $(DOCS_RUN_FLAGS) README.md docs/*.md
