@@ -101,6 +101,7 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
     } else {
         const struct run_reach rr = expire_candidates(t, scan, idx, n);
         size_t n_new = 0;
+        for (size_t k = 0; k < n; k++) t->ws.w[idx[k]] = 0; /* no refused pair ends at it (link_refused) */
         if (!slot_possible(t, &sl, NULL)) { /* every slot confirmed: no pair could start */
             rep->n_init_refused_full += (uint32_t)n;
             store_candidates(t, scan, idx, n, rep);
@@ -283,6 +284,34 @@ static size_t run_slot(const struct trk_tracker *t, size_t k) { return (t->run_f
 
 static struct trk_i_cand_run *cand_run(struct trk_tracker *t, size_t k) { return &t->run[run_slot(t, k)]; }
 
+/* A pair (candidate ci of run k, workspace detection j) refused for want
+ * of a slot: j, stored as a candidate, remembers the pair's first point
+ * (its run's age from this scan and its offset in it: both survive the
+ * store's moves) in ws.w[j], free after the merge (0: none). */
+static void link_refused(struct trk_tracker *t, size_t run_k, size_t ci, size_t j)
+{
+    const struct trk_i_cand_run *run = cand_run(t, run_k);
+    const uint32_t age = t->scan_no - run->scan_no; /* 1 .. max_gap_scans */
+    t->ws.w[j] = (trk_real)(age * 65536u + (uint32_t)(ci - run->start)); /* < 2^24: exact in float */
+}
+
+/* The first point of the refused pair candidate c (of run k) ended, and
+ * its run in *run_p; NULL when there is none or its run has gone. */
+static const struct trk_candidate *refused_first(struct trk_tracker *t, size_t k, const struct trk_candidate *c,
+                                                 const struct trk_i_cand_run **run_p)
+{
+    if (c->prev_age == 0) return NULL;
+    const uint32_t scan_no = cand_run(t, k)->scan_no - c->prev_age;
+    for (size_t m = 0; m < k; m++) {
+        const struct trk_i_cand_run *r = cand_run(t, m);
+        if (r->scan_no != scan_no) continue;
+        if (c->prev_off >= r->n) return NULL;
+        *run_p = r;
+        return &t->cand[r->start + c->prev_off];
+    }
+    return NULL;
+}
+
 /* Drop the oldest run. */
 static void drop_oldest_run(struct trk_tracker *t)
 {
@@ -307,7 +336,7 @@ static struct run_reach expire_candidates(struct trk_tracker *t, const struct tr
         if (d->has_cov && d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY] > var_j)
             var_j = d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY];
     }
-    struct run_reach rr;
+    struct run_reach rr = {{0}, {0}}; /* the runs past n_runs are never read */
     const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
     for (size_t k = 0; k < t->n_runs; k++) {
         const struct trk_i_cand_run *run = cand_run(t, k);
@@ -363,6 +392,51 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
     return best;
 }
 
+/* ln O of a pair: its first point candidate c (of run), its second point's
+ * ln(P_D l^a / lambda) in second, dt apart (trk_init_params). */
+static trk_real pair_log_odds(const struct trk_tracker *t, const struct trk_i_cand_run *run,
+                              const struct trk_candidate *c, trk_real second, trk_real dt)
+{
+    const trk_real pi = TRK_REAL_C(3.14159265358979323846), vdt = t->params.init.max_speed_mps * dt;
+    return t->init_log_odds[run->sensor_id].first + c->log_lr + second - trk_log(pi * vdt * vdt);
+}
+
+/* The three-point ln O (trk_init_params) of workspace detection j (R_j
+ * r_j) continuing the refused pair (p, c) that candidate c of run k ended,
+ * dt after c: the pair's ln O plus the hit's ln(P_D l^a N(z_j; z^, S) /
+ * lambda), z^ = z_c + a (z_c - z_p), a = dt / dt_pc, S = R_j + (1 + a)^2
+ * R_c + a^2 R_p + q dt^3 / 3 I (the pair's two-point track predicted by
+ * dt: P_pp + 2 dt P_pv + dt^2 P_vv + Q_pp); -inf when there is no such
+ * pair or j is outside that track's gate (d2 > gamma). */
+static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_scan *scan, size_t k,
+                                     const struct trk_candidate *c, const trk_real *r_c, size_t j,
+                                     const trk_real *r_j, trk_real dt)
+{
+    const struct trk_i_cand_run *run_p = NULL;
+    const struct trk_candidate *cp = refused_first(t, k, c, &run_p);
+    if (!cp) return -TRK_REAL_MAX;
+    const struct trk_i_cand_run *run_c = cand_run(t, k);
+    const trk_real dt_pc = (trk_real)(run_c->time_us - run_p->time_us) * TRK_REAL_C(1e-6);
+    if (!(dt_pc > 0)) return -TRK_REAL_MAX;
+    const trk_real a = dt / dt_pc, qp = t->params.process_noise_q * dt * dt * dt / 3;
+    trk_real r_p[NZ * NZ], s[NZ * NZ];
+    candidate_r(cp, r_p);
+    for (int i = 0; i < NZ * NZ; i++) s[i] = r_j[i] + (1 + a) * (1 + a) * r_c[i] + a * a * r_p[i];
+    s[S(ZX, ZX)] += qp;
+    s[S(ZY, ZY)] += qp;
+    const trk_real ex = t->ws.x[j] - (c->x_m + a * (c->x_m - cp->x_m));
+    const trk_real ey = t->ws.y[j] - (c->y_m + a * (c->y_m - cp->y_m));
+    const trk_real det = s[S(ZX, ZX)] * s[S(ZY, ZY)] - s[S(ZX, ZY)] * s[S(ZX, ZY)];
+    if (!(det > 0)) return -TRK_REAL_MAX;
+    const trk_real d2 =
+        (s[S(ZY, ZY)] * ex * ex - 2 * s[S(ZX, ZY)] * ex * ey + s[S(ZX, ZX)] * ey * ey) / det;
+    if (!(d2 <= t->pda[scan->sensor_id].gamma)) return -TRK_REAL_MAX;
+    const trk_real pi = TRK_REAL_C(3.14159265358979323846);
+    const trk_real hit = t->init_log_odds[scan->sensor_id].second + t->ws.log_lr[j] - trk_log(2 * pi) -
+                         TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
+    return pair_log_odds(t, run_p, cp, t->init_log_odds[run_c->sensor_id].second + c->log_lr, dt_pc) + hit;
+}
+
 /* A track from candidate c and workspace detection j (two-point
  * differencing, trk_init_params): x = z_j, v = (z_j - z_c) / dt,
  * P_pp = R_j, P_pv = R_j / dt, P_vv = (R_c + R_j) / dt^2. 0 when no slot,
@@ -370,24 +444,29 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
 static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t run_k, size_t ci,
                       size_t j, const trk_real *r_j, const struct run_reach *rr, struct trk_scan_report *rep)
 {
-    if (!slot_possible(t, sl, rep)) return 0;
+    if (!slot_possible(t, sl, rep)) {
+        link_refused(t, run_k, ci, j);
+        return 0;
+    }
     struct trk_i_cand_run *run = cand_run(t, run_k);
     struct trk_candidate *c = &t->cand[ci];
     const trk_real dt = rr->dt_s[run_k];
-    const trk_real vdt = t->params.init.max_speed_mps * dt;
-    /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v */
-    const trk_real pi = TRK_REAL_C(3.14159265358979323846);
-    const trk_real log_odds = t->init_log_odds[run->sensor_id].first + c->log_lr +
-                              t->init_log_odds[scan->sensor_id].second + t->ws.log_lr[j] - trk_log(pi * vdt * vdt);
-    const trk_real psi0 = initial_existence(t, log_odds);
     trk_real r_c[NZ * NZ], x[NX], p[NX * NX];
     candidate_r(c, r_c);
+    /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v, or
+     * the three points' when c ended a refused pair that j continues */
+    const trk_real log_odds = pair_log_odds(t, run, c, t->init_log_odds[scan->sensor_id].second + t->ws.log_lr[j], dt);
+    const trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt);
+    const trk_real psi0 = initial_existence(t, log_odds3 > -TRK_REAL_MAX ? log_odds3 : log_odds);
     const trk_real z_c[NZ] = {c->x_m, c->y_m}, z_j[NZ] = {t->ws.x[j], t->ws.y[j]};
     /* P is SPD in exact arithmetic; rounding can break it when R_c is tiny
      * against R_j: then no track, the detection stays a candidate */
     if (trk_cv2_two_point(z_c, r_c, z_j, r_j, dt, x, p) != TRK_OK) return 0;
     struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
-    if (!tr) return 0;
+    if (!tr) {
+        link_refused(t, run_k, ci, j);
+        return 0;
+    }
     for (int k = 0; k < NX; k++) tr->x[k] = x[k];
     for (int k = 0; k < NX * NX; k++) tr->p[k] = p[k];
     c->used = 1;
@@ -484,6 +563,9 @@ static void fill_candidate(const struct trk_tracker *t, const struct trk_scan *s
     c->cov_m2[TRK_COV2_YY] = r[S(ZY, ZY)];
     c->log_lr = t->ws.log_lr[j];
     c->used = 0;
+    const uint32_t link = (uint32_t)t->ws.w[j]; /* link_refused */
+    c->prev_age = (uint8_t)(link >> 16);
+    c->prev_off = (uint16_t)(link & 0xffffu);
 }
 
 /* The scan's unpaired detections idx[0..n) (in workspace order) into the

@@ -35,6 +35,16 @@ static trk_status run_scan(int k, const struct trk_detection *d, size_t n, struc
     return trk_tracker_process_scan(&tk, &scan, rep);
 }
 
+static size_t count_confirmed(void)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *tr = trk_tracker_track(&tk, i);
+        n += tr && tr->status == TRK_TRACK_CONFIRMED;
+    }
+    return n;
+}
+
 static const struct trk_track *only_live_track(void)
 {
     const struct trk_track *found = NULL;
@@ -184,6 +194,61 @@ static void test_full_table_replaces_weakest(void **state)
     assert_true(target_id != 0);
     assert_true(second_id != 0);
     if (TRK_MAX_TRACKS < 2 * n_fresh) assert_true(replaced > 0);
+}
+
+/* A table nearly full of confirmed tracks (all slots but one, 63 of 64 by
+ * default: targets on a 300 m grid with P_D 0.9, confirmed before the
+ * clutter begins) under 100 clutter detections per scan (lambda = 100 /
+ * 9 km^2, from scan 10 on): a target that appears at scan 40
+ * is confirmed within 25 scans in each of 8 seeds (an empty table confirms
+ * it in 5-11). The free slots hold clutter-born tentative tracks, which a
+ * fresh pair must be able to displace. */
+static void test_new_target_in_nearly_full_table(void **state)
+{
+    (void)state;
+    const size_t n_old = TRK_MAX_TRACKS - 1, n_clutter = 100;
+    if (n_old + 1 + n_clutter > TRK_MAX_DETECTIONS || TRK_MAX_TRACKS < 16) {
+        skip();
+        return;
+    }
+    static struct trk_detection d[TRK_MAX_DETECTIONS];
+    const double lambda = (double)n_clutter / AREA_M2;
+    int worst = 0;
+    for (int seed = 0; seed < 8; seed++) {
+        struct trk_tracker_params p;
+        sonar_params(&p, lambda);
+        p.sensor[0].pd = TRK_REAL_C(0.9);
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        rng_state = 100 + (uint64_t)seed;
+        const int appear = 40;
+        int confirmed_at = -1;
+        size_t n_old_confirmed = 0;
+        for (int k = 0; k < appear + 60 && confirmed_at < 0; k++) {
+            size_t n = 0;
+            for (size_t i = 0; i < n_old; i++) /* a grid, at 1 m/s east */
+                if (urand() < 0.9)
+                    d[n++] = det_at(-1400 + 300.0 * (double)(i % 10) + 1.0 * SCAN_S * k + 5 * nrand(),
+                                    -1400 + 300.0 * (double)(i / 10) + 5 * nrand());
+            const double tx = -1250 + 5.0 * SCAN_S * (k - appear), ty = 1350; /* the new one, 5 m/s east */
+            if (k >= appear && urand() < 0.9) d[n++] = det_at(tx + 5 * nrand(), ty + 5 * nrand());
+            for (size_t i = 0; k >= 10 && i < n_clutter && n < TRK_MAX_DETECTIONS; i++) /* once the old ones are confirmed */
+                d[n++] = det_at(-1500 + 3000 * urand(), -1500 + 3000 * urand());
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(run_scan(k, d, n, &rep));
+            if (k == appear - 1) n_old_confirmed = count_confirmed();
+            for (size_t i = 0; k >= appear && i < TRK_MAX_TRACKS; i++) {
+                const struct trk_track *a = trk_tracker_track(&tk, i);
+                if (a && a->status == TRK_TRACK_CONFIRMED && fabs(a->x[X] - tx) < 40 && fabs(a->x[Y] - ty) < 40)
+                    confirmed_at = k - appear;
+            }
+        }
+        print_message("seed %d: %zu old tracks confirmed; the new target confirmed after %d scans\n", seed,
+                      n_old_confirmed, confirmed_at);
+        assert_true(n_old_confirmed >= n_old - 2); /* the table is nearly full of confirmed tracks */
+        if (confirmed_at < 0 || confirmed_at > 25) fail_msg("seed %d: not confirmed within 25 scans", seed);
+        if (confirmed_at > worst) worst = confirmed_at;
+    }
+    print_message("worst: %d scans\n", worst);
 }
 
 /* Tentative tracks on clutter: a pair with nothing after it is rejected
@@ -530,6 +595,7 @@ int main(void)
         cmocka_unit_test(test_candidate_store),
         cmocka_unit_test(test_existence_rejects_clutter_pair),
         cmocka_unit_test(test_full_table_replaces_weakest),
+        cmocka_unit_test(test_new_target_in_nearly_full_table),
         cmocka_unit_test(test_no_duplicates),
         cmocka_unit_test(test_vanished_target_every_method),
         cmocka_unit_test(test_existence_params_punned),

@@ -352,6 +352,18 @@ enum trk_init_method {
  *                 A_v = pi (max_speed_mps dt)^2 (the target's second point is
  *                 uniform over the reachable disc; a clutter one has density
  *                 lambda)
+ *   three points: a pair refused for want of a slot leaves its second
+ *                 point a candidate that remembers the first; a detection
+ *                 that pairs with it inside the gate of that pair's track
+ *                 (predicted: S = R + (1 + a)^2 R_c + a^2 R_p + q dt^3 / 3,
+ *                 a = dt / dt_pc) has the pair's O times the hit's
+ *                 P_D l^a(z) N(z; z^, S) / lambda (Blackman & Popoli's
+ *                 score of a third point). The track still starts from the
+ *                 last two points; only its existence counts the third.
+ *                 So a target whose starts a full table refused outranks
+ *                 the fresh clutter pairs that would otherwise hold the few
+ *                 free slots (they all start at the same pair odds, and
+ *                 replacement needs a strictly lower existence);
  *   psi0 = O / (1 + O); lambda = 0 gives psi0 = 1.
  * beta = birth_density_per_m2, lambda the sensor's clutter density, P_D the
  * sensor's. With birth_density_per_m2 = 0 a track starts at the visibility
@@ -590,6 +602,9 @@ struct trk_candidate {
     trk_real cov_m2[3];      /**< its covariance [xx, xy, yy] (own or the sensor's) */
     trk_real log_lr;         /**< ln l^a (0 without amplitude) */
     uint8_t used;            /**< it started a track: it pairs no more */
+    uint8_t prev_age;        /**< 0, or it ended a pair refused for want of a slot: the
+                                  pair's first point is in the run prev_age scans older, */
+    uint16_t prev_off;       /**< at this offset in it (the three-point existence) */
 };
 
 /** The pair store: every track's gated pairs with joint association, else
