@@ -251,14 +251,6 @@ static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_s
     if (why == TRK_END_MERGED) rep->n_merged++;
 }
 
-/* Is the track's position uncertainty over the bound (max_pos_sigma_ratio)
- * of the scan's sensor? */
-static int over_covariance_bound(const struct trk_tracker *t, const struct trk_track *tr, unsigned sensor)
-{
-    const trk_real bound = t->max_pos_var_m2[sensor];
-    return bound > 0 && tr->p[P(X, X)] + tr->p[P(Y, Y)] > bound;
-}
-
 /* Per-track PDA: confirmed tracks first, since a tentative track may not
  * use the detections in a confirmed track's gate (it would become its
  * duplicate). */
@@ -303,12 +295,12 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
     const int failed = track_update(t, tr, scan, &look);
     (void)joint_k;
 #endif
-    if (failed != 0) {
+    if (failed < 0) {
         end_track(tr, TRK_END_NUMERICAL, rep);
         return;
     }
     tr->n_scans++;
-    if (over_covariance_bound(t, tr, scan->sensor_id)) {
+    if (failed > 0 || over_covariance_bound(t, tr->p, scan->sensor_id)) {
         end_track(tr, TRK_END_COVARIANCE, rep);
         rep->n_covariance++;
         return;

@@ -177,9 +177,9 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
     }
     struct trk_i_grid_box box = ws_box(t, b.lo_x, b.hi_x, b.lo_y, b.hi_y);
     size_t j0, j1;
-    while (trk_i_grid_next(&box, &j0, &j1))
-        for (size_t j = j0; j < j1; j++) imm_gate_one(t, scan, &gt, &b, j);
-    for (size_t j = t->ws.n_shared; j < t->ws.n_valid; j++) imm_gate_one(t, scan, &gt, &b, j);
+    while (!gt.full && trk_i_grid_next(&box, &j0, &j1)) /* a cut set is dropped: stop at the cut */
+        for (size_t j = j0; j < j1 && !gt.full; j++) imm_gate_one(t, scan, &gt, &b, j);
+    for (size_t j = t->ws.n_shared; j < t->ws.n_valid && !gt.full; j++) imm_gate_one(t, scan, &gt, &b, j);
     set->m_gated = set->n;
     return gt.full;
 }

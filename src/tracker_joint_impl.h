@@ -39,8 +39,10 @@ static trk_real joint_psi(const struct trk_tracker *t, const struct trk_track *t
 }
 
 /* Track tr into the joint problem as joint track n_joint: predict, gate
- * into the pairs from the store's end, and its weights. 0, or -1 when it is
- * left out (prediction failed, or its pairs do not fit). */
+ * into the pairs from the store's end, and its weights. 0; -1 when it is
+ * left out (prediction failed, or its pairs do not fit); 1 when left out
+ * because its prediction is over the covariance bound (its own update
+ * ends it). */
 static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan)
 {
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
@@ -48,6 +50,7 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
     struct pred pr;
     struct trk_i_pda_set set;
     if (track_predict(t, tr, scan, &pr) != TRK_OK) return -1;
+    if (over_covariance_bound(t, pr.p, scan->sensor_id)) return 1;
     if (track_gate(t, tr, scan, &pr, off, &set) != 0) return -1;
     const trk_real psi = joint_psi(t, tr);
     if (psi > 0) {
@@ -75,7 +78,7 @@ static TRK_NOINLINE void joint_gate(struct trk_tracker *t, const struct trk_scan
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             struct trk_track *tr = &t->track[i];
             const uint8_t want = confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE;
-            if (tr->status == want && joint_gate_track(t, tr, scan) != 0) rep->n_assoc_overflow++;
+            if (tr->status == want && joint_gate_track(t, tr, scan) < 0) rep->n_assoc_overflow++;
         }
 }
 

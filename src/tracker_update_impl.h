@@ -58,9 +58,21 @@ static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan,
 static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn);
 #endif
 
+/* Is the position uncertainty of covariance p over the bound
+ * (max_pos_sigma_ratio) of the scan's sensor? */
+static int over_covariance_bound(const struct trk_tracker *t, const trk_real *p, unsigned sensor)
+{
+    const trk_real bound = t->max_pos_var_m2[sensor];
+    return bound > 0 && p[P(X, X)] + p[P(Y, Y)] > bound;
+}
+
 /* Predict track tr to the scan time, gate the scan's valid detections (the
  * workspace), PDA-update it and mark the detections it used; *look gets what
- * the scan told its tests. 0, or -1 on a numerical failure (tr untouched). */
+ * the scan told its tests. 0; 1 when the prediction is already over the
+ * covariance bound (the track has lost its target: it is ended without
+ * gating, which with so wide a gate would be a pass over most of the scan
+ * for a track that the bound ends anyway); -1 on a numerical failure (tr
+ * untouched). */
 static int track_update(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
                         struct trk_look *look)
 {
@@ -69,6 +81,7 @@ static int track_update(struct trk_tracker *t, struct trk_track *tr, const struc
     struct trk_i_pda_set set;
     struct trk_i_pda_out out;
     if (track_predict(t, tr, scan, &pr) != TRK_OK) return -1;
+    if (over_covariance_bound(t, pr.p, scan->sensor_id)) return 1;
     if (track_gate(t, tr, scan, &pr, 0, &set) < 0) return -1; /* one track's set fits: TRK_I_PAIRS >= TRK_MAX_DETECTIONS */
     if (track_pda(t, scan, &pr, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
     struct trk_visibility vis = tr->vis;
@@ -252,7 +265,8 @@ static struct gate gate_begin(struct trk_tracker *t, const struct trk_track *tr,
  * init_exclusion_d2 for a confirmed track, else gamma. The set holds the
  * shared-covariance detections first (n_shared), then the own-covariance
  * ones, each in workspace order. 1 when the pairs from off on could not hold
- * the whole set (the set is then cut), else 0. */
+ * the whole set (gating then stops: the caller drops a cut set, and the
+ * track is gated again alone, which marks the exclusion zone), else 0. */
 static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                 const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set)
 {
@@ -265,15 +279,15 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
     const int tentative = tr->status == TRK_TRACK_TENTATIVE;
     struct trk_i_grid_box box = ws_box(t, zx - wx, zx + wx, zy - wy, zy + wy);
     size_t j0, j1;
-    while (trk_i_grid_next(&box, &j0, &j1))
-        for (size_t j = j0; j < j1; j++) {
+    while (!gt.full && trk_i_grid_next(&box, &j0, &j1)) /* a cut set is dropped: stop at the cut */
+        for (size_t j = j0; j < j1 && !gt.full; j++) {
             const trk_real dx = t->ws.x[j] - zx, dy = t->ws.y[j] - zy;
             if (trk_fabs(dx) <= wx && trk_fabs(dy) <= wy && !(tentative && used[j] == USED_CONFIRMED)) {
                 const trk_real nu[NZ] = {dx, dy}; /* formed in the box only (measured: 2 % of the scan) */
                 gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
             }
         }
-    for (size_t j = n_shared; j < n_valid; j++) {
+    for (size_t j = n_shared; j < n_valid && !gt.full; j++) {
         const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
         trk_real r_j[NZ * NZ], l_inv[NZ * NZ], log_det;
         if (tentative && used[j] == USED_CONFIRMED) continue;

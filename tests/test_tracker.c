@@ -527,6 +527,71 @@ static void test_full_table(void **state)
 
 /* Own-covariance detections equal to the sensor's give the same result as
  * shared-covariance ones (one formula serves both). */
+/* The covariance bound on the prediction: a confirmed track whose prediction
+ * after a gap is over the bound ends (TRK_END_COVARIANCE) before it is gated,
+ * even with a detection on its predicted position, which is then free to
+ * start a track; one scan earlier (prediction within the bound) the same
+ * detection updates it. Both with joint and with per-track association. */
+static void test_covariance_bound_at_prediction(void **state)
+{
+    (void)state;
+    for (int joint = 0; joint < 2; joint++) {
+        struct trk_tracker_params p;
+        base_params(&p);
+        p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+        p.association = joint ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA;
+        p.max_pos_sigma_ratio = 20; /* the default (base_params: M/N, K/N, no bound) */
+        if (trk_tracker_check_params(&p, NULL) != TRK_OK) continue; /* a build without joint association */
+        /* the first gap (whole seconds) whose prediction passes the bound */
+        const double bound = (double)(p.max_pos_sigma_ratio * p.max_pos_sigma_ratio *
+                                      (p.sensor[0].meas_cov_m2[TRK_COV2_XX] + p.sensor[0].meas_cov_m2[TRK_COV2_YY]));
+        int gap_over = 0;
+        for (int within = 0; within < 2; within++) {
+            TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+            struct trk_detection d;
+            memset(&d, 0, sizeof d);
+            for (int k = 0; k < 6; k++) {
+                d.x_m = (trk_real)(2.0 * k);
+                struct trk_scan scan = {SEC(k), 0, 1, &d};
+                TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
+            }
+            assert_int_equal(count_status(&tk, TRK_TRACK_CONFIRMED), 1);
+            const struct trk_track *tr = trk_tracker_track(&tk, 0);
+            if (gap_over == 0) {
+                trk_real x[TRK_CV2_NX], pp[TRK_CV2_NX * TRK_CV2_NX];
+                for (int g = 1; g < 100000 && gap_over == 0; g++) {
+                    memcpy(x, tr->x, sizeof x);
+                    memcpy(pp, tr->p, sizeof pp);
+                    TRK_ASSERT_OK(trk_cv2_predict((trk_real)g, p.process_noise_q, x, pp));
+                    if ((double)(pp[P(X, X)] + pp[P(Y, Y)]) > bound) gap_over = g;
+                }
+                assert_true(gap_over > 1);
+            }
+            const int gap = within ? gap_over - 1 : gap_over;
+            const uint32_t id = tr->id;
+            d.x_m = (trk_real)(tr->x[X] + gap * tr->x[VX]);
+            d.y_m = (trk_real)(tr->x[Y] + gap * tr->x[VY]);
+            struct trk_scan scan = {SEC(5 + gap), 0, 1, &d};
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+            check_invariants(&tk);
+            if (within) {
+                assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
+                assert_int_equal(tr->id, id);
+                assert_int_equal(rep.n_tracks_hit, 1);
+                assert_int_equal(rep.n_covariance, 0);
+            } else {
+                assert_int_equal(tr->status, TRK_TRACK_TERMINATED);
+                assert_int_equal(tr->end_reason, TRK_END_COVARIANCE);
+                assert_int_equal(rep.n_covariance, 1);
+                assert_int_equal(rep.n_tracks_hit, 0);
+                assert_int_equal(rep.n_assoc_overflow, 0);
+                assert_int_equal(rep.n_candidates + rep.n_started, 1); /* the detection is free */
+            }
+        }
+    }
+}
+
 static void test_own_covariance(void **state)
 {
     (void)state;
@@ -1061,6 +1126,7 @@ int main(void)
         cmocka_unit_test(test_check_params),
         cmocka_unit_test(test_full_table),
         cmocka_unit_test(test_own_covariance),
+        cmocka_unit_test(test_covariance_bound_at_prediction),
         cmocka_unit_test(test_polar),
         cmocka_unit_test(test_two_sensors),
         cmocka_unit_test(test_methods_lifecycle),

@@ -131,17 +131,20 @@
 #error "TRK_JPDA_EXACT_BITS must be in 1..16 (the exact method's 2^bits workspace, jpda.h); set -DTRK_JPDA_EXACT_BITS=9"
 #endif
 #ifndef TRK_JPDA_MAX_WORK
-#define TRK_JPDA_MAX_WORK (1L << 22) /**< about 5 ms of a host core; a firmware with a tight
-                                        scan budget lowers it (and TRK_JPDA_SCAN_WORK) */
+#define TRK_JPDA_MAX_WORK (1L << 18) /**< about 0.1 ms of a host core: so the worst scan stays
+                                        within 10x a typical full scan (docs/firmware.md,
+                                        "Worst-case scan time"); raise it (and
+                                        TRK_JPDA_SCAN_WORK) for exact marginals of larger
+                                        clusters at that cost */
 #endif
 /** ... and all exact programmes of one call (one scan) together at most
  * TRK_JPDA_SCAN_WORK: the clusters beyond take belief propagation, so a
  * scan's exact work is bounded however many large clusters it has. */
 #ifndef TRK_JPDA_SCAN_WORK
-#define TRK_JPDA_SCAN_WORK (1L << 22)
+#define TRK_JPDA_SCAN_WORK (1L << 18)
 #endif
 #if TRK_JPDA_SCAN_WORK < TRK_JPDA_MAX_WORK
-#error "TRK_JPDA_SCAN_WORK must be at least TRK_JPDA_MAX_WORK (jpda.h); set -DTRK_JPDA_SCAN_WORK=4194304"
+#error "TRK_JPDA_SCAN_WORK must be at least TRK_JPDA_MAX_WORK (jpda.h); set -DTRK_JPDA_SCAN_WORK=262144"
 #endif
 /** Gated track-detection pairs one scan may hold (the tracker's joint
  * association, and trk_jpda_marginals' sparse copy): at least
@@ -154,11 +157,11 @@
 #error "TRK_MAX_GATED_PAIRS must be in TRK_MAX_DETECTIONS..65535 (trk/jpda.h); set -DTRK_MAX_GATED_PAIRS=512"
 #endif
 #ifndef TRK_JPDA_LBP_MAX_ITER
-/** Iteration cap of the loopy belief propagation of joint association (trk/jpda.h), at least 1. */
-#define TRK_JPDA_LBP_MAX_ITER 200
+#define TRK_JPDA_LBP_MAX_ITER 30 /**< the bound on a cluster that does not converge (a
+                                     fully shared one); typical clusters converge in fewer */
 #endif
 #if TRK_JPDA_LBP_MAX_ITER < 1
-#error "TRK_JPDA_LBP_MAX_ITER must be at least 1 (jpda.h); set -DTRK_JPDA_LBP_MAX_ITER=200"
+#error "TRK_JPDA_LBP_MAX_ITER must be at least 1 (jpda.h); set -DTRK_JPDA_LBP_MAX_ITER=30"
 #endif
 
 /* ---------------------------------------------------------------- options */

@@ -425,7 +425,9 @@ struct trk_tracker_params {
                                                          ends (TRK_END_COVARIANCE) when
                                                          trace of its position covariance
                                                          > ratio^2 trace R of the scan's
-                                                         sensor; >= 0, 0 = no bound */
+                                                         sensor, predicted (then it is
+                                                         not gated) or updated; >= 0,
+                                                         0 = no bound */
     enum trk_assoc_method association;                /**< per-track PDA or joint (JIPDA) */
     trk_real max_coord_m;                             /**< surveillance bound: |x_m|, |y_m| of a
                                                          detection at most this, else counted
