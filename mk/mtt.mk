@@ -48,7 +48,14 @@ MTT_IMM_RATES ?= 1 2 3
 MTT_IMM_ACCEL ?= 0.1
 MTT_IMM_ACCEL_S ?= 60
 
-.PHONY: mtt mtt-smoke mtt-imm
+.PHONY: mtt mtt-smoke mtt-imm tuning
+# `make tuning`: one setting at a time (assumed P_D and clutter density, P_G,
+# the existence thresholds, clutter beyond capacity) against GOSPA, false
+# tracks and time to confirm (tools/scripts/tuning_sweep.sh; docs/tuning.md)
+TUNING_SEEDS ?= 20
+TUNING_SCANS ?= 200
+tuning: $(BUILD)/bin/trk-sim
+	sh tools/scripts/tuning_sweep.sh $(BUILD)/bin/trk-sim $(MTT_RESULTS)/tuning $(TUNING_SEEDS) $(TUNING_SCANS)
 mtt:
 	+@$(MAKE) --no-print-directory BUILD=build CONFIG_DEFS= build/bin/trk-sim
 	+@$(MAKE) --no-print-directory BUILD=$(MTT_LARGE_BUILD) CONFIG_DEFS=-DTRK_MAX_TRACKS=$(MTT_LARGE_TRACKS) \
