@@ -78,17 +78,29 @@ static struct trk_detection random_detection(void)
     return d;
 }
 
+/* A positive count from the environment variable name (a long run of the
+ * same test: TRK_RANDOM_SCANS=100000), else def. */
+static long env_count(const char *name, long def)
+{
+    const char *v = getenv(name);
+    char *end;
+    const long n = v ? strtol(v, &end, 10) : 0;
+    return v && *v && !*end && n > 0 ? n : def;
+}
+
 /* Random scans (random gaps, counts, covariances) through configurations
  * that stress the arithmetic: the defaults, q = 0 (P becomes singular
  * along the tiny own covariances), and M/N with single-point initiation
  * and a huge velocity prior; in a build with TRK_WITH_IMM also IMM tracks of
  * three models (turns at 3 deg/s) with the per-track PDA and, with q = 0,
- * joint association. Every scan: the invariants (every model's too). */
+ * joint association. Every scan: the invariants (every model's too).
+ * TRK_RANDOM_SCANS (scans per configuration, 4000) and TRK_RANDOM_SEED
+ * (added to each configuration's seed, 0) make a longer or another run. */
 static void test_random_scans(void **state)
 {
     (void)state;
     static struct trk_detection det[TRK_MAX_DETECTIONS];
-    const int n_scans = 4000;
+    const long n_scans = env_count("TRK_RANDOM_SCANS", 4000), seed = env_count("TRK_RANDOM_SEED", 0);
     unsigned numerical = 0;
     const int n_cfg = TRK_WITH_IMM ? 5 : 3;
     for (int cfg = 0; cfg < n_cfg; cfg++) {
@@ -104,9 +116,10 @@ static void test_random_scans(void **state)
         if (cfg == 3) p.association = TRK_ASSOC_PDA;
 #endif
         TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-        rng_state = 77 + (uint64_t)cfg;
+        unsigned numerical_cfg = 0;
+        rng_state = 77 + (uint64_t)cfg + (uint64_t)seed;
         int64_t t_us = 0;
-        for (int k = 0; k < n_scans; k++) {
+        for (long k = 0; k < n_scans; k++) {
             const size_t cap = TRK_MAX_DETECTIONS < 40 ? TRK_MAX_DETECTIONS : 40;
             const size_t n = (size_t)(urand() * (double)(cap + 1)) % (cap + 1);
             for (size_t i = 0; i < n; i++) det[i] = random_detection();
@@ -120,10 +133,12 @@ static void test_random_scans(void **state)
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
             assert_int_equal(rep.n_detections, n);
-            numerical += check_table(&rep);
+            numerical_cfg += check_table(&rep);
         }
+        print_message("configuration %d: %u tracks ended as numerical\n", cfg, numerical_cfg);
+        numerical += numerical_cfg;
     }
-    print_message("%u tracks ended as numerical in %d random scans\n", numerical, n_cfg * n_scans);
+    print_message("%u tracks ended as numerical in %ld random scans\n", numerical, n_cfg * n_scans);
 }
 
 /* Covariances too near singular for the arithmetic, or whose xx yy
