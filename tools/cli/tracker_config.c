@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "kvfile.h"
+#include "suggest.h"
 #include "trk/confirm_mn.h"
 #include "trk/amplitude.h"
 #include "trk/table.h"
@@ -225,6 +226,48 @@ static const char *const SPRT_MODEL_NAMES[] = {"fixed_pd", "hmm", NULL};
 static const char *const EVENTS_NAMES[] = {"complete", "paper", NULL}; /* enum trk_event_model */
 static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
 
+/* Every key tcfg_set knows (but the sensor.N.* ones), for the suggestion
+ * after a misspelled one; test_lcm_config checks it against tcfg_set and
+ * tcfg_write. */
+static const char *const KEYS[] = {
+    "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
+    "max_tentative_scans", "merge_gate_d2", "init_exclusion_d2", "association", "init.method",
+    "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "max_pos_sigma_ratio",
+    "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
+    "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
+    "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.mn.m", "confirm.mn.n",
+    "confirm.mn.mode", "confirm.sprt.alpha", "confirm.sprt.beta", "confirm.sprt.pd", "confirm.sprt.model",
+    "confirm.clutter_density.alpha", "confirm.clutter_density.kmax", "confirm.clutter_amplitude.alpha",
+    "confirm.clutter_amplitude.kmax", "confirm.clutter_amplitude.a_min_db", "term",
+    "term.existence.p_terminate", "term.kn.k", "term.kn.n", "term.page.h", "term.shiryaev.beta0",
+    "term.shiryaev.rho", "term.shiryaev.h", "hmm.p_low_high", "hmm.q_high_low", "hmm.pd_low", "hmm.pd_high",
+    "hmm.events", "hmm.pi0_high", "q2_table", "imm.turn_rate_dps", "imm.p_stay", "imm.turn_q", NULL};
+/* The keys of one sensor, after "sensor.N.". */
+static const char *const SENSOR_KEYS[] = {"pd",     "clutter_density_per_m2", "meas_cov_m2", "meas_sigma_m",
+                                          "amplitude", "k_shape",              "snr_db",      "pfa",
+                                          "amp_table", NULL};
+
+const char *const *tcfg_keys(void) { return KEYS; }
+const char *const *tcfg_sensor_keys(void) { return SENSOR_KEYS; }
+
+/* An unknown key: the nearest known one into err ("" when none is close),
+ * and 1. A sensor key is compared with sensor `s`'s keys (s < 0: with
+ * sensor 0's among the others). */
+static int unknown_key(const char *key, long s, char *err, size_t n)
+{
+    char cand[sizeof SENSOR_KEYS / sizeof SENSOR_KEYS[0]][64];
+    struct cli_near near;
+    cli_near_init(&near, key);
+    if (s < 0)
+        for (int i = 0; KEYS[i]; i++) cli_near_add(&near, KEYS[i]);
+    for (int i = 0; SENSOR_KEYS[i]; i++) {
+        snprintf(cand[i], sizeof cand[i], "sensor.%ld.%s", s < 0 ? 0 : s, SENSOR_KEYS[i]);
+        cli_near_add(&near, cand[i]);
+    }
+    snprintf(err, n, "%s", near.best ? near.best : "");
+    return 1;
+}
+
 /* ------------------------------------------------------------------ set */
 
 /* sp->meas_cov_m2 = m after the tracker's own check (the authority), on its
@@ -247,7 +290,8 @@ static int set_meas_cov(struct trk_sensor_params *sp, unsigned s, const double m
     return 0;
 }
 
-static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v, char *err,
+/* full: the whole key ("sensor.1.pd"), key: after "sensor.N." */
+static int set_sensor(struct tcfg *c, unsigned s, const char *full, const char *key, const char *v, char *err,
                       size_t n)
 {
     struct trk_sensor_params *sp = &c->params.sensor[s];
@@ -279,7 +323,7 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v
     }
     if (strcmp(key, "pfa") == 0) return get_double(v, R_PROB_OO, &a->pfa, err, n);
     if (strcmp(key, "amp_table") == 0) return get_path(v, a->table, err, n);
-    return 1;
+    return unknown_key(full, (long)s, err, n);
 }
 
 int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
@@ -298,13 +342,13 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
             return -1;
         }
         unsigned long s = isdigit((unsigned char)key[7]) ? strtoul(key + 7, &end, 10) : 0;
-        if (!isdigit((unsigned char)key[7]) || *end != '.' || errno) return 1;
+        if (!isdigit((unsigned char)key[7]) || *end != '.' || errno) return unknown_key(key, -1, err, n);
         if (s >= TRK_MAX_SENSORS) {
             snprintf(err, n, "sensor index %lu: this build has TRK_MAX_SENSORS = %d", s,
                      TRK_MAX_SENSORS);
             return -1;
         }
-        return set_sensor(c, (unsigned)s, end + 1, v, err, n);
+        return set_sensor(c, (unsigned)s, key, end + 1, v, err, n);
     }
     if (strcmp(key, "sensors") == 0) {
         if (get_long(v, 1, TRK_MAX_SENSORS, &l, err, n) != 0) return -1;
@@ -478,7 +522,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         return -1;
     }
 #endif
-    return 1;
+    return unknown_key(key, -1, err, n);
 }
 
 /* ------------------------------------------------------------------ check */

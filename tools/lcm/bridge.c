@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "kvfile.h"
+#include "suggest.h"
 
 void bridge_opts_defaults(struct bridge_opts *o)
 {
@@ -27,6 +28,10 @@ static int set_channel(char *dst, const char *v, int allow_empty, char *err, siz
     strcpy(dst, v);
     return 0;
 }
+
+/* The keys bridge_opts_set knows, for the suggestion after a misspelled one. */
+static const char *const BRIDGE_KEYS[] = {"lcm_url",         "detection_channel", "track_channel", "status_channel",
+                                          "status_period_s", "log_interval_s",    NULL};
 
 int bridge_opts_set(void *ctx, const char *key, const char *v, char *err, size_t n)
 {
@@ -52,6 +57,8 @@ int bridge_opts_set(void *ctx, const char *key, const char *v, char *err, size_t
         else o->log_interval_s = d;
         return 0;
     }
+    const char *near = cli_suggest(key, BRIDGE_KEYS);
+    snprintf(err, n, "%s", near ? near : "");
     return 1;
 }
 
