@@ -1,5 +1,6 @@
 /* tracker_config.c - the tracker's configuration for the tools
  * (tracker_config.h). */
+#include "errmsg.h"
 #include "tracker_config.h"
 
 #include <ctype.h>
@@ -282,8 +283,8 @@ static int set_meas_cov(struct trk_sensor_params *sp, unsigned s, const double m
     for (int i = 0; i < 3; i++) t.sensor[s].meas_cov_m2[i] = (trk_real)m[i];
     const trk_status st = trk_tracker_check_params(&t, &field);
     if (st != TRK_OK) {
-        snprintf(err, n, "refused by the tracker (%s): %s%s", field, trk_status_str(st),
-                 st == TRK_E_NOT_SPD ? " (not positive definite: need xx > 0, yy > 0, xx yy > xy^2)" : "");
+        snprintf(err, n, "refused by the tracker (%s): %s%s", field, ERRMSG_STATUS(st),
+                 st == TRK_E_NOT_SPD ? "; need xx > 0, yy > 0, xx yy > xy^2" : "");
         return -1;
     }
     for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = t.sensor[s].meas_cov_m2[i];
@@ -559,7 +560,7 @@ static int check_table(const char *path, const char *what, const uint32_t *kinds
     if (st != TRK_OK) {
         free(bytes);
         snprintf(err, n, "%s '%s': not a usable table for this build: %s", what, path,
-                 trk_status_str(st));
+                 ERRMSG_STATUS(st));
         return -1;
     }
     int kind_ok = 0;
@@ -576,7 +577,7 @@ static int check_table(const char *path, const char *what, const uint32_t *kinds
         if (st != TRK_OK) {
             free(bytes);
             snprintf(err, n, "%s '%s': trk_amplitude_init_table: %s", what, path,
-                     trk_status_str(st));
+                     ERRMSG_STATUS(st));
             return -1;
         }
     }
@@ -628,22 +629,22 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
     if (strcmp(f, "confirm.method") == 0 || strcmp(f, "term.method") == 0) {
         const int conf = f[0] == 'c';
         snprintf(err, n, "%s = %s: refused by the tracker (%s): %s%s", conf ? "confirm" : "term",
-                 conf ? confirm_name(c->confirm) : term_name(c->term), f, trk_status_str(st),
+                 conf ? confirm_name(c->confirm) : term_name(c->term), f, ERRMSG_STATUS(st),
                  method_hint(st, f,
                              conf ? c->confirm == TRK_CONFIRM_VISIBILITY || c->confirm == TRK_CONFIRM_EXISTENCE
                                   : c->term == TRK_TERM_VISIBILITY || c->term == TRK_TERM_EXISTENCE));
     } else if (strncmp(f, "confirm.", 8) == 0) {
         snprintf(err, n, "confirm = %s: its parameters (confirm.%s.*%s) are refused (%s): %s%s",
                  confirm_name(c->confirm), confirm_name(c->confirm),
-                 c->confirm == TRK_CONFIRM_SPRT ? ", hmm.*" : "", f, trk_status_str(st),
+                 c->confirm == TRK_CONFIRM_SPRT ? ", hmm.*" : "", f, ERRMSG_STATUS(st),
                  method_hint(st, f, c->confirm == TRK_CONFIRM_VISIBILITY));
     } else if (strncmp(f, "term.", 5) == 0) {
         snprintf(err, n, "term = %s: its parameters (term.%s.*%s) are refused (%s): %s%s", term_name(c->term),
                  term_name(c->term), c->term == TRK_TERM_PAGE || c->term == TRK_TERM_SHIRYAEV ? ", hmm.*" : "",
-                 f, trk_status_str(st), method_hint(st, f, c->term == TRK_TERM_VISIBILITY));
+                 f, ERRMSG_STATUS(st), method_hint(st, f, c->term == TRK_TERM_VISIBILITY));
     } else if (sscanf(f, "sensor[%u].%47s", &s, member) == 2) {
         snprintf(err, n, "sensor.%u.%s: refused by the tracker (%s): %s", s,
-                 strcmp(member, "use_amplitude") == 0 ? "amplitude" : member, f, trk_status_str(st));
+                 strcmp(member, "use_amplitude") == 0 ? "amplitude" : member, f, ERRMSG_STATUS(st));
     } else {
         const char *key = strcmp(f, "n_sensors") == 0          ? "sensors"
                           : strcmp(f, "track_visibility") == 0 ? "visibility"
@@ -654,7 +655,7 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
                                ? " (association = joint needs clutter = parametric and every sensor's "
                                  "clutter_density_per_m2 > 0; or set association = pda)"
                                : "";
-        snprintf(err, n, "%s: refused by the tracker (%s): %s%s", key, f, trk_status_str(st), hint);
+        snprintf(err, n, "%s: refused by the tracker (%s): %s%s", key, f, ERRMSG_STATUS(st), hint);
     }
 }
 
@@ -691,7 +692,7 @@ int tcfg_check(const struct tcfg *c, char *err, size_t n)
                                              (trk_real)c->amp[s].pfa);
             if (st != TRK_OK) {
                 snprintf(err, n, "sensor.%u amplitude model (snr_db, pfa): %s", s,
-                         trk_status_str(st));
+                         ERRMSG_STATUS(st));
                 return -1;
             }
         }
@@ -744,7 +745,7 @@ int tcfg_load(const struct tcfg *c, struct tcfg_runtime *rt, char *err, size_t n
             continue;
         }
         if (st != TRK_OK) {
-            snprintf(err, n, "sensor.%u amplitude model: %s", s, trk_status_str(st));
+            snprintf(err, n, "sensor.%u amplitude model: %s", s, ERRMSG_STATUS(st));
             tcfg_unload(rt);
             return -1;
         }

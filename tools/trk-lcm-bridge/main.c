@@ -4,9 +4,10 @@
  *   trk-lcm-bridge --replay IN --out OUT [options] offline: log in, log out
  *   trk-lcm-bridge --summarize LOG                 what a track log contains
  *
- * Exit status: 0 normal end (also after SIGINT/SIGTERM), 1 a runtime failure
- * (LCM cannot be created or fails, a log cannot be read or written), 2 bad
- * usage or configuration (nothing was started). */
+ * Exit status (docs/statuses.md, "Exit codes"): 0 normal end (also after
+ * SIGINT/SIGTERM), 1 a runtime failure (LCM cannot be created or fails, a log
+ * cannot be read or written; a replay that read no event prints no summary),
+ * 2 bad usage or configuration (nothing was started). */
 #define _POSIX_C_SOURCE 200809L
 #include <signal.h>
 #include <stdio.h>
@@ -294,6 +295,10 @@ int main(int argc, char **argv)
         if (bridge_replay(b, replay_in, replay_out, keep_input, &cli_stop_flag, &st, err, sizeof err) != 0) {
             fprintf(stderr, "trk-lcm-bridge: %s\n", err);
             rc = 1;
+            if (st.events == 0) { /* nothing replayed (no input, no log, no output): no summary of nothing */
+                bridge_free(b);
+                return rc;
+            }
         }
         const double el = (double)(bridge_mono_us() - t0) * 1e-6;
         printf("trk-lcm-bridge: replay %s -> %s: %llu events, %llu on %s, %llu written",
