@@ -10,7 +10,7 @@ const char *trk_status_message(trk_status s)
         "success",
         "invalid argument (a NULL pointer, a bad dimension or an enum value out of range)",
         "a value is NaN or infinite",
-        "a value is outside its allowed range",
+        "a value is outside its documented range",
         "more items than this build's compile-time capacity allows",
         "a covariance is not symmetric positive definite",
         "a matrix that must be inverted is singular",

@@ -161,6 +161,10 @@ if [ -x "$bin/trk-sim" ]; then
         --scans 12 --out "$T/demo" --quiet --no-plot
     [ "$(wc -l < "$T/err")" -eq 1 ] || fail "trk-sim demo, no table: more than one line: $(cat "$T/err")"
 fi
+if [ -x "$bin/trk-vectors" ]; then
+    expect 1 "trk-vectors: cannot read $T/none.vec: No such file or directory" "$bin/trk-vectors" "$T/none.vec"
+    expect 2 "trk-vectors: unknown option --skip-slwo; did you mean '--skip-slow'?" "$bin/trk-vectors" --skip-slwo x.vec
+fi
 # a Python tool without numpy (python3 -S: no site-packages) names the package, exit 1
 if command -v python3 > /dev/null 2>&1; then
     expect 1 "plot_track_log.py: needs the Python package numpy (Debian: apt-get install python3-numpy; pip: pip install numpy)" \
