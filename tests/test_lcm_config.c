@@ -85,6 +85,15 @@ static const char *tmp_file(const char *name, const char *text, size_t len)
     return path;
 }
 
+/* A config file of text that kv_parse_file refuses, with want in the message (err). */
+static void file_refused(const char *name, const char *text, const char *want)
+{
+    const char *path = tmp_file(name, text, strlen(text));
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    if (!strstr(err, want)) fail_msg("%s: '%s', want '%s'", name, err, want);
+    remove(path);
+}
+
 static void test_defaults(void **state)
 {
     (void)state;
@@ -251,30 +260,12 @@ static void test_file(void **state)
     assert_int_equal(c.mn.m, 3); /* the last one wins */
     remove(path);
 
-    const char bad1[] = "gate_prob = 0.9\n\nnot a setting\n";
-    path = tmp_file("bad1.conf", bad1, sizeof bad1 - 1);
-    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
-    assert_non_null(strstr(err, ":3: expected 'key = value'"));
-    remove(path);
-
-    const char bad2[] = "gate_prob = 0.9\ngate_prob = 2\n";
-    path = tmp_file("bad2.conf", bad2, sizeof bad2 - 1);
-    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
-    assert_non_null(strstr(err, ":2: gate_prob = 2: must be in (0, 1)"));
-    remove(path);
-
-    const char bad3[] = "colour = red\n";
-    path = tmp_file("bad3.conf", bad3, sizeof bad3 - 1);
-    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
-    assert_non_null(strstr(err, ":1: unknown setting 'colour'"));
+    file_refused("bad1.conf", "gate_prob = 0.9\n\nnot a setting\n", ":3: expected 'key = value'");
+    file_refused("bad2.conf", "gate_prob = 0.9\ngate_prob = 2\n", ":2: gate_prob = 2: must be in (0, 1)");
+    file_refused("bad3.conf", "colour = red\n", ":1: unknown setting 'colour'");
     assert_null(strstr(err, "did you mean"));
-    remove(path);
-
-    const char bad4[] = "# tracker\nsensors = 1\nprocess_noise_qq = 0.1\n";
-    path = tmp_file("bad4.conf", bad4, sizeof bad4 - 1);
-    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
-    assert_non_null(strstr(err, ":3: unknown setting 'process_noise_qq'; did you mean 'process_noise_q'?"));
-    remove(path);
+    file_refused("bad4.conf", "# tracker\nsensors = 1\nprocess_noise_qq = 0.1\n",
+                 ":3: unknown setting 'process_noise_qq'; did you mean 'process_noise_q'?");
 
     static char longline[KV_MAX_LINE + 10];
     memset(longline, 'a', sizeof longline - 2);
