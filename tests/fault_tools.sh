@@ -20,12 +20,14 @@
 #     ..."); a corrupt table is said in plain words with the status's name
 #     (trk-tablegen info printed no program name); a replay of a missing file
 #     prints no summary (it printed one of zeros); a Python tool without numpy
-#     names the package (it printed a traceback).
+#     names the package, and one given a missing file names it (they printed
+#     a traceback).
 # The checkpoint checks need the -mpi builds (MPI=1), the replay ones the
 # bridge (LCM); each is skipped, and said, without them.
 set -u
 bin=$1
 STEP=fault-tools
+export PYTHONDONTWRITEBYTECODE=1 # no __pycache__ in the checkout
 . tests/step_lib.sh
 n=0
 ran() { n=$((n + 1)); }
@@ -170,5 +172,11 @@ if command -v python3 > /dev/null 2>&1; then
     expect 1 "plot_track_log.py: needs the Python package numpy (Debian: apt-get install python3-numpy; pip: pip install numpy)" \
         python3 -S tools/python/plot_track_log.py "$T/none.lcmlog"
     grep -q Traceback "$T/err" && fail "plot_track_log.py without numpy: a traceback: $(cat "$T/err")"
+fi
+# ... and with numpy, a missing log is one line, exit 1
+if find_python; then
+    expect 1 "plot_track_log.py: $T/none.lcmlog: No such file or directory" \
+        "$PY" tools/python/plot_track_log.py "$T/none.lcmlog"
+    [ "$(wc -l < "$T/err")" -eq 1 ] || fail "plot_track_log.py, no log: more than one line: $(cat "$T/err")"
 fi
 ok "$n checks passed"

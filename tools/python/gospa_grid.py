@@ -21,7 +21,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from needs import need  # noqa: E402
+from needs import need, run_main  # noqa: E402
 
 np = need("gospa_grid.py", "numpy")
 import trk  # noqa: E402
@@ -125,4 +125,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_main("gospa_grid.py", main)

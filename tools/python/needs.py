@@ -1,9 +1,11 @@
-"""needs.py - a tool's third-party Python packages, named in plain words when
-one is missing (instead of a ModuleNotFoundError traceback):
+"""needs.py - what a tool needs, said in plain words when it is missing
+(instead of a traceback): its third-party Python packages, and its files.
 
-    from needs import need
+    from needs import need, run_main
     need("plot_track_log.py", "numpy")        # before the imports that use it
     plt = need("gospa_grid.py", "matplotlib.pyplot")
+    ...
+    run_main("plot_track_log.py", main, (lcmlog.LogError,))
 
 need() imports and returns the module; when it (or its package) is not
 installed it prints, on stderr,
@@ -12,8 +14,11 @@ installed it prints, on stderr,
     python3-numpy; pip: pip install numpy)
 
 (one line) and exits with status 1, a failure while running (docs/statuses.md,
-"Exit codes"). Only the standard library here: it must work where nothing else
-is installed.
+"Exit codes"). run_main(prog, main, errors) runs main() and exits with its
+value; a file that cannot be read or written (OSError) or one of `errors`
+(e.g. lcmlog.LogError, a log that is no LCM log) is said as "prog: what" and
+exits 1. Only the standard library here: it must work where nothing else is
+installed.
 """
 
 import importlib
@@ -35,3 +40,17 @@ def need(prog, module):
         package = (getattr(e, "name", None) or module).split(".")[0]
         print(missing_message(prog, package), file=sys.stderr)
         sys.exit(1)
+
+
+def run_main(prog, main, errors=()):
+    """sys.exit(main()); OSError and `errors` said in one line, exit 1."""
+    try:
+        rc = main()
+    except OSError as e:
+        what = "%s: %s" % (e.filename, e.strerror) if e.filename and e.strerror else str(e)
+        print("%s: %s" % (prog, what), file=sys.stderr)
+        sys.exit(1)
+    except tuple(errors) as e:
+        print("%s: %s" % (prog, e), file=sys.stderr)
+        sys.exit(1)
+    sys.exit(rc)

@@ -21,7 +21,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from needs import need  # noqa: E402
+from needs import need, run_main  # noqa: E402
 
 need("plot_track_log.py", "numpy")
 import trklog  # noqa: E402
@@ -149,4 +149,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    run_main("plot_track_log.py", main, (trklog.lcmlog.LogError, trklog.DecodeError))
