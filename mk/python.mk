@@ -33,6 +33,6 @@ PY_SHARE = $(DESTDIR)$(PREFIX)/share/trk/python
 install: install-python
 install-python:
 	install -d $(PY_SHARE)/trk
-	install -m 644 tools/python/lcmlog.py tools/python/trklog.py tools/python/trkcsv.py $(PY_SHARE)/
+	install -m 644 tools/python/lcmlog.py tools/python/trklog.py tools/python/trkcsv.py tools/python/needs.py $(PY_SHARE)/
 	install -m 755 tools/python/plot_track_log.py $(PY_SHARE)/
 	install -m 644 tools/python/trk/*.py $(PY_SHARE)/trk/

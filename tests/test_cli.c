@@ -4,7 +4,8 @@
  * deprecation note each), refused values (blank, empty, trailing garbage,
  * out of range), --help (exit status 0, the generated text), usage errors
  * (one line naming the option, exit status 2), operands, --set into the
- * tracker configuration, the subcommand dispatcher; and the stop flag set by
+ * tracker configuration, the subcommand dispatcher, the suggestion after a
+ * misspelled option, key or command (suggest.h); and the stop flag set by
  * SIGINT/SIGTERM after cli_catch_stop_signals. */
 #define _POSIX_C_SOURCE 200809L
 #include <signal.h>
@@ -12,6 +13,7 @@
 
 #include "cli.h"
 #include "kvfile.h"
+#include "suggest.h"
 #include "tracker_config.h"
 #include "trk_test.h"
 
@@ -367,7 +369,13 @@ static void test_usage_errors(void **state)
 {
     (void)state;
     EXPECT_USAGE_ERROR("t: unknown option --bogus (see --help)", "--out", "x", "--bogus");
-    EXPECT_USAGE_ERROR("t: unknown option --scan (see --help)", "--out", "x", "--scan", "3");
+    /* a misspelled option: the nearest listed spelling (never a deprecated one) */
+    EXPECT_USAGE_ERROR("t: unknown option --scan; did you mean '--scans'? (see --help)", "--out", "x", "--scan", "3");
+    EXPECT_USAGE_ERROR("t: unknown option --sacns=3; did you mean '--scans'? (see --help)", "--out", "x", "--sacns=3");
+    EXPECT_USAGE_ERROR("t: unknown option --modle (see --help)", "--out", "x", "--modle", "k"); /* --model: old */
+    EXPECT_USAGE_ERROR("t: unknown option -z (see --help)", "--out", "x", "-z");                /* -q: 1 of 2 */
+    EXPECT_USAGE_ERROR("t: unknown option --k-shap; did you mean '--k-shape'? (see --help)", "--out", "x", "--k-shap",
+                       "2");
     EXPECT_USAGE_ERROR("t: --scans needs a value (see --help)", "--out", "x", "--scans");
     EXPECT_USAGE_ERROR("t: --nu needs a value", "--out", "x", "--nu");
     EXPECT_USAGE_ERROR("t: --quiet takes no value (see --help)", "--out", "x", "--quiet=1");
@@ -455,6 +463,16 @@ static void test_set(void **state)
     TRK_ASSERT_NEAR(cfg.amp[0].k_shape, 2, 0, 0);
     assert_int_equal(kv_parse_assignment("no_such_key=1", tcfg_set, &cfg, err, sizeof err), -1);
     assert_non_null(strstr(err, "unknown setting 'no_such_key'"));
+    assert_string_equal(err, "unknown setting 'no_such_key'");
+    /* a misspelled key: the nearest known one */
+    assert_int_equal(kv_parse_assignment("gate_prb=0.9", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_string_equal(err, "unknown setting 'gate_prb'; did you mean 'gate_prob'?");
+    assert_int_equal(kv_parse_assignment("sensor.1.pdd=0.9", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_string_equal(err, "unknown setting 'sensor.1.pdd'; did you mean 'sensor.1.pd'?");
+    assert_int_equal(kv_parse_assignment("sesnor.0.snr_db=9", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_string_equal(err, "unknown setting 'sesnor.0.snr_db'; did you mean 'sensor.0.snr_db'?");
+    assert_int_equal(kv_parse_assignment("trem.page.h=3", tcfg_set, &cfg, err, sizeof err), -1);
+    assert_string_equal(err, "unknown setting 'trem.page.h'; did you mean 'term.page.h'?");
     assert_int_equal(kv_parse_assignment("gate_prob=2", tcfg_set, &cfg, err, sizeof err), -1);
     assert_non_null(strstr(err, "gate_prob"));
     assert_int_equal(kv_parse_assignment("gate_prob= ", tcfg_set, &cfg, err, sizeof err), -1);
@@ -571,6 +589,55 @@ static void test_dispatch(void **state)
     capture_begin(&c, 2);
     assert_int_equal(cli_dispatch("p", "command", "", cmds, NULL, 2, bad), 2);
     assert_string_equal(capture_end(&c), "p: unknown command 'zz' (see p --help)\n");
+    const struct cli_cmd two[] = {{"info", "", cmd_a}, {"amp", "", cmd_a}, {NULL, NULL, NULL}};
+    char *near[] = {"p", "inof", NULL};
+    capture_begin(&c, 2);
+    assert_int_equal(cli_dispatch("p", "command", "", two, NULL, 2, near), 2);
+    assert_string_equal(capture_end(&c), "p: unknown command 'inof'; did you mean 'info'? (see p --help)\n");
+}
+
+/* ---------------------------------------------------------------- suggestions */
+
+static void test_suggest(void **state)
+{
+    (void)state;
+    /* optimal string alignment: an insertion, a deletion, a substitution, an
+     * adjacent swap each count 1 */
+    assert_int_equal(cli_edit_distance("gamma", "gamma"), 0);
+    assert_int_equal(cli_edit_distance("gama", "gamma"), 1);
+    assert_int_equal(cli_edit_distance("gammma", "gamma"), 1);
+    assert_int_equal(cli_edit_distance("gamna", "gamma"), 1);
+    assert_int_equal(cli_edit_distance("gmama", "gamma"), 1);
+    assert_int_equal(cli_edit_distance("agmma", "gamam"), 2);
+    assert_int_equal(cli_edit_distance("", "ab"), 2);
+    assert_true(cli_edit_distance("abcdef", "uvwxyz") > 2);
+    assert_true(cli_edit_distance("a", "abcd") > 2); /* lengths 3 apart */
+    /* close: at most 2 edits and fewer than half the word's characters */
+    const char *const names[] = {"gamma", "gate_prob", "term", "pd", NULL};
+    assert_string_equal(cli_suggest("gama", names), "gamma");
+    assert_string_equal(cli_suggest("gate_porb", names), "gate_prob");
+    assert_string_equal(cli_suggest("trem", names), "term"); /* 1 edit of 4 */
+    assert_null(cli_suggest("pf", names));                   /* 1 edit of 2: not less than half */
+    assert_null(cli_suggest("tx", names));
+    assert_null(cli_suggest("gate_pxyzb", names));           /* 3 edits */
+    assert_null(cli_suggest("anything", NULL));
+    /* the nearest wins; on a tie the first listed */
+    const char *const tie[] = {"abcd", "abce", "abcx", NULL};
+    assert_string_equal(cli_suggest("abcf", tie), "abcd");
+    assert_string_equal(cli_suggest("abcxy", tie), "abcx");
+    struct cli_near near;
+    cli_near_init(&near, "sensors");
+    cli_near_add(&near, NULL);
+    cli_near_add(&near, "");
+    assert_null(near.best);
+    cli_near_add(&near, "sensor");
+    assert_string_equal(near.best, "sensor");
+    assert_int_equal(near.dist, 1);
+    char buf[64];
+    cli_did_you_mean("gamma", buf, sizeof buf);
+    assert_string_equal(buf, "; did you mean 'gamma'?");
+    cli_did_you_mean(NULL, buf, sizeof buf);
+    assert_string_equal(buf, "");
 }
 
 static void test_internal_errors(void **state)
@@ -617,6 +684,7 @@ int main(void)
         cmocka_unit_test(test_help),         cmocka_unit_test(test_common_table),
         cmocka_unit_test(test_set),
         cmocka_unit_test(test_numbers_one_syntax),       cmocka_unit_test(test_dispatch),
+        cmocka_unit_test(test_suggest),
         cmocka_unit_test(test_internal_errors), cmocka_unit_test(test_stop_signals),
     };
     return trk_run_tests("cli", tests, NULL, NULL);

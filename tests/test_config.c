@@ -49,6 +49,19 @@ static void test_names(void **state)
         assert_true(strncmp(a, "TRK_", 4) == 0 && strcmp(a, "TRK_E_UNKNOWN") != 0);
         for (int j = 0; j < i; j++) assert_true(strcmp(a, trk_status_str((trk_status)j)) != 0);
     }
+    /* every status has a plain-words sentence of its own; out of range a defined one */
+    assert_string_equal(trk_status_message(TRK_OK), "success");
+    assert_string_equal(trk_status_message(TRK_E_TABLE_CRC),
+                        "table checksum does not match its contents (corrupt or truncated copy)");
+    assert_string_equal(trk_status_message(TRK_STATUS_COUNT), "unknown status code");
+    assert_string_equal(trk_status_message((trk_status)-1), "unknown status code");
+    for (int i = 0; i < TRK_STATUS_COUNT; i++) {
+        const char *a = trk_status_message((trk_status)i);
+        assert_non_null(a);
+        assert_true(strlen(a) > 0 && strchr(a, '\n') == NULL && strstr(a, "TRK_") == NULL);
+        assert_true(strcmp(a, "unknown status code") != 0);
+        for (int j = 0; j < i; j++) assert_true(strcmp(a, trk_status_message((trk_status)j)) != 0);
+    }
     assert_int_equal(TRK_DECISION_CONTINUE, 0); /* a zeroed state has no decision */
     assert_string_equal(trk_decision_str(TRK_DECISION_CONTINUE), "TRK_DECISION_CONTINUE");
     assert_string_equal(trk_decision_str(TRK_DECISION_CONFIRM), "TRK_DECISION_CONFIRM");

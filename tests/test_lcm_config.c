@@ -1,7 +1,8 @@
 /* test_lcm_config.c - the tools' tracker configuration (tools/cli/
  * tracker_config.c) and "key = value" files (kvfile.c): defaults are the
  * library's, every key sets its field, bad values and unknown keys are
- * refused with the key (and file:line) in the message, the printed
+ * refused with the key (and file:line) in the message, a misspelled key with
+ * the nearest known one, the printed
  * configuration reads back to the same, and tcfg_check refuses bad
  * combinations, bad tables and methods the tracker does not run yet. */
 #define _POSIX_C_SOURCE 200809L /* getpid */
@@ -17,6 +18,59 @@ static char err[1024];
 
 static int set(const char *k, const char *v) { return tcfg_set(&c, k, v, err, sizeof err); }
 
+/* A setter that fails unless the key is one of tcfg_keys() or a sensor's. */
+static int listed_key(void *ctx, const char *key, const char *value, char *e, size_t n)
+{
+    (void)ctx, (void)value, (void)n, (void)e;
+    for (const char *const *k = tcfg_keys(); *k; k++)
+        if (strcmp(key, *k) == 0) return 0;
+    for (const char *const *k = tcfg_sensor_keys(); *k; k++) {
+        char full[64];
+        for (int s = 0; s < TRK_MAX_SENSORS; s++) {
+            snprintf(full, sizeof full, "sensor.%d.%s", s, *k);
+            if (strcmp(key, full) == 0) return 0;
+        }
+    }
+    fail_msg("tcfg_write wrote the key '%s', not in tcfg_keys()", key);
+    return 1;
+}
+
+/* The key list of the suggestions is the keys tcfg_set takes: each listed
+ * key is known to it (a value may be refused), and every key tcfg_write
+ * writes is listed. */
+static void test_key_list(void **state)
+{
+    (void)state;
+    for (const char *const *k = tcfg_keys(); *k; k++) {
+        tcfg_defaults(&c);
+        assert_int_not_equal(set(*k, "1"), 1);
+    }
+    for (const char *const *k = tcfg_sensor_keys(); *k; k++) {
+        char full[64];
+        snprintf(full, sizeof full, "sensor.0.%s", *k);
+        tcfg_defaults(&c);
+        assert_int_not_equal(set(full, "1"), 1);
+    }
+    tcfg_defaults(&c);
+    c.params.n_sensors = TRK_MAX_SENSORS;
+    snprintf(c.q2_table, sizeof c.q2_table, "q2.tbl");
+    snprintf(c.amp[0].table, sizeof c.amp[0].table, "amp.tbl");
+    char buf[16384];
+    FILE *f = fmemopen(buf, sizeof buf, "w+");
+    assert_non_null(f);
+    tcfg_write(f, &c);
+    rewind(f);
+    int none = 0;
+    assert_int_equal(kv_parse_stream(f, "written", listed_key, &none, err, sizeof err), 0);
+    fclose(f);
+    /* an unknown key: the nearest listed one in err, or "" */
+    tcfg_defaults(&c);
+    assert_int_equal(set("confirm.mn.mm", "3"), 1);
+    assert_string_equal(err, "confirm.mn.m");
+    assert_int_equal(set("zzz", "3"), 1);
+    assert_string_equal(err, "");
+}
+
 /* A temporary file with the given contents; returns its path (static). */
 static const char *tmp_file(const char *name, const char *text, size_t len)
 {
@@ -29,6 +83,15 @@ static const char *tmp_file(const char *name, const char *text, size_t len)
     assert_int_equal(fwrite(text, 1, len, f), len);
     fclose(f);
     return path;
+}
+
+/* A config file of text that kv_parse_file refuses, with want in the message (err). */
+static void file_refused(const char *name, const char *text, const char *want)
+{
+    const char *path = tmp_file(name, text, strlen(text));
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
+    if (!strstr(err, want)) fail_msg("%s: '%s', want '%s'", name, err, want);
+    remove(path);
 }
 
 static void test_defaults(void **state)
@@ -197,23 +260,12 @@ static void test_file(void **state)
     assert_int_equal(c.mn.m, 3); /* the last one wins */
     remove(path);
 
-    const char bad1[] = "gate_prob = 0.9\n\nnot a setting\n";
-    path = tmp_file("bad1.conf", bad1, sizeof bad1 - 1);
-    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
-    assert_non_null(strstr(err, ":3: expected 'key = value'"));
-    remove(path);
-
-    const char bad2[] = "gate_prob = 0.9\ngate_prob = 2\n";
-    path = tmp_file("bad2.conf", bad2, sizeof bad2 - 1);
-    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
-    assert_non_null(strstr(err, ":2: gate_prob = 2: must be in (0, 1)"));
-    remove(path);
-
-    const char bad3[] = "colour = red\n";
-    path = tmp_file("bad3.conf", bad3, sizeof bad3 - 1);
-    assert_int_equal(kv_parse_file(path, tcfg_set, &c, err, sizeof err), -1);
-    assert_non_null(strstr(err, ":1: unknown setting 'colour'"));
-    remove(path);
+    file_refused("bad1.conf", "gate_prob = 0.9\n\nnot a setting\n", ":3: expected 'key = value'");
+    file_refused("bad2.conf", "gate_prob = 0.9\ngate_prob = 2\n", ":2: gate_prob = 2: must be in (0, 1)");
+    file_refused("bad3.conf", "colour = red\n", ":1: unknown setting 'colour'");
+    assert_null(strstr(err, "did you mean"));
+    file_refused("bad4.conf", "# tracker\nsensors = 1\nprocess_noise_qq = 0.1\n",
+                 ":3: unknown setting 'process_noise_qq'; did you mean 'process_noise_q'?");
 
     static char longline[KV_MAX_LINE + 10];
     memset(longline, 'a', sizeof longline - 2);
@@ -476,6 +528,7 @@ int main(void)
         cmocka_unit_test(test_bad_values),    cmocka_unit_test(test_file),
         cmocka_unit_test(test_number_parsers), cmocka_unit_test(test_write_read_back),
         cmocka_unit_test(test_check),         cmocka_unit_test(test_help),
+        cmocka_unit_test(test_key_list),
     };
     return trk_run_tests("lcm_config", tests, NULL, NULL);
 }

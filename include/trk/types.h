@@ -80,7 +80,8 @@ typedef double trk_real;
 
 /** Status of every fallible call. TRK_OK is 0; everything else is a refusal
  * that left the caller's objects as they were (unless a function says
- * otherwise). trk_status_str() names each one. */
+ * otherwise). trk_status_str() names each one, trk_status_message() says it
+ * in plain words. */
 typedef enum trk_status {
     TRK_OK = 0,
     TRK_E_ARG,             /**< NULL pointer, bad dimension or enum value */
@@ -109,6 +110,14 @@ typedef enum trk_status {
 
 /** Short constant name of a status ("TRK_E_NAN"); never NULL. */
 const char *trk_status_str(trk_status s);
+
+/** One line in plain words saying what went wrong, for a person reading a
+ * tool's message ("table checksum does not match its contents (corrupt or
+ * truncated copy)"); "success" for TRK_OK, "unknown status code" for a value
+ * out of range; never NULL. The words agree with docs/statuses.md. Tools
+ * print it with the name: "MESSAGE (TRK_E_TABLE_CRC)". Its text is in an
+ * object of its own: a firmware that does not call it links none of it. */
+const char *trk_status_message(trk_status s);
 
 /** Decision of a per-track test: the confirmation tests (confirm_mn.h,
  * confirm_sprt.h, clutter_test.h, visibility.h) and the termination tests

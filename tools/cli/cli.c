@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "kvfile.h"
+#include "suggest.h"
 
 /* ---------------------------------------------------------------- value parsers */
 
@@ -357,6 +358,22 @@ void cli_note_deprecated(const char *prog, const char *old_spelling, const char 
 /* Options of both tables, one index each (given, noted). */
 #define CLI_MAX_OPTS 256
 
+/* "PROG: unknown option --scan; did you mean '--scans'? (see --help)": the
+ * nearest listed spelling of either table (a "=value" joined to the word
+ * left out). */
+static void unknown_option(const struct cli *c, const char *a)
+{
+    char word[128], mean[160];
+    snprintf(word, sizeof word, "%.*s", (int)strcspn(a, "="), a);
+    struct cli_near near;
+    cli_near_init(&near, word);
+    for (int t = 0; t < 2; t++)
+        for (const struct cli_opt *o = t ? c->common : c->opts; o && o->name; o++)
+            if (o->type != CLI_HEADING && !(o->flags & (CLI_HIDDEN | CLI_DEPRECATED))) cli_near_add(&near, o->name);
+    cli_did_you_mean(near.best, mean, sizeof mean);
+    fprintf(stderr, "%s: unknown option %s%s (see --help)\n", c->prog, a, mean);
+}
+
 static int set_defaults(const struct cli *c, const struct cli_opt *t)
 {
     char err[256];
@@ -401,7 +418,7 @@ int cli_parse(const struct cli *c, int argc, char **argv)
                 continue;
             }
             if (r < 0 && err[0]) fprintf(stderr, "%s: %s\n", c->prog, err);
-            else if (a[0] == '-') fprintf(stderr, "%s: unknown option %s (see --help)\n", c->prog, a);
+            else if (a[0] == '-') unknown_option(c, a);
             else fprintf(stderr, "%s: unexpected argument '%s' (see --help)\n", c->prog, a);
             return 2;
         }
@@ -478,9 +495,15 @@ int cli_dispatch(const char *prog, const char *noun, const char *head, const str
         dispatch_usage(stdout, head, cmds, more);
         return 0;
     }
-    for (int i = 0; cmds[i].name; i++)
+    struct cli_near near;
+    cli_near_init(&near, argv[1]);
+    for (int i = 0; cmds[i].name; i++) {
         if (strcmp(argv[1], cmds[i].name) == 0) return cmds[i].fn(argc - 1, argv + 1);
-    fprintf(stderr, "%s: unknown %s '%s' (see %s --help)\n", prog, noun, argv[1], prog);
+        cli_near_add(&near, cmds[i].name);
+    }
+    char mean[160];
+    cli_did_you_mean(near.best, mean, sizeof mean);
+    fprintf(stderr, "%s: unknown %s '%s'%s (see %s --help)\n", prog, noun, argv[1], mean, prog);
     return 2;
 }
 

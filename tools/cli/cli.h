@@ -47,9 +47,15 @@
  * value unless CLI_EMPTY_OK, and trailing garbage are refused), aliases,
  * required options, and --help / -h anywhere (the help generated from the
  * table on stdout, exit status 0). A usage error prints one line on stderr,
- * "PROG: ...", naming the option, and gives exit status 2. Arguments that
- * are no option go to the operand hook (file names, old forms); without one
- * they are a usage error. */
+ * "PROG: ...", naming the option, and gives exit status 2; an unknown option
+ * names the nearest listed one ("PROG: unknown option --scan; did you mean
+ * '--scans'? (see --help)", suggest.h). Arguments that are no option go to
+ * the operand hook (file names, old forms); without one they are a usage
+ * error.
+ *
+ * EXIT STATUS of every tool (docs/statuses.md, "Exit codes"): 0 success, 1 a
+ * failure while running (I/O, corrupt input, a library refusal), 2 a usage
+ * or configuration error (nothing was started). */
 #ifndef TRK_TOOLS_CLI_H
 #define TRK_TOOLS_CLI_H
 
@@ -187,8 +193,8 @@ int cli_blank(const char *s);
 /* Subcommands: `PROG COMMAND [options]` runs fn(argc - 1, argv + 1) (argv[0]
  * = the command's name). PROG --help, -h or help: head, the commands with
  * their summaries and more(f) on stdout, exit status 0; no command or an
- * unknown one: one line on stderr naming it (noun: "command", "experiment"),
- * exit status 2. */
+ * unknown one: one line on stderr naming it (noun: "command", "experiment")
+ * and the nearest command ("did you mean 'info'?"), exit status 2. */
 struct cli_cmd {
     const char *name, *summary;
     int (*fn)(int argc, char **argv);

@@ -14,3 +14,9 @@ int errmsg_fail(char *err, size_t n, const char *fmt, ...)
     }
     return -1;
 }
+
+const char *errmsg_status(trk_status st, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s (%s)", trk_status_message(st), trk_status_str(st));
+    return buf;
+}

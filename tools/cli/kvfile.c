@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "suggest.h"
+
 /* Blanks around keys and values: the same set at both ends (a '\r' before
  * a key was kept, one after it dropped: found by fuzz_kvfile). */
 static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
@@ -40,7 +42,11 @@ static int apply(kv_setter set, void *ctx, const char *key, const char *value, c
     char msg[512] = "";
     int r = set(ctx, key, value, msg, sizeof msg);
     if (r == 0) return 0;
-    if (r > 0) snprintf(err, errlen, "unknown setting '%s'", key);
+    if (r > 0) { /* msg: the nearest known key, or "" */
+        char mean[600];
+        cli_did_you_mean(msg[0] ? msg : NULL, mean, sizeof mean);
+        snprintf(err, errlen, "unknown setting '%s'%s", key, mean);
+    }
     else if (msg[0]) snprintf(err, errlen, "%s = %s: %s", key, value, msg);
     else snprintf(err, errlen, "bad value for %s: '%s'", key, value);
     return -1;

@@ -19,7 +19,10 @@
 #define KV_MAX_LINE 1024
 
 /* Set one key. Return 0 on success, 1 for an unknown key, -1 for a bad value
- * (with a message in err, which has room for errlen bytes). */
+ * (with a message in err, which has room for errlen bytes). For an unknown
+ * key the setter leaves in err the known key nearest to it (cli_near,
+ * suggest.h), or "" when none is close: the message then says
+ * "unknown setting 'gama'; did you mean 'gamma'?". */
 typedef int (*kv_setter)(void *ctx, const char *key, const char *value, char *err,
                          size_t errlen);
 

@@ -32,7 +32,7 @@ int plot_have_gnuplot(void)
     return 0;
 }
 
-int plot_gnuplot(const char *base, const char *body)
+int plot_gnuplot(const char *prog, const char *base, const char *body)
 {
     char gp[1024], png[1024];
     if (snprintf(gp, sizeof gp, "%s.gp", base) >= (int)sizeof gp ||
@@ -41,7 +41,7 @@ int plot_gnuplot(const char *base, const char *body)
     struct fileio_out o;
     FILE *f = fileio_create(&o, gp, 0);
     if (!f) {
-        fprintf(stderr, "cannot write %s\n", gp);
+        fprintf(stderr, "%s: cannot write %s\n", prog, gp);
         return -1;
     }
     fprintf(f,
@@ -54,23 +54,23 @@ int plot_gnuplot(const char *base, const char *body)
             "set output '%s'\n%s\n",
             gp, png, body);
     if (fileio_commit(&o) != 0) {
-        fprintf(stderr, "cannot write %s: %s\n", gp, strerror(errno));
+        fprintf(stderr, "%s: cannot write %s: %s\n", prog, gp, strerror(errno));
         return -1;
     }
     if (!plot_have_gnuplot()) {
-        fprintf(stderr, "gnuplot not found on PATH: wrote %s (run `gnuplot %s` to draw %s)\n", gp,
+        fprintf(stderr, "%s: gnuplot not found on PATH: wrote %s (run `gnuplot %s` to draw %s)\n", prog, gp,
                 gp, png);
         return 1;
     }
     char *argv[] = {"gnuplot", gp, NULL};
     pid_t pid;
     if (posix_spawnp(&pid, "gnuplot", NULL, NULL, argv, environ) != 0) {
-        fprintf(stderr, "could not start gnuplot; script kept in %s\n", gp);
+        fprintf(stderr, "%s: could not start gnuplot; script kept in %s\n", prog, gp);
         return 1;
     }
     int status = 0;
     if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        fprintf(stderr, "gnuplot failed on %s\n", gp);
+        fprintf(stderr, "%s: gnuplot failed on %s\n", prog, gp);
         return 1;
     }
     return access(png, R_OK) == 0 ? 0 : 1;

@@ -1,5 +1,6 @@
 /* tracker_config.c - the tracker's configuration for the tools
  * (tracker_config.h). */
+#include "errmsg.h"
 #include "tracker_config.h"
 
 #include <ctype.h>
@@ -10,6 +11,7 @@
 #include <string.h>
 
 #include "kvfile.h"
+#include "suggest.h"
 #include "trk/confirm_mn.h"
 #include "trk/amplitude.h"
 #include "trk/table.h"
@@ -225,6 +227,48 @@ static const char *const SPRT_MODEL_NAMES[] = {"fixed_pd", "hmm", NULL};
 static const char *const EVENTS_NAMES[] = {"complete", "paper", NULL}; /* enum trk_event_model */
 static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
 
+/* Every key tcfg_set knows (but the sensor.N.* ones), for the suggestion
+ * after a misspelled one; test_lcm_config checks it against tcfg_set and
+ * tcfg_write. */
+static const char *const KEYS[] = {
+    "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
+    "max_tentative_scans", "merge_gate_d2", "init_exclusion_d2", "association", "init.method",
+    "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "max_pos_sigma_ratio",
+    "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
+    "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
+    "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.mn.m", "confirm.mn.n",
+    "confirm.mn.mode", "confirm.sprt.alpha", "confirm.sprt.beta", "confirm.sprt.pd", "confirm.sprt.model",
+    "confirm.clutter_density.alpha", "confirm.clutter_density.kmax", "confirm.clutter_amplitude.alpha",
+    "confirm.clutter_amplitude.kmax", "confirm.clutter_amplitude.a_min_db", "term",
+    "term.existence.p_terminate", "term.kn.k", "term.kn.n", "term.page.h", "term.shiryaev.beta0",
+    "term.shiryaev.rho", "term.shiryaev.h", "hmm.p_low_high", "hmm.q_high_low", "hmm.pd_low", "hmm.pd_high",
+    "hmm.events", "hmm.pi0_high", "q2_table", "imm.turn_rate_dps", "imm.p_stay", "imm.turn_q", NULL};
+/* The keys of one sensor, after "sensor.N.". */
+static const char *const SENSOR_KEYS[] = {"pd",     "clutter_density_per_m2", "meas_cov_m2", "meas_sigma_m",
+                                          "amplitude", "k_shape",              "snr_db",      "pfa",
+                                          "amp_table", NULL};
+
+const char *const *tcfg_keys(void) { return KEYS; }
+const char *const *tcfg_sensor_keys(void) { return SENSOR_KEYS; }
+
+/* An unknown key: the nearest known one into err ("" when none is close),
+ * and 1. A sensor key is compared with sensor `s`'s keys (s < 0: with
+ * sensor 0's among the others). */
+static int unknown_key(const char *key, long s, char *err, size_t n)
+{
+    char cand[sizeof SENSOR_KEYS / sizeof SENSOR_KEYS[0]][64];
+    struct cli_near near;
+    cli_near_init(&near, key);
+    if (s < 0)
+        for (int i = 0; KEYS[i]; i++) cli_near_add(&near, KEYS[i]);
+    for (int i = 0; SENSOR_KEYS[i]; i++) {
+        snprintf(cand[i], sizeof cand[i], "sensor.%ld.%s", s < 0 ? 0 : s, SENSOR_KEYS[i]);
+        cli_near_add(&near, cand[i]);
+    }
+    snprintf(err, n, "%s", near.best ? near.best : "");
+    return 1;
+}
+
 /* ------------------------------------------------------------------ set */
 
 /* sp->meas_cov_m2 = m after the tracker's own check (the authority), on its
@@ -239,15 +283,16 @@ static int set_meas_cov(struct trk_sensor_params *sp, unsigned s, const double m
     for (int i = 0; i < 3; i++) t.sensor[s].meas_cov_m2[i] = (trk_real)m[i];
     const trk_status st = trk_tracker_check_params(&t, &field);
     if (st != TRK_OK) {
-        snprintf(err, n, "refused by the tracker (%s): %s%s", field, trk_status_str(st),
-                 st == TRK_E_NOT_SPD ? " (not positive definite: need xx > 0, yy > 0, xx yy > xy^2)" : "");
+        snprintf(err, n, "refused by the tracker (%s): %s%s", field, ERRMSG_STATUS(st),
+                 st == TRK_E_NOT_SPD ? "; need xx > 0, yy > 0, xx yy > xy^2" : "");
         return -1;
     }
     for (int i = 0; i < 3; i++) sp->meas_cov_m2[i] = t.sensor[s].meas_cov_m2[i];
     return 0;
 }
 
-static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v, char *err,
+/* full: the whole key ("sensor.1.pd"), key: after "sensor.N." */
+static int set_sensor(struct tcfg *c, unsigned s, const char *full, const char *key, const char *v, char *err,
                       size_t n)
 {
     struct trk_sensor_params *sp = &c->params.sensor[s];
@@ -279,7 +324,7 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *key, const char *v
     }
     if (strcmp(key, "pfa") == 0) return get_double(v, R_PROB_OO, &a->pfa, err, n);
     if (strcmp(key, "amp_table") == 0) return get_path(v, a->table, err, n);
-    return 1;
+    return unknown_key(full, (long)s, err, n);
 }
 
 int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
@@ -298,13 +343,13 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
             return -1;
         }
         unsigned long s = isdigit((unsigned char)key[7]) ? strtoul(key + 7, &end, 10) : 0;
-        if (!isdigit((unsigned char)key[7]) || *end != '.' || errno) return 1;
+        if (!isdigit((unsigned char)key[7]) || *end != '.' || errno) return unknown_key(key, -1, err, n);
         if (s >= TRK_MAX_SENSORS) {
             snprintf(err, n, "sensor index %lu: this build has TRK_MAX_SENSORS = %d", s,
                      TRK_MAX_SENSORS);
             return -1;
         }
-        return set_sensor(c, (unsigned)s, end + 1, v, err, n);
+        return set_sensor(c, (unsigned)s, key, end + 1, v, err, n);
     }
     if (strcmp(key, "sensors") == 0) {
         if (get_long(v, 1, TRK_MAX_SENSORS, &l, err, n) != 0) return -1;
@@ -478,7 +523,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         return -1;
     }
 #endif
-    return 1;
+    return unknown_key(key, -1, err, n);
 }
 
 /* ------------------------------------------------------------------ check */
@@ -515,7 +560,7 @@ static int check_table(const char *path, const char *what, const uint32_t *kinds
     if (st != TRK_OK) {
         free(bytes);
         snprintf(err, n, "%s '%s': not a usable table for this build: %s", what, path,
-                 trk_status_str(st));
+                 ERRMSG_STATUS(st));
         return -1;
     }
     int kind_ok = 0;
@@ -532,7 +577,7 @@ static int check_table(const char *path, const char *what, const uint32_t *kinds
         if (st != TRK_OK) {
             free(bytes);
             snprintf(err, n, "%s '%s': trk_amplitude_init_table: %s", what, path,
-                     trk_status_str(st));
+                     ERRMSG_STATUS(st));
             return -1;
         }
     }
@@ -584,22 +629,22 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
     if (strcmp(f, "confirm.method") == 0 || strcmp(f, "term.method") == 0) {
         const int conf = f[0] == 'c';
         snprintf(err, n, "%s = %s: refused by the tracker (%s): %s%s", conf ? "confirm" : "term",
-                 conf ? confirm_name(c->confirm) : term_name(c->term), f, trk_status_str(st),
+                 conf ? confirm_name(c->confirm) : term_name(c->term), f, ERRMSG_STATUS(st),
                  method_hint(st, f,
                              conf ? c->confirm == TRK_CONFIRM_VISIBILITY || c->confirm == TRK_CONFIRM_EXISTENCE
                                   : c->term == TRK_TERM_VISIBILITY || c->term == TRK_TERM_EXISTENCE));
     } else if (strncmp(f, "confirm.", 8) == 0) {
         snprintf(err, n, "confirm = %s: its parameters (confirm.%s.*%s) are refused (%s): %s%s",
                  confirm_name(c->confirm), confirm_name(c->confirm),
-                 c->confirm == TRK_CONFIRM_SPRT ? ", hmm.*" : "", f, trk_status_str(st),
+                 c->confirm == TRK_CONFIRM_SPRT ? ", hmm.*" : "", f, ERRMSG_STATUS(st),
                  method_hint(st, f, c->confirm == TRK_CONFIRM_VISIBILITY));
     } else if (strncmp(f, "term.", 5) == 0) {
         snprintf(err, n, "term = %s: its parameters (term.%s.*%s) are refused (%s): %s%s", term_name(c->term),
                  term_name(c->term), c->term == TRK_TERM_PAGE || c->term == TRK_TERM_SHIRYAEV ? ", hmm.*" : "",
-                 f, trk_status_str(st), method_hint(st, f, c->term == TRK_TERM_VISIBILITY));
+                 f, ERRMSG_STATUS(st), method_hint(st, f, c->term == TRK_TERM_VISIBILITY));
     } else if (sscanf(f, "sensor[%u].%47s", &s, member) == 2) {
         snprintf(err, n, "sensor.%u.%s: refused by the tracker (%s): %s", s,
-                 strcmp(member, "use_amplitude") == 0 ? "amplitude" : member, f, trk_status_str(st));
+                 strcmp(member, "use_amplitude") == 0 ? "amplitude" : member, f, ERRMSG_STATUS(st));
     } else {
         const char *key = strcmp(f, "n_sensors") == 0          ? "sensors"
                           : strcmp(f, "track_visibility") == 0 ? "visibility"
@@ -610,7 +655,7 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
                                ? " (association = joint needs clutter = parametric and every sensor's "
                                  "clutter_density_per_m2 > 0; or set association = pda)"
                                : "";
-        snprintf(err, n, "%s: refused by the tracker (%s): %s%s", key, f, trk_status_str(st), hint);
+        snprintf(err, n, "%s: refused by the tracker (%s): %s%s", key, f, ERRMSG_STATUS(st), hint);
     }
 }
 
@@ -647,7 +692,7 @@ int tcfg_check(const struct tcfg *c, char *err, size_t n)
                                              (trk_real)c->amp[s].pfa);
             if (st != TRK_OK) {
                 snprintf(err, n, "sensor.%u amplitude model (snr_db, pfa): %s", s,
-                         trk_status_str(st));
+                         ERRMSG_STATUS(st));
                 return -1;
             }
         }
@@ -700,7 +745,7 @@ int tcfg_load(const struct tcfg *c, struct tcfg_runtime *rt, char *err, size_t n
             continue;
         }
         if (st != TRK_OK) {
-            snprintf(err, n, "sensor.%u amplitude model: %s", s, trk_status_str(st));
+            snprintf(err, n, "sensor.%u amplitude model: %s", s, ERRMSG_STATUS(st));
             tcfg_unload(rt);
             return -1;
         }

@@ -107,9 +107,14 @@ trk_status tcfg_imm_models(struct trk_tracker_params *p, double turn_rate_dps, d
  * sensor 0, and the documented defaults of the other methods. */
 void tcfg_defaults(struct tcfg *c);
 
-/* Set one key (a kv_setter, ctx = struct tcfg *): 0 ok, 1 unknown key,
- * -1 bad value (message in err). */
+/* Set one key (a kv_setter, ctx = struct tcfg *): 0 ok, 1 unknown key
+ * (the nearest known key in err, or ""), -1 bad value (message in err). */
 int tcfg_set(void *ctx, const char *key, const char *value, char *err, size_t errlen);
+/* The keys tcfg_set knows, NULL-terminated: the general ones (imm.* in every
+ * build; a build without IMM tracks refuses their values), and a sensor's,
+ * after "sensor.N.". */
+const char *const *tcfg_keys(void);
+const char *const *tcfg_sensor_keys(void);
 
 /* Whole-configuration check, in this order: the tracker accepts the
  * parameters with the chosen methods (trk_tracker_check_params: the message

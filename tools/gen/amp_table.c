@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "errmsg.h"
 #include "table_writer.h"
 #include "trk/table.h"
 
@@ -407,7 +408,7 @@ int amp_table_build(const struct amp_table_opts *o, struct amp_table_result *r, 
         if (st == TRK_OK) st = trk_amplitude_init_table(&m, &t);
         if (st != TRK_OK) {
             snprintf(err, errlen, "the library refuses the generated table (clutter power %g, threshold %g): %s",
-                     power, g.d.t, trk_status_str(st));
+                     power, g.d.t, ERRMSG_STATUS(st));
             free(r->bytes);
             r->bytes = NULL;
             goto out;
@@ -445,7 +446,7 @@ int amp_table_model(const struct amp_table_opts *o, struct trk_amplitude *m, str
     if (st == TRK_OK) st = trk_amplitude_init_table(m, &t);
     if (st != TRK_OK) {
         snprintf(err, errlen, "%s amplitude table (nu %g, snr %g dB, pfa %g) refused by the library: %s", name,
-                 o->nu, o->snr_db, o->pfa, trk_status_str(st));
+                 o->nu, o->snr_db, o->pfa, ERRMSG_STATUS(st));
         free(r->bytes);
         r->bytes = NULL;
         return -1;

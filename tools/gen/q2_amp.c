@@ -1,5 +1,6 @@
 /* q2_amp.c - the q2 sampler's amplitude law on the library's amplitude
  * module (q2_amp.h). */
+#include "errmsg.h"
 #include "q2_amp.h"
 
 #include <math.h>
@@ -42,7 +43,7 @@ int q2_amp_init(struct q2_amp *a, int model, double nu, double snr_db, double pf
     if (model == TRK_AMP_RAYLEIGH) {
         trk_status st = trk_amplitude_init_rayleigh(&a->m, 1, (trk_real)snr_db, (trk_real)pfa);
         if (st != TRK_OK) {
-            snprintf(err, errlen, "Rayleigh model (snr_db %g, pfa %g): %s", snr_db, pfa, trk_status_str(st));
+            snprintf(err, errlen, "Rayleigh model (snr_db %g, pfa %g): %s", snr_db, pfa, ERRMSG_STATUS(st));
             return -1;
         }
         a->pd = (double)trk_amplitude_pd(&a->m);
@@ -123,7 +124,7 @@ int q2_amp_unpack(struct q2_amp *a, const void *buf, size_t len, char *err, size
     if (st != TRK_OK) {
         free(h.table);
         return snprintf(err, errlen, "amplitude model (snr_db %g, pfa %g) refused: %s", h.snr_db, h.pfa,
-                        trk_status_str(st)),
+                        ERRMSG_STATUS(st)),
                -1;
     }
     *a = h;

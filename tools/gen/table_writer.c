@@ -1,4 +1,5 @@
 /* table_writer.c - serialise lookup tables (table_writer.h, trk/table.h). */
+#include "errmsg.h"
 #include "table_writer.h"
 
 #include <ctype.h>
@@ -246,7 +247,7 @@ int tablew_finish(struct tablew *w, unsigned char **bytes, size_t *len)
     if (st != TRK_OK) {
         free(b);
         return fail(w, "the table does not pass trk_table_check: %s (axis ranges, monotone explicit axes?)",
-                    trk_status_str(st));
+                    ERRMSG_STATUS(st));
     }
     *bytes = b;
     *len = total;

@@ -4,7 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "errmsg.h"
 #include "kvfile.h"
+#include "suggest.h"
 
 void bridge_opts_defaults(struct bridge_opts *o)
 {
@@ -27,6 +29,10 @@ static int set_channel(char *dst, const char *v, int allow_empty, char *err, siz
     strcpy(dst, v);
     return 0;
 }
+
+/* The keys bridge_opts_set knows, for the suggestion after a misspelled one. */
+static const char *const BRIDGE_KEYS[] = {"lcm_url",         "detection_channel", "track_channel", "status_channel",
+                                          "status_period_s", "log_interval_s",    NULL};
 
 int bridge_opts_set(void *ctx, const char *key, const char *v, char *err, size_t n)
 {
@@ -52,6 +58,8 @@ int bridge_opts_set(void *ctx, const char *key, const char *v, char *err, size_t
         else o->log_interval_s = d;
         return 0;
     }
+    const char *near = cli_suggest(key, BRIDGE_KEYS);
+    snprintf(err, n, "%s", near ? near : "");
     return 1;
 }
 
@@ -87,7 +95,7 @@ struct bridge *bridge_new(const struct tcfg *cfg, const struct bridge_opts *o, c
     trk_status st = trk_tracker_check_params(&p, &field); /* names the field it refuses */
     if (st == TRK_OK) st = trk_tracker_init(&b->tk, &p);
     if (st != TRK_OK) {
-        snprintf(err, n, "the tracker refuses %s: %s", field ? field : "its parameters", trk_status_str(st));
+        snprintf(err, n, "the tracker refuses %s: %s", field ? field : "its parameters", ERRMSG_STATUS(st));
         tcfg_unload(&b->rt);
         free(b);
         return NULL;
@@ -206,7 +214,7 @@ enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, i
     struct trk_scan_report rep;
     trk_status st = trk_tracker_process_scan(&b->tk, &b->scan.scan, &rep);
     if (st != TRK_OK) {
-        snprintf(detail, sizeof detail, "%s: utime %lld, previous %lld", trk_status_str(st),
+        snprintf(detail, sizeof detail, "%s: utime %lld, previous %lld", ERRMSG_STATUS(st),
                  (long long)b->scan.scan.time_us, (long long)b->last_accepted_utime);
         return reject(b, lcmc_reason_of_status(st), now_us, detail, b->scan.seq);
     }

@@ -54,7 +54,8 @@ void bridge_opts_defaults(struct bridge_opts *o);
 
 /* Bridge keys of the config file (a kv_setter, ctx = struct bridge_opts *):
  * lcm_url, detection_channel, track_channel, status_channel,
- * status_period_s, log_interval_s. */
+ * status_period_s, log_interval_s. An unknown key: 1, the nearest of them
+ * in err (or ""). */
 int bridge_opts_set(void *ctx, const char *key, const char *value, char *err, size_t errlen);
 void bridge_opts_write(FILE *f, const struct bridge_opts *o);
 

@@ -24,9 +24,10 @@ import sys
 import tempfile
 import time
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from needs import need, run_main  # noqa: E402
+
+np = need("bench_scan.py", "numpy")
 import trk  # noqa: E402
 from trk import recorded  # noqa: E402
 
@@ -110,4 +111,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_main("bench_scan.py", main)

@@ -20,9 +20,10 @@ import csv
 import os
 import sys
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from needs import need, run_main  # noqa: E402
+
+np = need("gospa_grid.py", "numpy")
 import trk  # noqa: E402
 from trk import recorded  # noqa: E402
 from trk.gospa import gospa  # noqa: E402
@@ -109,7 +110,7 @@ def main():
             import matplotlib.pyplot as plt
         except ImportError:
             if a.plotter == "matplotlib":
-                sys.exit("gospa_grid: matplotlib is not installed")
+                need("gospa_grid.py", "matplotlib")  # says which package, exits 1
         else:
             fig, ax = plt.subplots()
             im = ax.imshow(g, origin="lower", cmap="viridis")
@@ -124,4 +125,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run_main("gospa_grid.py", main)

@@ -21,6 +21,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+from needs import need, run_main  # noqa: E402
+
+need("plot_track_log.py", "numpy")
 import trklog  # noqa: E402
 
 
@@ -129,6 +132,8 @@ def main(argv=None):
         len(lists), (max(m.utime for m in lists) - t0) * 1e-6, a.channel, "; truth dashed (%s)" % a.truth if truth else "")
 
     plotter = a.plotter
+    if plotter == "matplotlib":
+        need("plot_track_log.py", "matplotlib")
     if plotter == "auto":
         plotter = "matplotlib" if have_matplotlib() else "gnuplot" if shutil.which("gnuplot") else "none"
     png = prefix + ".png"
@@ -144,4 +149,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    run_main("plot_track_log.py", main, (trklog.lcmlog.LogError, trklog.DecodeError))

@@ -1,5 +1,6 @@
 /* amp_sample.c - amplitudes of thresholded detections (amp_sample.h). */
 #include "amp_sample.h"
+#include "errmsg.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -74,7 +75,7 @@ int amp_model_init_table(struct amp_model *m, const char *path, char *err, size_
     trk_status st = trk_table_load_file(path, m->table_bytes, len, &t, NULL);
     if (st == TRK_OK) st = trk_amplitude_init_table(&m->lib, &t);
     if (st != TRK_OK) {
-        snprintf(err, n, "%s: not a usable amplitude table: %s", path, trk_status_str(st));
+        snprintf(err, n, "%s: not a usable amplitude table: %s", path, ERRMSG_STATUS(st));
         amp_model_free(m);
         return -1;
     }

@@ -1,4 +1,5 @@
 /* single_target.c - single-target Monte Carlo runs (single_target.h). */
+#include "errmsg.h"
 #include "single_target.h"
 
 #include <math.h>
@@ -40,7 +41,7 @@ int st_amp_init(struct st_amp *a, int model, double nu, double snr_db, double pf
     if (model == TRK_AMP_RAYLEIGH) {
         trk_status st = trk_amplitude_init_rayleigh(&a->m, 1, (trk_real)snr_db, (trk_real)pfa);
         if (st != TRK_OK) {
-            snprintf(err, errlen, "Rayleigh model (snr %g dB, pfa %g): %s", snr_db, pfa, trk_status_str(st));
+            snprintf(err, errlen, "Rayleigh model (snr %g dB, pfa %g): %s", snr_db, pfa, ERRMSG_STATUS(st));
             return -1;
         }
     } else if (model == TRK_AMP_K) {
@@ -177,7 +178,7 @@ int st_model_init(struct st_model *m, const struct st_params *p, char *err, size
     struct trk_pda_params pp = {2, (trk_real)m->pd, pg, TRK_CLUTTER_PARAMETRIC, (trk_real)p->lambda_per_m2, 1};
     trk_status st = trk_pda_init(&m->pda, &pp);
     if (st != TRK_OK) {
-        snprintf(err, errlen, "trk_pda_init: %s", trk_status_str(st));
+        snprintf(err, errlen, "trk_pda_init: %s", ERRMSG_STATUS(st));
         return -1;
     }
     m->gamma_used = (double)m->pda.gamma;
@@ -552,7 +553,7 @@ int kn_model_init(struct kn_model *m, const struct kn_params *p, char *err, size
     if (st == TRK_OK) st = trk_clutter_chi2_model_init(&m->chi2, &cp);
     if (st == TRK_OK) st = trk_clutter_amp_model_init(&m->amp, &ap);
     if (st != TRK_OK) {
-        snprintf(err, errlen, "Kennedy model refused by the library: %s", trk_status_str(st));
+        snprintf(err, errlen, "Kennedy model refused by the library: %s", ERRMSG_STATUS(st));
         return -1;
     }
     /* Kennedy sec. 3: F CV, Q = diag((s' T^2 / 2)^2, (s' T)^2) per axis */

@@ -141,7 +141,7 @@ static int start_cov(struct toc *t, char *err, size_t n)
     struct trk_mre_result r;
     trk_status st = trk_mre_init(&m, &mp);
     if (st == TRK_OK) st = trk_mre_steady_state(&m, NULL, &r);
-    if (st != TRK_OK) return errmsg_fail(err, n, "the clutter-free steady state: %s", trk_status_str(st));
+    if (st != TRK_OK) return errmsg_fail(err, n, "the clutter-free steady state: %s", ERRMSG_STATUS(st));
     memcpy(t->p0, r.p, sizeof t->p0);
     return 0;
 }
@@ -177,7 +177,7 @@ static int use_table(struct toc *t, int det, const struct trk_table *tb, char *e
     const int qd = det == TOC_PDAF ? TRK_Q2_PDAF : TRK_Q2_PDAFAI;
     trk_status st = trk_q2_lookup_init_table(&t->lk[det], tb, qd, 2);
     if (st != TRK_OK)
-        return errmsg_fail(err, n, "%s q2 table refused: %s", toc_detector_name(det), trk_status_str(st));
+        return errmsg_fail(err, n, "%s q2 table refused: %s", toc_detector_name(det), ERRMSG_STATUS(st));
     const struct trk_q2_lookup *q = &t->lk[det];
     if (!same((double)q->gate_gamma, t->sc.gate_gamma))
         return errmsg_fail(err, n, "%s q2 table is for gate gamma %g, the scenario has %g", toc_detector_name(det),
@@ -314,7 +314,7 @@ static int sample_grid(struct toc *t, int det, const struct toc_q2_source *src, 
     q2_table_result_free(&res);
     trk_status st = trk_q2_lookup_init(&t->lk[det], &g);
     if (st != TRK_OK)
-        return errmsg_fail(err, n, "%s q2 grid refused by the lookup: %s", toc_detector_name(det), trk_status_str(st));
+        return errmsg_fail(err, n, "%s q2 grid refused by the lookup: %s", toc_detector_name(det), ERRMSG_STATUS(st));
     return 0;
 }
 
@@ -365,7 +365,7 @@ int toc_q2(const struct toc *t, int detector, double pfa, double lambda_vg, doub
     trk_status st = q2_at(&c, (trk_real)pfa, (trk_real)lambda_vg, &v);
     if (st != TRK_OK)
         return errmsg_fail(err, errlen, "%s q2 at pfa %g, lambda_vg %g: %s", toc_detector_name(detector), pfa,
-                           lambda_vg, trk_status_str(st));
+                           lambda_vg, ERRMSG_STATUS(st));
     *q2 = (double)v;
     return 0;
 }
@@ -409,7 +409,7 @@ int toc_point_at(const struct toc *t, double pfa, struct toc_point *p, char *err
             p->iterations[d] = r.iterations;
             if (st == TRK_E_DIVERGED) p->rmse_bound_m[d] = INFINITY;
         } else {
-            return errmsg_fail(err, errlen, "%s MRE at pfa %g: %s", toc_detector_name(d), pfa, trk_status_str(st));
+            return errmsg_fail(err, errlen, "%s MRE at pfa %g: %s", toc_detector_name(d), pfa, ERRMSG_STATUS(st));
         }
     }
     return 0;
@@ -448,7 +448,7 @@ int toc_optimum(const struct toc *t, int detector, struct toc_optimum *o, char *
         return errmsg_fail(err, errlen, "%s: no pfa in [%g, %g] has a steady state", toc_detector_name(detector),
                            t->sc.pfa_min, t->sc.pfa_max);
     if (st != TRK_OK)
-        return errmsg_fail(err, errlen, "%s TOC optimum: %s", toc_detector_name(detector), trk_status_str(st));
+        return errmsg_fail(err, errlen, "%s TOC optimum: %s", toc_detector_name(detector), ERRMSG_STATUS(st));
     o->pfa = (double)r.pfa;
     o->rmse_m = (double)r.rmse_m;
     o->q2 = (double)r.q2;

@@ -40,7 +40,7 @@ static int build(double nu, double pfa, int grid, uint32_t n, uint32_t nllr, int
     o.measure_points = 5;
     char err[256];
     if (amp_table_build(&o, r, err, sizeof err) != 0) {
-        fprintf(stderr, "bench amplitude: %s\n", err);
+        fprintf(stderr, "trk-bench amplitude: %s\n", err);
         return -1;
     }
     return 0;

@@ -54,7 +54,7 @@ static int run(struct q2_is_line *l, size_t n, uint64_t samples, double target_s
     int rc = q2_is_run(l, n, &o, err, sizeof err);
     *sec = (bench_now_ns() - t0) * 1e-9;
     last_cpu_s = cpu_s() - c0;
-    if (rc) fprintf(stderr, "bench_q2: %s\n", err);
+    if (rc) fprintf(stderr, "trk-bench q2: %s\n", err);
     return rc;
 }
 
@@ -70,7 +70,7 @@ static int cell_rate(int det, int threads, double *pts_s, double *scenes_s, doub
     if (!ready) {
         if (q2_amp_init(&r[1], TRK_AMP_RAYLEIGH, 0, 15, 1e-3, 0, 0, err, sizeof err) ||
             q2_amp_init(&r[2], TRK_AMP_K, 1, 15, 1e-2, 0, 0, err, sizeof err)) {
-            fprintf(stderr, "bench_q2: %s\n", err);
+            fprintf(stderr, "trk-bench q2: %s\n", err);
             return -1;
         }
         amp[1] = q2_amp_sampler_of(&r[1]);
@@ -165,7 +165,7 @@ TRK_BENCH(q2_default_tables)
         char err[300];
         const double t0 = bench_now_ns(), c0 = cpu_s();
         if (q2_table_build(&s, &r, &res, err, sizeof err)) {
-            fprintf(stderr, "bench_q2: %s: %s\n", name[k], err);
+            fprintf(stderr, "trk-bench q2: %s: %s\n", name[k], err);
             return;
         }
         const double dt = (bench_now_ns() - t0) * 1e-9, dc = cpu_s() - c0;
@@ -201,9 +201,9 @@ static void setup_grids(void)
     g.axis[0] = (struct trk_q2_axis){21, NULL, TRK_REAL_C(0.5), 1, 0, TRK_Q2_LINEAR};
     g.axis[1] = (struct trk_q2_axis){49, NULL, (trk_real)log(1e-4), (trk_real)log(100.0), 1, TRK_Q2_LINEAR};
     g.values = v2;
-    if (trk_q2_lookup_init(&lk2l, &g) != TRK_OK) fprintf(stderr, "bench_q2: grid\n");
+    if (trk_q2_lookup_init(&lk2l, &g) != TRK_OK) fprintf(stderr, "trk-bench q2: grid\n");
     g.axis[0].interp = g.axis[1].interp = TRK_Q2_CUBIC;
-    if (trk_q2_lookup_init(&lk2c, &g) != TRK_OK) fprintf(stderr, "bench_q2: grid\n");
+    if (trk_q2_lookup_init(&lk2c, &g) != TRK_OK) fprintf(stderr, "trk-bench q2: grid\n");
     struct trk_q2_grid h;
     memset(&h, 0, sizeof h);
     h.detector = TRK_Q2_PDAFAI;
@@ -211,7 +211,7 @@ static void setup_grids(void)
     h.axis[1] = (struct trk_q2_axis){24, NULL, (trk_real)log(1e-6), (trk_real)log(0.5), 1, TRK_Q2_CUBIC};
     h.axis[2] = (struct trk_q2_axis){49, NULL, (trk_real)log(1e-4), (trk_real)log(100.0), 1, TRK_Q2_CUBIC};
     h.values = v3;
-    if (trk_q2_lookup_init(&lk3c, &h) != TRK_OK) fprintf(stderr, "bench_q2: grid\n");
+    if (trk_q2_lookup_init(&lk3c, &h) != TRK_OK) fprintf(stderr, "trk-bench q2: grid\n");
 }
 
 static unsigned lk_i;
@@ -253,7 +253,7 @@ static int setup_table(void)
         tablew_section(w, TRK_Q2_SECTION_VALUES, 3, ax, 2, TRK_TABLE_INTERP_CUBIC, data) ||
         tablew_finish(w, &tab_bytes, &len) || trk_table_parse(&t, tab_bytes, len) != TRK_OK ||
         trk_q2_lookup_init_table(&lk_tab, &t, TRK_Q2_PDAFAI, 2) != TRK_OK) {
-        fprintf(stderr, "bench_q2: q2 table\n");
+        fprintf(stderr, "trk-bench q2: q2 table\n");
         tablew_free(w);
         return -1;
     }

@@ -257,7 +257,7 @@ TRK_BENCH(tracktests)
     static struct job j;
     make_pattern();
     if (models_init()) {
-        fprintf(stderr, "bench tracktests: init failed\n");
+        fprintf(stderr, "trk-bench tracktests: init failed\n");
         return;
     }
     job_reset(&j);

@@ -4,9 +4,10 @@
  *   trk-lcm-bridge --replay IN --out OUT [options] offline: log in, log out
  *   trk-lcm-bridge --summarize LOG                 what a track log contains
  *
- * Exit status: 0 normal end (also after SIGINT/SIGTERM), 1 a runtime failure
- * (LCM cannot be created or fails, a log cannot be read or written), 2 bad
- * usage or configuration (nothing was started). */
+ * Exit status (docs/statuses.md, "Exit codes"): 0 normal end (also after
+ * SIGINT/SIGTERM), 1 a runtime failure (LCM cannot be created or fails, a log
+ * cannot be read or written; a replay that read no event prints no summary),
+ * 2 bad usage or configuration (nothing was started). */
 #define _POSIX_C_SOURCE 200809L
 #include <signal.h>
 #include <stdio.h>
@@ -16,6 +17,7 @@
 #include "bridge.h"
 #include "cli.h"
 #include "kvfile.h"
+#include "suggest.h"
 #include "tracker_config.h"
 #include "transport.h"
 
@@ -36,11 +38,25 @@ struct settings {
     struct tcfg cfg;
 };
 
+/* A key of either table; an unknown one: 1, the nearest key of both in err. */
 static int set_any(void *ctx, const char *key, const char *value, char *err, size_t n)
 {
     struct settings *s = ctx;
-    int r = bridge_opts_set(&s->o, key, value, err, n);
-    return r <= 0 ? r : tcfg_set(&s->cfg, key, value, err, n);
+    char near_bridge[256];
+    int r = bridge_opts_set(&s->o, key, value, near_bridge, sizeof near_bridge);
+    if (r <= 0) {
+        snprintf(err, n, "%s", near_bridge);
+        return r;
+    }
+    if ((r = tcfg_set(&s->cfg, key, value, err, n)) <= 0) return r;
+    char near_tracker[256];
+    snprintf(near_tracker, sizeof near_tracker, "%s", err);
+    struct cli_near near;
+    cli_near_init(&near, key);
+    cli_near_add(&near, near_bridge);
+    cli_near_add(&near, near_tracker);
+    snprintf(err, n, "%s", near.best ? near.best : "");
+    return 1;
 }
 
 /* The settings of the command line, applied after parsing: the --config
@@ -107,9 +123,11 @@ static int old_setting(void *ctx, const char *a, const char *next, char *err, si
     if (klen >= sizeof key) return 0;
     memcpy(key, a + 2, klen);
     key[klen] = 0;
-    /* a key of neither table: an unknown option */
+    /* a key of neither table: an unknown option (cli_parse says so, with the
+     * nearest option), or a setting misspelled (the nearest key: msg) */
     if (set_any(&pl->scratch, key, eq ? eq + 1 : next, msg, sizeof msg) > 0) {
-        snprintf(err, n, "unknown option --%s (and unknown setting '%s'; see --help)", key, key);
+        if (!msg[0]) return 0;
+        snprintf(err, n, "unknown option --%s; did you mean the setting '%s' (--set %s=VALUE)?", key, msg, msg);
         return -1;
     }
     if (eq) {
@@ -277,6 +295,10 @@ int main(int argc, char **argv)
         if (bridge_replay(b, replay_in, replay_out, keep_input, &cli_stop_flag, &st, err, sizeof err) != 0) {
             fprintf(stderr, "trk-lcm-bridge: %s\n", err);
             rc = 1;
+            if (st.events == 0) { /* nothing replayed (no input, no log, no output): no summary of nothing */
+                bridge_free(b);
+                return rc;
+            }
         }
         const double el = (double)(bridge_mono_us() - t0) * 1e-6;
         printf("trk-lcm-bridge: replay %s -> %s: %llu events, %llu on %s, %llu written",

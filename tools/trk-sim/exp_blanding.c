@@ -44,6 +44,7 @@
 #include <string.h>
 
 #include "trk/gate.h"
+#include "errmsg.h"
 #include "rng.h"
 #include "sim.h"
 #include "trk/hmm_detect.h"
@@ -253,7 +254,7 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
     const int parsed = sim_parse(&cli, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     if (c.ns > TRK_MAX_SENSORS) {
-        fprintf(stderr, "blanding-add-arl: needs %d sensors, this build has TRK_MAX_SENSORS %d\n",
+        fprintf(stderr, "trk-sim blanding-add-arl: needs %d sensors, this build has TRK_MAX_SENSORS %d\n",
                 c.ns, TRK_MAX_SENSORS);
         return 2;
     }
@@ -269,7 +270,7 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
         const int k_lo = kn_k_full ? 0 : n / 16, k_hi = kn_k_full ? n - 1 : n / 3;
         for (int k = k_lo; k <= k_hi; k++) {
             if (c.n_kn == MAX_KN) {
-                fprintf(stderr, "blanding-add-arl: more than %d K/N rules (%s over --kn-n): fewer windows\n",
+                fprintf(stderr, "trk-sim blanding-add-arl: more than %d K/N rules (%s over --kn-n): fewer windows\n",
                         MAX_KN, kn_range);
                 return 2;
             }
@@ -298,13 +299,13 @@ SIM_EXPERIMENT(blanding_add_arl, "blanding-add-arl", "Blanding 2007 Fig. 2: ADD 
         st = trk_kn_model_init(&c.kn_m[j], &kp);
     }
     if (st != TRK_OK || !(c.h_page[0] > 0)) {
-        fprintf(stderr, "blanding-add-arl: invalid test parameters (%s)\n", trk_status_str(st));
+        fprintf(stderr, "trk-sim blanding-add-arl: invalid test parameters (%s)\n", ERRMSG_STATUS(st));
         return 2;
     }
     const int nt = c.n_page + c.n_shir + c.n_kn;
     uint32_t *res = malloc(sizeof *res * (size_t)nt * 2 * (size_t)runs);
     if (!res) {
-        fprintf(stderr, "blanding-add-arl: out of memory\n");
+        fprintf(stderr, "trk-sim blanding-add-arl: out of memory\n");
         return 1;
     }
     const int threads = sim_threads(&com);

@@ -162,11 +162,11 @@ SIM_EXPERIMENT(brekke_errpdf, "brekke-errpdf", "Brekke 2011 Figs. 3-5: error pdf
     const int parsed = sim_parse(&cli, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     if (from > scans) {
-        fprintf(stderr, "brekke-errpdf: --from must be <= --scans\n");
+        fprintf(stderr, "trk-sim brekke-errpdf: --from must be <= --scans\n");
         return 2;
     }
     if (runs > 0xFFFFFFFFL) {
-        fprintf(stderr, "brekke-errpdf: at most 2^32 runs\n");
+        fprintf(stderr, "trk-sim brekke-errpdf: at most 2^32 runs\n");
         return 2;
     }
     const int threads = sim_threads(&com);
@@ -182,7 +182,7 @@ SIM_EXPERIMENT(brekke_errpdf, "brekke-errpdf", "Brekke 2011 Figs. 3-5: error pdf
     double width[MAXP], range[MAXP];
     for (int j = 0; j < npfa; j++) {
         if (toc_point_at(toc, pfas[j], &at[j], err, sizeof err)) {
-            fprintf(stderr, "brekke-errpdf: MRE (P_FA %g): %s\n", pfas[j], err);
+            fprintf(stderr, "trk-sim brekke-errpdf: MRE (P_FA %g): %s\n", pfas[j], err);
             return 1;
         }
         double top = 0;
@@ -200,20 +200,20 @@ SIM_EXPERIMENT(brekke_errpdf, "brekke-errpdf", "Brekke 2011 Figs. 3-5: error pdf
     const size_t ss = slot_size_of(bins);
     char *out = calloc((size_t)npfa * (size_t)runs, ss);
     if (!amp || !mod || !out) {
-        fprintf(stderr, "brekke-errpdf: out of memory\n");
+        fprintf(stderr, "trk-sim brekke-errpdf: out of memory\n");
         return 1;
     }
     if (sim_amp_k_grid(cli.name, amp, &nu, 1, &snr, 1, pfas, npfa, 0, 0)) return 1;
     for (int j = 0; j < npfa; j++)
         if (sim_brekke_model(cli.name, &mod[j], &amp[j], cell, scans, init, texture, &gate_cap, com.seed)) return 1;
     if (!com.quiet)
-        fprintf(stderr, "brekke-errpdf: %d figures x 2 filters x %ld runs x %ld scans, seed %llu, %d threads (MRE %.1f s)\n",
+        fprintf(stderr, "trk-sim brekke-errpdf: %d figures x 2 filters x %ld runs x %ld scans, seed %llu, %d threads (MRE %.1f s)\n",
                 npfa, runs, scans, (unsigned long long)com.seed, threads, mre_s);
     struct ep_ctx ctx = {from, bins, tracks, width};
     int bad_call;
     const double wall = sim_st_runs_err(&com, cli.name, mod, npfa, runs, 2, from, keep, &ctx, out, ss, &bad_call);
     if (bad_call) {
-        fprintf(stderr, "brekke-errpdf: internal error (bad run call)\n");
+        fprintf(stderr, "trk-sim brekke-errpdf: internal error (bad run call)\n");
         return 1;
     }
     /* ---- reduce in run order */
@@ -222,7 +222,7 @@ SIM_EXPERIMENT(brekke_errpdf, "brekke-errpdf", "Brekke 2011 Figs. 3-5: error pdf
     double *num = malloc((size_t)runs * sizeof *num), *num2 = malloc((size_t)runs * sizeof *num2),
            *den = malloc((size_t)runs * sizeof *den);
     if (!cnt || !num || !num2 || !den) {
-        fprintf(stderr, "brekke-errpdf: out of memory\n");
+        fprintf(stderr, "trk-sim brekke-errpdf: out of memory\n");
         return 1;
     }
     long total_scans = 0;

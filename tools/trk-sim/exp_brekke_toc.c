@@ -82,7 +82,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     const int parsed = sim_parse(&cli, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     if (from > scans) {
-        fprintf(stderr, "brekke-toc: --from must be <= --scans\n");
+        fprintf(stderr, "trk-sim brekke-toc: --from must be <= --scans\n");
         return 2;
     }
     double pmin = pfas[0], pmax = pfas[0];
@@ -107,12 +107,12 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
         if (toc_curve(toc[a], NCURVE, curve + a * NCURVE, err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAF, &opt[a][0], err, sizeof err) ||
             toc_optimum(toc[a], TOC_PDAFAI, &opt[a][1], err, sizeof err)) {
-            fprintf(stderr, "brekke-toc: MRE (nu %g): %s\n", nus[a], err);
+            fprintf(stderr, "trk-sim brekke-toc: MRE (nu %g): %s\n", nus[a], err);
             return 1;
         }
         for (int j = 0; j < npfa; j++)
             if (toc_point_at(toc[a], pfas[j], &at[a * npfa + j], err, sizeof err)) {
-                fprintf(stderr, "brekke-toc: MRE (nu %g, P_FA %g): %s\n", nus[a], pfas[j], err);
+                fprintf(stderr, "trk-sim brekke-toc: MRE (nu %g, P_FA %g): %s\n", nus[a], pfas[j], err);
                 return 1;
             }
     }
@@ -127,12 +127,12 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     for (int m = 0; m < nmod; m++)
         if (sim_brekke_model(cli.name, &mod[m], &amp[m], cell, scans, init, texture, &gate_cap, com.seed)) return 1;
     if (!com.quiet)
-        fprintf(stderr, "brekke-toc: %d nu x %d P_FA x 2 filters x %ld runs x %ld scans, seed %llu, %d threads (MRE %.1f s)\n",
+        fprintf(stderr, "trk-sim brekke-toc: %d nu x %d P_FA x 2 filters x %ld runs x %ld scans, seed %llu, %d threads (MRE %.1f s)\n",
                 nnu, npfa, runs, scans, (unsigned long long)com.seed, threads, mre_s);
     int bad_call;
     const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, from, keep, out, sizeof *out, &bad_call);
     if (bad_call) {
-        fprintf(stderr, "brekke-toc: internal error (bad run call)\n");
+        fprintf(stderr, "trk-sim brekke-toc: internal error (bad run call)\n");
         return 1;
     }
     /* ---- reduce in run order, print, write */

@@ -228,7 +228,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     const int parsed = sim_parse(&cli, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     if (runs > 0xFFFFFFFFL) {
-        fprintf(stderr, "brekke-trackloss: at most 2^32 runs\n");
+        fprintf(stderr, "trk-sim brekke-trackloss: at most 2^32 runs\n");
         return 2;
     }
     const int threads = sim_threads(&com);
@@ -244,7 +244,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     struct st_model *mod = calloc((size_t)nmod, sizeof *mod);
     struct tl_out *out = calloc((size_t)(nmod * runs), sizeof *out);
     if (!mod || !out) {
-        fprintf(stderr, "brekke-trackloss: out of memory\n");
+        fprintf(stderr, "trk-sim brekke-trackloss: out of memory\n");
         return 1;
     }
     for (int c = 0; c < ncell; c++)
@@ -260,7 +260,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
     int bad_call;
     const double wall = sim_st_runs(&com, cli.name, mod, nmod, runs, 2, 1, keep, out, sizeof *out, &bad_call);
     if (bad_call) {
-        fprintf(stderr, "brekke-trackloss: internal error (bad run call)\n");
+        fprintf(stderr, "trk-sim brekke-trackloss: internal error (bad run call)\n");
         return 1;
     }
     /* reduce in run order */
@@ -286,7 +286,7 @@ SIM_EXPERIMENT(brekke_trackloss, "brekke-trackloss", "Brekke 2011 Tables II-III:
         lov[fl] = calloc((size_t)nmod, sizeof(double));
         hiv[fl] = calloc((size_t)nmod, sizeof(double));
         if (!lostv[fl] || !lov[fl] || !hiv[fl]) {
-            fprintf(stderr, "brekke-trackloss: out of memory\n");
+            fprintf(stderr, "trk-sim brekke-trackloss: out of memory\n");
             sim_csv_discard(&f_out);
             return 1;
         }

@@ -23,6 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "errmsg.h"
 #include "rng.h"
 #include "sim.h"
 #include "trk/clutter_test.h"
@@ -154,7 +155,7 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
     const int parsed = sim_parse(&cli, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     if (!(theta > a_min)) {
-        fprintf(stderr, "clutter-null: --theta must exceed --a-min\n");
+        fprintf(stderr, "trk-sim clutter-null: --theta must exceed --a-min\n");
         return 2;
     }
     static struct trk_clutter_chi2_model chi_m;
@@ -164,7 +165,7 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
     trk_status st = trk_clutter_chi2_model_init(&chi_m, &cp);
     if (st == TRK_OK) st = trk_clutter_amp_model_init(&amp_m, &ap);
     if (st != TRK_OK) {
-        fprintf(stderr, "clutter-null: %s\n", trk_status_str(st));
+        fprintf(stderr, "trk-sim clutter-null: %s\n", ERRMSG_STATUS(st));
         return 2;
     }
     /* counts per update: raw rejections and sticky decisions of both tests */
@@ -172,20 +173,20 @@ SIM_EXPERIMENT(clutter_null, "clutter-null", "Kennedy 2008: null rejection rate 
     long redrawn = 0, overflow = 0;
     const int threads = sim_threads(&com);
     if (!com.quiet)
-        fprintf(stderr, "clutter-null: %ld tracks x %ld updates, alpha %g, kmax %ld, %g peaks/scan, seed %llu, %d threads\n",
+        fprintf(stderr, "trk-sim clutter-null: %ld tracks x %ld updates, alpha %g, kmax %ld, %g peaks/scan, seed %llu, %d threads\n",
             runs, scans, alpha, kmax, mean_peaks, (unsigned long long)com.seed, threads);
     /* blocks of runs as work units, their counts summed in block order */
     const struct cn_units cu = {&chi_m, &amp_m, runs, scans, com.seed, mean_peaks, a_min, theta};
     const size_t nblk = (size_t)((runs + CN_BLOCK - 1) / CN_BLOCK), bsize = (4 * (size_t)scans + 2) * sizeof(long);
     long *blocks = malloc(nblk * bsize);
     if (!blocks) {
-        fprintf(stderr, "clutter-null: out of memory\n");
+        fprintf(stderr, "trk-sim clutter-null: out of memory\n");
         return 1;
     }
     double wall;
     const int urc = sim_run_units(&com, "clutter-null", nblk, bsize, 1, cn_unit, cn_ws_free, (void *)&cu, blocks,
                                   &wall, NULL);
-    if (urc == 1) fprintf(stderr, "clutter-null: out of memory, or a clutter test refused a step\n");
+    if (urc == 1) fprintf(stderr, "trk-sim clutter-null: out of memory, or a clutter test refused a step\n");
     if (urc != 0) {
         free(blocks);
         return 1;

@@ -31,6 +31,7 @@
 #include <sys/stat.h>
 
 #include "cli.h"
+#include "errmsg.h"
 #include "kvfile.h"
 #include "progress.h"
 #include "scenario.h"
@@ -142,7 +143,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     if (amp_table) snprintf(table_path, sizeof table_path, "%s", amp_table);
     else snprintf(table_path, sizeof table_path, "%s/amp_k1_snr15_pfa1e-2.tbl", tables);
     if (mkdir_p(com.out) != 0) {
-        fprintf(stderr, "demo: cannot create %s\n", com.out);
+        fprintf(stderr, "trk-sim demo: cannot create %s\n", com.out);
         return 1;
     }
     /* ---- the scenario */
@@ -172,7 +173,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     sp.fluct_pd_low = 0.1;
     struct scenario sc;
     if (scen_init(&sc, &sp, err, sizeof err) != 0) {
-        fprintf(stderr, "demo: %s\n(run `make tables` first, or give --tables / --amp-table)\n", err);
+        fprintf(stderr, "trk-sim demo: %s (run `make tables` first, or give --tables / --amp-table)\n", err);
         return 1;
     }
     const double pd = sc.tg[0].pd, lambda = sp.clutter_density_per_m2;
@@ -201,7 +202,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     snprintf(demo_val[8], sizeof demo_val[8], "%g", fluct ? 0.02 : 0.1);
     for (int i = 0; i < N_DEMO_SET; i++)
         if (tcfg_set(&cfg, demo_set[i], demo_val[i], err, sizeof err) != 0) {
-            fprintf(stderr, "demo: %s = %s: %s\n", demo_set[i], demo_val[i], err);
+            fprintf(stderr, "trk-sim demo: %s = %s: %s\n", demo_set[i], demo_val[i], err);
             scen_free(&sc);
             return 1;
         }
@@ -212,7 +213,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
             return 2;
         }
     if (tcfg_check(&cfg, err, sizeof err) != 0) {
-        fprintf(stderr, "demo: tracker configuration: %s\n", err);
+        fprintf(stderr, "trk-sim demo: tracker configuration: %s\n", err);
         scen_free(&sc);
         return 2;
     }
@@ -220,14 +221,14 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     static struct trk_tracker tk;
     struct trk_tracker_params tp;
     if (tcfg_load(&cfg, &rt, err, sizeof err) != 0) {
-        fprintf(stderr, "demo: %s\n", err);
+        fprintf(stderr, "trk-sim demo: %s\n", err);
         scen_free(&sc);
         return 1;
     }
     tcfg_params_rt(&cfg, &rt, &tp);
     trk_status st = trk_tracker_init(&tk, &tp);
     if (st != TRK_OK) {
-        fprintf(stderr, "demo: trk_tracker_init: %s\n", trk_status_str(st));
+        fprintf(stderr, "trk-sim demo: trk_tracker_init: %s\n", ERRMSG_STATUS(st));
         return 1;
     }
     /* ---- run */
@@ -263,7 +264,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         st = trk_tracker_process_scan(&tk, &scan, &rep);
         t_track += progress_now_s() - t0;
         if (st != TRK_OK) {
-            fprintf(stderr, "demo: scan %ld refused: %s\n", k, trk_status_str(st));
+            fprintf(stderr, "trk-sim demo: scan %ld refused: %s\n", k, ERRMSG_STATUS(st));
             return 1;
         }
         updates += rep.n_tracks_updated;
@@ -429,7 +430,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
         struct toc *toc = toc_new(&ts, &src, err, sizeof err);
         struct toc_point pt;
         if (!toc || toc_point_at(toc, (double)am->pfa, &pt, err, sizeof err) != 0)
-            fprintf(stderr, "demo: MRE prediction unavailable: %s\n", err);
+            fprintf(stderr, "trk-sim demo: MRE prediction unavailable: %s\n", err);
         else
             mre[0] = pt.rmse_m[TOC_PDAF], mre[1] = pt.rmse_m[TOC_PDAFAI];
         toc_free(toc);

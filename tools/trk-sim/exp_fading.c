@@ -24,6 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "errmsg.h"
 #include "mc_stats.h"
 #include "rng.h"
 #include "sim.h"
@@ -259,8 +260,8 @@ SIM_EXPERIMENT(fading, "fading", "Blanding 2007 Fig. 2 through the tracker: a fa
             const char *field;
             const trk_status st = trk_tracker_check_params(&p, &field);
             if (st != TRK_OK) {
-                fprintf(stderr, "fading: %s %g: parameter %s: %s\n", method_name[m], lists[m][j], field,
-                        trk_status_str(st));
+                fprintf(stderr, "trk-sim fading: %s %g: parameter %s: %s\n", method_name[m], lists[m][j], field,
+                        ERRMSG_STATUS(st));
                 return 2;
             }
         }
@@ -274,7 +275,7 @@ SIM_EXPERIMENT(fading, "fading", "Blanding 2007 Fig. 2 through the tracker: a fa
     const int rc = sim_run_units(&com, cli.name, n_units, sizeof *out, 1, fd_unit, fd_ws_free, &ctx, out, &wall,
                                  &failed);
     if (rc != 0) {
-        if (rc == 1) fprintf(stderr, "fading: unit %zu failed (the tracker refused a scan or ran out of memory)\n", failed);
+        if (rc == 1) fprintf(stderr, "trk-sim fading: unit %zu failed (the tracker refused a scan or ran out of memory)\n", failed);
         return 1;
     }
     char path[1024];

@@ -34,6 +34,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "errmsg.h"
 #include "mc_stats.h"
 #include "progress.h"
 #include "sim.h"
@@ -90,7 +91,7 @@ static int hyca_point(const struct hy_setting *s, double pd, double lambda, int 
     trk_status st = trk_hyca_init(h, &p);
     if (st == TRK_OK) st = trk_hyca_run(h, NULL, res);
     if (st != TRK_OK) {
-        fprintf(stderr, "hyca: P_D %g, lambda %g: %s\n", pd, lambda, trk_status_str(st));
+        fprintf(stderr, "trk-sim hyca: P_D %g, lambda %g: %s\n", pd, lambda, ERRMSG_STATUS(st));
         return -1;
     }
     return 0;
@@ -162,7 +163,7 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
         }
     }
     if (from > scans) {
-        fprintf(stderr, "hyca: --from must be <= --scans\n");
+        fprintf(stderr, "trk-sim hyca: --from must be <= --scans\n");
         return 2;
     }
     const int np = n_pd * n_lambda;
@@ -180,7 +181,7 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
             const double snr = pow(10, ai_snr_db / 10), pfa = pow(pds[i], 1 + snr);
             char e[256];
             if (!(pfa > 0) || st_amp_init(&amps[i], TRK_AMP_RAYLEIGH, 0, ai_snr_db, pfa, 0, 0, e, sizeof e)) {
-                fprintf(stderr, "hyca: PDAFAI at P_D %g, SNR %g dB: %s\n", pds[i], ai_snr_db,
+                fprintf(stderr, "trk-sim hyca: PDAFAI at P_D %g, SNR %g dB: %s\n", pds[i], ai_snr_db,
                         pfa > 0 ? e : "P_FA underflows");
                 return 1;
             }
@@ -212,7 +213,7 @@ SIM_EXPERIMENT(hyca, "hyca", "Willett 2010 I.D.2: track life by HYCA against a s
         sp.seed = com.seed;
         char e[256];
         if (st_model_init(&mod[k], &sp, e, sizeof e)) {
-            fprintf(stderr, "hyca: %s\n", e);
+            fprintf(stderr, "trk-sim hyca: %s\n", e);
             return 1;
         }
     }

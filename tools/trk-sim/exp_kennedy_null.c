@@ -95,19 +95,19 @@ SIM_EXPERIMENT(kennedy_null, "kennedy-null", "Kennedy 2008 Figs. 2-3: false-trac
     struct kn_model model;
     char err[256];
     if (kn_model_init(&model, &kp, err, sizeof err)) {
-        fprintf(stderr, "kennedy-null: %s\n", err);
+        fprintf(stderr, "trk-sim kennedy-null: %s\n", err);
         return 2;
     }
     const int threads = sim_threads(&com);
     const long nlen = max_scans - 1; /* lengths 2 .. max_scans */
     struct kn_out *out = calloc((size_t)(nlen * runs), sizeof *out);
     if (!out) { /* --runs 2147483648 must say why it stops */
-        fprintf(stderr, "kennedy-null: out of memory for %ld x %ld run results (%.3g GB): fewer --runs or --max-scans\n",
+        fprintf(stderr, "trk-sim kennedy-null: out of memory for %ld x %ld run results (%.3g GB): fewer --runs or --max-scans\n",
                 nlen, runs, (double)nlen * (double)runs * (double)sizeof *out / 1e9);
         return 1;
     }
     if (!com.quiet)
-        fprintf(stderr, "kennedy-null: %ld run lengths x %ld runs, %ld peaks/scan, alpha %g, seed %llu, %d threads\n",
+        fprintf(stderr, "trk-sim kennedy-null: %ld run lengths x %ld runs, %ld peaks/scan, alpha %g, seed %llu, %d threads\n",
                 nlen, runs, peaks, alpha, (unsigned long long)com.seed, threads);
     /* every run a work unit */
     struct kn_units ku = {&model, runs};

@@ -66,6 +66,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "errmsg.h"
 #include "kvfile.h"
 #include "mc_stats.h"
 #include "mtt_eval.h"
@@ -300,7 +301,7 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
     const trk_status st = trk_tracker_check_params(&p, &field);
     if (st != TRK_OK) {
         snprintf(err, n, "the tracker refuses configuration %s: %s: %s", cfg_name[kind], field ? field : "?",
-                 trk_status_str(st));
+                 ERRMSG_STATUS(st));
         tcfg_unload(rt);
         return -1;
     }

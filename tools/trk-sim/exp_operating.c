@@ -34,6 +34,7 @@
 #include <string.h>
 
 #include "amp_table.h"
+#include "errmsg.h"
 #include "progress.h"
 #include "sim.h"
 #include "trk/amplitude.h"
@@ -216,11 +217,11 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
     const int polar = sigma_r > 0 || sigma_b_deg > 0 || range_m > 0;
     if (polar == (sigma_m > 0) || (polar && !(sigma_r > 0 && sigma_b_deg > 0 && range_m > 0)) ||
         (sigma_y > 0 && !(sigma_m > 0))) {
-        fprintf(stderr, "operating-point: give --sigma-m, or all of --sigma-range-m, --sigma-bearing-deg, --range-m\n");
+        fprintf(stderr, "trk-sim operating-point: give --sigma-m, or all of --sigma-range-m, --sigma-bearing-deg, --range-m\n");
         return 2;
     }
     if (!(pfa_min < pfa_max)) {
-        fprintf(stderr, "operating-point: --pfa-min must be below --pfa-max\n");
+        fprintf(stderr, "trk-sim operating-point: --pfa-min must be below --pfa-max\n");
         return 2;
     }
     static struct op_model m;
@@ -234,7 +235,7 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
     m.cell_m2 = cell_m2;
     m.m_lost = (int)m_lost;
     if (trk_irf_init(&m.irf, 2, (trk_real)m.gamma) != TRK_OK) {
-        fprintf(stderr, "operating-point: gate g %g is outside the quadrature's range\n", gate_g);
+        fprintf(stderr, "trk-sim operating-point: gate g %g is outside the quadrature's range\n", gate_g);
         return 2;
     }
     const double t0 = progress_now_s();
@@ -243,7 +244,7 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
     for (long i = 0; i < points; i++) {
         const double pfa = exp(log(pfa_min) + (log(pfa_max) - log(pfa_min)) * (double)i / (double)(points - 1));
         if (op_point_at(&m, pfa, &h, &pts[i]) != 0) {
-            fprintf(stderr, "operating-point: no result at P_FA %g (ROC or model refused)\n", pfa);
+            fprintf(stderr, "trk-sim operating-point: no result at P_FA %g (ROC or model refused)\n", pfa);
             return 1;
         }
     }
@@ -302,7 +303,7 @@ SIM_EXPERIMENT(operating_point, "operating-point", "sonar operating point: P_D, 
         fprintf(f, "# toc_optimum pfa %.6g pd %.6g rmse_m %.6g life_mean_scans %.6g\n", best.pfa, best.pd,
                 best.mre_rmse, best.life_mean);
     } else {
-        printf("# TOC: no P_FA in [%g, %g] has a steady state (%s)\n", pfa_min, pfa_max, trk_status_str(tst));
+        printf("# TOC: no P_FA in [%g, %g] has a steady state (%s)\n", pfa_min, pfa_max, ERRMSG_STATUS(tst));
         fprintf(f, "# toc_optimum none\n");
     }
     if (sim_csv_close(&f_out) != 0) return 1;

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "trk/gate.h"
+#include "errmsg.h"
 #include "progress.h"
 #include "q2_is.h"
 #include "sim.h"
@@ -52,7 +53,7 @@ static int mre_of(double q2, double *p11)
     trk_status st = trk_mre_init(&m, &p);
     if (st == TRK_OK) st = trk_mre_steady_state(&m, NULL, &r);
     if (st != TRK_OK) {
-        fprintf(stderr, "willett-table1: MRE at q2 = %g: %s\n", q2, trk_status_str(st));
+        fprintf(stderr, "trk-sim willett-table1: MRE at q2 = %g: %s\n", q2, ERRMSG_STATUS(st));
         return 1;
     }
     *p11 = (double)r.p[0];
@@ -122,7 +123,7 @@ SIM_EXPERIMENT(q2_willett, "willett-table1", "Willett Table I: q2 by importance 
     const int rc0 = q2_is_run(&line, 1, &opt, err, sizeof err);
     if (pg.started) progress_end(&pg.p);
     if (rc0) {
-        fprintf(stderr, "willett-table1: %s\n", err);
+        fprintf(stderr, "trk-sim willett-table1: %s\n", err);
         return 1;
     }
     const double dt = progress_now_s() - t0;

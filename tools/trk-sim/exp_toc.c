@@ -71,7 +71,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
     const int parsed = sim_parse(&cli, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     if (!(pfa_min < pfa_max)) {
-        fprintf(stderr, "toc: --pfa-min must be below --pfa-max\n");
+        fprintf(stderr, "trk-sim toc: --pfa-min must be below --pfa-max\n");
         return 2;
     }
     const int threads = sim_threads(&com);
@@ -119,16 +119,16 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         r.threads = com.threads;
         r.par = com.par;
         struct q2_table_result res;
-        if (!com.quiet) fprintf(stderr, "toc: sampling the PDAF q2 grid (gate g = 6) ...\n");
+        if (!com.quiet) fprintf(stderr, "trk-sim toc: sampling the PDAF q2 grid (gate g = 6) ...\n");
         if (q2_table_build(&s, &r, &res, err, sizeof err)) {
-            fprintf(stderr, "toc: PDAF q2 grid: %s\n", err);
+            fprintf(stderr, "trk-sim toc: PDAF q2 grid: %s\n", err);
             goto out;
         }
         pdaf_bytes = res.bytes;
         res.bytes = NULL;
         q2_table_result_free(&res);
         if (trk_table_parse(&pdaf_t, pdaf_bytes, res.len) != TRK_OK) {
-            fprintf(stderr, "toc: the sampled PDAF q2 table does not parse\n");
+            fprintf(stderr, "trk-sim toc: the sampled PDAF q2 table does not parse\n");
             goto out;
         }
         src.pdaf = &pdaf_t;
@@ -144,11 +144,11 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
             if (sim_load_table(cli.name, tables, models[m].table, &ai_t[m], &ai_buf[m])) goto out;
             src.pdafai = &ai_t[m];
         } else if (!com.quiet) {
-            fprintf(stderr, "toc: sampling the PDAFAI q2 grid, %s clutter, SNR %g dB ...\n", models[m].label, snr_db);
+            fprintf(stderr, "trk-sim toc: sampling the PDAFAI q2 grid, %s clutter, SNR %g dB ...\n", models[m].label, snr_db);
         }
         toc[m] = toc_new(&sc, &src, err, sizeof err);
         if (!toc[m]) {
-            fprintf(stderr, "toc: %s: %s\n", models[m].label, err);
+            fprintf(stderr, "trk-sim toc: %s: %s\n", models[m].label, err);
             goto out;
         }
     }
@@ -178,7 +178,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
         for (int c = 0; c < n_cells; c++) {
             if (toc_set_cell_m2(toc[m], cells[c], err, sizeof err) ||
                 toc_curve(toc[m], (size_t)points, pts, err, sizeof err)) {
-                fprintf(stderr, "toc: %s, cell %g: %s\n", models[m].label, cells[c], err);
+                fprintf(stderr, "trk-sim toc: %s, cell %g: %s\n", models[m].label, cells[c], err);
                 goto out;
             }
             for (long i = 0; i < points; i++) {
@@ -200,7 +200,7 @@ SIM_EXPERIMENT(toc, "toc", "Brekke Fig. 2: MRE steady-state RMSE along the ROC (
             for (int d = 0; d < TOC_N_DETECTORS; d++) {
                 struct toc_optimum *o = &opt[m][c][d];
                 if (toc_optimum(toc[m], d, o, err, sizeof err)) {
-                    fprintf(stderr, "toc: %s, cell %g: %s\n", models[m].label, cells[c], err);
+                    fprintf(stderr, "trk-sim toc: %s, cell %g: %s\n", models[m].label, cells[c], err);
                     o->pfa = NAN;
                     printf("%-10s %7g  %-7s %10s\n", models[m].label, cells[c], toc_detector_name(d), "none");
                     continue;

@@ -74,7 +74,7 @@ static int mre_pdaf(double pd, double lambda, double gamma, const struct q2_is_o
         char err[256];
         if (lvg > 0) {
             if (q2_is_cell(2, gamma, pd, lvg, NULL, qo, &qn, &se, err, sizeof err) != 0) {
-                fprintf(stderr, "willett-crlb: q2 sampler: %s\n", err);
+                fprintf(stderr, "trk-sim willett-crlb: q2 sampler: %s\n", err);
                 return -1;
             }
         } else { /* no clutter: beta_1 = 1, q2 = pd F_4(gamma) */
@@ -167,7 +167,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
     const double *pds = pts.pd, *lams = pts.lambda;
     const int np = pts.n;
     if (from > scans) {
-        fprintf(stderr, "willett-crlb: --from must be <= --scans\n");
+        fprintf(stderr, "trk-sim willett-crlb: --from must be <= --scans\n");
         return 2;
     }
     const int threads = sim_threads(&com);
@@ -190,7 +190,7 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
         if (lams[k] > 0) {
             if (q2_is_cell(2, WILLETT_AREA / (double)trk_gate_unit_volume(2), pds[k], WILLETT_AREA * lams[k], NULL, &qo,
                            &q2o[k], &q2o_se[k], err, sizeof err) != 0) {
-                fprintf(stderr, "willett-crlb: q2 sampler: %s\n", err);
+                fprintf(stderr, "trk-sim willett-crlb: q2 sampler: %s\n", err);
                 return 1;
             }
         } else {
@@ -225,12 +225,12 @@ SIM_EXPERIMENT(willett_crlb, "willett-crlb", "Willett 2010 I.D: PDAF RMSE agains
         sp.seed = com.seed;
         char e[256];
         if (st_model_init(&mod[k], &sp, e, sizeof e)) {
-            fprintf(stderr, "willett-crlb: %s\n", e);
+            fprintf(stderr, "trk-sim willett-crlb: %s\n", e);
             return 1;
         }
     }
     if (!com.quiet)
-        fprintf(stderr, "willett-crlb: %d points x %ld runs x %ld scans, seed %llu, %d threads (bounds %.1f s)\n", np,
+        fprintf(stderr, "trk-sim willett-crlb: %d points x %ld runs x %ld scans, seed %llu, %d threads (bounds %.1f s)\n", np,
                 runs, scans, (unsigned long long)com.seed, threads, bound_s);
     int bad_call;
     const double wall = sim_st_runs(&com, cli.name, mod, np, runs, 1, from, keep, out, sizeof *out, &bad_call);

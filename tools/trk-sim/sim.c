@@ -1,4 +1,5 @@
 /* sim.c - trk-sim plumbing: declarative options, progress, output (sim.h). */
+#include "errmsg.h"
 #include "sim.h"
 
 #include <errno.h>
@@ -150,7 +151,7 @@ int sim_run_units(const struct sim_common *c, const char *label, size_t n, size_
         if (failed_unit) *failed_unit = b.failed_unit;
         return 1;
     }
-    fprintf(stderr, "%s: %s\n", label, err);
+    fprintf(stderr, "trk-sim %s: %s\n", label, err);
     return -1;
 }
 
@@ -204,7 +205,7 @@ int sim_amp_k_grid(const char *exp, struct st_amp *amp, const double *nu, int n_
         }
     }
     if (first_bad < n) {
-        fprintf(stderr, "%s: %s\n", exp, msg);
+        fprintf(stderr, "trk-sim %s: %s\n", exp, msg);
         return -1;
     }
     return 0;
@@ -298,7 +299,7 @@ int sim_brekke_model(const char *exp, struct st_model *m, const struct st_amp *a
     sp.seed = seed;
     char e[256];
     if (st_model_init(m, &sp, e, sizeof e)) {
-        fprintf(stderr, "%s: %s\n", exp, e);
+        fprintf(stderr, "trk-sim %s: %s\n", exp, e);
         return -1;
     }
     return 0;
@@ -333,7 +334,7 @@ struct toc *sim_brekke_toc(const char *exp, const struct sim_common *c, double n
     src.par = c->par;
     char err[512];
     struct toc *t = toc_new(&ts, &src, err, sizeof err);
-    if (!t) fprintf(stderr, "%s: MRE (nu %g): %s\n", exp, nu, err);
+    if (!t) fprintf(stderr, "trk-sim %s: MRE (nu %g): %s\n", exp, nu, err);
     return t;
 }
 
@@ -436,7 +437,7 @@ int sim_load_table(const char *exp, const char *dir, const char *file, struct tr
         st = trk_table_load_file(path, *buf, n + 8, t, NULL);
     }
     if (st != TRK_OK) {
-        fprintf(stderr, "%s: %s: %s\n", exp, path, trk_status_str(st));
+        fprintf(stderr, "trk-sim %s: %s: %s\n", exp, path, ERRMSG_STATUS(st));
         return -1;
     }
     return 0;
@@ -517,7 +518,7 @@ int sim_plot(const struct sim_common *c, const char *suffix, const char *body)
     if (!body) return -1;
     char base[1024];
     snprintf(base, sizeof base, "%s%s", c->out, suffix);
-    return plot_gnuplot(base, body);
+    return plot_gnuplot("trk-sim", base, body);
 }
 
 int sim_plotf(const struct sim_common *c, const char *suffix, const char *fmt, ...)

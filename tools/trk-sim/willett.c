@@ -1,4 +1,5 @@
 /* willett.c - Willett 2010 Table I and the CRLB of its setting (willett.h). */
+#include "errmsg.h"
 #include "willett.h"
 
 #include <math.h>
@@ -35,7 +36,7 @@ int willett_crlb(const char *exp, double q2, double *j11, double *pos_rmse)
     trk_status st = trk_crlb_init(&c, &p);
     if (st == TRK_OK) st = trk_crlb_steady_state(&c, NULL, &r);
     if (st != TRK_OK) {
-        fprintf(stderr, "%s: CRLB at q2 = %g: %s\n", exp, q2, trk_status_str(st));
+        fprintf(stderr, "trk-sim %s: CRLB at q2 = %g: %s\n", exp, q2, ERRMSG_STATUS(st));
         return -1;
     }
     if (j11) *j11 = (double)r.j_inv[0];

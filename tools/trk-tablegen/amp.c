@@ -1,4 +1,5 @@
 /* amp.c - `trk-tablegen amp`: amplitude model tables (trk/amplitude.h). */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -128,7 +129,7 @@ TABLEGEN_CMD(amp, "amplitude model table: --clutter-model rayleigh|k --k-shape -
              : format == 1     ? tablew_write_c(out, name, r.bytes, r.len, desc)
                                : tablew_write_bin(out, r.bytes, r.len);
     if (rc != 0) {
-        perror(out);
+        fprintf(stderr, "trk-tablegen amp: cannot write %s: %s\n", out, strerror(errno));
         free(r.bytes);
         return 1;
     }

@@ -1,13 +1,17 @@
 /* info.c - `trk-tablegen info FILE`: load a table through the library's own
  * loader (trk_table_check, then trk_table_parse and the kind's init when the
  * real width is this build's), print its header, parameters and sections.
- * Exit status 0 when the table is sound, 1 on any defect, 2 on usage/IO. */
+ * A defect is reported on stdout with the rest and once more on stderr,
+ * "trk-tablegen info: FILE: WHAT" (a library refusal in plain words with the
+ * status's name). Exit status 0 when the table is sound, 1 on any defect or
+ * an unreadable file, 2 on a usage error. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "errmsg.h"
 #include "fileio.h"
 #include "tablegen.h"
 #include "trk/q2.h"
@@ -110,25 +114,37 @@ static void print_table(const unsigned char *b, const struct trk_table_info *in)
     }
 }
 
+/* A defect: "  DEFECT: what" on stdout, and what into why (the first one
+ * only: the stderr line). Returns 1. */
+static int defect(char *why, size_t n, const char *what)
+{
+    printf("  DEFECT: %s\n", what);
+    if (!why[0]) snprintf(why, n, "%s", what);
+    return 1;
+}
+
+/* A library refusal as a defect: "WORDS (NAME)", and on stdout the call
+ * that refused. */
+static int refused(char *why, size_t n, const char *call, trk_status st)
+{
+    defect(why, n, ERRMSG_STATUS(st));
+    printf("    (refused by the library's %s)\n", call);
+    return 1;
+}
+
 /* Kind-specific checks through the library (same real width only). */
-static int check_kind(const unsigned char *b, size_t len, const struct trk_table_info *in)
+static int check_kind(const unsigned char *b, size_t len, const struct trk_table_info *in, char *why, size_t wn)
 {
     struct trk_table t;
     trk_status st = trk_table_parse(&t, b, len);
-    if (st != TRK_OK) {
-        printf("  trk_table_parse: %s\n", trk_status_str(st));
-        return 1;
-    }
+    if (st != TRK_OK) return refused(why, wn, "trk_table_parse", st);
     if (in->kind == TRK_TABLE_KIND_Q2_PDAF || in->kind == TRK_TABLE_KIND_Q2_PDAFAI) {
         const int det = in->kind == TRK_TABLE_KIND_Q2_PDAF ? TRK_Q2_PDAF : TRK_Q2_PDAFAI;
         int64_t nz = 0;
         if (trk_table_param_int(&t, "nz", &nz) != TRK_OK) nz = 0;
         struct trk_q2_lookup q;
         st = trk_q2_lookup_init_table(&q, &t, det, (int)nz);
-        if (st != TRK_OK) {
-            printf("  trk_q2_lookup_init_table: %s\n", trk_status_str(st));
-            return 1;
-        }
+        if (st != TRK_OK) return refused(why, wn, "trk_q2_lookup_init_table", st);
         /* the value at the first and last node, through the lookup */
         trk_real lo[3], hi[3], v_lo, v_hi;
         for (int a = 0; a < q.n_axes; a++) {
@@ -138,10 +154,8 @@ static int check_kind(const unsigned char *b, size_t len, const struct trk_table
             lo[a] = ax->log_spacing ? trk_exp(u0) : u0;
             hi[a] = ax->log_spacing ? trk_exp(u1) : u1;
         }
-        if (trk_q2_lookup_eval(&q, lo, &v_lo) != TRK_OK || trk_q2_lookup_eval(&q, hi, &v_hi) != TRK_OK) {
-            printf("  q2 lookup does not evaluate at the grid's corners\n");
-            return 1;
-        }
+        if (trk_q2_lookup_eval(&q, lo, &v_lo) != TRK_OK || trk_q2_lookup_eval(&q, hi, &v_hi) != TRK_OK)
+            return defect(why, wn, "the q2 lookup does not evaluate at the grid's corners");
         printf("  q2 lookup (library): %s, nz %d, gamma %.10g (P_G %.10g)", det == TRK_Q2_PDAF ? "PDAF" : "PDAFAI",
                q.nz, (double)q.gate_gamma, (double)q.gate_prob);
         if (det == TRK_Q2_PDAFAI)
@@ -154,18 +168,13 @@ static int check_kind(const unsigned char *b, size_t len, const struct trk_table
     if (in->kind != TRK_TABLE_KIND_AMP) return 1; /* unknown kinds are refused by the caller */
     struct trk_amplitude m;
     st = trk_amplitude_init_table(&m, &t);
-    if (st != TRK_OK) {
-        printf("  trk_amplitude_init_table: %s\n", trk_status_str(st));
-        return 1;
-    }
+    if (st != TRK_OK) return refused(why, wn, "trk_amplitude_init_table", st);
     trk_real l_t, l_2t, a1, a2;
     const trk_real thr = trk_amplitude_threshold(&m);
     if (trk_amplitude_log_lr(&m, thr, &l_t) != TRK_OK || trk_amplitude_log_lr(&m, 2 * thr, &l_2t) != TRK_OK ||
         trk_amplitude_inv_sf(&m, TRK_AMP_CLUTTER, 1, &a1) != TRK_OK ||
-        trk_amplitude_inv_sf(&m, TRK_AMP_TARGET, 1, &a2) != TRK_OK) {
-        printf("  amplitude model does not evaluate\n");
-        return 1;
-    }
+        trk_amplitude_inv_sf(&m, TRK_AMP_TARGET, 1, &a2) != TRK_OK)
+        return defect(why, wn, "the amplitude model does not evaluate");
     printf("  amplitude model (library, %s): threshold %.10g, pd %.10g\n",
            m.tabulated ? "table lookup" : "Rayleigh closed form", (double)thr, (double)trk_amplitude_pd(&m));
     printf("    ln l^a(t) = %.10g, ln l^a(2t) = %.10g; a(x=1): clutter %.10g, target %.10g\n", (double)l_t,
@@ -213,7 +222,8 @@ TABLEGEN_CMD(info, "load a table through the library, print header and parameter
         .about = "Checks FILE with the library's loader (size, magic, version, CRC, layout, finite and\n"
                  "monotone values; for tables of this build's real width also trk_table_parse and the\n"
                  "kind's own checks, e.g. trk_amplitude_init_table), prints its header, parameters and\n"
-                 "sections. Exit status 0 sound, 1 defect, 2 usage or unreadable file.",
+                 "sections. A defect is also said on stderr. Exit status 0 sound, 1 a defect or an\n"
+                 "unreadable file, 2 a usage error.",
         .opts = opts,
         .operand = take_file,
         .ctx = &file};
@@ -232,14 +242,17 @@ TABLEGEN_CMD(info, "load a table through the library, print header and parameter
             fprintf(stderr, "trk-tablegen info: %s: more than %zu bytes (%s)\n", file, bound,
                     bound == TRK_TABLE_FILE_MAX_BYTES ? "the largest table" : "its header's size + 1 MiB");
         else
-            perror(file);
-        return 2;
+            fprintf(stderr, "trk-tablegen info: %s: cannot read: %s\n", file, strerror(errno));
+        return 1;
     }
     struct trk_table_info in;
+    char why[512] = "", what[256];
     printf("%s:\n", file);
     trk_status st = trk_table_check(b, len, &in);
     if (st != TRK_OK) {
-        printf("  DEFECT: trk_table_check: %s\n", trk_status_str(st));
+        refused(why, sizeof why, "trk_table_check", st);
+        printf("DEFECT\n");
+        fprintf(stderr, "trk-tablegen info: %s: %s\n", file, why);
         free(b);
         return 1;
     }
@@ -247,22 +260,23 @@ TABLEGEN_CMD(info, "load a table through the library, print header and parameter
     int bad = 0;
     const int unknown = strcmp(kind_name(in.kind), "unknown") == 0;
     if (unknown) { /* the container is sound, its content unknown */
-        printf("  DEFECT: unknown table kind %u (known: amp %u, q2_pdaf %u, q2_pdafai %u)\n", in.kind,
-               TRK_TABLE_KIND_AMP, TRK_TABLE_KIND_Q2_PDAF, TRK_TABLE_KIND_Q2_PDAFAI);
-        bad = 1;
+        snprintf(what, sizeof what, "unknown table kind %u (known: amp %u, q2_pdaf %u, q2_pdafai %u)", in.kind,
+                 TRK_TABLE_KIND_AMP, TRK_TABLE_KIND_Q2_PDAF, TRK_TABLE_KIND_Q2_PDAFAI);
+        bad = defect(why, sizeof why, what);
     }
     if (in.size != len) {
-        printf("  DEFECT: %zu bytes after the table's end\n", len - in.size);
-        bad = 1;
+        snprintf(what, sizeof what, "%zu bytes after the table's end", len - in.size);
+        bad = defect(why, sizeof why, what);
     }
     if (!unknown && in.real_size == sizeof(trk_real)) {
-        bad |= check_kind(b, len, &in);
+        bad |= check_kind(b, len, &in, why, sizeof why);
     } else if (!unknown) {
         printf("  (real width %u: this %s build checks the container only; use a %s build of trk-tablegen\n"
                "   for the kind's checks)\n",
                in.real_size, TRK_REAL_IS_FLOAT ? "float" : "double", in.real_size == 4 ? "float" : "double");
     }
     printf("%s\n", bad ? "DEFECT" : "OK");
+    if (bad) fprintf(stderr, "trk-tablegen info: %s: %s\n", file, why);
     free(b);
     return bad;
 }

@@ -1,5 +1,6 @@
 /* q2.c - `trk-tablegen q2`: q2 tables by importance sampling (trk/q2.h
  * "Q2 TABLE"; tools/gen/q2_table.h, q2_is.h). */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -273,7 +274,7 @@ TABLEGEN_CMD(q2, "q2 table by importance sampling: --detector pdaf|pdafai [grid]
              : format == 1     ? tablew_write_c(out, name, r.bytes, r.len, desc)
                                : tablew_write_bin(out, r.bytes, r.len);
     if (rc != 0) {
-        perror(out);
+        fprintf(stderr, "trk-tablegen q2: cannot write %s: %s\n", out, strerror(errno));
         q2_table_result_free(&r);
         return 1;
     }

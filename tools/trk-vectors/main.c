@@ -6,8 +6,9 @@
  * "UNIMPLEMENTED <file> <id> <kind>" per case of a kind this build does not
  * know, the names of unimplemented and skipped kinds, and finally
  * "vectors: P passed, F failed, U unimplemented".
- * Exit status 1 when F > 0 or P = 0, or U > 0 under --strict; 2 on usage or
- * unreadable/malformed files (a malformed file also counts as a failure).
+ * Exit status (docs/statuses.md, "Exit codes"): 1 when F > 0 or P = 0, or
+ * U > 0 under --strict, and on an unreadable or malformed file (it also
+ * counts as a failure); 2 on a usage error.
  * --emit writes every case back with its out lines replaced by the computed
  * values (17 significant digits) instead of checking.
  * --report-error prints, per kind, the largest absolute and relative error
@@ -126,7 +127,7 @@ int main(int argc, char **argv)
     fl.f = malloc((size_t)argc * sizeof *fl.f);
     if (!fl.f) {
         fprintf(stderr, "trk-vectors: out of memory\n");
-        return 2;
+        return 1;
     }
     const struct cli_opt opts[] = {
         CLI_OPT_FLAG("--strict", &strict, "exit non-zero also when a case's kind is not implemented"),
@@ -231,7 +232,7 @@ int main(int argc, char **argv)
         free(buf);
     }
     free(fl.f);
-    if (emit) return bad_file ? 2 : 0;
+    if (emit) return bad_file ? 1 : 0;
     if (report) {
         printf("%-20s %6s %12s %12s %10s   (%s build)\n", "kind", "cases", "max_abs_err", "max_rel_err",
                "tol_used", TRK_REAL_IS_FLOAT ? "float" : "double");
@@ -246,7 +247,7 @@ int main(int argc, char **argv)
     if (skipped_slow) print_kinds("of slow kinds skipped (--skip-slow)", skipped_slow, &slow_kinds);
     if (unimpl) print_kinds("of kinds not implemented yet", unimpl, &unimpl_kinds);
     printf("vectors: %ld passed, %ld failed, %ld unimplemented\n", passed, failed, unimpl);
-    if (bad_file) return 2;
+    if (bad_file) return 1;
     if (failed > 0 || passed == 0 || (strict && unimpl > 0)) return 1;
     return 0;
 }
