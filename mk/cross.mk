@@ -97,10 +97,19 @@ INDIRECT_SOFT_DOUBLE_RE := __aeabi_f2u?lz|__fixu?n?s?sfdi
 CROSS_F2LZ_FATAL ?= 0
 DOUBLE_LIBM_RE := sqrt|exp|exp2|expm1|log|log1p|log2|log10|pow|floor|ceil|round|trunc|fmod|fabs|sin|cos|tan|asin|acos|atan|atan2|sinh|cosh|tanh|erf|erfc|lgamma|tgamma|hypot|cbrt|ldexp|frexp|modf|scalbn|nextafter|fmin|fmax|copysign
 
+# build/cross/<target>/flags.txt holds the target's compiler and flags and is
+# rewritten only when they change (CROSS_EXTRA_CFLAGS given or dropped): the
+# objects then rebuild, so an archive never mixes -D knobs, and what
+# install-cross writes into a target's .pc file is what its archive was built
+# with.
 define CROSS_template
 CROSS_OBJ_$(1) := $$(patsubst src/%.c,build/cross/$(1)/obj/%.o,$$(LIB_SRC))
 CROSS_PERF_OBJ_$(1) := $$(patsubst src/%.c,build/cross/$(1)/obj/%.o,$$(PERF_SRC))
-build/cross/$(1)/obj/%.o: src/%.c $$(wildcard include/trk/*.h src/*.h src/perf/*.h) mk/cross.mk
+build/cross/$(1)/flags.txt: FORCE
+	@mkdir -p $$(@D)
+	@echo '$$(TARGET_$(1)_CC) $$(CROSS_COMMON) $$(TARGET_$(1)_CFLAGS) $$(CROSS_EXTRA_CFLAGS)' > $$@.tmp; \
+	  if cmp -s $$@.tmp $$@; then rm -f $$@.tmp; else mv $$@.tmp $$@; fi
+build/cross/$(1)/obj/%.o: src/%.c $$(wildcard include/trk/*.h src/*.h src/perf/*.h) mk/cross.mk build/cross/$(1)/flags.txt
 	@mkdir -p $$(@D)
 	$$(call say,CC,$$< ($(1)))
 	$$(Q)$$(TARGET_$(1)_CC) $$(CROSS_COMMON) $$(TARGET_$(1)_CFLAGS) $$(CROSS_EXTRA_CFLAGS) -c $$< -o $$@
