@@ -10,6 +10,7 @@
  * are fewer (docs/tracker.md, "Dense formations"). */
 #include "trk_test.h"
 #include "trk/tracker.h"
+#include "trk_test_sonar.h"
 
 static struct trk_tracker tk; /* static, as in firmware */
 
@@ -19,15 +20,7 @@ static uint64_t rng_state; /* the generator of trk_test.h */
 #define SCAN_S 4.0
 #define N_SCANS 100
 
-static size_t count_confirmed(void)
-{
-    size_t n = 0;
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
-        const struct trk_track *tr = trk_tracker_track(&tk, i);
-        n += tr && tr->status == TRK_TRACK_CONFIRMED;
-    }
-    return n;
-}
+static size_t count_confirmed(void) { return trk_test_count_confirmed(&tk); }
 
 /* One run: the confirmed tracks after scan 10 (*at10) and after the last. */
 static size_t formation_run(double spacing_m, double speed_mps, uint64_t seed, size_t *at10)

@@ -35,15 +35,7 @@ static trk_status run_scan(int k, const struct trk_detection *d, size_t n, struc
     return trk_tracker_process_scan(&tk, &scan, rep);
 }
 
-static size_t count_confirmed(void)
-{
-    size_t n = 0;
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
-        const struct trk_track *tr = trk_tracker_track(&tk, i);
-        n += tr && tr->status == TRK_TRACK_CONFIRMED;
-    }
-    return n;
-}
+static size_t count_confirmed(void) { return trk_test_count_confirmed(&tk); }
 
 static const struct trk_track *only_live_track(void)
 {

@@ -1,6 +1,7 @@
 /* trk_test_sonar.h - what the track-table tests (initiation, joint association) share:
  * the sonar-like sensor (P_D 0.8, R = 25 I, clutter density lambda, q 1e-3
- * on the library defaults) and a detection at a point. */
+ * on the library defaults), a detection at a point, and the count of
+ * confirmed tracks. */
 #ifndef TRK_TEST_SONAR_H
 #define TRK_TEST_SONAR_H
 
@@ -16,6 +17,16 @@ static inline void trk_test_sonar_params(struct trk_tracker_params *p, double la
     p->sensor[0].meas_cov_m2[1] = 0;
     p->sensor[0].clutter_density_per_m2 = (trk_real)lambda;
     p->process_noise_q = TRK_REAL_C(1e-3);
+}
+
+static inline size_t trk_test_count_confirmed(const struct trk_tracker *t)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *tr = trk_tracker_track(t, i);
+        n += tr && tr->status == TRK_TRACK_CONFIRMED;
+    }
+    return n;
 }
 
 static inline struct trk_detection trk_test_det_at(double x, double y)
