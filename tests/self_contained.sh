@@ -1,6 +1,6 @@
 #!/bin/sh
 # self_contained.sh - the repository stands alone: no tracked file names a
-# path outside it (a sibling checkout such as ../shared, a workspace or home
+# path outside it (a sibling checkout of reference material, a workspace or home
 # directory), so that a plain clone builds, tests and reads the same
 # anywhere. Its reference material lives in the repository: the vectors in
 # tests/vectors, the conventions in docs/conventions.md, the papers cited by
