@@ -3,15 +3,15 @@
  * single-point starts, the initial existence, and the slot a new track
  * takes (free, else the weakest tentative track's).
  *
- * Included by tracker.c only (the layout of struct trk_tracker depends on
- * config.h options; see tracker_update_impl.h). */
+ * Included by tracker.c only (tracker_internal.h). */
 #ifndef TRK_TRACKER_INITIATE_IMPL_H
 #define TRK_TRACKER_INITIATE_IMPL_H
 
 #include <string.h>
 
-#include "grid_impl.h"
-#include "tracker_impl.h"
+#include "track_filter_impl.h"
+#include "track_life_impl.h"
+#include "tracker_index_impl.h"
 
 /* What initiation knows of the table within one scan (initiation only
  * fills slots, and changes no other track's quality): no free slot below
@@ -28,9 +28,6 @@ struct slots {
 };
 
 
-static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real *y, uint16_t *idx, size_t n,
-                       struct trk_i_grid *g, uint16_t *end);
-static void sort_u16_by(uint16_t *a, size_t n, const uint16_t *key); /* tracker_thin_impl.h */
 static int slot_possible(const struct trk_tracker *t, struct slots *sl, struct trk_scan_report *rep);
 /* What two-point pairing needs of each run of the store in one scan, run
  * k (cand_run) at [k]: dt_s the time since its scan (<= 0: it cannot pair),
@@ -50,11 +47,6 @@ static int start_single(struct trk_tracker *t, struct slots *sl, const struct tr
                         const trk_real *r_j, struct trk_scan_report *rep);
 static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan, uint16_t *idx, size_t n,
                              struct trk_scan_report *rep);
-#if TRK_WITH_IMM
-static void imm_start(const struct trk_tracker *t, struct trk_track *tr); /* tracker_imm_impl.h */
-#endif
-static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
-                       struct trk_scan_report *rep);
 
 /* Workspace detection j's covariance (its own or the sensor's) into r. */
 static void detection_r(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real *r)
@@ -211,9 +203,7 @@ static void new_track(struct trk_tracker *t, struct trk_track *tr, const struct 
         trk_visibility_reset_to(&t->vis_model, &tr->vis, psi0);
     }
     tr->existence0 = tr->vis.pv;
-#if TRK_WITH_IMM
-    imm_start(t, tr);
-#endif
+    filter_start(t, tr);
     trk_i_confirm_start(t, tr);
     rep->n_started++;
     if (t->params.confirm.method == TRK_CONFIRM_MN) {
@@ -477,23 +467,6 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
 }
 
 /* ------------------------------------------------------------------ the store */
-
-/* idx[0, n) of the points (x[idx[i]], y[idx[i]]) in the 2-D index g
- * (grid_impl.h), its cells' ends in end[] (O(n)). Scratch: ws.u.sort. */
-static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real *y, uint16_t *idx, size_t n,
-                       struct trk_i_grid *g, uint16_t *end)
-{
-    trk_real lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
-    for (size_t i = 0; i < n; i++) {
-        const trk_real xi = x[idx[i]], yi = y[idx[i]];
-        if (i == 0 || xi < lo_x) lo_x = xi;
-        if (i == 0 || xi > hi_x) hi_x = xi;
-        if (i == 0 || yi < lo_y) lo_y = yi;
-        if (i == 0 || yi > hi_y) hi_y = yi;
-    }
-    trk_i_grid_plan(g, n, lo_x, hi_x, lo_y, hi_y);
-    trk_i_grid_fill(g, x, y, idx, n, end, t->ws.u.sort.count, t->ws.u.sort.tmp);
-}
 
 /* The live runs by their place in cand[]: order[0, n_runs) their ages
  * (cand_run's k), by increasing start. */

@@ -9,11 +9,11 @@
  *      so the same prediction: cheaper than keeping 64 of them), its
  *      posterior existence and conditional weights (trk_i_jpda_condition),
  *      the PDA combination with them, commit and look as the per-track
- *      update. An IMM track (tracker_imm_impl.h) is mixed, predicted and
- *      gated in step 1 with its mixture weights ln e_i; in step 3 it is
- *      mixed and predicted again and imm_weights recomputes only its models'
- *      rho_mi (w = NULL: the marginals in ws.w stay), then its models' updates
- *      with the conditional weights.
+ *      update. The filter does the model's part (track_filter_impl.h): an
+ *      IMM track is mixed, predicted and gated in step 1 with its mixture
+ *      weights ln e_i; in step 3 it is mixed and predicted again,
+ *      filter_reweigh recomputes only its models' rho_mi (the marginals in
+ *      ws.w stay), then its models' updates take the conditional weights.
  * psi_t is the predicted existence (trk_visibility_predict) with
  * track_visibility, else 1 (plain JPDA). A track alone in its cluster gets
  * its IPDA (PDA) update: the same weights, the same existence.
@@ -25,12 +25,13 @@
  * tentative track may not use a detection a confirmed track gated applies
  * only to the left-out tracks.
  *
- * Included by tracker.c only, after tracker_update_impl.h. */
+ * Included by tracker.c only (tracker_internal.h). */
 #ifndef TRK_TRACKER_JOINT_IMPL_H
 #define TRK_TRACKER_JOINT_IMPL_H
 
 #include "jpda_impl.h"
-#include "tracker_update_impl.h"
+#include "track_commit_impl.h"
+#include "track_filter_impl.h"
 
 /* The existence the track's joint events are weighed with. */
 static trk_real joint_psi(const struct trk_tracker *t, const struct trk_track *tr)
@@ -49,9 +50,9 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
     const size_t k = t->ws.n_joint, off = t->ws.pair_first[k];
     struct pred pr;
     struct trk_i_pda_set set;
-    if (track_predict(t, tr, scan, &pr) != TRK_OK) return -1;
+    if (filter_predict(t, tr, scan, &pr) != TRK_OK) return -1;
     if (over_covariance_bound(t, pr.p, scan->sensor_id)) return 1;
-    if (track_gate(t, tr, scan, &pr, off, &set) != 0) return -1;
+    if (filter_gate(t, tr, scan, &pr, off, &set) != 0) return -1;
     const trk_real psi = joint_psi(t, tr);
     if (psi > 0) {
         const trk_real base = trk_log(psi) - t->log_clutter_density[scan->sensor_id];
@@ -124,20 +125,6 @@ static void joint_set(struct trk_tracker *t, const struct trk_scan *scan, size_t
     }
 }
 
-/* The posterior for given weights (set->w = beta_i, beta0: the joint
- * association's), over pr->x, pr->p, checked. */
-static trk_status track_update_beta(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
-                                    const struct trk_i_pda_set *set, trk_real beta0)
-{
-#if TRK_WITH_IMM
-    if (imm_on(t)) return imm_update(t, scan, set, beta0, pr);
-#else
-    (void)t;
-    (void)scan;
-#endif
-    return set->n > 0 ? trk_i_pda_run_beta(&pr->pp, set, beta0) : trk_i_spd(NX, pr->p);
-}
-
 /* Step 3 for joint track k (slot tr): as track_update, with the joint
  * weights. 0, or -1 on a numerical failure (tr untouched). */
 static int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t k,
@@ -145,12 +132,10 @@ static int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const
 {
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
     struct pred pr;
-    if (track_predict(t, tr, scan, &pr) != TRK_OK) return -1; /* cannot fail: it did in step 1 */
+    if (filter_predict(t, tr, scan, &pr) != TRK_OK) return -1; /* cannot fail: it did in step 1 */
     struct trk_i_pda_set set;
     joint_set(t, scan, k, &set);
-#if TRK_WITH_IMM
-    if (imm_on(t) && imm_weights(t, scan, &set, t->ws.cand + t->ws.pair_first[k], NULL) != TRK_OK) return -1;
-#endif
+    if (filter_reweigh(t, scan, &set, t->ws.cand + t->ws.pair_first[k]) != TRK_OK) return -1;
     struct trk_i_pda_out out;
     trk_i_pda_clutter(pda, &pr.pp, &set, &out);
     const trk_real psi = joint_psi(t, tr);
@@ -158,7 +143,7 @@ static int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const
     if (psi > 0 && trk_i_jpda_condition(psi, pda->params.pd * pda->params.gate_prob, set.n, set.w,
                                         t->ws.miss[k], &out.beta0, &psi_post) != TRK_OK)
         return -1;
-    if (track_update_beta(t, scan, &pr, &set, out.beta0) != TRK_OK) return -1;
+    if (filter_update_beta(t, scan, &pr, &set, out.beta0) != TRK_OK) return -1;
     struct trk_visibility vis = tr->vis;
     if (t->params.track_visibility && trk_visibility_update_posterior(&t->vis_model, &vis, psi_post) != TRK_OK)
         return -1;

@@ -3,7 +3,7 @@
  * runs it). */
 #include <string.h>
 
-#include "tracker_impl.h"
+#include "tracker_internal.h"
 
 void trk_tracker_default_params(struct trk_tracker_params *p)
 {
@@ -34,6 +34,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->max_pos_sigma_ratio = 20;
     p->max_coord_m = TRK_MAX_COORD_M_DEFAULT;
     p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: docs/tracker.md "Association" */
+    p->filter = TRK_FILTER_KALMAN;
     p->merge_gate_d2 = 4;
     p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
                                                               detections */
@@ -152,6 +153,20 @@ static trk_status check_init(const struct trk_init_params *in, const char **fiel
     return in->max_gap_scans >= 1 && in->max_gap_scans < TRK_MAX_CANDIDATE_SCANS
                ? TRK_OK
                : refuse(field, "init.max_gap_scans", TRK_E_RANGE);
+}
+
+/* The alpha-beta filter needs its knob, a process noise (its steady state
+ * has none without one) and no IMM (whose models are Kalman filters). */
+static trk_status check_filter(const struct trk_tracker_params *p, const char **field)
+{
+    if (p->filter == TRK_FILTER_KALMAN) return TRK_OK;
+    if (p->filter != TRK_FILTER_ALPHA_BETA) return refuse(field, "filter", TRK_E_ARG);
+    if (!TRK_WITH_ALPHA_BETA) return refuse(field, "filter", TRK_E_UNSUPPORTED);
+#if TRK_WITH_IMM
+    if (p->imm.n_models != 0) return refuse(field, "filter", TRK_E_UNSUPPORTED);
+#endif
+    if (!(p->process_noise_q > 0)) return refuse(field, "filter", TRK_E_UNSUPPORTED);
+    return TRK_OK;
 }
 
 /* Joint association weighs events by 1 / lambda: parametric clutter with a
@@ -291,6 +306,7 @@ trk_status trk_i_tracker_check(const struct trk_tracker_params *p, const char **
     for (unsigned s = 0; s < p->n_sensors; s++)
         if ((st = check_sensor(p, s, field, b)) != TRK_OK) return st;
     if ((st = check_association(p, field)) != TRK_OK) return st;
+    if ((st = check_filter(p, field)) != TRK_OK) return st;
 #if TRK_WITH_IMM
     if (p->imm.n_models != 0 && (st = trk_imm_check_params(&p->imm)) != TRK_OK) return refuse(field, "imm", st);
 #endif

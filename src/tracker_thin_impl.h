@@ -12,14 +12,15 @@
  * kept indices are then sorted, so that the workspace is loaded in scan
  * order as for a scan within capacity.
  *
- * Included by tracker.c only, after tracker_update_impl.h (predict). */
+ * Part of the load stage (tracker_load_impl.h), included by it only. */
 #ifndef TRK_TRACKER_THIN_IMPL_H
 #define TRK_TRACKER_THIN_IMPL_H
 
 #include <string.h>
 
-#include "tracker_impl.h"
-#include "tracker_update_impl.h"
+#include "track_filter_impl.h"
+#include "tracker_detection_impl.h"
+#include "tracker_index_impl.h"
 
 /* The live tracks whose gate boxes rank detections: all of them while
  * TRK_MAX_TRACKS <= TRK_MAX_DETECTIONS (the boxes take 4 reals each of
@@ -78,36 +79,6 @@ static void thin_sift_down(struct trk_tracker *t, size_t n)
     }
 }
 
-/* a[0, n) sorted ascending by key[a[i]] (key NULL: by a[i]), in place:
- * heapsort, O(n log n), no scratch. */
-static void sort_u16_by(uint16_t *a, size_t n, const uint16_t *key)
-{
-#define SORT_KEY(i) (key ? key[a[i]] : a[i])
-    for (size_t end = n, start = n / 2;;) {
-        if (start > 0) {
-            start--;
-        } else {
-            if (end <= 1) break;
-            end--;
-            const uint16_t v = a[0];
-            a[0] = a[end];
-            a[end] = v;
-        }
-        for (size_t i = start;;) { /* sift a[i] down in the max-heap [0, end) */
-            size_t m = i;
-            const size_t l = 2 * i + 1, r = l + 1;
-            if (l < end && SORT_KEY(l) > SORT_KEY(m)) m = l;
-            if (r < end && SORT_KEY(r) > SORT_KEY(m)) m = r;
-            if (m == i) break;
-            const uint16_t v = a[i];
-            a[i] = a[m];
-            a[m] = v;
-            i = m;
-        }
-    }
-#undef SORT_KEY
-}
-
 /* The gate boxes: per live track its predicted position and position
  * variances H P H' (without R), sorted by x: n of them at b[4 k ..]
  * (x, y, pxx, pyy). The largest pxx and pyy into *pmax. A track whose
@@ -121,7 +92,7 @@ static size_t thin_boxes(struct trk_tracker *t, const struct trk_scan *scan, trk
             const struct trk_track *tr = &t->track[i];
             struct pred pr;
             if (tr->status != (confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE)) continue;
-            if (predict(t, tr, scan, &pr) != TRK_OK) continue;
+            if (filter_predict(t, tr, scan, &pr) != TRK_OK) continue;
             const trk_real v[4] = {pr.x[X], pr.x[Y], pr.p[P(X, X)], pr.p[P(Y, Y)]};
             size_t k = n++; /* insertion by x: the boxes are few */
             for (; k > 0 && b[4 * (k - 1)] > v[0]; k--) memcpy(b + 4 * k, b + 4 * (k - 1), 4 * sizeof *b);

@@ -42,7 +42,7 @@ done
 ok "$(wc -l < "$T/code") keys: every default as documented"
 # field names: the check's literals against the page's last column
 grep -o '"[a-z_][a-z0-9_.]*"' src/tracker_params.c | tr -d '"' |
-    grep -vxE 'tracker_impl.h|clutter_density' | sort -u > "$T/fields"
+    grep -vxE 'tracker_internal.h|clutter_density' | sort -u > "$T/fields"
 grep -o '"\][.][a-z0-9_]*"' src/tracker_params.c | sed 's/^"\]/sensor[N]/; s/"$//' | sort -u >> "$T/fields"
 sort -u -o "$T/fields" "$T/fields"
 awk -F' [|] ' '/^[|] `/ { print $7 }' "$doc" | grep -o '`[^`]*`' | tr -d '`' | sort -u > "$T/doc_fields"

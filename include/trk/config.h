@@ -208,6 +208,20 @@
 #error "TRK_WITH_IMM must be 0 or 1 (IMM tracks in the tracker); set -DTRK_WITH_IMM=1"
 #endif
 
+/** The constant-gain (alpha-beta) track filter (trk/tracker.h
+ * trk_tracker_params.filter = TRK_FILTER_ALPHA_BETA; trk/kalman.h
+ * trk_cv_steady_state): the steady-state gains of the CV Kalman filter
+ * instead of its covariance recursion, for a firmware that cannot afford
+ * the recursion per track. 1 compiles it into the scan; 0 (default) leaves
+ * it out (the table's memory is the same either way), and
+ * TRK_FILTER_ALPHA_BETA is then refused (TRK_E_UNSUPPORTED). */
+#ifndef TRK_WITH_ALPHA_BETA
+#define TRK_WITH_ALPHA_BETA 0
+#endif
+#if TRK_WITH_ALPHA_BETA != 0 && TRK_WITH_ALPHA_BETA != 1
+#error "TRK_WITH_ALPHA_BETA must be 0 or 1 (the alpha-beta track filter); set -DTRK_WITH_ALPHA_BETA=1"
+#endif
+
 /** The library's small kernels (the *_impl.h headers of src) are forced
  * inline so that a caller passing constant dimensions (the 2-D CV model) gets
  * fully unrolled code. TRK_SIZE_OPT = 1 leaves the inlining decision to the

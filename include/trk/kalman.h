@@ -57,6 +57,32 @@ TRK_NODISCARD trk_status trk_cv2_predict(trk_real dt_s, trk_real q_m2_per_s3, tr
 TRK_NODISCARD trk_status trk_cv_model(int n_axes, trk_real dt_s, trk_real q_m2_per_s3, trk_real *f,
                                       trk_real *q);
 
+/** The steady state of the CV Kalman filter on one axis, and the
+ * constant-gain (alpha-beta) filter it defines (seed survey ch. 3.1.3,
+ * 3.3.1-3.3.2; docs/conventions.md "Constant-gain filter"): position
+ * measurements of variance r_m2 every dt_s seconds, the continuous
+ * white-noise acceleration model of trk_cv2_predict (spectral density q).
+ * With the tracking index lambda^2 = q dt^3 / r the gains satisfy
+ * beta^2 / (1 - alpha) = lambda^2 and alpha^2 + alpha beta - 2 beta +
+ * beta^2 / 6 = 0 (the survey's Kalata relation 3.5 for this model, whose
+ * last term is beta^2 / 4 for piecewise-constant acceleration); in closed
+ * form u = (lambda + sqrt(16 + lambda^2 / 3)) / 2, s = sqrt(1 - alpha) =
+ * 2 / (u + sqrt(u^2 - 4)), alpha = 1 - s^2, beta = lambda s. */
+struct trk_cv_steady {
+    trk_real alpha;         /**< position gain */
+    trk_real beta;          /**< velocity gain times dt (dimensionless) */
+    trk_real k_vel_per_s;   /**< velocity gain beta / dt (1/s) */
+    trk_real pred[3];       /**< predicted covariance [pp, pv, vv] (m^2, m^2/s, m^2/s^2) */
+    trk_real post[3];       /**< updated covariance [pp, pv, vv] */
+};
+
+/** The steady state above into *ss. TRK_E_ARG NULL ss, dt_s, q or r_m2
+ * not finite and > 0; TRK_E_RANGE a steady state the real type cannot
+ * hold (lambda above 1e15, or so small that alpha rounds to 0, or a
+ * covariance term beyond TRK_REAL_MAX); *ss is then not written. */
+TRK_NODISCARD trk_status trk_cv_steady_state(trk_real dt_s, trk_real q_m2_per_s3, trk_real r_m2,
+                                             struct trk_cv_steady *ss);
+
 /** Two-point differencing (Bar-Shalom, Willett & Tian, "Tracking and Data
  * Fusion" 2011): the CV state from a position z0 (covariance r0, 2 x 2
  * row-major) and a position z1 (r1) dt_s later: x = z1, v = (z1 - z0) / dt,

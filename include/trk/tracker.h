@@ -387,6 +387,16 @@ enum trk_assoc_method {
                            and TRK_WITH_JOINT (config.h) */
 };
 
+/** The filter every track runs (with imm.n_models = 0; an IMM tracker runs
+ * the IMM of its models). */
+enum trk_filter_kind {
+    TRK_FILTER_KALMAN = 0,    /**< the CV Kalman filter (covariance recursion per track) */
+    TRK_FILTER_ALPHA_BETA = 1 /**< the constant-gain filter with the CV Kalman filter's
+                                 steady-state gains per axis for the scan's gap
+                                 (trk_cv_steady_state; needs TRK_WITH_ALPHA_BETA and
+                                 process_noise_q > 0; docs/tracker.md "Track filters") */
+};
+
 /** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */
 struct trk_tracker_params {
     unsigned n_sensors;                               /**< 1 .. TRK_MAX_SENSORS */
@@ -429,6 +439,8 @@ struct trk_tracker_params {
                                                          not gated) or updated; >= 0,
                                                          0 = no bound */
     enum trk_assoc_method association;                /**< per-track PDA or joint (JIPDA) */
+    enum trk_filter_kind filter;                      /**< the track filter: Kalman (default) or
+                                                         alpha-beta */
     trk_real max_coord_m;                             /**< surveillance bound: |x_m|, |y_m| of a
                                                          detection at most this, else counted
                                                          (n_rejected_region) and skipped;

@@ -1,7 +1,7 @@
-/* tracker_imm_impl.h (private) - IMM tracks in the scan (TRK_WITH_IMM,
+/* filter_imm_impl.h (private) - the IMM as a track filter (track_filter_impl.h) (TRK_WITH_IMM,
  * params.imm.n_models >= 1; trk/imm.h, docs/conventions.md "Multiple models (IMM)";
- * docs/library.md "Manoeuvres"). A track's update keeps the stages of a CV track (predict,
- * gate, weights, update, commit, look); at each stage an IMM track does:
+ * docs/library.md "Manoeuvres"). The stages are a CV track's (predict, gate, weights,
+ * update, commit, look); at each an IMM track does:
  *   predict  mixing and each model's prediction (trk_imm_mix,
  *            trk_imm_predict), each model's innovation with the sensor's R,
  *            and their combination with the predicted mode probabilities c_m
@@ -31,15 +31,14 @@
  * another gives that one about 1e-315, whose moments overflow); mu_m itself
  * is left as computed.
  *
- * Included by tracker_update_impl.h only. */
-#ifndef TRK_TRACKER_IMM_IMPL_H
-#define TRK_TRACKER_IMM_IMPL_H
+ * Included by tracker.c's modules only (tracker_internal.h). */
+#ifndef TRK_FILTER_IMM_IMPL_H
+#define TRK_FILTER_IMM_IMPL_H
 
 #include <string.h>
 
-#include "tracker_impl.h"
-
-static int imm_on(const struct trk_tracker *t) { return t->params.imm.n_models > 0; }
+#include "track_gate_impl.h"
+#include "track_pred_impl.h"
 
 /* A new track (x, P set): every model starts there, with equal mode
  * probabilities (as MATLAB trackingIMM's default). */
@@ -256,23 +255,14 @@ static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan,
     return st != TRK_OK ? st : trk_i_spd(NX, pr->p);
 }
 
-/* The survey's manoeuvre statistic (eqs 3.11-3.13) of the update: d2 of
- * the innovation given a detection, sum_i beta_i nu_i / sum_i beta_i (the
- * sum, not 1 - beta0: beta0 near 1 keeps only its rounding), with the
- * prediction's S of the sensor's R; 0 when nothing was gated or every
- * detection's weight is 0. */
-static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn)
+/* The PDA's weights of the track's gated set (its mixture e_i), then the
+ * models' updates with them: *out, beta_i into set->w, the posterior over
+ * pr->x, pr->p (checked). */
+static trk_status imm_pda(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
+                          struct trk_i_pda_set *set, struct trk_i_pda_out *out)
 {
-    trk_real nu[NZ] = {0, 0}, sum = 0;
-    for (size_t i = 0; i < set->n; i++) {
-        sum += set->w[i];
-        nu[ZX] += set->w[i] * (set->z[NZ * i + ZX] - inn->z_pred[ZX]);
-        nu[ZY] += set->w[i] * (set->z[NZ * i + ZY] - inn->z_pred[ZY]);
-    }
-    if (!(sum > 0)) return 0;
-    nu[ZX] /= sum;
-    nu[ZY] /= sum;
-    return trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
+    pda_weights(&t->pda[scan->sensor_id], pr, set, out);
+    return imm_update(t, scan, set, out->beta0, pr);
 }
 
 #endif

@@ -1,0 +1,100 @@
+/* track_commit_impl.h (private) - the end of one track's update, shared
+ * by the per-track and the joint association: the visibility (IPDA
+ * existence) from the PDA's weights, the commit of an accepted update into
+ * the track, and the look: what the scan told the track's tests.
+ *
+ * Included by tracker.c's modules only (tracker_internal.h). */
+#ifndef TRK_TRACK_COMMIT_IMPL_H
+#define TRK_TRACK_COMMIT_IMPL_H
+
+#include "track_filter_impl.h"
+
+/* Kennedy eqs 21-24 with the PDA weights: ln sum_i (g_D,i / rho) l_i =
+ * ln sum_i e_i - ln P_D - ln lambda (e_i = P_D g_D,i l_i; lambda = 0: +inf,
+ * a certain detection). */
+static trk_status update_visibility(const struct trk_tracker *t, const struct trk_pda *pda,
+                                    const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
+                                    struct trk_visibility *vis)
+{
+    trk_real log_sum = trk_i_pda_log_sum_e(out);
+    if (set->n > 0) {
+        /* ln P_D and, for parametric clutter, ln lambda from trk_pda_init's logs */
+        const trk_real log_pd = pda->log_pd_norm + TRK_REAL_C(0.5) * (trk_real)pda->params.nz * TRK_LN_2PI;
+        const trk_real log_lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->log_e0_param - pda->log_miss
+                                                                                 : trk_log(out->lambda);
+        log_sum = out->lambda > 0 ? log_sum - log_pd - log_lambda : (trk_real)INFINITY;
+    }
+    return trk_visibility_update_log(&t->vis_model, vis, pda->params.pd, pda->params.gate_prob, log_sum);
+}
+
+/* The update is accepted: from here on the track changes. The posterior
+ * (pr->x, pr->p), its visibility and beta0 into the track; its gated
+ * detections (cand) start no track. */
+static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+                   const struct trk_i_pda_set *set, const uint16_t *cand, const struct pred *pr,
+                   const struct trk_visibility *vis, trk_real beta0)
+{
+    const uint8_t mark = tr->status == TRK_TRACK_CONFIRMED ? USED_CONFIRMED : USED_NO_START;
+    for (size_t i = 0; i < set->n; i++)
+        if (t->ws.used[cand[i]] < mark) t->ws.used[cand[i]] = mark;
+    for (int i = 0; i < NX; i++) tr->x[i] = pr->x[i];
+    for (int i = 0; i < NX * NX; i++) tr->p[i] = pr->p[i];
+    tr->vis = *vis;
+    tr->beta0_last = beta0;
+    tr->time_us = scan->time_us;
+    tr->n_gated_last = (uint16_t)set->n;
+    filter_commit(t, tr, set, pr);
+}
+
+/* The clutter tests' inputs (Kennedy eqs 5-9, 13-15): the scan's detection
+ * nearest the prediction (smallest d2 with the sensor's S), rho V_g of the
+ * ellipse it encloses, and its amplitude (dB) against the scan's others
+ * (workspace amp_db holds the amplitudes twice over, so the others of entry
+ * k are the n_amp - 1 entries from k + 1). */
+static void clutter_look(const struct trk_tracker *t, const struct trk_innovation *inn, trk_real rho,
+                         struct trk_look *look)
+{
+    trk_real best = TRK_REAL_MAX;
+    size_t jb = 0;
+    for (size_t j = 0; j < t->ws.n_valid; j++) {
+        const trk_real nu[NZ] = {t->ws.x[j] - inn->z_pred[ZX], t->ws.y[j] - inn->z_pred[ZY]};
+        const trk_real d2 = trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
+        if (d2 < best || (d2 == best && t->ws.src[j] < t->ws.src[jb])) { /* ties: the first in scan order */
+            best = d2;
+            jb = j;
+        }
+    }
+    look->has_nearest = 1;
+    look->nearest = jb;
+    look->rho_vg = rho * trk_gate_volume_inn(inn, best);
+    if (t->ws.amp_pos[jb] >= 0) {
+        const size_t k = (size_t)t->ws.amp_pos[jb];
+        look->has_amp = 1;
+        look->a_assoc_db = t->ws.amp_db[k];
+        look->n_others = t->ws.n_amp - 1;
+        look->a_others_db = t->ws.amp_db + k + 1;
+    }
+}
+
+/* What this scan told the track's tests: the one place a look is built
+ * (the M/N test's first look at initiation apart). */
+static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                       const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look)
+{
+    look->detected = tr->n_gated_last > 0;
+    look->sensor_id = scan->sensor_id;
+    look->n_gated = (int)tr->n_gated_last;
+    look->pfa_gate = -trk_expm1(-out->lambda * out->gate_volume);
+    look->beta0 = out->beta0;
+    look->has_nearest = 0;
+    look->nearest = 0;
+    look->rho_vg = 0;
+    look->has_amp = 0;
+    look->a_assoc_db = 0;
+    look->n_others = 0;
+    look->a_others_db = t->ws.amp_db;
+    if (tr->status == TRK_TRACK_TENTATIVE && trk_i_confirm_needs_nearest(&t->params) && t->ws.n_valid > 0)
+        clutter_look(t, inn, t->pda[scan->sensor_id].params.clutter_density, look);
+}
+
+#endif

@@ -1,0 +1,45 @@
+/* track_life_impl.h (private) - one track's life in the table: the end of
+ * a track (why, counted in the report) and the step of its test on a look:
+ * confirmation (or rejection, or the tentative age limit) of a tentative
+ * track, termination of a confirmed one (track_tests.h).
+ *
+ * Included by tracker.c's modules only (tracker_internal.h). */
+#ifndef TRK_TRACK_LIFE_IMPL_H
+#define TRK_TRACK_LIFE_IMPL_H
+
+#include "tracker_internal.h"
+
+/* Track tr ends now, for reason why (shown once in this scan's table,
+ * freed at the next). */
+static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_scan_report *rep)
+{
+    tr->status = TRK_TRACK_TERMINATED;
+    tr->end_reason = (uint8_t)why;
+    rep->n_terminated++;
+    if (why == TRK_END_NUMERICAL) rep->n_numerical++;
+    if (why == TRK_END_MERGED) rep->n_merged++;
+}
+
+/* The track's test on this look and what it decides: confirmation (or
+ * rejection, or the tentative age limit) of a tentative track, termination
+ * of a confirmed one. */
+static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
+                       struct trk_scan_report *rep)
+{
+    if (tr->status == TRK_TRACK_TENTATIVE) {
+        const int d = trk_i_confirm_step(t, tr, look);
+        if (d > 0) {
+            tr->status = TRK_TRACK_CONFIRMED;
+            trk_i_term_start(t, tr);
+            rep->n_confirmed++;
+        } else if (d < 0) {
+            end_track(tr, TRK_END_REJECTED, rep);
+        } else if (t->params.max_tentative_scans && tr->n_scans > t->params.max_tentative_scans) {
+            end_track(tr, TRK_END_TENTATIVE_AGE, rep);
+        }
+    } else if (trk_i_term_step(t, tr, look)) {
+        end_track(tr, TRK_END_TERMINATED, rep);
+    }
+}
+
+#endif

@@ -1,0 +1,71 @@
+/* track_pred_impl.h (private) - one track's prediction as every filter
+ * leaves it for the stages: checked, its view for the PDA and its
+ * innovation with the scan sensor's R (pred_finish); the covariance bound
+ * on it; the PDA's weights for a filter that updates by itself; and the
+ * survey's manoeuvre statistic of an update.
+ *
+ * Included by tracker.c's modules only (tracker_internal.h). */
+#ifndef TRK_TRACK_PRED_IMPL_H
+#define TRK_TRACK_PRED_IMPL_H
+
+#include "tracker_internal.h"
+
+/* Is the position uncertainty of covariance p over the bound
+ * (max_pos_sigma_ratio) of the scan's sensor? */
+static int over_covariance_bound(const struct trk_tracker *t, const trk_real *p, unsigned sensor)
+{
+    const trk_real bound = t->max_pos_var_m2[sensor];
+    return bound > 0 && p[P(X, X)] + p[P(Y, Y)] > bound;
+}
+
+/* The prediction pr->x, pr->p checked, its view for the PDA, and its
+ * innovation. */
+static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
+{
+    const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
+    if (st != TRK_OK) return st;
+    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id],
+                                      pr->x, pr->p, pr->pht, &pr->inn};
+    pr->pp = pp;
+    return trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
+                                &pr->inn);
+}
+
+/* The PDA's association weights alone, for a filter that forms its own
+ * posterior from them (IMM, alpha-beta): the clutter terms into *out, the
+ * gated set's ln e_i (set->w) normalised into beta_i, and beta0 (1 when
+ * nothing was gated). */
+#if TRK_WITH_IMM || TRK_WITH_ALPHA_BETA
+static void pda_weights(const struct trk_pda *pda, const struct pred *pr, struct trk_i_pda_set *set,
+                        struct trk_i_pda_out *out)
+{
+    trk_i_pda_clutter(pda, &pr->pp, set, out);
+    if (set->m_gated > 0) {
+        trk_i_pda_find_w_max(set);
+        out->beta0 = trk_i_pda_normalise(trk_i_pda_log_e0(pda, out->lambda), set->n, set->w, set->w_max, out);
+    }
+}
+#endif
+
+#if TRK_WITH_IMM
+/* The survey's manoeuvre statistic (eqs 3.11-3.13) of the update: d2 of
+ * the innovation given a detection, sum_i beta_i nu_i / sum_i beta_i (the
+ * sum, not 1 - beta0: beta0 near 1 keeps only its rounding), with the
+ * prediction's S of the sensor's R; 0 when nothing was gated or every
+ * detection's weight is 0. */
+static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_innovation *inn)
+{
+    trk_real nu[NZ] = {0, 0}, sum = 0;
+    for (size_t i = 0; i < set->n; i++) {
+        sum += set->w[i];
+        nu[ZX] += set->w[i] * (set->z[NZ * i + ZX] - inn->z_pred[ZX]);
+        nu[ZY] += set->w[i] * (set->z[NZ * i + ZY] - inn->z_pred[ZY]);
+    }
+    if (!(sum > 0)) return 0;
+    nu[ZX] /= sum;
+    nu[ZY] /= sum;
+    return trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
+}
+#endif
+
+#endif

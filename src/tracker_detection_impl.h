@@ -1,0 +1,62 @@
+/* tracker_detection_impl.h (private) - is a scan's detection usable: in
+ * the surveillance bound, finite, its covariance positive definite, its
+ * amplitude valid and (with an amplitude model) its likelihood ratio
+ * l^a; the reasons it is not are counted in the scan report.
+ *
+ * Included by tracker.c's modules only (tracker_internal.h). */
+#ifndef TRK_TRACKER_DETECTION_IMPL_H
+#define TRK_TRACKER_DETECTION_IMPL_H
+
+#include "tracker_internal.h"
+
+/* How the scan's detections are read. */
+struct amp_use {
+    const struct trk_sensor_params *sp;
+    trk_real max_coord_m; /* the surveillance bound (params.max_coord_m) */
+    int want_db;       /* the clutter-amplitude test needs the amplitudes in dB */
+    trk_real ref_db;   /* mean clutter power (dB): the amplitudes' reference */
+};
+
+/* TRK_OK for a usable detection, else why not: TRK_E_NAN non-finite
+ * position or covariance, TRK_E_NOT_SPD covariance, TRK_E_RANGE amplitude
+ * NaN, infinite or negative. */
+static trk_status check_detection(const struct trk_detection *d)
+{
+    trk_real r[NZ * NZ];
+    if (!isfinite(d->x_m) || !isfinite(d->y_m)) return TRK_E_NAN;
+    if (d->has_amplitude && !(d->amplitude >= 0 && d->amplitude <= TRK_REAL_MAX)) return TRK_E_RANGE;
+    return d->has_cov ? trk_i_cov2_unpack(d->cov_m2, r) : TRK_OK;
+}
+
+/* Is detection d usable: 1 with its ln l^a in *llr, else 0 and counted
+ * why not: a finite position outside the surveillance bound, the checks
+ * above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs
+ * 19-20, once per scan), refusing amplitudes below the threshold. */
+static int detection_usable(const struct trk_detection *d, const struct amp_use *au, struct trk_scan_report *rep,
+                            trk_real *llr)
+{
+    if (isfinite(d->x_m) && isfinite(d->y_m) && !(trk_fabs(d->x_m) <= au->max_coord_m && trk_fabs(d->y_m) <= au->max_coord_m)) {
+        rep->n_rejected_region++; /* outside the surveillance bound: no position (trk/tracker.h) */
+        return 0;
+    }
+    trk_status st = check_detection(d);
+    if (st != TRK_OK) {
+        if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
+        else if (st == TRK_E_RANGE) rep->n_rejected_amplitude++;
+        else rep->n_rejected_cov++;
+        return 0;
+    }
+    *llr = 0; /* positions only: l^a = 1 */
+    if (au->sp->use_amplitude && d->has_amplitude) {
+        st = trk_amplitude_log_lr(&au->sp->amplitude, d->amplitude, llr);
+        /* TRK_E_RANGE at or above the threshold: ln l^a beyond the real type (a Rayleigh
+         * amplitude above ~1e154 sqrt(P)), a bad amplitude, not one below the threshold */
+        if (st == TRK_E_RANGE && d->amplitude < trk_amplitude_threshold(&au->sp->amplitude))
+            rep->n_below_threshold++;
+        else if (st != TRK_OK) rep->n_rejected_amplitude++;
+        if (st != TRK_OK) return 0;
+    }
+    return 1;
+}
+
+#endif

@@ -1,0 +1,111 @@
+/* tracker_internal.h (private) - the bottom of the tracker: what every
+ * module of the scan shares (the short names of the state and measurement,
+ * the packed covariance, one track's prediction, the detections' marks) and
+ * the parameter check's interface. It includes nothing of the tracker.
+ *
+ * The scan is one translation unit, tracker.c, built from modules that each
+ * include only what is below them (docs/architecture.md "The scan's
+ * modules"), bottom up:
+ *   tracker_internal.h      this file
+ *   tracker_index_impl.h    the 2-D index order and a small sort
+ *   track_pred_impl.h       a prediction's view for the PDA, the covariance bound
+ *   track_gate_impl.h       gating one Gaussian prediction into a gated set
+ *   filter_cv_impl.h        the CV Kalman filter        } the track filters,
+ *   filter_imm_impl.h       the IMM (TRK_WITH_IMM)      } one interface:
+ *   filter_ab_impl.h        the alpha-beta filter       } track_filter_impl.h
+ *   track_filter_impl.h     the interface: the one place a model is chosen
+ *   track_commit_impl.h     an accepted update into the track, its look
+ *   track_life_impl.h       confirmation and termination of one track
+ *   tracker_detection_impl.h  is a detection usable
+ *   the stages: tracker_load_impl.h (with tracker_thin_impl.h),
+ *     tracker_update_impl.h, tracker_joint_impl.h, tracker_merge_impl.h,
+ *     tracker_initiate_impl.h
+ *   tracker.c               the scan as the list of its stages
+ * tracker_params.c (parameters: defaults, the check naming the field) is a
+ * translation unit of its own on this file.
+ * The tracker's state is the CV model's [x, vx, y, vy] (TRK_CV2_*) whatever
+ * the filter; measurements are positions [x, y]. */
+#ifndef TRK_TRACKER_INTERNAL_H
+#define TRK_TRACKER_INTERNAL_H
+
+#include "pda_impl.h"
+#include "track_tests.h"
+#include "trk/tracker.h"
+
+/* Short names in the tracker's files: the CV state [x, vx, y, vy], its
+ * measurement [x, y], and the row-major indices of P (4 x 4) and S, R (2 x 2). */
+#define NX TRK_CV2_NX
+#define NZ TRK_CV2_NZ
+#define X TRK_CV2_X
+#define VX TRK_CV2_VX
+#define Y TRK_CV2_Y
+#define VY TRK_CV2_VY
+#define ZX TRK_CV2_ZX
+#define ZY TRK_CV2_ZY
+#define P(i, j) TRK_CV2_P(i, j)
+#define S(i, j) TRK_CV2_S(i, j)
+
+/* A packed covariance [xx, xy, yy] (TRK_COV2_*) as the 2x2 matrix r
+ * (TRK_CV2_S), unchecked: for one trk_i_cov2_unpack accepted before (a
+ * detection loaded, a candidate stored). The one place of the layout. */
+TRK_INLINE void trk_i_cov2_matrix(const trk_real c[3], trk_real r[NZ * NZ])
+{
+    r[S(ZX, ZX)] = c[TRK_COV2_XX];
+    r[S(ZX, ZY)] = r[S(ZY, ZX)] = c[TRK_COV2_XY];
+    r[S(ZY, ZY)] = c[TRK_COV2_YY];
+}
+
+/* The same, checked: TRK_E_NAN non-finite, TRK_E_NOT_SPD not positive
+ * definite or too ill-conditioned for the arithmetic (TRK_COV2_MIN_REL_DET,
+ * trk/tracker.h; xx yy must not overflow): r is then not written. */
+TRK_INLINE trk_status trk_i_cov2_unpack(const trk_real c[3], trk_real r[NZ * NZ])
+{
+    const trk_real xx = c[TRK_COV2_XX], xy = c[TRK_COV2_XY], yy = c[TRK_COV2_YY];
+    if (!isfinite(xx) || !isfinite(xy) || !isfinite(yy)) return TRK_E_NAN;
+    const trk_real xxyy = xx * yy;
+    if (!(xx > 0 && yy > 0 && xxyy <= TRK_REAL_MAX && xxyy - xy * xy > TRK_COV2_MIN_REL_DET * xxyy))
+        return TRK_E_NOT_SPD;
+    trk_i_cov2_matrix(c, r);
+    return TRK_OK;
+}
+
+/* One track's prediction for this scan, and the same as the PDA takes it
+ * (pp points into this struct: it is filled in place and never copied). */
+struct pred {
+    trk_real x[NX], p[NX * NX], pht[NX * NZ];
+    struct trk_innovation inn;
+    struct trk_i_pda_pred pp;
+#if TRK_WITH_ALPHA_BETA
+    struct trk_cv_steady ab[2]; /* the alpha-beta filter's steady state per axis (x, y) */
+#endif
+};
+
+/* Workspace marks (ws.used) of a detection: no track gated it, a
+ * tentative track did or it fell in a confirmed track's exclusion zone (it
+ * starts no track), or a confirmed track gated it (no tentative track may
+ * use it either). */
+enum { USED_NONE = 0, USED_NO_START = 1, USED_CONFIRMED = 2 };
+
+TRK_INLINE int is_live(const struct trk_track *tr)
+{
+    return tr->status == TRK_TRACK_TENTATIVE || tr->status == TRK_TRACK_CONFIRMED;
+}
+
+/* What the parameter check builds on its way, for trk_tracker_init to
+ * keep: the caller's storage, since the layout of the test models depends on
+ * TRK_WITH_CLUTTER_TESTS and tracker.c may be built in the other
+ * configuration (tests/test_tracker_noclutter.mk); the check only passes the
+ * model pointers on to trk_i_tests_init. */
+struct trk_i_tracker_built {
+    struct trk_pda *pda;                     /* [TRK_MAX_SENSORS] */
+    trk_real (*r)[NZ * NZ];                  /* [TRK_MAX_SENSORS] */
+    struct trk_visibility_model *vis;
+    union trk_confirm_model *confirm;
+    union trk_term_model *term;
+};
+
+/* trk_tracker_check_params, building into *b (tracker_params.c). */
+trk_status trk_i_tracker_check(const struct trk_tracker_params *p, const char **field,
+                               const struct trk_i_tracker_built *b);
+
+#endif

@@ -1,0 +1,108 @@
+/* tracker_load_impl.h (private) - stage 2 of the scan: the scan's usable
+ * detections into the workspace (the most useful TRK_MAX_DETECTIONS of a
+ * scan beyond capacity, tracker_thin_impl.h), those with the sensor's
+ * covariance in gating's 2-D index, the amplitudes the clutter tests read.
+ *
+ * Included by tracker.c only (tracker_internal.h). */
+#ifndef TRK_TRACKER_LOAD_IMPL_H
+#define TRK_TRACKER_LOAD_IMPL_H
+
+#include "tracker_detection_impl.h"
+#include "tracker_index_impl.h"
+#include "tracker_thin_impl.h"
+
+static void order_by_grid(struct trk_tracker *t);
+
+/* Take scan detection i into the workspace, or count why not
+ * (detection_usable). */
+static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, size_t i,
+                           const struct amp_use *au, struct trk_scan_report *rep)
+{
+    const struct trk_detection *d = &scan->detections[i];
+    trk_real llr;
+    if (!detection_usable(d, au, rep, &llr)) return;
+    const size_t n = t->ws.n_valid++;
+    t->ws.x[n] = d->x_m;
+    t->ws.y[n] = d->y_m;
+    t->ws.src[n] = (uint16_t)i;
+    t->ws.used[n] = 0;
+    t->ws.log_lr[n] = llr;
+    t->ws.amp_pos[n] = -1;
+    if (au->want_db && d->has_amplitude && d->amplitude > 0) {
+        t->ws.amp_db[t->ws.n_amp] = TRK_REAL_C(20.0) * trk_log10(d->amplitude) - au->ref_db;
+        t->ws.amp_pos[n] = (int16_t)t->ws.n_amp++;
+    }
+}
+
+/* The valid detections into the workspace: those with the sensor's
+ * covariance first [0, n_shared), in gating's 2-D index (ws.grid,
+ * src/grid_impl.h), own-covariance ones after, in scan
+ * order; rejections are counted. A scan beyond capacity loads the ones
+ * thin_select kept (their scan indices, ascending, in ws.cand), the model
+ * of what it kept into *th. The amplitudes (dB) are then doubled (see
+ * clutter_look in track_commit_impl.h). */
+static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk_scan *scan, struct thin *th,
+                            struct trk_scan_report *rep)
+{
+    const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
+    const struct amp_use au = {
+        sp, t->params.max_coord_m, t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP, /* the dB values' only user */
+        TRK_REAL_C(10.0) * trk_log10(sp->use_amplitude ? sp->amplitude.clutter_power : 1)};
+    const int over = scan->n_detections > TRK_MAX_DETECTIONS;
+    const size_t n_load = over ? thin_select(t, scan, &au, th, rep) : scan->n_detections;
+    t->ws.n_valid = 0;
+    t->ws.n_amp = 0;
+    for (int own = 0; own <= 1; own++) {
+        for (size_t k = 0; k < n_load; k++) {
+            const size_t i = over ? t->ws.cand[k] : k;
+            if ((scan->detections[i].has_cov != 0) == own) load_detection(t, scan, i, &au, rep);
+        }
+        if (!own) t->ws.n_shared = t->ws.n_valid;
+    }
+    rep->n_kept = (uint32_t)t->ws.n_valid;
+    order_by_grid(t);
+    for (size_t k = 0; k + 1 < t->ws.n_amp; k++) t->ws.amp_db[t->ws.n_amp + k] = t->ws.amp_db[k];
+}
+
+/* Workspace detection k moved to j (its amplitude stays where amp_pos
+ * says). */
+static void ws_move(struct trk_tracker *t, size_t j, size_t k)
+{
+    t->ws.x[j] = t->ws.x[k];
+    t->ws.y[j] = t->ws.y[k];
+    t->ws.src[j] = t->ws.src[k];
+    t->ws.log_lr[j] = t->ws.log_lr[k];
+    t->ws.amp_pos[j] = t->ws.amp_pos[k];
+}
+
+/* The shared-covariance group [0, n_shared) in gating's 2-D index, once
+ * per scan (ws.grid, grid_order: O(n) for spread positions): position j
+ * takes detection idx[j], cycle by cycle in place, with used[] (all 0 at
+ * load) marking the positions filled. */
+static void order_by_grid(struct trk_tracker *t)
+{
+    const size_t n = t->ws.n_shared;
+    uint16_t *idx = t->ws.cand; /* free until the first track is gated */
+    for (size_t j = 0; j < n; j++) idx[j] = (uint16_t)j;
+    grid_order(t, t->ws.x, t->ws.y, idx, n, &t->ws.grid, t->ws.cell_end);
+    for (size_t i = 0; i < n; i++) {
+        if (t->ws.used[i] || idx[i] == i) continue;
+        const trk_real x = t->ws.x[i], y = t->ws.y[i], llr = t->ws.log_lr[i];
+        const uint16_t src = t->ws.src[i];
+        const int16_t amp = t->ws.amp_pos[i];
+        size_t j = i;
+        for (size_t k = idx[j]; k != i; j = k, k = idx[j]) {
+            ws_move(t, j, k);
+            t->ws.used[j] = 1;
+        }
+        t->ws.x[j] = x;
+        t->ws.y[j] = y;
+        t->ws.src[j] = src;
+        t->ws.log_lr[j] = llr;
+        t->ws.amp_pos[j] = amp;
+        t->ws.used[j] = 1;
+    }
+    for (size_t j = 0; j < n; j++) t->ws.used[j] = 0;
+}
+
+#endif
