@@ -127,7 +127,7 @@ static void joint_set(struct trk_tracker *t, const struct trk_scan *scan, size_t
 
 /* Step 3 for joint track k (slot tr): as track_update, with the joint
  * weights. 0, or -1 on a numerical failure (tr untouched). */
-static int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t k,
+static TRK_NOINLINE int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t k,
                               struct trk_look *look)
 {
     const struct trk_pda *pda = &t->pda[scan->sensor_id];
