@@ -93,6 +93,7 @@ static const struct layout_row params_rows[] = {
     REAL(P, max_pos_sigma_ratio, 1, "", ">= 0 (0: no bound)"),
     REAL(P, max_coord_m, 1, "m", "(0, 1e15]"),
     ENUM(P, association, "ASSOC_PDA, ASSOC_JOINT (TRK_WITH_JOINT)"),
+    ENUM(P, filter, "FILTER_KALMAN, FILTER_ALPHA_BETA (TRK_WITH_ALPHA_BETA)"),
 #if TRK_WITH_IMM
     ROW(P, imm, 's', struct trk_imm_params, 1, "imm_params", "", "n_models 0: CV only"),
 #endif
@@ -276,6 +277,7 @@ static const struct layout_const constants[] = {
     K(TRK_CONFIRM_VISIBILITY), K(TRK_CONFIRM_EXISTENCE),
     K(TRK_TERM_KN), K(TRK_TERM_PAGE), K(TRK_TERM_SHIRYAEV), K(TRK_TERM_VISIBILITY), K(TRK_TERM_EXISTENCE),
     K(TRK_INIT_SINGLE_POINT), K(TRK_INIT_TWO_POINT), K(TRK_ASSOC_PDA), K(TRK_ASSOC_JOINT),
+    K(TRK_FILTER_KALMAN), K(TRK_FILTER_ALPHA_BETA),
     K(TRK_MN_FIXED), K(TRK_MN_SLIDING), K(TRK_SPRT_FIXED_PD), K(TRK_SPRT_HMM),
     K(TRK_EVENTS_COMPLETE), K(TRK_EVENTS_PAPER), K(TRK_AMP_RAYLEIGH), K(TRK_AMP_K),
     K(TRK_TRACK_FREE), K(TRK_TRACK_TENTATIVE), K(TRK_TRACK_CONFIRMED), K(TRK_TRACK_TERMINATED),

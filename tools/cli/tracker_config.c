@@ -223,6 +223,7 @@ static const char *const CONFIRM_NAMES[] = {"mn", "sprt", "clutter_density", "cl
 static const char *const TERM_NAMES[] = {"kn", "page", "shiryaev", "visibility", "existence", NULL};
 static const char *const INIT_NAMES[] = {"single_point", "two_point", NULL}; /* enum trk_init_method */
 static const char *const ASSOC_NAMES[] = {"pda", "joint", NULL};               /* enum trk_assoc_method */
+static const char *const FILTER_NAMES[] = {"kalman", "alpha_beta", NULL};      /* enum trk_filter_kind */
 static const char *const SPRT_MODEL_NAMES[] = {"fixed_pd", "hmm", NULL};
 static const char *const EVENTS_NAMES[] = {"complete", "paper", NULL}; /* enum trk_event_model */
 static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
@@ -232,7 +233,7 @@ static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
  * tcfg_write. */
 static const char *const KEYS[] = {
     "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
-    "max_tentative_scans", "merge_gate_d2", "init_exclusion_d2", "association", "init.method",
+    "max_tentative_scans", "merge_gate_d2", "init_exclusion_d2", "association", "filter", "init.method",
     "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "max_pos_sigma_ratio",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
     "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
@@ -377,6 +378,11 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "association") == 0) {
         if (get_name(v, ASSOC_NAMES, &e, err, n) != 0) return -1;
         p->association = e ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA;
+        return 0;
+    }
+    if (strcmp(key, "filter") == 0) {
+        if (get_name(v, FILTER_NAMES, &e, err, n) != 0) return -1;
+        p->filter = e ? TRK_FILTER_ALPHA_BETA : TRK_FILTER_KALMAN;
         return 0;
     }
     /* initiation and the covariance bound */
@@ -654,6 +660,9 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
         const char *hint = strcmp(f, "association") == 0 && st == TRK_E_UNSUPPORTED
                                ? " (association = joint needs clutter = parametric and every sensor's "
                                  "clutter_density_per_m2 > 0; or set association = pda)"
+                           : strcmp(f, "filter") == 0 && st == TRK_E_UNSUPPORTED
+                               ? " (filter = alpha_beta needs a libtrk built with TRK_WITH_ALPHA_BETA=1, "
+                                 "process_noise_q > 0 and no IMM)"
                                : "";
         snprintf(err, n, "%s: refused by the tracker (%s): %s%s", key, f, ERRMSG_STATUS(st), hint);
     }
@@ -796,6 +805,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "merge_gate_d2", (double)p->merge_gate_d2);
     put_num(f, "init_exclusion_d2", (double)p->init_exclusion_d2);
     fprintf(f, "association = %s\n", ASSOC_NAMES[p->association == TRK_ASSOC_JOINT]);
+    fprintf(f, "filter = %s\n", FILTER_NAMES[p->filter == TRK_FILTER_ALPHA_BETA]);
     fprintf(f, "init.method = %s\n", INIT_NAMES[p->init.method == TRK_INIT_TWO_POINT]);
     put_num(f, "init.max_speed_mps", (double)p->init.max_speed_mps);
     fprintf(f, "init.max_gap_scans = %lu\n", (unsigned long)p->init.max_gap_scans);
@@ -880,6 +890,7 @@ void tcfg_help(FILE *f)
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
             "  association = pda|joint           per-track PDA, or joint association (JPDA / JIPDA) (joint)\n"
+            "  filter = kalman|alpha_beta        track filter: CV Kalman, or constant gains (TRK_WITH_ALPHA_BETA builds) (kalman)\n"
             "  init.method = two_point|single_point   how tracks start (two_point)\n"
             "    init.max_speed_mps               two-point velocity gate, > 0 (15)\n"
             "    init.max_gap_scans               candidate lifetime in scans, >= 1 (2)\n"
