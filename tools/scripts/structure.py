@@ -52,6 +52,13 @@ def strip(text):
     return lines
 
 
+def flat(text):
+    """Braced blocks out, the innermost first."""
+    while re.search(r"\{[^{}]*\}", text):
+        text = re.sub(r"\{[^{}]*\}", " ", text)
+    return text
+
+
 class Source:
     """One file: its includes, what it defines (and on which line), the names it uses."""
 
@@ -133,9 +140,7 @@ class Source:
 
     def statement(self, text, body, line):
         """A top-level statement up to its function body (body) or its `;`."""
-        while re.search(r"\{[^{}]*\}", text):
-            text = re.sub(r"\{[^{}]*\}", " ", text)
-        text = text.strip()
+        text = flat(text).strip()
         storage = "static" if re.match(r"(\w+\s+)*static\b", text) else "extern"
         if text.startswith("typedef"):
             m = re.search(r"\(\s*\*\s*(\w+)\s*\)", text) or \
@@ -184,10 +189,7 @@ class Source:
             while depth and i < len(code):
                 depth += {"{": 1, "}": -1}.get(code[i], 0)
                 i += 1
-            body = code[m.end():i - 1]
-            while re.search(r"\{[^{}]*\}", body):
-                body = re.sub(r"\{[^{}]*\}", " ", body)
-            for member in body.split(";"):
+            for member in flat(code[m.end():i - 1]).split(";"):
                 if re.search(r"\(\s*\*\s*\w+\s*\)\s*\(", member):
                     self.unuse_params(member)
                     continue
@@ -197,39 +199,20 @@ class Source:
                         self.unuse(name.group(1))
 
 
-def main(argv):
-    args, check, dot = [], False, None
-    it = iter(argv)
-    for a in it:
-        if a == "--check":
-            check = True
-        elif a == "--dot":
-            dot = next(it, None)
-        elif a.startswith("-"):
-            sys.exit(__doc__)
-        else:
-            args.append(a)
-    root = args[0] if args else "."
+def build(root):
+    """The files, their nodes, and the edges (node A, node B) -> (file of A, what, file of B)."""
     paths = []
     for top in ("src", "include", "tools"):
-        for d, dirs, files in os.walk(os.path.join(root, top)):
+        for d, dirs, names in os.walk(os.path.join(root, top)):
             dirs.sort()
-            paths += [os.path.relpath(os.path.join(d, f), root) for f in sorted(files)
+            paths += [os.path.relpath(os.path.join(d, f), root) for f in sorted(names)
                       if f.endswith((".c", ".h"))]
     files = {p: Source(root, p) for p in paths}
-
-    # one node: foo.c + foo.h of a folder; src/**/NAME.c + include/trk/NAME.h
-    node = {p: p[:-2] for p in paths}
+    node = {p: p[:-2] for p in paths}  # foo.c + foo.h; src/**/NAME.c + include/trk/NAME.h
     for p in paths:
-        if p.startswith("src/") and p.endswith(".c"):
-            h = "include/trk/" + os.path.basename(p)[:-2] + ".h"
-            if h in files:
-                node[h] = p[:-2]
-    members = {}
-    for p in paths:
-        members.setdefault(node[p], []).append(p)
-    label = {n: " + ".join(sorted(fs, key=lambda f: (not f.endswith(".c"), f)))
-             for n, fs in members.items()}
+        h = "include/trk/" + os.path.basename(p)[:-2] + ".h"
+        if p.startswith("src/") and p.endswith(".c") and h in files:
+            node[h] = p[:-2]
 
     def resolve(frm, inc):
         dirs = INC_SRC if frm.startswith(("src/", "include/")) else INC_TOOLS
@@ -239,11 +222,9 @@ def main(argv):
                 return p
         return None
 
-    # translation units: every .c file and what it includes, each file with
-    # the line of the root's #include it came in by
-    def closure(start):
-        seen = {start: 1 << 30}
-        stack = [(start, None)]
+    def unit(start):
+        """A translation unit: each file with the root's #include line it came by."""
+        seen, stack = {start: 1 << 30}, [(start, None)]
         while stack:
             p, entry = stack.pop()
             for line, inc in reversed(files[p].includes):
@@ -252,47 +233,34 @@ def main(argv):
                     seen[q] = entry or line
                     stack.append((q, entry or line))
         return seen
-    units = {p: closure(p) for p in paths if p.endswith(".c")}
+    units = {p: unit(p) for p in paths if p.endswith(".c")}
     unit_of = {}
-    for c, unit in units.items():
-        for p in unit:
+    for c, u in units.items():
+        for p in u:
             unit_of.setdefault(p, []).append(c)
     for p in paths:                  # a header no .c includes: a unit of its own
         if p not in unit_of:
-            units[p] = closure(p)
-            unit_of[p] = [p]
-
+            units[p], unit_of[p] = unit(p), [p]
     externs = {}
     for p, f in files.items():
-        if p.endswith(".c"):
-            for name, kind in f.defs.items():
-                if kind == "extern" and name != "main":
-                    externs.setdefault(name, []).append(p)
+        for name, kind in f.defs.items():
+            if p.endswith(".c") and kind == "extern" and name != "main":
+                externs.setdefault(name, []).append(p)
 
-    def folder(p):
-        return os.path.dirname(p)
-
-    def is_tool(p):
-        return p.startswith("tools/") and folder(p) not in LIB_DIRS
-
-    def link_pick(user, defs):
-        """The one extern definition a user's link sees."""
+    def link(user, defs):
+        """The extern definitions a user's link sees: its folder's, else the layers'."""
         own = [d for d in defs if folder(d) == folder(user)]
-        lib = [d for d in defs if not is_tool(d)]
-        return own or lib or defs
+        return own or [d for d in defs if not is_tool(d)] or defs
 
-    edges = {}                       # (node A, node B) -> reason
+    edges = {}
 
     def add(a, b, why):
-        na, nb = node[a], node[b]
-        if na != nb:
-            edges.setdefault((na, nb), f"{a}: {why}" + (f" ({b})" if b != members[nb][0] else ""))
-
+        if node[a] != node[b]:
+            edges.setdefault((node[a], node[b]), (a, why, b))
     for p, f in files.items():
         for _, inc in f.includes:
-            q = resolve(p, inc)
-            if q:
-                add(p, q, f'#include "{inc}"')
+            if resolve(p, inc):
+                add(p, resolve(p, inc), f'#include "{inc}"')
         visible = {}
         for c in unit_of[p]:         # the root's own definitions only above the include
             for q in units[c]:
@@ -304,104 +272,113 @@ def main(argv):
                 continue
             if name in visible:
                 add(p, visible[name], name)
-            elif name in externs:
-                for q in link_pick(p, externs[name]):
-                    add(p, q, name)
+            for q in link(p, externs[name]) if name not in visible and name in externs else []:
+                add(p, q, name)
         for name in f.protos - set(f.defs):  # a layer declaring a tool's function
             for q in externs.get(name, []):
                 if is_tool(q) and folder(q) != folder(p):
-                    add(p, q, f"declares {name}")
+                    add(p, q, "declares " + name)
+    return paths, node, externs, edges
 
-    dups = {n: ps for n, ps in externs.items() if len({folder(p) for p in ps}) < len(ps)
-            or len(ps) > 1 and not any(is_tool(p) for p in ps)}
+
+def folder(p):
+    return os.path.dirname(p)
+
+
+def is_tool(p):
+    return p.startswith("tools/") and folder(p) not in LIB_DIRS
+
+
+def tarjan(nodes, out):
+    """Strongly connected components, each after the components it reaches."""
+    index, low, stack, result = {}, {}, [], []
+
+    def visit(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in out[v]:
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = stack[stack.index(v):]
+            del stack[stack.index(v):]
+            result.append(comp)
+    sys.setrecursionlimit(10000)
+    for v in nodes:
+        if v not in index:
+            visit(v)
+    return result
+
+
+def main(argv):
+    check = "--check" in argv
+    dot = argv[argv.index("--dot") + 1] if "--dot" in argv[:-1] else None
+    rest = [a for i, a in enumerate(argv) if not a.startswith("-") and (i == 0 or argv[i - 1] != "--dot")]
+    if any(a.startswith("-") and a not in ("--check", "--dot") for a in argv) or len(rest) > 1:
+        sys.exit(__doc__)
+    paths, node, externs, edges = build(rest[0] if rest else ".")
+    members = {}
+    for p in paths:
+        members.setdefault(node[p], []).append(p)
+    label = {n: " + ".join(sorted(fs, key=lambda f: (not f.endswith(".c"), f))) for n, fs in members.items()}
     nodes = sorted(members)
     out = {n: sorted(b for (a, b) in edges if a == n) for n in nodes}
     sccs = tarjan(nodes, out)
     comp = {n: i for i, s in enumerate(sccs) for n in s}
     circles = [sorted(s) for s in sccs if len(s) > 1]
-
-    level = {}
-    for s in sccs:                   # Tarjan emits a component after all it uses
-        lv = max([level[comp[m]] + 1 for n in s for m in out[n] if comp[m] != comp[n]] or [0])
-        level[comp[s[0]]] = lv
     if dot:
         write_dot(dot, nodes, edges, comp, circles)
     if not check:
+        level = {}                   # a component after everything it uses
+        for i, s in enumerate(sccs):
+            level[i] = max([level[comp[m]] + 1 for n in s for m in out[n] if comp[m] != i] or [0])
         for lv in sorted(set(level.values())):
             print(f"== layer {lv}")
             for n in nodes:
                 if level[comp[n]] == lv:
-                    print(f"{label[n]}\n    uses: " + (", ".join(out[n]) or "-"))
-    for name, ps in sorted(dups.items()):
-        print(f"warning: {name} defined extern in more than one file of a link: {', '.join(ps)}")
+                    print(f"{label[n]}\n    uses: " + (", ".join(label[m].split(" + ")[0] for m in out[n]) or "-"))
+    names = {}
+    for p in paths:
+        names.setdefault(os.path.basename(p), []).append(p)
+    for ps in [ps for n, ps in sorted(names.items()) if n != "main.c"] + list(externs.values()):
+        if len(ps) > 1:              # two files of one name, a function defined twice
+            print(f"warning: namesakes {', '.join(ps)}")
     skip_src = os.environ.get("STRUCTURE_SKIP_SRC") == "1"
     failing = 0
     for s in circles:
-        src_only = all(n.startswith(("src/", "include/")) for n in s)
-        note = " (src/ only, not failing: STRUCTURE_SKIP_SRC=1)" if src_only and skip_src else ""
-        failing += not note
-        print(f"\ncircle of {len(s)} nodes{note}:")
+        skipped = skip_src and all(n.startswith(("src/", "include/")) for n in s)
+        failing += not skipped
+        print(f"\ncircle of {len(s)} nodes" + (" (src/: STRUCTURE_SKIP_SRC=1, not failing)" if skipped else "") + ":")
         for n in s:
             print(f"  {label[n]}")
         for a in s:
             for b in out[a]:
                 if b in s:
-                    print(f"    {a} -> {b}: {edges[(a, b)]}")
+                    fa, why, fb = edges[(a, b)]
+                    print(f"    {fa} -> {fb}: {why}")
     print(f"\nstructure: {len(nodes)} nodes, {len(edges)} edges, {len(circles)} circle(s)"
-          + (f", {len(circles) - failing} skipped" if skip_src else ""))
+          + (f" ({len(circles) - failing} in src/ only, not failing)" if skip_src else ""))
     return 1 if check and failing else 0
-
-
-def tarjan(nodes, out):
-    """Strongly connected components, each after the components it reaches."""
-    index, low, stack, on, result = {}, {}, [], set(), []
-    for start in nodes:
-        if start in index:
-            continue
-        work = [(start, 0)]
-        while work:
-            v, i = work.pop()
-            if i == 0:
-                index[v] = low[v] = len(index)
-                stack.append(v)
-                on.add(v)
-            for j in range(i, len(out[v])):
-                w = out[v][j]
-                if w not in index:
-                    work += [(v, j + 1), (w, 0)]
-                    break
-                if w in on:
-                    low[v] = min(low[v], index[w])
-            else:
-                if low[v] == index[v]:
-                    comp = []
-                    while True:
-                        w = stack.pop()
-                        on.discard(w)
-                        comp.append(w)
-                        if w == v:
-                            break
-                    result.append(comp)
-                if work:
-                    u = work[-1][0]
-                    low[u] = min(low[u], low[v])
-    return result
 
 
 def write_dot(path, nodes, edges, comp, circles):
     in_circle = {n for s in circles for n in s}
     with open(path, "w") as f:
         f.write("digraph structure {\n  rankdir=LR;\n  node [shape=box, fontsize=10];\n")
-        for i, d in enumerate(sorted({os.path.dirname(n) for n in nodes})):
+        for i, d in enumerate(sorted({folder(n) for n in nodes})):
             f.write(f'  subgraph cluster_{i} {{\n    label="{d}/";\n')
             for n in nodes:
-                if os.path.dirname(n) == d:
-                    color = ", color=red" if n in in_circle else ""
-                    f.write(f'    "{n}" [label="{os.path.basename(n)}"{color}];\n')
+                if folder(n) == d:
+                    red = ", color=red" if n in in_circle else ""
+                    f.write(f'    "{n}" [label="{os.path.basename(n)}"{red}];\n')
             f.write("  }\n")
-        for (a, b) in sorted(edges):
-            red = ', color=red' if comp[a] == comp[b] else ""
-            f.write(f'  "{a}" -> "{b}" [tooltip="{edges[(a, b)]}"{red}];\n')
+        for (a, b), (fa, why, fb) in sorted(edges.items()):
+            red = ", color=red" if comp[a] == comp[b] else ""
+            tip = f"{fa} -> {fb}: {why}".replace('"', '\\"')
+            f.write(f'  "{a}" -> "{b}" [tooltip="{tip}"{red}];\n')
         f.write("}\n")
 
 
