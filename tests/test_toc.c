@@ -1,10 +1,10 @@
-/* test_toc.c - TOC curves and optimum of the tools (tools/sim/toc.h) on
+/* test_toc.c - TOC curves and optimum of the tools (tools/sim/toc_curve.h) on
  * small q2 tables from the generator: statuses, the optimum against the
  * curve, the library's MRE at the optimum, tables of the wrong kind, gate or
  * model refused, bad scenarios refused. */
 #include "trk_test.h"
 #include "q2_table.h"
-#include "toc.h"
+#include "toc_curve.h"
 #include "trk/amplitude.h"
 #include "trk/mre.h"
 #include "trk/q2.h"

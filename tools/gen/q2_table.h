@@ -1,5 +1,5 @@
 /* q2_table.h - q2 tables (trk/q2.h "Q2 TABLE") computed by the importance
- * sampler (q2_is.h) for trk-tablegen q2, the TOC (toc.h), tests and
+ * sampler (q2_is.h) for trk-tablegen q2, the TOC (toc_curve.h), tests and
  * benchmarks.
  *
  * PDAF:   one line of the sampler over all (pd, lambda_vg) cells (common

@@ -65,14 +65,4 @@ struct replay_stats {
 int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_input,
                   volatile sig_atomic_t *stop, struct replay_stats *st, char *err, size_t errlen);
 
-/* ------------------------------------------------------------------ summary */
-
-/* Summarise a log written by the bridge (or any log with its channels):
- * events per channel, track lists, confirmed track ids, the last status,
- * and, when truth lists (track_list_t on truth_channel, as trk-sonar-sim
- * writes them) are present, how well confirmed tracks follow the targets.
- * 0, or -1 when the log cannot be read. */
-int bridge_summarize(const char *path, const struct bridge_opts *o, const char *truth_channel,
-                     FILE *f);
-
 #endif

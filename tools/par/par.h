@@ -138,16 +138,10 @@ struct par_batch {
  *     PAR_TOOL_MAIN(accessor, run, prog)
  * defines `struct par *accessor(void)` (this process's par: NULL in the
  * single-process build) and main, which runs `int run(int argc, char
- * **argv)`: as it is in the single-process build, through par_mpi_main
- * (tools/par/mpi/par_mpi.h: on every rank, the checkpoint removed after
- * success) with -DTRK_TOOL_MPI. */
-int par_mpi_main(struct par *p, int argc, char **argv, const char *prog, int (*run)(int argc, char **argv));
-#ifdef TRK_TOOL_MPI
-#define PAR_TOOL_MAIN(accessor, run, prog)                                                   \
-    static struct par accessor##_rank;                                                       \
-    struct par *accessor(void) { return &accessor##_rank; }                                  \
-    int main(int argc, char **argv) { return par_mpi_main(&accessor##_rank, argc, argv, prog, run); }
-#else
+ * **argv)`. With -DTRK_TOOL_MPI the tool includes tools/par/mpi/par_mpi.h
+ * too, whose PAR_TOOL_MAIN runs it through par_mpi_main (on every rank, the
+ * checkpoint removed after success): par knows nothing of its MPI layer. */
+#ifndef TRK_TOOL_MPI
 #define PAR_TOOL_MAIN(accessor, run, prog)       \
     struct par *accessor(void) { return NULL; } \
     int main(int argc, char **argv) { return run(argc, argv); }

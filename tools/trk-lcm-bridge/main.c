@@ -18,6 +18,7 @@
 #include "cli.h"
 #include "kvfile.h"
 #include "suggest.h"
+#include "summary.h"
 #include "tracker_config.h"
 #include "transport.h"
 

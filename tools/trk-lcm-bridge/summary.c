@@ -1,4 +1,6 @@
-/* summary.c - trk-lcm-bridge --summarize LOG (transport.h). */
+/* summary.c - trk-lcm-bridge --summarize LOG (summary.h). */
+#include "summary.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>

@@ -25,7 +25,7 @@
  * density normalised by all samples (those beyond the range counted as
  * overflow), so it integrates to the fraction inside the range.
  *
- * Prediction: the MRE of brekke-toc (sim_brekke_toc, toc.h: the library's
+ * Prediction: the MRE of brekke-toc (sim_brekke_toc, toc_curve.h: the library's
  * MRE with q2 sampled for this scenario, --mre-start), eq 35's
  * sqrt(P11 + P22) at the steady state, per filter.
  *
@@ -45,7 +45,7 @@
 #include "progress.h"
 #include "sim.h"
 #include "single_target.h"
-#include "toc.h"
+#include "toc_curve.h"
 
 #define MAXP 8
 #define FIG0 3 /* the first figure's number */

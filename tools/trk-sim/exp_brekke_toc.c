@@ -2,9 +2,9 @@
  * Fig. 2 and sec. V.B-C: the tracking operating characteristic (TOC), the
  * steady-state position RMSE along the ROC, of the PDAF and the PDAFAI in K
  * clutter (nu = 1 and 8, SNR 15 dB), simulated (bad tracks removed) against
- * the MRE's prediction (Brekke eq 27, toc.h).
+ * the MRE's prediction (Brekke eq 27, toc_curve.h).
  *
- * Prediction: toc.h (the library's MRE with q2 tables sampled for this
+ * Prediction: toc_curve.h (the library's MRE with q2 tables sampled for this
  * scenario: PDAF q2(pd, lambda_vg) along the ROC, PDAFAI q2(pfa, lambda_vg)
  * with the K amplitude law), Brekke's Table I model, lambda = P_FA / cell.
  * Simulation: single_target.h (one target, one track on the library's
@@ -26,7 +26,7 @@
 #include "progress.h"
 #include "sim.h"
 #include "single_target.h"
-#include "toc.h"
+#include "toc_curve.h"
 
 #define MAXL 32
 #define NCURVE 61
@@ -92,7 +92,7 @@ SIM_EXPERIMENT(brekke_toc, "brekke-toc", "Brekke 2011 Fig. 2: TOC, simulated RMS
     }
     const int threads = sim_threads(&com);
     char err[512];
-    /* ---- the MRE (toc.h): one TOC per nu */
+    /* ---- the MRE (toc_curve.h): one TOC per nu */
     struct toc **toc = calloc((size_t)nnu, sizeof *toc);
     struct toc_point *curve = calloc((size_t)nnu * NCURVE, sizeof *curve);
     struct toc_point *at = calloc((size_t)(nnu * npfa), sizeof *at);

@@ -7,7 +7,7 @@
  * by the track's existence (IPDA, Kennedy eqs 21-24, whose likelihood
  * carries the same amplitude ratios; trk/tracker.h). The tracks are scored
  * against the truth and the position RMSE against the MRE's prediction
- * (toc.h: Brekke eq 27 with q2 of the PDAFAI at this scenario).
+ * (toc_curve.h: Brekke eq 27 with q2 of the PDAFAI at this scenario).
  *
  * Scenario: a 2 km x 2 km area, one ping every 2 s, 250 scans; four targets
  * at 1.5-2.6 m/s with process noise q = 1e-3 m^2/s^3 (the tracker's model),
@@ -36,7 +36,7 @@
 #include "progress.h"
 #include "scenario.h"
 #include "sim.h"
-#include "toc.h"
+#include "toc_curve.h"
 #include "tracker_config.h"
 #include "trk/gate.h"
 #include "trk/tracker.h"
@@ -407,7 +407,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutte
     }
     if (sim_csv_close(&fe_out) != 0) return 1;
     const double rmse = nse ? sqrt(sse / (double)nse) : NAN;
-    /* ---- the MRE's prediction (toc.h: q2 of this scenario by importance sampling) */
+    /* ---- the MRE's prediction (toc_curve.h: q2 of this scenario by importance sampling) */
     double mre[2] = {NAN, NAN};
     const double t_mre0 = progress_now_s();
     {

@@ -4,7 +4,7 @@
  * K (nu = 1, 8) clutter, SNR 15 dB, with the optimal P_FA marked; for
  * resolution cell areas 1, 0.25 and 0.1 m^2 (lambda = P_FA / cell: the area
  * is not printed in the paper, docs/conventions.md "Brekke Table I mapping").
- * The curves come from tools/sim/toc.h (the library's MRE, TOC optimiser
+ * The curves come from tools/sim/toc_curve.h (the library's MRE, TOC optimiser
  * and q2 lookups) on q2 tables (--tables DIR: `make tables`) or on q2 grids
  * sampled here for exactly this SNR. */
 #include <math.h>
@@ -14,7 +14,7 @@
 
 #include "q2_table.h"
 #include "sim.h"
-#include "toc.h"
+#include "toc_curve.h"
 #include "trk/amplitude.h"
 #include "trk/q2.h"
 

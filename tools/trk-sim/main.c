@@ -20,6 +20,7 @@
 #include "trk/types.h"
 
 #ifdef TRK_TOOL_MPI
+#include "par_mpi.h" /* its PAR_TOOL_MAIN */
 #define SIM_PROG "trk-sim-mpi"
 #else
 #define SIM_PROG "trk-sim"

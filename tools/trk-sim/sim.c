@@ -15,7 +15,7 @@
 #include "par.h"
 #include "plot.h"
 #include "single_target.h"
-#include "toc.h"
+#include "toc_curve.h"
 #include "trk/table_file.h"
 
 /* ---------------------------------------------------------------- options */

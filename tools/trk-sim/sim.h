@@ -242,12 +242,12 @@ double sim_st_runs_err(const struct sim_common *c, const char *label, const stru
                                     const double *err_by_scan),
                        void *ctx, void *out, size_t slot_size, int *failed);
 
-/* The MRE's TOC (tools/sim/toc.h) of Brekke's Table I model in K clutter of
+/* The MRE's TOC (tools/sim/toc_curve.h) of Brekke's Table I model in K clutter of
  * shape nu at snr_db and cell_m2 (toc_scenario_brekke), its P_FA range
  * widened to [pfa_min, pfa_max], the MRE start mre_start (enum toc_start);
  * q2 from the tables DIR/q2_pdaf_g6.tbl and DIR/q2_pdafai_k<nu>_g6.tbl of
  * `make tables` (tables not NULL; their bytes in bufs[0], bufs[1]: free
- * them after toc_free) or sampled here (q2_samples per stratum, 0: toc.h's
+ * them after toc_free) or sampled here (q2_samples per stratum, 0: toc_curve.h's
  * default; c's seed, threads and work distribution). brekke-toc's and
  * brekke-errpdf's one MRE set-up. NULL after a message "EXP: ..." on
  * failure. */

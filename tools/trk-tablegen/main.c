@@ -17,6 +17,7 @@
 #include "trk/types.h"
 
 #ifdef TRK_TOOL_MPI
+#include "par_mpi.h" /* its PAR_TOOL_MAIN */
 #define TABLEGEN_PROG "trk-tablegen-mpi"
 #else
 #define TABLEGEN_PROG "trk-tablegen"

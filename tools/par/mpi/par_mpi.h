@@ -16,9 +16,17 @@
 
 #include "par.h"
 
-/* par_mpi_main (declared in par.h for PAR_TOOL_MAIN): par_mpi_start,
- * run(argc, argv) (the tool), par_finish (the output is written when run
- * returned 0: the checkpoint goes), par_mpi_end with run's exit status. */
+/* The main of a tool's MPI build: par_mpi_start, run(argc, argv) (the
+ * tool), par_finish (the output is written when run returned 0: the
+ * checkpoint goes), par_mpi_end with run's exit status. */
+int par_mpi_main(struct par *p, int argc, char **argv, const char *prog, int (*run)(int argc, char **argv));
+
+/* PAR_TOOL_MAIN (par.h) of the MPI build: this rank's par, main through
+ * par_mpi_main. */
+#define PAR_TOOL_MAIN(accessor, run, prog)                                                   \
+    static struct par accessor##_rank;                                                       \
+    struct par *accessor(void) { return &accessor##_rank; }                                  \
+    int main(int argc, char **argv) { return par_mpi_main(&accessor##_rank, argc, argv, prog, run); }
 
 /* Start MPI and make *p this rank (par_init, then rank, size, comm). Run
  * without mpirun it is a job of one rank. 0, or -1 with a message. */

@@ -1,6 +1,6 @@
-/* toc.c - TOC curves and optimum (toc.h): the library's MRE (trk/mre.h) on
+/* toc_curve.c - TOC curves and optimum (toc_curve.h): the library's MRE (trk/mre.h) on
  * the library's q2 lookups (trk/q2.h), from q2 tables or sampled grids. */
-#include "toc.h"
+#include "toc_curve.h"
 
 #include <math.h>
 #include <stdint.h>

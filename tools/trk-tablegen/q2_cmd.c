@@ -1,4 +1,4 @@
-/* q2.c - `trk-tablegen q2`: q2 tables by importance sampling (trk/q2.h
+/* q2_cmd.c - `trk-tablegen q2`: q2 tables by importance sampling (trk/q2.h
  * "Q2 TABLE"; tools/gen/q2_table.h, q2_is.h). */
 #include <errno.h>
 #include <math.h>

@@ -1,4 +1,4 @@
-/* toc.h - tracking operating characteristic (TOC) for the tools: the
+/* toc_curve.h - tracking operating characteristic (TOC) for the tools: the
  * steady-state position RMSE of the modified Riccati equation (MRE) along a
  * detector's ROC, for the PDAF and the PDAFAI, and the false-alarm
  * probability that minimises it (Brekke Sec. V-C, Fig. 2; docs/conventions.md
@@ -55,8 +55,8 @@
  * snr_db / the ROC, sampler failure, out of memory). A pfa without a steady
  * state is not an error (rmse_m = +inf).
  */
-#ifndef TRK_TOOLS_TOC_H
-#define TRK_TOOLS_TOC_H
+#ifndef TRK_TOOLS_TOC_CURVE_H
+#define TRK_TOOLS_TOC_CURVE_H
 
 #include <stddef.h>
 #include <stdint.h>
