@@ -77,8 +77,13 @@ TARGET_cortex-m4f-nojoint_FLOAT := 1
 TARGET_cortex-m4f-imm_CC := $(ARM_CC)
 TARGET_cortex-m4f-imm_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_WITH_IMM=1 -DTRK_MAX_MODELS=3
 TARGET_cortex-m4f-imm_FLOAT := 1
+# the M4F library with the alpha-beta track filter compiled in
+# (TRK_WITH_ALPHA_BETA=1: its image and stack in size-check), not in the default list
+TARGET_cortex-m4f-ab_CC := $(ARM_CC)
+TARGET_cortex-m4f-ab_CFLAGS := $(M4F_FLAGS) -DTRK_REAL_FLOAT -Os -DTRK_WITH_ALPHA_BETA=1
+TARGET_cortex-m4f-ab_FLOAT := 1
 CROSS_TARGETS_KNOWN := $(CROSS_TARGETS_ARM) riscv cortex-m4f-inline cortex-m4f-sizeopt cortex-m4f-nojoint \
-  cortex-m4f-imm
+  cortex-m4f-imm cortex-m4f-ab
 
 # binutils of a target: arm-none-eabi-gcc -> arm-none-eabi-nm
 cross_tool = $(patsubst %gcc,%$(2),$(TARGET_$(1)_CC))

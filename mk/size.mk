@@ -76,6 +76,7 @@ TARGET_cortex-m4f-inline_ARCH := arm
 TARGET_cortex-m4f-sizeopt_ARCH := arm
 TARGET_cortex-m4f-nojoint_ARCH := arm
 TARGET_cortex-m4f-imm_ARCH := arm
+TARGET_cortex-m4f-ab_ARCH := arm
 TARGET_riscv_ARCH := riscv
 
 define SIZE_template
@@ -123,13 +124,16 @@ size-report: cross
 TEST_EXTRA += size-check
 TEST_EXTRA_DEPS_size-check := build/cross/cortex-m4f/libtrk.a size-files-cortex-m4f \
   build/cross/cortex-m4f-nojoint/fw-footprint.txt build/cross/cortex-m4f-imm/stack.txt \
-  build/cross/cortex-m4f-imm/sizeof-default.txt build/cross/cortex-m4f-imm/fw-footprint.txt
+  build/cross/cortex-m4f-imm/sizeof-default.txt build/cross/cortex-m4f-imm/fw-footprint.txt \
+  build/cross/cortex-m4f-ab/stack.txt build/cross/cortex-m4f-ab/fw-footprint.txt
 size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	@awk '/^\.s?(data|bss)/ && $$2 > 0 { print "size-check: static data in libtrk: " $$0; bad = 1 } END { exit bad }' \
 	  build/cross/cortex-m4f/size-A.txt
 	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) -v tjlim=$(TEXT_LIMIT_JOINT) \
 	  -v llim=$(LIB_TEXT_LIMIT) ' \
 	  function hex(s,   i, v) { v = 0; s = tolower(s); for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v } \
+	  FILENAME ~ /-ab\/stack.txt$$/ { split($$0, f, "\t"); if (f[1] == "trk_tracker_process_scan") { sta = f[2] + 0; patha = f[5] } next } \
+	  FILENAME ~ /-ab\/fw-footprint/ && $$1 == "libtrk" { fwa = $$2 + 0; next } \
 	  FILENAME ~ /imm\/stack.txt$$/ { split($$0, f, "\t"); if (f[1] == "trk_tracker_process_scan") { sti = f[2] + 0; pathi = f[5] } next } \
 	  FILENAME ~ /stack.txt$$/ { split($$0, f, "\t"); if (f[1] == "trk_tracker_process_scan") { st = f[2] + 0; path = f[5] } next } \
 	  FILENAME ~ /imm\/sizeof-default/ && NF == 4 { szi[$$4] = hex($$2); next } \
@@ -149,7 +153,10 @@ size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	    printf "size-check cortex-m4f: the whole libtrk.a .text %d B (limit %d; analysis modules in libtrk_perf.a)\n", lib, llim; \
 	    printf "size-check cortex-m4f-imm (TRK_WITH_IMM=1, 3 models): stack of trk_tracker_process_scan %d B (limit %d); tracker %d B (%d without IMM; track %d B, %d without); libtrk .text in a typical image %d B\n", \
 	      sti, slim, szi["trk_sizeof_tracker"], sz["trk_sizeof_tracker"], szi["trk_sizeof_track"], sz["trk_sizeof_track"], fwi; \
+	    printf "size-check cortex-m4f-ab (TRK_WITH_ALPHA_BETA=1): stack of trk_tracker_process_scan %d B (limit %d); libtrk .text in a typical image %d B\n", \
+	      sta, slim, fwa; \
 	    if (sti == "" || sti > slim) { print "size-check: FAILED stack with IMM, worst path: " pathi; bad = 1 } \
+	    if (sta == "" || sta > slim) { print "size-check: FAILED stack with alpha-beta, worst path: " patha; bad = 1 } \
 	    if (st > slim) { print "size-check: FAILED stack, worst path: " path; bad = 1 } \
 	    if (ram > rlim) { print "size-check: FAILED RAM"; bad = 1 } \
 	    if (fw > tjlim) { print "size-check: FAILED .text"; bad = 1 } \
@@ -158,4 +165,5 @@ size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	    exit bad }' build/cross/cortex-m4f/stack.txt build/cross/cortex-m4f/sizeof-default.txt \
 	  build/cross/cortex-m4f/fw-footprint.txt build/cross/cortex-m4f-nojoint/fw-footprint.txt \
 	  build/cross/cortex-m4f-imm/stack.txt build/cross/cortex-m4f-imm/sizeof-default.txt \
-	  build/cross/cortex-m4f-imm/fw-footprint.txt build/cross/cortex-m4f/size-A.txt
+	  build/cross/cortex-m4f-imm/fw-footprint.txt build/cross/cortex-m4f-ab/stack.txt \
+	  build/cross/cortex-m4f-ab/fw-footprint.txt build/cross/cortex-m4f/size-A.txt

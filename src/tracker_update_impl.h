@@ -18,7 +18,7 @@
  * gating, which with so wide a gate would be a pass over most of the scan
  * for a track that the bound ends anyway); -1 on a numerical failure (tr
  * untouched). */
-static int track_update(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
+static TRK_NOINLINE int track_update(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
                         struct trk_look *look)
 {
     const struct trk_pda *pda = &t->pda[scan->sensor_id];

@@ -1,5 +1,5 @@
 /* test_tracker_imm.c - IMM tracks in the track table (TRK_WITH_IMM = 1,
- * config.h; src/tracker_imm_impl.h):
+ * config.h; src/filter_imm_impl.h):
  *   - parameters: IMM off by default, the three-model set, refusals "imm";
  *   - one CV model through the IMM path is the CV tracker (two targets in
  *     clutter, per-track PDA and joint association);

@@ -3,22 +3,26 @@
 
     python3 tools/scripts/structure.py [--check] [--dot FILE] [ROOT]
 
-Nodes are the C files of src/ (with src/perf, src/host, src/shared) and tools/:
-foo.c and foo.h of one folder are one node, and so are src/**/NAME.c and
-include/trk/NAME.h (headers of include/trk/ without a .c are nodes of their own).
+Nodes are the C files of src/ (with src/perf, src/host, src/shared), include/trk/
+and tools/: foo.c and foo.h of one folder are one node. A public header
+include/trk/NAME.h is a node of its own, below src/**/NAME.c: it is the module's
+face, which the implementation and its private helpers (NAME_impl.h) include.
 "A uses B" when A has `#include "B"` (resolved as the Makefile's -I options do),
 or when A names something defined in B that A's translation unit can see: a
 function, macro, type, enum constant or variable defined in a file of the same
 translation unit (a .c and every header it includes), or an extern function or
 variable defined in another .c file (one of the same link: a tool's own folder
 or the library layers). Comments and string literals are stripped first;
-member names (after `.` or `->`) are not uses; `main` is never one.
+member names (after `.` or `->`) are not uses; `main` is never one; a name a
+header declares itself (a macro of it calling its own prototype) is not a use,
+nor is testing whether a name is defined (#ifdef, defined(X): a switch the
+includer may set).
 
 Circles are the strongly connected components (Tarjan) of more than one node;
 each is printed with, for every edge inside it, one include or identifier that
-creates it. --check exits 1 when a circle exists; with STRUCTURE_SKIP_SRC=1 in
-the environment, circles made only of src/ and include/ files are reported but
-do not fail. --dot FILE writes a Graphviz drawing (one cluster per folder).
+creates it. The scan's modules have two rules more (STAGES below): no stage
+uses another, and only the track filter interface uses a filter. --check exits
+1 when a circle exists or a rule is broken. --dot FILE writes a Graphviz drawing (one cluster per folder).
 """
 import os
 import re
@@ -82,8 +86,8 @@ class Source:
                     self.define(name.group(1), "macro", n)
                     params = set(IDENT.findall(name.group(3) or ""))
                     self.scan_uses(rest[name.end():], params)
-            elif word in ("if", "elif", "ifdef", "ifndef"):
-                self.scan_uses(rest)
+            elif word in ("if", "elif"):    # whether a name is defined is a switch, not a use
+                self.scan_uses(re.sub(r"\bdefined\s*(\(\s*\w+\s*\)|\w+)", " ", rest))
         self.code = "\n".join(code_lines)
         self.scan_uses(self.code)
         self.scan_defs(self.code)
@@ -159,6 +163,12 @@ class Source:
                     self.protos.add(m.group(1))
             return
         decl = text.split("=")[0]
+        if not body and re.match(r"extern\b", text) and "(" not in decl:
+            m = re.search(r"(\w+)\s*(\[[^\]]*\]\s*)*$", decl)
+            if m:                        # an extern variable's declaration: as a prototype
+                self.unuse(m.group(1))
+                self.protos.add(m.group(1))
+            return
         if body or "(" in decl or re.match(r"extern\b|(struct|union|enum)\s+\w+$", text):
             return
         m = re.search(r"\w\s+\**\s*(\w+)\s*(\[[^\]]*\]\s*)*$", decl)
@@ -208,11 +218,7 @@ def build(root):
             paths += [os.path.relpath(os.path.join(d, f), root) for f in sorted(names)
                       if f.endswith((".c", ".h"))]
     files = {p: Source(root, p) for p in paths}
-    node = {p: p[:-2] for p in paths}  # foo.c + foo.h; src/**/NAME.c + include/trk/NAME.h
-    for p in paths:
-        h = "include/trk/" + os.path.basename(p)[:-2] + ".h"
-        if p.startswith("src/") and p.endswith(".c") and h in files:
-            node[h] = p[:-2]
+    node = {p: p[:-2] for p in paths}  # foo.c + foo.h of one folder
 
     def resolve(frm, inc):
         dirs = INC_SRC if frm.startswith(("src/", "include/")) else INC_TOOLS
@@ -268,8 +274,8 @@ def build(root):
                     if q != c or p == c or line < units[c][p]:
                         visible.setdefault(name, q)
         for name in f.uses:
-            if name in f.defs:
-                continue
+            if name in f.defs or (p.endswith(".h") and name in f.protos):
+                continue                 # its own, or what a header declares itself
             if name in visible:
                 add(p, visible[name], name)
             for q in link(p, externs[name]) if name not in visible and name in externs else []:
@@ -346,12 +352,9 @@ def main(argv):
     for ps in [ps for n, ps in sorted(names.items()) if n != "main.c"] + list(externs.values()):
         if len(ps) > 1:              # two files of one name, a function defined twice
             print(f"warning: namesakes {', '.join(ps)}")
-    skip_src = os.environ.get("STRUCTURE_SKIP_SRC") == "1"
-    failing = 0
+    failing = len(circles)
     for s in circles:
-        skipped = skip_src and all(n.startswith(("src/", "include/")) for n in s)
-        failing += not skipped
-        print(f"\ncircle of {len(s)} nodes" + (" (src/: STRUCTURE_SKIP_SRC=1, not failing)" if skipped else "") + ":")
+        print(f"\ncircle of {len(s)} nodes:")
         for n in s:
             print(f"  {label[n]}")
         for a in s:
@@ -359,9 +362,32 @@ def main(argv):
                 if b in s:
                     fa, why, fb = edges[(a, b)]
                     print(f"    {fa} -> {fb}: {why}")
-    print(f"\nstructure: {len(nodes)} nodes, {len(edges)} edges, {len(circles)} circle(s)"
-          + (f" ({len(circles) - failing} in src/ only, not failing)" if skip_src else ""))
+    broken = scan_rules(edges)
+    for (a, b), why in broken:
+        print(f"rule: {a} -> {b}: {why}")
+    failing += len(broken)
+    print(f"\nstructure: {len(nodes)} nodes, {len(edges)} edges, {len(circles)} circle(s), "
+          f"{len(broken)} broken rule(s) of the scan's modules")
     return 1 if check and failing else 0
+
+
+# The scan's stages (src/tracker.c includes each; docs/architecture.md): no
+# stage uses another (the load stage's thinning is its own part), and a
+# track's motion model is reached only through the track filter.
+STAGES = ("src/tracker_load_impl.h", "src/tracker_update_impl.h", "src/tracker_joint_impl.h",
+          "src/tracker_merge_impl.h", "src/tracker_initiate_impl.h", "src/tracker_thin_impl.h")
+PARTS = {("src/tracker_load_impl.h", "src/tracker_thin_impl.h")}
+
+
+def scan_rules(edges):
+    """The edges that break the rules above, each with its reason."""
+    broken = []
+    for (a, b), (fa, why, fb) in sorted(edges.items()):
+        if a + ".h" in STAGES and b + ".h" in STAGES and (a + ".h", b + ".h") not in PARTS:
+            broken.append(((fa, fb), f"a stage uses another stage ({why})"))
+        if os.path.basename(b).startswith("filter_") and a != "src/track_filter_impl":
+            broken.append(((fa, fb), f"a filter reached past the track filter interface ({why})"))
+    return broken
 
 
 def write_dot(path, nodes, edges, comp, circles):
