@@ -39,28 +39,47 @@
 #include "track_gate_impl.h"
 #include "track_pred_impl.h"
 
-/* One axis's gains and covariances for this update into *g, r the
- * sensor's variance on the axis, h the track's points, p_pv_vv its own
- * covariance on the axis [pp, pv, vv] (for h < 2): the steady state, or
- * while the start-up gain is larger, one Kalman step from the
- * least-squares fit of h points at this gap (covariance [2 (2h - 1) /
- * (h (h + 1)), 6 / (T h (h + 1)), 12 / (T^2 h (h^2 - 1))] r). */
-static trk_status ab_axis(trk_real dt, trk_real q, trk_real r, uint32_t h, const trk_real p_own[3],
-                          struct trk_cv_steady *g)
+/* The steady state per axis for gap dt_us at the scan's sensor, from the
+ * workspace's cache (the tracks of a scan share one gap: one computation
+ * per scan), or computed into it. TRK_E_RANGE beyond the real type. */
+static trk_status ab_steady(struct trk_tracker *t, const struct trk_scan *scan, int64_t dt_us, trk_real dt)
 {
-    const trk_status st = trk_cv_steady_state(dt, q, r, g);
+    if (t->ws.ab_dt_us == dt_us && t->ws.ab_sensor == scan->sensor_id) return TRK_OK;
+    const trk_real *r = t->r[scan->sensor_id], q = t->params.process_noise_q;
+    struct trk_cv_steady ss[2];
+    trk_status st = trk_cv_steady_state(dt, q, r[S(ZX, ZX)], &ss[0]);
+    if (st == TRK_OK) st = trk_cv_steady_state(dt, q, r[S(ZY, ZY)], &ss[1]);
     if (st != TRK_OK) return st;
+    t->ws.ab_steady[0] = ss[0];
+    t->ws.ab_steady[1] = ss[1];
+    t->ws.ab_dt_us = dt_us;
+    t->ws.ab_sensor = scan->sensor_id;
+    return TRK_OK;
+}
+
+/* One axis's gains and covariances for this update into *g, from the
+ * steady state ss, r the sensor's variance on the axis, h the track's
+ * points, p_own its own covariance on the axis [pp, pv, vv] (for h < 2):
+ * the steady state, or while the start-up gain is larger, one Kalman step
+ * from the least-squares fit of h points at this gap (covariance [2 (2h -
+ * 1) / (h (h + 1)), 6 / (T h (h + 1)), 12 / (T^2 h (h^2 - 1))] r). The
+ * start-up's predicted M_pp is tested first: its gain is the larger when
+ * M_pp / r > alpha_ss / (1 - alpha_ss). */
+static void ab_axis(trk_real dt, trk_real q, trk_real r, uint32_t h, const trk_real p_own[3],
+                    const struct trk_cv_steady *ss, struct trk_cv_steady *g)
+{
     trk_real pp = p_own[0], pv = p_own[1], vv = p_own[2];
     if (h >= 2) {
-        const trk_real n = (trk_real)h;
-        pp = 2 * (2 * n - 1) / (n * (n + 1)) * r;
-        pv = 6 / (dt * n * (n + 1)) * r;
-        vv = 12 / (dt * dt * n * (n * n - 1)) * r;
+        const trk_real n = (trk_real)h, c = r / (n * (n + 1));
+        pp = 2 * (2 * n - 1) * c;
+        pv = 6 * c / dt;
+        vv = 12 * c / (dt * dt * (n - 1));
     }
     const trk_real mpp = pp + dt * (2 * pv + dt * vv) + q * dt * dt * dt / 3;
+    *g = *ss;
+    if (!(mpp * (1 - ss->alpha) > ss->alpha * r)) return; /* grown up: the steady state */
     const trk_real mpv = pv + dt * vv + q * dt * dt / 2, mvv = vv + q * dt;
     const trk_real alpha = mpp / (mpp + r), k_vel = mpv / (mpp + r);
-    if (!(alpha > g->alpha)) return TRK_OK; /* grown up: the steady state */
     g->alpha = alpha;
     g->k_vel_per_s = k_vel;
     g->beta = k_vel * dt;
@@ -70,28 +89,30 @@ static trk_status ab_axis(trk_real dt, trk_real q, trk_real r, uint32_t h, const
     g->post[0] = (1 - alpha) * mpp;
     g->post[1] = (1 - alpha) * mpv;
     g->post[2] = mvv - k_vel * mpv;
-    return TRK_OK;
 }
 
 /* The prediction to the scan time: the state moved by the CV model, the
  * gains per axis into pr->ab (ab_axis), the predicted covariance into
  * pr->p, then pred_finish. TRK_E_RANGE when the steady state is beyond the
  * real type (trk_cv_steady_state). */
-static trk_status ab_predict(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+static trk_status ab_predict(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                              struct pred *pr)
 {
-    const trk_real dt = (trk_real)(scan->time_us - tr->time_us) * TRK_REAL_C(1e-6);
+    const int64_t dt_us = scan->time_us - tr->time_us;
+    const trk_real dt = (trk_real)dt_us * TRK_REAL_C(1e-6);
     const trk_real *r = t->r[scan->sensor_id];
     for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
     for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
     pr->ab[0].alpha = pr->ab[1].alpha = 0; /* no gain over no time */
-    if (dt > 0) {
-        const trk_real q = t->params.process_noise_q;
-        const trk_real own_x[3] = {tr->p[P(X, X)], tr->p[P(X, VX)], tr->p[P(VX, VX)]};
-        const trk_real own_y[3] = {tr->p[P(Y, Y)], tr->p[P(Y, VY)], tr->p[P(VY, VY)]};
-        trk_status st = ab_axis(dt, q, r[S(ZX, ZX)], tr->n_hits, own_x, &pr->ab[0]);
-        if (st == TRK_OK) st = ab_axis(dt, q, r[S(ZY, ZY)], tr->n_hits, own_y, &pr->ab[1]);
+    if (dt_us > 0) {
+        const trk_status st = ab_steady(t, scan, dt_us, dt);
         if (st != TRK_OK) return st;
+        for (int a = 0; a < 2; a++) {
+            const int ip = a == 0 ? X : Y, iv = a == 0 ? VX : VY;
+            const trk_real own[3] = {tr->p[P(ip, ip)], tr->p[P(ip, iv)], tr->p[P(iv, iv)]};
+            ab_axis(dt, t->params.process_noise_q, r[a == 0 ? S(ZX, ZX) : S(ZY, ZY)], tr->n_hits, own,
+                    &t->ws.ab_steady[a], &pr->ab[a]);
+        }
         for (int i = 0; i < NX * NX; i++) pr->p[i] = 0;
         for (int a = 0; a < 2; a++) {
             const int ip = a == 0 ? X : Y, iv = a == 0 ? VX : VY;

@@ -193,6 +193,7 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
                        (int64_t)(int32_t)((p->max_dt_s - whole) * TRK_REAL_C(1e6) + TRK_REAL_C(0.5));
     }
     t->has_time = 0;
+    t->ws.ab_dt_us = 0; /* no steady state cached */
     t->next_id = 1;
     t->n_live = 0;
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {

@@ -5,7 +5,7 @@
 # which contributes the rest (the knob changes no layout); the test source
 # sets the knob itself.
 AB_TEST_OBJS := $(addprefix $(BUILD)/obj/ab/src/,tracker.o tracker_params.o)
-$(BUILD)/obj/ab/src/%.o: src/%.c $(wildcard src/*.h) $(BUILD_CONFIG)
+$(BUILD)/obj/ab/src/%.o: src/%.c $(wildcard src/*.h include/trk/*.h) $(BUILD_CONFIG)
 	@mkdir -p $(@D)
 	$(call say,CC,$< (TRK_WITH_ALPHA_BETA=1))
 	$(Q)$(CC) $(CFLAGS_ALL) $(LIBWARN) -UTRK_WITH_ALPHA_BETA -DTRK_WITH_ALPHA_BETA=1 -Isrc -c $< -o $@

@@ -729,6 +729,13 @@ struct trk_tracker {
                                                                   entry k are k+1 .. k+n-1 */
         int16_t amp_pos[TRK_MAX_DETECTIONS];                   /**< index in amp_db, -1 none */
         size_t n_amp;
+        struct trk_cv_steady ab_steady[2];                     /**< the alpha-beta filter's steady
+                                                                  state per axis for gap ab_dt_us
+                                                                  at sensor ab_sensor: a cache,
+                                                                  since a scan's tracks share
+                                                                  one gap (TRK_WITH_ALPHA_BETA) */
+        int64_t ab_dt_us;                                      /**< its gap, 0: nothing cached */
+        unsigned ab_sensor;                                    /**< its sensor */
 #if TRK_WITH_IMM
         struct {                                               /**< one IMM track's update: */
             struct trk_imm_state s;                            /**< mixed, predicted, posterior */

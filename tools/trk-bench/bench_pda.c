@@ -22,6 +22,9 @@
  *   scan_64x256_imm   (TRK_WITH_IMM builds) scan_64x256_cv, the default scans
  *                     of this build, against scan_64x256_imm3, every track an
  *                     IMM track of three models, same run, and their ratio
+ *   scan_64x256_ab    (TRK_WITH_ALPHA_BETA builds) scan_64x256_kalman against
+ *                     scan_64x256_alpha_beta, every track on the constant-gain
+ *                     filter, same run, and their ratio
  *   scan_64x1024      a scan of 4 x capacity: the scans of scan_64x256 with
  *                     768 more clutter detections over the area (960, the
  *                     sensor's density to match), thinned to the build's 256
@@ -175,7 +178,7 @@ struct scan_job {
 
 /* The scans' configurations: the defaults (joint association), the same
  * with the per-track PDA, and the M/N path. */
-enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER };
+enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER, SCAN_AB };
 
 /* Detections per scan of a configuration. */
 static size_t scan_n_det(enum scan_cfg cfg) { return cfg == SCAN_OVER ? N_DET_OVER : N_DET; }
@@ -190,6 +193,7 @@ static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
         trk_tracker_default_params(p);
     }
     if (cfg == SCAN_PDA) p->association = TRK_ASSOC_PDA;
+    if (cfg == SCAN_AB) p->filter = TRK_FILTER_ALPHA_BETA;
     p->sensor[0].pd = TRK_REAL_C(0.9);
     p->sensor[0].clutter_density_per_m2 = (trk_real)((double)(scan_n_det(cfg) - N_TGT) / (1200.0 * 1200.0));
     p->process_noise_q = TRK_REAL_C(0.01);
@@ -371,6 +375,20 @@ TRK_BENCH(scan_64x256_imm)
     scan_bench(names, cfg, 2);
 #else
     bench_print("scan_64x256_imm_skipped_no_imm", 0, "-");
+#endif
+}
+
+/* The alpha-beta track filter: the same scans with every track on constant
+ * gains against the CV Kalman tracks of the same build, alternating in the
+ * same run. A build without TRK_WITH_ALPHA_BETA says so. */
+TRK_BENCH(scan_64x256_ab)
+{
+#if TRK_WITH_ALPHA_BETA
+    static const char *const names[] = {"scan_64x256_kalman", "scan_64x256_alpha_beta"};
+    static const enum scan_cfg cfg[] = {SCAN_DEFAULT, SCAN_AB};
+    scan_bench(names, cfg, 2);
+#else
+    bench_print("scan_64x256_ab_skipped_no_alpha_beta", 0, "-");
 #endif
 }
 
