@@ -26,10 +26,13 @@ trk_status trk_cv_steady_state(trk_real dt_s, trk_real q_m2_per_s3, trk_real r_m
     const trk_real t = dt_s, q = q_m2_per_s3, r = r_m2;
     const trk_real lambda = trk_sqrt(q / r * t) * t; /* sqrt(q T^3 / r), in steps that overflow late */
     if (!(lambda <= TRK_REAL_C(1e15))) return TRK_E_RANGE; /* u^2 below would overflow in float */
-    const trk_real u = (lambda + trk_sqrt(16 + lambda * lambda / 3)) / 2;
-    const trk_real s = 2 / (u + trk_sqrt((u - 2) * (u + 2)));
-    const trk_real s2 = s * s;
-    const trk_real alpha = 1 - s2, beta = lambda * s, k_vel = beta / t;
+    /* u - 2 and 1 - s without cancellation: alpha = (1 - s)(1 + s) keeps its
+     * digits when it is small (a float 1 - s^2 kept 3 of them at alpha 0.006) */
+    const trk_real w = trk_sqrt(16 + lambda * lambda / 3);
+    const trk_real u_m2 = (lambda + lambda * lambda / (3 * (w + 4))) / 2; /* u - 2 */
+    const trk_real u = u_m2 + 2, root = trk_sqrt(u_m2 * (u + 2)), den = u + root;
+    const trk_real s = 2 / den, s2 = s * s;
+    const trk_real alpha = (u_m2 + root) / den * (1 + s), beta = lambda * s, k_vel = beta / t;
     const trk_real post_vv = alpha * k_vel * r / (t * s2) - q * t / 2;
     const trk_real out[10] = {alpha, beta, k_vel, alpha * r / s2, k_vel * r / s2, post_vv + q * t,
                               alpha * r, k_vel * r, post_vv, 0};

@@ -92,7 +92,8 @@ static void test_refusals(void **state)
     TRK_ASSERT_STATUS(trk_cv_steady_state((trk_real)NAN, 1, 1, &ss), TRK_E_ARG);
     TRK_ASSERT_STATUS(trk_cv_steady_state(1, (trk_real)INFINITY, 1, &ss), TRK_E_ARG);
     TRK_ASSERT_STATUS(trk_cv_steady_state(1e6, 1e20, 1e-20, &ss), TRK_E_RANGE); /* lambda 1e29 */
-    TRK_ASSERT_STATUS(trk_cv_steady_state(1e-6, 1e-30, 1e30, &ss), TRK_E_RANGE); /* alpha rounds to 0 */
+    TRK_ASSERT_STATUS(trk_cv_steady_state(1e-6, (trk_real)TRK_TOL(1e-300, 1e-30), (trk_real)TRK_TOL(1e300, 1e30), &ss),
+                      TRK_E_RANGE); /* q / r underflows: lambda and alpha 0 */
     assert_memory_equal(&ss, &before, sizeof ss);
 }
 
