@@ -20,6 +20,7 @@
  *                       IMM's per-model weights; the others keep nothing)
  *   filter_update_beta  the posterior for given weights (the joint ones)
  *   filter_commit       the filter's own state into the track
+ *   filter_merge_cov    the covariance the merge test weighs a track with
  * The combined estimate is always the track's x and P (CV layout), so the
  * stages that only read a track (covariance bound, merge, initiation's
  * slots, the report) need no filter.
@@ -59,11 +60,12 @@ static enum filter_kind filter_kind(const struct trk_tracker *t)
 /* A new track (x, P set) gets its filter's state. */
 static void filter_start(const struct trk_tracker *t, struct trk_track *tr)
 {
+    tr->maneuver_d2 = 0;
+    tr->maneuver_sum = 0;
 #if TRK_WITH_IMM
     imm_start(t, tr); /* with imm.n_models 0, a CV track of an IMM build: the IMM state cleared */
 #else
     (void)t;
-    (void)tr;
 #endif
 }
 
@@ -148,20 +150,34 @@ static trk_status filter_update_beta(struct trk_tracker *t, const struct trk_sca
 }
 #endif
 
+/* The covariance of track tr that the merge test weighs its state with:
+ * its P, or an IMM track's most probable model's (the combined P also holds
+ * the spread between the models' estimates, which made the tracks of two
+ * close targets pass for one). */
+static const trk_real *filter_merge_cov(const struct trk_tracker *t, const struct trk_track *tr)
+{
+#if TRK_WITH_IMM
+    if (filter_kind(t) == FILTER_IMM) {
+        int best = 0;
+        for (int m = 1; m < t->params.imm.n_models; m++)
+            if (tr->imm.mu[m] > tr->imm.mu[best]) best = m;
+        return tr->imm.p[best];
+    }
+#endif
+    (void)t;
+    return tr->p;
+}
+
 /* The accepted update's filter state into the track (its x, P, the
- * commit's): the IMM's models, and in an IMM build every track's manoeuvre
- * statistic. */
+ * commit's): every track's manoeuvre statistic and its fading sum, and the
+ * IMM's models. */
 static void filter_commit(const struct trk_tracker *t, struct trk_track *tr, const struct trk_i_pda_set *set,
                           const struct pred *pr)
 {
-#if TRK_WITH_IMM
     tr->maneuver_d2 = maneuver_d2(set, &pr->inn);
+    tr->maneuver_sum = t->params.maneuver.memory * tr->maneuver_sum + tr->maneuver_d2;
+#if TRK_WITH_IMM
     if (filter_kind(t) == FILTER_IMM) tr->imm = t->ws.imm.s;
-#else
-    (void)t;
-    (void)tr;
-    (void)set;
-    (void)pr;
 #endif
 }
 

@@ -2,12 +2,14 @@
  * follow one target (PDA tracks sharing detections converge onto it) are
  * merged: the weaker one ends (TRK_END_MERGED). Candidate pairs come from a
  * 2-D index of the tracks' positions; the test is the track-to-track d2
- * over the combined estimates (x, P).
+ * over the estimates x with the filter's merge covariance (an IMM track's
+ * most probable model's: filter_merge_cov).
  *
  * Included by tracker.c only (tracker_internal.h). */
 #ifndef TRK_TRACKER_MERGE_IMPL_H
 #define TRK_TRACKER_MERGE_IMPL_H
 
+#include "track_filter_impl.h"
 #include "track_life_impl.h"
 #include "tracker_index_impl.h"
 
@@ -24,19 +26,23 @@ static int stronger(const struct trk_track *a, const struct trk_track *b)
 /* Can live tracks a and b follow one target? The cheap test on the
  * positions alone (inlined in the pair loop): d2 >= dx^2 / (Pa_xx + Pb_xx)
  * for the x (and y) component, so a pair failing it is not a duplicate. */
-static int may_duplicate(const struct trk_track *a, const struct trk_track *b, trk_real g)
+static int may_duplicate(const struct trk_tracker *t, const struct trk_track *a, const struct trk_track *b,
+                         trk_real g)
 {
+    const trk_real *pa = filter_merge_cov(t, a), *pb = filter_merge_cov(t, b);
     const trk_real ex = a->x[X] - b->x[X], ey = a->x[Y] - b->x[Y];
-    return ex * ex <= g * (a->p[P(X, X)] + b->p[P(X, X)]) && ey * ey <= g * (a->p[P(Y, Y)] + b->p[P(Y, Y)]);
+    return ex * ex <= g * (pa[P(X, X)] + pb[P(X, X)]) && ey * ey <= g * (pa[P(Y, Y)] + pb[P(Y, Y)]);
 }
 
 /* Do live tracks a and b follow one target: d2 = dx' (P_a + P_b)^-1 dx <= g
  * over [x, vx, y, vy] (the track-to-track test without the common
  * process-noise cross-covariance, which would only make d2 larger)? */
-static TRK_NOINLINE int duplicates(const struct trk_track *a, const struct trk_track *b, trk_real g)
+static TRK_NOINLINE int duplicates(const struct trk_tracker *t, const struct trk_track *a, const struct trk_track *b,
+                                   trk_real g)
 {
+    const trk_real *pa = filter_merge_cov(t, a), *pb = filter_merge_cov(t, b);
     trk_real c[NX * NX], l[NX * NX], li[NX * NX], dx[NX], y[NX], d2 = 0;
-    for (int k = 0; k < NX * NX; k++) c[k] = a->p[k] + b->p[k];
+    for (int k = 0; k < NX * NX; k++) c[k] = pa[k] + pb[k];
     for (int k = 0; k < NX; k++) dx[k] = a->x[k] - b->x[k];
     if (trk_i_chol(NX, c, l) != TRK_OK) return 0; /* cannot happen: both SPD */
     trk_i_tril_inverse(NX, l, li);
@@ -50,7 +56,7 @@ static TRK_NOINLINE int duplicates(const struct trk_track *a, const struct trk_t
 static void merge_pair(struct trk_tracker *t, struct trk_track *a, struct trk_track *b, struct trk_scan_report *rep)
 {
     const trk_real g = t->params.merge_gate_d2;
-    if (!is_live(a) || !is_live(b) || !may_duplicate(a, b, g) || !duplicates(a, b, g)) return;
+    if (!is_live(a) || !is_live(b) || !may_duplicate(t, a, b, g) || !duplicates(t, a, b, g)) return;
     end_track(stronger(a, b) ? b : a, TRK_END_MERGED, rep);
 }
 
@@ -82,26 +88,28 @@ static long merge_candidates(struct trk_tracker *t)
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
         if (is_live(&t->track[i])) {
             const struct trk_track *a = &t->track[i];
+            const trk_real *pa = filter_merge_cov(t, a);
             idx[n++] = (uint16_t)i;
             kx[i] = a->x[X];
             ky[i] = a->x[Y];
-            if (a->p[P(X, X)] > pmax_x) pmax_x = a->p[P(X, X)];
-            if (a->p[P(Y, Y)] > pmax_y) pmax_y = a->p[P(Y, Y)];
+            if (pa[P(X, X)] > pmax_x) pmax_x = pa[P(X, X)];
+            if (pa[P(Y, Y)] > pmax_y) pmax_y = pa[P(Y, Y)];
         }
     struct trk_i_grid grid;
     grid_order(t, kx, ky, idx, n, &grid, t->ws.cell_end);
     uint16_t *out = t->ws.u.merge.pair; /* after the index: its scratch shares the union */
     for (size_t k = 0; k < n; k++) {
         const struct trk_track *a = &t->track[idx[k]];
-        const trk_real rx = trk_sqrt(g * (a->p[P(X, X)] + pmax_x)) * (1 + 16 * TRK_REAL_EPS);
-        const trk_real ry = trk_sqrt(g * (a->p[P(Y, Y)] + pmax_y)) * (1 + 16 * TRK_REAL_EPS);
+        const trk_real *pa = filter_merge_cov(t, a);
+        const trk_real rx = trk_sqrt(g * (pa[P(X, X)] + pmax_x)) * (1 + 16 * TRK_REAL_EPS);
+        const trk_real ry = trk_sqrt(g * (pa[P(Y, Y)] + pmax_y)) * (1 + 16 * TRK_REAL_EPS);
         struct trk_i_grid_box box = trk_i_grid_box(&grid, t->ws.cell_end, a->x[X] - rx, a->x[X] + rx, a->x[Y] - ry,
                                                    a->x[Y] + ry);
         size_t l0, l1;
         while (trk_i_grid_next(&box, &l0, &l1))
             for (size_t l = l0; l < l1; l++) {
                 const uint16_t i = idx[k], j = idx[l];
-                if (i >= j || !may_duplicate(a, &t->track[j], g)) continue; /* each pair once */
+                if (i >= j || !may_duplicate(t, a, &t->track[j], g)) continue; /* each pair once */
                 if (n_pair == cap) return -1;
                 size_t m = n_pair++; /* insertion in (i, j) order: the pairs are few */
                 for (; m > 0 && (out[2 * m - 2] > i || (out[2 * m - 2] == i && out[2 * m - 1] > j)); m--) {
