@@ -13,27 +13,17 @@
 #include "track_gate_impl.h"
 #include "track_pred_impl.h"
 
-/* The process noise of track tr's next prediction: process_noise_q, times
- * maneuver.q_factor while its manoeuvre sum is over the threshold (the
- * survey's ch. 3.4 adaptation: the gate and the gain open up while the
- * innovations say the CV model does not fit). */
-static trk_real cv_q(const struct trk_tracker *t, const struct trk_track *tr)
-{
-    const struct trk_maneuver_params *m = &t->params.maneuver;
-    return tr->maneuver_sum > m->threshold ? m->q_factor * t->params.process_noise_q : t->params.process_noise_q;
-}
-
-/* CV prediction to the scan time with cv_q, checked (finite, variances >
- * 0; its positive definiteness is checked once it is known to be the
- * posterior), and its innovation (S = H P H' + R of the scan's sensor;
- * TRK_E_NOT_SPD when S is not positive definite). */
+/* CV prediction to the scan time, checked (finite, variances > 0; its
+ * positive definiteness is checked once it is known to be the posterior),
+ * and its innovation (S = H P H' + R of the scan's sensor; TRK_E_NOT_SPD
+ * when S is not positive definite). */
 static trk_status cv_predict(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                              struct pred *pr)
 {
     const trk_real dt = (trk_real)(scan->time_us - tr->time_us) * TRK_REAL_C(1e-6);
     for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
     for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
-    trk_i_cv2_predict(dt, cv_q(t, tr), pr->x, pr->p);
+    trk_i_cv2_predict(dt, t->params.process_noise_q, pr->x, pr->p);
     return pred_finish(t, scan, pr);
 }
 

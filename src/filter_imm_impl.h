@@ -45,6 +45,7 @@
 static void imm_start(const struct trk_tracker *t, struct trk_track *tr)
 {
     const int n = t->params.imm.n_models;
+    tr->maneuver_d2 = 0;
     memset(&tr->imm, 0, sizeof tr->imm);
     for (int m = 0; m < n; m++) {
         for (int i = 0; i < NX; i++) tr->imm.x[m][i] = tr->x[i];

@@ -60,12 +60,11 @@ static enum filter_kind filter_kind(const struct trk_tracker *t)
 /* A new track (x, P set) gets its filter's state. */
 static void filter_start(const struct trk_tracker *t, struct trk_track *tr)
 {
-    tr->maneuver_d2 = 0;
-    tr->maneuver_sum = 0;
 #if TRK_WITH_IMM
     imm_start(t, tr); /* with imm.n_models 0, a CV track of an IMM build: the IMM state cleared */
 #else
     (void)t;
+    (void)tr;
 #endif
 }
 
@@ -169,15 +168,19 @@ static const trk_real *filter_merge_cov(const struct trk_tracker *t, const struc
 }
 
 /* The accepted update's filter state into the track (its x, P, the
- * commit's): every track's manoeuvre statistic and its fading sum, and the
- * IMM's models. */
+ * commit's): the IMM's models, and in an IMM build every track's manoeuvre
+ * statistic. */
 static void filter_commit(const struct trk_tracker *t, struct trk_track *tr, const struct trk_i_pda_set *set,
                           const struct pred *pr)
 {
-    tr->maneuver_d2 = maneuver_d2(set, &pr->inn);
-    tr->maneuver_sum = t->params.maneuver.memory * tr->maneuver_sum + tr->maneuver_d2;
 #if TRK_WITH_IMM
+    tr->maneuver_d2 = maneuver_d2(set, &pr->inn);
     if (filter_kind(t) == FILTER_IMM) tr->imm = t->ws.imm.s;
+#else
+    (void)t;
+    (void)tr;
+    (void)set;
+    (void)pr;
 #endif
 }
 

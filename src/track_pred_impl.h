@@ -47,6 +47,7 @@ static void pda_weights(const struct trk_pda *pda, const struct pred *pr, struct
 }
 #endif
 
+#if TRK_WITH_IMM
 /* The survey's manoeuvre statistic (eqs 3.11-3.13) of the update: d2 of
  * the innovation given a detection, sum_i beta_i nu_i / sum_i beta_i (the
  * sum, not 1 - beta0: beta0 near 1 keeps only its rounding), with the
@@ -65,5 +66,6 @@ static trk_real maneuver_d2(const struct trk_i_pda_set *set, const struct trk_in
     nu[ZY] /= sum;
     return trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
 }
+#endif
 
 #endif

@@ -35,9 +35,6 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->max_coord_m = TRK_MAX_COORD_M_DEFAULT;
     p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: docs/tracker.md "Association" */
     p->filter = TRK_FILTER_KALMAN;
-    p->maneuver.q_factor = 1; /* off */
-    p->maneuver.memory = TRK_REAL_C(0.5);
-    p->maneuver.threshold = 12;
     p->merge_gate_d2 = 4;
     p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
                                                               detections */
@@ -186,21 +183,6 @@ static trk_status check_association(const struct trk_tracker_params *p, const ch
 }
 
 /* The scalars (gate_prob with the sensors' PDA). */
-/* Manoeuvre detection: q_factor >= 1 with q_factor q finite, memory in
- * [0, 1), threshold > 0. */
-static trk_status check_maneuver(const struct trk_tracker_params *p, const char **field)
-{
-    const struct trk_maneuver_params *m = &p->maneuver;
-    trk_status st;
-    if ((st = check_real(m->q_factor, 1, 0, TRK_REAL_MAX, "maneuver.q_factor", field)) != TRK_OK ||
-        (st = check_real(m->memory, 0, 0, 1, "maneuver.memory", field)) != TRK_OK ||
-        (st = check_real(m->threshold, 0, 1, TRK_REAL_MAX, "maneuver.threshold", field)) != TRK_OK)
-        return st;
-    if (!(m->memory < 1)) return refuse(field, "maneuver.memory", TRK_E_RANGE);
-    if (!(m->q_factor * p->process_noise_q <= TRK_REAL_MAX)) return refuse(field, "maneuver.q_factor", TRK_E_RANGE);
-    return TRK_OK;
-}
-
 static trk_status check_scalars(const struct trk_tracker_params *p, const char **field)
 {
     trk_status st;
@@ -217,7 +199,6 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
     if ((st = check_real(p->max_pos_sigma_ratio, 0, 0, TRK_REAL_MAX, "max_pos_sigma_ratio", field)) != TRK_OK ||
         (st = check_real(p->max_coord_m, 0, 1, TRK_MAX_COORD_M_LIMIT, "max_coord_m", field)) != TRK_OK)
         return st;
-    if ((st = check_maneuver(p, field)) != TRK_OK) return st;
     return check_init(&p->init, field);
 }
 

@@ -387,20 +387,6 @@ enum trk_assoc_method {
                            and TRK_WITH_JOINT (config.h) */
 };
 
-/** Manoeuvre detection on the CV Kalman filter (seed survey ch. 3.4, eqs
- * 3.11-3.13; docs/tracker.md "Manoeuvres"): each update's normalised
- * innovation d2 (trk_track.maneuver_d2) enters a fading-memory sum s =
- * memory s + d2 (0 for a scan without a detection in the gate); while s >
- * threshold the track's next prediction takes the process noise q_factor
- * process_noise_q (its gate and gain open up), and the normal q once s has
- * decayed. q_factor = 1 turns it off. Under the CV model s has mean about
- * 2 / (1 - memory). The IMM and the alpha-beta filter do not use it. */
-struct trk_maneuver_params {
-    trk_real q_factor;  /**< process-noise factor while it fires, >= 1 (1: off) */
-    trk_real memory;    /**< fading memory of the sum, [0, 1) */
-    trk_real threshold; /**< it fires while the sum exceeds this, > 0 */
-};
-
 /** The filter every track runs (with imm.n_models = 0; an IMM tracker runs
  * the IMM of its models). */
 enum trk_filter_kind {
@@ -455,7 +441,6 @@ struct trk_tracker_params {
     enum trk_assoc_method association;                /**< per-track PDA or joint (JIPDA) */
     enum trk_filter_kind filter;                      /**< the track filter: Kalman (default) or
                                                          alpha-beta */
-    struct trk_maneuver_params maneuver;              /**< manoeuvre detection (CV Kalman filter) */
     trk_real max_coord_m;                             /**< surveillance bound: |x_m|, |y_m| of a
                                                          detection at most this, else counted
                                                          (n_rejected_region) and skipped;
@@ -553,6 +538,7 @@ struct trk_track {
         union trk_confirm_state confirm; /**< while tentative (params.confirm.method) */
         union trk_term_state term;       /**< once confirmed (params.term.method) */
     } test;  /**< the confirmation or termination test's state */
+#if TRK_WITH_IMM
     trk_real maneuver_d2;             /**< the survey's manoeuvre statistic (eqs 3.11-3.13):
                                          d2 = nu' S^-1 nu of the last scan's innovation
                                          given a detection, nu = sum_i beta_i nu_i /
@@ -560,10 +546,6 @@ struct trk_track {
                                          sensor's R; chi-square with 2 degrees of freedom
                                          while the model fits (e.g. > 9.21: 1 %); 0 when
                                          nothing was gated or every weight is 0 */
-    trk_real maneuver_sum;            /**< its fading-memory sum s = memory s + d2
-                                         (trk_maneuver_params): the CV filter raises the
-                                         process noise while s > threshold */
-#if TRK_WITH_IMM
     struct trk_imm_state imm;         /**< an IMM track (params.imm.n_models >= 1): its
                                          models' estimates and mode probabilities imm.mu;
                                          x and P above are their combination */

@@ -94,9 +94,6 @@ static const struct layout_row params_rows[] = {
     REAL(P, max_coord_m, 1, "m", "(0, 1e15]"),
     ENUM(P, association, "ASSOC_PDA, ASSOC_JOINT (TRK_WITH_JOINT)"),
     ENUM(P, filter, "FILTER_KALMAN, FILTER_ALPHA_BETA (TRK_WITH_ALPHA_BETA)"),
-    REAL(P, maneuver.q_factor, 1, "", ">= 1 (1: off)"),
-    REAL(P, maneuver.memory, 1, "", "[0, 1)"),
-    REAL(P, maneuver.threshold, 1, "", "> 0"),
 #if TRK_WITH_IMM
     ROW(P, imm, 's', struct trk_imm_params, 1, "imm_params", "", "n_models 0: CV only"),
 #endif
@@ -206,9 +203,8 @@ static const struct layout_row track_rows[] = {
     REAL(T, vis.pcv, 1, "", "[0, 1]"),
     REAL(T, confirm_stat, 1, "", ""),
     REAL(T, term_stat, 1, "", ""),
-    REAL(T, maneuver_d2, 1, "", ">= 0"),
-    REAL(T, maneuver_sum, 1, "", ">= 0"),
 #if TRK_WITH_IMM
+    REAL(T, maneuver_d2, 1, "", ">= 0"),
     REAL(T, imm.mu, TRK_MAX_MODELS, "", "[0, 1]"),
     REAL(T, imm.x, TRK_MAX_MODELS * TRK_IMM_NX, "m, m/s", "per model [x, vx, y, vy]"),
 #endif

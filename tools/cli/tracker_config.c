@@ -212,7 +212,6 @@ static const struct range R_PROB_CC = {0, 1, 0, 0};    /* [0, 1] */
 static const struct range R_PROB_CO = {0, 1, 0, 1};    /* [0, 1) */
 static const struct range R_POS = {0, 1e308, 1, 0};    /* > 0 */
 static const struct range R_NONNEG = {0, 1e308, 0, 0}; /* >= 0 */
-static const struct range R_GE1 = {1, 1e308, 0, 0};    /* >= 1 */
 static const struct range R_ANY = {-1e308, 1e308, 0, 0};
 static const struct range R_COORD = {0, 1e15, 1, 0}; /* TRK_MAX_COORD_M_LIMIT */
 static const struct range R_MAXDT = {1e-6, 1e9, 0, 0}; /* TRK_MAX_DT_S_MIN: 1 us */
@@ -236,7 +235,6 @@ static const char *const KEYS[] = {
     "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
     "max_tentative_scans", "merge_gate_d2", "init_exclusion_d2", "association", "filter", "init.method",
     "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "max_pos_sigma_ratio",
-    "maneuver.q_factor", "maneuver.memory", "maneuver.threshold",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
     "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
     "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.mn.m", "confirm.mn.n",
@@ -402,9 +400,6 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "init.birth_density_per_m2") == 0)
         return get_real(v, R_NONNEG, &p->init.birth_density_per_m2, err, n);
     if (strcmp(key, "max_pos_sigma_ratio") == 0) return get_real(v, R_NONNEG, &p->max_pos_sigma_ratio, err, n);
-    if (strcmp(key, "maneuver.q_factor") == 0) return get_real(v, R_GE1, &p->maneuver.q_factor, err, n);
-    if (strcmp(key, "maneuver.memory") == 0) return get_real(v, R_PROB_CO, &p->maneuver.memory, err, n);
-    if (strcmp(key, "maneuver.threshold") == 0) return get_real(v, R_POS, &p->maneuver.threshold, err, n);
     if (strcmp(key, "max_coord_m") == 0) return get_real(v, R_COORD, &p->max_coord_m, err, n);
     /* visibility (IPDA existence) */
     if (strcmp(key, "visibility") == 0) {
@@ -816,9 +811,6 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     fprintf(f, "init.max_gap_scans = %lu\n", (unsigned long)p->init.max_gap_scans);
     put_num(f, "init.birth_density_per_m2", (double)p->init.birth_density_per_m2);
     put_num(f, "max_pos_sigma_ratio", (double)p->max_pos_sigma_ratio);
-    put_num(f, "maneuver.q_factor", (double)p->maneuver.q_factor);
-    put_num(f, "maneuver.memory", (double)p->maneuver.memory);
-    put_num(f, "maneuver.threshold", (double)p->maneuver.threshold);
     put_num(f, "max_coord_m", (double)p->max_coord_m);
     fprintf(f, "visibility = %d\n", p->track_visibility);
     put_num(f, "visibility.pv0", (double)p->visibility.pv0);
@@ -906,10 +898,6 @@ void tcfg_help(FILE *f)
             "                                     >= 0, 0 = visibility.pv0 (1e-9)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
             "                                    sensor's, 0 = off (20)\n"
-            "  maneuver.q_factor = F             process noise F q while a track's manoeuvre sum is\n"
-            "                                    over the threshold, >= 1, 1 = off (1)\n"
-            "    maneuver.memory, .threshold     the sum s = memory s + d2, [0,1) (0.5); fires when\n"
-            "                                    s > threshold, > 0 (12)\n"
             "  max_coord_m = M                   surveillance bound: a detection with |x| or |y| > M\n"
             "                                    is counted and skipped, (0,1e15] (1e8)\n"
             "  visibility = 0|1                  track each track's visibility / existence (1)\n"
