@@ -12,7 +12,9 @@
  *   - a second scan at the same time neither mixes nor moves; a model that
  *     cannot be reached gates nothing;
  *   - a turning target: the turn model takes the mode probability, and the
- *     IMM track's position error over the turn is below the CV track's.
+ *     IMM track's position error over the turn is below the CV track's;
+ *   - two close targets' IMM tracks are not merged into one (the merge
+ *     weighs an IMM track with its most probable model's covariance).
  * tests/test_tracker_imm.mk links this program with the library files whose
  * layout depends on the knob compiled in the same configuration. */
 #undef TRK_WITH_IMM
@@ -430,6 +432,46 @@ static void test_subnormal_model_weight(void **state)
     }
 }
 
+/* Two targets 40 m apart on parallel straight paths (R = 25 I, P_D 0.8, a
+ * little clutter), IMM tracks of three models, 20 runs of 60 scans: the
+ * merge test weighs an IMM track with its most probable model's covariance,
+ * not the combined one that holds the spread between the models. Measured:
+ * 1 merge, 36 of 40 tracks held at the end (with the combined covariance:
+ * 4 merges). */
+static void test_close_pair_not_merged(void **state)
+{
+    (void)state;
+    uint32_t merged = 0;
+    size_t held = 0;
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        struct trk_tracker_params p;
+        trk_test_sonar_params(&p, 1e-5);
+        TRK_ASSERT_OK(trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)));
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        uint64_t rng = seed;
+        for (int k = 0; k < 60; k++) {
+            struct trk_detection d[8];
+            size_t n = 0;
+            for (int t = 0; t < 2; t++)
+                if (trk_test_urand(&rng) < 0.8) {
+                    const double ex = 5 * trk_test_nrand(&rng), ey = 5 * trk_test_nrand(&rng);
+                    d[n++] = trk_test_det_at(10 * DT_S * k + ex, 40 * t + ey);
+                }
+            for (int c = 0; c < 4; c++) {
+                const double cx = 3000 * trk_test_urand(&rng) - 500, cy = 1000 * trk_test_urand(&rng) - 500;
+                d[n++] = trk_test_det_at(cx, cy);
+            }
+            const struct trk_scan s = {SCAN_US(k), 0, n, d};
+            struct trk_scan_report rep;
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+            merged += rep.n_merged;
+        }
+        held += trk_test_count_confirmed(&tk);
+    }
+    assert_true(merged <= 2);
+    assert_true(held >= 34);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -441,6 +483,7 @@ int main(void)
         cmocka_unit_test(test_same_time_and_unreachable),
         cmocka_unit_test(test_turn),
         cmocka_unit_test(test_subnormal_model_weight),
+        cmocka_unit_test(test_close_pair_not_merged),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
