@@ -156,7 +156,8 @@ static void imm_gate_one(struct trk_tracker *t, const struct trk_scan *scan, str
  * (no weights yet: imm_weights). A detection with the sensor's covariance
  * is tested against the models' ellipses only inside the box that bounds
  * all their bounding boxes of d2 <= g (gating's index), then the ones with
- * their own covariance. */
+ * their own covariance inside the box of the models' boxes for the largest
+ * of those covariances (their index). */
 static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan, size_t off,
                     struct trk_i_pda_set *set)
 {
@@ -178,7 +179,22 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
     size_t j0, j1;
     while (!gt.full && trk_i_grid_next(&box, &j0, &j1)) /* a cut set is dropped: stop at the cut */
         for (size_t j = j0; j < j1 && !gt.full; j++) imm_gate_one(t, scan, &gt, &b, j);
-    for (size_t j = t->ws.n_shared; j < t->ws.n_valid && !gt.full; j++) imm_gate_one(t, scan, &gt, &b, j);
+    if (t->ws.n_valid > t->ws.n_shared && !gt.full) { /* the own-covariance group: the box of */
+        trk_real lo_x = TRK_REAL_MAX, hi_x = -TRK_REAL_MAX, lo_y = TRK_REAL_MAX, hi_y = -TRK_REAL_MAX;
+        for (int m = 0; m < b.n_models; m++) { /* the models' own-covariance boxes */
+            if (!(b.wx[m] >= 0)) continue;
+            trk_real owx, owy;
+            own_box_widths(t, inn[m].s, t->r[scan->sensor_id], gt.g, &owx, &owy);
+            if (inn[m].z_pred[ZX] - owx < lo_x) lo_x = inn[m].z_pred[ZX] - owx;
+            if (inn[m].z_pred[ZX] + owx > hi_x) hi_x = inn[m].z_pred[ZX] + owx;
+            if (inn[m].z_pred[ZY] - owy < lo_y) lo_y = inn[m].z_pred[ZY] - owy;
+            if (inn[m].z_pred[ZY] + owy > hi_y) hi_y = inn[m].z_pred[ZY] + owy;
+        }
+        struct trk_i_grid_box obox = ws_box_own(t, lo_x, hi_x, lo_y, hi_y);
+        while (!gt.full && lo_x <= hi_x && trk_i_grid_next(&obox, &j0, &j1))
+            for (size_t j = t->ws.n_shared + j0; j < t->ws.n_shared + j1 && !gt.full; j++)
+                imm_gate_one(t, scan, &gt, &b, j);
+    }
     set->m_gated = set->n;
     return gt.full;
 }

@@ -108,13 +108,35 @@ static struct trk_i_grid_box ws_box(const struct trk_tracker *t, trk_real lo_x, 
     return trk_i_grid_box(&t->ws.grid, t->ws.cell_end, lo_x, hi_x, lo_y, hi_y);
 }
 
+/* The box query of the own-covariance group (ws.grid_own): its points'
+ * positions count from n_shared. */
+static struct trk_i_grid_box ws_box_own(const struct trk_tracker *t, trk_real lo_x, trk_real hi_x, trk_real lo_y,
+                                        trk_real hi_y)
+{
+    return trk_i_grid_box(&t->ws.grid_own, t->ws.cell_end_own, lo_x, hi_x, lo_y, hi_y);
+}
+
+/* The half-widths of the box that holds d2 <= g of every own-covariance
+ * detection for a prediction of innovation covariance s with the sensor's
+ * R r: H P H' = s - r plus the group's largest variance, a little wider
+ * for the rounding of s - r (own_box then tests each exactly). */
+static void own_box_widths(const struct trk_tracker *t, const trk_real *s, const trk_real *r, trk_real g,
+                           trk_real *wx, trk_real *wy)
+{
+    const trk_real pad = 1 + 16 * TRK_REAL_EPS;
+    const trk_real hx = s[S(ZX, ZX)] - r[S(ZX, ZX)], hy = s[S(ZY, ZY)] - r[S(ZY, ZY)];
+    *wx = trk_sqrt(g * ((hx > 0 ? hx : 0) + t->ws.own_var_max_m2[0])) * pad;
+    *wy = trk_sqrt(g * ((hy > 0 ? hy : 0) + t->ws.own_var_max_m2[1])) * pad;
+}
+
 /* Gate the valid detections into the track's gated set (workspace pairs
  * cand, w = ln e_i from pair off on, z and r_own from 0): the bounding box of
  * the ellipse d2 <= g (cheap: the detections with the sensor's covariance
  * share S and its box), then the ellipse (gate_ellipse). g =
  * init_exclusion_d2 for a confirmed track, else gamma. The set holds the
  * shared-covariance detections first (n_shared), then the own-covariance
- * ones, each in workspace order. 1 when the pairs from off on could not hold
+ * ones (through their own index, in a box wide enough for the largest of
+ * their covariances), each in workspace order. 1 when the pairs from off on could not hold
  * the whole set (gating then stops: the caller drops a cut set, and the
  * track is gated again alone, which marks the exclusion zone), else 0. */
 static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
@@ -137,11 +159,18 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
                 gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
             }
         }
-    for (size_t j = n_shared; j < n_valid && !gt.full; j++) {
-        const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
-        trk_real r_j[NZ * NZ], l_inv[NZ * NZ], log_det;
-        if (tentative && used[j] == USED_CONFIRMED) continue;
-        if (own_box(t, scan, pp, j, gt.g, nu, r_j, l_inv, &log_det)) gate_ellipse(t, &gt, j, nu, l_inv, log_det, r_j);
+    if (n_valid > n_shared && !gt.full) { /* the own-covariance group through its index */
+        trk_real owx, owy;
+        own_box_widths(t, inn->s, t->r[scan->sensor_id], gt.g, &owx, &owy);
+        struct trk_i_grid_box obox = ws_box_own(t, zx - owx, zx + owx, zy - owy, zy + owy);
+        while (!gt.full && trk_i_grid_next(&obox, &j0, &j1))
+            for (size_t j = n_shared + j0; j < n_shared + j1 && !gt.full; j++) {
+                const trk_real nu[NZ] = {t->ws.x[j] - zx, t->ws.y[j] - zy};
+                trk_real r_j[NZ * NZ], l_inv[NZ * NZ], log_det;
+                if (tentative && used[j] == USED_CONFIRMED) continue;
+                if (own_box(t, scan, pp, j, gt.g, nu, r_j, l_inv, &log_det))
+                    gate_ellipse(t, &gt, j, nu, l_inv, log_det, r_j);
+            }
     }
     set->m_gated = set->n;
     return gt.full;

@@ -11,7 +11,7 @@
 #include "tracker_index_impl.h"
 #include "tracker_thin_impl.h"
 
-static void order_by_grid(struct trk_tracker *t);
+static void order_by_grid(struct trk_tracker *t, const struct trk_scan *scan);
 
 /* Take scan detection i into the workspace, or count why not
  * (detection_usable). */
@@ -36,8 +36,8 @@ static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, s
 
 /* The valid detections into the workspace: those with the sensor's
  * covariance first [0, n_shared), in gating's 2-D index (ws.grid,
- * src/grid_impl.h), own-covariance ones after, in scan
- * order; rejections are counted. A scan beyond capacity loads the ones
+ * src/grid_impl.h), own-covariance ones after, in their own index
+ * (ws.grid_own); rejections are counted. A scan beyond capacity loads the ones
  * thin_select kept (their scan indices, ascending, in ws.cand), the model
  * of what it kept into *th. The amplitudes (dB) are then doubled (see
  * clutter_look in track_commit_impl.h). */
@@ -60,7 +60,7 @@ static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk
         if (!own) t->ws.n_shared = t->ws.n_valid;
     }
     rep->n_kept = (uint32_t)t->ws.n_valid;
-    order_by_grid(t);
+    order_by_grid(t, scan);
     for (size_t k = 0; k + 1 < t->ws.n_amp; k++) t->ws.amp_db[t->ws.n_amp + k] = t->ws.amp_db[k];
 }
 
@@ -75,34 +75,52 @@ static void ws_move(struct trk_tracker *t, size_t j, size_t k)
     t->ws.amp_pos[j] = t->ws.amp_pos[k];
 }
 
-/* The shared-covariance group [0, n_shared) in gating's 2-D index, once
- * per scan (ws.grid, grid_order: O(n) for spread positions): position j
- * takes detection idx[j], cycle by cycle in place, with used[] (all 0 at
- * load) marking the positions filled. */
-static void order_by_grid(struct trk_tracker *t)
+/* Workspace positions [lo, lo + n) in the 2-D index g (grid_order: O(n)
+ * for spread positions; its cells' ends in end[], its positions counted
+ * from lo): position lo + j takes detection lo + idx[j], cycle by cycle in
+ * place, with used[] (all 0 at load) marking the positions filled. */
+static void order_range_by_grid(struct trk_tracker *t, size_t lo, size_t n, struct trk_i_grid *g, uint16_t *end)
 {
-    const size_t n = t->ws.n_shared;
     uint16_t *idx = t->ws.cand; /* free until the first track is gated */
+    uint8_t *used = t->ws.used + lo;
     for (size_t j = 0; j < n; j++) idx[j] = (uint16_t)j;
-    grid_order(t, t->ws.x, t->ws.y, idx, n, &t->ws.grid, t->ws.cell_end);
+    grid_order(t, t->ws.x + lo, t->ws.y + lo, idx, n, g, end);
     for (size_t i = 0; i < n; i++) {
-        if (t->ws.used[i] || idx[i] == i) continue;
-        const trk_real x = t->ws.x[i], y = t->ws.y[i], llr = t->ws.log_lr[i];
-        const uint16_t src = t->ws.src[i];
-        const int16_t amp = t->ws.amp_pos[i];
+        if (used[i] || idx[i] == i) continue;
+        const trk_real x = t->ws.x[lo + i], y = t->ws.y[lo + i], llr = t->ws.log_lr[lo + i];
+        const uint16_t src = t->ws.src[lo + i];
+        const int16_t amp = t->ws.amp_pos[lo + i];
         size_t j = i;
         for (size_t k = idx[j]; k != i; j = k, k = idx[j]) {
-            ws_move(t, j, k);
-            t->ws.used[j] = 1;
+            ws_move(t, lo + j, lo + k);
+            used[j] = 1;
         }
-        t->ws.x[j] = x;
-        t->ws.y[j] = y;
-        t->ws.src[j] = src;
-        t->ws.log_lr[j] = llr;
-        t->ws.amp_pos[j] = amp;
-        t->ws.used[j] = 1;
+        t->ws.x[lo + j] = x;
+        t->ws.y[lo + j] = y;
+        t->ws.src[lo + j] = src;
+        t->ws.log_lr[lo + j] = llr;
+        t->ws.amp_pos[lo + j] = amp;
+        used[j] = 1;
     }
-    for (size_t j = 0; j < n; j++) t->ws.used[j] = 0;
+    for (size_t j = 0; j < n; j++) used[j] = 0;
+}
+
+/* Gating's two indices, once per scan: the shared-covariance group [0,
+ * n_shared) in ws.grid, the own-covariance group in ws.grid_own with the
+ * largest of its variances, which bounds a track's box for any of them
+ * (S_j = H P H' + R_j). */
+static void order_by_grid(struct trk_tracker *t, const struct trk_scan *scan)
+{
+    const size_t n_shared = t->ws.n_shared, n_own = t->ws.n_valid - n_shared;
+    order_range_by_grid(t, 0, n_shared, &t->ws.grid, t->ws.cell_end);
+    t->ws.own_var_max_m2[0] = t->ws.own_var_max_m2[1] = 0;
+    if (n_own == 0) return;
+    order_range_by_grid(t, n_shared, n_own, &t->ws.grid_own, t->ws.cell_end_own);
+    for (size_t j = n_shared; j < t->ws.n_valid; j++) {
+        const trk_real *c = scan->detections[t->ws.src[j]].cov_m2; /* checked at load */
+        if (c[TRK_COV2_XX] > t->ws.own_var_max_m2[0]) t->ws.own_var_max_m2[0] = c[TRK_COV2_XX];
+        if (c[TRK_COV2_YY] > t->ws.own_var_max_m2[1]) t->ws.own_var_max_m2[1] = c[TRK_COV2_YY];
+    }
 }
 
 #endif

@@ -701,6 +701,12 @@ struct trk_tracker {
         struct trk_i_grid grid;                                /**< gating's index of [0, n_shared), */
         uint16_t cell_end[TRK_MAX_DETECTIONS];                 /**< its cells' ends (after the
                                                                   updates: the merge's index) */
+        struct trk_i_grid grid_own;                            /**< gating's index of the own-
+                                                                  covariance group [n_shared,
+                                                                  n_valid), positions from 0, */
+        uint16_t cell_end_own[TRK_MAX_DETECTIONS];             /**< its cells' ends, */
+        trk_real own_var_max_m2[2];                            /**< and the group's largest
+                                                                  R_xx, R_yy (its boxes' bound) */
         /** @{ */
         trk_real x[TRK_MAX_DETECTIONS], y[TRK_MAX_DETECTIONS]; /**< their positions */
         /** @} */

@@ -22,6 +22,9 @@
  *   scan_64x256_imm   (TRK_WITH_IMM builds) scan_64x256_cv, the default scans
  *                     of this build, against scan_64x256_imm3, every track an
  *                     IMM track of three models, same run, and their ratio
+ *   scan_64x256_own   scan_64x256_shared against scan_64x256_own_cov, the same
+ *                     detections each with its own covariance (a sonar's
+ *                     polar conversion), same run, and their ratio
  *   scan_64x256_ab    (TRK_WITH_ALPHA_BETA builds) scan_64x256_kalman against
  *                     scan_64x256_alpha_beta, every track on the constant-gain
  *                     filter, same run, and their ratio
@@ -171,6 +174,7 @@ TRK_BENCH(pda_update)
 struct scan_job {
     struct trk_tracker tk;
     struct trk_detection det[N_SCANS][N_DET_OVER]; /* the first N_DET: scan_64x256's */
+    struct trk_detection det_own[N_SCANS][N_DET];  /* the same with their own covariances */
     struct trk_scan scan[N_SCANS];
     struct trk_scan_report rep;
     double n_updated; /* track updates in the timed scans (all repetitions) */
@@ -178,7 +182,7 @@ struct scan_job {
 
 /* The scans' configurations: the defaults (joint association), the same
  * with the per-track PDA, and the M/N path. */
-enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER, SCAN_AB };
+enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER, SCAN_AB, SCAN_OWN };
 
 /* Detections per scan of a configuration. */
 static size_t scan_n_det(enum scan_cfg cfg) { return cfg == SCAN_OVER ? N_DET_OVER : N_DET; }
@@ -231,6 +235,17 @@ static struct scan_job *scan_job_new(void)
         j->scan[k].n_detections = N_DET;
         j->scan[k].detections = j->det[k];
     }
+    for (int k = 0; k < N_SCANS; k++) /* scan_64x256_own: the same detections as a sonar 2 km */
+        for (int i = 0; i < N_DET; i++) {  /* west of the area reports them, each with its covariance */
+            const struct trk_detection *d = &j->det[k][i];
+            const double ex = d->x_m + 2000, ey = d->y_m - 500;
+            struct trk_detection *o = &j->det_own[k][i];
+            if (trk_detection_from_polar((trk_real)hypot(ex, ey), (trk_real)atan2(ex, ey), TRK_REAL_C(1.0),
+                                         TRK_REAL_C(0.0005), -2000, 500, o) != TRK_OK)
+                memset(o, 0, sizeof *o);
+            o->x_m = d->x_m; /* the same positions: only the covariances differ */
+            o->y_m = d->y_m;
+        }
     for (int k = 0; k < N_SCANS; k++) /* scan_64x1024's extra clutter, after: the rest unchanged */
         for (int i = N_DET; i < N_DET_OVER; i++) {
             struct trk_detection *d = &j->det[k][i];
@@ -244,9 +259,10 @@ static struct scan_job *scan_job_new(void)
 /* One repetition: init, warm up (targets first, so all 64 tracks exist),
  * then the timed full scans; ns per scan, or -1. *n_conf: confirmed tracks
  * at the end. */
-static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, size_t n_det, int *n_conf)
+static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, size_t n_det, int own, int *n_conf)
 {
     if (trk_tracker_init(&j->tk, p) != TRK_OK) return -1;
+    for (int k = 0; k < N_SCANS; k++) j->scan[k].detections = own ? j->det_own[k] : j->det[k];
     for (int k = 0; k < 4; k++) {
         j->scan[k].time_us = (int64_t)k * 1000000;
         j->scan[k].n_detections = N_TGT;
@@ -287,7 +303,7 @@ static void scan_bench(const char *const *names, const enum scan_cfg *cfg, int n
             struct trk_tracker_params p;
             scan_params(cfg[c], &p);
             j->n_updated = 0;
-            const double per = scan_rep(j, &p, scan_n_det(cfg[c]), &n_conf[c]);
+            const double per = scan_rep(j, &p, scan_n_det(cfg[c]), cfg[c] == SCAN_OWN, &n_conf[c]);
             if (per >= 0 && per < best[c]) best[c] = per;
             updated[c] += j->n_updated;
         }
@@ -376,6 +392,17 @@ TRK_BENCH(scan_64x256_imm)
 #else
     bench_print("scan_64x256_imm_skipped_no_imm", 0, "-");
 #endif
+}
+
+/* Gating with the detections' own covariances: the same scans, every
+ * detection with its own covariance (a sonar 2 km west, sigma_r 1 m,
+ * sigma_b 0.5 mrad: 1-1.7 m across, as the shared R of 1 m^2), against the
+ * shared-covariance scans, alternating in the same run. */
+TRK_BENCH(scan_64x256_own)
+{
+    static const char *const names[] = {"scan_64x256_shared", "scan_64x256_own_cov"};
+    static const enum scan_cfg cfg[] = {SCAN_DEFAULT, SCAN_OWN};
+    scan_bench(names, cfg, 2);
 }
 
 /* The alpha-beta track filter: the same scans with every track on constant
