@@ -24,12 +24,13 @@
 #                         TEXT_LIMIT (35840) in a build without
 #                         joint association (TRK_WITH_JOINT=0, target
 #                         cortex-m4f-nojoint)
-#                       - the whole libtrk.a's .text exceeds LIB_TEXT_LIMIT
-#                         (52224): every firmware module, including the joint
-#                         association (jpda.c) and IMM (imm.c) estimators a
-#                         firmware links only when it calls them. The
+#                       The whole libtrk.a's .text is reported, not gated: a
+#                         firmware pays only for what it links (every module
+#                         is in the archive, the alpha-beta steady state and
+#                         the estimators a firmware links only when it calls
+#                         them included), so the budgets are the images'. The
 #                         design-time analysis code (q2 lookup, MRE, TOC, ROC,
-#                         CRLB) is in libtrk_perf.a, reported apart, not gated.
+#                         CRLB) is in libtrk_perf.a, reported apart.
 #
 # Stack method (tools/scripts/stack_ci.awk, stack_elf.awk):
 #   1. every cross object is compiled with -fstack-usage -fcallgraph-info=su:
@@ -61,12 +62,6 @@ STACK_LIMIT ?= 2048
 TEXT_LIMIT ?= 35840
 TEXT_LIMIT_JOINT ?= 41984
 RAM_LIMIT ?= 65536
-# 40 KB until two-point initiation, the existence tests and the complete
-# detection model (+3.8 KB), 44 KB until the tracker's joint association
-# (+3.5 KB), 48 KB until the thinning of scans beyond capacity (+2.6 KB),
-# 50 KB until the three-point existence of a refused pair's continuation
-# and the covariance bound on the prediction (+0.9 KB)
-LIB_TEXT_LIMIT ?= 52224
 SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
 TARGET_cortex-m4f_ARCH := arm
 TARGET_cortex-m4f-O2_ARCH := arm
@@ -130,7 +125,7 @@ size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	@awk '/^\.s?(data|bss)/ && $$2 > 0 { print "size-check: static data in libtrk: " $$0; bad = 1 } END { exit bad }' \
 	  build/cross/cortex-m4f/size-A.txt
 	@awk -v slim=$(STACK_LIMIT) -v rlim=$(RAM_LIMIT) -v tlim=$(TEXT_LIMIT) -v tjlim=$(TEXT_LIMIT_JOINT) \
-	  -v llim=$(LIB_TEXT_LIMIT) ' \
+	  ' \
 	  function hex(s,   i, v) { v = 0; s = tolower(s); for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v } \
 	  FILENAME ~ /-ab\/stack.txt$$/ { split($$0, f, "\t"); if (f[1] == "trk_tracker_process_scan") { sta = f[2] + 0; patha = f[5] } next } \
 	  FILENAME ~ /-ab\/fw-footprint/ && $$1 == "libtrk" { fwa = $$2 + 0; next } \
@@ -150,7 +145,7 @@ size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	      ram, sz["trk_sizeof_tracker"], sz["trk_sizeof_scan_detections"], st, rlim; \
 	    printf "size-check cortex-m4f: libtrk .text in a typical firmware image %d B (limit %d); no .data/.bss\n", fw, tjlim; \
 	    printf "size-check cortex-m4f: the same without joint association (TRK_WITH_JOINT=0) %d B (limit %d)\n", fwn, tlim; \
-	    printf "size-check cortex-m4f: the whole libtrk.a .text %d B (limit %d; analysis modules in libtrk_perf.a)\n", lib, llim; \
+	    printf "size-check cortex-m4f: the whole libtrk.a .text %d B (reported, not gated: an image links what it calls; analysis modules in libtrk_perf.a)\n", lib; \
 	    printf "size-check cortex-m4f-imm (TRK_WITH_IMM=1, 3 models): stack of trk_tracker_process_scan %d B (limit %d); tracker %d B (%d without IMM; track %d B, %d without); libtrk .text in a typical image %d B\n", \
 	      sti, slim, szi["trk_sizeof_tracker"], sz["trk_sizeof_tracker"], szi["trk_sizeof_track"], sz["trk_sizeof_track"], fwi; \
 	    printf "size-check cortex-m4f-ab (TRK_WITH_ALPHA_BETA=1): stack of trk_tracker_process_scan %d B (limit %d); libtrk .text in a typical image %d B\n", \
@@ -161,7 +156,6 @@ size-check: cross-cortex-m4f $(TEST_EXTRA_DEPS_size-check)
 	    if (ram > rlim) { print "size-check: FAILED RAM"; bad = 1 } \
 	    if (fw > tjlim) { print "size-check: FAILED .text"; bad = 1 } \
 	    if (fwn > tlim) { print "size-check: FAILED .text without joint association"; bad = 1 } \
-	    if (lib > llim) { print "size-check: FAILED .text of libtrk.a"; bad = 1 } \
 	    exit bad }' build/cross/cortex-m4f/stack.txt build/cross/cortex-m4f/sizeof-default.txt \
 	  build/cross/cortex-m4f/fw-footprint.txt build/cross/cortex-m4f-nojoint/fw-footprint.txt \
 	  build/cross/cortex-m4f-imm/stack.txt build/cross/cortex-m4f-imm/sizeof-default.txt \
