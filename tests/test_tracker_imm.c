@@ -73,13 +73,7 @@ static void run_pair(enum trk_assoc_method assoc)
     uint64_t rng = 7;
     for (int k = 0; k < 30; k++) {
         struct trk_detection d[8];
-        size_t n = 0;
-        for (int t = 0; t < 2; t++)
-            if (trk_test_urand(&rng) < 0.8)
-                d[n++] = trk_test_det_at(100 + 5 * DT_S * k + 5 * trk_test_nrand(&rng),
-                                         60 * t + 5 * trk_test_nrand(&rng));
-        for (int c = 0; c < 3; c++)
-            d[n++] = trk_test_det_at(1000 * trk_test_urand(&rng) - 200, 600 * trk_test_urand(&rng) - 300);
+        const size_t n = trk_test_pair_scan(k, DT_S, 60, 3, &rng, d);
         const struct trk_scan scan = {SCAN_US(k), 0, n, d};
         struct trk_scan_report r1, r2;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &r1));

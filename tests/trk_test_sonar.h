@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "trk/tracker.h"
+#include "trk_test.h"
 
 static inline void trk_test_sonar_params(struct trk_tracker_params *p, double lambda)
 {
@@ -36,6 +37,26 @@ static inline struct trk_detection trk_test_det_at(double x, double y)
     d.x_m = (trk_real)x;
     d.y_m = (trk_real)y;
     return d;
+}
+
+/* Scan k of two targets dy_m apart moving +x at 5 m/s (each detected with
+ * probability 0.8, sigma 5 m) and n_clutter uniform clutter detections over
+ * [-200, 800] x [-300, 300] m, a scan every dt_s, into d: their count. The
+ * draws in a fixed order (x before y), whatever the compiler. */
+static inline size_t trk_test_pair_scan(int k, double dt_s, double dy_m, int n_clutter, uint64_t *rng,
+                                        struct trk_detection *d)
+{
+    size_t n = 0;
+    for (int t = 0; t < 2; t++)
+        if (trk_test_urand(rng) < 0.8) {
+            const double ex = 5 * trk_test_nrand(rng), ey = 5 * trk_test_nrand(rng);
+            d[n++] = trk_test_det_at(100 + 5 * dt_s * k + ex, dy_m * t + ey);
+        }
+    for (int c = 0; c < n_clutter; c++) {
+        const double cx = 1000 * trk_test_urand(rng) - 200, cy = 600 * trk_test_urand(rng) - 300;
+        d[n++] = trk_test_det_at(cx, cy);
+    }
+    return n;
 }
 
 #endif
