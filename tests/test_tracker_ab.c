@@ -85,7 +85,7 @@ static void test_converged_is_cv(void **state)
     init_pair(1, 1e-12);
     uint64_t rng = 11;
     struct trk_cv_steady ss;
-    TRK_ASSERT_OK(trk_cv_steady_state(TRK_REAL_C(DT_S), TRK_REAL_C(1e-3), 25, &ss));
+    TRK_ASSERT_OK(trk_cv_steady_state((trk_real)DT_S, TRK_REAL_C(1e-3), 25, &ss));
     for (int k = 0; k < 200; k++) {
         one_target_scan(k, &rng, 1);
         if (k == 2) { /* the first update: from two-point differencing, the Kalman filter's own */
@@ -124,7 +124,7 @@ static void test_one_update_by_hand(void **state)
     assert_non_null(only_track(&tk_ab));
     struct trk_track before = *only_track(&tk_ab);
     struct trk_cv_steady ss;
-    TRK_ASSERT_OK(trk_cv_steady_state(TRK_REAL_C(DT_S), TRK_REAL_C(1e-3), 25, &ss));
+    TRK_ASSERT_OK(trk_cv_steady_state((trk_real)DT_S, TRK_REAL_C(1e-3), 25, &ss));
     /* scan 20, detected: x_p = x + T v; x = x_p + alpha nu, v += (beta / T) nu */
     uint64_t peek = rng;
     const double zx = 100 + 3 * DT_S * 20 + 5 * trk_test_nrand(&peek);
