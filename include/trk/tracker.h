@@ -693,7 +693,9 @@ struct trk_tracker {
     struct trk_i_cand_run run[TRK_MAX_CANDIDATE_SCANS];  /**< the candidates' runs (a ring) */
     struct trk_candidate cand[TRK_MAX_CANDIDATES];  /**< initiation candidates, run after run */
     uint16_t cand_cell_end[TRK_MAX_CANDIDATES];  /**< per candidate: the end of its cell in its run's index */
-    /** per-scan workspace (contents meaningless between calls) */
+    /** per-scan workspace (contents meaningless between calls, but for the
+     * alpha-beta filter's steady-state cache ab_steady, which its key
+     * ab_dt_us, ab_sensor keeps valid) */
     struct {
         size_t n_valid;                                        /**< valid detections, */
         size_t n_shared;                                       /**< [0, n_shared) with the sensor's
