@@ -14,9 +14,12 @@
  * steady-state S); beta0 and the spread of the innovations change no
  * covariance. Hence, and as the survey says of constant gains, a missed
  * scan does not widen the gate (a longer gap does: its steady state is the
- * gap's), and the sensor's xy correlation enters the gate but not the gains.
- * A scan at the track's own time (two sensors at one time) leaves the state
- * and covariance as they are: the steady state of a zero gap is a gain of 0.
+ * gap's), and the sensor's xy correlation and a detection's own covariance
+ * enter the gate and the PDA's weights but not the gains (those of the
+ * sensor's variances per axis).
+ * A scan at the track's own time (two sensors at one time) has no steady
+ * state (a zero gap's gain is 0): it takes one Kalman update of the
+ * track's own covariance, as the Kalman filter would.
  *
  * A young track is not yet in the steady state: its start (two-point
  * differencing) is far less certain, and with the steady-state gains from
@@ -103,8 +106,23 @@ static trk_status ab_predict(struct trk_tracker *t, const struct trk_track *tr, 
     const trk_real *r = t->r[scan->sensor_id];
     for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
     for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
-    pr->ab[0].alpha = pr->ab[1].alpha = 0; /* no gain over no time */
-    if (dt_us > 0) {
+    if (dt_us <= 0) { /* a second sensor at the track's time: one Kalman update of its covariance */
+        for (int a = 0; a < 2; a++) {
+            const int ip = a == 0 ? X : Y, iv = a == 0 ? VX : VY;
+            const trk_real pp = tr->p[P(ip, ip)], pv = tr->p[P(ip, iv)], vv = tr->p[P(iv, iv)];
+            const trk_real c = pp + r[a == 0 ? S(ZX, ZX) : S(ZY, ZY)];
+            struct trk_cv_steady *g = &pr->ab[a];
+            g->alpha = pp / c;
+            g->k_vel_per_s = pv / c;
+            g->beta = 0;
+            g->pred[0] = pp;
+            g->pred[1] = pv;
+            g->pred[2] = vv;
+            g->post[0] = (1 - g->alpha) * pp;
+            g->post[1] = (1 - g->alpha) * pv;
+            g->post[2] = vv - g->k_vel_per_s * pv;
+        }
+    } else {
         const trk_status st = ab_steady(t, scan, dt_us, dt);
         if (st != TRK_OK) return st;
         for (int a = 0; a < 2; a++) {

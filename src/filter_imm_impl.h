@@ -184,7 +184,7 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
         for (int m = 0; m < b.n_models; m++) { /* the models' own-covariance boxes */
             if (!(b.wx[m] >= 0)) continue;
             trk_real owx, owy;
-            own_box_widths(t, inn[m].s, t->r[scan->sensor_id], gt.g, &owx, &owy);
+            own_box_widths(t, t->ws.imm.s.p[m], gt.g, &owx, &owy);
             if (inn[m].z_pred[ZX] - owx < lo_x) lo_x = inn[m].z_pred[ZX] - owx;
             if (inn[m].z_pred[ZX] + owx > hi_x) hi_x = inn[m].z_pred[ZX] + owx;
             if (inn[m].z_pred[ZY] - owy < lo_y) lo_y = inn[m].z_pred[ZY] - owy;

@@ -117,16 +117,16 @@ static struct trk_i_grid_box ws_box_own(const struct trk_tracker *t, trk_real lo
 }
 
 /* The half-widths of the box that holds d2 <= g of every own-covariance
- * detection for a prediction of innovation covariance s with the sensor's
- * R r: H P H' = s - r plus the group's largest variance, a little wider
- * for the rounding of s - r (own_box then tests each exactly). */
-static void own_box_widths(const struct trk_tracker *t, const trk_real *s, const trk_real *r, trk_real g,
-                           trk_real *wx, trk_real *wy)
+ * detection for a prediction of covariance p: S_j = H P H' + R_j, so per
+ * axis P's variance plus the group's largest variance, a little wider for
+ * the rounding (own_box then tests each exactly). P itself, not S - R: that
+ * difference loses P when the sensor's R is far larger (by half an ulp of
+ * R, which a relative pad does not cover). */
+static void own_box_widths(const struct trk_tracker *t, const trk_real *p, trk_real g, trk_real *wx, trk_real *wy)
 {
     const trk_real pad = 1 + 16 * TRK_REAL_EPS;
-    const trk_real hx = s[S(ZX, ZX)] - r[S(ZX, ZX)], hy = s[S(ZY, ZY)] - r[S(ZY, ZY)];
-    *wx = trk_sqrt(g * ((hx > 0 ? hx : 0) + t->ws.own_var_max_m2[0])) * pad;
-    *wy = trk_sqrt(g * ((hy > 0 ? hy : 0) + t->ws.own_var_max_m2[1])) * pad;
+    *wx = trk_sqrt(g * (p[P(X, X)] + t->ws.own_var_max_m2[0])) * pad;
+    *wy = trk_sqrt(g * (p[P(Y, Y)] + t->ws.own_var_max_m2[1])) * pad;
 }
 
 /* Gate the valid detections into the track's gated set (workspace pairs
@@ -161,7 +161,7 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
         }
     if (n_valid > n_shared && !gt.full) { /* the own-covariance group through its index */
         trk_real owx, owy;
-        own_box_widths(t, inn->s, t->r[scan->sensor_id], gt.g, &owx, &owy);
+        own_box_widths(t, pp->p, gt.g, &owx, &owy);
         struct trk_i_grid_box obox = ws_box_own(t, zx - owx, zx + owx, zy - owy, zy + owy);
         while (!gt.full && trk_i_grid_next(&obox, &j0, &j1))
             for (size_t j = n_shared + j0; j < n_shared + j1 && !gt.full; j++) {

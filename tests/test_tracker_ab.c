@@ -9,6 +9,8 @@
  *   - a grown-up track's update is the alpha-beta recursion by hand (gains
  *     of trk_cv_steady_state), a missed scan the prediction alone with the
  *     steady state's predicted covariance;
+ *   - a second scan at the track's own time is one Kalman update of its
+ *     covariance;
  *   - two targets in clutter at P_D 0.8 are both held.
  * tests/test_tracker_ab.mk links this program with the scan and the
  * parameter check compiled in the same configuration. */
@@ -154,6 +156,28 @@ static void test_one_update_by_hand(void **state)
     }
 }
 
+/* A second scan at the track's own time (no gap, no steady state): one
+ * Kalman update of the track's own covariance, x += P_xx / (P_xx + r) nu. */
+static void test_same_time_is_a_kalman_update(void **state)
+{
+    (void)state;
+    init_pair(1, 1e-12);
+    uint64_t rng = 5;
+    for (int k = 0; k < 20; k++) one_target_scan(k, &rng, 1);
+    const struct trk_track *tr = only_track(&tk_ab);
+    assert_non_null(tr);
+    const struct trk_track before = *tr;
+    struct trk_detection d = trk_test_det_at(before.x[TRK_CV2_X] + 6, before.x[TRK_CV2_Y] - 4);
+    const struct trk_scan s = {SCAN_US(19), 0, 1, &d};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk_ab, &s, NULL));
+    tr = only_track(&tk_ab);
+    assert_non_null(tr);
+    const double px = before.p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)], py = before.p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)];
+    TRK_ASSERT_NEAR(tr->x[TRK_CV2_X], before.x[TRK_CV2_X] + px / (px + 25) * 6, TRK_TOL(1e-7, 1e-3), 0);
+    TRK_ASSERT_NEAR(tr->x[TRK_CV2_Y], before.x[TRK_CV2_Y] - py / (py + 25) * 4, TRK_TOL(1e-7, 1e-3), 0);
+    assert_true(tr->p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)] < px);
+}
+
 /* Two targets 60 m apart through uniform clutter (3 per scan over 1 km x
  * 600 m), P_D 0.8: the alpha-beta table holds both, near the truth. */
 static void test_two_targets_in_clutter(void **state)
@@ -187,6 +211,7 @@ int main(void)
         cmocka_unit_test(test_params),
         cmocka_unit_test(test_converged_is_cv),
         cmocka_unit_test(test_one_update_by_hand),
+        cmocka_unit_test(test_same_time_is_a_kalman_update),
         cmocka_unit_test(test_two_targets_in_clutter),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
