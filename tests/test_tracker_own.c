@@ -6,8 +6,9 @@
  *     states: both groups' indices order the same points alike);
  *   - a detection whose own covariance is far larger than the others' (a
  *     sonar's cross-range error at long range) reaches the gate of a
- *     precise track 40 m off its prediction: the index's box is bound by
- *     the scan's largest own variance. */
+ *     precise track 70 m off its prediction, two index columns beyond the
+ *     box the other covariances would give: the index's box is bound by the
+ *     scan's largest own variance. */
 #include "trk_test.h"
 #include "trk_test_sonar.h"
 #include "trk/tracker.h"
@@ -58,12 +59,15 @@ static void test_own_r_equals_shared(void **state)
     assert_true(trk_test_count_confirmed(&tk_a) >= 4);
 }
 
-/* One target seen with own R = 4 I (a precise track, small P) among
- * clutter of the same covariance; then its detection arrives 40 m off in x
- * with R = diag(3600, 4): S_j = H P H' + R_j makes d2 about 0.4, so it is in
- * the gate although it lies far outside the box of the other detections'
- * covariances, and the index's box (bound by the scan's largest own
- * variance) must reach it. */
+/* One target seen with own R = 4 I (a precise track, small P) among far
+ * clutter of the same covariance; at scan 20 its detection arrives 70 m
+ * off in x with R = diag(3600, 4): S_j = H P H' + R_j makes d2 about 1.4,
+ * so it is in the gate, with 25 detections of R = 4 I on a lattice 60-160 m
+ * north of the target. The index then has 40 m columns, and the detection
+ * lies two columns east of the box the small covariances alone would give
+ * (about 23 m wide): only a box bound by the scan's largest own variance
+ * reaches it (measured: with the sensor's R in that bound instead, nothing
+ * is gated). */
 static void test_large_own_covariance_reaches_gate(void **state)
 {
     (void)state;
@@ -72,18 +76,19 @@ static void test_large_own_covariance_reaches_gate(void **state)
     TRK_ASSERT_OK(trk_tracker_init(&tk_a, &p));
     uint64_t rng = 9;
     for (int k = 0; k <= 20; k++) {
-        struct trk_detection d[16];
+        struct trk_detection d[32];
         size_t n = 0;
         const double tx = 100 + 5.0 * 4 * k, ty = 50;
         const double ex = 2 * trk_test_nrand(&rng), ey = 2 * trk_test_nrand(&rng);
-        d[n] = trk_test_det_at(tx + (k == 20 ? 40 : ex), ty + (k == 20 ? 0 : ey));
+        d[n] = trk_test_det_at(tx + (k == 20 ? 70 : ex), ty + (k == 20 ? 0 : ey));
         d[n].has_cov = 1;
         d[n].cov_m2[TRK_COV2_XX] = k == 20 ? 3600 : 4;
         d[n].cov_m2[TRK_COV2_XY] = 0;
         d[n].cov_m2[TRK_COV2_YY] = 4;
         n++;
-        for (int c = 0; c < 10; c++) {
-            const double cx = 3000 * trk_test_urand(&rng) - 1000, cy = 3000 * trk_test_urand(&rng) - 1000;
+        for (int c = 0; c < (k == 20 ? 25 : 4); c++) {
+            const double cx = k == 20 ? tx - 100 + 50 * (c % 5) : 3000 * trk_test_urand(&rng) - 1000;
+            const double cy = k == 20 ? ty + 60 + 25 * (c / 5) : 3000 * trk_test_urand(&rng) + 1000;
             d[n] = trk_test_det_at(cx, cy);
             d[n].has_cov = 1;
             d[n].cov_m2[TRK_COV2_XX] = d[n].cov_m2[TRK_COV2_YY] = 4;
