@@ -42,56 +42,104 @@
 #include "track_gate_impl.h"
 #include "track_pred_impl.h"
 
-/* The steady state per axis for gap dt_us at the scan's sensor, from the
- * workspace's cache (the tracks of a scan share one gap: one computation
- * per scan), or computed into it. TRK_E_RANGE beyond the real type. */
+/* One Kalman update on one axis from the predicted covariance m = [pp, pv,
+ * vv] with the sensor's variance r over the gap dt into *g: gains, m, and
+ * the updated covariance. */
+static void ab_kalman_step(const trk_real m[3], trk_real r, trk_real dt, struct trk_cv_steady *g)
+{
+    const trk_real alpha = m[0] / (m[0] + r), k_vel = m[1] / (m[0] + r);
+    g->alpha = alpha;
+    g->k_vel_per_s = k_vel;
+    g->beta = k_vel * dt;
+    g->pred[0] = m[0];
+    g->pred[1] = m[1];
+    g->pred[2] = m[2];
+    g->post[0] = (1 - alpha) * m[0];
+    g->post[1] = (1 - alpha) * m[1];
+    g->post[2] = m[2] - k_vel * m[1];
+}
+
+/* The start-up prediction of a track of h >= 2 points: the least-squares
+ * line through h points dt apart (covariance [2 (2h - 1) / (h (h + 1)),
+ * 6 / (T h (h + 1)), 12 / (T^2 h (h^2 - 1))] r; h = 2 is two-point
+ * differencing) predicted over dt with the CV model of q, into m. */
+static void ab_startup_pred(trk_real dt, trk_real q, trk_real r, uint32_t h, trk_real m[3])
+{
+    const trk_real n = (trk_real)h, c = r / (n * (n + 1));
+    const trk_real pp = 2 * (2 * n - 1) * c, pv = 6 * c / dt, vv = 12 * c / (dt * dt * (n - 1));
+    m[0] = pp + dt * (2 * pv + dt * vv) + q * dt * dt * dt / 3;
+    m[1] = pv + dt * vv + q * dt * dt / 2;
+    m[2] = vv + q * dt;
+}
+
+/* Is the start-up gain of predicted position variance mpp above the
+ * steady state's (mpp / (mpp + r) > alpha)? */
+static int ab_startup_larger(trk_real mpp, trk_real r, const struct trk_cv_steady *ss)
+{
+    return mpp * (1 - ss->alpha) > ss->alpha * r;
+}
+
+/* The smallest h >= 2 whose start-up gain is no larger than the steady
+ * state's (the start-up prediction shrinks as h grows), by bisection over
+ * uint32_t: once per cached gap, so that a grown-up track's update costs no
+ * start-up arithmetic. */
+static uint32_t ab_grown_h(trk_real dt, trk_real q, trk_real r, const struct trk_cv_steady *ss)
+{
+    uint32_t lo = 2, hi = UINT32_MAX; /* the answer is in [lo, hi] */
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        trk_real m[3];
+        ab_startup_pred(dt, q, r, mid, m);
+        if (ab_startup_larger(m[0], r, ss)) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* The steady state per axis for gap dt_us at the scan's sensor, and the
+ * points from which a track takes it, from the workspace's cache (the
+ * tracks of a scan share one gap: one computation per scan), or computed
+ * into it. TRK_E_RANGE beyond the real type. */
 static trk_status ab_steady(struct trk_tracker *t, const struct trk_scan *scan, int64_t dt_us, trk_real dt)
 {
     if (t->ws.ab_dt_us == dt_us && t->ws.ab_sensor == scan->sensor_id) return TRK_OK;
     const trk_real *r = t->r[scan->sensor_id], q = t->params.process_noise_q;
+    const trk_real r_axis[2] = {r[S(ZX, ZX)], r[S(ZY, ZY)]};
     struct trk_cv_steady ss[2];
-    trk_status st = trk_cv_steady_state(dt, q, r[S(ZX, ZX)], &ss[0]);
-    if (st == TRK_OK) st = trk_cv_steady_state(dt, q, r[S(ZY, ZY)], &ss[1]);
-    if (st != TRK_OK) return st;
-    t->ws.ab_steady[0] = ss[0];
-    t->ws.ab_steady[1] = ss[1];
+    for (int a = 0; a < 2; a++) {
+        const trk_status st = trk_cv_steady_state(dt, q, r_axis[a], &ss[a]);
+        if (st != TRK_OK) return st;
+    }
+    for (int a = 0; a < 2; a++) {
+        t->ws.ab_steady[a] = ss[a];
+        t->ws.ab_grown_h[a] = ab_grown_h(dt, q, r_axis[a], &ss[a]);
+    }
     t->ws.ab_dt_us = dt_us;
     t->ws.ab_sensor = scan->sensor_id;
     return TRK_OK;
 }
 
-/* One axis's gains and covariances for this update into *g, from the
- * steady state ss, r the sensor's variance on the axis, h the track's
- * points, p_own its own covariance on the axis [pp, pv, vv] (for h < 2):
- * the steady state, or while the start-up gain is larger, one Kalman step
- * from the least-squares fit of h points at this gap (covariance [2 (2h -
- * 1) / (h (h + 1)), 6 / (T h (h + 1)), 12 / (T^2 h (h^2 - 1))] r). The
- * start-up's predicted M_pp is tested first: its gain is the larger when
- * M_pp / r > alpha_ss / (1 - alpha_ss). */
-static void ab_axis(trk_real dt, trk_real q, trk_real r, uint32_t h, const trk_real p_own[3],
-                    const struct trk_cv_steady *ss, struct trk_cv_steady *g)
+/* One axis's gains and covariances for this update into *g (a): the
+ * steady state once the track has ws.ab_grown_h[a] points; before, one
+ * Kalman step from the start-up prediction (from the track's own covariance
+ * p_own = [pp, pv, vv] predicted over dt while it has fewer than 2 points)
+ * when its gain is the larger. */
+static void ab_axis(const struct trk_tracker *t, int a, trk_real dt, trk_real r, uint32_t h, const trk_real p_own[3],
+                    struct trk_cv_steady *g)
 {
-    trk_real pp = p_own[0], pv = p_own[1], vv = p_own[2];
-    if (h >= 2) {
-        const trk_real n = (trk_real)h, c = r / (n * (n + 1));
-        pp = 2 * (2 * n - 1) * c;
-        pv = 6 * c / dt;
-        vv = 12 * c / (dt * dt * (n - 1));
-    }
-    const trk_real mpp = pp + dt * (2 * pv + dt * vv) + q * dt * dt * dt / 3;
+    const struct trk_cv_steady *ss = &t->ws.ab_steady[a];
+    const trk_real q = t->params.process_noise_q;
     *g = *ss;
-    if (!(mpp * (1 - ss->alpha) > ss->alpha * r)) return; /* grown up: the steady state */
-    const trk_real mpv = pv + dt * vv + q * dt * dt / 2, mvv = vv + q * dt;
-    const trk_real alpha = mpp / (mpp + r), k_vel = mpv / (mpp + r);
-    g->alpha = alpha;
-    g->k_vel_per_s = k_vel;
-    g->beta = k_vel * dt;
-    g->pred[0] = mpp;
-    g->pred[1] = mpv;
-    g->pred[2] = mvv;
-    g->post[0] = (1 - alpha) * mpp;
-    g->post[1] = (1 - alpha) * mpv;
-    g->post[2] = mvv - k_vel * mpv;
+    if (h >= t->ws.ab_grown_h[a]) return; /* grown up: the steady state */
+    trk_real m[3];
+    if (h >= 2) {
+        ab_startup_pred(dt, q, r, h, m);
+    } else {
+        m[0] = p_own[0] + dt * (2 * p_own[1] + dt * p_own[2]) + q * dt * dt * dt / 3;
+        m[1] = p_own[1] + dt * p_own[2] + q * dt * dt / 2;
+        m[2] = p_own[2] + q * dt;
+    }
+    if (ab_startup_larger(m[0], r, ss)) ab_kalman_step(m, r, dt, g);
 }
 
 /* The prediction to the scan time: the state moved by the CV model, the
@@ -105,40 +153,26 @@ static trk_status ab_predict(struct trk_tracker *t, const struct trk_track *tr, 
     const trk_real dt = (trk_real)dt_us * TRK_REAL_C(1e-6);
     const trk_real *r = t->r[scan->sensor_id];
     for (int i = 0; i < NX; i++) pr->x[i] = tr->x[i];
-    for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
     if (dt_us <= 0) { /* a second sensor at the track's time: one Kalman update of its covariance */
-        for (int a = 0; a < 2; a++) {
-            const int ip = a == 0 ? X : Y, iv = a == 0 ? VX : VY;
-            const trk_real pp = tr->p[P(ip, ip)], pv = tr->p[P(ip, iv)], vv = tr->p[P(iv, iv)];
-            const trk_real c = pp + r[a == 0 ? S(ZX, ZX) : S(ZY, ZY)];
-            struct trk_cv_steady *g = &pr->ab[a];
-            g->alpha = pp / c;
-            g->k_vel_per_s = pv / c;
-            g->beta = 0;
-            g->pred[0] = pp;
-            g->pred[1] = pv;
-            g->pred[2] = vv;
-            g->post[0] = (1 - g->alpha) * pp;
-            g->post[1] = (1 - g->alpha) * pv;
-            g->post[2] = vv - g->k_vel_per_s * pv;
-        }
-    } else {
-        const trk_status st = ab_steady(t, scan, dt_us, dt);
-        if (st != TRK_OK) return st;
+        for (int i = 0; i < NX * NX; i++) pr->p[i] = tr->p[i];
         for (int a = 0; a < 2; a++) {
             const int ip = a == 0 ? X : Y, iv = a == 0 ? VX : VY;
             const trk_real own[3] = {tr->p[P(ip, ip)], tr->p[P(ip, iv)], tr->p[P(iv, iv)]};
-            ab_axis(dt, t->params.process_noise_q, r[a == 0 ? S(ZX, ZX) : S(ZY, ZY)], tr->n_hits, own,
-                    &t->ws.ab_steady[a], &pr->ab[a]);
+            ab_kalman_step(own, r[a == 0 ? S(ZX, ZX) : S(ZY, ZY)], 0, &pr->ab[a]);
         }
-        for (int i = 0; i < NX * NX; i++) pr->p[i] = 0;
-        for (int a = 0; a < 2; a++) {
-            const int ip = a == 0 ? X : Y, iv = a == 0 ? VX : VY;
-            pr->x[ip] += dt * pr->x[iv];
-            pr->p[P(ip, ip)] = pr->ab[a].pred[0];
-            pr->p[P(ip, iv)] = pr->p[P(iv, ip)] = pr->ab[a].pred[1];
-            pr->p[P(iv, iv)] = pr->ab[a].pred[2];
-        }
+        return pred_finish(t, scan, pr);
+    }
+    const trk_status st = ab_steady(t, scan, dt_us, dt);
+    if (st != TRK_OK) return st;
+    for (int i = 0; i < NX * NX; i++) pr->p[i] = 0;
+    for (int a = 0; a < 2; a++) {
+        const int ip = a == 0 ? X : Y, iv = a == 0 ? VX : VY;
+        const trk_real own[3] = {tr->p[P(ip, ip)], tr->p[P(ip, iv)], tr->p[P(iv, iv)]};
+        ab_axis(t, a, dt, r[a == 0 ? S(ZX, ZX) : S(ZY, ZY)], tr->n_hits, own, &pr->ab[a]);
+        pr->x[ip] += dt * pr->x[iv];
+        pr->p[P(ip, ip)] = pr->ab[a].pred[0];
+        pr->p[P(ip, iv)] = pr->p[P(iv, ip)] = pr->ab[a].pred[1];
+        pr->p[P(iv, iv)] = pr->ab[a].pred[2];
     }
     return pred_finish(t, scan, pr);
 }

@@ -115,13 +115,33 @@ static trk_real imm_d2_own(struct trk_tracker *t, const struct trk_scan *scan, i
     return trk_i_mahalanobis2(NZ, l_inv, nu);
 }
 
+/* The box [lo_x, hi_x] x [lo_y, hi_y] of several boxes: none yet, and one
+ * more, of centre (cx, cy) and half-widths (wx, wy). */
+struct span {
+    trk_real lo_x, hi_x, lo_y, hi_y;
+};
+
+static struct span span_empty(void)
+{
+    const struct span e = {TRK_REAL_MAX, -TRK_REAL_MAX, TRK_REAL_MAX, -TRK_REAL_MAX};
+    return e;
+}
+
+static void span_add(struct span *b, trk_real cx, trk_real cy, trk_real wx, trk_real wy)
+{
+    if (cx - wx < b->lo_x) b->lo_x = cx - wx;
+    if (cx + wx > b->hi_x) b->hi_x = cx + wx;
+    if (cy - wy < b->lo_y) b->lo_y = cy - wy;
+    if (cy + wy > b->hi_y) b->hi_y = cy + wy;
+}
+
 /* An IMM track's models' gates: per model (of weight > 0) the half-widths
  * of its bounding box of d2 <= g (-1: the model bounds nothing), and the
  * box that bounds them all. */
 struct imm_box {
     int n_models, tentative;
     trk_real wx[TRK_MAX_MODELS], wy[TRK_MAX_MODELS];
-    trk_real lo_x, hi_x, lo_y, hi_y;
+    struct span all; /* the box of the boxes */
 };
 
 /* Workspace detection j into the IMM track's set when some model's
@@ -134,7 +154,7 @@ static void imm_gate_one(struct trk_tracker *t, const struct trk_scan *scan, str
     const trk_real x = t->ws.x[j], y = t->ws.y[j];
     const int own = j >= t->ws.n_shared;
     if ((b->tentative && t->ws.used[j] == USED_CONFIRMED) ||
-        (!own && (x < b->lo_x || x > b->hi_x || y < b->lo_y || y > b->hi_y)))
+        (!own && (x < b->all.lo_x || x > b->all.hi_x || y < b->all.lo_y || y > b->all.hi_y)))
         return;
     trk_real d2 = (trk_real)INFINITY;
     for (int m = 0; m < b->n_models; m++) {
@@ -163,35 +183,28 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
 {
     struct gate gt = gate_begin(t, tr, scan, off, set);
     const struct trk_innovation *inn = t->ws.imm.inn;
-    struct imm_box b = {t->params.imm.n_models, tr->status == TRK_TRACK_TENTATIVE, {0}, {0},
-                        TRK_REAL_MAX, -TRK_REAL_MAX, TRK_REAL_MAX, -TRK_REAL_MAX};
+    struct imm_box b = {t->params.imm.n_models, tr->status == TRK_TRACK_TENTATIVE, {0}, {0}, span_empty()};
     for (int m = 0; m < b.n_models; m++) {
         b.wx[m] = b.wy[m] = -1; /* a model of weight 0 bounds nothing */
         if (!(t->ws.imm.c[m] > 0)) continue;
         b.wx[m] = trk_sqrt(gt.g * inn[m].s[S(ZX, ZX)]);
         b.wy[m] = trk_sqrt(gt.g * inn[m].s[S(ZY, ZY)]);
-        if (inn[m].z_pred[ZX] - b.wx[m] < b.lo_x) b.lo_x = inn[m].z_pred[ZX] - b.wx[m];
-        if (inn[m].z_pred[ZX] + b.wx[m] > b.hi_x) b.hi_x = inn[m].z_pred[ZX] + b.wx[m];
-        if (inn[m].z_pred[ZY] - b.wy[m] < b.lo_y) b.lo_y = inn[m].z_pred[ZY] - b.wy[m];
-        if (inn[m].z_pred[ZY] + b.wy[m] > b.hi_y) b.hi_y = inn[m].z_pred[ZY] + b.wy[m];
+        span_add(&b.all, inn[m].z_pred[ZX], inn[m].z_pred[ZY], b.wx[m], b.wy[m]);
     }
-    struct trk_i_grid_box box = ws_box(t, b.lo_x, b.hi_x, b.lo_y, b.hi_y);
+    struct trk_i_grid_box box = ws_box(t, b.all.lo_x, b.all.hi_x, b.all.lo_y, b.all.hi_y);
     size_t j0, j1;
     while (!gt.full && trk_i_grid_next(&box, &j0, &j1)) /* a cut set is dropped: stop at the cut */
         for (size_t j = j0; j < j1 && !gt.full; j++) imm_gate_one(t, scan, &gt, &b, j);
     if (t->ws.n_valid > t->ws.n_shared && !gt.full) { /* the own-covariance group: the box of */
-        trk_real lo_x = TRK_REAL_MAX, hi_x = -TRK_REAL_MAX, lo_y = TRK_REAL_MAX, hi_y = -TRK_REAL_MAX;
+        struct span own = span_empty();
         for (int m = 0; m < b.n_models; m++) { /* the models' own-covariance boxes */
             if (!(b.wx[m] >= 0)) continue;
             trk_real owx, owy;
             own_box_widths(t, t->ws.imm.s.p[m], gt.g, &owx, &owy);
-            if (inn[m].z_pred[ZX] - owx < lo_x) lo_x = inn[m].z_pred[ZX] - owx;
-            if (inn[m].z_pred[ZX] + owx > hi_x) hi_x = inn[m].z_pred[ZX] + owx;
-            if (inn[m].z_pred[ZY] - owy < lo_y) lo_y = inn[m].z_pred[ZY] - owy;
-            if (inn[m].z_pred[ZY] + owy > hi_y) hi_y = inn[m].z_pred[ZY] + owy;
+            span_add(&own, inn[m].z_pred[ZX], inn[m].z_pred[ZY], owx, owy);
         }
-        struct trk_i_grid_box obox = ws_box_own(t, lo_x, hi_x, lo_y, hi_y);
-        while (!gt.full && lo_x <= hi_x && trk_i_grid_next(&obox, &j0, &j1))
+        struct trk_i_grid_box obox = ws_box_own(t, own.lo_x, own.hi_x, own.lo_y, own.hi_y);
+        while (!gt.full && own.lo_x <= own.hi_x && trk_i_grid_next(&obox, &j0, &j1))
             for (size_t j = t->ws.n_shared + j0; j < t->ws.n_shared + j1 && !gt.full; j++)
                 imm_gate_one(t, scan, &gt, &b, j);
     }

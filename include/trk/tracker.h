@@ -742,6 +742,9 @@ struct trk_tracker {
                                                                   at sensor ab_sensor: a cache,
                                                                   since a scan's tracks share
                                                                   one gap (TRK_WITH_ALPHA_BETA) */
+        uint32_t ab_grown_h[2];                                /**< per axis the points from which
+                                                                  a track takes the steady state
+                                                                  (its start-up gain is no larger) */
         int64_t ab_dt_us;                                      /**< its gap, 0: nothing cached */
         unsigned ab_sensor;                                    /**< its sensor */
 #if TRK_WITH_IMM
