@@ -80,6 +80,15 @@
 #define TRK_MAX_SENSORS 4
 #endif
 
+/** Points of a sensor's detection-probability profile over range
+ * (trk_pd_profile, trk/tracker.h): 16 points hold a transmission-loss
+ * curve from the near field to the far edge to within a few hundredths of
+ * P_D (interpolated linearly). Each point costs two trk_real per sensor in
+ * the tracker's parameters. */
+#ifndef TRK_PD_PROFILE_MAX
+#define TRK_PD_PROFILE_MAX 16
+#endif
+
 /** Largest state and measurement dimension of the general linear-Gaussian
  * functions (kalman.h, gate.h, pda.h). The tracker itself runs the 2-D
  * constant-velocity model (4 states, 2 measurements). */
@@ -255,6 +264,9 @@
 #endif
 #if TRK_MAX_SENSORS < 1 || TRK_MAX_SENSORS > 255
 #error "TRK_MAX_SENSORS must be in 1..255 (sensor ids are uint8_t); set -DTRK_MAX_SENSORS=4"
+#endif
+#if TRK_PD_PROFILE_MAX < 2 || TRK_PD_PROFILE_MAX > 255
+#error "TRK_PD_PROFILE_MAX must be in 2..255 (points of a P_D profile); set -DTRK_PD_PROFILE_MAX=16"
 #endif
 #if TRK_MAX_STATE < 4
 #error "TRK_MAX_STATE must be at least 4: the tracker's 2-D constant-velocity state is [x, vx, y, vy]"

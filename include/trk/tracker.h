@@ -139,6 +139,27 @@ struct trk_detection {
     uint8_t has_amplitude;  /**< 0: no amplitude (position only) */
 };
 
+/** One detection of a polar sensor (TRK_SENSOR_POLAR): range and bearing
+ * from the scan's pose. The tracker converts it to a position with its own
+ * covariance (the sensor's sigma_range_m, sigma_bearing_rad and
+ * conversion; trk_polar_to_cartesian). */
+struct trk_polar_detection {
+    trk_real range_m;        /**< from the pose's position, > 0 */
+    trk_real bearing_rad;    /**< clockwise from the pose's heading */
+    trk_real amplitude;      /**< linear envelope amplitude, used when has_amplitude */
+    uint8_t has_amplitude;   /**< 0: no amplitude (position only) */
+};
+
+/** Where a sensor is and where it looks, in the tracker's frame (x east,
+ * y north). Bearings are clockwise from +y: a point at range r and
+ * absolute bearing b from (x_m, y_m) is at (x_m + r sin b, y_m + r cos b). */
+struct trk_pose {
+    trk_real x_m, y_m;       /**< position */
+    trk_real heading_rad;    /**< the sensor's reference direction, clockwise from +y;
+                                a polar detection's bearing and the coverage sector
+                                are measured from it */
+};
+
 /** The elements of a packed 2x2 covariance [xx, xy, yy] (cov_m2,
  * meas_cov_m2). */
 /** @{ */
@@ -188,10 +209,56 @@ struct trk_scan {
     size_t n_detections;                    /**< <= TRK_MAX_SCAN_DETECTIONS; beyond
                                                TRK_MAX_DETECTIONS the scan is thinned
                                                (see "Scans beyond capacity") */
-    const struct trk_detection *detections; /**< may be NULL when n_detections = 0 */
+    const struct trk_detection *detections; /**< Cartesian detections; NULL when
+                                               n_detections = 0 or polar is given */
+    const struct trk_polar_detection *polar; /**< a polar sensor's detections as range
+                                                and bearing (n_detections of them;
+                                                detections then NULL); NULL otherwise */
+    int has_pose;                           /**< 1: pose is this scan's (a moving
+                                               platform); 0: the sensor's fixed pose */
+    struct trk_pose pose;                   /**< the sensor's pose at time_us, when has_pose */
 };
 
 /* ---------------------------------------------------------------- configuration */
+
+/** What a sensor's detections are. */
+enum trk_sensor_kind {
+    TRK_SENSOR_CARTESIAN = 0, /**< positions (x, y), with the sensor's covariance or their own */
+    TRK_SENSOR_POLAR = 1      /**< range and bearing from the scan's pose (trk_scan.polar),
+                                 or positions converted by the caller */
+};
+
+/** How a polar detection becomes a position and covariance
+ * (docs/conventions.md "Polar detections"). */
+enum trk_polar_conversion {
+    TRK_POLAR_FIRST_ORDER = 0, /**< x = r sin b, y = r cos b; covariance J diag(sr^2, sb^2) J'
+                                  (J the Jacobian). Biased towards the sensor by about
+                                  r sb^2 / 2 along the range: negligible while
+                                  r sb^2 / sr is small (the default) */
+    TRK_POLAR_UNBIASED = 1     /**< Mo et al. (1998): the same scaled by e^(sb^2 / 2), with
+                                  their measurement-conditioned covariance (eqs 5, 7) */
+};
+
+/** A detection-probability profile over range from the sensor (e.g.
+ * from transmission loss): P_D at range_m[k] is pd[k], linear between
+ * points, flat beyond the ends. n = 0: no profile, the sensor's pd (or
+ * the amplitude model's) everywhere. */
+struct trk_pd_profile {
+    unsigned n;                            /**< points, 0 or 2 .. TRK_PD_PROFILE_MAX */
+    trk_real range_m[TRK_PD_PROFILE_MAX];  /**< strictly increasing, >= 0 */
+    trk_real pd[TRK_PD_PROFILE_MAX];       /**< each in [0, 1] */
+};
+
+/** Where a sensor can see: an annulus sector about the pose's heading.
+ * Outside it the sensor's P_D is 0: a track there is predicted, not
+ * gated, and not penalised for the scan (its existence only predicted,
+ * its tests not stepped). All zero: everywhere. */
+struct trk_coverage {
+    trk_real min_range_m;      /**< >= 0 */
+    trk_real max_range_m;      /**< 0: no limit, else > min_range_m */
+    trk_real half_width_rad;   /**< the sector's half width about the heading, [0, pi];
+                                  0 or pi: all round */
+};
 
 /** One sensor's parameters: detection probability, measurement covariance, clutter density and amplitude model. */
 struct trk_sensor_params {
@@ -210,6 +277,18 @@ struct trk_sensor_params {
      * the tracker. */
     int use_amplitude;
     struct trk_amplitude amplitude;  /**< the model used when use_amplitude is 1 */
+    /** Polar sensors: each detection's covariance comes from sigma_range_m
+     * and sigma_bearing_rad at its range and bearing, and a track's R (its
+     * gate volume, its covariance bound) from the same at its predicted
+     * position; meas_cov_m2 is then unused. */
+    enum trk_sensor_kind kind;
+    trk_real sigma_range_m;             /**< polar: range noise (1 sigma), > 0 */
+    trk_real sigma_bearing_rad;         /**< polar: bearing noise (1 sigma), (0, 0.5] */
+    enum trk_polar_conversion conversion; /**< polar: first-order (default) or unbiased */
+    struct trk_pose pose;               /**< the pose of a scan without its own (has_pose 0) */
+    struct trk_pd_profile pd_profile;   /**< P_D over range from the pose (n = 0: pd everywhere);
+                                           not with use_amplitude */
+    struct trk_coverage coverage;       /**< where P_D is not 0 (all zero: everywhere) */
 };
 
 /** Confirmation of a tentative track (one method per tracker). */
@@ -644,6 +723,23 @@ struct trk_i_grid {
     /** @} */
 };
 
+/** A sensor as one scan sees it: its pose (the scan's or the sensor's own)
+ * with the heading's sine and cosine and the coverage's limits worked out
+ * once (src/sensor_view.h). */
+struct trk_i_view {
+    const struct trk_sensor_params *sp;  /**< the scan's sensor */
+    struct trk_pose pose;                /**< the scan's pose */
+    /** @{ */
+    trk_real sin_h, cos_h;               /**< the heading's sine and cosine */
+    /** @} */
+    trk_real cos_half;                   /**< the coverage sector's half width's cosine */
+    /** @{ */
+    trk_real min_r2, max_r2;             /**< the coverage's ranges squared (max 0: none) */
+    /** @} */
+    uint8_t sector;                      /**< 1: the coverage is a sector */
+    uint8_t limited;                     /**< 1: P_D depends on the position */
+};
+
 /** One scan's initiation candidates: cand[start, start + n) in the run's
  * 2-D index, its cells' ends at cand_cell_end[start ..]. */
 struct trk_i_cand_run {
@@ -700,6 +796,7 @@ struct trk_tracker {
         size_t n_valid;                                        /**< valid detections, */
         size_t n_shared;                                       /**< [0, n_shared) with the sensor's
                                                                   covariance, then own ones */
+        struct trk_i_view view;                                /**< the scan's sensor and pose */
         struct trk_i_grid grid;                                /**< gating's index of [0, n_shared), */
         uint16_t cell_end[TRK_MAX_DETECTIONS];                 /**< its cells' ends (after the
                                                                   updates: the merge's index) */
@@ -847,6 +944,38 @@ size_t trk_tracker_sizeof(void);
          : TRK_E_ABI)
 
 /* ---------------------------------------------------------------- helpers */
+
+/** Polar detection pd of sensor sp (kind TRK_SENSOR_POLAR) at pose as the
+ * Cartesian detection the tracker uses (has_cov 1; its amplitude copied):
+ * absolute bearing b = heading + bearing, position pose + k r (sin b, cos b)
+ * with k = 1 (TRK_POLAR_FIRST_ORDER) or e^(sb^2 / 2) (TRK_POLAR_UNBIASED),
+ * and the covariance of the conversion (trk_polar_cov). The tracker converts
+ * a polar scan with this function. TRK_E_ARG NULL or not a polar sensor,
+ * TRK_E_NAN non-finite input, TRK_E_RANGE range <= 0 or sigma out of range
+ * (*d untouched on error). */
+TRK_NODISCARD trk_status trk_polar_to_cartesian(const struct trk_sensor_params *sp, const struct trk_pose *pose,
+                                                const struct trk_polar_detection *pd, struct trk_detection *d);
+
+/** The covariance [xx, xy, yy] of a converted polar detection of sensor sp
+ * (kind polar) whose position is (dx_m, dy_m) from the pose: it depends on
+ * the range and bearing only through that offset, so that the tracker
+ * derives it again from the converted position (and a track's R from its
+ * predicted position) with no trigonometric function.
+ *   first order:  C = J diag(sr^2, sb^2) J' (J the Jacobian of
+ *                 (r sin b, r cos b) at the measured r, b)
+ *   unbiased:     Mo et al. (1998) eq 7 at the measured r, b (see
+ *                 docs/conventions.md "Polar detections")
+ * At the pose itself (dx = dy = 0) the covariance is singular (refused as
+ * not SPD where used). */
+void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real dy_m, trk_real cov_m2[3]);
+
+/** The detection probability of sensor sp at (x_m, y_m) with the sensor at
+ * pose: 0 outside its coverage, else its P_D profile at the range (linear,
+ * flat beyond the ends), else its pd (the amplitude model's P_D with
+ * use_amplitude). The tracker takes each track's P_D from this function at
+ * its predicted position and each new track's at its detection. */
+trk_real trk_sensor_pd_at(const struct trk_sensor_params *sp, const struct trk_pose *pose, trk_real x_m,
+                          trk_real y_m);
 
 /** Range/bearing of a sensor at (sensor_x_m, sensor_y_m) to a Cartesian
  * detection. Bearing is clockwise from +y (north), x east:

@@ -1,0 +1,18 @@
+/* sensor_view.h (private) - a sensor as one scan sees it: its pose (the
+ * scan's or the sensor's own) with the heading's sine and cosine and the
+ * coverage's limits worked out once, so that a track's or a detection's
+ * P_D and a polar sensor's covariance at a position take no trigonometric
+ * function (src/polar.c; used by the tracker and by trk_sensor_pd_at). */
+#ifndef TRK_SENSOR_VIEW_H
+#define TRK_SENSOR_VIEW_H
+
+#include "trk/tracker.h" /* struct trk_i_view */
+
+/* The view of sensor sp from pose (finite: checked by the caller). */
+void trk_i_view_init(struct trk_i_view *v, const struct trk_sensor_params *sp, const struct trk_pose *pose);
+
+/* P_D at (x_m, y_m): trk_sensor_pd_at with the view's pose. pd_flat is
+ * the sensor's P_D without a profile (its pd, or its amplitude model's). */
+trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_m, trk_real y_m);
+
+#endif
