@@ -69,10 +69,7 @@ static size_t get_scan(int k, struct trk_scan *scan)
         detections[n].has_cov = detections[n].has_amplitude = 0;
         n++;
     }
-    scan->time_us = (int64_t)(k * SCAN_PERIOD_S * 1e6);
-    scan->sensor_id = 0;
-    scan->n_detections = n;
-    scan->detections = detections;
+    trk_scan_init(scan, (int64_t)(k * SCAN_PERIOD_S * 1e6), 0, n, detections);
     return n;
 }
 

@@ -204,10 +204,9 @@ static trk_status ab_update(struct pred *pr, const struct trk_i_pda_set *set)
 
 /* The PDA's weights of the gated set, then the update with them: *out,
  * beta_i into set->w, the posterior over pr->x, pr->p. */
-static trk_status ab_pda(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
-                         struct trk_i_pda_set *set, struct trk_i_pda_out *out)
+static trk_status ab_pda(struct pred *pr, struct trk_i_pda_set *set, struct trk_i_pda_out *out)
 {
-    pda_weights(&t->pda[scan->sensor_id], pr, set, out);
+    pda_weights(pr->pda, pr, set, out);
     return ab_update(pr, set);
 }
 

@@ -29,10 +29,9 @@ static trk_status cv_predict(const struct trk_tracker *t, const struct trk_track
 
 /* The PDA over the gated set: *out, beta_i into set->w, the posterior over
  * pr->x, pr->p (checked). */
-static trk_status cv_pda(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
-                         struct trk_i_pda_set *set, struct trk_i_pda_out *out)
+static trk_status cv_pda(struct pred *pr, struct trk_i_pda_set *set, struct trk_i_pda_out *out)
 {
-    const trk_status st = trk_i_pda_run(&t->pda[scan->sensor_id], &pr->pp, set, out);
+    const trk_status st = trk_i_pda_run(pr->pda, &pr->pp, set, out);
     /* the PDA checked a posterior it formed; with nothing gated it is the
      * prediction: check that one here (one factorisation per track) */
     return st == TRK_OK && set->m_gated == 0 ? trk_i_spd(NX, pr->p) : st;

@@ -57,11 +57,12 @@ static void imm_start(const struct trk_tracker *t, struct trk_track *tr)
 /* Model m's prediction as the PDA takes it (the workspace's). */
 static struct trk_i_pda_pred imm_model_pred(struct trk_tracker *t, const struct trk_scan *scan, int m)
 {
+    (void)scan;
     const struct trk_i_pda_pred pp = {NX,
                                       NZ,
                                       trk_cv2_h,
                                       trk_i_cv2_sel(),
-                                      t->r[scan->sensor_id],
+                                      t->ws.imm.r[m],
                                       t->ws.imm.s.x[m],
                                       t->ws.imm.s.p[m],
                                       t->ws.imm.pht[m],
@@ -93,9 +94,14 @@ static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr,
         t->ws.imm.log_c[m] = t->ws.imm.c[m] > 0 ? trk_log(t->ws.imm.c[m]) : -(trk_real)INFINITY;
         if (!(t->ws.imm.c[m] > 0)) continue; /* unreachable this scan: weight 0, never used */
         st = trk_i_pda_check(NX, s->x[m], s->p[m]);
-        if (st == TRK_OK)
-            st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id], s->x[m], s->p[m],
-                                      t->ws.imm.pht[m], &t->ws.imm.inn[m]);
+        if (st == TRK_OK) {
+            trk_real *r = t->ws.imm.r[m];
+            const trk_real *r_m = sensor_r_at(t, scan, s->x[m][X], s->x[m][Y], r);
+            if (r_m != r)
+                for (int i = 0; i < NZ * NZ; i++) r[i] = r_m[i];
+            st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), r, s->x[m], s->p[m], t->ws.imm.pht[m],
+                                      &t->ws.imm.inn[m]);
+        }
     }
     if (st != TRK_OK) return st;
     for (int m = 0; m < mp->n_models; m++) s->mu[m] = t->ws.imm.c[m];
@@ -168,7 +174,7 @@ static void imm_gate_one(struct trk_tracker *t, const struct trk_scan *scan, str
     }
     if (!gate_inside(t, gt, j, d2)) return;
     trk_real r_j[NZ * NZ];
-    if (own) trk_i_cov2_matrix(scan->detections[t->ws.src[j]].cov_m2, r_j); /* checked at load */
+    if (own) det_r(t, scan, j, r_j); /* checked at load */
     (void)gate_add(t, gt, j, own ? r_j : NULL);
 }
 
@@ -178,10 +184,10 @@ static void imm_gate_one(struct trk_tracker *t, const struct trk_scan *scan, str
  * all their bounding boxes of d2 <= g (gating's index), then the ones with
  * their own covariance inside the box of the models' boxes for the largest
  * of those covariances (their index). */
-static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan, size_t off,
-                    struct trk_i_pda_set *set)
+static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+                    const struct pred *pr, size_t off, struct trk_i_pda_set *set)
 {
-    struct gate gt = gate_begin(t, tr, scan, off, set);
+    struct gate gt = gate_begin(t, tr, pr->pda, off, set);
     const struct trk_innovation *inn = t->ws.imm.inn;
     struct imm_box b = {t->params.imm.n_models, tr->status == TRK_TRACK_TENTATIVE, {0}, {0}, span_empty()};
     for (int m = 0; m < b.n_models; m++) {
@@ -217,10 +223,9 @@ static int imm_gate(struct trk_tracker *t, const struct trk_track *tr, const str
  * and the track's ln e_i = ln sum_m c_m e_mi into w[i] (w may be NULL). An
  * own-covariance S_mi that is not SPD (cannot happen: the gate factored it)
  * gives TRK_E_NOT_SPD. */
-static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_set *set,
-                              const uint16_t *cand, trk_real *w)
+static trk_status imm_weights(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_pda *pda,
+                              const struct trk_i_pda_set *set, const uint16_t *cand, trk_real *w)
 {
-    const struct trk_pda *pda = &t->pda[scan->sensor_id];
     const int n = t->params.imm.n_models;
     for (size_t i = 0; i < set->n; i++) {
         trk_real le[TRK_MAX_MODELS], mx = -(trk_real)INFINITY;
@@ -290,7 +295,7 @@ static trk_status imm_update(struct trk_tracker *t, const struct trk_scan *scan,
 static trk_status imm_pda(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr,
                           struct trk_i_pda_set *set, struct trk_i_pda_out *out)
 {
-    pda_weights(&t->pda[scan->sensor_id], pr, set, out);
+    pda_weights(pr->pda, pr, set, out);
     return imm_update(t, scan, set, out->beta0, pr);
 }
 

@@ -81,6 +81,7 @@ static void clutter_look(const struct trk_tracker *t, const struct trk_innovatio
 static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                        const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look)
 {
+    look->seen = 1;
     look->detected = tr->n_gated_last > 0;
     look->sensor_id = scan->sensor_id;
     look->n_gated = (int)tr->n_gated_last;
@@ -95,6 +96,28 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     look->a_others_db = t->ws.amp_db;
     if (tr->status == TRK_TRACK_TENTATIVE && trk_i_confirm_needs_nearest(&t->params) && t->ws.n_valid > 0)
         clutter_look(t, inn, t->pda[scan->sensor_id].params.clutter_density, look);
+}
+
+/* A track the scan's sensor cannot see (P_D 0 at its prediction pr): its
+ * prediction becomes its posterior (the filter's update with nothing
+ * gated), its existence is only predicted, and its look says it was not
+ * seen. As track_update's return: 0, 1 over the covariance bound, -1 on a
+ * numerical failure (tr untouched). */
+static int track_unseen(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, struct pred *pr,
+                        struct trk_look *look)
+{
+    struct trk_i_pda_set set;
+    struct trk_i_pda_out out;
+    (void)gate_begin(t, tr, pr->pda, 0, &set); /* an empty set */
+    if (filter_pda(t, scan, pr, &set, &out) != TRK_OK) return -1;
+    struct trk_visibility vis = tr->vis;
+    if (t->params.track_visibility &&
+        trk_visibility_update_posterior(&t->vis_model, &vis, trk_visibility_predict(&t->vis_model, &vis)) != TRK_OK)
+        return -1;
+    commit(t, tr, scan, &set, t->ws.cand, pr, &vis, out.beta0);
+    build_look(t, tr, scan, &pr->inn, &out, look);
+    look->seen = 0;
+    return over_covariance_bound(pr->bound_m2, tr->p);
 }
 
 #endif

@@ -92,11 +92,11 @@ static int filter_gate(struct trk_tracker *t, const struct trk_track *tr, const 
 {
 #if TRK_WITH_IMM
     if (filter_kind(t) == FILTER_IMM) {
-        const int cut = imm_gate(t, tr, scan, off, set);
-        return imm_weights(t, scan, set, t->ws.cand + off, set->w) != TRK_OK ? -1 : cut;
+        const int cut = imm_gate(t, tr, scan, pr, off, set);
+        return imm_weights(t, scan, pr->pda, set, t->ws.cand + off, set->w) != TRK_OK ? -1 : cut;
     }
 #endif
-    return gate(t, tr, scan, &pr->pp, off, set);
+    return gate(t, tr, scan, pr, off, set);
 }
 
 /* The PDA over the gated set: *out, beta_i into set->w, the posterior over
@@ -109,9 +109,9 @@ static trk_status filter_pda(struct trk_tracker *t, const struct trk_scan *scan,
     case FILTER_IMM: return imm_pda(t, scan, pr, set, out);
 #endif
 #if TRK_WITH_ALPHA_BETA
-    case FILTER_AB: return ab_pda(t, scan, pr, set, out);
+    case FILTER_AB: return ab_pda(pr, set, out);
 #endif
-    default: return cv_pda(t, scan, pr, set, out);
+    default: (void)scan; return cv_pda(pr, set, out);
     }
 }
 
@@ -119,14 +119,15 @@ static trk_status filter_pda(struct trk_tracker *t, const struct trk_scan *scan,
 /* A joint track's gated set (detections cand) once more before its update:
  * the filter's per-detection state that later tracks' gating overwrote
  * (the IMM's rho_mi; set->w, the marginals, stays). */
-static trk_status filter_reweigh(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_i_pda_set *set,
-                                 const uint16_t *cand)
+static trk_status filter_reweigh(struct trk_tracker *t, const struct trk_scan *scan, const struct pred *pr,
+                                 const struct trk_i_pda_set *set, const uint16_t *cand)
 {
 #if TRK_WITH_IMM
-    if (filter_kind(t) == FILTER_IMM) return imm_weights(t, scan, set, cand, NULL);
+    if (filter_kind(t) == FILTER_IMM) return imm_weights(t, scan, pr->pda, set, cand, NULL);
 #endif
     (void)t;
     (void)scan;
+    (void)pr;
     (void)set;
     (void)cand;
     return TRK_OK;

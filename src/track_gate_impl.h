@@ -75,7 +75,7 @@ static int own_box(const struct trk_tracker *t, const struct trk_scan *scan, con
                    size_t j, trk_real g, const trk_real *nu, trk_real *r_j, trk_real *l_inv, trk_real *log_det)
 {
     trk_real s[NZ * NZ];
-    trk_i_cov2_matrix(scan->detections[t->ws.src[j]].cov_m2, r_j); /* checked at load */
+    det_r(t, scan, j, r_j); /* checked at load */
     trk_i_pda_own_s(pp, r_j, s);
     if (trk_fabs(nu[ZX]) > trk_sqrt(g * s[S(ZX, ZX)]) || trk_fabs(nu[ZY]) > trk_sqrt(g * s[S(ZY, ZY)]))
         return 0;
@@ -84,10 +84,9 @@ static int own_box(const struct trk_tracker *t, const struct trk_scan *scan, con
 
 /* An empty gated set for track tr in the workspace pairs from off on, and
  * its gate: gamma, and g = init_exclusion_d2 for a confirmed track. */
-static struct gate gate_begin(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+static struct gate gate_begin(struct trk_tracker *t, const struct trk_track *tr, const struct trk_pda *pda,
                               size_t off, struct trk_i_pda_set *set)
 {
-    const struct trk_pda *pda = &t->pda[scan->sensor_id];
     const trk_real excl = t->params.init_exclusion_d2;
     struct gate gt = {pda, pda->gamma, tr->status == TRK_TRACK_CONFIRMED && excl > pda->gamma ? excl : pda->gamma,
                       set, t->ws.cand + off, TRK_I_PAIRS - off, 0};
@@ -140,10 +139,11 @@ static void own_box_widths(const struct trk_tracker *t, const trk_real *p, trk_r
  * the whole set (gating then stops: the caller drops a cut set, and the
  * track is gated again alone, which marks the exclusion zone), else 0. */
 static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
-                const struct trk_i_pda_pred *pp, size_t off, struct trk_i_pda_set *set)
+                const struct pred *pr, size_t off, struct trk_i_pda_set *set)
 {
+    const struct trk_i_pda_pred *pp = &pr->pp;
     const struct trk_innovation *inn = pp->inn;
-    struct gate gt = gate_begin(t, tr, scan, off, set);
+    struct gate gt = gate_begin(t, tr, pr->pda, off, set);
     const trk_real wx = trk_sqrt(gt.g * inn->s[S(ZX, ZX)]), wy = trk_sqrt(gt.g * inn->s[S(ZY, ZY)]);
     const trk_real zx = inn->z_pred[ZX], zy = inn->z_pred[ZY];
     const size_t n_shared = t->ws.n_shared, n_valid = t->ws.n_valid;

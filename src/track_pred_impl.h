@@ -10,25 +10,56 @@
 
 #include "tracker_internal.h"
 
-/* Is the position uncertainty of covariance p over the bound
- * (max_pos_sigma_ratio) of the scan's sensor? */
-static int over_covariance_bound(const struct trk_tracker *t, const trk_real *p, unsigned sensor)
+/* Is the position uncertainty of covariance p over the bound bound_m2
+ * (0: none)? */
+static int over_covariance_bound(trk_real bound_m2, const trk_real *p)
 {
-    const trk_real bound = t->max_pos_var_m2[sensor];
-    return bound > 0 && p[P(X, X)] + p[P(Y, Y)] > bound;
+    return bound_m2 > 0 && p[P(X, X)] + p[P(Y, Y)] > bound_m2;
 }
 
-/* The prediction pr->x, pr->p checked, its view for the PDA, and its
- * innovation. */
+/* The PDA's constants of the scan's sensor with P_D pd in (0, 1] instead of
+ * its own (trk_pda_init's, for one track: a P_D profile). */
+static void pda_with_pd(const struct trk_pda *sensor, trk_real pd, struct trk_pda *out)
+{
+    *out = *sensor;
+    out->params.pd = pd;
+    out->log_pd_norm = trk_log(pd) - TRK_REAL_C(0.5) * (trk_real)NZ * TRK_LN_2PI;
+    out->log_miss = trk_log1p(-pd * sensor->params.gate_prob);
+    out->log_e0_param = trk_log(sensor->params.clutter_density) + out->log_miss;
+}
+
+/* What the scan's sensor is to the track predicted at pr->x (see struct
+ * pred): R, P_D and its PDA constants, the covariance bound (ratio^2 tr R,
+ * with R at the prediction for a polar sensor). */
+static void pred_sensor(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
+{
+    const struct trk_pda *sensor = &t->pda[scan->sensor_id];
+    pr->r = sensor_r_at(t, scan, pr->x[X], pr->x[Y], pr->r_own);
+    pr->pd = sensor_pd_at(t, scan, pr->x[X], pr->x[Y]);
+    pr->pda = sensor;
+    if (pr->pd > 0 && pr->pd != sensor->params.pd) {
+        pda_with_pd(sensor, pr->pd, &pr->pda_own);
+        pr->pda = &pr->pda_own;
+    }
+    const trk_real ratio = t->params.max_pos_sigma_ratio;
+    pr->bound_m2 = ratio * ratio * (pr->r[S(ZX, ZX)] + pr->r[S(ZY, ZY)]);
+}
+
+/* Can the scan's sensor see the predicted track (P_D > 0 there)? A track it
+ * cannot see is not gated: its existence is only predicted and its tests
+ * are not stepped. */
+static int pred_seen(const struct pred *pr) { return pr->pd > 0; }
+
+/* The prediction pr->x, pr->p checked, the sensor at it (pred_sensor), its
+ * view for the PDA, and its innovation. */
 static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
 {
     const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
     if (st != TRK_OK) return st;
-    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id],
-                                      pr->x, pr->p, pr->pht, &pr->inn};
+    pred_sensor(t, scan, pr);
+    const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, trk_i_cv2_sel(), pr->r, pr->x, pr->p, pr->pht, &pr->inn};
     pr->pp = pp;
-    return trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), t->r[scan->sensor_id], pr->x, pr->p, pr->pht,
-                                &pr->inn);
+    return trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), pr->r, pr->x, pr->p, pr->pht, &pr->inn);
 }
 
 /* The PDA's association weights alone, for a filter that forms its own

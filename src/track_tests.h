@@ -12,6 +12,7 @@
 
 /* What one scan told a track (the tests' per-scan input). */
 struct trk_look {
+    int seen;            /* the sensor could see the track (P_D > 0): else nothing below is a look */
     int detected;        /* at least one detection in the gate */
     unsigned sensor_id;
     int n_gated;

@@ -18,6 +18,7 @@
 #endif
 
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
+static void see_from(struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 #if TRK_WITH_JOINT
@@ -44,6 +45,7 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     /* the scan is accepted: from here on the table changes */
     rep.n_detections = (uint32_t)scan->n_detections;
     t->scan_no++;
+    see_from(t, scan);
     free_terminated(t);
     struct thin th = {0, 0, 0, 0, 0};
     load_detections(t, scan, &th, &rep);
@@ -70,13 +72,32 @@ static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan 
 {
     if (!t || !scan) return TRK_E_ARG;
     if (scan->n_detections > TRK_MAX_SCAN_DETECTIONS) return TRK_E_CAPACITY;
-    if (scan->n_detections > 0 && !scan->detections) return TRK_E_ARG;
     if (scan->sensor_id >= t->params.n_sensors) return TRK_E_SENSOR;
+    /* Cartesian detections, or a polar sensor's polar ones: one array */
+    if (scan->n_detections > 0 && !scan->detections == !scan->polar) return TRK_E_ARG;
+    if (scan->polar && t->params.sensor[scan->sensor_id].kind != TRK_SENSOR_POLAR) return TRK_E_ARG;
+    if (scan->has_pose != 0 && scan->has_pose != 1) return TRK_E_ARG;
+    if (scan->has_pose) {
+        const struct trk_pose *o = &scan->pose;
+        if (!isfinite(o->x_m) || !isfinite(o->y_m) || !isfinite(o->heading_rad)) return TRK_E_NAN;
+        const trk_real bound = t->params.max_coord_m; /* the surveillance bound */
+        if (!(trk_fabs(o->x_m) <= bound && trk_fabs(o->y_m) <= bound && trk_fabs(o->heading_rad) <= TRK_REAL_C(1e6)))
+            return TRK_E_RANGE;
+    }
     /* |time| <= 2^62 keeps every difference of two times representable */
     if (scan->time_us > TRK_TIME_US_MAX || scan->time_us < -TRK_TIME_US_MAX) return TRK_E_RANGE;
     if (t->has_time && scan->time_us < t->last_time_us) return TRK_E_TIME;
     if (t->has_time && scan->time_us - t->last_time_us > t->max_dt_us) return TRK_E_RANGE;
     return TRK_OK;
+}
+
+/* The scan's sensor from its pose (the scan's, or the sensor's fixed
+ * one): the view every stage asks for R and P_D at a position. */
+static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
+{
+    const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
+    trk_i_view_init(&t->ws.view, sp, scan->has_pose ? &scan->pose : &sp->pose);
+    t->ws.pd_scale = 1;
 }
 
 /* Tracks that ended in the previous scan were shown once: free their slots. */
@@ -137,12 +158,14 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
         end_track(tr, TRK_END_NUMERICAL, rep);
         return;
     }
-    tr->n_scans++;
-    if (failed > 0 || over_covariance_bound(t, tr->p, scan->sensor_id)) {
+    if (failed > 0) {
+        tr->n_scans++;
         end_track(tr, TRK_END_COVARIANCE, rep);
         rep->n_covariance++;
         return;
     }
+    if (!look.seen) return; /* out of the sensor's sight: no look, no test step */
+    tr->n_scans++;
     if (look.detected) {
         tr->n_hits++;
         tr->n_misses_in_row = 0;
@@ -173,7 +196,6 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
     for (unsigned s = 0; s < p->n_sensors; s++) {
         t->pda[s] = pda[s];
         for (int i = 0; i < NZ * NZ; i++) t->r[s][i] = r[s][i];
-        t->max_pos_var_m2[s] = p->max_pos_sigma_ratio * p->max_pos_sigma_ratio * (r[s][S(ZX, ZX)] + r[s][S(ZY, ZY)]);
         const trk_real lambda = pda[s].params.clutter_density, beta = p->init.birth_density_per_m2;
         t->init_log_odds[s].first = lambda > 0 ? trk_log(beta) - trk_log(lambda) : (trk_real)INFINITY;
         t->init_log_odds[s].second = lambda > 0 ? trk_log(pda[s].params.pd) - trk_log(lambda) : (trk_real)INFINITY;

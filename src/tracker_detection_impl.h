@@ -17,6 +17,34 @@ struct amp_use {
     trk_real ref_db;   /* mean clutter power (dB): the amplitudes' reference */
 };
 
+/* Scan detection i as a Cartesian detection: the caller's; a polar
+ * sensor's converted (trk_polar_to_cartesian) into *tmp, or a Cartesian
+ * one without its own covariance given its conversion covariance there.
+ * NULL when a polar detection cannot be converted (counted: non-finite, or
+ * a range <= 0 as outside the region). */
+static const struct trk_detection *scan_detection(const struct trk_tracker *t, const struct trk_scan *scan, size_t i,
+                                                  struct trk_detection *tmp, struct trk_scan_report *rep)
+{
+    const struct trk_i_view *v = &t->ws.view;
+    if (scan->polar) {
+        const trk_status st = trk_polar_to_cartesian(v->sp, &v->pose, &scan->polar[i], tmp);
+        if (st == TRK_OK) { /* its covariance as det_cov derives it again from the position */
+            trk_polar_cov(v->sp, tmp->x_m - v->pose.x_m, tmp->y_m - v->pose.y_m, tmp->cov_m2);
+            return tmp;
+        }
+        if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
+        else rep->n_rejected_region++;
+        return NULL;
+    }
+    const struct trk_detection *d = &scan->detections[i];
+    if (v->sp->kind != TRK_SENSOR_POLAR || d->has_cov) return d;
+    *tmp = *d;
+    tmp->has_cov = 1;
+    if (isfinite(d->x_m) && isfinite(d->y_m))
+        trk_polar_cov(v->sp, d->x_m - v->pose.x_m, d->y_m - v->pose.y_m, tmp->cov_m2);
+    return tmp;
+}
+
 /* TRK_OK for a usable detection, else why not: TRK_E_NAN non-finite
  * position or covariance, TRK_E_NOT_SPD covariance, TRK_E_RANGE amplitude
  * NaN, infinite or negative. */

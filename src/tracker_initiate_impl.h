@@ -51,9 +51,8 @@ static void store_candidates(struct trk_tracker *t, const struct trk_scan *scan,
 /* Workspace detection j's covariance (its own or the sensor's) into r. */
 static void detection_r(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real *r)
 {
-    const struct trk_detection *d = &scan->detections[t->ws.src[j]];
-    if (d->has_cov) {
-        trk_i_cov2_matrix(d->cov_m2, r); /* checked at load */
+    if (j >= t->ws.n_shared) {
+        det_r(t, scan, j, r); /* checked at load */
     } else {
         for (int i = 0; i < NZ * NZ; i++) r[i] = t->r[scan->sensor_id][i];
     }
@@ -69,8 +68,9 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
     struct slots sl = {0, 0, -1, 0};
     uint16_t *idx = t->ws.cand; /* the gated-set scratch is free by now */
     size_t n = 0;
-    for (size_t j = 0; j < t->ws.n_valid; j++)
-        if (!t->ws.used[j]) idx[n++] = (uint16_t)j;
+    for (size_t j = 0; j < t->ws.n_valid; j++) /* where the sensor cannot see (P_D 0), nothing starts */
+        if (!t->ws.used[j] && (!t->ws.view.limited || sensor_pd_at(t, scan, t->ws.x[j], t->ws.y[j]) > 0))
+            idx[n++] = (uint16_t)j;
     if (t->params.init.method == TRK_INIT_SINGLE_POINT) {
         /* in scan order, as the detections came (the workspace holds the
          * shared ones in gating's cells): slots and ids do not depend on
@@ -322,9 +322,10 @@ static struct run_reach expire_candidates(struct trk_tracker *t, const struct tr
     const trk_real *r = t->r[scan->sensor_id];
     trk_real var_j = r[S(ZX, ZX)] + r[S(ZY, ZY)];
     for (size_t k = 0; k < n; k++) {
-        const struct trk_detection *d = &scan->detections[t->ws.src[idx[k]]];
-        if (d->has_cov && d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY] > var_j)
-            var_j = d->cov_m2[TRK_COV2_XX] + d->cov_m2[TRK_COV2_YY];
+        trk_real c[3];
+        if (idx[k] < t->ws.n_shared) continue; /* the sensor's R */
+        det_cov(t, scan, idx[k], c);
+        if (c[TRK_COV2_XX] + c[TRK_COV2_YY] > var_j) var_j = c[TRK_COV2_XX] + c[TRK_COV2_YY];
     }
     struct run_reach rr = {{0}, {0}}; /* the runs past n_runs are never read */
     const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
@@ -382,6 +383,18 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
     return best;
 }
 
+/* ln(P_D / lambda) of a new track's point at (x, y) of sensor s
+ * (init_log_odds.second): with the scan sensor's P_D profile or coverage,
+ * its P_D there (a candidate of an earlier scan seen from this scan's pose:
+ * the platform moves little between two scans against the profile's
+ * scale). */
+static trk_real second_log_odds(const struct trk_tracker *t, const struct trk_scan *scan, unsigned s, trk_real x,
+                                trk_real y)
+{
+    if (s != scan->sensor_id || !t->ws.view.limited) return t->init_log_odds[s].second;
+    return t->init_log_odds[s].second + trk_log(sensor_pd_at(t, scan, x, y)) - trk_log(t->pda[s].params.pd);
+}
+
 /* ln O of a pair: its first point candidate c (of run), its second point's
  * ln(P_D l^a / lambda) in second, dt apart (trk_init_params). */
 static trk_real pair_log_odds(const struct trk_tracker *t, const struct trk_i_cand_run *run,
@@ -422,9 +435,10 @@ static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_sca
         (s[S(ZY, ZY)] * ex * ex - 2 * s[S(ZX, ZY)] * ex * ey + s[S(ZX, ZX)] * ey * ey) / det;
     if (!(d2 <= t->pda[scan->sensor_id].gamma)) return -TRK_REAL_MAX;
     const trk_real pi = TRK_REAL_C(3.14159265358979323846);
-    const trk_real hit = t->init_log_odds[scan->sensor_id].second + t->ws.log_lr[j] - trk_log(2 * pi) -
-                         TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
-    return pair_log_odds(t, run_p, cp, t->init_log_odds[run_c->sensor_id].second + c->log_lr, dt_pc) + hit;
+    const trk_real hit = second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j] -
+                         trk_log(2 * pi) - TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
+    return pair_log_odds(t, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr, dt_pc) +
+           hit;
 }
 
 /* A track from candidate c and workspace detection j (two-point
@@ -445,7 +459,8 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
     candidate_r(c, r_c);
     /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v, or
      * the three points' when c ended a refused pair that j continues */
-    const trk_real log_odds = pair_log_odds(t, run, c, t->init_log_odds[scan->sensor_id].second + t->ws.log_lr[j], dt);
+    const trk_real log_odds =
+        pair_log_odds(t, run, c, second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j], dt);
     const trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt);
     const trk_real psi0 = initial_existence(t, log_odds3 > -TRK_REAL_MAX ? log_odds3 : log_odds);
     const trk_real z_c[NZ] = {c->x_m, c->y_m}, z_j[NZ] = {t->ws.x[j], t->ws.y[j]};

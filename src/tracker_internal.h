@@ -29,6 +29,7 @@
 #define TRK_TRACKER_INTERNAL_H
 
 #include "pda_impl.h"
+#include "sensor_view.h"
 #include "track_tests.h"
 #include "trk/tracker.h"
 
@@ -70,15 +71,83 @@ TRK_INLINE trk_status trk_i_cov2_unpack(const trk_real c[3], trk_real r[NZ * NZ]
 }
 
 /* One track's prediction for this scan, and the same as the PDA takes it
- * (pp points into this struct: it is filled in place and never copied). */
+ * (pp and the pointers below point into this struct or the tracker: it is
+ * filled in place and never copied). What the sensor is to this track: its
+ * R (a polar sensor's at the predicted position, else the sensor's), its
+ * P_D there (0: the sensor cannot see it this scan) with the PDA's
+ * constants for it, and its covariance bound (0: none). */
 struct pred {
     trk_real x[NX], p[NX * NX], pht[NX * NZ];
     struct trk_innovation inn;
     struct trk_i_pda_pred pp;
+    const trk_real *r;          /* R: r_own or the sensor's */
+    trk_real r_own[NZ * NZ];
+    trk_real pd;                /* P_D at the prediction */
+    const struct trk_pda *pda;  /* the PDA's constants with that P_D: pda_own or the sensor's */
+    struct trk_pda pda_own;
+    trk_real bound_m2;          /* the covariance bound on tr P (max_pos_sigma_ratio) */
 #if TRK_WITH_ALPHA_BETA
     struct trk_cv_steady ab[2]; /* the alpha-beta filter's steady state per axis (x, y) */
 #endif
 };
+
+/* ---- The scan's sensor at a position (the view ws.view, set once per
+ * scan: sensor_view.h) */
+
+/* Is the scan's sensor polar? */
+TRK_INLINE int scan_polar(const struct trk_tracker *t) { return t->ws.view.sp->kind == TRK_SENSOR_POLAR; }
+
+/* P_D of the scan's sensor at (x, y): its profile and coverage
+ * (trk_sensor_pd_at), else its PDA's P_D (with an amplitude model, the
+ * model's). */
+TRK_INLINE trk_real sensor_pd_at(const struct trk_tracker *t, const struct trk_scan *scan, trk_real x, trk_real y)
+{
+    const trk_real pd = trk_i_view_pd(&t->ws.view, t->pda[scan->sensor_id].params.pd, x, y);
+    return t->ws.view.sp->pd_profile.n > 0 ? pd * t->ws.pd_scale : pd; /* a thinned scan's factor */
+}
+
+/* R of the scan's sensor for a track predicted at (x, y): a polar
+ * sensor's conversion covariance there (trk_polar_cov), but sigma_r^2 I
+ * nearer than sigma_r / sigma_b (where the cross-range spread falls below
+ * the range's and vanishes at the pose: a track's R must stay positive
+ * definite); else the sensor's R. Written into r_own, returned. */
+TRK_INLINE const trk_real *sensor_r_at(const struct trk_tracker *t, const struct trk_scan *scan, trk_real x,
+                                       trk_real y, trk_real r_own[NZ * NZ])
+{
+    if (!scan_polar(t)) return t->r[scan->sensor_id];
+    const struct trk_sensor_params *sp = t->ws.view.sp;
+    const trk_real dx = x - t->ws.view.pose.x_m, dy = y - t->ws.view.pose.y_m;
+    const trk_real vr = sp->sigma_range_m * sp->sigma_range_m, vb = sp->sigma_bearing_rad * sp->sigma_bearing_rad;
+    if ((dx * dx + dy * dy) * vb < vr) return t->r[scan->sensor_id]; /* sigma_r^2 I: tracker_params.c */
+    trk_real c[3];
+    trk_polar_cov(sp, dx, dy, c);
+    trk_i_cov2_matrix(c, r_own);
+    return r_own;
+}
+
+/* Workspace detection j's own covariance [xx, xy, yy] (the own group,
+ * j >= ws.n_shared): a polar sensor's conversion covariance at its position
+ * unless the caller gave its own; else the caller's. The same values every
+ * time (load checked them). */
+TRK_INLINE void det_cov(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real c[3])
+{
+    if (scan->polar || !scan->detections[t->ws.src[j]].has_cov) {
+        trk_polar_cov(t->ws.view.sp, t->ws.x[j] - t->ws.view.pose.x_m, t->ws.y[j] - t->ws.view.pose.y_m, c);
+        return;
+    }
+    const trk_real *d = scan->detections[t->ws.src[j]].cov_m2;
+    c[0] = d[0];
+    c[1] = d[1];
+    c[2] = d[2];
+}
+
+/* The same as a 2 x 2 matrix. */
+TRK_INLINE void det_r(const struct trk_tracker *t, const struct trk_scan *scan, size_t j, trk_real r[NZ * NZ])
+{
+    trk_real c[3];
+    det_cov(t, scan, j, c);
+    trk_i_cov2_matrix(c, r);
+}
 
 /* Workspace marks (ws.used) of a detection: no track gated it, a
  * tentative track did or it fell in a confirmed track's exclusion zone (it

@@ -43,16 +43,16 @@ static trk_real joint_psi(const struct trk_tracker *t, const struct trk_track *t
  * into the pairs from the store's end, and its weights. 0; -1 when it is
  * left out (prediction failed, or its pairs do not fit); 1 when left out
  * because its prediction is over the covariance bound (its own update
- * ends it). */
+ * ends it) or the sensor cannot see it (its own update coasts it). */
 static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan)
 {
-    const struct trk_pda *pda = &t->pda[scan->sensor_id];
     const size_t k = t->ws.n_joint, off = t->ws.pair_first[k];
     struct pred pr;
     struct trk_i_pda_set set;
     if (filter_predict(t, tr, scan, &pr) != TRK_OK) return -1;
-    if (over_covariance_bound(t, pr.p, scan->sensor_id)) return 1;
+    if (over_covariance_bound(pr.bound_m2, pr.p) || !pred_seen(&pr)) return 1;
     if (filter_gate(t, tr, scan, &pr, off, &set) != 0) return -1;
+    const struct trk_pda *pda = pr.pda;
     const trk_real psi = joint_psi(t, tr);
     if (psi > 0) {
         const trk_real base = trk_log(psi) - t->log_clutter_density[scan->sensor_id];
@@ -121,7 +121,7 @@ static void joint_set(struct trk_tracker *t, const struct trk_scan *scan, size_t
         t->ws.u.set.z[NZ * i + ZX] = t->ws.x[j];
         t->ws.u.set.z[NZ * i + ZY] = t->ws.y[j];
         if (j < t->ws.n_shared) set->n_shared = i + 1; /* the shared ones come first */
-        else trk_i_cov2_matrix(scan->detections[t->ws.src[j]].cov_m2, t->ws.u.set.r_own + NZ * NZ * (i - set->n_shared));
+        else det_r(t, scan, j, t->ws.u.set.r_own + NZ * NZ * (i - set->n_shared));
     }
 }
 
@@ -130,12 +130,12 @@ static void joint_set(struct trk_tracker *t, const struct trk_scan *scan, size_t
 static TRK_NOINLINE int track_update_joint(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t k,
                               struct trk_look *look)
 {
-    const struct trk_pda *pda = &t->pda[scan->sensor_id];
     struct pred pr;
     if (filter_predict(t, tr, scan, &pr) != TRK_OK) return -1; /* cannot fail: it did in step 1 */
+    const struct trk_pda *pda = pr.pda;
     struct trk_i_pda_set set;
     joint_set(t, scan, k, &set);
-    if (filter_reweigh(t, scan, &set, t->ws.cand + t->ws.pair_first[k]) != TRK_OK) return -1;
+    if (filter_reweigh(t, scan, &pr, &set, t->ws.cand + t->ws.pair_first[k]) != TRK_OK) return -1;
     struct trk_i_pda_out out;
     trk_i_pda_clutter(pda, &pr.pp, &set, &out);
     const trk_real psi = joint_psi(t, tr);
@@ -149,7 +149,7 @@ static TRK_NOINLINE int track_update_joint(struct trk_tracker *t, struct trk_tra
         return -1;
     commit(t, tr, scan, &set, t->ws.cand + t->ws.pair_first[k], &pr, &vis, out.beta0);
     build_look(t, tr, scan, &pr.inn, &out, look);
-    return 0;
+    return over_covariance_bound(pr.bound_m2, tr->p);
 }
 
 #endif

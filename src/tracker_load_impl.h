@@ -15,10 +15,9 @@ static void order_by_grid(struct trk_tracker *t, const struct trk_scan *scan);
 
 /* Take scan detection i into the workspace, or count why not
  * (detection_usable). */
-static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, size_t i,
+static void load_detection(struct trk_tracker *t, const struct trk_detection *d, size_t i,
                            const struct amp_use *au, struct trk_scan_report *rep)
 {
-    const struct trk_detection *d = &scan->detections[i];
     trk_real llr;
     if (!detection_usable(d, au, rep, &llr)) return;
     const size_t n = t->ws.n_valid++;
@@ -55,7 +54,10 @@ static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk
     for (int own = 0; own <= 1; own++) {
         for (size_t k = 0; k < n_load; k++) {
             const size_t i = over ? t->ws.cand[k] : k;
-            if ((scan->detections[i].has_cov != 0) == own) load_detection(t, scan, i, &au, rep);
+            struct trk_detection tmp;
+            if (scan->polar && !own) continue; /* converted, each has its own covariance */
+            const struct trk_detection *d = scan_detection(t, scan, i, &tmp, rep);
+            if (d && (d->has_cov != 0) == own) load_detection(t, d, i, &au, rep);
         }
         if (!own) t->ws.n_shared = t->ws.n_valid;
     }
@@ -117,7 +119,8 @@ static void order_by_grid(struct trk_tracker *t, const struct trk_scan *scan)
     if (n_own == 0) return;
     order_range_by_grid(t, n_shared, n_own, &t->ws.grid_own, t->ws.cell_end_own);
     for (size_t j = n_shared; j < t->ws.n_valid; j++) {
-        const trk_real *c = scan->detections[t->ws.src[j]].cov_m2; /* checked at load */
+        trk_real c[3];
+        det_cov(t, scan, j, c); /* checked at load */
         if (c[TRK_COV2_XX] > t->ws.own_var_max_m2[0]) t->ws.own_var_max_m2[0] = c[TRK_COV2_XX];
         if (c[TRK_COV2_YY] > t->ws.own_var_max_m2[1]) t->ws.own_var_max_m2[1] = c[TRK_COV2_YY];
     }

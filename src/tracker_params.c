@@ -73,10 +73,13 @@ void trk_tracker_mn_kn_params(struct trk_tracker_params *p)
 /* "sensor[i].<member>" for every sensor index of this build, as literals
  * (no stdio to format them): one row per index, rows up to TRK_MAX_SENSORS
  * (in blocks of up to twice the rows needed above 2). */
-enum { F_PD, F_COV, F_DENSITY, F_USE_AMP, F_AMP, N_SENSOR_FIELDS };
-#define ROW(i)                                                                                \
-    {"sensor[" #i "].pd", "sensor[" #i "].meas_cov_m2", "sensor[" #i "].clutter_density_per_m2", \
-     "sensor[" #i "].use_amplitude", "sensor[" #i "].amplitude"},
+enum { F_PD, F_COV, F_DENSITY, F_USE_AMP, F_AMP, F_KIND, F_SIGMA_R, F_SIGMA_B, F_CONV, F_POSE, F_PROFILE, F_COVER,
+       N_SENSOR_FIELDS };
+#define ROW(i)                                                                                      \
+    {"sensor[" #i "].pd", "sensor[" #i "].meas_cov_m2", "sensor[" #i "].clutter_density_per_m2",       \
+     "sensor[" #i "].use_amplitude", "sensor[" #i "].amplitude", "sensor[" #i "].kind",                \
+     "sensor[" #i "].sigma_range_m", "sensor[" #i "].sigma_bearing_rad", "sensor[" #i "].conversion",  \
+     "sensor[" #i "].pose", "sensor[" #i "].pd_profile", "sensor[" #i "].coverage"},
 #define ROWS10(d) ROW(d##0) ROW(d##1) ROW(d##2) ROW(d##3) ROW(d##4) ROW(d##5) ROW(d##6) ROW(d##7) ROW(d##8) ROW(d##9)
 static const char *const sensor_field[][N_SENSOR_FIELDS] = {
     ROW(0)
@@ -156,7 +159,10 @@ static trk_status check_init(const struct trk_init_params *in, const char **fiel
 }
 
 /* The alpha-beta filter needs its knob, a process noise (its steady state
- * has none without one) and no IMM (whose models are Kalman filters). */
+ * has none without one), no IMM (whose models are Kalman filters) and no
+ * polar sensor (whose R changes with every track's position: constant
+ * gains would have to be worked out per track and scan, the cost the
+ * filter exists to avoid). */
 static trk_status check_filter(const struct trk_tracker_params *p, const char **field)
 {
     if (p->filter == TRK_FILTER_KALMAN) return TRK_OK;
@@ -166,6 +172,8 @@ static trk_status check_filter(const struct trk_tracker_params *p, const char **
     if (p->imm.n_models != 0) return refuse(field, "filter", TRK_E_UNSUPPORTED);
 #endif
     if (!(p->process_noise_q > 0)) return refuse(field, "filter", TRK_E_UNSUPPORTED);
+    for (unsigned s = 0; s < p->n_sensors; s++)
+        if (p->sensor[s].kind == TRK_SENSOR_POLAR) return refuse(field, "filter", TRK_E_UNSUPPORTED);
     return TRK_OK;
 }
 
@@ -202,8 +210,68 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
     return check_init(&p->init, field);
 }
 
-/* Sensor s: its PDA (P_D at the amplitude threshold with an amplitude
- * model: docs/conventions.md "PDA") and its covariance. */
+/* A polar sensor's noise and conversion (a Cartesian sensor's are not
+ * read). sigma_bearing_rad at most 0.5 rad: beyond it no conversion
+ * describes the spread (trk_polar_to_cartesian). */
+static trk_status check_polar(const struct trk_sensor_params *sp, const char *const *name, const char **field)
+{
+    trk_status st;
+    if (sp->kind == TRK_SENSOR_CARTESIAN) return TRK_OK;
+    if (sp->kind != TRK_SENSOR_POLAR) return refuse(field, name[F_KIND], TRK_E_ARG);
+    if (sp->conversion != TRK_POLAR_FIRST_ORDER && sp->conversion != TRK_POLAR_UNBIASED)
+        return refuse(field, name[F_CONV], TRK_E_ARG);
+    if ((st = check_real(sp->sigma_range_m, 0, 1, TRK_REAL_C(1e6), name[F_SIGMA_R], field)) != TRK_OK ||
+        (st = check_real(sp->sigma_bearing_rad, 0, 1, TRK_REAL_C(0.5), name[F_SIGMA_B], field)) != TRK_OK)
+        return st;
+    return TRK_OK;
+}
+
+/* Where the sensor sees: its fixed pose (finite, in the surveillance
+ * bound), its P_D profile (points in range order, P_D in [0, 1]; not with
+ * an amplitude model, whose P_D is its threshold's) and its coverage. */
+static trk_status check_view(const struct trk_tracker_params *p, const struct trk_sensor_params *sp,
+                             const char *const *name, const char **field)
+{
+    trk_status st;
+    const trk_real bound = p->max_coord_m;
+    if ((st = check_real(sp->pose.x_m, -bound, 0, bound, name[F_POSE], field)) != TRK_OK ||
+        (st = check_real(sp->pose.y_m, -bound, 0, bound, name[F_POSE], field)) != TRK_OK ||
+        (st = check_real(sp->pose.heading_rad, -TRK_REAL_C(1e6), 0, TRK_REAL_C(1e6), name[F_POSE], field)) != TRK_OK)
+        return st;
+    const struct trk_pd_profile *pr = &sp->pd_profile;
+    if (pr->n != 0) {
+        if (pr->n < 2 || pr->n > TRK_PD_PROFILE_MAX) return refuse(field, name[F_PROFILE], TRK_E_RANGE);
+        if (sp->use_amplitude) return refuse(field, name[F_PROFILE], TRK_E_UNSUPPORTED);
+        for (unsigned k = 0; k < pr->n; k++) {
+            const trk_real lo = k == 0 ? 0 : pr->range_m[k - 1];
+            if ((st = check_real(pr->range_m[k], lo, k > 0, TRK_MAX_COORD_M_LIMIT, name[F_PROFILE], field)) != TRK_OK ||
+                (st = check_real(pr->pd[k], 0, 0, 1, name[F_PROFILE], field)) != TRK_OK)
+                return st;
+        }
+    }
+    const struct trk_coverage *c = &sp->coverage;
+    if ((st = check_real(c->min_range_m, 0, 0, TRK_MAX_COORD_M_LIMIT, name[F_COVER], field)) != TRK_OK ||
+        (st = check_real(c->max_range_m, 0, 0, TRK_MAX_COORD_M_LIMIT, name[F_COVER], field)) != TRK_OK ||
+        (st = check_real(c->half_width_rad, 0, 0, TRK_PI, name[F_COVER], field)) != TRK_OK)
+        return st;
+    if (c->max_range_m > 0 && !(c->max_range_m > c->min_range_m)) return refuse(field, name[F_COVER], TRK_E_RANGE);
+    return TRK_OK;
+}
+
+/* A polar sensor's R where the tracker needs one without a position
+ * (initiation's reach, the stored defaults): sigma_range_m^2 I, its
+ * covariance where the cross-range spread equals the range's. Every gate
+ * and update of a polar sensor takes its covariance at the position. */
+static void polar_default_r(const struct trk_sensor_params *sp, trk_real r[NZ * NZ])
+{
+    const trk_real v = sp->sigma_range_m * sp->sigma_range_m;
+    r[S(ZX, ZX)] = r[S(ZY, ZY)] = v;
+    r[S(ZX, ZY)] = r[S(ZY, ZX)] = 0;
+}
+
+/* Sensor s: its kind and view, its PDA (P_D at the amplitude threshold
+ * with an amplitude model: docs/conventions.md "PDA") and its covariance
+ * (a polar sensor's: polar_default_r). */
 static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, const char **field,
                                const struct trk_i_tracker_built *b)
 {
@@ -212,6 +280,8 @@ static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, c
     if (sp->use_amplitude != 0 && sp->use_amplitude != 1) return refuse(field, name[F_USE_AMP], TRK_E_ARG);
     if (sp->use_amplitude && trk_amplitude_check(&sp->amplitude) != TRK_OK) /* not built by its init */
         return refuse(field, name[F_AMP], TRK_E_ARG);
+    trk_status st0;
+    if ((st0 = check_polar(sp, name, field)) != TRK_OK || (st0 = check_view(p, sp, name, field)) != TRK_OK) return st0;
     const struct trk_pda_params pp = {NZ, sp->use_amplitude ? trk_amplitude_pd(&sp->amplitude) : sp->pd,
                                       p->gate_prob, p->clutter, sp->clutter_density_per_m2, 1};
     const char *pf;
@@ -224,6 +294,10 @@ static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, c
         return refuse(field, f, st);
     }
     TRK_CHECKED(trk_pda_init(&b->pda[s], &pp));
+    if (sp->kind == TRK_SENSOR_POLAR) {
+        polar_default_r(sp, b->r[s]);
+        return TRK_OK;
+    }
     st = trk_i_cov2_unpack(sp->meas_cov_m2, b->r[s]);
     return st == TRK_OK ? TRK_OK : refuse(field, name[F_COV], st);
 }

@@ -175,9 +175,10 @@ static TRK_NOINLINE size_t thin_select(struct trk_tracker *t, const struct trk_s
     const size_t n_box = thin_boxes(t, scan, box, pmax);
     size_t n = 0, n_valid = 0, n_gated = 0;
     for (size_t i = 0; i < scan->n_detections; i++) {
-        const struct trk_detection *d = &scan->detections[i];
+        struct trk_detection tmp;
+        const struct trk_detection *d = scan_detection(t, scan, i, &tmp, rep);
         trk_real llr;
-        if (!detection_usable(d, au, rep, &llr)) continue;
+        if (!d || !detection_usable(d, au, rep, &llr)) continue;
         n_valid++;
         const uint8_t in = (uint8_t)thin_in_box(box, n_box, pmax, pda->gamma, d, t->r[scan->sensor_id]);
         n_gated += in;
@@ -248,6 +249,7 @@ static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thi
         return st;
     }
     saved->dl = th->dl;
+    t->ws.pd_scale = th->pd / t->pda_saved.params.pd;
     for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] += th->dl;
 #if TRK_WITH_JOINT
     saved->log_lambda = t->log_clutter_density[s];
@@ -260,6 +262,7 @@ static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thi
 static void thin_restore(struct trk_tracker *t, unsigned s, const struct thin_saved *saved)
 {
     t->pda[s] = t->pda_saved;
+    t->ws.pd_scale = 1;
     for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] -= saved->dl;
 #if TRK_WITH_JOINT
     t->log_clutter_density[s] = saved->log_lambda;

@@ -21,19 +21,19 @@
 static TRK_NOINLINE int track_update(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
                         struct trk_look *look)
 {
-    const struct trk_pda *pda = &t->pda[scan->sensor_id];
     struct pred pr;
     struct trk_i_pda_set set;
     struct trk_i_pda_out out;
     if (filter_predict(t, tr, scan, &pr) != TRK_OK) return -1;
-    if (over_covariance_bound(t, pr.p, scan->sensor_id)) return 1;
+    if (over_covariance_bound(pr.bound_m2, pr.p)) return 1;
+    if (!pred_seen(&pr)) return track_unseen(t, tr, scan, &pr, look);
     if (filter_gate(t, tr, scan, &pr, 0, &set) < 0) return -1; /* one track's set fits: TRK_I_PAIRS >= TRK_MAX_DETECTIONS */
     if (filter_pda(t, scan, &pr, &set, &out) != TRK_OK) return -1; /* pr.x, pr.p: the posterior */
     struct trk_visibility vis = tr->vis;
-    if (t->params.track_visibility && update_visibility(t, pda, &set, &out, &vis) != TRK_OK) return -1;
+    if (t->params.track_visibility && update_visibility(t, pr.pda, &set, &out, &vis) != TRK_OK) return -1;
     commit(t, tr, scan, &set, t->ws.cand, &pr, &vis, out.beta0);
     build_look(t, tr, scan, &pr.inn, &out, look);
-    return 0;
+    return over_covariance_bound(pr.bound_m2, tr->p);
 }
 
 #endif

@@ -59,7 +59,7 @@ static void start_targets(struct trk_tracker *t, trk_real thr)
             d[k].has_amplitude = thr > 0;
             d[k].amplitude = TRK_REAL_C(1.01) * thr;
         }
-        struct trk_scan scan = {SEC(s), 0, N_TGT, d};
+        struct trk_scan scan = {SEC(s), 0, N_TGT, d, NULL, 0, {0, 0, 0}};
         TRK_ASSERT_OK(trk_tracker_process_scan(t, &scan, NULL));
     }
     assert_int_equal(trk_tracker_live_count(t), N_TGT);
@@ -97,7 +97,7 @@ static void test_gated_kept(void **state)
         rng_state = 11;
         start_targets(&tk, thr);
         over_scan(thr);
-        struct trk_scan scan = {SEC(3), 0, N_OVER, det};
+        struct trk_scan scan = {SEC(3), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
         assert_int_equal(rep.n_detections, N_OVER);
@@ -137,7 +137,7 @@ static void test_counts_add_up(void **state)
         default: d->amplitude = TRK_REAL_C(0.5) * thr; break;
         }
     }
-    struct trk_scan scan = {SEC(0), 0, N_OVER, det};
+    struct trk_scan scan = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_rejected_nonfinite, n_bad / 4);
@@ -192,7 +192,7 @@ static void test_raised_threshold_model(void **state)
         det[i].has_amplitude = 1;
         TRK_ASSERT_OK(trk_amplitude_inv_sf(m, TRK_AMP_CLUTTER, (trk_real)-log(1 - urand()), &det[i].amplitude));
     }
-    struct trk_scan scan = {SEC(0), 0, N_OVER, det};
+    struct trk_scan scan = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_kept, K);
@@ -235,7 +235,7 @@ static void test_gates_overflow(void **state)
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     const struct trk_amplitude *m = &p.sensor[0].amplitude;
     struct trk_detection d0 = {0, 0, {0, 0, 0}, 2 * m->threshold, 0, 1};
-    struct trk_scan s0 = {SEC(0), 0, 1, &d0};
+    struct trk_scan s0 = {SEC(0), 0, 1, &d0, NULL, 0, {0, 0, 0}};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
     const struct trk_track *tr = trk_tracker_track(&tk, 0);
     assert_non_null(tr);
@@ -250,7 +250,7 @@ static void test_gates_overflow(void **state)
         det[i].has_amplitude = 1;
         det[i].amplitude = m->threshold * (trk_real)(1 + 3 * urand());
     }
-    struct trk_scan scan = {SEC(1), 0, N_OVER, det};
+    struct trk_scan scan = {SEC(1), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_kept, K);
@@ -324,7 +324,7 @@ static void test_no_amplitude_thinning(void **state)
     rng_state = 15;
     over_scan(0);
     for (int i = 0; i < N_OVER; i++) det2[i] = det[N_OVER - 1 - i];
-    struct trk_scan s1 = {SEC(0), 0, N_OVER, det}, s2 = {SEC(0), 0, N_OVER, det2};
+    struct trk_scan s1 = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}}, s2 = {SEC(0), 0, N_OVER, det2, NULL, 0, {0, 0, 0}};
     struct trk_scan_report r1, r2;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &r1));
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &s2, &r2));
@@ -366,7 +366,7 @@ static void test_hard_bound(void **state)
     }
     static struct trk_tracker copy;
     memcpy(&copy, &tk, sizeof tk);
-    struct trk_scan scan = {SEC(3), 0, n_max + 1, big};
+    struct trk_scan scan = {SEC(3), 0, n_max + 1, big, NULL, 0, {0, 0, 0}};
     struct trk_scan_report rep;
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_CAPACITY);
     assert_int_equal(rep.n_detections, 0);

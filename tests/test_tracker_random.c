@@ -129,7 +129,7 @@ static void test_random_scans(void **state)
                 det[i].y_m = (trk_real)(-50.0 * (double)i + 3 * urand());
             }
             t_us += 1 + (int64_t)(urand() * 8e6);
-            const struct trk_scan scan = {t_us, 0, n, det};
+            const struct trk_scan scan = {t_us, 0, n, det, NULL, 0, {0, 0, 0}};
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
             assert_int_equal(rep.n_detections, n);
@@ -160,7 +160,7 @@ static void test_hostile_covariances(void **state)
     d[2].has_cov = 1; /* correlation 0.5: fine */
     d[2].cov_m2[TRK_COV2_XX] = d[2].cov_m2[TRK_COV2_YY] = 4;
     d[2].cov_m2[TRK_COV2_XY] = 2;
-    const struct trk_scan scan = {0, 0, 3, d};
+    const struct trk_scan scan = {0, 0, 3, d, NULL, 0, {0, 0, 0}};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_rejected_cov, 2);
@@ -182,7 +182,7 @@ static void test_hostile_covariances(void **state)
         one.has_cov = 1;
         one.cov_m2[TRK_COV2_XX] = one.cov_m2[TRK_COV2_YY] = (trk_real)1e-20;
         one.x_m = 1000;
-        const struct trk_scan s1 = {(int64_t)k * 1000000, 0, 1, &one};
+        const struct trk_scan s1 = {(int64_t)k * 1000000, 0, 1, &one, NULL, 0, {0, 0, 0}};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &rep));
         numerical += check_table(&rep);
     }
@@ -220,11 +220,11 @@ static void test_extreme_times(void **state)
     p.max_dt_s = TRK_REAL_C(1e9);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_scan_report rep;
-    const struct trk_scan first = {-TRK_TIME_US_MAX, 0, 0, NULL};
+    const struct trk_scan first = {-TRK_TIME_US_MAX, 0, 0, NULL, NULL, 0, {0, 0, 0}};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &first, &rep));
-    const struct trk_scan last = {TRK_TIME_US_MAX, 0, 0, NULL};
+    const struct trk_scan last = {TRK_TIME_US_MAX, 0, 0, NULL, NULL, 0, {0, 0, 0}};
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &last, &rep), TRK_E_RANGE);
-    const struct trk_scan beyond = {TRK_TIME_US_MAX + 1, 0, 0, NULL};
+    const struct trk_scan beyond = {TRK_TIME_US_MAX + 1, 0, 0, NULL, NULL, 0, {0, 0, 0}};
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &beyond, &rep), TRK_E_RANGE);
     assert_true((double)TRK_TIME_US_MAX - (double)(-TRK_TIME_US_MAX) < 9.3e18); /* below 2^63 */
 }

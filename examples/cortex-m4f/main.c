@@ -115,10 +115,7 @@ static size_t get_scan(int k, const struct trk_amplitude *m, struct trk_scan *sc
         detections[n].has_cov = 0;
         n++;
     }
-    scan->time_us = (int64_t)k * (int64_t)(SCAN_PERIOD_S * 1e6f);
-    scan->sensor_id = 0;
-    scan->n_detections = n;
-    scan->detections = detections;
+    trk_scan_init(scan, (int64_t)k * (int64_t)(SCAN_PERIOD_S * 1e6f), 0, n, detections);
     return n;
 }
 

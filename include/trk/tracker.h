@@ -10,6 +10,21 @@
  * its own detection probability, measurement covariance and clutter density
  * (multistatic sonar); a detection may carry its own covariance instead.
  *
+ * Polar sensors and where a sensor sees (docs/tracker.md "Polar sensors").
+ * A sensor has a pose (position, heading): its own fixed one, or each scan's
+ * (trk_scan.has_pose: a moving platform). A polar sensor (kind
+ * TRK_SENSOR_POLAR) measures range and bearing: its scans give
+ * trk_polar_detection (trk_scan.polar) and the tracker converts each to a
+ * position with its own covariance (trk_polar_to_cartesian: first order, or
+ * unbiased); a track's R is the conversion's covariance at its predicted
+ * position, and so are its gate volume and its covariance bound. Any sensor
+ * may have a P_D profile over range and a coverage (range limits, a sector
+ * about the heading): a track's P_D is the sensor's at its predicted
+ * position (trk_sensor_pd_at) wherever P_D enters its update (PDA and joint
+ * weights, existence) and a new track's at its detections (initiation's
+ * existence); where P_D is 0 a track is predicted and not gated, its
+ * existence only predicted, its tests not stepped, and nothing starts.
+ *
  * One scan, trk_tracker_process_scan():
  *   1. validate the scan (at most TRK_MAX_SCAN_DETECTIONS, time order,
  *      sensor id); a refused scan leaves the table untouched; free the slots
@@ -218,6 +233,18 @@ struct trk_scan {
                                                platform); 0: the sensor's fixed pose */
     struct trk_pose pose;                   /**< the sensor's pose at time_us, when has_pose */
 };
+
+/** Set up every member of *scan: a scan of n_detections Cartesian
+ * detections of sensor sensor_id at time_us, the sensor's fixed pose. A
+ * scan built member by member must start from this (or from a zeroed
+ * struct): members added in later versions then keep their defaults. */
+void trk_scan_init(struct trk_scan *scan, int64_t time_us, unsigned sensor_id, size_t n_detections,
+                   const struct trk_detection *detections);
+
+/** The same for a polar sensor's scan: n_detections polar detections seen
+ * from *pose (the platform's at time_us; NULL: the sensor's fixed pose). */
+void trk_scan_init_polar(struct trk_scan *scan, int64_t time_us, unsigned sensor_id, size_t n_detections,
+                         const struct trk_polar_detection *polar, const struct trk_pose *pose);
 
 /* ---------------------------------------------------------------- configuration */
 
@@ -636,12 +663,13 @@ struct trk_track {
 /** What one scan did (trk_tracker_process_scan): the detections' fate and the tracks' changes. n_detections = n_kept + n_thinned + the rejected and below-threshold counts. */
 struct trk_scan_report {
     uint32_t n_detections;          /**< in the scan */
-    uint32_t n_rejected_nonfinite;  /**< NaN/inf position or covariance */
+    uint32_t n_rejected_nonfinite;  /**< NaN/inf position or covariance (polar: range or bearing) */
     uint32_t n_rejected_cov;        /**< own covariance not SPD */
     uint32_t n_rejected_amplitude;  /**< amplitude NaN, infinite or negative, or one whose
                                        ln l^a overflows the real type */
     uint32_t n_rejected_region;     /**< finite position outside the surveillance bound
-                                       (|x_m| or |y_m| > params.max_coord_m) */
+                                       (|x_m| or |y_m| > params.max_coord_m), or a polar
+                                       detection of range <= 0 */
     uint32_t n_below_threshold;     /**< amplitude below the sensor's detection threshold */
     uint32_t n_kept;                /**< valid detections processed (at most TRK_MAX_DETECTIONS);
                                        n_detections = n_kept + n_thinned + n_rejected_nonfinite
@@ -770,7 +798,6 @@ struct trk_tracker {
     union trk_confirm_model confirm_model;      /**< the tests' validated parameters and */
     union trk_term_model term_model;            /**< derived constants, shared by all tracks */
     struct trk_track track[TRK_MAX_TRACKS];  /**< the track slots */
-    trk_real max_pos_var_m2[TRK_MAX_SENSORS];   /**< covariance bound per sensor (0: none) */
     struct {                                    /**< initial existence terms per sensor
                                                    (trk_init_params; +inf when lambda = 0): */
         trk_real first;                         /**< ln(beta / lambda), a track's first point */
@@ -797,6 +824,8 @@ struct trk_tracker {
         size_t n_shared;                                       /**< [0, n_shared) with the sensor's
                                                                   covariance, then own ones */
         struct trk_i_view view;                                /**< the scan's sensor and pose */
+        trk_real pd_scale;                                     /**< a thinned scan's P_D over the
+                                                                  sensor's (its profile's factor) */
         struct trk_i_grid grid;                                /**< gating's index of [0, n_shared), */
         uint16_t cell_end[TRK_MAX_DETECTIONS];                 /**< its cells' ends (after the
                                                                   updates: the merge's index) */
@@ -850,7 +879,9 @@ struct trk_tracker {
             trk_real c[TRK_MAX_MODELS];                        /**< predicted mode probabilities */
             trk_real log_c[TRK_MAX_MODELS];                    /**< ... their logarithms (-inf: 0) */
             trk_real pht[TRK_MAX_MODELS][TRK_CV2_NX * TRK_CV2_NZ];
-            struct trk_innovation inn[TRK_MAX_MODELS];         /**< per model, the sensor's R */
+            struct trk_innovation inn[TRK_MAX_MODELS];         /**< per model, with its R: */
+            trk_real r[TRK_MAX_MODELS][TRK_CV2_NZ * TRK_CV2_NZ]; /**< the sensor's R at the
+                                                                  model's prediction (polar) */
             trk_real rho[TRK_MAX_MODELS][TRK_MAX_DETECTIONS];  /**< rho_mi = P(model m |
                                                                   detection i), then beta_i
                                                                   rho_mi, then beta_mi */
@@ -895,7 +926,10 @@ struct trk_tracker {
  *   (TRK_WITH_IMM: n_models not 0 and trk_imm_check_params refused it),
  *   "sensor[i].pd", "sensor[i].meas_cov_m2", "sensor[i].clutter_density_per_m2",
  *   "sensor[i].use_amplitude", "sensor[i].amplitude" (no usable model, or its
- *   P_D), i the sensor index;
+ *   P_D), "sensor[i].kind", "sensor[i].sigma_range_m", "sensor[i].sigma_bearing_rad",
+ *   "sensor[i].conversion", "sensor[i].pose", "sensor[i].pd_profile" (also
+ *   TRK_E_UNSUPPORTED with use_amplitude), "sensor[i].coverage", i the sensor
+ *   index; "filter" (also TRK_E_UNSUPPORTED: alpha-beta with a polar sensor);
  *   "confirm.method" (unknown, not built in, or a visibility method without
  *   track_visibility), "confirm.u.mn", "confirm.u.sprt", "confirm.u.chi2",
  *   "confirm.u.amp", "confirm.u.existence" (the method's parameters), "confirm.u.sprt.hmm" (fewer
@@ -916,10 +950,14 @@ TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct tr
 
 /** Process one scan (see the top of this file). report may be NULL.
  * Whole-scan refusals (table untouched, report zeroed):
- * TRK_E_ARG NULL pointers, TRK_E_CAPACITY more than TRK_MAX_SCAN_DETECTIONS
+ * TRK_E_ARG NULL pointers, detections and polar both or neither given (with
+ * n_detections > 0), polar for a Cartesian sensor, has_pose not 0 or 1;
+ * TRK_E_CAPACITY more than TRK_MAX_SCAN_DETECTIONS
  * (65535) detections (a scan of TRK_MAX_DETECTIONS + 1 .. 65535 is
  * thinned, never refused), TRK_E_TIME time before the previous scan, TRK_E_RANGE gap
- * longer than max_dt_s or |time_us| > 2^62, TRK_E_SENSOR unknown sensor.
+ * longer than max_dt_s or |time_us| > 2^62, or a pose outside the surveillance
+ * bound (or |heading| > 1e6 rad), TRK_E_NAN a non-finite pose, TRK_E_SENSOR
+ * unknown sensor.
  * Per-detection and per-track problems are counted in the report; the call
  * then still returns TRK_OK. */
 TRK_NODISCARD trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,

@@ -107,8 +107,48 @@ static const struct layout_row sensor_rows[] = {
     REAL(S, clutter_density_per_m2, 1, "1/m^2", ">= 0"),
     ROW(S, use_amplitude, 'i', int, 1, "", "", "0, 1 (1: amplitude set by a model)"),
     ROW(S, amplitude, 's', struct trk_amplitude, 1, "amplitude", "", "set by the amplitude functions"),
+    ENUM(S, kind, "SENSOR_CARTESIAN, SENSOR_POLAR"),
+    REAL(S, sigma_range_m, 1, "m", "polar: > 0"),
+    REAL(S, sigma_bearing_rad, 1, "rad", "polar: (0, 0.5]"),
+    ENUM(S, conversion, "POLAR_FIRST_ORDER, POLAR_UNBIASED"),
+    ROW(S, pose, 's', struct trk_pose, 1, "pose", "", "the pose of a scan without its own"),
+    ROW(S, pd_profile, 's', struct trk_pd_profile, 1, "pd_profile", "", "n 0: pd everywhere"),
+    ROW(S, coverage, 's', struct trk_coverage, 1, "coverage", "", "all 0: everywhere"),
 };
 #undef S
+
+#define O struct trk_pose
+static const struct layout_row pose_rows[] = {
+    REAL(O, x_m, 1, "m", "finite, in the surveillance bound"),
+    REAL(O, y_m, 1, "m", "finite, in the surveillance bound"),
+    REAL(O, heading_rad, 1, "rad", "clockwise from +y, |h| <= 1e6"),
+};
+#undef O
+
+#define F struct trk_pd_profile
+static const struct layout_row pd_profile_rows[] = {
+    ROW(F, n, 'u', unsigned, 1, "", "", "0, 2 .. TRK_PD_PROFILE_MAX"),
+    REAL(F, range_m, TRK_PD_PROFILE_MAX, "m", "increasing, >= 0"),
+    REAL(F, pd, TRK_PD_PROFILE_MAX, "", "[0, 1]"),
+};
+#undef F
+
+#define V struct trk_coverage
+static const struct layout_row coverage_rows[] = {
+    REAL(V, min_range_m, 1, "m", ">= 0"),
+    REAL(V, max_range_m, 1, "m", "0: none, else > min_range_m"),
+    REAL(V, half_width_rad, 1, "rad", "[0, pi]; 0 or pi: all round"),
+};
+#undef V
+
+#define Q struct trk_polar_detection
+static const struct layout_row polar_detection_rows[] = {
+    REAL(Q, range_m, 1, "m", "> 0"),
+    REAL(Q, bearing_rad, 1, "rad", "clockwise from the pose's heading"),
+    REAL(Q, amplitude, 1, "amplitude", ">= 0, used when has_amplitude"),
+    ROW(Q, has_amplitude, 'u', uint8_t, 1, "", "", "0, 1"),
+};
+#undef Q
 
 #define A struct trk_amplitude
 static const struct layout_row amplitude_rows[] = {
@@ -167,6 +207,9 @@ static const struct layout_row scan_rows[] = {
     ROW(C, sensor_id, 'u', unsigned, 1, "", "", "0 .. n_sensors - 1"),
     ROW(C, n_detections, 'u', size_t, 1, "", "", "<= TRK_MAX_SCAN_DETECTIONS (beyond TRK_MAX_DETECTIONS: thinned)"),
     ROW(C, detections, 'p', const struct trk_detection *, 1, "", "", ""),
+    ROW(C, polar, 'p', const struct trk_polar_detection *, 1, "", "", "a polar sensor's; detections then NULL"),
+    ROW(C, has_pose, 'i', int, 1, "", "", "0, 1"),
+    ROW(C, pose, 's', struct trk_pose, 1, "pose", "", "used when has_pose"),
 };
 #undef C
 
@@ -226,6 +269,10 @@ static const struct layout_struct structs[] = {
     {"hmm_params", sizeof(struct trk_hmm_params), hmm_rows, N(hmm_rows)},
     {"hmm_sensor_params", sizeof(struct trk_hmm_sensor_params), hmm_sensor_rows, N(hmm_sensor_rows)},
     {"imm_params", sizeof(struct trk_imm_params), imm_rows, N(imm_rows)},
+    {"pose", sizeof(struct trk_pose), pose_rows, N(pose_rows)},
+    {"pd_profile", sizeof(struct trk_pd_profile), pd_profile_rows, N(pd_profile_rows)},
+    {"coverage", sizeof(struct trk_coverage), coverage_rows, N(coverage_rows)},
+    {"polar_detection", sizeof(struct trk_polar_detection), polar_detection_rows, N(polar_detection_rows)},
     {"detection", sizeof(struct trk_detection), detection_rows, N(detection_rows)},
     {"scan", sizeof(struct trk_scan), scan_rows, N(scan_rows)},
     {"scan_report", sizeof(struct trk_scan_report), report_rows, N(report_rows)},
@@ -277,7 +324,8 @@ static const struct layout_const constants[] = {
     K(TRK_CONFIRM_VISIBILITY), K(TRK_CONFIRM_EXISTENCE),
     K(TRK_TERM_KN), K(TRK_TERM_PAGE), K(TRK_TERM_SHIRYAEV), K(TRK_TERM_VISIBILITY), K(TRK_TERM_EXISTENCE),
     K(TRK_INIT_SINGLE_POINT), K(TRK_INIT_TWO_POINT), K(TRK_ASSOC_PDA), K(TRK_ASSOC_JOINT),
-    K(TRK_FILTER_KALMAN), K(TRK_FILTER_ALPHA_BETA),
+    K(TRK_FILTER_KALMAN), K(TRK_FILTER_ALPHA_BETA), K(TRK_SENSOR_CARTESIAN), K(TRK_SENSOR_POLAR),
+    K(TRK_POLAR_FIRST_ORDER), K(TRK_POLAR_UNBIASED), K(TRK_PD_PROFILE_MAX),
     K(TRK_MN_FIXED), K(TRK_MN_SLIDING), K(TRK_SPRT_FIXED_PD), K(TRK_SPRT_HMM),
     K(TRK_EVENTS_COMPLETE), K(TRK_EVENTS_PAPER), K(TRK_AMP_RAYLEIGH), K(TRK_AMP_K),
     K(TRK_TRACK_FREE), K(TRK_TRACK_TENTATIVE), K(TRK_TRACK_CONFIRMED), K(TRK_TRACK_TERMINATED),

@@ -125,10 +125,7 @@ enum lcmc_reason lcmc_scan_from_msg(const trk_detection_scan_t *m, unsigned n_se
         o->amplitude = d->has_amplitude ? (trk_real)d->amplitude : 0;
     }
     out->n_msg_detections = n;
-    out->scan.time_us = m->utime;
-    out->scan.sensor_id = (unsigned)m->sensor_id;
-    out->scan.n_detections = kept;
-    out->scan.detections = out->det;
+    trk_scan_init(&out->scan, m->utime, (unsigned)m->sensor_id, kept, out->det);
     out->seq = m->seq;
     return LCMC_OK;
 }

@@ -792,10 +792,7 @@ void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, str
             origin[j] = o;
         }
     }
-    scan->time_us = (int64_t)llround(t * 1e6);
-    scan->sensor_id = 0;
-    scan->n_detections = nd;
-    scan->detections = det;
+    trk_scan_init(scan, (int64_t)llround(t * 1e6), 0, nd, det);
     if (info) {
         info->n_target = nt;
         info->n_clutter = nc;

@@ -436,12 +436,10 @@ void scen_next(struct scenario *s, struct trk_detection *det, size_t max_det, st
     }
     /* beyond the tracker's time range: INT64_MAX, which every consumer refuses (no llround overflow) */
     const double t_us = (double)s->p.t0_us + (double)s->k * s->p.scan_period_s * 1e6;
-    scan->time_us = t_us <= (double)TRK_TIME_US_MAX
-                        ? s->p.t0_us + (int64_t)llround((double)s->k * s->p.scan_period_s * 1e6)
-                        : INT64_MAX;
-    scan->sensor_id = s->p.sensor_id;
-    scan->n_detections = n;
-    scan->detections = det;
+    trk_scan_init(scan,
+                  t_us <= (double)TRK_TIME_US_MAX ? s->p.t0_us + (int64_t)llround((double)s->k * s->p.scan_period_s * 1e6)
+                                                  : INT64_MAX,
+                  s->p.sensor_id, n, det);
     if (n_target_dets) *n_target_dets = nt;
     if (n_dropped) *n_dropped = dropped;
     s->k++;
