@@ -102,7 +102,9 @@ TRK_INLINE int scan_polar(const struct trk_tracker *t) { return t->ws.view.sp->k
  * model's). */
 TRK_INLINE trk_real sensor_pd_at(const struct trk_tracker *t, const struct trk_scan *scan, trk_real x, trk_real y)
 {
-    const trk_real pd = trk_i_view_pd(&t->ws.view, t->pda[scan->sensor_id].params.pd, x, y);
+    const trk_real flat = t->pda[scan->sensor_id].params.pd;
+    if (!t->ws.view.limited) return flat; /* no call for a sensor that sees everywhere alike */
+    const trk_real pd = trk_i_view_pd(&t->ws.view, flat, x, y);
     return t->ws.view.sp->pd_profile.n > 0 ? pd * t->ws.pd_scale : pd; /* a thinned scan's factor */
 }
 
