@@ -439,10 +439,12 @@ struct trk_i_cv2_gain {
     trk_real pc[TRK_CV2_NX * TRK_CV2_NX];             /* P_c (rows; the upper triangle is used) */
 };
 
-TRK_INLINE void trk_i_pda_gain_cv2(const struct trk_i_pda_pred *pr, struct trk_i_cv2_gain *g)
+/* The same for any R and its S = H P H' + R's L^-1 (li: [0] and [2], [3]
+ * of the lower triangle). */
+TRK_INLINE void trk_i_pda_gain_cv2_r(const trk_real *p, const trk_real *r, const trk_real *li,
+                                     struct trk_i_cv2_gain *g)
 {
     enum { N = TRK_CV2_NX };
-    const trk_real *p = pr->p, *r = pr->r, *li = pr->inn->s_chol_inv;
     const trk_real m00 = li[0], m10 = li[2], m11 = li[3]; /* L^-1 */
     trk_real ph0[N], ph1[N], k0[N], k1[N], e0[N], e1[N];
     for (int a = 0; a < N; a++) {
@@ -464,6 +466,11 @@ TRK_INLINE void trk_i_pda_gain_cv2(const struct trk_i_pda_pred *pr, struct trk_i
         for (int b = 0; b < N; b++)
             g->pc[a * N + b] = p[a * N + b] - (ka0 * ph0[b] + ka1 * ph1[b]) - (ea0 * k0[b] + ea1 * k1[b]);
     }
+}
+
+TRK_INLINE void trk_i_pda_gain_cv2(const struct trk_i_pda_pred *pr, struct trk_i_cv2_gain *g)
+{
+    trk_i_pda_gain_cv2_r(pr->p, pr->r, pr->inn->s_chol_inv, g);
 }
 
 /* trk_i_pda_combine for the CV path, from the gain part *g and the
@@ -497,6 +504,107 @@ TRK_INLINE void trk_i_pda_combine_cv2(const struct trk_i_pda_pred *pr, const str
         for (int b = a + 1; b < N; b++) acc[b * N + a] = acc[a * N + b];
 }
 
+/* The CV layout (as trk_i_pda_is_cv2) whatever the detections' covariances. */
+TRK_INLINE int trk_i_pda_is_cv2_layout(const struct trk_i_pda_pred *pr)
+{
+#if TRK_SIZE_OPT
+    (void)pr;
+    return 0;
+#else
+    return pr->nx == TRK_CV2_NX && pr->nz == TRK_CV2_NZ && pr->sel && pr->sel[0] == TRK_CV2_X &&
+           pr->sel[1] == TRK_CV2_Y;
+#endif
+}
+
+/* Own-covariance detection i of the CV path: its gain part (u_j, the
+ * Joseph P_c,j with R_j) into *g and its move d = u_j y_j (y_j = L_j^-1
+ * nu_j). 0 when S_j does not factor (cannot happen: it was gated). */
+TRK_INLINE int trk_i_cv2_own(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s, size_t i,
+                             struct trk_i_cv2_gain *g, trk_real *d)
+{
+    const trk_real *r_j = s->r_own + (i - s->n_shared) * (size_t)(TRK_CV2_NZ * TRK_CV2_NZ);
+    trk_real sj[TRK_CV2_NZ * TRK_CV2_NZ], li[TRK_CV2_NZ * TRK_CV2_NZ], log_det;
+    trk_i_pda_own_s(pr, r_j, sj);
+    if (trk_i_pda_factor(TRK_CV2_NZ, sj, li, &log_det) != TRK_OK) return 0;
+    trk_i_pda_gain_cv2_r(pr->p, r_j, li, g);
+    const trk_real n0 = s->z[2 * i] - pr->inn->z_pred[0], n1 = s->z[2 * i + 1] - pr->inn->z_pred[1];
+    const trk_real y0 = li[0] * n0, y1 = li[2] * n0 + li[3] * n1;
+    for (int a = 0; a < TRK_CV2_NX; a++) d[a] = g->u0[a] * y0 + g->u1[a] * y1;
+    return 1;
+}
+
+/* The moment match over components (weight w, mean move mu) about a shift
+ * c: sm = sum w (mu - c), m = sum w (mu - c)(mu - c)' (upper triangle). */
+TRK_INLINE void trk_i_cv2_spread_add(trk_real w, const trk_real *mu, const trk_real *c, trk_real *sm, trk_real *m)
+{
+    trk_real e[TRK_CV2_NX];
+    for (int a = 0; a < TRK_CV2_NX; a++) {
+        e[a] = mu[a] - c[a];
+        sm[a] += w * e[a];
+    }
+    for (int a = 0; a < TRK_CV2_NX; a++)
+        for (int b = a; b < TRK_CV2_NX; b++) m[a * TRK_CV2_NX + b] += w * e[a] * e[b];
+}
+
+/* trk_i_pda_combine for the CV path with detections of their own R_j: the
+ * mixture as components, each with its weight, mean move and covariance
+ * sum: no detection (beta0, 0, beta0 P-), the shared group as one (B, u
+ * ybar, B P_c + u W u', W its centred spread), each own-covariance
+ * detection (beta_j, d_j, beta_j P_c,j with its own gain). Their spread
+ * sum w (mu - mubar)(mu - mubar)' in one pass about the mean of the
+ * heaviest component (as struct trk_i_cv2_moments: the correction cancels
+ * at most a few times its own rounding), so each detection's gain is formed
+ * once (the general code forms it twice). test_pda checks it against the
+ * general code. */
+TRK_INLINE void trk_i_pda_combine_cv2_own(const struct trk_i_pda_pred *pr, const struct trk_i_pda_set *s,
+                                          trk_real beta0, trk_real *x_new, trk_real *acc)
+{
+    enum { N = TRK_CV2_NX };
+    struct trk_i_cv2_gain g;
+    const trk_real none[N] = {0, 0, 0, 0}; /* the no-detection hypothesis's move */
+    trk_real c[N] = {0, 0, 0, 0}, mu_sh[N] = {0, 0, 0, 0}, d[N], sm[N] = {0, 0, 0, 0}, m[N * N] = {0};
+    /* the shared group: its moments and move */
+    struct trk_i_pda_set sh = *s;
+    sh.n = s->n_shared;
+    struct trk_i_cv2_moments ms = {0, 0, 0, 0, 0, 0};
+    if (sh.n > 0) trk_i_pda_moments_cv2(pr, &sh, trk_i_pda_arg_max(sh.n, sh.w), &ms);
+    trk_i_pda_gain_cv2(pr, &g);
+    for (int a = 0; a < N; a++) mu_sh[a] = g.u0[a] * ms.y0 + g.u1[a] * ms.y1;
+    /* acc = beta0 P- + B P_c + u W u' (upper triangle) */
+    for (int a = 0; a < N; a++)
+        for (int b = a; b < N; b++)
+            acc[a * N + b] = beta0 * pr->p[a * N + b] + ms.b * g.pc[a * N + b] +
+                             g.u0[a] * (ms.w00 * g.u0[b] + ms.w01 * g.u1[b]) + g.u1[a] * (ms.w01 * g.u0[b] + ms.w11 * g.u1[b]);
+    /* the shift: the heaviest component's mean */
+    size_t k = s->n_shared;
+    for (size_t i = s->n_shared + 1; i < s->n; i++)
+        if (s->w[i] > s->w[k]) k = i;
+    if (s->w[k] > beta0 && s->w[k] > ms.b) {
+        if (!trk_i_cv2_own(pr, s, k, &g, c))
+            for (int a = 0; a < N; a++) c[a] = 0;
+    } else if (ms.b > beta0) {
+        for (int a = 0; a < N; a++) c[a] = mu_sh[a];
+    }
+    trk_real total = beta0 + ms.b;
+    trk_i_cv2_spread_add(beta0, none, c, sm, m);
+    if (ms.b > 0) trk_i_cv2_spread_add(ms.b, mu_sh, c, sm, m);
+    for (size_t i = s->n_shared; i < s->n; i++) {
+        const trk_real w = s->w[i];
+        if (w == 0 || !trk_i_cv2_own(pr, s, i, &g, d)) continue;
+        total += w;
+        for (int a = 0; a < N; a++)
+            for (int b = a; b < N; b++) acc[a * N + b] += w * g.pc[a * N + b];
+        trk_i_cv2_spread_add(w, d, c, sm, m);
+    }
+    /* mubar = c + sm / total; spread = m - sm sm' / total */
+    const trk_real inv = total > 0 ? 1 / total : 0;
+    for (int a = 0; a < N; a++) x_new[a] = pr->x[a] + c[a] + sm[a] * inv;
+    for (int a = 0; a < N; a++)
+        for (int b = a; b < N; b++) acc[a * N + b] += m[a * N + b] - sm[a] * sm[b] * inv;
+    for (int a = 0; a < N; a++)
+        for (int b = a + 1; b < N; b++) acc[b * N + a] = acc[a * N + b];
+}
+
 /* The PDA state and covariance update as the moment match of a Gaussian
  * mixture, written so that every term is positive semi-definite.
  * Hypothesis i (beta_i) moves the state by dx_i = K_i nu_i; hypothesis 0
@@ -518,6 +626,10 @@ TRK_INLINE void trk_i_pda_combine(const struct trk_i_pda_pred *pr, const struct 
         trk_i_pda_gain_cv2(pr, &g);
         trk_i_pda_moments_cv2(pr, s, trk_i_pda_arg_max(s->n, s->w), &m);
         trk_i_pda_combine_cv2(pr, &g, &m, beta0, x_new, acc);
+        return;
+    }
+    if (trk_i_pda_is_cv2_layout(pr)) {
+        trk_i_pda_combine_cv2_own(pr, s, beta0, x_new, acc);
         return;
     }
     trk_real u[TRK_MAX_STATE * TRK_MAX_MEAS], sy[TRK_MAX_MEAS], w[TRK_MAX_MEAS * TRK_MAX_MEAS];

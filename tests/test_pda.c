@@ -7,6 +7,7 @@
 #include "trk/kalman.h"
 #include "trk/linalg.h"
 #include "trk/pda.h"
+#include "../src/pda_impl.h"
 
 static struct trk_pda make_pda(enum trk_clutter_mode mode, trk_real pd, trk_real lambda, int gating)
 {
@@ -116,6 +117,76 @@ static void test_cv_fast_path(void **state)
         for (int i = 0; i < 4; i++)
             for (int j = 0; j < 4; j++) assert_true(p[i * 4 + j] == p[j * 4 + i]);
         TRK_ASSERT_OK(trk_mat_check_spd(4, p, 0));
+    }
+}
+
+/* The CV path with detections of their own R_j (pda_impl.h,
+ * trk_i_pda_combine_cv2_own: one gain per detection, the spread about the
+ * heaviest component) against the general code (the same track embedded in
+ * 5 states), for random priors, shared and own detections, weights (beta0
+ * small or dominant) and clustered sets with R << H P H'. */
+static void test_cv_own_path(void **state)
+{
+    (void)state;
+    uint64_t rs = 19;
+    for (int rep = 0; rep < 300; rep++) {
+        trk_real x[4], p[16], x5[5], p5[25] = {0}, h5[10] = {0};
+        trk_real l[16] = {0};
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j <= i; j++) l[i * 4 + j] = (trk_real)(2 * trk_test_urand(&rs) - 1) * 3;
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++) {
+                double v = i == j;
+                for (int k = 0; k < 4; k++) v += (double)l[i * 4 + k] * (double)l[j * 4 + k];
+                p[i * 4 + j] = (trk_real)v;
+            }
+        for (int i = 0; i < 4; i++) x[i] = (trk_real)(100 * trk_test_urand(&rs));
+        const int clustered = rep % 5 == 4;
+        const size_t n_sh = (size_t)(rep % 4), n = n_sh + 1 + (size_t)(rep % 7);
+        trk_real z[2 * 12], r_own[4 * 12], w[12];
+        static const trk_real r_small[4] = {TRK_REAL_C(1e-4), 0, 0, TRK_REAL_C(1e-4)};
+        const trk_real *rr = clustered ? r_small : R;
+        for (size_t i = 0; i < n; i++) {
+            const trk_real ux = (trk_real)(8 * trk_test_urand(&rs) - 4), uy = (trk_real)(8 * trk_test_urand(&rs) - 4);
+            z[2 * i] = x[TRK_CV2_X] + (clustered ? 1 + TRK_REAL_C(1e-3) * ux : ux);
+            z[2 * i + 1] = x[TRK_CV2_Y] + (clustered ? -1 + TRK_REAL_C(1e-3) * uy : uy);
+            if (i >= n_sh) { /* an own R_j: a rotated ellipse, scale 0.1-10 (clustered: 1e-4) */
+                trk_real *rj = r_own + 4 * (i - n_sh);
+                const double a = clustered ? 1e-4 : 0.1 + 10 * trk_test_urand(&rs), b = clustered ? 2e-4 : 0.1 + 3 * trk_test_urand(&rs);
+                const double th = 3 * trk_test_urand(&rs), cs = cos(th), sn = sin(th);
+                rj[0] = (trk_real)(a * cs * cs + b * sn * sn);
+                rj[1] = rj[2] = (trk_real)((a - b) * cs * sn);
+                rj[3] = (trk_real)(a * sn * sn + b * cs * cs);
+            }
+        }
+        double sum = 0;
+        for (size_t i = 0; i < n; i++) sum += (w[i] = (trk_real)trk_test_urand(&rs));
+        const double beta0 = rep % 3 == 0 ? 0.9 : 0.05;
+        for (size_t i = 0; i < n; i++) w[i] = (trk_real)((1 - beta0) * w[i] / sum);
+        for (int i = 0; i < 4; i++) {
+            x5[i] = x[i];
+            for (int j = 0; j < 4; j++) p5[i * 5 + j] = p[i * 4 + j];
+        }
+        x5[4] = 3;
+        p5[24] = 2;
+        h5[0 * 5 + TRK_CV2_X] = 1;
+        h5[1 * 5 + TRK_CV2_Y] = 1;
+        trk_real pht4[8], pht5[10], xn4[4], xn5[5], acc4[16], acc5[25];
+        struct trk_innovation inn4, inn5;
+        TRK_ASSERT_OK(trk_i_innovation_sel(4, 2, trk_cv2_h, trk_i_cv2_sel(), rr, x, p, pht4, &inn4));
+        TRK_ASSERT_OK(trk_i_innovation_sel(5, 2, h5, NULL, rr, x5, p5, pht5, &inn5));
+        const struct trk_i_pda_pred pr4 = {4, 2, trk_cv2_h, trk_i_cv2_sel(), rr, x, p, pht4, &inn4};
+        const struct trk_i_pda_pred pr5 = {5, 2, h5, NULL, rr, x5, p5, pht5, &inn5};
+        const struct trk_i_pda_set set = {n, n_sh, n, z, w, r_own, 0, 0};
+        trk_i_pda_combine(&pr4, &set, (trk_real)beta0, xn4, acc4);
+        trk_i_pda_combine(&pr5, &set, (trk_real)beta0, xn5, acc5);
+        for (int i = 0; i < 4; i++) TRK_ASSERT_NEAR(xn4[i], xn5[i], TRK_TOL(1e-10, 1e-3), TRK_TOL(1e-12, 1e-5));
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++) {
+                TRK_ASSERT_NEAR(acc4[i * 4 + j], acc5[i * 5 + j], TRK_TOL(1e-10, 1e-3), TRK_TOL(1e-10, 1e-4));
+                assert_true(acc4[i * 4 + j] == acc4[j * 4 + i]);
+            }
+        TRK_ASSERT_OK(trk_mat_check_spd(4, acc4, 0));
     }
 }
 
@@ -339,6 +410,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_invariants),
         cmocka_unit_test(test_cv_fast_path),
+        cmocka_unit_test(test_cv_own_path),
         cmocka_unit_test(test_review_cases),
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_amplitude_weights),

@@ -169,7 +169,9 @@ struct trk_polar_detection {
  * y north). Bearings are clockwise from +y: a point at range r and
  * absolute bearing b from (x_m, y_m) is at (x_m + r sin b, y_m + r cos b). */
 struct trk_pose {
+    /** @{ */
     trk_real x_m, y_m;       /**< position */
+    /** @} */
     trk_real heading_rad;    /**< the sensor's reference direction, clockwise from +y;
                                 a polar detection's bearing and the coverage sector
                                 are measured from it */
