@@ -16,8 +16,7 @@ static const char *const REASON_NAME[LCMC_N_REASONS] = {
 
 static const char *const REASON_TEXT[LCMC_N_REASONS] = {
     "accepted",
-    "message does not decode as the channel's type (trk.detection_scan_t or "
-    "trk.detection_scan_polar_t: wrong type, truncated or trailing bytes)",
+    "message does not decode as the channel's type (wrong type, truncated or trailing bytes)",
     "n_detections outside 0 .. MAX_DETECTIONS",
     "scan refused by the tracker for its size (beyond TRK_MAX_SCAN_DETECTIONS)",
     "a used field is NaN, infinite or beyond the tracker's real range",

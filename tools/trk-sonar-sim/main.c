@@ -1,7 +1,7 @@
 /* trk-sonar-sim - a simulated sonar: publishes a seeded scenario
  * (tools/sim/scenario.h) as trk.detection_scan_t messages over LCM (or,
  * with --polar, as trk.detection_scan_polar_t from a moving platform:
- * polar.h), or
+ * platform.h), or
  * writes them to an LCM log file (--out), so the whole chain sonar -> trk-lcm-bridge
  * -> consumers can run without hardware. See --help.
  *
@@ -22,7 +22,7 @@
 #include "kvfile.h"
 #include "lcm_copy.h"
 #include "lcm_log.h"
-#include "polar.h"
+#include "platform.h"
 #include "scenario.h"
 #include "tracker_config.h"
 

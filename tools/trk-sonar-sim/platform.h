@@ -1,4 +1,4 @@
-/* polar.h - trk-sonar-sim's polar sonar on a moving platform: the
+/* platform.h - trk-sonar-sim's polar sonar on a moving platform: the
  * scenario's targets (tools/sim/scenario.h: their motion and amplitude
  * laws) seen as range and bearing from a platform moving at constant
  * velocity, with the detection probability of the sensor's P_D profile and
@@ -20,8 +20,8 @@
  *   the detections are shuffled
  * Random numbers: rng keyed by the scenario's seed on streams of their own
  * (POLAR_STREAM + k), apart from the scenario's. */
-#ifndef TRK_SONAR_SIM_POLAR_H
-#define TRK_SONAR_SIM_POLAR_H
+#ifndef TRK_SONAR_SIM_PLATFORM_H
+#define TRK_SONAR_SIM_PLATFORM_H
 
 #include <stddef.h>
 #include <stdint.h>

@@ -1,5 +1,5 @@
-/* polar.c - trk-sonar-sim's polar sonar on a moving platform (polar.h). */
-#include "polar.h"
+/* platform.c - trk-sonar-sim's polar sonar on a moving platform (platform.h). */
+#include "platform.h"
 
 #include <math.h>
 #include <string.h>
