@@ -228,7 +228,7 @@ static void test_bad_detections_dropped_alone(void **state)
     msg.detections[1].range_m = NAN;             /* nonfinite */
     msg.detections[2].bearing_rad = INFINITY;    /* nonfinite */
     msg.detections[3].range_m = 0;               /* field: range > 0 */
-    msg.detections[4].range_m = -5;              /* field */
+    msg.detections[4].range_m = TRK_REAL_IS_FLOAT ? 1e-300 : -5; /* field: not > 0 as a trk_real */
     msg.detections[5].bearing_rad = 6.3;         /* field: beyond a turn */
     msg.detections[6].has_amplitude = 2;         /* field: boolean */
     msg.detections[7].has_amplitude = 1;         /* field: negative amplitude */

@@ -195,7 +195,8 @@ static enum lcmc_reason check_polar(const trk_polar_detection_t *d, size_t i, ch
         DETAIL("detections[%zu]: range %g m, bearing %g rad", i, d->range_m, d->bearing_rad);
         return LCMC_NONFINITE;
     }
-    if (!(d->range_m > 0) || fabs(d->bearing_rad) > LCMC_BEARING_MAX_RAD) {
+    /* > 0 as the tracker's real: a float build rounds 1e-300 m to 0 */
+    if (!((trk_real)d->range_m > 0) || fabs(d->bearing_rad) > LCMC_BEARING_MAX_RAD) {
         DETAIL("detections[%zu]: range %g m (> 0), bearing %g rad (|b| <= 2 pi)", i, d->range_m, d->bearing_rad);
         return LCMC_FIELD;
     }
