@@ -9,13 +9,15 @@
  *   - the bridge hands the tracker what a direct call gets (scan contents,
  *     pose included) and answers as the tracker does to the direct call;
  *     its replay of a log with both channels and hostile messages counts
- *     each by cause
+ *     each by cause; live, it subscribes to the polar channel (memq://)
  * The scans are built here: targets on straight lines seen from a platform
  * moving north-east, range and bearing exact. */
 #define _POSIX_C_SOURCE 200809L /* getpid */
 #include <unistd.h>
 
 #include "trk_test.h"
+
+#include <lcm/lcm.h>
 
 #include "bridge.h"
 #include "lcm_log.h"
@@ -469,6 +471,43 @@ static void test_bridge_refuses(void **state)
     bridge_free(b);
 }
 
+/* Live: the bridge subscribes to the polar channel too (memq://). */
+static void test_memq_polar(void **state)
+{
+    (void)state;
+    lcm_t *lc = lcm_create("memq://");
+    assert_non_null(lc);
+    struct bridge *b = bridge_new(&cfg, &opts, err, sizeof err);
+    assert_non_null(b);
+    struct bridge_live live;
+    assert_int_equal(bridge_live_attach(&live, lc, b), 0);
+    assert_non_null(live.sub_polar);
+    for (int k = 0; k < 3; k++)
+        assert_int_equal(lcm_publish(lc, opts.polar_detection_channel, scan_bytes[k], LCMC_POLAR_SCAN_WIRE_SIZE), 0);
+    assert_int_equal(lcm_publish(lc, opts.polar_detection_channel, scan_bytes[3], 50), 0); /* truncated */
+    while (lcm_handle_timeout(lc, 0) > 0) {
+    }
+    assert_true(b->c.received == 4 && b->c.by_reason[LCMC_DECODE] == 1);
+    same_scan(&b->scan.scan, &scans[2]); /* the last good one */
+    bridge_live_detach(&live);
+    assert_null(live.sub_polar);
+    bridge_free(b);
+    /* without the polar channel: no subscription */
+    struct bridge_opts o = opts;
+    o.polar_detection_channel[0] = 0;
+    b = bridge_new(&cfg, &o, err, sizeof err);
+    assert_non_null(b);
+    assert_int_equal(bridge_live_attach(&live, lc, b), 0);
+    assert_null(live.sub_polar);
+    assert_int_equal(lcm_publish(lc, opts.polar_detection_channel, scan_bytes[0], LCMC_POLAR_SCAN_WIRE_SIZE), 0);
+    while (lcm_handle_timeout(lc, 0) > 0) {
+    }
+    assert_true(b->c.received == 0);
+    bridge_live_detach(&live);
+    bridge_free(b);
+    lcm_destroy(lc);
+}
+
 static const char *tmp_path(const char *name)
 {
     static char paths[4][256];
@@ -551,6 +590,7 @@ int main(void)
         cmocka_unit_test_setup(test_cartesian_after_polar, setup_sensors),
         cmocka_unit_test_setup(test_bridge_matches_direct, setup_bridge),
         cmocka_unit_test_setup(test_bridge_refuses, setup_bridge),
+        cmocka_unit_test_setup(test_memq_polar, setup_bridge),
         cmocka_unit_test_setup(test_replay, setup_bridge),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
