@@ -12,7 +12,8 @@
 #     kennedy-null and trk-sonar-sim exit 1, and a failed regeneration leaves
 #     the old table byte-identical, with no temporary file left; demo prints
 #     no "files:" line; `trk-sonar-sim --scan-period-s 1e13` is refused (it
-#     wrote 1 of 3 scans and exited 0)
+#     wrote 1 of 3 scans and exited 0); `trk-sonar-sim --polar` refuses a
+#     platform, noise, P_D profile or coverage out of range, naming it
 #   unbounded reads also: trk-sim mtt-compare refuses a CSV line longer than its
 #     buffer, naming it (the rest was read as a line of its own)
 #   parsing: `trk-tablegen amp --clutter-power 1e31 --no-measure`
@@ -104,6 +105,19 @@ out=$(timeout -k 1 20 "$bin/trk-sonar-sim" --scan-period-s 1e13 --out "$d/p.log"
 rc=$?
 [ $rc -eq 2 ] || fail "sonar-sim --scan-period-s 1e13: exit $rc, want 2 ($out)"
 echo "$out" | grep -q "beyond the tracker's time range" || fail "sonar-sim --scan-period-s 1e13: message ($out)"
+ok
+# a polar sonar's settings out of range: exit 2 with the reason, no log
+for args in "--platform 0,0,0,-1|speed" "--platform nan,0,0,1|" "--platform 0,0,7,1|course" \
+    "--sigma-bearing-rad 0.6|(0, 0.5]" "--sigma-range-m 0|(0, 1e+06]" "--pd-profile 0:0.9|RANGE_M:PD" \
+    "--pd-profile 5:0.9,4:0.5|increasing" "--coverage 0,1500|MIN_RANGE_M" "--coverage 500,400,1|must exceed"; do
+    a=${args%%|*} want=${args#*|}
+    # shellcheck disable=SC2086
+    out=$(timeout -k 1 20 "$bin/trk-sonar-sim" --polar $a --out "$d/q.log" --scans 2 --quiet 2>&1)
+    rc=$?
+    [ $rc -eq 2 ] || fail "sonar-sim --polar $a: exit $rc, want 2 ($out)"
+    echo "$out" | grep -qF -- "$want" || fail "sonar-sim --polar $a: message lacks '$want' ($out)"
+    [ ! -e "$d/q.log" ] || fail "sonar-sim --polar $a: wrote $d/q.log"
+done
 ok
 
 # ---- parsing

@@ -7,7 +7,9 @@
 #     message, accepts --help / --print-config
 #   - SIGINT and SIGTERM stop a live bridge (memq://) cleanly: exit 0, summary
 #   - trk-sonar-sim --log and trk-lcm-bridge --replay are deterministic
-#     (same options, byte-identical files)
+#     (same options, byte-identical files), polar scans too; the bridge
+#     replays the polar channel; the polar sonar's detections follow its
+#     pose, coverage and P_D profile (with a python3 that has numpy)
 # In a private network namespace (unshare -rn; skipped with the reason when
 # the machine cannot create one):
 #   - trk-sonar-sim -> udpm -> trk-lcm-bridge -> udpm -> lcm-logger: the
@@ -112,6 +114,59 @@ cmp -s "$T/d1.lcmlog" "$T/d2.lcmlog" || fail "trk-sonar-sim --log is not determi
 cmp -s "$T/t1.lcmlog" "$T/t2.lcmlog" || fail "trk-lcm-bridge --replay is not deterministic"
 grep -q "processed 40, rejected 5" "$T/r1.out" || fail "replay counts: $(cat "$T/r1.out")"
 ok "sonar-sim --log and bridge --replay are byte-identical across runs"
+
+# --- polar scans: deterministic, both channels replayed, and what the
+# simulated polar sonar draws (a stationary target inside the coverage is
+# detected with the profile's P_D, one outside never; the pose moves as set)
+for i in 1 2; do
+    timeout 60 "$B/trk-sonar-sim" --polar --platform 1000,1000,0.5,3 --coverage 0,1800,1.2 \
+        --pd-profile 0:0.9,1000:0.7,2000:0.3 --out "$T/p$i.lcmlog" --scans 40 --seed 9 --bad-every 7 --quiet > /dev/null ||
+        fail "trk-sonar-sim --polar --log exited $?"
+done
+cmp -s "$T/p1.lcmlog" "$T/p2.lcmlog" || fail "trk-sonar-sim --polar --log is not deterministic"
+timeout 60 "$B/trk-lcm-bridge" --set sensor.0.kind=polar --replay "$T/p1.lcmlog" --out "$T/pt.lcmlog" --quiet > "$T/pr.out" ||
+    fail "trk-lcm-bridge --replay of polar scans exited $?"
+grep -q "45 on TRK_DETECTIONS and TRK_DETECTIONS_POLAR" "$T/pr.out" || fail "polar replay: $(cat "$T/pr.out")"
+grep -q "received 45, processed [0-9]*, rejected [0-9]* (decode 1, count 1, field 1, sensor 1" "$T/pr.out" ||
+    fail "polar replay counts: $(cat "$T/pr.out")"
+ok "sonar-sim --polar --log is byte-identical across runs; the bridge replays the polar channel and counts its bad messages"
+PY=
+for p in ${PYTHON:-} python3 /usr/bin/python3; do
+    if command -v "$p" > /dev/null 2>&1 && "$p" -c 'import numpy' > /dev/null 2>&1; then PY=$p; break; fi
+done
+if [ -n "$PY" ]; then
+    timeout 60 "$B/trk-sonar-sim" --polar --platform 1000,1000,0,4 --coverage 0,2000,1 --pd-profile 0:0.5,3000:0.5 \
+        --target 1500,1000,0,0 --target 1000,1800,0,0 --q 0 --clutter-count 0 --clutter-model none \
+        --sigma-range-m 3 --sigma-bearing-rad 0.005 --scans 400 --seed 3 --out "$T/pp.lcmlog" --quiet > /dev/null ||
+        fail "trk-sonar-sim --polar exited $?"
+    PYTHONPATH=tools/python PYTHONDONTWRITEBYTECODE=1 timeout 120 "$PY" - "$T/pp.lcmlog" > "$T/pp.out" 2>&1 <<'PYEOF' ||
+import math, sys
+import trklog
+n_det = n_scans = 0
+for ev, m in trklog.messages(sys.argv[1], channels=["TRK_DETECTIONS_POLAR"]):
+    k = n_scans
+    n_scans += 1
+    # the platform: north at 4 m/s, one scan every 2 s, looking north
+    assert m.has_pose and m.pose_heading_rad == 0 and m.pose_x_m == 1000, (k, m.pose_x_m)
+    assert abs(m.pose_y_m - (1000 + 8 * k)) < 1e-6, (k, m.pose_y_m)
+    for d in m.detections[:m.n_detections]:
+        # only the target north of the platform (800 m at scan 0), never the one east (bearing pi/2 > 1 rad)
+        want_r = 800 - 8 * k if k < 100 else 8 * k - 800
+        want_b = 0 if k < 100 else math.pi
+        if k >= 100:  # behind the platform: outside the sector, never seen
+            raise AssertionError("scan %d: a detection behind the platform" % k)
+        assert abs(d.range_m - want_r) < 5 * 3 + 1e-9, (k, d.range_m, want_r)
+        assert abs(d.bearing_rad - want_b) < 5 * 0.005 + 1e-9, (k, d.bearing_rad)
+        n_det += 1
+assert n_scans == 400, n_scans
+# 100 scans with the north target in front (P_D 0.5 of the profile, not the
+# targets' 0.9): 50 expected, sigma 5
+assert 30 <= n_det <= 70, n_det
+print("%d scans, %d detections of the target in the sector" % (n_scans, n_det))
+PYEOF
+        fail "the polar sonar's detections: $(tail -5 "$T/pp.out")"
+    ok "sonar-sim --polar: $(cat "$T/pp.out"); poses as set; none outside the coverage"
+fi
 # detections below the amplitude threshold are counted (they used to be in no counter)
 timeout 60 "$B/trk-lcm-bridge" --replay "$T/d1.lcmlog" --out "$T/t3.lcmlog" --quiet \
     --set sensor.0.amplitude=rayleigh --set sensor.0.pfa=1e-9 > "$T/r3.out" || fail "replay exited $?"

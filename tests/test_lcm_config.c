@@ -380,6 +380,137 @@ static void expect_check_fails(const char *want)
     if (!strstr(err, want)) fail_msg("message '%s' lacks '%s'", err, want);
 }
 
+/* A value of key refused (-1) with want in the message. */
+static void refused(const char *k, const char *v, const char *want)
+{
+    err[0] = 0;
+    assert_int_equal(set(k, v), -1);
+    if (!strstr(err, want)) fail_msg("%s = %s: '%s', want '%s'", k, v, err, want);
+}
+
+/* A polar sensor, its pose, P_D profile and coverage: each key sets its
+ * field, refuses what the tracker refuses, a misspelling names the key,
+ * the written configuration reads back the same, tcfg_check refuses what
+ * two keys say together. */
+static void test_polar_keys(void **state)
+{
+    (void)state;
+    tcfg_defaults(&c);
+    const struct trk_sensor_params *sp = &c.params.sensor[0];
+    /* the tools' defaults: Cartesian, a valid noise for a polar sensor */
+    assert_int_equal(sp->kind, TRK_SENSOR_CARTESIAN);
+    assert_true(sp->sigma_range_m == 1 && sp->sigma_bearing_rad == TRK_REAL_C(0.01));
+    assert_int_equal(sp->conversion, TRK_POLAR_FIRST_ORDER);
+    assert_int_equal(sp->pd_profile.n, 0);
+    assert_true(sp->coverage.max_range_m == 0 && sp->coverage.half_width_rad == 0);
+    assert_int_equal(set("sensor.0.kind", "polar"), 0);
+    assert_int_equal(sp->kind, TRK_SENSOR_POLAR);
+    assert_int_equal(set("sensor.0.sigma_range_m", "2.5"), 0);
+    assert_true(sp->sigma_range_m == TRK_REAL_C(2.5));
+    assert_int_equal(set("sensor.0.sigma_bearing_rad", "0.5"), 0); /* the limit itself */
+    assert_true(sp->sigma_bearing_rad == TRK_REAL_C(0.5));
+    assert_int_equal(set("sensor.0.conversion", "unbiased"), 0);
+    assert_int_equal(sp->conversion, TRK_POLAR_UNBIASED);
+    assert_int_equal(set("sensor.0.pose.x_m", "-1200.5"), 0);
+    assert_int_equal(set("sensor.0.pose.y_m", "300"), 0);
+    assert_int_equal(set("sensor.0.pose.heading_rad", "-1.25"), 0);
+    assert_true(sp->pose.x_m == TRK_REAL_C(-1200.5) && sp->pose.y_m == 300 && sp->pose.heading_rad == TRK_REAL_C(-1.25));
+    /* values a float build holds exactly: the written text is the same in both */
+    assert_int_equal(set("sensor.0.pd_profile", " 0:0.75, 1000 : 0.5,2500:0.125 "), 0);
+    assert_int_equal(sp->pd_profile.n, 3);
+    assert_true(sp->pd_profile.range_m[0] == 0 && sp->pd_profile.pd[0] == TRK_REAL_C(0.75));
+    assert_true(sp->pd_profile.range_m[1] == 1000 && sp->pd_profile.pd[1] == TRK_REAL_C(0.5));
+    assert_true(sp->pd_profile.range_m[2] == 2500 && sp->pd_profile.pd[2] == TRK_REAL_C(0.125));
+    assert_int_equal(set("sensor.0.coverage.min_range_m", "20"), 0);
+    assert_int_equal(set("sensor.0.coverage.max_range_m", "3000"), 0);
+    assert_int_equal(set("sensor.0.coverage.half_width_rad", "1.5"), 0);
+    assert_true(sp->coverage.min_range_m == 20 && sp->coverage.max_range_m == 3000 &&
+                sp->coverage.half_width_rad == TRK_REAL_C(1.5));
+    assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
+    /* the tracker's parameters carry them */
+    static struct trk_tracker_params pp;
+    tcfg_params(&c, &pp);
+    assert_int_equal(pp.sensor[0].kind, TRK_SENSOR_POLAR);
+    assert_int_equal(pp.sensor[0].pd_profile.n, 3);
+    assert_true(pp.sensor[0].pose.heading_rad == TRK_REAL_C(-1.25));
+    /* written and read back: the same text */
+    static char buf1[16384], buf2[16384];
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    tcfg_write(f, &c);
+    rewind(f);
+    const size_t n1 = fread(buf1, 1, sizeof buf1 - 1, f);
+    fclose(f);
+    buf1[n1] = 0;
+    assert_non_null(strstr(buf1, "sensor.0.pd_profile = 0:0.75, 1000:0.5, 2500:0.125\n"));
+    assert_non_null(strstr(buf1, "sensor.0.kind = polar\n"));
+    assert_non_null(strstr(buf1, "sensor.0.conversion = unbiased\n"));
+    assert_non_null(strstr(buf1, "sensor.0.pose.heading_rad = -1.25\n"));
+    const char *path = tmp_file("polar.conf", buf1, n1);
+    tcfg_defaults(&c2);
+    assert_int_equal(kv_parse_file(path, tcfg_set, &c2, err, sizeof err), 0);
+    remove(path);
+    f = tmpfile();
+    tcfg_write(f, &c2);
+    rewind(f);
+    const size_t n2 = fread(buf2, 1, sizeof buf2 - 1, f);
+    fclose(f);
+    buf2[n2] = 0;
+    assert_string_equal(buf1, buf2);
+    /* "none" clears the profile */
+    assert_int_equal(set("sensor.0.pd_profile", "none"), 0);
+    assert_int_equal(sp->pd_profile.n, 0);
+    /* refusals, the field untouched */
+    refused("sensor.0.kind", "sonar", "must be one of: cartesian polar");
+    assert_int_equal(sp->kind, TRK_SENSOR_POLAR);
+    refused("sensor.0.conversion", "exact", "must be one of: first_order unbiased");
+    refused("sensor.0.sigma_range_m", "0", "must be in (0, 1e+06]");
+    refused("sensor.0.sigma_range_m", "-1", "must be in (0, 1e+06]");
+    refused("sensor.0.sigma_range_m", "nan", "finite");
+    assert_true(sp->sigma_range_m == TRK_REAL_C(2.5));
+    refused("sensor.0.sigma_bearing_rad", "0.51", "must be in (0, 0.5]");
+    refused("sensor.0.sigma_bearing_rad", "0", "must be in (0, 0.5]");
+    refused("sensor.0.pose.heading_rad", "6.3", "must be in [-6.28319, 6.28319]");
+    refused("sensor.0.pose.x_m", "2e15", "must be in");
+    refused("sensor.0.pose.y_m", "inf", "finite");
+    assert_true(sp->pose.y_m == 300);
+    refused("sensor.0.coverage.min_range_m", "-1", "must be in [0, 1e+15]");
+    refused("sensor.0.coverage.half_width_rad", "3.2", "must be in [0, 3.14159]");
+    refused("sensor.0.pd_profile", "0:0.9", "2 .. ");                 /* one point */
+    refused("sensor.0.pd_profile", "0:0.9, 10", "2 .. ");             /* no P_D */
+    refused("sensor.0.pd_profile", "0:0.9,, 10:0.5", "2 .. ");        /* empty point */
+    refused("sensor.0.pd_profile", "0:0.9, 10:0.5,", "2 .. ");        /* trailing comma */
+    refused("sensor.0.pd_profile", "0:0.9 10:0.5", "2 .. ");          /* no comma */
+    refused("sensor.0.pd_profile", "10:0.9, 10:0.5", "increasing");   /* not increasing */
+    refused("sensor.0.pd_profile", "-1:0.9, 10:0.5", "increasing");   /* negative range */
+    refused("sensor.0.pd_profile", "0:0.9, 10:1.5", "point 2: P_D 1.5");
+    refused("sensor.0.pd_profile", "0:nan, 10:0.5", "2 .. ");
+    char many[1024] = "";
+    for (int i = 0; i <= TRK_PD_PROFILE_MAX; i++)
+        snprintf(many + strlen(many), sizeof many - strlen(many), "%s%d:0.5", i ? ", " : "", 10 * i);
+    refused("sensor.0.pd_profile", many, "TRK_PD_PROFILE_MAX");
+    assert_int_equal(sp->pd_profile.n, 0);
+    /* misspelled keys name the nearest one */
+    assert_int_equal(set("sensor.0.sigma_range", "2"), 1);
+    assert_string_equal(err, "sensor.0.sigma_range_m");
+    assert_int_equal(set("sensor.0.coverage.max_rang_m", "2"), 1);
+    assert_string_equal(err, "sensor.0.coverage.max_range_m");
+    assert_int_equal(set("sensor.0.pose.headng_rad", "2"), 1);
+    assert_string_equal(err, "sensor.0.pose.heading_rad");
+    assert_int_equal(set("sensor.0.pd_profil", "none"), 1);
+    assert_string_equal(err, "sensor.0.pd_profile");
+    /* what two keys say together */
+    tcfg_defaults(&c);
+    assert_int_equal(set("sensor.0.coverage.min_range_m", "500"), 0);
+    assert_int_equal(set("sensor.0.coverage.max_range_m", "500"), 0);
+    expect_check_fails("sensor.0.coverage.max_range_m = 500 must exceed coverage.min_range_m = 500");
+    assert_int_equal(set("sensor.0.coverage.max_range_m", "0"), 0); /* no limit */
+    assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
+    assert_int_equal(set("sensor.0.pd_profile", "0:0.9, 100:0.5"), 0);
+    assert_int_equal(set("sensor.0.amplitude", "rayleigh"), 0);
+    expect_check_fails("sensor.0.pd_profile with an amplitude model");
+}
+
 static void test_check(void **state)
 {
     (void)state;
@@ -528,7 +659,7 @@ int main(void)
         cmocka_unit_test(test_bad_values),    cmocka_unit_test(test_file),
         cmocka_unit_test(test_number_parsers), cmocka_unit_test(test_write_read_back),
         cmocka_unit_test(test_check),         cmocka_unit_test(test_help),
-        cmocka_unit_test(test_key_list),
+        cmocka_unit_test(test_key_list),      cmocka_unit_test(test_polar_keys),
     };
     return trk_run_tests("lcm_config", tests, NULL, NULL);
 }

@@ -336,7 +336,7 @@ static void test_to_msg_refusals(void **state)
 {
     (void)state;
     static struct trk_detection det[257];
-    struct trk_scan s = {0, 0, 257, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan s = {.time_us = 0, .sensor_id = 0, .n_detections = 257, .detections = det};
     assert_int_equal(lcmc_scan_to_msg(&s, 0, &msg), LCMC_COUNT);
     s.n_detections = 1;
     s.time_us = -5;
@@ -369,7 +369,7 @@ static void test_tracks_to_msg(void **state)
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     static struct trk_detection det[3];
     memset(det, 0, sizeof det);
-    struct trk_scan scan = {0, 0, 3, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {.time_us = 0, .sensor_id = 0, .n_detections = 3, .detections = det};
     struct trk_scan_report rep;
     static trk_track_list_t tl;
     for (int k = 0; k < 4; k++) {

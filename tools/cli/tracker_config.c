@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "kvfile.h"
+#include "number.h"
 #include "suggest.h"
 #include "trk/confirm_mn.h"
 #include "trk/amplitude.h"
@@ -54,6 +55,10 @@ void tcfg_defaults(struct tcfg *c)
     c->hmm.pi0_high = TRK_HMM_PI0_STATIONARY;
     c->hmm_events = TRK_EVENTS_COMPLETE;
     for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) {
+        /* a polar sensor's noise: the library leaves it 0 (refused for a
+         * polar sensor); the tools start from a valid one */
+        c->params.sensor[s].sigma_range_m = 1;
+        c->params.sensor[s].sigma_bearing_rad = TRK_REAL_C(0.01);
         c->amp[s].model = TCFG_AMP_NONE;
         c->amp[s].k_shape = 1;
         c->amp[s].snr_db = 15;
@@ -227,6 +232,8 @@ static const char *const FILTER_NAMES[] = {"kalman", "alpha_beta", NULL};      /
 static const char *const SPRT_MODEL_NAMES[] = {"fixed_pd", "hmm", NULL};
 static const char *const EVENTS_NAMES[] = {"complete", "paper", NULL}; /* enum trk_event_model */
 static const char *const AMP_NAMES[] = {"none", "rayleigh", "k", NULL};
+static const char *const KIND_NAMES[] = {"cartesian", "polar", NULL};             /* enum trk_sensor_kind */
+static const char *const CONVERSION_NAMES[] = {"first_order", "unbiased", NULL}; /* enum trk_polar_conversion */
 
 /* Every key tcfg_set knows (but the sensor.N.* ones), for the suggestion
  * after a misspelled one; test_lcm_config checks it against tcfg_set and
@@ -245,9 +252,27 @@ static const char *const KEYS[] = {
     "term.shiryaev.rho", "term.shiryaev.h", "hmm.p_low_high", "hmm.q_high_low", "hmm.pd_low", "hmm.pd_high",
     "hmm.events", "hmm.pi0_high", "q2_table", "imm.turn_rate_dps", "imm.p_stay", "imm.turn_q", NULL};
 /* The keys of one sensor, after "sensor.N.". */
-static const char *const SENSOR_KEYS[] = {"pd",     "clutter_density_per_m2", "meas_cov_m2", "meas_sigma_m",
-                                          "amplitude", "k_shape",              "snr_db",      "pfa",
-                                          "amp_table", NULL};
+static const char *const SENSOR_KEYS[] = {"pd",
+                                          "clutter_density_per_m2",
+                                          "meas_cov_m2",
+                                          "meas_sigma_m",
+                                          "amplitude",
+                                          "k_shape",
+                                          "snr_db",
+                                          "pfa",
+                                          "amp_table",
+                                          "kind",
+                                          "sigma_range_m",
+                                          "sigma_bearing_rad",
+                                          "conversion",
+                                          "pose.x_m",
+                                          "pose.y_m",
+                                          "pose.heading_rad",
+                                          "pd_profile",
+                                          "coverage.min_range_m",
+                                          "coverage.max_range_m",
+                                          "coverage.half_width_rad",
+                                          NULL};
 
 const char *const *tcfg_keys(void) { return KEYS; }
 const char *const *tcfg_sensor_keys(void) { return SENSOR_KEYS; }
@@ -292,6 +317,68 @@ static int set_meas_cov(struct trk_sensor_params *sp, unsigned s, const double m
     return 0;
 }
 
+/* Ranges of the polar and coverage keys: those of the tracker's check
+ * (sigma_bearing_rad at most half a radian: beyond it no conversion
+ * describes the spread; a heading within a turn either way; ranges and
+ * positions within TRK_MAX_COORD_M_LIMIT). */
+static const struct range R_SIGMA_BEARING = {0, 0.5, 1, 0};
+static const struct range R_SIGMA_RANGE = {0, 1e6, 1, 0};
+static const struct range R_HEADING = {-6.283185307179586, 6.283185307179586, 0, 0};
+static const struct range R_POSE = {-1e15, 1e15, 0, 0};
+static const struct range R_DIST = {0, 1e15, 0, 0};
+static const struct range R_HALF_WIDTH = {0, 3.141592653589793, 0, 0};
+
+/* "none", or "R:P, R:P, ..." (range m : P_D) with 2 .. TRK_PD_PROFILE_MAX
+ * points, ranges >= 0 and increasing, P_D in [0, 1]: into *pr (untouched
+ * on error). */
+static int get_profile(const char *v, struct trk_pd_profile *pr, char *err, size_t n)
+{
+    struct trk_pd_profile t;
+    memset(&t, 0, sizeof t);
+    while (*v == ' ' || *v == '\t') v++;
+    if (strcmp(v, "none") == 0) {
+        *pr = t;
+        return 0;
+    }
+    const char *p = v;
+    for (;;) {
+        double r, d;
+        char *end;
+        if (t.n == TRK_PD_PROFILE_MAX) {
+            snprintf(err, n, "more than %d points (TRK_PD_PROFILE_MAX)", TRK_PD_PROFILE_MAX);
+            return -1;
+        }
+        while (*p == ' ' || *p == '\t') p++;
+        if (kv_strtod(p, &end, &r) != 0) break;
+        p = end;
+        while (*p == ' ' || *p == '\t') p++;
+        if (*p++ != ':') break;
+        while (*p == ' ' || *p == '\t') p++;
+        if (kv_strtod(p, &end, &d) != 0) break;
+        p = end;
+        if (!in_range(r, R_DIST) || (t.n > 0 && !(r > (double)t.range_m[t.n - 1]))) {
+            snprintf(err, n, "point %u: range %g m: ranges must be >= 0, <= 1e15 and increasing", t.n + 1, r);
+            return -1;
+        }
+        if (!in_range(d, R_PROB_CC)) {
+            snprintf(err, n, "point %u: P_D %g must be in [0, 1]", t.n + 1, d);
+            return -1;
+        }
+        t.range_m[t.n] = (trk_real)r;
+        t.pd[t.n++] = (trk_real)d;
+        while (*p == ' ' || *p == '\t') p++;
+        if (*p == 0) {
+            if (t.n < 2) break;
+            *pr = t;
+            return 0;
+        }
+        if (*p++ != ',') break;
+    }
+    snprintf(err, n, "expected none, or 2 .. %d points RANGE_M:PD separated by commas (e.g. 0:0.9, 2000:0.3)",
+             TRK_PD_PROFILE_MAX);
+    return -1;
+}
+
 /* full: the whole key ("sensor.1.pd"), key: after "sensor.N." */
 static int set_sensor(struct tcfg *c, unsigned s, const char *full, const char *key, const char *v, char *err,
                       size_t n)
@@ -325,6 +412,28 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *full, const char *
     }
     if (strcmp(key, "pfa") == 0) return get_double(v, R_PROB_OO, &a->pfa, err, n);
     if (strcmp(key, "amp_table") == 0) return get_path(v, a->table, err, n);
+    /* polar sensors, the pose, where the sensor sees */
+    int e;
+    if (strcmp(key, "kind") == 0) {
+        if (get_name(v, KIND_NAMES, &e, err, n) != 0) return -1;
+        sp->kind = e ? TRK_SENSOR_POLAR : TRK_SENSOR_CARTESIAN;
+        return 0;
+    }
+    if (strcmp(key, "sigma_range_m") == 0) return get_real(v, R_SIGMA_RANGE, &sp->sigma_range_m, err, n);
+    if (strcmp(key, "sigma_bearing_rad") == 0) return get_real(v, R_SIGMA_BEARING, &sp->sigma_bearing_rad, err, n);
+    if (strcmp(key, "conversion") == 0) {
+        if (get_name(v, CONVERSION_NAMES, &e, err, n) != 0) return -1;
+        sp->conversion = e ? TRK_POLAR_UNBIASED : TRK_POLAR_FIRST_ORDER;
+        return 0;
+    }
+    if (strcmp(key, "pose.x_m") == 0) return get_real(v, R_POSE, &sp->pose.x_m, err, n);
+    if (strcmp(key, "pose.y_m") == 0) return get_real(v, R_POSE, &sp->pose.y_m, err, n);
+    if (strcmp(key, "pose.heading_rad") == 0) return get_real(v, R_HEADING, &sp->pose.heading_rad, err, n);
+    if (strcmp(key, "pd_profile") == 0) return get_profile(v, &sp->pd_profile, err, n);
+    if (strcmp(key, "coverage.min_range_m") == 0) return get_real(v, R_DIST, &sp->coverage.min_range_m, err, n);
+    if (strcmp(key, "coverage.max_range_m") == 0) return get_real(v, R_DIST, &sp->coverage.max_range_m, err, n);
+    if (strcmp(key, "coverage.half_width_rad") == 0)
+        return get_real(v, R_HALF_WIDTH, &sp->coverage.half_width_rad, err, n);
     return unknown_key(full, (long)s, err, n);
 }
 
@@ -650,7 +759,11 @@ static void explain(const struct tcfg *c, const char *field, trk_status st, char
                  f, ERRMSG_STATUS(st), method_hint(st, f, c->term == TRK_TERM_VISIBILITY));
     } else if (sscanf(f, "sensor[%u].%47s", &s, member) == 2) {
         snprintf(err, n, "sensor.%u.%s: refused by the tracker (%s): %s", s,
-                 strcmp(member, "use_amplitude") == 0 ? "amplitude" : member, f, ERRMSG_STATUS(st));
+                 strcmp(member, "use_amplitude") == 0 ? "amplitude"
+                 : strcmp(member, "pose") == 0        ? "pose.*"
+                 : strcmp(member, "coverage") == 0    ? "coverage.*"
+                                                      : member,
+                 f, ERRMSG_STATUS(st));
     } else {
         const char *key = strcmp(f, "n_sensors") == 0          ? "sensors"
                           : strcmp(f, "track_visibility") == 0 ? "visibility"
@@ -674,6 +787,21 @@ int tcfg_check(const struct tcfg *c, char *err, size_t n)
     struct trk_tracker_params full;
     const char *field;
     trk_status st;
+    /* 0. what two keys say together about a sensor's view (the tracker
+     *    refuses the same, naming the field) */
+    for (unsigned s = 0; s < p->n_sensors; s++) {
+        const struct trk_sensor_params *sp = &p->sensor[s];
+        if (sp->coverage.max_range_m > 0 && !(sp->coverage.max_range_m > sp->coverage.min_range_m)) {
+            snprintf(err, n, "sensor.%u.coverage.max_range_m = %g must exceed coverage.min_range_m = %g (or be 0: no limit)",
+                     s, (double)sp->coverage.max_range_m, (double)sp->coverage.min_range_m);
+            return -1;
+        }
+        if (sp->pd_profile.n > 0 && (c->amp[s].model != TCFG_AMP_NONE || c->amp[s].table[0])) {
+            snprintf(err, n, "sensor.%u.pd_profile with an amplitude model: the model's P_D is its threshold's "
+                             "(set sensor.%u.pd_profile = none or sensor.%u.amplitude = none)", s, s, s);
+            return -1;
+        }
+    }
     /* 1. the tracker (the authority) with the chosen methods: it names the
      *    field it refuses */
     tcfg_params(c, &full);
@@ -781,13 +909,18 @@ void tcfg_params_rt(const struct tcfg *c, const struct tcfg_runtime *rt, struct 
 /* ------------------------------------------------------------------ write, help */
 
 /* Shortest %g that reads back as the same value. */
+static void shortest(char *buf, size_t n, double v)
+{
+    for (int prec = 6; prec <= 17; prec++) {
+        snprintf(buf, n, "%.*g", prec, v);
+        if (strtod(buf, NULL) == v) break;
+    }
+}
+
 static void put_num(FILE *f, const char *key, double v)
 {
     char buf[40];
-    for (int prec = 6; prec <= 17; prec++) {
-        snprintf(buf, sizeof buf, "%.*g", prec, v);
-        if (strtod(buf, NULL) == v) break;
-    }
+    shortest(buf, sizeof buf, v);
     fprintf(f, "%s = %s\n", key, buf);
 }
 
@@ -873,6 +1006,33 @@ void tcfg_write(FILE *f, const struct tcfg *c)
         snprintf(k, sizeof k, "sensor.%u.pfa", s);
         put_num(f, k, c->amp[s].pfa);
         if (c->amp[s].table[0]) fprintf(f, "sensor.%u.amp_table = %s\n", s, c->amp[s].table);
+        fprintf(f, "sensor.%u.kind = %s\n", s, KIND_NAMES[sp->kind == TRK_SENSOR_POLAR]);
+        snprintf(k, sizeof k, "sensor.%u.sigma_range_m", s);
+        put_num(f, k, (double)sp->sigma_range_m);
+        snprintf(k, sizeof k, "sensor.%u.sigma_bearing_rad", s);
+        put_num(f, k, (double)sp->sigma_bearing_rad);
+        fprintf(f, "sensor.%u.conversion = %s\n", s, CONVERSION_NAMES[sp->conversion == TRK_POLAR_UNBIASED]);
+        snprintf(k, sizeof k, "sensor.%u.pose.x_m", s);
+        put_num(f, k, (double)sp->pose.x_m);
+        snprintf(k, sizeof k, "sensor.%u.pose.y_m", s);
+        put_num(f, k, (double)sp->pose.y_m);
+        snprintf(k, sizeof k, "sensor.%u.pose.heading_rad", s);
+        put_num(f, k, (double)sp->pose.heading_rad);
+        fprintf(f, "sensor.%u.pd_profile = ", s);
+        if (sp->pd_profile.n == 0) fputs("none", f);
+        for (unsigned i = 0; i < sp->pd_profile.n; i++) {
+            char r[40], d[40];
+            shortest(r, sizeof r, (double)sp->pd_profile.range_m[i]);
+            shortest(d, sizeof d, (double)sp->pd_profile.pd[i]);
+            fprintf(f, "%s%s:%s", i ? ", " : "", r, d);
+        }
+        fputc('\n', f);
+        snprintf(k, sizeof k, "sensor.%u.coverage.min_range_m", s);
+        put_num(f, k, (double)sp->coverage.min_range_m);
+        snprintf(k, sizeof k, "sensor.%u.coverage.max_range_m", s);
+        put_num(f, k, (double)sp->coverage.max_range_m);
+        snprintf(k, sizeof k, "sensor.%u.coverage.half_width_rad", s);
+        put_num(f, k, (double)sp->coverage.half_width_rad);
     }
 }
 
@@ -937,9 +1097,20 @@ void tcfg_help(FILE *f)
             "  sensor.N.amplitude = none|rayleigh|k  amplitude model of PDAFAI (none)\n"
             "  sensor.N.k_shape, .snr_db, .pfa   K shape, target SNR dB, threshold P_FA (1, 15, 1e-3)\n"
             "  sensor.N.amp_table = FILE         amplitude table (trk-tablegen output)\n"
+            "  sensor.N.kind = cartesian|polar   positions, or range and bearing from the pose (cartesian)\n"
+            "    sensor.N.sigma_range_m           polar: range noise (1 sigma), (0, 1e6] m (1)\n"
+            "    sensor.N.sigma_bearing_rad       polar: bearing noise (1 sigma), (0, 0.5] rad (0.01)\n"
+            "    sensor.N.conversion = first_order|unbiased   polar -> Cartesian (first_order)\n"
+            "  sensor.N.pose.x_m, .pose.y_m, .pose.heading_rad   the sensor's pose when a scan carries\n"
+            "                                    none; heading clockwise from north, [-2pi, 2pi] (0, 0, 0)\n"
+            "  sensor.N.pd_profile = none|R:P, ...  P_D over range (m) from the pose, 2..%d points,\n"
+            "                                    linear between them; not with an amplitude model (none)\n"
+            "  sensor.N.coverage.min_range_m, .max_range_m, .half_width_rad   where P_D is not 0:\n"
+            "                                    ranges (max 0: no limit) and the sector's half width\n"
+            "                                    about the heading, [0, pi] (0: all round) (0, 0, 0)\n"
             "Amplitude tables and q2 tables are read and checked at start-up; a bad one\n"
             "stops the program (exit status 2).\n",
-            TRK_MN_MAX_N);
+            TRK_MN_MAX_N, TRK_PD_PROFILE_MAX);
 #if TRK_WITH_IMM
     fprintf(f, "IMM tracks (this build: TRK_WITH_IMM = 1):\n"
                "  imm.turn_rate_dps = W             CV and coordinated turns at +-W deg/s (trk_tracker_imm_params),\n"

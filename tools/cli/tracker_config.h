@@ -26,7 +26,10 @@
  *     turn_rate_dps = 0, the default, is the CV-only tracker; a build without
  *     IMM tracks refuses the keys)
  *   sensor.N.{pd,meas_cov_m2,meas_sigma_m,clutter_density_per_m2,
- *             amplitude,k_shape,snr_db,pfa,amp_table}   N = 0 .. sensors-1
+ *             amplitude,k_shape,snr_db,pfa,amp_table,
+ *             kind,sigma_range_m,sigma_bearing_rad,conversion,
+ *             pose.{x_m,y_m,heading_rad},pd_profile,
+ *             coverage.{min_range_m,max_range_m,half_width_rad}}   N = 0 .. sensors-1
  *
  * Every method's parameters are kept (switching `confirm = ...` back and
  * forth loses nothing); tcfg_params() assembles the tracker's parameters

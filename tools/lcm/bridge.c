@@ -12,6 +12,7 @@ void bridge_opts_defaults(struct bridge_opts *o)
 {
     memset(o, 0, sizeof *o);
     strcpy(o->detection_channel, BRIDGE_DEFAULT_DETECTIONS);
+    strcpy(o->polar_detection_channel, BRIDGE_DEFAULT_POLAR_DETECTIONS);
     strcpy(o->track_channel, BRIDGE_DEFAULT_TRACKS);
     strcpy(o->status_channel, BRIDGE_DEFAULT_STATUS);
     o->status_period_s = 1;
@@ -31,8 +32,9 @@ static int set_channel(char *dst, const char *v, int allow_empty, char *err, siz
 }
 
 /* The keys bridge_opts_set knows, for the suggestion after a misspelled one. */
-static const char *const BRIDGE_KEYS[] = {"lcm_url",         "detection_channel", "track_channel", "status_channel",
-                                          "status_period_s", "log_interval_s",    NULL};
+static const char *const BRIDGE_KEYS[] = {"lcm_url",         "detection_channel", "polar_detection_channel",
+                                          "track_channel",   "status_channel",    "status_period_s",
+                                          "log_interval_s",  NULL};
 
 int bridge_opts_set(void *ctx, const char *key, const char *v, char *err, size_t n)
 {
@@ -47,6 +49,7 @@ int bridge_opts_set(void *ctx, const char *key, const char *v, char *err, size_t
         return 0;
     }
     if (strcmp(key, "detection_channel") == 0) return set_channel(o->detection_channel, v, 0, err, n);
+    if (strcmp(key, "polar_detection_channel") == 0) return set_channel(o->polar_detection_channel, v, 1, err, n);
     if (strcmp(key, "track_channel") == 0) return set_channel(o->track_channel, v, 0, err, n);
     if (strcmp(key, "status_channel") == 0) return set_channel(o->status_channel, v, 1, err, n);
     if (strcmp(key, "status_period_s") == 0 || strcmp(key, "log_interval_s") == 0) {
@@ -68,6 +71,7 @@ void bridge_opts_write(FILE *f, const struct bridge_opts *o)
     fprintf(f, "# bridge\n");
     if (o->lcm_url[0]) fprintf(f, "lcm_url = %s\n", o->lcm_url);
     fprintf(f, "detection_channel = %s\n", o->detection_channel);
+    fprintf(f, "polar_detection_channel = %s\n", o->polar_detection_channel);
     fprintf(f, "track_channel = %s\n", o->track_channel);
     fprintf(f, "status_channel = %s\n", o->status_channel);
     fprintf(f, "status_period_s = %g\n", o->status_period_s);
@@ -77,6 +81,10 @@ void bridge_opts_write(FILE *f, const struct bridge_opts *o)
 struct bridge *bridge_new(const struct tcfg *cfg, const struct bridge_opts *o, char *err, size_t n)
 {
     if (tcfg_check(cfg, err, n) != 0) return NULL;
+    if (strcmp(o->polar_detection_channel, o->detection_channel) == 0) { /* one type per channel */
+        snprintf(err, n, "polar_detection_channel must differ from detection_channel (%s)", o->detection_channel);
+        return NULL;
+    }
     struct bridge *b = calloc(1, sizeof *b);
     if (!b) {
         snprintf(err, n, "out of memory");
@@ -201,20 +209,15 @@ static void count_seq(struct bridge *b, unsigned s, int64_t seq)
     b->has_seq[s] = 1;
 }
 
-enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, int64_t now_us,
-                               const void **out, size_t *out_len)
+/* A copied scan (b->scan, either kind) through the tracker; detail holds
+ * the copy's note on a dropped detection. */
+static enum lcmc_reason process(struct bridge *b, char *detail, size_t detail_len, int64_t now_us,
+                                const void **out, size_t *out_len)
 {
-    char detail[160];
-    b->c.received++;
-    const unsigned n_sensors = b->tk.params.n_sensors;
-    enum lcmc_reason r =
-        lcmc_scan_from_bytes(data, len, n_sensors, &b->in, &b->scan, detail, sizeof detail);
-    if (r != LCMC_OK) return reject(b, r, now_us, detail, -1);
-
     struct trk_scan_report rep;
     trk_status st = trk_tracker_process_scan(&b->tk, &b->scan.scan, &rep);
     if (st != TRK_OK) {
-        snprintf(detail, sizeof detail, "%s: utime %lld, previous %lld", ERRMSG_STATUS(st),
+        snprintf(detail, detail_len, "%s: utime %lld, previous %lld", ERRMSG_STATUS(st),
                  (long long)b->scan.scan.time_us, (long long)b->last_accepted_utime);
         return reject(b, lcmc_reason_of_status(st), now_us, detail, b->scan.seq);
     }
@@ -252,6 +255,29 @@ enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, i
     *out = b->out_buf;
     *out_len = (size_t)n;
     return LCMC_OK;
+}
+
+enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, int64_t now_us,
+                               const void **out, size_t *out_len)
+{
+    char detail[160];
+    b->c.received++;
+    const unsigned n_sensors = b->tk.params.n_sensors;
+    enum lcmc_reason r =
+        lcmc_scan_from_bytes(data, len, n_sensors, &b->in, &b->scan, detail, sizeof detail);
+    if (r != LCMC_OK) return reject(b, r, now_us, detail, -1);
+    return process(b, detail, sizeof detail, now_us, out, out_len);
+}
+
+enum lcmc_reason bridge_handle_polar(struct bridge *b, const void *data, size_t len, int64_t now_us,
+                                     const void **out, size_t *out_len)
+{
+    char detail[160];
+    b->c.received++;
+    enum lcmc_reason r = lcmc_polar_scan_from_bytes(data, len, b->tk.params.sensor, b->tk.params.n_sensors,
+                                                    &b->in_polar, &b->scan, detail, sizeof detail);
+    if (r != LCMC_OK) return reject(b, r, now_us, detail, -1);
+    return process(b, detail, sizeof detail, now_us, out, out_len);
 }
 
 static int64_t sat64(uint64_t v) { return v > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)v; }

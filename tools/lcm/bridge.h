@@ -1,5 +1,6 @@
 /* bridge.h - the core of trk-lcm-bridge, free of any transport: bytes of a
- * detection_scan_t in, bytes of a track_list_t out, counters and
+ * detection_scan_t (or of a detection_scan_polar_t, bridge_handle_polar) in,
+ * bytes of a track_list_t out, counters and
  * rate-limited logging of rejections. The live LCM loop and the log replay
  * (transport.h) both drive it; so do the tests and trk-bench.
  *
@@ -25,6 +26,7 @@
 #include "tracker_config.h"
 
 #define BRIDGE_DEFAULT_DETECTIONS "TRK_DETECTIONS"
+#define BRIDGE_DEFAULT_POLAR_DETECTIONS "TRK_DETECTIONS_POLAR"
 #define BRIDGE_DEFAULT_TRACKS "TRK_TRACKS"
 #define BRIDGE_DEFAULT_STATUS "TRK_BRIDGE_STATUS"
 #define BRIDGE_CHANNEL_MAX 256
@@ -40,6 +42,7 @@ enum { BRIDGE_LOG_PUBLISH = LCMC_N_REASONS, BRIDGE_LOG_DETECTION, BRIDGE_LOG_SLO
 struct bridge_opts {
     char lcm_url[512];                          /* "" = LCM_DEFAULT_URL / LCM default */
     char detection_channel[BRIDGE_CHANNEL_MAX];
+    char polar_detection_channel[BRIDGE_CHANNEL_MAX]; /* detection_scan_polar_t; "" = none */
     char track_channel[BRIDGE_CHANNEL_MAX];
     char status_channel[BRIDGE_CHANNEL_MAX];    /* "" = no status messages */
     double status_period_s;                     /* >= 0; 0 = only at exit */
@@ -48,12 +51,12 @@ struct bridge_opts {
     FILE *log;                                  /* rejection messages (stderr) */
 };
 
-/* Defaults: channels TRK_DETECTIONS / TRK_TRACKS / TRK_BRIDGE_STATUS,
+/* Defaults: channels TRK_DETECTIONS / TRK_DETECTIONS_POLAR / TRK_TRACKS / TRK_BRIDGE_STATUS,
  * status every 1 s, rejection messages at most every 10 s per cause. */
 void bridge_opts_defaults(struct bridge_opts *o);
 
 /* Bridge keys of the config file (a kv_setter, ctx = struct bridge_opts *):
- * lcm_url, detection_channel, track_channel, status_channel,
+ * lcm_url, detection_channel, polar_detection_channel, track_channel, status_channel,
  * status_period_s, log_interval_s. An unknown key: 1, the nearest of them
  * in err (or ""). */
 int bridge_opts_set(void *ctx, const char *key, const char *value, char *err, size_t errlen);
@@ -94,6 +97,7 @@ struct bridge {
     int log_used[BRIDGE_LOG_SLOTS];
     /* buffers (the structs are large: struct bridge lives on the heap) */
     trk_detection_scan_t in;
+    trk_detection_scan_polar_t in_polar;
     struct lcmc_scan scan;
     trk_track_list_t out;
     uint8_t *out_buf;
@@ -116,6 +120,11 @@ void bridge_free(struct bridge *b);
  * next call); otherwise the reason it was rejected. */
 enum lcmc_reason bridge_handle(struct bridge *b, const void *data, size_t len, int64_t now_us,
                                const void **out, size_t *out_len);
+
+/* The same for one message of the polar detection channel
+ * (detection_scan_polar_t: its sensor must be configured polar). */
+enum lcmc_reason bridge_handle_polar(struct bridge *b, const void *data, size_t len, int64_t now_us,
+                                     const void **out, size_t *out_len);
 
 /* Encode the status message (utime as given) into an internal buffer. */
 void bridge_status(struct bridge *b, int64_t utime, const void **out, size_t *out_len);

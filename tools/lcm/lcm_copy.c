@@ -9,18 +9,19 @@
 /* The wire format is fixed by the .lcm files; keep the C side in step. */
 typedef char lcmc_check_max_det[TRK_DETECTION_SCAN_T_MAX_DETECTIONS == 256 ? 1 : -1];
 typedef char lcmc_check_max_tracks[TRK_TRACK_LIST_T_MAX_TRACKS == 64 ? 1 : -1];
+typedef char lcmc_check_max_polar[TRK_DETECTION_SCAN_POLAR_T_MAX_DETECTIONS == 256 ? 1 : -1];
 
 static const char *const REASON_NAME[LCMC_N_REASONS] = {
     "ok", "decode", "count", "capacity", "nonfinite", "field", "sensor", "time", "gap", "other"};
 
 static const char *const REASON_TEXT[LCMC_N_REASONS] = {
     "accepted",
-    "message does not decode as trk.detection_scan_t (wrong type, truncated or trailing bytes)",
+    "message does not decode as the channel's type (wrong type, truncated or trailing bytes)",
     "n_detections outside 0 .. MAX_DETECTIONS",
     "scan refused by the tracker for its size (beyond TRK_MAX_SCAN_DETECTIONS)",
     "a used field is NaN, infinite or beyond the tracker's real range",
-    "invalid field (boolean not 0/1, negative amplitude or utime)",
-    "sensor_id is not a configured sensor",
+    "invalid field (boolean not 0/1, negative amplitude or utime, bad pose, range or bearing)",
+    "sensor_id is not a configured sensor (of the polar kind, for a polar scan)",
     "scan time before the previous accepted scan",
     "gap since the previous accepted scan longer than max_dt_s",
     "scan refused by the tracker",
@@ -169,6 +170,149 @@ enum lcmc_reason lcmc_scan_to_msg(const struct trk_scan *s, int64_t seq, trk_det
         o->has_cov = d->has_cov ? 1 : 0;
         if (d->has_cov)
             for (int k = 0; k < 3; k++) o->cov_m2[k] = (double)d->cov_m2[k];
+        o->has_amplitude = d->has_amplitude ? 1 : 0;
+        if (d->has_amplitude) o->amplitude = (double)d->amplitude;
+    }
+    return LCMC_OK;
+}
+
+/* ------------------------------------------------------------------ polar scans */
+
+/* One polar detection, as check_detection: LCMC_FIELD for a boolean not
+ * 0/1, a range <= 0, a bearing beyond a turn or a negative amplitude;
+ * LCMC_NONFINITE for a used field NaN, infinite or beyond trk_real. */
+static enum lcmc_reason check_polar(const trk_polar_detection_t *d, size_t i, char *detail, size_t detail_len)
+{
+    if (d->has_amplitude != 0 && d->has_amplitude != 1) {
+        DETAIL("detections[%zu]: boolean has_amplitude = %d", i, d->has_amplitude);
+        return LCMC_FIELD;
+    }
+    if (!representable(d->range_m) || !representable(d->bearing_rad)) {
+        DETAIL("detections[%zu]: range %g m, bearing %g rad", i, d->range_m, d->bearing_rad);
+        return LCMC_NONFINITE;
+    }
+    /* > 0 as the tracker's real: a float build rounds 1e-300 m to 0 */
+    if (!((trk_real)d->range_m > 0) || fabs(d->bearing_rad) > LCMC_BEARING_MAX_RAD) {
+        DETAIL("detections[%zu]: range %g m (> 0), bearing %g rad (|b| <= 2 pi)", i, d->range_m, d->bearing_rad);
+        return LCMC_FIELD;
+    }
+    if (d->has_amplitude && !representable(d->amplitude)) {
+        DETAIL("detections[%zu]: amplitude = %g", i, d->amplitude);
+        return LCMC_NONFINITE;
+    }
+    if (d->has_amplitude && d->amplitude < 0) {
+        DETAIL("detections[%zu]: amplitude = %g < 0", i, d->amplitude);
+        return LCMC_FIELD;
+    }
+    return LCMC_OK;
+}
+
+enum lcmc_reason lcmc_polar_scan_from_msg(const trk_detection_scan_polar_t *m,
+                                          const struct trk_sensor_params *sensors, unsigned n_sensors,
+                                          struct lcmc_scan *out, char *detail, size_t detail_len)
+{
+    if (detail && detail_len) detail[0] = 0;
+    if (m->n_detections < 0 || m->n_detections > TRK_DETECTION_SCAN_POLAR_T_MAX_DETECTIONS) {
+        DETAIL("n_detections = %ld", (long)m->n_detections);
+        return LCMC_COUNT;
+    }
+    if (m->utime < 0 || m->utime > TRK_TIME_US_MAX) {
+        DETAIL("utime = %lld, outside 0 .. 2^62 - 1", (long long)m->utime);
+        return LCMC_FIELD;
+    }
+    if (m->sensor_id < 0 || (unsigned)m->sensor_id >= n_sensors) {
+        DETAIL("sensor_id = %ld, configured 0 .. %u", (long)m->sensor_id, n_sensors - 1);
+        return LCMC_SENSOR;
+    }
+    if (sensors[m->sensor_id].kind != TRK_SENSOR_POLAR) {
+        DETAIL("sensor_id = %ld is not a polar sensor (sensor.%ld.kind = cartesian)", (long)m->sensor_id,
+               (long)m->sensor_id);
+        return LCMC_SENSOR;
+    }
+    /* the pose places every detection: a bad one rejects the scan */
+    if (m->has_pose != 0 && m->has_pose != 1) {
+        DETAIL("boolean has_pose = %d", m->has_pose);
+        return LCMC_FIELD;
+    }
+    if (m->has_pose && (!representable(m->pose_x_m) || !representable(m->pose_y_m) ||
+                        !(fabs(m->pose_heading_rad) <= LCMC_HEADING_MAX_RAD))) {
+        DETAIL("pose (%g m, %g m, heading %g rad)", m->pose_x_m, m->pose_y_m, m->pose_heading_rad);
+        return LCMC_FIELD;
+    }
+    const size_t n = (size_t)m->n_detections;
+    size_t kept = 0;
+    out->n_dropped_nonfinite = out->n_dropped_field = 0;
+    for (size_t i = 0; i < n; i++) {
+        const trk_polar_detection_t *d = &m->detections[i];
+        const int first = out->n_dropped_nonfinite + out->n_dropped_field == 0;
+        const enum lcmc_reason why = check_polar(d, i, first ? detail : NULL, detail_len);
+        if (why == LCMC_NONFINITE) out->n_dropped_nonfinite++;
+        if (why == LCMC_FIELD) out->n_dropped_field++;
+        if (why != LCMC_OK) continue;
+        struct trk_polar_detection *o = &out->polar[kept++];
+        o->range_m = (trk_real)d->range_m;
+        o->bearing_rad = (trk_real)d->bearing_rad;
+        o->has_amplitude = (uint8_t)d->has_amplitude;
+        o->amplitude = d->has_amplitude ? (trk_real)d->amplitude : 0;
+    }
+    out->n_msg_detections = n;
+    memset(&out->scan, 0, sizeof out->scan);
+    out->scan.time_us = m->utime;
+    out->scan.sensor_id = (unsigned)m->sensor_id;
+    out->scan.n_detections = kept;
+    out->scan.detections = NULL;
+    out->scan.polar = out->polar;
+    out->scan.has_pose = m->has_pose;
+    if (m->has_pose) {
+        out->scan.pose.x_m = (trk_real)m->pose_x_m;
+        out->scan.pose.y_m = (trk_real)m->pose_y_m;
+        out->scan.pose.heading_rad = (trk_real)m->pose_heading_rad;
+    }
+    out->seq = m->seq;
+    return LCMC_OK;
+}
+
+enum lcmc_reason lcmc_polar_scan_from_bytes(const void *buf, size_t len, const struct trk_sensor_params *sensors,
+                                            unsigned n_sensors, trk_detection_scan_polar_t *work,
+                                            struct lcmc_scan *out, char *detail, size_t detail_len)
+{
+    if (detail && detail_len) detail[0] = 0;
+    if (!buf || len != LCMC_POLAR_SCAN_WIRE_SIZE) {
+        DETAIL("%zu bytes, a detection_scan_polar_t has %d", len, LCMC_POLAR_SCAN_WIRE_SIZE);
+        return LCMC_DECODE;
+    }
+    int used = trk_detection_scan_polar_t_decode(buf, 0, (int)len, work);
+    if (used < 0) {
+        DETAIL("wrong type hash");
+        return LCMC_DECODE;
+    }
+    if ((size_t)used != len) {
+        DETAIL("decoded %d of %zu bytes", used, len);
+        return LCMC_DECODE;
+    }
+    return lcmc_polar_scan_from_msg(work, sensors, n_sensors, out, detail, detail_len);
+}
+
+enum lcmc_reason lcmc_polar_scan_to_msg(const struct trk_scan *s, int64_t seq, trk_detection_scan_polar_t *m)
+{
+    if (s->n_detections > TRK_DETECTION_SCAN_POLAR_T_MAX_DETECTIONS) return LCMC_COUNT;
+    if (s->time_us < 0 || s->sensor_id > INT32_MAX || (s->n_detections && !s->polar)) return LCMC_FIELD;
+    memset(m, 0, sizeof *m);
+    m->utime = s->time_us;
+    m->sensor_id = (int32_t)s->sensor_id;
+    m->seq = seq;
+    m->has_pose = s->has_pose ? 1 : 0;
+    if (s->has_pose) {
+        m->pose_x_m = (double)s->pose.x_m;
+        m->pose_y_m = (double)s->pose.y_m;
+        m->pose_heading_rad = (double)s->pose.heading_rad;
+    }
+    m->n_detections = (int32_t)s->n_detections;
+    for (size_t i = 0; i < s->n_detections; i++) {
+        const struct trk_polar_detection *d = &s->polar[i];
+        trk_polar_detection_t *o = &m->detections[i];
+        o->range_m = (double)d->range_m;
+        o->bearing_rad = (double)d->bearing_rad;
         o->has_amplitude = d->has_amplitude ? 1 : 0;
         if (d->has_amplitude) o->amplitude = (double)d->amplitude;
     }

@@ -12,7 +12,13 @@
  * counted by reason, the other detections are copied in order. Pure C: no
  * I/O, no allocation, no globals.
  *
- * lcmc_scan_from_bytes() is the fuzz target (tests/fuzz/fuzz_lcm_copy.c). */
+ * A polar scan (detection_scan_polar_t: range and bearing from the pose)
+ * is copied the same way into scan.polar, with its pose; its sensor must
+ * be a polar one, and a bad pose rejects the scan (it places every
+ * detection).
+ *
+ * lcmc_scan_from_bytes() and lcmc_polar_scan_from_bytes() are the fuzz
+ * targets (tests/fuzz/fuzz_lcm_copy.c, fuzz_lcm_polar.c). */
 #ifndef TRK_TOOLS_LCM_COPY_H
 #define TRK_TOOLS_LCM_COPY_H
 
@@ -20,6 +26,7 @@
 #include <stdint.h>
 
 #include "lcm/trk_bridge_status_t.h"
+#include "lcm/trk_detection_scan_polar_t.h"
 #include "lcm/trk_detection_scan_t.h"
 #include "lcm/trk_track_list_t.h"
 #include "trk/tracker.h"
@@ -36,13 +43,16 @@
  * rejects a scan. */
 enum lcmc_reason {
     LCMC_OK = 0,
-    LCMC_DECODE,    /* not a detection_scan_t: wrong hash, truncated, trailing bytes */
+    LCMC_DECODE,    /* not the channel's type (detection_scan_t, detection_scan_polar_t):
+                       wrong hash, truncated, trailing bytes */
     LCMC_COUNT,     /* n_detections outside [0, MAX_DETECTIONS] */
     LCMC_CAPACITY,  /* the tracker refused the scan's size (TRK_E_CAPACITY) */
     LCMC_NONFINITE, /* a detection: NaN/inf in a used field, or beyond trk_real's range */
-    LCMC_FIELD,     /* utime outside 0 .. 2^62-1; a detection: boolean not 0/1,
-                       negative amplitude */
-    LCMC_SENSOR,    /* sensor_id not in 0 .. n_sensors-1 */
+    LCMC_FIELD,     /* utime outside 0 .. 2^62-1; a polar scan's has_pose not 0/1
+                       or pose not finite; a detection: boolean not 0/1, negative
+                       amplitude, a polar range <= 0 or |bearing| > 2 pi */
+    LCMC_SENSOR,    /* sensor_id not in 0 .. n_sensors-1 (a polar scan: or not a
+                       polar sensor) */
     LCMC_TIME,      /* utime before the previous accepted scan (TRK_E_TIME) */
     LCMC_GAP,       /* utime more than max_dt_s after it (TRK_E_RANGE) */
     LCMC_OTHER,     /* any other refusal of the tracker */
@@ -57,9 +67,11 @@ const char *lcmc_reason_text(enum lcmc_reason r);
 enum lcmc_reason lcmc_reason_of_status(trk_status st);
 
 /* A validated scan in the library's structs. scan.detections points into det
- * (so the struct must not be copied by value while scan is in use). det
- * holds a whole message (MAX_DETECTIONS, 256: ~14 KB in double), whatever
- * the build's TRK_MAX_DETECTIONS: the tracker thins what it cannot take. */
+ * (a Cartesian scan) or scan.polar into polar (a polar scan; then
+ * scan.has_pose and scan.pose are the message's), so the struct must not be
+ * copied by value while scan is in use. det and polar each hold a whole
+ * message (MAX_DETECTIONS, 256: ~14 KB and ~8 KB in double), whatever the
+ * build's TRK_MAX_DETECTIONS: the tracker thins what it cannot take. */
 struct lcmc_scan {
     struct trk_scan scan;               /* the valid detections only */
     int64_t seq;
@@ -67,10 +79,18 @@ struct lcmc_scan {
     uint32_t n_dropped_nonfinite;       /* detections dropped: LCMC_NONFINITE */
     uint32_t n_dropped_field;           /* ... LCMC_FIELD */
     struct trk_detection det[TRK_DETECTION_SCAN_T_MAX_DETECTIONS];
+    struct trk_polar_detection polar[TRK_DETECTION_SCAN_POLAR_T_MAX_DETECTIONS];
 };
 
 /* Wire sizes (constant: fixed-size arrays). */
 #define LCMC_SCAN_WIRE_SIZE 12832
+#define LCMC_POLAR_SCAN_WIRE_SIZE 6457
+
+/* Largest |bearing_rad| of a polar detection, and |pose_heading_rad| of a
+ * polar scan: beyond a turn a relative bearing is a corrupt value; the
+ * heading's limit is the tracker's for a sensor's pose. */
+#define LCMC_BEARING_MAX_RAD 6.283185307179586
+#define LCMC_HEADING_MAX_RAD 1e6
 
 /* Validate a decoded message and copy it into out (n_sensors: the tracker's
  * sensor count; sensor ids 0 .. n_sensors-1 are accepted). detail (may be
@@ -91,6 +111,25 @@ enum lcmc_reason lcmc_scan_from_bytes(const void *buf, size_t len, unsigned n_se
  * are zeroed. LCMC_COUNT when n_detections > MAX_DETECTIONS, LCMC_FIELD for
  * a negative time, LCMC_OK otherwise. */
 enum lcmc_reason lcmc_scan_to_msg(const struct trk_scan *s, int64_t seq, trk_detection_scan_t *m);
+
+/* A polar scan: validate a decoded detection_scan_polar_t and copy it into
+ * out (scan.polar, scan.has_pose, scan.pose; scan.detections NULL).
+ * sensors[0 .. n_sensors) are the tracker's sensors: the scan's must have
+ * kind TRK_SENSOR_POLAR. Reasons and detail as lcmc_scan_from_msg. */
+enum lcmc_reason lcmc_polar_scan_from_msg(const trk_detection_scan_polar_t *m,
+                                          const struct trk_sensor_params *sensors, unsigned n_sensors,
+                                          struct lcmc_scan *out, char *detail, size_t detail_len);
+
+/* Decode exactly len bytes as a detection_scan_polar_t into *work
+ * (caller-owned, ~7 KB), then lcmc_polar_scan_from_msg(). */
+enum lcmc_reason lcmc_polar_scan_from_bytes(const void *buf, size_t len, const struct trk_sensor_params *sensors,
+                                            unsigned n_sensors, trk_detection_scan_polar_t *work,
+                                            struct lcmc_scan *out, char *detail, size_t detail_len);
+
+/* Polar scan -> message (s->polar, s->has_pose, s->pose; the pose fields
+ * zero without a pose). LCMC_COUNT, LCMC_FIELD (negative time, polar NULL
+ * with detections) as lcmc_scan_to_msg. */
+enum lcmc_reason lcmc_polar_scan_to_msg(const struct trk_scan *s, int64_t seq, trk_detection_scan_polar_t *m);
 
 /* The tracker's table after a scan -> track list. Tracks in slot order;
  * with more live tracks than MAX_TRACKS (a build with TRK_MAX_TRACKS > 64),

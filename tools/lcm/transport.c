@@ -40,6 +40,18 @@ static void on_scan(const lcm_recv_buf_t *rbuf, const char *channel, void *user)
         bridge_log_publish_error(l->b, now, l->b->o.track_channel);
 }
 
+static void on_polar_scan(const lcm_recv_buf_t *rbuf, const char *channel, void *user)
+{
+    struct bridge_live *l = user;
+    const void *out;
+    size_t out_len;
+    const int64_t now = bridge_mono_us();
+    (void)channel;
+    if (bridge_handle_polar(l->b, rbuf->data, rbuf->data_size, now, &out, &out_len) != LCMC_OK) return;
+    if (lcm_publish(l->lc, l->b->o.track_channel, out, (unsigned)out_len) != 0)
+        bridge_log_publish_error(l->b, now, l->b->o.track_channel);
+}
+
 int bridge_live_attach(struct bridge_live *l, lcm_t *lc, struct bridge *b)
 {
     memset(l, 0, sizeof *l);
@@ -49,6 +61,14 @@ int bridge_live_attach(struct bridge_live *l, lcm_t *lc, struct bridge *b)
     if (!l->sub) return -1;
     /* a burst of scans may queue up while one is processed (udpm) */
     lcm_subscription_set_queue_capacity(l->sub, 100);
+    if (b->o.polar_detection_channel[0]) {
+        l->sub_polar = lcm_subscribe(lc, b->o.polar_detection_channel, on_polar_scan, l);
+        if (!l->sub_polar) {
+            bridge_live_detach(l);
+            return -1;
+        }
+        lcm_subscription_set_queue_capacity(l->sub_polar, 100);
+    }
     l->next_status_us = bridge_mono_us() + (int64_t)(b->o.status_period_s * 1e6);
     return 0;
 }
@@ -56,7 +76,8 @@ int bridge_live_attach(struct bridge_live *l, lcm_t *lc, struct bridge *b)
 void bridge_live_detach(struct bridge_live *l)
 {
     if (l->sub) lcm_unsubscribe(l->lc, l->sub);
-    l->sub = NULL;
+    if (l->sub_polar) lcm_unsubscribe(l->lc, l->sub_polar);
+    l->sub = l->sub_polar = NULL;
 }
 
 void bridge_live_publish_status(struct bridge_live *l)
@@ -164,12 +185,14 @@ int bridge_replay(struct bridge *b, const char *in, const char *out, int keep_in
                 break;
             st->written++;
         }
-        if (lcmlog_channel_is(&ev, o->detection_channel)) {
+        const int polar = o->polar_detection_channel[0] && lcmlog_channel_is(&ev, o->polar_detection_channel);
+        if (polar || lcmlog_channel_is(&ev, o->detection_channel)) {
             const void *buf;
             size_t len;
             st->scans++;
             st->oversize += ev.oversize != 0;
-            if (bridge_handle(b, ev.data, ev.datalen, ev.timestamp, &buf, &len) == LCMC_OK) {
+            if ((polar ? bridge_handle_polar : bridge_handle)(b, ev.data, ev.datalen, ev.timestamp, &buf, &len) ==
+                LCMC_OK) {
                 if (lcmlog_write(&w, ev.timestamp, o->track_channel, buf, len) != 0) break;
                 st->written++;
             }

@@ -20,11 +20,12 @@ int64_t bridge_wall_us(void);
 struct bridge_live {
     lcm_t *lc;
     lcm_subscription_t *sub;
+    lcm_subscription_t *sub_polar;  /* the polar detection channel (NULL: none) */
     struct bridge *b;
     int64_t next_status_us;     /* monotonic time of the next status message */
 };
 
-/* Subscribe b to its detection channel on lc (the caller owns lc).
+/* Subscribe b to its detection channels (Cartesian, and polar unless "") on lc (the caller owns lc).
  * 0, or -1 when the subscription fails. */
 int bridge_live_attach(struct bridge_live *l, lcm_t *lc, struct bridge *b);
 void bridge_live_detach(struct bridge_live *l);
@@ -44,7 +45,7 @@ void bridge_live_publish_status(struct bridge_live *l);
 
 struct replay_stats {
     uint64_t events;            /* events read from the input log */
-    uint64_t scans;             /* ... on the detection channel */
+    uint64_t scans;             /* ... on the detection channels (Cartesian and polar) */
     uint64_t oversize;          /* ... too large to be a scan (skipped, counted as decode) */
     uint64_t written;           /* events written to the output log */
     uint64_t corrupt;           /* corrupt record headers skipped */
@@ -52,7 +53,8 @@ struct replay_stats {
     int truncated;              /* the input ended inside a record */
 };
 
-/* Read the LCM log `in`, run every message of the detection channel through
+/* Read the LCM log `in`, run every message of the detection channels (a
+ * polar channel's with bridge_handle_polar) through
  * the bridge, write each track list (and the status every status_period_s
  * of log time, and once at the end) to the log `out`. Output events carry
  * the timestamp of the input event that produced them, so the same input

@@ -28,12 +28,14 @@ __all__ = ["CHANNELS", "TYPES", "TENTATIVE", "CONFIRMED", "TERMINATED", "DecodeE
 # the channels trk's programs use by default, and their types
 CHANNELS = {
     "TRK_DETECTIONS": trk.detection_scan_t,     # trk-sonar-sim -> trk-lcm-bridge
+    "TRK_DETECTIONS_POLAR": trk.detection_scan_polar_t,  # trk-sonar-sim --polar: range, bearing, pose
     "TRK_TRUTH": trk.track_list_t,              # trk-sonar-sim: the targets' true states
     "TRK_TRACKS": trk.track_list_t,             # trk-lcm-bridge: the track table after every scan
     "TRK_BRIDGE_STATUS": trk.bridge_status_t,   # trk-lcm-bridge: health counters
 }
 TYPES = {cls._get_packed_fingerprint(): cls
-         for cls in (trk.detection_scan_t, trk.track_list_t, trk.bridge_status_t, trk.track_t, trk.detection_t)}
+         for cls in (trk.detection_scan_t, trk.detection_scan_polar_t, trk.track_list_t, trk.bridge_status_t,
+                     trk.track_t, trk.detection_t, trk.polar_detection_t)}
 
 TENTATIVE = trk.track_t.STATUS_TENTATIVE
 CONFIRMED = trk.track_t.STATUS_CONFIRMED
@@ -50,6 +52,10 @@ def _check(msg):
     if isinstance(msg, trk.detection_scan_t) and not 0 <= msg.n_detections <= trk.detection_scan_t.MAX_DETECTIONS:
         raise DecodeError("n_detections = %d outside 0 .. %d" % (msg.n_detections,
                                                                 trk.detection_scan_t.MAX_DETECTIONS))
+    if isinstance(msg, trk.detection_scan_polar_t) and \
+            not 0 <= msg.n_detections <= trk.detection_scan_polar_t.MAX_DETECTIONS:
+        raise DecodeError("n_detections = %d outside 0 .. %d" % (msg.n_detections,
+                                                                trk.detection_scan_polar_t.MAX_DETECTIONS))
     return msg
 
 

@@ -209,7 +209,8 @@ int main(int argc, char **argv)
                              {&pl, "--tracks", "track_channel"},
                              {&pl, "--status", "status_channel"},
                              {&pl, "--status-period-s", "status_period_s"},
-                             {&pl, "--log-interval-s", "log_interval_s"}};
+                             {&pl, "--log-interval-s", "log_interval_s"},
+                             {&pl, "--polar-detections", "polar_detection_channel"}};
     const struct cli_opt opts[] = {
         CLI_OPT_STRINGS("--config", configs, &n_configs, argc, "FILE",
                         "settings file, 'key = value' lines (any key below);\n"
@@ -222,6 +223,10 @@ int main(int argc, char **argv)
                  "else LCM's default udpm://239.255.76.67:7667?ttl=0)"},
         CLI_OPT_CALL("--detections", &fb[1], bridge_flag, "CH",
                      "detection channel [detection_channel] (TRK_DETECTIONS)"),
+        {.name = "--polar-detections", .type = CLI_CALL, .dst = &fb[6], .call = bridge_flag, .arg = "CH",
+         .flags = CLI_EMPTY_OK,
+         .help = "polar detection channel (trk.detection_scan_polar_t), '' =\n"
+                 "none [polar_detection_channel] (TRK_DETECTIONS_POLAR)"},
         CLI_OPT_CALL("--tracks", &fb[2], bridge_flag, "CH", "track channel [track_channel] (TRK_TRACKS)"),
         {.name = "--status", .type = CLI_CALL, .dst = &fb[3], .call = bridge_flag, .arg = "CH",
          .flags = CLI_EMPTY_OK, .help = "status channel, '' = none [status_channel] (TRK_BRIDGE_STATUS)"},
@@ -252,7 +257,8 @@ int main(int argc, char **argv)
                  "       trk-lcm-bridge --replay IN.lcmlog --out OUT.lcmlog [options]\n"
                  "       trk-lcm-bridge --summarize LOG.lcmlog [--tracks CH] [--status CH] [--truth CH]",
         .about = "\n"
-                 "Subscribes to detection scans (trk.detection_scan_t), runs the trk tracker and\n"
+                 "Subscribes to detection scans (trk.detection_scan_t, and the range/bearing scans\n"
+                 "of polar sensors, trk.detection_scan_polar_t), runs the trk tracker and\n"
                  "publishes the track table (trk.track_list_t) after every accepted scan, plus a\n"
                  "status message (trk.bridge_status_t). Bad messages are rejected, counted and\n"
                  "logged (once per cause, then at most every log_interval_s); the next scan is\n"
@@ -302,9 +308,10 @@ int main(int argc, char **argv)
             }
         }
         const double el = (double)(bridge_mono_us() - t0) * 1e-6;
-        printf("trk-lcm-bridge: replay %s -> %s: %llu events, %llu on %s, %llu written",
+        printf("trk-lcm-bridge: replay %s -> %s: %llu events, %llu on %s%s%s, %llu written",
                replay_in, replay_out, (unsigned long long)st.events, (unsigned long long)st.scans,
-               s.o.detection_channel, (unsigned long long)st.written);
+               s.o.detection_channel, s.o.polar_detection_channel[0] ? " and " : "", s.o.polar_detection_channel,
+               (unsigned long long)st.written);
         if (st.corrupt || st.truncated)
             printf(" (input: %llu corrupt records skipped%s)", (unsigned long long)st.corrupt,
                    st.truncated ? ", truncated at the end" : "");
@@ -329,8 +336,9 @@ int main(int argc, char **argv)
             return 1;
         }
         if (!s.o.quiet)
-            fprintf(stderr, "trk-lcm-bridge: %s -> tracker (%d tracks, %d detections) -> %s%s%s\n",
-                    s.o.detection_channel, TRK_MAX_TRACKS, TRK_MAX_DETECTIONS, s.o.track_channel,
+            fprintf(stderr, "trk-lcm-bridge: %s%s%s -> tracker (%d tracks, %d detections) -> %s%s%s\n",
+                    s.o.detection_channel, s.o.polar_detection_channel[0] ? ", " : "",
+                    s.o.polar_detection_channel, TRK_MAX_TRACKS, TRK_MAX_DETECTIONS, s.o.track_channel,
                     s.o.status_channel[0] ? ", status on " : "", s.o.status_channel);
         if (bridge_live_run(&l, &cli_stop_flag, (uint64_t)max_scans, idle_exit_s) != 0) {
             fprintf(stderr, "trk-lcm-bridge: LCM error while handling messages\n");

@@ -1,5 +1,7 @@
 /* trk-sonar-sim - a simulated sonar: publishes a seeded scenario
- * (tools/sim/scenario.h) as trk.detection_scan_t messages over LCM, or
+ * (tools/sim/scenario.h) as trk.detection_scan_t messages over LCM (or,
+ * with --polar, as trk.detection_scan_polar_t from a moving platform:
+ * platform.h), or
  * writes them to an LCM log file (--out), so the whole chain sonar -> trk-lcm-bridge
  * -> consumers can run without hardware. See --help.
  *
@@ -20,7 +22,9 @@
 #include "kvfile.h"
 #include "lcm_copy.h"
 #include "lcm_log.h"
+#include "platform.h"
 #include "scenario.h"
+#include "tracker_config.h"
 
 #define MAX_TARGETS_CLI 256
 
@@ -52,6 +56,40 @@ static size_t encode_scan(const trk_detection_scan_t *m, uint8_t *buf, size_t ca
 {
     int n = trk_detection_scan_t_encode(buf, 0, (int)cap, m);
     return n > 0 ? (size_t)n : 0;
+}
+
+static size_t encode_polar(const trk_detection_scan_polar_t *m, uint8_t *buf, size_t cap)
+{
+    int n = trk_detection_scan_polar_t_encode(buf, 0, (int)cap, m);
+    return n > 0 ? (size_t)n : 0;
+}
+
+/* The k-th malformed polar message: the causes of make_bad, then a pose
+ * that is not finite and a detection at range 0 (dropped alone). */
+static size_t make_bad_polar(unsigned k, const trk_detection_scan_polar_t *good, trk_detection_scan_polar_t *m,
+                             uint8_t *buf, size_t cap, struct rng *r)
+{
+    *m = *good;
+    switch (k % 8) {
+    case 0: return encode_polar(m, buf, cap) - 100;
+    case 1: m->n_detections = 100000; break;
+    case 2: m->utime = INT64_MAX; break;
+    case 3: m->utime = good->utime - 1000000; break;
+    case 4: m->sensor_id = 99; break;
+    case 5:
+        m->has_pose = 1;
+        m->pose_heading_rad = NAN;
+        break;
+    case 6: /* a later scan with one bad detection among good ones */
+        m->utime = good->utime + 1;
+        m->n_detections = 1;
+        memset(&m->detections[0], 0, sizeof m->detections[0]);
+        break;
+    default:
+        for (size_t i = 0; i < 64; i++) buf[i] = (uint8_t)rng_u32(r);
+        return 64;
+    }
+    return encode_polar(m, buf, cap);
 }
 
 /* The k-th malformed message (k cycles through the causes). */
@@ -97,7 +135,7 @@ static void truth_msg(const struct scenario *sc, int64_t utime, int64_t seq, trk
  * clutter density it produces and the targets' process noise. A bridge left
  * at its own defaults (P_D 0.9, 1 m, 1e-4 per m^2) tracks this sonar's
  * detections with the wrong model. */
-static void print_bridge_config(const struct scenario *sc, FILE *f)
+static void print_bridge_config(const struct scenario *sc, int polar, FILE *f)
 {
     const struct scen_params *p = &sc->p;
     const double area = (p->x_max_m - p->x_min_m) * (p->y_max_m - p->y_min_m);
@@ -120,11 +158,72 @@ static void print_bridge_config(const struct scenario *sc, FILE *f)
         fprintf(f, "# P_D of the %s amplitude model at the threshold (pfa %g)\n", amp_kind_name(p->amp_kind),
                 p->pfa);
     fprintf(f, "sensor.%u.pd = %.6g\n", s, pd);
-    fprintf(f, "sensor.%u.meas_sigma_m = %.9g\n", s, p->meas_sigma_m);
+    if (!polar) fprintf(f, "sensor.%u.meas_sigma_m = %.9g\n", s, p->meas_sigma_m); /* polar: sigma_* below */
     fprintf(f, "# clutter: %s over the region %g..%g x %g..%g m\n",
             p->clutter_count >= 0 ? "a fixed count per scan" : "Poisson", p->x_min_m, p->x_max_m, p->y_min_m,
             p->y_max_m);
     fprintf(f, "sensor.%u.clutter_density_per_m2 = %.9g\n", s, density);
+}
+
+/* --print-bridge-config --polar: the same for a polar sensor: its kind and
+ * noise, P_D (flat, or the profile the simulator draws with), coverage and
+ * the clutter density inside it. The pose comes with every scan. */
+static void print_polar_bridge_config(const struct scenario *sc, const struct trk_sensor_params *sp,
+                                      const struct polar_platform *pf, FILE *f)
+{
+    const unsigned s = sc->p.sensor_id;
+    print_bridge_config(sc, 1, f);
+    fprintf(f, "# polar: range and bearing from the platform's pose, which every scan carries\n"
+               "# (start %g, %g m, course %g rad, %g m/s); clutter at the density above inside\n"
+               "# the coverage\n",
+            pf->x_m, pf->y_m, pf->course_rad, pf->speed_mps);
+    fprintf(f, "sensor.%u.kind = polar\n", s);
+    fprintf(f, "sensor.%u.sigma_range_m = %.9g\n", s, (double)sp->sigma_range_m);
+    fprintf(f, "sensor.%u.sigma_bearing_rad = %.9g\n", s, (double)sp->sigma_bearing_rad);
+    fprintf(f, "sensor.%u.conversion = first_order\n", s);
+    if (sp->pd_profile.n) {
+        fprintf(f, "sensor.%u.pd_profile = ", s);
+        for (unsigned i = 0; i < sp->pd_profile.n; i++)
+            fprintf(f, "%s%.9g:%.9g", i ? ", " : "", (double)sp->pd_profile.range_m[i], (double)sp->pd_profile.pd[i]);
+        fputc('\n', f);
+    }
+    fprintf(f, "sensor.%u.coverage.min_range_m = %.9g\n", s, (double)sp->coverage.min_range_m);
+    fprintf(f, "sensor.%u.coverage.max_range_m = %.9g\n", s, (double)sp->coverage.max_range_m);
+    fprintf(f, "sensor.%u.coverage.half_width_rad = %.9g\n", s, (double)sp->coverage.half_width_rad);
+}
+
+/* A polar sensor's option through the tracker configuration's key (one
+ * parser and one set of range checks for the simulator and the bridge). */
+struct sensor_opt {
+    struct tcfg *cfg;
+    const char *key;        /* after "sensor.0." */
+};
+
+static int set_sensor_opt(void *ctx, const char *v, char *err, size_t errlen)
+{
+    const struct sensor_opt *o = ctx;
+    char key[64];
+    snprintf(key, sizeof key, "sensor.0.%s", o->key);
+    return tcfg_set(o->cfg, key, v, err, errlen) == 0 ? 0 : -1;
+}
+
+/* --coverage MIN_M,MAX_M,HALF_WIDTH_RAD: the three coverage keys. */
+static int set_coverage(void *ctx, const char *v, char *err, size_t errlen)
+{
+    struct tcfg *c = ctx;
+    static const char *const keys[3] = {"sensor.0.coverage.min_range_m", "sensor.0.coverage.max_range_m",
+                                        "sensor.0.coverage.half_width_rad"};
+    double d[3];
+    if (kv_parse_doubles(v, d, 3) != 0) {
+        snprintf(err, errlen, "needs MIN_RANGE_M,MAX_RANGE_M,HALF_WIDTH_RAD");
+        return -1;
+    }
+    for (int i = 0; i < 3; i++) {
+        char num[40];
+        snprintf(num, sizeof num, "%.17g", d[i]);
+        if (tcfg_set(c, keys[i], num, err, errlen) != 0) return -1;
+    }
+    return 0;
 }
 
 /* --target X,Y,VX,VY[,SNR_DB], repeated. */
@@ -173,10 +272,19 @@ int main(int argc, char **argv)
     double rate_hz = -1, pd = NAN, speed[2], region[4];
     long scans = -1, bad_every = 0, seed, sensor_id, n_targets;
     long start_utime_l = -1;
-    int quiet = 0, have_pd = 0, print_config = 0;
+    int quiet = 0, have_pd = 0, print_config = 0, polar = 0;
+    const char *polar_channel = "TRK_DETECTIONS_POLAR";
+    double platform[4] = {1000, 1000, 0, 0};
+    static struct tcfg pcfg; /* the polar sensor's keys (sensor 0 of it) */
     char err[512];
 
     scen_defaults(&p);
+    tcfg_defaults(&pcfg);
+    pcfg.params.sensor[0].kind = TRK_SENSOR_POLAR;
+    pcfg.params.sensor[0].sigma_range_m = 3;
+    pcfg.params.sensor[0].sigma_bearing_rad = TRK_REAL_C(0.005);
+    struct sensor_opt so_sr = {&pcfg, "sigma_range_m"}, so_sb = {&pcfg, "sigma_bearing_rad"},
+                      so_prof = {&pcfg, "pd_profile"};
     seed = (long)p.seed;
     sensor_id = (long)p.sensor_id;
     n_targets = (long)p.n_targets;
@@ -208,6 +316,24 @@ int main(int argc, char **argv)
                      "print the trk-lcm-bridge settings that match this scenario\n"
                      "(P_D, position noise, clutter density, q; a file for\n"
                      "trk-lcm-bridge --config) and exit"),
+        CLI_OPT_HEADING("Polar sensor on a moving platform:"),
+        CLI_OPT_FLAG("--polar", &polar,
+                     "publish range and bearing from the platform's pose\n"
+                     "(trk.detection_scan_polar_t on --polar-channel) instead of\n"
+                     "positions (trk.detection_scan_t on --channel)"),
+        CLI_OPT_STRING("--polar-channel", &polar_channel, "CH", NULL,
+                       "polar detection channel (TRK_DETECTIONS_POLAR)"),
+        CLI_OPT_NUMBERS("--platform", platform, 4, "X,Y,COURSE_RAD,SPEED_MPS",
+                        "platform at the first scan (m), its course clockwise from\n"
+                        "north, which the sensor looks along, and speed (1000,1000,0,0)"),
+        CLI_OPT_CALL("--sigma-range-m", &so_sr, set_sensor_opt, "S", "range noise, 1 sigma, (0, 1e6] (3)"),
+        CLI_OPT_CALL("--sigma-bearing-rad", &so_sb, set_sensor_opt, "S", "bearing noise, 1 sigma, (0, 0.5] (0.005)"),
+        CLI_OPT_CALL("--pd-profile", &so_prof, set_sensor_opt, "R:P,...",
+                     "P_D over range from the platform (m : P_D, 2..16 points,\n"
+                     "linear between; replaces the targets' P_D) (none)"),
+        CLI_OPT_CALL("--coverage", &pcfg, set_coverage, "MIN_M,MAX_M,HALF_WIDTH_RAD",
+                     "where the sensor sees: ranges (max 0: no limit) and the\n"
+                     "sector's half width about the heading (0: all round) (0,0,0)"),
         CLI_OPT_HEADING("Scenario:"),
         CLI_OPT_LONG("--seed", &seed, "N", NULL, CLI_IN, 0, 9e18, "(1)"),
         CLI_OPT_LONG("--sensor-id", &sensor_id, "N", NULL, CLI_IN, 0, 2147483647.0, "(0)"),
@@ -296,8 +422,25 @@ int main(int argc, char **argv)
         return 2;
     }
 
+    const struct polar_platform pf = {platform[0], platform[1], platform[2], platform[3]};
+    struct trk_sensor_params *psp = &pcfg.params.sensor[0];
+    if (polar) {
+        char perr[256];
+        if (!isfinite(pf.x_m) || !isfinite(pf.y_m) || !(fabs(pf.course_rad) <= 6.283185307179586) ||
+            !(pf.speed_mps >= 0 && pf.speed_mps <= 1e4)) {
+            fprintf(stderr, "trk-sonar-sim: --platform: finite position, course in [-2 pi, 2 pi], speed in [0, 1e4] m/s\n");
+            scen_free(&sc);
+            return 2;
+        }
+        if (tcfg_check(&pcfg, perr, sizeof perr) != 0) {
+            fprintf(stderr, "trk-sonar-sim: polar sensor: %s\n", perr);
+            scen_free(&sc);
+            return 2;
+        }
+    }
     if (print_config) {
-        print_bridge_config(&sc, stdout);
+        if (polar) print_polar_bridge_config(&sc, psp, &pf, stdout);
+        else print_bridge_config(&sc, 0, stdout);
         scen_free(&sc);
         return fflush(stdout) == 0 && !ferror(stdout) ? 0 : 1;
     }
@@ -323,9 +466,11 @@ int main(int argc, char **argv)
 
     struct trk_detection *det = calloc(TRK_DETECTION_SCAN_T_MAX_DETECTIONS, sizeof *det);
     trk_detection_scan_t *msg = malloc(sizeof *msg), *bad = malloc(sizeof *bad);
+    struct trk_polar_detection *pdet = calloc(TRK_DETECTION_SCAN_POLAR_T_MAX_DETECTIONS, sizeof *pdet);
+    trk_detection_scan_polar_t *pmsg = malloc(sizeof *pmsg), *pbad = malloc(sizeof *pbad);
     trk_track_list_t *truth = malloc(sizeof *truth);
     uint8_t *buf = malloc(65536);
-    if (!det || !msg || !bad || !truth || !buf) {
+    if (!det || !msg || !bad || !truth || !buf || !pdet || !pmsg || !pbad) {
         fprintf(stderr, "trk-sonar-sim: out of memory\n");
         return 1;
     }
@@ -337,8 +482,11 @@ int main(int argc, char **argv)
             fprintf(stderr, " (pfa %g, threshold %.3f sqrt(P))", p.pfa, sc.amp.t);
         if (sc.n_tg)
             fprintf(stderr, ", target 1 P_D %.3f", sc.tg[0].pd);
+        if (polar)
+            fprintf(stderr, "; polar from (%g, %g) m, course %g rad, %g m/s", pf.x_m, pf.y_m, pf.course_rad,
+                    pf.speed_mps);
         fprintf(stderr, "; %s %s%s\n", log_path ? "writing" : "publishing on",
-                log_path ? log_path : channel, log_path ? "" : " (Ctrl-C to stop)");
+                log_path ? log_path : polar ? polar_channel : channel, log_path ? "" : " (Ctrl-C to stop)");
     }
 
     struct timespec next;
@@ -350,25 +498,46 @@ int main(int argc, char **argv)
         struct trk_scan scan;
         size_t nt, nd;
         scen_next(&sc, det, TRK_DETECTION_SCAN_T_MAX_DETECTIONS, &scan, &nt, &nd);
+        if (polar) { /* the same targets and time, seen from the platform */
+            const struct trk_pose pose = polar_pose(&pf, (uint64_t)k, p.scan_period_s);
+            scan.n_detections = polar_scan(&sc, psp, &pose, (uint64_t)k, pdet,
+                                           TRK_DETECTION_SCAN_POLAR_T_MAX_DETECTIONS, &nt, &nd);
+            scan.detections = NULL;
+            scan.polar = pdet;
+            scan.has_pose = 1;
+            scan.pose = pose;
+        }
         n_det += scan.n_detections;
         n_tdet += nt;
         n_drop += nd;
-        if (lcmc_scan_to_msg(&scan, (int64_t)k, msg) != LCMC_OK) {
-            fprintf(stderr, "trk-sonar-sim: scan %ld cannot be encoded (time %lld us)\n", k,
-                    (long long)scan.time_us);
-            encode_failed = 1;
-            break;
+        if (polar) {
+            if (lcmc_polar_scan_to_msg(&scan, (int64_t)k, pmsg) != LCMC_OK) {
+                fprintf(stderr, "trk-sonar-sim: scan %ld cannot be encoded (time %lld us)\n", k,
+                        (long long)scan.time_us);
+                encode_failed = 1;
+                break;
+            }
+            const size_t len = encode_polar(pmsg, buf, 65536);
+            if (sink_send(&sink, scan.time_us, polar_channel, buf, len) == 0) n_sent++;
+        } else {
+            if (lcmc_scan_to_msg(&scan, (int64_t)k, msg) != LCMC_OK) {
+                fprintf(stderr, "trk-sonar-sim: scan %ld cannot be encoded (time %lld us)\n", k,
+                        (long long)scan.time_us);
+                encode_failed = 1;
+                break;
+            }
+            size_t len = encode_scan(msg, buf, 65536);
+            if (sink_send(&sink, scan.time_us, channel, buf, len) == 0) n_sent++;
         }
-        size_t len = encode_scan(msg, buf, 65536);
-        if (sink_send(&sink, scan.time_us, channel, buf, len) == 0) n_sent++;
         if (truth_channel[0]) {
             truth_msg(&sc, scan.time_us, (int64_t)k, truth);
             int tl = trk_track_list_t_encode(buf, 0, 65536, truth);
             if (tl > 0) sink_send(&sink, scan.time_us, truth_channel, buf, (size_t)tl);
         }
         if (bad_every > 0 && (k + 1) % bad_every == 0) {
-            size_t bl = make_bad(bad_kind++, msg, bad, buf, 65536, &bad_rng);
-            if (sink_send(&sink, scan.time_us, channel, buf, bl) == 0) n_bad++;
+            const size_t bl = polar ? make_bad_polar(bad_kind++, pmsg, pbad, buf, 65536, &bad_rng)
+                                    : make_bad(bad_kind++, msg, bad, buf, 65536, &bad_rng);
+            if (sink_send(&sink, scan.time_us, polar ? polar_channel : channel, buf, bl) == 0) n_bad++;
         }
         if (!log_path && rate_hz > 0) {
             const double per = 1.0 / rate_hz;
@@ -404,6 +573,9 @@ int main(int argc, char **argv)
         printf("trk-sonar-sim: %llu amplitude draws failed (detections dropped)\n",
                (unsigned long long)sc.n_amp_failures);
     free(det);
+    free(pdet);
+    free(pmsg);
+    free(pbad);
     free(msg);
     free(bad);
     free(truth);

@@ -9,8 +9,10 @@ at import. Without the library the rest works and trk.library_error says
 why the tracker is missing.
 """
 from .bridge_status_t import bridge_status_t
+from .detection_scan_polar_t import detection_scan_polar_t
 from .detection_scan_t import detection_scan_t
 from .detection_t import detection_t
+from .polar_detection_t import polar_detection_t
 from .track_list_t import track_list_t
 from .track_t import track_t
 
