@@ -196,7 +196,7 @@
  *              heading 0 (mtt_scen_pose). A scan every T = 8 s (one ping),
  *              150 scans (1200 s, 3.6 km of platform track).
  *   Sector     ranges [range_min_m, range_max_m] (0.5-8 km) within
- *              +-half_width_deg (60 deg) of the heading: 134 km^2. A
+ *              +-half_width_deg (60 deg) of the heading: 66.8 km^2. A
  *              target is present while inside the sector less margin_m
  *              (50 m) in range and 1 deg in bearing.
  *   Sensor     s->sonar (struct trk_sensor_params, kind TRK_SENSOR_POLAR):
@@ -208,11 +208,11 @@
  *              (a Swerling I target at a fixed threshold, its echo-to-
  *              reverberation ratio falling as 10 log10 r: boundary-
  *              reverberation-limited, Urick, Principles of Underwater
- *              Sound, 3rd ed., ch. 9): 0.93 at 0.5 km, 0.81 at 2 km, 0.64
- *              at 5 km, 0.40 at 8 km. A target's detection probability at
+ *              Sound, 3rd ed., ch. 9): 0.93 at 0.5 km, 0.76 at 2 km, 0.53
+ *              at 5 km, 0.39 at 8 km. A target's detection probability at
  *              a scan is trk_sensor_pd_at(s->sonar, pose, x, y) at its
  *              true position: the library's formula. sonar_pd_mean: P_D
- *              averaged over the sector's area (0.58; the `cart`
+ *              averaged over the sector's area (0.53; the `cart`
  *              configuration's single P_D). No amplitudes (the library
  *              takes a P_D profile without an amplitude model).
  *   Targets    the eight slots, one target each, straight but the turn,
@@ -247,10 +247,11 @@
  *                       near 7 km), speed in the lower half of the range
  *                       (3-6.5 m/s); present >= 40 scans
  *   Patches    four reverberation discs fixed on the ground, 3 % of the
- *              sector's area together (radius 564 m each at the defaults),
+ *              sector's area together (radius 399 m each at the defaults),
  *              centred at mid-run at 1.5-6 km, +-45 deg (the first on the
  *              crossing point +-200 m, the second on the turn's start
- *              +-200 m); they do not overlap. mtt_scen_in_patch.
+ *              +-200 m); each is drawn again (up to 64 times) until clear of
+ *              those before it. mtt_scen_in_patch.
  *   Clutter    exactly clutter_count points per scan: each is a patch
  *              point with probability 0.30 (uniform in a patch drawn
  *              uniformly: 10 x the sector's average density), a near-field
@@ -421,9 +422,10 @@ struct mtt_scan_info {
 };
 
 /* Scan k (0 <= k < n_scans) with clutter_count clutter detections (>= 0)
- * into det[0 .. max) and *scan (scan->detections = det): at most
- * min(max, p.max_det) detections. origin (may be NULL; max entries):
- * the target index of each detection, -1 for clutter. *info may be NULL. */
+ * into det[0 .. max) and *scan (scan->detections = det; no polar
+ * detections, no pose): at most min(max, p.max_det) detections. origin
+ * (may be NULL; max entries): the target index of each detection, -1 for
+ * clutter, -2 for a persistent return (sonar). *info may be NULL. */
 void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
                    size_t max, long *origin, struct trk_scan *scan, struct mtt_scan_info *info);
 
