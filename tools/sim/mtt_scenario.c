@@ -178,7 +178,8 @@ static int inside_k(const struct mtt_scenario *s, const struct mtt_target *g, lo
 {
     double x[4];
     truth_of(g, (double)k * s->p.scan_period_s, x);
-    if (s->p.family == MTT_FAMILY_SONAR) return sonar_inside(s, (double)k * s->p.scan_period_s, x[TRK_CV2_X], x[TRK_CV2_Y]);
+    if (s->p.family == MTT_FAMILY_SONAR)
+        return sonar_inside(s, (double)k * s->p.scan_period_s, x[TRK_CV2_X], x[TRK_CV2_Y]);
     return inside_xy(s, x[TRK_CV2_X], x[TRK_CV2_Y]);
 }
 

@@ -1055,8 +1055,8 @@ static int take_configs(const char *s, int *kinds, int *n, char *err, size_t err
         for (int i = 0; i < N_CFG_KINDS; i++)
             if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
         if (k < 0 || *n >= N_CFG_KINDS) {
-            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle, cart (each once)", (int)len,
-                     s);
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle, cart (each once)",
+                     (int)len, s);
             return -1;
         }
         if (k == CFG_IMM && !TRK_WITH_IMM) {
