@@ -522,7 +522,7 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
  * library that refuses a polar scan gets the converted ones beside it).
  * 0, or -1. */
 static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int oracle, int cart,
-                      int lib_polar, struct run_ws *ws, struct trk_scan *scan, struct mtt_scan_info *info)
+                          int lib_polar, struct run_ws *ws, struct trk_scan *scan, struct mtt_scan_info *info)
 {
     if (mtt_scen_scan_polar(sc, k, clutter, ws->det, ws->polar, max, ws->origin, scan, info) != 0) return -1;
     if (oracle) return 0;
@@ -545,7 +545,7 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
 }
 
 /* One run of the trackers' configuration tp, or of the oracle (tp gives
- * its sensor R and q). cart, lib_polar: the sonar family's (sonar_scan). */
+ * its sensor R and q). cart, lib_polar: the sonar family's (sonar_scan_for). */
 static int run_one(const struct mtt_scenario *sc, long clutter, int over, int oracle, int cart, int lib_polar,
                    const struct trk_tracker_params *tp, double c_m, struct run_ws *ws, struct run_result *res)
 {
