@@ -1010,6 +1010,7 @@ static void test_sonar(void **state)
             assert_true(ia.n_persist <= MTT_SONAR_PERSIST);
             for (size_t i = 0; i < sa.n_detections; i++) {
                 struct trk_detection d;
+                memset(&d, 0, sizeof d); /* the padding too, as the scenario's */
                 assert_int_equal(trk_polar_to_cartesian(sp, &ps, &pol_a[i], &d), TRK_OK);
                 assert_memory_equal(&d, &det_a[i], sizeof d);
                 assert_true(det_a[i].has_cov && !det_a[i].has_amplitude);
