@@ -1236,7 +1236,12 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         "entering at the edge 1-10 scans later: 6-8 present. --family fixed (the\n"
         "8-target scenario the peer, Stone Soup's JPDA, was measured on): the\n"
         "eight alone, alive the whole run but the birth and the death, each speed reduced\n"
-        "until its path stays inside (at 200 scans about 3-6 m/s). Each seed at every\n"
+        "until its path stays inside (at 200 scans about 3-6 m/s). --family sonar: a polar\n"
+        "sensor (7.5 m, 1.5 deg) on a platform at 3 m/s, its sector 0.5-8 km +-60 deg, a ping\n"
+        "every 8 s with the platform's pose, P_D falling with range, clutter in patches and\n"
+        "the near field, 12 persistent scatterers; eight targets at 3-10 m/s (a shallow\n"
+        "crossing, a pair 100 m apart on one bearing, a 3 deg/s turn, a far one, a birth, a\n"
+        "death); the trackers get polar scans, cart the old way. Each seed at every\n"
         "clutter count through every configuration (the same scenarios: common random\n"
         "numbers). Scored per scan on the confirmed tracks (GOSPA p = 2, alpha = 2, cut-off\n"
         "c; tools/sim/mtt_eval.h); mean and 95 % Student t interval over seeds.",
