@@ -20,6 +20,8 @@
 # new, pda, old and the known-association oracle)
 # takes seconds per build on 2 cores; compiling the large build dominates.
 #   make mtt-smoke  the `make test` step: a short run, its CSV checked (tests/mtt_smoke.sh)
+#   make mtt-sonar-smoke  the `make test` step for --family sonar: a short run, its CSV
+#                   checked (tests/mtt_sonar_smoke.sh)
 #   make mtt-imm    manoeuvring targets, CV-only (new) against IMM (imm).
 #                   Builds trk-sim in $(MTT_IMM_BUILD) (CONFIG_DEFS=$(MTT_IMM_DEFS): IMM tracks),
 #                   then `trk-sim mtt --config new,imm $(MTT_IMM_ARGS)` (10 seeds, the default
@@ -48,7 +50,7 @@ MTT_IMM_RATES ?= 1 2 3
 MTT_IMM_ACCEL ?= 0.1
 MTT_IMM_ACCEL_S ?= 60
 
-.PHONY: mtt mtt-smoke mtt-imm tuning
+.PHONY: mtt mtt-smoke mtt-sonar-smoke mtt-imm tuning
 # `make tuning`: one setting at a time (assumed P_D and clutter density, P_G,
 # the existence thresholds, clutter beyond capacity) against GOSPA, false
 # tracks and time to confirm (tools/scripts/tuning_sweep.sh; docs/tuning.md)
@@ -70,6 +72,11 @@ TEST_EXTRA += mtt-smoke
 TEST_EXTRA_DEPS_mtt-smoke := $(BUILD)/bin/trk-sim
 mtt-smoke: $(TEST_EXTRA_DEPS_mtt-smoke)
 	@sh tests/mtt_smoke.sh $(BUILD)/bin/trk-sim
+
+TEST_EXTRA += mtt-sonar-smoke
+TEST_EXTRA_DEPS_mtt-sonar-smoke := $(BUILD)/bin/trk-sim
+mtt-sonar-smoke: $(TEST_EXTRA_DEPS_mtt-sonar-smoke)
+	@sh tests/mtt_sonar_smoke.sh $(BUILD)/bin/trk-sim
 
 mtt-imm:
 	+@$(MAKE) --no-print-directory BUILD=$(MTT_IMM_BUILD) CONFIG_DEFS='$(MTT_IMM_DEFS)' $(MTT_IMM_BUILD)/bin/trk-sim

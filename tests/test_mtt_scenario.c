@@ -19,7 +19,8 @@
  * the clutter). The manoeuvres: the straight target's
  * acceleration (truth continuous, exact, the speed up by accel x accel_s,
  * the life cut where it leaves; accel 0 the scenario unchanged, bit for
- * bit; nothing else changes with it) and turns up to a full circle. And the
+ * bit; nothing else changes with it) and turns up to a full circle. The
+ * sonar family (its geometry, sensor, scans and clutter: test_sonar). And the
  * helpers the experiment uses: Student t intervals
  * (mc_stats.h), the per-target assignment of mtt_eval.h, the defaults
  * before two-point initiation. */
@@ -761,7 +762,7 @@ static void test_accel(void **state)
 {
     (void)state;
     static const long ks[] = {0, 63, 99, 100, 131, 199};
-    for (int fam = 0; fam < MTT_N_FAMILIES; fam++)
+    for (int fam = MTT_FAMILY_TRANSIT; fam <= MTT_FAMILY_FIXED; fam++) /* the sonar family has no acceleration */
         for (uint64_t seed = 1; seed <= 10; seed++) {
             struct mtt_scenario base, z, a;
             struct mtt_scen_params p;
@@ -906,6 +907,176 @@ static void test_long_turns(void **state)
     assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
 }
 
+
+/* The sonar family (mtt_scenario.h "The sonar family"), 8 seeds: eight
+ * targets, each present only while inside the sector less its margins and
+ * for at least 25 scans; speeds in [3, 10] m/s; the platform's pose; the
+ * pair on one bearing 100 m apart in range; the crossing shallow; the far
+ * target near 7 km; the turn inside its life; the sensor (polar, the
+ * profile falling with range, the coverage); the patches 3 % of the area.
+ * Scans: determinism, the Cartesian view = the library's conversion of the
+ * polar one, mtt_scen_scan = mtt_scen_scan_polar's det[], clutter inside
+ * the sector and its counts, the persistent returns (origin -2) switchable
+ * without changing the rest, and over the run the targets' detection rate
+ * = the library's P_D at their positions (within 4 sigma), the clutter
+ * denser near the sonar and in the patches. */
+static void test_sonar(void **state)
+{
+    (void)state;
+    static struct trk_polar_detection pol_a[TRK_MAX_DETECTIONS], pol_b[TRK_MAX_DETECTIONS];
+    for (uint64_t seed = 1; seed <= 8; seed++) {
+        struct mtt_scenario s, s2, np;
+        struct mtt_scen_params p;
+        char err[256];
+        mtt_scen_sonar_defaults(&p);
+        p.seed = seed;
+        assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), 0);
+        assert_int_equal(mtt_scen_init(&s2, &p, err, sizeof err), 0);
+        p.persistent = 0;
+        assert_int_equal(mtt_scen_init(&np, &p, err, sizeof err), 0);
+        assert_memory_equal(s.tg, s2.tg, s.n_targets * sizeof s.tg[0]);
+        assert_memory_equal(s.tg, np.tg, s.n_targets * sizeof s.tg[0]);
+        assert_int_equal(s.n_targets, 8);
+        const double T = 8, hw = 60 * DEG;
+        /* the sensor */
+        const struct trk_sensor_params *sp = &s.sonar;
+        assert_int_equal(sp->kind, TRK_SENSOR_POLAR);
+        assert_int_equal(sp->pd_profile.n, MTT_SONAR_PD_POINTS);
+        assert_true(sp->pd_profile.pd[0] > 0.85 && sp->pd_profile.pd[0] < 0.95);
+        assert_true(sp->pd_profile.pd[MTT_SONAR_PD_POINTS - 1] < 0.5);
+        for (int k = 1; k < MTT_SONAR_PD_POINTS; k++) assert_true(sp->pd_profile.pd[k] < sp->pd_profile.pd[k - 1]);
+        assert_true(fabs(sp->coverage.max_range_m - 8000) < 1e-3 && fabs(sp->coverage.min_range_m - 500) < 1e-3);
+        assert_true(s.sonar_pd_mean > 0.45 && s.sonar_pd_mean < 0.65);
+        assert_true(fabs(s.area_m2 - hw * (8000.0 * 8000 - 500.0 * 500)) < 1);
+        double pa = 0;
+        for (int j = 0; j < MTT_SONAR_PATCHES; j++) pa += 180 * DEG * s.patch[j].r_m * s.patch[j].r_m;
+        assert_true(fabs(pa / s.area_m2 - 0.03) < 1e-9);
+        /* the targets: present while inside, long enough, speeds */
+        for (size_t i = 0; i < s.n_targets; i++) {
+            const struct mtt_target *g = &s.tg[i];
+            assert_true(g->death_scan - g->birth_scan >= 25);
+            assert_true(g->speed_mps >= 3 - 1e-9 && g->speed_mps <= 10 + 1e-9);
+            for (long k = g->birth_scan; k < g->death_scan; k++) {
+                double x[4];
+                struct trk_pose ps;
+                mtt_scen_truth(&s, (long)i, (double)k * T, x);
+                mtt_scen_pose(&s, k, &ps);
+                assert_true(ps.x_m == 0 && ps.heading_rad == 0 && fabs(ps.y_m - 3.0 * T * (double)k) < 1e-3);
+                const double dx = x[TRK_CV2_X] - ps.x_m, dy = x[TRK_CV2_Y] - ps.y_m, r = hypot(dx, dy);
+                assert_true(r >= 550 - 1e-6 && r <= 7950 + 1e-6 && fabs(atan2(dx, dy)) <= hw - 1 * DEG + 1e-9);
+                assert_true(trk_sensor_pd_at(sp, &ps, (trk_real)x[TRK_CV2_X], (trk_real)x[TRK_CV2_Y]) > 0);
+            }
+        }
+        {
+            /* the pair at mid-run: one bearing, 100 m apart in range */
+            const double tm = 0.5 * 149 * T;
+            double a[4], b[4];
+            mtt_scen_truth(&s, MTT_PAR_A, tm, a);
+            mtt_scen_truth(&s, MTT_PAR_B, tm, b);
+            const double py = 3 * tm;
+            const double ra = hypot(a[TRK_CV2_X], a[TRK_CV2_Y] - py), rb = hypot(b[TRK_CV2_X], b[TRK_CV2_Y] - py);
+            assert_true(fabs(rb - ra - 100) < 1e-6);
+            assert_true(fabs(atan2(b[TRK_CV2_X], b[TRK_CV2_Y] - py) - atan2(a[TRK_CV2_X], a[TRK_CV2_Y] - py)) < 1e-9);
+            assert_true(s.par_scans >= 40);
+            /* the far target near 7 km */
+            double f[4];
+            mtt_scen_truth(&s, MTT_STRAIGHT, tm, f);
+            const double rf = hypot(f[TRK_CV2_X], f[TRK_CV2_Y] - py);
+            assert_true(rf >= 6500 - 1e-6 && rf <= 7500 + 1e-6);
+            /* the crossing: both at its point, 20-35 deg apart */
+            const struct mtt_target *ca = &s.tg[MTT_CROSS_A], *cb = &s.tg[MTT_CROSS_B];
+            assert_true(ca->at_s == cb->at_s && ca->ax_m == s.cross_x_m && cb->ay_m == s.cross_y_m);
+            const double dh = fabs(remainder(ca->heading_rad - cb->heading_rad, 2 * 180 * DEG));
+            assert_true(dh >= 20 * DEG - 1e-9 && dh <= 35 * DEG + 1e-9);
+            assert_true(mtt_scen_present(&s, MTT_CROSS_A, s.cross_scan) &&
+                        mtt_scen_present(&s, MTT_CROSS_B, s.cross_scan));
+            /* the turn within its life */
+            assert_true(s.turn_first_scan <= s.turn_last_scan);
+            assert_true(mtt_scen_present(&s, MTT_TURN, s.turn_first_scan) &&
+                        mtt_scen_present(&s, MTT_TURN, s.turn_last_scan));
+        }
+        /* the scans */
+        const long ncl = TRK_MAX_DETECTIONS - 30 < 150 ? TRK_MAX_DETECTIONS - 30 : 150, nsm = ncl / 2;
+        double pd_sum = 0, det_sum = 0, n_tgt = 0, n_cl = 0, n_patch = 0, n_near = 0, n_far = 0;
+        for (long k = 0; k < 150; k++) {
+            struct trk_scan sa, sb;
+            struct mtt_scan_info ia, ib;
+            struct trk_pose ps;
+            mtt_scen_pose(&s, k, &ps);
+            assert_int_equal(mtt_scen_scan_polar(&s, k, ncl, det_a, pol_a, TRK_MAX_DETECTIONS, org_a, &sa, &ia), 0);
+            assert_true(sa.detections == det_a && sa.polar == NULL && !sa.has_pose);
+            assert_int_equal(ia.n_clutter, (size_t)ncl);
+            assert_int_equal(sa.n_detections, ia.n_target + ia.n_persist + ia.n_clutter);
+            assert_true(ia.n_persist <= MTT_SONAR_PERSIST);
+            for (size_t i = 0; i < sa.n_detections; i++) {
+                struct trk_detection d;
+                memset(&d, 0, sizeof d); /* the padding too, as the scenario's */
+                assert_int_equal(trk_polar_to_cartesian(sp, &ps, &pol_a[i], &d), TRK_OK);
+                assert_memory_equal(&d, &det_a[i], sizeof d);
+                assert_true(det_a[i].has_cov && !det_a[i].has_amplitude);
+                if (org_a[i] == -1) {
+                    assert_true(pol_a[i].range_m >= 500 - 1e-3 && pol_a[i].range_m <= 8000 + 1e-3);
+                    assert_true(fabs(pol_a[i].bearing_rad) <= hw + 1e-6);
+                    n_cl++;
+                    n_patch += mtt_scen_in_patch(&s, det_a[i].x_m, det_a[i].y_m);
+                    n_near += pol_a[i].range_m < 1000;
+                    n_far += pol_a[i].range_m > 4000;
+                }
+                assert_true(org_a[i] >= -2 && org_a[i] < 8);
+            }
+            for (int j = 0; j < MTT_N_SLOTS; j++) { /* the detection rate against the library's P_D */
+                const long i = mtt_scen_slot_target(&s, j, k);
+                if (i < 0) continue;
+                double x[4];
+                mtt_scen_truth(&s, i, (double)k * T, x);
+                pd_sum += trk_sensor_pd_at(sp, &ps, (trk_real)x[TRK_CV2_X], (trk_real)x[TRK_CV2_Y]);
+                n_tgt++;
+            }
+            det_sum += (double)ia.n_target;
+            if (k % 37 != 0) continue;
+            /* determinism; mtt_scen_scan the same det[]; fewer clutter points the first ones */
+            mtt_scen_scan_polar(&s2, k, ncl, det_b, pol_b, TRK_MAX_DETECTIONS, org_b, &sb, &ib);
+            assert_int_equal(sa.n_detections, sb.n_detections);
+            assert_memory_equal(det_a, det_b, sa.n_detections * sizeof det_a[0]);
+            assert_memory_equal(pol_a, pol_b, sa.n_detections * sizeof pol_a[0]);
+            mtt_scen_scan(&s2, k, ncl, det_b, TRK_MAX_DETECTIONS, org_b, &sb, &ib);
+            assert_int_equal(sa.n_detections, sb.n_detections);
+            assert_memory_equal(det_a, det_b, sa.n_detections * sizeof det_a[0]);
+            mtt_scen_scan(&s2, k, nsm, det_b, TRK_MAX_DETECTIONS, org_b, &sb, &ib);
+            for (size_t i = 0; i < sb.n_detections; i++)
+                assert_true(has_pos(&det_b[i], det_a, org_a, sa.n_detections, org_b[i]));
+            /* without the persistent scatterers: the same but for them */
+            mtt_scen_scan(&np, k, ncl, det_b, TRK_MAX_DETECTIONS, org_b, &sb, &ib);
+            assert_int_equal(ib.n_persist, 0);
+            assert_int_equal(sb.n_detections, sa.n_detections - ia.n_persist);
+            for (size_t i = 0; i < sa.n_detections; i++)
+                if (org_a[i] != -2) assert_true(has_pos(&det_a[i], det_b, org_b, sb.n_detections, org_a[i]));
+        }
+        const double pd_mean = pd_sum / n_tgt, sd = sqrt(pd_mean * (1 - pd_mean) / n_tgt);
+        assert_true(fabs(det_sum / n_tgt - pd_mean) < 4 * sd);
+        /* clutter: ~30 % in the patches (3 % of the area), denser near the
+         * sonar per m^2 (r < 1 km against 4-8 km) */
+        assert_true(n_patch / n_cl > 0.2 && n_patch / n_cl < 0.45);
+        const double a_near = hw * (1000.0 * 1000 - 500.0 * 500), a_far = hw * (8000.0 * 8000 - 4000.0 * 4000);
+        assert_true((n_near / a_near) > 5 * (n_far / a_far));
+        mtt_scen_free(&s);
+        mtt_scen_free(&s2);
+        mtt_scen_free(&np);
+    }
+    /* refused: amplitudes, an acceleration */
+    struct mtt_scen_params p;
+    struct mtt_scenario s;
+    char err[256];
+    mtt_scen_sonar_defaults(&p);
+    p.amplitude = 1;
+    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
+    mtt_scen_sonar_defaults(&p);
+    p.accel_mps2 = 0.1;
+    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
+    assert_true(strcmp(mtt_family_name(MTT_FAMILY_SONAR), "sonar") == 0);
+    assert_int_equal(mtt_family_parse("sonar"), MTT_FAMILY_SONAR);
+}
+
 /* Student t quantiles and intervals (R: qt(0.975, df)). */
 static void test_student_t(void **state)
 {
@@ -975,6 +1146,7 @@ int main(void)
         cmocka_unit_test(test_families_share), cmocka_unit_test(test_student_t),
         cmocka_unit_test(test_eval_assign), cmocka_unit_test(test_old_defaults),
         cmocka_unit_test(test_accel),       cmocka_unit_test(test_long_turns),
+        cmocka_unit_test(test_sonar),
     };
     return trk_run_tests("mtt_scenario", tests, NULL, NULL);
 }

@@ -1,5 +1,5 @@
 /* mtt_scenario.c - the multi-target scenario families of trk-sim mtt
- * (mtt_scenario.h): transit (the default) and fixed. */
+ * (mtt_scenario.h): transit (the default), fixed and sonar. */
 #include "mtt_scenario.h"
 
 #include <math.h>
@@ -40,6 +40,25 @@ void mtt_scen_defaults(struct mtt_scen_params *p)
     p->gap_max_scans = 10;
     p->accel_mps2 = 0;
     p->accel_s = 60;
+    p->platform_speed_mps = 3;
+    p->range_min_m = 500;
+    p->range_max_m = 8000;
+    p->half_width_deg = 60;
+    p->sigma_range_m = 7.5;
+    p->sigma_bearing_deg = 1.5;
+    p->persistent = 1;
+}
+
+void mtt_scen_sonar_defaults(struct mtt_scen_params *p)
+{
+    mtt_scen_defaults(p);
+    p->family = MTT_FAMILY_SONAR;
+    p->n_scans = 150;
+    p->scan_period_s = 8;
+    p->speed_min_mps = 3;
+    p->speed_max_mps = 10;
+    p->parallel_sep_m = 100;
+    p->amplitude = 0;
 }
 
 const char *mtt_role_name(int role)
@@ -51,7 +70,7 @@ const char *mtt_role_name(int role)
 
 const char *mtt_family_name(int family)
 {
-    static const char *const names[MTT_N_FAMILIES] = {"transit", "fixed"};
+    static const char *const names[MTT_N_FAMILIES] = {"transit", "fixed", "sonar"};
     return family >= 0 && family < MTT_N_FAMILIES ? names[family] : "?";
 }
 
@@ -153,10 +172,14 @@ static int inside_xy(const struct mtt_scenario *s, double x, double y)
     return x >= lo && x <= hi && y >= lo && y <= hi;
 }
 
+static int sonar_inside(const struct mtt_scenario *s, double t, double x, double y);
+
 static int inside_k(const struct mtt_scenario *s, const struct mtt_target *g, long k)
 {
     double x[4];
     truth_of(g, (double)k * s->p.scan_period_s, x);
+    if (s->p.family == MTT_FAMILY_SONAR)
+        return sonar_inside(s, (double)k * s->p.scan_period_s, x[TRK_CV2_X], x[TRK_CV2_Y]);
     return inside_xy(s, x[TRK_CV2_X], x[TRK_CV2_Y]);
 }
 
@@ -582,6 +605,519 @@ static void place_fixed(struct mtt_scenario *s, struct mtt_target dg[MTT_N_SLOTS
     set_accel(s, &dg[MTT_STRAIGHT]); /* after the fit: the speed fitted without it */
 }
 
+/* ---------------------------------------------------------------- sonar family */
+
+#define SONAR_TRIES 64          /* draws of a target's geometry until its life is long enough */
+#define SONAR_MARGIN_DEG 1.0    /* "inside": this far within the sector's edges in bearing */
+#define SONAR_PFA 0.01          /* the P_D law's threshold P_FA */
+#define SONAR_SRR0_DB 18.0      /* its echo-to-reverberation ratio at range_min_m */
+#define SONAR_PATCH_FRAC 0.03   /* the patches' share of the sector's area ... */
+#define SONAR_PATCH_SHARE 0.30  /* ... and of the clutter: 10 x the average density */
+#define SONAR_NEAR_SHARE 0.15   /* the near-field rise's share of the clutter ... */
+#define SONAR_NEAR_SCALE_M 400  /* ... its range beyond range_min_m: Exp(this) */
+#define SONAR_PERSIST_PD 0.85   /* a persistent scatterer's return probability per ping */
+
+static double wrap_pi(double a)
+{
+    const double pi = 180 * DEG;
+    while (a > pi) a -= 2 * pi;
+    while (a < -pi) a += 2 * pi;
+    return a;
+}
+
+/* The platform at time t: position, heading clockwise from north (constant). */
+static void sonar_platform(const struct mtt_scenario *s, double t, double *px, double *py, double *h)
+{
+    *px = 0;
+    *py = s->p.platform_speed_mps * t;
+    *h = 0;
+}
+
+/* The point at range r and relative bearing b from the platform at time t. */
+static void sonar_point(const struct mtt_scenario *s, double t, double r, double b, double *x, double *y)
+{
+    double px, py, h;
+    sonar_platform(s, t, &px, &py, &h);
+    *x = px + r * sin(h + b);
+    *y = py + r * cos(h + b);
+}
+
+/* Range and relative bearing (-pi, pi] of (x, y) from the platform at time t. */
+static void sonar_rb(const struct mtt_scenario *s, double t, double x, double y, double *r, double *b)
+{
+    double px, py, h;
+    sonar_platform(s, t, &px, &py, &h);
+    *r = hypot(x - px, y - py);
+    *b = wrap_pi(atan2(x - px, y - py) - h);
+}
+
+/* Inside the sector less its margins (a target is present there). */
+static int sonar_inside(const struct mtt_scenario *s, double t, double x, double y)
+{
+    double r, b;
+    sonar_rb(s, t, x, y, &r, &b);
+    return r >= s->p.range_min_m + s->p.margin_m && r <= s->p.range_max_m - s->p.margin_m &&
+           fabs(b) <= (s->p.half_width_deg - SONAR_MARGIN_DEG) * DEG;
+}
+
+/* Inside the sector itself (the sensor's coverage). */
+static int sonar_covered(const struct mtt_scenario *s, double r, double b)
+{
+    return r >= s->p.range_min_m && r <= s->p.range_max_m && fabs(b) <= s->p.half_width_deg * DEG;
+}
+
+/* The P_D law (mtt_scenario.h): a Swerling I target at threshold P_FA
+ * SONAR_PFA, P_D = pfa^(1 / (1 + SRR)), its echo-to-reverberation ratio
+ * falling as 10 log10 r (boundary-reverberation-limited: Urick, Principles
+ * of Underwater Sound, 3rd ed., ch. 9). */
+static double sonar_pd_law(const struct mtt_scenario *s, double r_m)
+{
+    const double srr = pow(10.0, (SONAR_SRR0_DB - 10 * log10(r_m / s->p.range_min_m)) / 10);
+    return pow(SONAR_PFA, 1 / (1 + srr));
+}
+
+/* g straight from (x, y) at time t at compass heading c (clockwise from
+ * north) and speed v. */
+static void sonar_set(struct mtt_target *g, double x, double y, double t, double c, double v)
+{
+    g->ax_m = x;
+    g->ay_m = y;
+    g->at_s = t;
+    g->heading_rad = 90 * DEG - c; /* from +x, counter-clockwise */
+    g->speed_mps = g->speed_drawn_mps = v;
+    g->turn_rad = g->turn_rate_rps = 0;
+}
+
+/* First the draws whose life is long enough, then the longer. */
+static int sonar_better(int ok, long len, int best_ok, long best_len)
+{
+    return ok > best_ok || (ok == best_ok && len > best_len);
+}
+
+static long life_of(const struct mtt_target *g) { return g->death_scan - g->birth_scan; }
+
+/* 1 when g is present over scans [a, b] (clamped to the run). */
+static int present_over(const struct mtt_scenario *s, const struct mtt_target *g, long a, long b)
+{
+    a = clamp_l(a, 0, s->p.n_scans - 1);
+    b = clamp_l(b, 0, s->p.n_scans - 1);
+    return g->birth_scan <= a && g->death_scan > b;
+}
+
+/* The sensor (kind polar, sigmas, coverage, the P_D profile) and the
+ * sector's area and mean P_D. */
+static void sonar_sensor(struct mtt_scenario *s)
+{
+    const struct mtt_scen_params *p = &s->p;
+    struct trk_sensor_params *sp = &s->sonar;
+    memset(sp, 0, sizeof *sp);
+    sp->kind = TRK_SENSOR_POLAR;
+    sp->sigma_range_m = (trk_real)p->sigma_range_m;
+    sp->sigma_bearing_rad = (trk_real)(p->sigma_bearing_deg * DEG);
+    sp->conversion = TRK_POLAR_FIRST_ORDER;
+    sp->coverage.min_range_m = (trk_real)p->range_min_m;
+    sp->coverage.max_range_m = (trk_real)p->range_max_m;
+    sp->coverage.half_width_rad = (trk_real)(p->half_width_deg * DEG);
+    sp->pd_profile.n = MTT_SONAR_PD_POINTS;
+    for (int k = 0; k < MTT_SONAR_PD_POINTS; k++) { /* log-spaced: the law is in log r */
+        const double r = p->range_min_m * pow(p->range_max_m / p->range_min_m, k / (MTT_SONAR_PD_POINTS - 1.0));
+        sp->pd_profile.range_m[k] = (trk_real)r;
+        sp->pd_profile.pd[k] = (trk_real)sonar_pd_law(s, r);
+    }
+    s->area_m2 = p->half_width_deg * DEG * (p->range_max_m * p->range_max_m - p->range_min_m * p->range_min_m);
+    /* P_D over the sector's area (weight r dr), from the profile as the
+     * tracker reads it (trk_sensor_pd_at straight ahead) */
+    const struct trk_pose o = {0, 0, 0};
+    const int n = 4000;
+    double num = 0, den = 0;
+    for (int i = 0; i < n; i++) {
+        const double r = p->range_min_m + (p->range_max_m - p->range_min_m) * (i + 0.5) / n;
+        num += r * (double)trk_sensor_pd_at(sp, &o, 0, (trk_real)r);
+        den += r;
+    }
+    s->sonar_pd_mean = num / den;
+    sp->pd = (trk_real)s->sonar_pd_mean;
+    /* meas_cov_m2 is unused by a polar sensor: the conversion's covariance
+     * straight ahead at mid-range as a stand-in (SPD) */
+    trk_polar_cov(sp, 0, (trk_real)(0.5 * (p->range_min_m + p->range_max_m)), sp->meas_cov_m2);
+}
+
+/* The eight targets, the patches and the scatterers (stream 0;
+ * mtt_scenario.h "The sonar family"). */
+static void sonar_place(struct mtt_scenario *s, struct rng *r, struct mtt_target dg[MTT_N_SLOTS])
+{
+    const struct mtt_scen_params *p = &s->p;
+    const long ns = p->n_scans;
+    const double T = p->scan_period_s, t_end = (double)(ns - 1) * T, t_mid = 0.5 * t_end;
+    const double vmin = p->speed_min_mps, vmax = p->speed_max_mps;
+    memset(dg, 0, MTT_N_SLOTS * sizeof *dg);
+    for (int i = 0; i < MTT_N_SLOTS; i++) {
+        dg[i].role = i;
+        dg[i].slot = i;
+    }
+    {
+        /* the shallow crossing: both present 10 scans either side */
+        struct mtt_target a, b;
+        int best_ok = -1;
+        long best_len = -1;
+        double bx = 0, by = 0, btc = 0;
+        for (int it = 0; it < SONAR_TRIES; it++) {
+            const double tc = (0.5 + unif(r, -0.05, 0.05)) * t_end;
+            const double rc = unif(r, 2500, 4500), bc = unif(r, -30 * DEG, 30 * DEG);
+            const double ca = unif(r, -60 * DEG, 60 * DEG);
+            const double cb = ca + (rng_uniform(r) < 0.5 ? -1 : 1) * unif(r, 20 * DEG, 35 * DEG);
+            const double va = unif(r, vmin, vmax), vb = unif(r, vmin, vmax);
+            double x, y;
+            sonar_point(s, tc, rc, bc, &x, &y);
+            a = dg[MTT_CROSS_A];
+            b = dg[MTT_CROSS_B];
+            sonar_set(&a, x, y, tc, ca, va);
+            sonar_set(&b, x, y, tc, cb, vb);
+            set_life(s, &a, 0, ns);
+            set_life(s, &b, 0, ns);
+            const long kc = lround(tc / T);
+            const int ok = present_over(s, &a, kc - 10, kc + 10) && present_over(s, &b, kc - 10, kc + 10);
+            const long len = overlap(&a, &b);
+            if (sonar_better(ok, len, best_ok, best_len)) {
+                dg[MTT_CROSS_A] = a;
+                dg[MTT_CROSS_B] = b;
+                best_ok = ok;
+                best_len = len;
+                bx = x;
+                by = y;
+                btc = tc;
+            }
+            if (ok) break;
+        }
+        s->cross_x_m = bx;
+        s->cross_y_m = by;
+        s->cross_scan = lround(btc / T);
+    }
+    {
+        /* the close pair on one bearing, B parallel_sep_m farther out */
+        const long need = ns / 2 < 40 ? ns / 2 : 40;
+        int best_ok = -1;
+        long best_len = -1;
+        for (int it = 0; it < SONAR_TRIES; it++) {
+            const double ra = unif(r, 2000, 4500), bp = unif(r, -40 * DEG, 40 * DEG);
+            const double cp = unif(r, -60 * DEG, 60 * DEG), v = unif(r, vmin, vmax);
+            struct mtt_target a = dg[MTT_PAR_A], b = dg[MTT_PAR_B];
+            double x, y;
+            sonar_point(s, t_mid, ra, bp, &x, &y);
+            sonar_set(&a, x, y, t_mid, cp, v);
+            sonar_point(s, t_mid, ra + p->parallel_sep_m, bp, &x, &y);
+            sonar_set(&b, x, y, t_mid, cp, v);
+            set_life(s, &a, 0, ns);
+            set_life(s, &b, 0, ns);
+            const long len = overlap(&a, &b);
+            const int ok = len >= need;
+            if (sonar_better(ok, len, best_ok, best_len)) {
+                dg[MTT_PAR_A] = a;
+                dg[MTT_PAR_B] = b;
+                best_ok = ok;
+                best_len = len;
+            }
+            if (ok) break;
+        }
+        s->par_scans = overlap(&dg[MTT_PAR_A], &dg[MTT_PAR_B]);
+    }
+    for (int w = 0; w < 2; w++) {
+        /* BIRTH born at its scan, DEATH gone from its scan: 25 scans present */
+        const int role = w ? MTT_DEATH : MTT_BIRTH;
+        const long kx = w ? clamp_l(lround((0.7 + unif(r, -0.015, 0.015)) * (double)ns), 2, ns - 1)
+                          : clamp_l(lround((0.2 + unif(r, -0.015, 0.015)) * (double)ns), 1, ns - 2);
+        const long room = w ? kx : ns - kx, need = room < 25 ? room : 25;
+        int best_ok = -1;
+        long best_len = -1;
+        for (int it = 0; it < SONAR_TRIES; it++) {
+            const double t = (double)(w ? kx - 1 : kx) * T;
+            const double rr = unif(r, 1500, 5000), bb = unif(r, -45 * DEG, 45 * DEG);
+            const double c = unif(r, 0, 360 * DEG), v = unif(r, vmin, vmax);
+            struct mtt_target g = dg[role];
+            double x, y;
+            sonar_point(s, t, rr, bb, &x, &y);
+            sonar_set(&g, x, y, t, c, v);
+            if (w) set_life(s, &g, 0, kx);
+            else set_life(s, &g, kx, ns);
+            const int ok = life_of(&g) >= need && (w ? g.death_scan == kx : g.birth_scan == kx);
+            if (sonar_better(ok, life_of(&g), best_ok, best_len)) {
+                dg[role] = g;
+                best_ok = ok;
+                best_len = life_of(&g);
+            }
+            if (ok) break;
+        }
+    }
+    {
+        /* the turn: present from 5 scans before it to 10 after */
+        int best_ok = -1;
+        long best_len = -1;
+        for (int it = 0; it < SONAR_TRIES; it++) {
+            const double tw = p->turn_rate_dps * DEG * unif(r, 0.8, 1.2), th = p->turn_deg * DEG, tau = th / tw;
+            double ts = 0.5 * t_end - 0.5 * tau + unif(r, -0.05, 0.05) * t_end;
+            if (ts > t_end - tau - T) ts = t_end - tau - T;
+            if (ts < T) ts = T;
+            const double rr = unif(r, 2000, 4000), bb = unif(r, -40 * DEG, 40 * DEG);
+            const double c = unif(r, -60 * DEG, 60 * DEG), v = unif(r, vmin, vmax);
+            const double sg = rng_uniform(r) < 0.5 ? -1 : 1;
+            struct mtt_target g = dg[MTT_TURN];
+            double x, y;
+            sonar_point(s, ts, rr, bb, &x, &y);
+            sonar_set(&g, x, y, ts, c, v);
+            g.turn_rad = sg * th;
+            g.turn_rate_rps = tw;
+            set_life(s, &g, 0, ns);
+            const long k0 = (long)ceil(ts / T - 1e-9), k1 = (long)floor((ts + tau) / T + 1e-9);
+            const int ok = present_over(s, &g, k0 - 5, k1 + 10);
+            if (sonar_better(ok, life_of(&g), best_ok, best_len)) {
+                dg[MTT_TURN] = g;
+                best_ok = ok;
+                best_len = life_of(&g);
+                s->turn_first_scan = k0;
+                s->turn_last_scan = k1 > ns - 1 ? ns - 1 : k1;
+            }
+            if (ok) break;
+        }
+    }
+    {
+        /* the far target: across the line of sight with the platform's
+         * range rate (v . u = v_platform . u), its range near 7 km */
+        const long need = ns < 40 ? ns : 40;
+        int best_ok = -1;
+        long best_len = -1;
+        for (int it = 0; it < SONAR_TRIES; it++) {
+            const double rr = unif(r, 6500, 7500), bb = unif(r, -25 * DEG, 25 * DEG);
+            const double v = unif(r, vmin, 0.5 * (vmin + vmax)), side = rng_uniform(r) < 0.5 ? -1 : 1;
+            double px, py, h, x, y;
+            sonar_platform(s, t_mid, &px, &py, &h);
+            sonar_point(s, t_mid, rr, bb, &x, &y);
+            const double ux = sin(h + bb), uy = cos(h + bb);             /* the line of sight */
+            const double vr = p->platform_speed_mps * (sin(h) * ux + cos(h) * uy); /* its range rate */
+            const double vt = side * sqrt(fmax(0, v * v - vr * vr));
+            const double vx = vr * ux + vt * uy, vy = vr * uy - vt * ux; /* (uy, -ux): across */
+            struct mtt_target g = dg[MTT_STRAIGHT];
+            sonar_set(&g, x, y, t_mid, atan2(vx, vy), hypot(vx, vy));
+            set_life(s, &g, 0, ns);
+            const int ok = life_of(&g) >= need;
+            if (sonar_better(ok, life_of(&g), best_ok, best_len)) {
+                dg[MTT_STRAIGHT] = g;
+                best_ok = ok;
+                best_len = life_of(&g);
+            }
+            if (ok) break;
+        }
+    }
+    s->accel_first_scan = 0;
+    s->accel_last_scan = -1;
+    /* the patches: 3 % of the sector's area in four discs, the first on
+     * the crossing, the second on the turn's start, the last two clear of
+     * the others */
+    const double rp = sqrt(SONAR_PATCH_FRAC * s->area_m2 / (MTT_SONAR_PATCHES * 180 * DEG));
+    for (int j = 0; j < MTT_SONAR_PATCHES; j++) {
+        struct mtt_disc *d = &s->patch[j];
+        d->r_m = rp;
+        for (int it = 0; it < SONAR_TRIES; it++) {
+            if (j == 0) {
+                d->x_m = s->cross_x_m + unif(r, -200, 200);
+                d->y_m = s->cross_y_m + unif(r, -200, 200);
+            } else if (j == 1) {
+                d->x_m = dg[MTT_TURN].ax_m + unif(r, -200, 200);
+                d->y_m = dg[MTT_TURN].ay_m + unif(r, -200, 200);
+            } else {
+                sonar_point(s, t_mid, unif(r, 1500, 6000), unif(r, -45 * DEG, 45 * DEG), &d->x_m, &d->y_m);
+            }
+            int clear = 1;
+            for (int q = 0; q < j; q++)
+                clear &= hypot(d->x_m - s->patch[q].x_m, d->y_m - s->patch[q].y_m) >= rp + s->patch[q].r_m;
+            if (clear) break;
+        }
+    }
+    /* the persistent scatterers */
+    for (int j = 0; j < MTT_SONAR_PERSIST; j++) {
+        double x, y;
+        if (j < 4) { /* one in each patch */
+            const struct mtt_disc *d = &s->patch[j % MTT_SONAR_PATCHES];
+            const double rho = d->r_m * sqrt(rng_uniform(r)), phi = unif(r, 0, 360 * DEG);
+            x = d->x_m + rho * cos(phi);
+            y = d->y_m + rho * sin(phi);
+        } else if (j < 8) { /* 250-550 m to the side of a target's path */
+            static const int roles[4] = {MTT_CROSS_A, MTT_PAR_A, MTT_TURN, MTT_BIRTH};
+            const struct mtt_target *g = &dg[roles[j - 4]];
+            const long n = life_of(g) > 0 ? life_of(g) : 1;
+            long k = g->birth_scan + (long)(rng_uniform(r) * (double)n);
+            if (k >= ns) k = ns - 1;
+            double tr[4];
+            truth_of(g, (double)k * T, tr);
+            const double sp = hypot(tr[TRK_CV2_VX], tr[TRK_CV2_VY]), d = unif(r, 250, 550);
+            const double side = rng_uniform(r) < 0.5 ? -1 : 1;
+            const double nx = sp > 0 ? -tr[TRK_CV2_VY] / sp : 1, ny = sp > 0 ? tr[TRK_CV2_VX] / sp : 0;
+            x = tr[TRK_CV2_X] + side * d * nx;
+            y = tr[TRK_CV2_Y] + side * d * ny;
+        } else { /* beyond 7 km at a quarter of the run */
+            sonar_point(s, 0.25 * t_end, unif(r, 7000, 7800), unif(r, -50 * DEG, 50 * DEG), &x, &y);
+        }
+        s->persist_x_m[j] = x;
+        s->persist_y_m[j] = y;
+    }
+}
+
+void mtt_scen_pose(const struct mtt_scenario *s, long k, struct trk_pose *pose)
+{
+    memset(pose, 0, sizeof *pose);
+    if (s->p.family != MTT_FAMILY_SONAR) return;
+    double px, py, h;
+    sonar_platform(s, (double)k * s->p.scan_period_s, &px, &py, &h);
+    pose->x_m = (trk_real)px;
+    pose->y_m = (trk_real)py;
+    pose->heading_rad = (trk_real)h;
+}
+
+int mtt_scen_in_patch(const struct mtt_scenario *s, double x_m, double y_m)
+{
+    if (s->p.family != MTT_FAMILY_SONAR) return 0;
+    for (int j = 0; j < MTT_SONAR_PATCHES; j++)
+        if (hypot(x_m - s->patch[j].x_m, y_m - s->patch[j].y_m) <= s->patch[j].r_m) return 1;
+    return 0;
+}
+
+double mtt_scen_persist_dist(const struct mtt_scenario *s, double x_m, double y_m)
+{
+    double d = INFINITY;
+    if (s->p.family != MTT_FAMILY_SONAR || !s->p.persistent) return d;
+    for (int j = 0; j < MTT_SONAR_PERSIST; j++) d = fmin(d, hypot(x_m - s->persist_x_m[j], y_m - s->persist_y_m[j]));
+    return d;
+}
+
+/* One polar detection (range rr, relative bearing bb from pose) into
+ * det[n] (trk_polar_to_cartesian) and polar[n] (may be NULL). 1 when
+ * stored. */
+static int sonar_put(const struct mtt_scenario *s, const struct trk_pose *pose, double rr, double bb,
+                     struct trk_detection *det, struct trk_polar_detection *polar, size_t n)
+{
+    struct trk_polar_detection pd;
+    memset(&pd, 0, sizeof pd);
+    pd.range_m = (trk_real)(rr > 1 ? rr : 1);
+    pd.bearing_rad = (trk_real)wrap_pi(bb);
+    memset(&det[n], 0, sizeof det[n]);
+    if (trk_polar_to_cartesian(&s->sonar, pose, &pd, &det[n]) != TRK_OK) return 0;
+    if (polar) polar[n] = pd;
+    return 1;
+}
+
+/* The sonar family's scan k (mtt_scenario.h "The sonar family"). */
+static void sonar_scan(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
+                       struct trk_polar_detection *polar, size_t max, long *origin, struct trk_scan *scan,
+                       struct mtt_scan_info *info)
+{
+    const struct mtt_scen_params *p = &s->p;
+    const size_t cap = p->max_det < max ? p->max_det : max;
+    const double t = (double)k * p->scan_period_s, sr = p->sigma_range_m, sb = p->sigma_bearing_deg * DEG;
+    const double rmin = p->range_min_m, rmax = p->range_max_m, hw = p->half_width_deg * DEG;
+    struct trk_pose pose;
+    mtt_scen_pose(s, k, &pose);
+    size_t nd = 0, nt = 0, np = 0, nc = 0, capped = 0;
+    struct rng r;
+    /* targets: four draws per slot (detected?, two noises, one unused), always */
+    rng_init(&r, p->seed, 4 * (uint64_t)k + 1);
+    for (int j = 0; j < MTT_N_SLOTS; j++) {
+        const double u = rng_uniform(&r), e1 = rng_normal(&r), e2 = rng_normal(&r);
+        (void)rng_uniform(&r);
+        const long i = mtt_scen_slot_target(s, j, k);
+        if (i < 0 || nd == cap) continue;
+        double x[4], rr, bb;
+        truth_of(&s->tg[i], t, x);
+        /* the library's P_D at the target's position: the profile, 0 outside the sector */
+        const double pd = (double)trk_sensor_pd_at(&s->sonar, &pose, (trk_real)x[TRK_CV2_X], (trk_real)x[TRK_CV2_Y]);
+        if (!(u < pd)) continue;
+        sonar_rb(s, t, x[TRK_CV2_X], x[TRK_CV2_Y], &rr, &bb);
+        if (!sonar_put(s, &pose, rr + sr * e1, bb + sb * e2, det, polar, nd)) continue;
+        if (origin) origin[nd] = i;
+        nd++;
+        nt++;
+    }
+    /* persistent returns: three draws per scatterer, whether on or not */
+    rng_init(&r, p->seed, 4 * (uint64_t)k + 4);
+    for (int j = 0; j < MTT_SONAR_PERSIST; j++) {
+        const double u = rng_uniform(&r), e1 = rng_normal(&r), e2 = rng_normal(&r);
+        double rr, bb;
+        sonar_rb(s, t, s->persist_x_m[j], s->persist_y_m[j], &rr, &bb);
+        if (!p->persistent || !sonar_covered(s, rr, bb) || !(u < SONAR_PERSIST_PD) || nd == cap) continue;
+        if (!sonar_put(s, &pose, rr + sr * e1, bb + sb * e2, det, polar, nd)) continue;
+        if (origin) origin[nd] = -2;
+        nd++;
+        np++;
+    }
+    /* clutter: six draws per point, whatever its kind */
+    rng_init(&r, p->seed, 4 * (uint64_t)k + 2);
+    for (long c = 0; c < clutter_count; c++) {
+        if (nd == cap) {
+            capped = (size_t)(clutter_count - c);
+            break;
+        }
+        const double uk = rng_uniform(&r), us = rng_uniform(&r), u1 = rng_uniform(&r), u2 = rng_uniform(&r);
+        const double u3 = rng_uniform(&r), u4 = rng_uniform(&r);
+        double rr = -1, bb = 0;
+        if (uk < SONAR_PATCH_SHARE) { /* in a patch, uniform over its disc */
+            int j = (int)(us * MTT_SONAR_PATCHES);
+            if (j >= MTT_SONAR_PATCHES) j = MTT_SONAR_PATCHES - 1;
+            const struct mtt_disc *d = &s->patch[j];
+            const double rho = d->r_m * sqrt(u1), phi = 2 * 180 * DEG * u2;
+            sonar_rb(s, t, d->x_m + rho * cos(phi), d->y_m + rho * sin(phi), &rr, &bb);
+        } else if (uk < SONAR_PATCH_SHARE + SONAR_NEAR_SHARE) { /* the near-field rise */
+            rr = rmin - SONAR_NEAR_SCALE_M * log(u1);
+            bb = -hw + 2 * hw * u2;
+        }
+        if (!sonar_covered(s, rr, bb) || uk >= SONAR_PATCH_SHARE + SONAR_NEAR_SHARE) {
+            /* uniform in range x bearing (also in place of a point outside) */
+            rr = rmin + (rmax - rmin) * u3;
+            bb = -hw + 2 * hw * u4;
+        }
+        if (!sonar_put(s, &pose, rr, bb, det, polar, nd)) continue;
+        if (origin) origin[nd] = -1;
+        nd++;
+        nc++;
+    }
+    /* Fisher-Yates shuffle, as the other families */
+    rng_init(&r, p->seed, 4 * (uint64_t)k + 3);
+    for (size_t i = nd; i > 1; i--) {
+        size_t j = (size_t)(rng_uniform(&r) * (double)i);
+        if (j >= i) j = i - 1;
+        const struct trk_detection tmp = det[i - 1];
+        det[i - 1] = det[j];
+        det[j] = tmp;
+        if (polar) {
+            const struct trk_polar_detection tp = polar[i - 1];
+            polar[i - 1] = polar[j];
+            polar[j] = tp;
+        }
+        if (origin) {
+            const long o = origin[i - 1];
+            origin[i - 1] = origin[j];
+            origin[j] = o;
+        }
+    }
+    memset(scan, 0, sizeof *scan);
+    scan->time_us = (int64_t)llround(t * 1e6);
+    scan->sensor_id = 0;
+    scan->n_detections = nd;
+    scan->detections = det;
+    if (info) {
+        info->n_target = nt;
+        info->n_clutter = nc;
+        info->n_persist = np;
+        info->n_clutter_capped = capped;
+    }
+}
+
+int mtt_scen_scan_polar(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
+                        struct trk_polar_detection *polar, size_t max, long *origin, struct trk_scan *scan,
+                        struct mtt_scan_info *info)
+{
+    if (s->p.family != MTT_FAMILY_SONAR) return -1;
+    sonar_scan(s, k, clutter_count, det, polar, max, origin, scan, info);
+    return 0;
+}
+
 /* ---------------------------------------------------------------- init */
 
 int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char *err, size_t n)
@@ -617,9 +1153,22 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
         snprintf(err, n, "the straight target's acceleration must be in [0, 10] m/s^2, its duration in (0, 1e6] s");
         return -1;
     }
-    if (p->family != MTT_FAMILY_TRANSIT && p->family != MTT_FAMILY_FIXED) {
-        snprintf(err, n, "family %d is neither transit (%d) nor fixed (%d)", p->family, MTT_FAMILY_TRANSIT,
-                 MTT_FAMILY_FIXED);
+    if (p->family != MTT_FAMILY_TRANSIT && p->family != MTT_FAMILY_FIXED && p->family != MTT_FAMILY_SONAR) {
+        snprintf(err, n, "family %d is none of transit (%d), fixed (%d), sonar (%d)", p->family, MTT_FAMILY_TRANSIT,
+                 MTT_FAMILY_FIXED, MTT_FAMILY_SONAR);
+        return -1;
+    }
+    if (p->family == MTT_FAMILY_SONAR &&
+        (!(p->platform_speed_mps >= 0 && p->platform_speed_mps <= 20) || !(p->range_min_m > 0) ||
+         !(p->range_max_m > p->range_min_m + 4 * p->margin_m) || !(p->range_max_m <= 1e5) ||
+         !(p->half_width_deg > 2 * SONAR_MARGIN_DEG && p->half_width_deg <= 90) || !(p->sigma_range_m > 0) ||
+         !isfinite(p->sigma_range_m) || !(p->sigma_bearing_deg > 0 && p->sigma_bearing_deg <= 10))) {
+        snprintf(err, n, "sonar: platform speed in [0, 20] m/s, ranges 0 < min < max <= 1e5 m (4 margins apart), "
+                         "half width in (2, 90] deg, sigma range > 0, sigma bearing in (0, 10] deg");
+        return -1;
+    }
+    if (p->family == MTT_FAMILY_SONAR && (p->amplitude || p->accel_mps2 != 0)) {
+        snprintf(err, n, "sonar: no amplitudes (its P_D profile goes without an amplitude model) and no acceleration");
         return -1;
     }
     if (p->family == MTT_FAMILY_TRANSIT &&
@@ -644,10 +1193,16 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
     struct structure st;
     struct rng r;
     rng_init(&r, p->seed, 0);
-    draw_structure(s, &r, dg, &st);
-    if (p->family == MTT_FAMILY_FIXED) place_fixed(s, dg, &st);
-    else place_transit(s, dg, &st);
-    {
+    s->area_m2 = p->region_m * p->region_m;
+    if (p->family == MTT_FAMILY_SONAR) {
+        sonar_sensor(s);
+        sonar_place(s, &r, dg);
+    } else {
+        draw_structure(s, &r, dg, &st);
+        if (p->family == MTT_FAMILY_FIXED) place_fixed(s, dg, &st);
+        else place_transit(s, dg, &st);
+    }
+    if (p->family != MTT_FAMILY_SONAR) {
         const double T = p->scan_period_s;
         s->turn_first_scan = (long)ceil(st.ts / T - 1e-9);
         s->turn_last_scan = (long)floor((st.ts + st.tau) / T + 1e-9);
@@ -743,6 +1298,10 @@ static void put(struct trk_detection *d, double x, double y, int has_a, double a
 void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
                    size_t max, long *origin, struct trk_scan *scan, struct mtt_scan_info *info)
 {
+    if (s->p.family == MTT_FAMILY_SONAR) {
+        sonar_scan(s, k, clutter_count, det, NULL, max, origin, scan, info);
+        return;
+    }
     const size_t cap = s->p.max_det < max ? s->p.max_det : max;
     const double t = (double)k * s->p.scan_period_s, sg = s->p.meas_sigma_m;
     const int has_a = s->p.amplitude;
@@ -796,6 +1355,7 @@ void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, str
     if (info) {
         info->n_target = nt;
         info->n_clutter = nc;
+        info->n_persist = 0;
         info->n_clutter_capped = capped;
     }
 }

@@ -183,7 +183,103 @@
  * shuffle draws and the same detection draws per slot. A scan depends only
  * on (family, seed, k, clutter_count, amplitude) and the geometry
  * parameters: same seed, same scenario bit for bit, in any scan order and
- * from any thread (the scenario is read-only after mtt_scen_init). */
+ * from any thread (the scenario is read-only after mtt_scen_init).
+ *
+ * ---- The sonar family (MTT_FAMILY_SONAR; mtt_scen_sonar_defaults)
+ *
+ * What an active sonar on a moving platform produces: polar detections
+ * (range, bearing) from a pose that moves, a P_D that falls with range,
+ * clutter denser near the sonar and in reverberation patches, and
+ * stationary scatterers that return on most pings.
+ *   Platform   from (0, 0) due north (heading 0, clockwise from +y; x east)
+ *              at platform_speed_mps (3 m/s): pose at scan k (0, v k T),
+ *              heading 0 (mtt_scen_pose). A scan every T = 8 s (one ping),
+ *              150 scans (1200 s, 3.6 km of platform track).
+ *   Sector     ranges [range_min_m, range_max_m] (0.5-8 km) within
+ *              +-half_width_deg (60 deg) of the heading: 66.8 km^2. A
+ *              target is present while inside the sector less margin_m
+ *              (50 m) in range and 1 deg in bearing.
+ *   Sensor     s->sonar (struct trk_sensor_params, kind TRK_SENSOR_POLAR):
+ *              sigma_range_m 7.5 m, sigma_bearing 1.5 deg, first-order
+ *              conversion, coverage = the sector, pd_profile = 16 points
+ *              log-spaced over the sector's ranges of
+ *                P_D(r) = pfa^(1 / (1 + SRR(r))),   pfa = 0.01,
+ *                SRR(r) = 18 dB - 10 log10(r / 500 m)
+ *              (a Swerling I target at a fixed threshold, its echo-to-
+ *              reverberation ratio falling as 10 log10 r: boundary-
+ *              reverberation-limited, Urick, Principles of Underwater
+ *              Sound, 3rd ed., ch. 9): 0.93 at 0.5 km, 0.76 at 2 km, 0.53
+ *              at 5 km, 0.39 at 8 km. A target's detection probability at
+ *              a scan is trk_sensor_pd_at(s->sonar, pose, x, y) at its
+ *              true position: the library's formula. sonar_pd_mean: P_D
+ *              averaged over the sector's area (0.53; the `cart`
+ *              configuration's single P_D). No amplitudes (the library
+ *              takes a P_D profile without an amplitude model).
+ *   Targets    the eight slots, one target each, straight but the turn,
+ *              speeds uniform in [speed_min_mps, speed_max_mps] (3-10 m/s),
+ *              headings compass (clockwise from north). Positions are
+ *              drawn as (range, bearing) from the platform at an anchor
+ *              time; a target's life is the run of scans around its
+ *              anchor inside the sector (cut at BIRTH's birth and DEATH's
+ *              death); a draw whose life is too short is drawn again (up
+ *              to 64 times, the longest kept):
+ *     CROSS_A, CROSS_B  a shallow crossing: both at the crossing point
+ *                       (range 2.5-4.5 km, bearing +-30 deg) at mid-run
+ *                       +-5 %, A's heading -60..60 deg, B's A's +-(20..35)
+ *                       deg; both present 10 scans either side of it
+ *     PAR_A, PAR_B      one close pair along the bearing: at mid-run on one
+ *                       bearing (+-40 deg), A at range 2-4.5 km, B
+ *                       parallel_sep_m (100 m) farther out, one velocity
+ *                       (heading -60..60 deg); both present >= min(40, n/2)
+ *                       scans
+ *     BIRTH             born at scan 0.2 n +- 1.5 % n at range 1.5-5 km,
+ *                       bearing +-45 deg, any heading; present >= 25 scans
+ *     DEATH             dies at scan 0.7 n +- 1.5 % n, its last position
+ *                       drawn like BIRTH's; present >= 25 scans
+ *     TURN              a coordinated turn of turn_deg (90) at
+ *                       turn_rate_dps (3 deg/s) x [0.8, 1.2] starting at
+ *                       mid-run - half the turn +- 5 %, at range 2-4 km,
+ *                       bearing +-40 deg, heading before it -60..60 deg;
+ *                       present 5 scans before to 10 after the turn
+ *     STRAIGHT          the far target: at mid-run at range 6.5-7.5 km,
+ *                       bearing +-25 deg, moving across the line of sight
+ *                       with the platform's range rate (so its range stays
+ *                       near 7 km), speed in the lower half of the range
+ *                       (3-6.5 m/s); present >= 40 scans
+ *   Patches    four reverberation discs fixed on the ground, 3 % of the
+ *              sector's area together (radius 399 m each at the defaults),
+ *              centred at mid-run at 1.5-6 km, +-45 deg (the first on the
+ *              crossing point +-200 m, the second on the turn's start
+ *              +-200 m); each is drawn again (up to 64 times) until clear of
+ *              those before it. mtt_scen_in_patch.
+ *   Clutter    exactly clutter_count points per scan: each is a patch
+ *              point with probability 0.30 (uniform in a patch drawn
+ *              uniformly: 10 x the sector's average density), a near-field
+ *              point with 0.15 (range 500 m + Exp(400 m), bearing uniform),
+ *              else uniform in range x bearing over the sector (so denser
+ *              near the sonar per m^2); a patch or near-field point outside
+ *              the sector is replaced by a uniform one.
+ *   Persistent with persistent = 1 (the default), twelve fixed scatterers
+ *              (mtt_scen_persist) return on 85 % of the pings that cover
+ *              them, with the sensor's noise: one in each patch, four 250-550
+ *              m to the side of a target's path (CROSS_A, PAR_A, TURN,
+ *              BIRTH, at a scan of its life), four at 7-7.8 km, +-50 deg, at
+ *              a quarter of the run. Their detections' origin is -2.
+ *   Detections The targets' (P_D as above), the persistent returns', the
+ *              clutter's: range r + N(0, sigma_r^2), bearing + N(0, sigma_b^2)
+ *              relative to the heading; det[] holds their positions and
+ *              covariances by trk_polar_to_cartesian (the library's
+ *              conversion), polar[] (mtt_scen_scan_polar) the range and
+ *              bearing. Capacity: targets first, then the persistent
+ *              returns, then the clutter.
+ *   Random numbers  stream 0 the geometry (the targets slot by slot, then
+ *              the patches, then the scatterers); scan k: 4k+1 the targets'
+ *              detections (four draws per slot, as the other families), 4k+2
+ *              the clutter (six draws per point, whatever its kind: the first
+ *              N points of a scan the same at every clutter count), 4k+3 the
+ *              shuffle, 4k+4 the persistent returns (three draws per
+ *              scatterer, whether on or not: with persistent = 0 the targets'
+ *              detections and the clutter are the same). */
 #ifndef TRK_SIM_MTT_SCENARIO_H
 #define TRK_SIM_MTT_SCENARIO_H
 
@@ -196,6 +292,7 @@
 enum mtt_family {
     MTT_FAMILY_TRANSIT = 0,     /* targets enter and leave, slots re-used (the default) */
     MTT_FAMILY_FIXED,           /* the eight structure targets alone */
+    MTT_FAMILY_SONAR,           /* a polar sensor on a moving platform (below) */
     MTT_N_FAMILIES
 };
 
@@ -232,6 +329,13 @@ struct mtt_scen_params {
     long gap_max_scans;         /* scans between a slot's targets: 1 .. this, >= 1 (transit only) */
     double accel_mps2;          /* STRAIGHT: along-track acceleration, [0, 10]; 0 = none (the default) */
     double accel_s;             /* ... for this long from its mid-life, (0, 1e6] (60) */
+    /* the sonar family (unused by the others) */
+    double platform_speed_mps;  /* [0, 20] (3) */
+    double range_min_m, range_max_m; /* the sector's ranges, 0 < min < max (500, 8000) */
+    double half_width_deg;      /* its half width about the heading, (0, 90] (60) */
+    double sigma_range_m;       /* > 0 (7.5) */
+    double sigma_bearing_deg;   /* (0, 10] (1.5) */
+    int persistent;             /* 1: the persistent scatterers return (the default), 0: none */
 };
 
 /* Defaults: the transit family, seed 1, 200 scans of 4 s, 3 km region, margin 50 m, pd 0.8,
@@ -239,6 +343,20 @@ struct mtt_scen_params {
  * 5-15 m/s, pair 60 m apart, a 90 deg turn at 3 deg/s, transit targets
  * present >= 25 scans, gaps of 1-10 scans, no acceleration (accel_s 60). */
 void mtt_scen_defaults(struct mtt_scen_params *p);
+/* The sonar family's defaults: mtt_scen_defaults, then family sonar, 150
+ * scans of 8 s, speeds 3-10 m/s, the pair 100 m apart, no amplitudes, the
+ * platform at 3 m/s, the sector 0.5-8 km +-60 deg, sigmas 7.5 m and 1.5 deg,
+ * the persistent scatterers on. */
+void mtt_scen_sonar_defaults(struct mtt_scen_params *p);
+
+#define MTT_SONAR_PATCHES 4     /* reverberation patches */
+#define MTT_SONAR_PERSIST 12    /* persistent scatterers */
+#define MTT_SONAR_PD_POINTS 16  /* points of the P_D profile (<= TRK_PD_PROFILE_MAX) */
+
+/* A disc on the ground (a reverberation patch). */
+struct mtt_disc {
+    double x_m, y_m, r_m;
+};
 
 struct mtt_target {
     int role;                   /* enum mtt_role: the slot's designated role, or MTT_TRANSIT */
@@ -273,6 +391,13 @@ struct mtt_scenario {
     long turn_first_scan, turn_last_scan; /* scans within the turn [start, end] (first > last: none) */
     long accel_first_scan, accel_last_scan; /* STRAIGHT's acceleration, the same (none: first > last) */
     long par_scans;             /* scans with both of the pair present */
+    /* the sonar family (zero for the others) */
+    struct trk_sensor_params sonar; /* the sensor: kind polar, sigmas, pd_profile, coverage
+                                       (pd = sonar_pd_mean; clutter density the caller's) */
+    double sonar_pd_mean;       /* P_D averaged over the sector's area */
+    double area_m2;             /* the region's area (the square's, or the sector's) */
+    struct mtt_disc patch[MTT_SONAR_PATCHES];
+    double persist_x_m[MTT_SONAR_PERSIST], persist_y_m[MTT_SONAR_PERSIST];
 };
 
 /* 0, or -1 with a message (nothing to free then). */
@@ -292,18 +417,37 @@ int mtt_scen_n_present(const struct mtt_scenario *s, long k);
 struct mtt_scan_info {
     size_t n_target;            /* target detections */
     size_t n_clutter;           /* clutter detections */
+    size_t n_persist;           /* sonar: persistent returns (origin -2) */
     size_t n_clutter_capped;    /* clutter left out by the capacity */
 };
 
 /* Scan k (0 <= k < n_scans) with clutter_count clutter detections (>= 0)
- * into det[0 .. max) and *scan (scan->detections = det): at most
- * min(max, p.max_det) detections. origin (may be NULL; max entries):
- * the target index of each detection, -1 for clutter. *info may be NULL. */
+ * into det[0 .. max) and *scan (scan->detections = det; no polar
+ * detections, no pose): at most min(max, p.max_det) detections. origin
+ * (may be NULL; max entries): the target index of each detection, -1 for
+ * clutter, -2 for a persistent return (sonar). *info may be NULL. */
 void mtt_scen_scan(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
                    size_t max, long *origin, struct trk_scan *scan, struct mtt_scan_info *info);
 
+/* The sonar family's scan k: det[], origin[] and *scan as mtt_scen_scan
+ * gives them (Cartesian, each detection with its covariance:
+ * trk_polar_to_cartesian), and polar[i] the range and bearing of det[i]
+ * (max entries). 0, or -1 for another family. */
+int mtt_scen_scan_polar(const struct mtt_scenario *s, long k, long clutter_count, struct trk_detection *det,
+                        struct trk_polar_detection *polar, size_t max, long *origin, struct trk_scan *scan,
+                        struct mtt_scan_info *info);
+
+/* The sensor's pose at scan k (sonar: the platform's; the others: the
+ * origin, heading 0). */
+void mtt_scen_pose(const struct mtt_scenario *s, long k, struct trk_pose *pose);
+/* Sonar: 1 when (x, y) is in a reverberation patch (0 for the others). */
+int mtt_scen_in_patch(const struct mtt_scenario *s, double x_m, double y_m);
+/* Sonar with persistent = 1: the distance from (x, y) to the nearest
+ * persistent scatterer (INFINITY without). */
+double mtt_scen_persist_dist(const struct mtt_scenario *s, double x_m, double y_m);
+
 const char *mtt_role_name(int role);
-/* "transit", "fixed" ("?" for another value); the family of a name, or -1. */
+/* "transit", "fixed", "sonar" ("?" for another value); the family of a name, or -1. */
 const char *mtt_family_name(int family);
 int mtt_family_parse(const char *name);
 

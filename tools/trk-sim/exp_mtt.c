@@ -31,8 +31,30 @@
  *        the sensor and the motion model allow: every table shows it. No
  *        bound where a target manoeuvres beyond q (the 3 deg/s turn at
  *        q 1e-3): the filter lags it past the cut-off and never restarts
+ *   cart the sonar family only: new the old way, each polar detection
+ *        converted by the caller (trk_detection_from_polar at its
+ *        absolute bearing), a Cartesian sensor with one P_D (the profile
+ *        averaged over the sector's area), no pose, no coverage
  * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
  * of the scenario with use_amplitude, q = 1e-3; then every --set).
+ *
+ * The sonar family (--family sonar, mtt_scenario.h): a polar sensor on a
+ * platform moving north at 3 m/s, its sector 0.5-8 km +-60 deg, a ping
+ * every 8 s, 150 scans, P_D over range, clutter in patches and the near
+ * field, persistent scatterers (--no-persistent), no amplitudes; GOSPA c
+ * 200 m. The trackers (new, pda, old) get each scan as a user of a polar
+ * sensor gives it: scan.polar, has_pose, pose (detections NULL), the
+ * sensor of kind TRK_SENSOR_POLAR with its sigmas, P_D profile and
+ * coverage (the scenario's s->sonar), clutter density N / the sector's
+ * area; the oracle the detections the scenario converted
+ * (trk_polar_to_cartesian, each with its covariance). A library that
+ * refuses a polar scan (TRK_E_ARG on a probe scan: before the tracker
+ * reads polar scans) gets the converted detections beside scan.polar,
+ * said on stdout. Its own measures (columns of sonar rows only):
+ * coverage in the patches and beyond SONAR_FAR_M, the P_D seen, the
+ * persistent returns per scan, and the false confirmed tracks split by
+ * where they were (mostly in a patch or not; mostly within c of a
+ * persistent scatterer).
  *
  * The manoeuvres: the turning target (--turn-rate,
  * --turn-deg) and, with --accel, the straight target accelerating along
@@ -135,10 +157,14 @@ enum {
 #define X(f) M_REP_##f,
     MTT_REPORT_COUNTERS(X)
 #undef X
+    /* the sonar family's (columns of its rows only) */
+    M_COV_PATCH, M_COV_FAR, M_TGT_PD, M_PERSIST, M_FALSE_PATCH, M_FALSE_OUT, M_FALSE_PERSIST,
     M_N
 };
 #define M_REP_FIRST M_REP_n_detections
-#define N_REP (M_N - M_REP_FIRST)
+#define M_SONAR_FIRST M_COV_PATCH
+#define N_REP (M_SONAR_FIRST - M_REP_FIRST)
+#define SONAR_FAR_M 5000 /* "far": the coverage beyond this range from the sonar */
 
 static const char *const metric_name[M_N] = {
     "gospa_m", "gospa_loc_m2", "gospa_missed_m2", "gospa_false_m2", "scans_to_confirm", "never_confirmed",
@@ -154,6 +180,8 @@ static const char *const metric_name[M_N] = {
 #define X(f) "rep_" #f,
     MTT_REPORT_COUNTERS(X)
 #undef X
+    "patch_coverage", "far_coverage", "target_pd", "persistent_per_scan", "false_tracks_patch_per_1000_scans",
+    "false_tracks_outside_per_1000_scans", "false_tracks_persistent_per_1000_scans",
 };
 
 static int metric_index(const char *name)
@@ -182,8 +210,8 @@ struct mtt_row {
 
 /* ---------------------------------------------------------------- configurations */
 
-enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, CFG_ORACLE, N_CFG_KINDS };
-static const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm", "oracle"};
+enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, CFG_ORACLE, CFG_CART, N_CFG_KINDS };
+static const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm", "oracle", "cart"};
 
 struct mtt_settings {
     const char *kv[MAX_SETTINGS];
@@ -212,16 +240,30 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
 {
     struct trk_tracker_params p;
     if (kind == CFG_OLD) mtt_old_defaults(&p);
-    else trk_tracker_default_params(&p); /* new, pda, imm; oracle: its sensor R and q */
+    else trk_tracker_default_params(&p); /* new, pda, imm, cart; oracle: its sensor R and q */
     if (kind == CFG_PDA) p.association = TRK_ASSOC_PDA;
 #if !TRK_WITH_IMM
     (void)im;
 #endif
     const double sg = sc->p.meas_sigma_m;
     p.n_sensors = 1;
-    p.sensor[0].pd = (trk_real)sc->p.pd;
-    p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = (trk_real)(sg * sg);
-    p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
+    if (sc->p.family == MTT_FAMILY_SONAR) {
+        /* the polar sensor as the scenario describes it (kind, sigmas,
+         * coverage, P_D profile); cart: the old way, Cartesian detections
+         * converted by the caller, one P_D averaged over the sector, no
+         * pose, no coverage */
+        p.sensor[0] = sc->sonar;
+        if (kind == CFG_CART) {
+            p.sensor[0].kind = TRK_SENSOR_CARTESIAN;
+            memset(&p.sensor[0].pd_profile, 0, sizeof p.sensor[0].pd_profile);
+            memset(&p.sensor[0].coverage, 0, sizeof p.sensor[0].coverage);
+            p.sensor[0].pd = (trk_real)sc->sonar_pd_mean;
+        }
+    } else {
+        p.sensor[0].pd = (trk_real)sc->p.pd;
+        p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = (trk_real)(sg * sg);
+        p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
+    }
     p.sensor[0].clutter_density_per_m2 = (trk_real)lambda;
     p.sensor[0].use_amplitude = sc->p.amplitude;
     if (sc->p.amplitude &&
@@ -275,7 +317,7 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
         }
         /* the clutter floor below, before the check: at clutter 0 joint
          * association refused every --set (a density of 0) */
-        const double floor_m2 = 1 / (sc->p.region_m * sc->p.region_m);
+        const double floor_m2 = 1 / sc->area_m2;
         for (unsigned s = 0; s < TRK_MAX_SENSORS; s++)
             if (c->params.association == TRK_ASSOC_JOINT && c->params.sensor[s].clutter_density_per_m2 < floor_m2 &&
                 lambda < floor_m2)
@@ -294,7 +336,7 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
     }
     /* joint association weighs events by 1 / lambda: without clutter it
      * assumes one clutter detection per scan in the region */
-    const double lambda_floor = 1 / (sc->p.region_m * sc->p.region_m);
+    const double lambda_floor = 1 / sc->area_m2;
     if (p.association == TRK_ASSOC_JOINT && lambda < lambda_floor)
         p.sensor[0].clutter_density_per_m2 = (trk_real)lambda_floor;
     const char *field = NULL;
@@ -323,9 +365,41 @@ static const int over_values[] = {OVER_THIN, OVER_REFUSE, OVER_CAP};
 struct run_ws {
     struct trk_tracker *tk;
     struct trk_detection det[TRK_MAX_SCAN_DETECTIONS];
+    struct trk_polar_detection polar[TRK_MAX_SCAN_DETECTIONS]; /* the sonar family's */
     long origin[TRK_MAX_SCAN_DETECTIONS];
     struct mtt_obj est[TRK_MAX_TRACKS];
 };
+
+/* The sonar family's false tracks by where they were: per track id its
+ * scored scans, and of them the false ones (farther than c from every
+ * target), in a patch, within c of a persistent scatterer. A false track
+ * (every scored scan false, as mtt_eval counts it) is a patch track when
+ * most of its scans were in a patch, a persistent one when most were near
+ * a scatterer. */
+struct sonar_track {
+    long id, scans, false_scans, patch, persist;
+};
+struct sonar_false {
+    struct sonar_track *v;
+    size_t n, cap;
+};
+
+static struct sonar_track *sonar_track_of(struct sonar_false *f, long id)
+{
+    for (size_t i = f->n; i-- > 0;) /* recent ids are at the end */
+        if (f->v[i].id == id) return &f->v[i];
+    if (f->n == f->cap) {
+        const size_t cap = f->cap ? 2 * f->cap : 64;
+        struct sonar_track *v = realloc(f->v, cap * sizeof *v);
+        if (!v) return NULL;
+        f->v = v;
+        f->cap = cap;
+    }
+    struct sonar_track *t = &f->v[f->n++];
+    memset(t, 0, sizeof *t);
+    t->id = id;
+    return t;
+}
 
 static double thread_cpu_s(void)
 {
@@ -439,11 +513,45 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
     return 0;
 }
 
+/* The sonar family's scan k for configuration (oracle, cart) into *scan
+ * (mtt_scenario.h): the oracle gets the detections converted by the
+ * scenario (trk_polar_to_cartesian, each with its covariance); cart the
+ * old way, each converted by the caller with trk_detection_from_polar at
+ * its absolute bearing, no pose; the others the polar scan as a user
+ * gives it: scan.polar, has_pose, pose, detections NULL (lib_polar 0: a
+ * library that refuses a polar scan gets the converted ones beside it).
+ * 0, or -1. */
+static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int oracle, int cart,
+                          int lib_polar, struct run_ws *ws, struct trk_scan *scan, struct mtt_scan_info *info)
+{
+    if (mtt_scen_scan_polar(sc, k, clutter, ws->det, ws->polar, max, ws->origin, scan, info) != 0) return -1;
+    if (oracle) return 0;
+    struct trk_pose pose;
+    mtt_scen_pose(sc, k, &pose);
+    if (cart) {
+        const struct trk_sensor_params *sp = &sc->sonar;
+        for (size_t i = 0; i < scan->n_detections; i++)
+            if (trk_detection_from_polar(ws->polar[i].range_m, pose.heading_rad + ws->polar[i].bearing_rad,
+                                         sp->sigma_range_m, sp->sigma_bearing_rad, pose.x_m, pose.y_m,
+                                         &ws->det[i]) != TRK_OK)
+                return -1;
+        return 0;
+    }
+    scan->polar = ws->polar;
+    scan->detections = lib_polar ? NULL : ws->det;
+    scan->has_pose = 1;
+    scan->pose = pose;
+    return 0;
+}
+
 /* One run of the trackers' configuration tp, or of the oracle (tp gives
- * its sensor R and q). */
-static int run_one(const struct mtt_scenario *sc, long clutter, int over, int oracle,
+ * its sensor R and q). cart, lib_polar: the sonar family's (sonar_scan_for). */
+static int run_one(const struct mtt_scenario *sc, long clutter, int over, int oracle, int cart, int lib_polar,
                    const struct trk_tracker_params *tp, double c_m, struct run_ws *ws, struct run_result *res)
 {
+    const int sonar = sc->p.family == MTT_FAMILY_SONAR;
+    struct sonar_false sf = {NULL, 0, 0};
+    long patch_n = 0, patch_hit = 0, far_n = 0, far_hit = 0, tgt_det = 0, persist_sum = 0;
     struct pair_stats cross = {{-1, -1}, 0, 0, 0, 0}, par = {{-1, -1}, 0, 0, 0, 0};
     struct mtt_eval ev;
     struct man_stats turn, acc;
@@ -463,8 +571,12 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int or
     for (long k = 0; k < ns && rc == 0; k++) {
         struct trk_scan scan;
         struct mtt_scan_info info;
-        mtt_scen_scan(sc, k, clutter, ws->det, over == OVER_CAP ? TRK_MAX_DETECTIONS : TRK_MAX_SCAN_DETECTIONS,
-                      ws->origin, &scan, &info);
+        const size_t max = over == OVER_CAP ? TRK_MAX_DETECTIONS : TRK_MAX_SCAN_DETECTIONS;
+        if (!sonar) mtt_scen_scan(sc, k, clutter, ws->det, max, ws->origin, &scan, &info);
+        else if (sonar_scan_for(sc, k, clutter, max, oracle, cart, lib_polar, ws, &scan, &info) != 0) {
+            rc = -1;
+            break;
+        }
         clutter_sum += (long)info.n_clutter;
         capped += info.n_clutter_capped > 0;
         struct trk_scan_report rep = {0};
@@ -532,6 +644,44 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int or
             rc = -1;
             break;
         }
+        if (sonar) {
+            /* per situation: targets in a patch, far ones; false tracks by where */
+            struct trk_pose pose;
+            mtt_scen_pose(sc, k, &pose);
+            persist_sum += (long)info.n_persist;
+            for (size_t j = 0; j < scan.n_detections; j++) tgt_det += ws->origin[j] >= 0;
+            unsigned char used[TRK_MAX_TRACKS];
+            memset(used, 0, ne);
+            for (size_t i = 0; i < nt; i++) {
+                const int hit = assign[i] >= 0;
+                if (hit) used[assign[i]] = 1;
+                if (mtt_scen_in_patch(sc, truth[i].x_m, truth[i].y_m)) {
+                    patch_n++;
+                    patch_hit += hit;
+                }
+                if (hypot(truth[i].x_m - (double)pose.x_m, truth[i].y_m - (double)pose.y_m) > SONAR_FAR_M) {
+                    far_n++;
+                    far_hit += hit;
+                }
+            }
+            for (size_t j = 0; j < ne && rc == 0; j++) {
+                struct sonar_track *t = sonar_track_of(&sf, ws->est[j].id);
+                if (!t) {
+                    rc = -1;
+                    break;
+                }
+                t->scans++;
+                if (used[j]) continue;
+                int near = 0;
+                for (size_t i = 0; i < nt && !near; i++)
+                    near = hypot(truth[i].x_m - ws->est[j].x_m, truth[i].y_m - ws->est[j].y_m) < c_m;
+                if (near) continue; /* a duplicate, not false */
+                t->false_scans++;
+                t->patch += mtt_scen_in_patch(sc, ws->est[j].x_m, ws->est[j].y_m);
+                t->persist += mtt_scen_persist_dist(sc, ws->est[j].x_m, ws->est[j].y_m) <= c_m;
+            }
+            if (rc != 0) break;
+        }
         for (int w = 0; w < 2; w++) { /* the manoeuvring targets: the turn, the acceleration */
             const int role = w ? MTT_STRAIGHT : MTT_TURN;
             const struct mtt_obj *tr = NULL, *e = NULL;
@@ -597,7 +747,26 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int or
         v[M_THIN_GATES] = (double)thin_gates;
         v[M_REFUSED] = (double)refused;
         for (int j = 0; j < N_REP; j++) v[M_REP_FIRST + j] = rep_sum[j];
+        for (int m = M_SONAR_FIRST; m < M_N; m++) v[m] = NAN;
+        if (sonar) {
+            long f_patch = 0, f_out = 0, f_pers = 0;
+            for (size_t i = 0; i < sf.n; i++) {
+                const struct sonar_track *t = &sf.v[i];
+                if (t->scans == 0 || t->false_scans != t->scans) continue;
+                if (2 * t->patch > t->false_scans) f_patch++;
+                else f_out++;
+                f_pers += 2 * t->persist > t->false_scans;
+            }
+            v[M_COV_PATCH] = patch_n ? (double)patch_hit / (double)patch_n : NAN;
+            v[M_COV_FAR] = far_n ? (double)far_hit / (double)far_n : NAN;
+            v[M_TGT_PD] = present_sum ? (double)tgt_det / (double)present_sum : NAN;
+            v[M_PERSIST] = (double)persist_sum / dn;
+            v[M_FALSE_PATCH] = 1000.0 * (double)f_patch / dn;
+            v[M_FALSE_OUT] = 1000.0 * (double)f_out / dn;
+            v[M_FALSE_PERSIST] = 1000.0 * (double)f_pers / dn;
+        }
     }
+    free(sf.v);
     mtt_eval_free(&ev);
     if (oracle) mtt_oracle_free(&orc);
     return rc;
@@ -605,19 +774,30 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int or
 
 /* ---------------------------------------------------------------- output */
 
-static void csv_header(FILE *f)
+/* The metrics' columns: the sonar family's only in a file with sonar
+ * rows (so that the other families' files are as before). */
+static int n_metric_cols(int sonar) { return sonar ? M_N : M_SONAR_FIRST; }
+
+static int any_sonar(const struct mtt_row *rows, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(rows[i].family, "sonar") == 0) return 1;
+    return 0;
+}
+
+static void csv_header(FILE *f, int sonar)
 {
     fprintf(f, "capacity,config,clutter,seeds,scans,amplitude,family");
-    for (int m = 0; m < M_N; m++)
+    for (int m = 0; m < n_metric_cols(sonar); m++)
         fprintf(f, ",%s_mean,%s_lo,%s_hi", metric_name[m], metric_name[m], metric_name[m]);
     fprintf(f, "\n");
 }
 
-static void csv_row(FILE *f, const struct mtt_row *r)
+static void csv_row(FILE *f, const struct mtt_row *r, int sonar)
 {
     fprintf(f, "%ld,%s,%g,%ld,%ld,%d,%s", r->capacity, r->config, r->clutter, r->seeds, r->scans, r->amplitude,
             r->family);
-    for (int m = 0; m < M_N; m++) fprintf(f, ",%.6g,%.6g,%.6g", r->mean[m], r->lo[m], r->hi[m]);
+    for (int m = 0; m < n_metric_cols(sonar); m++) fprintf(f, ",%.6g,%.6g,%.6g", r->mean[m], r->lo[m], r->hi[m]);
     fprintf(f, "\n");
 }
 
@@ -627,8 +807,9 @@ static int write_csv(const struct sim_common *com, const char *suffix, const str
     struct fileio_out f_out;
     FILE *f = sim_csv_open(com, &f_out, suffix, path, pathlen, NULL);
     if (!f) return -1;
-    csv_header(f);
-    for (int i = 0; i < n; i++) csv_row(f, &rows[i]);
+    const int sonar = any_sonar(rows, n);
+    csv_header(f, sonar);
+    for (int i = 0; i < n; i++) csv_row(f, &rows[i], sonar);
     return sim_csv_close(&f_out);
 }
 
@@ -704,6 +885,14 @@ static void print_tables(const struct mtt_row *rows, int n)
         {"accel cov", M_ACC, 11, 3, 1, 1},        {"accel RMSE", M_ACC_RMSE, 11, 1, 1, 1},
         {"after", M_ACC_AFTER, 6, 2, 0, 1},       {"acc lost", M_ACC_LOST, 8, 2, 0, 1},
     };
+    static const struct column sonar[] = {
+        {"coverage", M_COV, 12, 3, 1, 1},           {"in patches", M_COV_PATCH, 12, 3, 1, 1},
+        {"beyond 5 km", M_COV_FAR, 12, 3, 1, 1},    {"pair2", M_PAR, 6, 2, 0, 1},
+        {"cross2", M_CROSS, 6, 2, 0, 1},            {"turn", M_TURN, 6, 2, 0, 1},
+        {"falseT/1000sc", M_FALSE_TRK, 13, 1, 1, 1}, {"in patch", M_FALSE_PATCH, 8, 1, 0, 1},
+        {"outside", M_FALSE_OUT, 8, 1, 0, 1},       {"on persist", M_FALSE_PERSIST, 10, 1, 0, 1},
+        {"P_D seen", M_TGT_PD, 8, 3, 0, 1},         {"persist/scan", M_PERSIST, 12, 1, 0, 1},
+    };
     int accel = 0;
     for (int i = 0; i < n; i++) accel |= !isnan(rows[i].mean[M_ACC]);
 #define N_COLS(a) (int)(sizeof a / sizeof a[0])
@@ -723,6 +912,15 @@ static void print_tables(const struct mtt_row *rows, int n)
            "   lost = its track at the first scan not its track %d scans after the last (fraction of runs)\n",
            accel ? " and the straight target's acceleration" : "", MAN_AFTER, MAN_LOST);
     print_table(rows, n, manoeuvre, N_COLS(manoeuvre) - (accel ? 0 : 4));
+    if (any_sonar(rows, n)) {
+        printf("-- sonar situations: coverage of all targets, in the reverberation patches, beyond %g km from the\n"
+               "   sonar, of the close pair (both held), the shallow crossing (both, its window), the turn; false\n"
+               "   confirmed tracks per 1000 scans: all, mostly in a patch, mostly outside (these two add up to\n"
+               "   all), mostly within c of a persistent scatterer; P_D seen (target detections per target-scan),\n"
+               "   persistent returns per scan\n",
+               SONAR_FAR_M / 1000.0);
+        print_table(rows, n, sonar, N_COLS(sonar));
+    }
 #undef N_COLS
 }
 
@@ -857,8 +1055,8 @@ static int take_configs(const char *s, int *kinds, int *n, char *err, size_t err
         for (int i = 0; i < N_CFG_KINDS; i++)
             if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
         if (k < 0 || *n >= N_CFG_KINDS) {
-            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle (each once)", (int)len,
-                     s);
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle, cart (each once)",
+                     (int)len, s);
             return -1;
         }
         if (k == CFG_IMM && !TRK_WITH_IMM) {
@@ -890,7 +1088,7 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-static const int family_values[] = {MTT_FAMILY_TRANSIT, MTT_FAMILY_FIXED};
+static const int family_values[] = {MTT_FAMILY_TRANSIT, MTT_FAMILY_FIXED, MTT_FAMILY_SONAR};
 
 /* The runs as work units (sim_run_units): unit j = (seed j / (nl nc),
  * level (j / nc) % nl, configuration j % nc). */
@@ -902,6 +1100,7 @@ struct mtt_units {
     const int *kinds;           /* per configuration */
     double c_m;
     long nl, nc;
+    int lib_polar;              /* sonar: the library takes polar scans */
 };
 
 static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
@@ -917,8 +1116,8 @@ static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
         *wsp = ws;
     }
     const long i = (long)j / (u->nl * u->nc), l = ((long)j / u->nc) % u->nl, c = (long)j % u->nc;
-    return run_one(&u->sc[i], (long)u->levels[l], u->over, u->kinds[c] == CFG_ORACLE, &u->tp[l * u->nc + c], u->c_m,
-                   ws, res) != 0;
+    return run_one(&u->sc[i], (long)u->levels[l], u->over, u->kinds[c] == CFG_ORACLE, u->kinds[c] == CFG_CART,
+                   u->lib_polar, &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
 }
 
 static void mtt_ws_free(void *ctx, void *wsp)
@@ -931,20 +1130,26 @@ static void mtt_ws_free(void *ctx, void *wsp)
 
 SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) over clutter levels")
 {
-    long scans, seeds;
-    double levels[MAX_LEVELS], c_m, pd, snr_db, q, v_min, v_max, par_sep, turn_rate, turn_deg, accel, accel_s;
+    /* the options whose default is the family's: -1 / NULL until given */
+    long scans = -1, seeds;
+    double levels[MAX_LEVELS], c_m = -1, pd, snr_db, q, v_min = -1, v_max = -1, par_sep = -1, turn_rate, turn_deg,
+                               accel, accel_s;
     struct imm_opts im;
-    int n_levels, no_amp = 0, family, over, sweep = 0;
-    const char *configs;
+    int n_levels, no_amp = 0, family, over, sweep = 0, no_persist = 0;
+    const char *configs = NULL;
     struct mtt_settings set = {{NULL}, 0};
     const struct sim_opt opts[] = {
-        SIM_OPT_CHOICE("--family", &family, "transit|fixed", family_values, "transit",
+        SIM_OPT_CHOICE("--family", &family, "transit|fixed|sonar", family_values, "transit",
                        "the scenario family (mtt_scenario.h): transit,\n"
                        "targets entering and leaving, slots re-used; fixed, the 8\n"
                        "targets alone, alive the whole run but the birth and the\n"
                        "death, speeds reduced to keep each path inside (the scenario\n"
-                       "the peer was measured on)"),
-        SIM_OPT_LONG("--scans", &scans, "N", "200", SIM_IN, 10, 100000, "scans per run, one every 4 s"),
+                       "the peer was measured on); sonar, a polar sensor on a platform\n"
+                       "at 3 m/s, its sector 0.5-8 km +-60 deg, a ping every 8 s,\n"
+                       "P_D falling with range, patches, persistent scatterers"),
+        SIM_OPT_LONG("--scans", &scans, "N", NULL, SIM_IN, 10, 100000,
+                     "scans per run (default 200, one every 4 s; sonar 150, one\n"
+                     "every 8 s)"),
         SIM_OPT_LONG("--seeds", &seeds, "N", "10", SIM_IN, 1, 100000,
                      "scenarios of the family: seeds S .. S+N-1 (S = --seed)"),
         SIM_OPT_LIST("--clutter-count", levels, &n_levels, MAX_LEVELS, "0,20,50,100,150,200,256", SIM_IN, 0,
@@ -960,8 +1165,9 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                        "behaviours before: refuse, the library refused the scan\n"
                        "(TRK_E_CAPACITY; counted, the run goes on), cap, the clutter\n"
                        "cut to TRK_MAX_DETECTIONS minus the target detections"),
-        SIM_OPT_STRING("--config", &configs, "LIST", "new,pda,old,oracle",
-                       "configurations: new (trk_tracker_default_params: joint\n"
+        SIM_OPT_STRING("--config", &configs, "LIST", NULL,
+                       "configurations (default new,pda,old,oracle; sonar\n"
+                       "new,pda,cart,oracle): new (trk_tracker_default_params: joint\n"
                        "association), pda (the same with association = pda: each\n"
                        "track's own PDA), old (the defaults before two-point initiation, per-track\n"
                        "PDA), imm (new with IMM tracks: CV and turns at +-omega,\n"
@@ -971,23 +1177,35 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                        "this sensor and motion model allow; no bound on a target\n"
                        "turning beyond q, which it never restarts on);\n"
                        "with association = joint and no clutter, the tracker\n"
-                       "assumes one clutter detection per scan in the region"),
+                       "assumes one clutter detection per scan in the region;\n"
+                       "cart (sonar only): new the old way, the polar detections\n"
+                       "converted by the caller (trk_detection_from_polar), one P_D\n"
+                       "averaged over the sector, no pose, no coverage; new and pda\n"
+                       "get sonar scans as polar scans with the platform's pose"),
+        SIM_OPT_FLAG("--no-persistent", &no_persist,
+                     "sonar: no persistent scatterers (the same targets' detections\n"
+                     "and clutter)"),
         SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
                         "a tracker setting for every configuration (the keys below)"),
         SIM_OPT_FLAG("--no-amplitude", &no_amp, "no amplitudes: positions only, use_amplitude off"),
-        SIM_OPT_DOUBLE("--gospa-c", &c_m, "M", "50", SIM_GT, 0, 0, "GOSPA cut-off c (m)"),
-        SIM_OPT_DOUBLE("--pd", &pd, "P", "0.8", SIM_OPEN, 0, 1, "detection probability"),
+        SIM_OPT_DOUBLE("--gospa-c", &c_m, "M", NULL, SIM_GT, 0, 0,
+                       "GOSPA cut-off c (m; default 50, sonar 200: its cross-range\n"
+                       "sigma is 105 m at 4 km)"),
+        SIM_OPT_DOUBLE("--pd", &pd, "P", "0.8", SIM_OPEN, 0, 1,
+                       "detection probability (sonar: unused, its profile over range)"),
         SIM_OPT_DOUBLE("--snr-db", &snr_db, "D", "13", SIM_IN, 0, 40,
                        "target SNR (Swerling I, Rayleigh clutter); the threshold's\n"
                        "P_FA is pd^(1 + SNR), so that P_D = pd"),
         SIM_OPT_DOUBLE("--q", &q, "Q", "1e-3", SIM_GE, 0, 0, "the tracker's process noise (m^2/s^3)"),
-        SIM_OPT_DOUBLE("--speed-min", &v_min, "V", "5", SIM_GT, 0, 0,
-                       "target speeds drawn uniformly in [--speed-min, --speed-max] (m/s)"),
-        SIM_OPT_DOUBLE("--speed-max", &v_max, "V", "15", SIM_GT, 0, 0,
+        SIM_OPT_DOUBLE("--speed-min", &v_min, "V", NULL, SIM_GT, 0, 0,
+                       "target speeds drawn uniformly in [--speed-min, --speed-max] (m/s;\n"
+                       "default 5-15, sonar 3-10)"),
+        SIM_OPT_DOUBLE("--speed-max", &v_max, "V", NULL, SIM_GT, 0, 0,
                        "upper end of the speed range, e.g. 20 to go past the tracker's\n"
                        "two-point velocity gate (its own: --set init.max_speed_mps=V)"),
-        SIM_OPT_DOUBLE("--parallel-sep", &par_sep, "M", "60", SIM_OPEN, 0, 500,
-                       "the parallel pair's separation (m): closer pairs share detections"),
+        SIM_OPT_DOUBLE("--parallel-sep", &par_sep, "M", NULL, SIM_OPEN, 0, 500,
+                       "the parallel pair's separation (m; default 60 side by side;\n"
+                       "sonar 100 along the bearing): closer pairs share detections"),
         SIM_OPT_DOUBLE("--turn-rate", &turn_rate, "DPS", "3", SIM_IN, 0.01, 90,
                        "the turning target's rate (deg/s; each seed's x [0.8, 1.2])"),
         SIM_OPT_DOUBLE("--turn-deg", &turn_deg, "DEG", "90", SIM_IN, 1, 360,
@@ -1018,7 +1236,12 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         "entering at the edge 1-10 scans later: 6-8 present. --family fixed (the\n"
         "8-target scenario the peer, Stone Soup's JPDA, was measured on): the\n"
         "eight alone, alive the whole run but the birth and the death, each speed reduced\n"
-        "until its path stays inside (at 200 scans about 3-6 m/s). Each seed at every\n"
+        "until its path stays inside (at 200 scans about 3-6 m/s). --family sonar: a polar\n"
+        "sensor (7.5 m, 1.5 deg) on a platform at 3 m/s, its sector 0.5-8 km +-60 deg, a ping\n"
+        "every 8 s with the platform's pose, P_D falling with range, clutter in patches and\n"
+        "the near field, 12 persistent scatterers; eight targets at 3-10 m/s (a shallow\n"
+        "crossing, a pair 100 m apart on one bearing, a 3 deg/s turn, a far one, a birth, a\n"
+        "death); the trackers get polar scans, cart the old way. Each seed at every\n"
         "clutter count through every configuration (the same scenarios: common random\n"
         "numbers). Scored per scan on the confirmed tracks (GOSPA p = 2, alpha = 2, cut-off\n"
         "c; tools/sim/mtt_eval.h); mean and 95 % Student t interval over seeds.",
@@ -1038,11 +1261,29 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         fprintf(stderr, "trk-sim mtt: cannot create the directory of %s\n", com.out);
         return 1;
     }
+    const int sonar = family == MTT_FAMILY_SONAR;
+    {
+        /* the family's defaults of the options not given */
+        struct mtt_scen_params d;
+        if (sonar) mtt_scen_sonar_defaults(&d);
+        else mtt_scen_defaults(&d);
+        if (scans < 0) scans = d.n_scans;
+        if (v_min < 0) v_min = d.speed_min_mps;
+        if (v_max < 0) v_max = d.speed_max_mps;
+        if (par_sep < 0) par_sep = d.parallel_sep_m;
+        if (c_m < 0) c_m = sonar ? 200 : 50;
+        if (!configs) configs = sonar ? "new,pda,cart,oracle" : "new,pda,old,oracle";
+    }
     int kinds[N_CFG_KINDS], n_cfg;
     if (take_configs(configs, kinds, &n_cfg, err, sizeof err) != 0) {
         fprintf(stderr, "trk-sim mtt: %s\n", err);
         return 2;
     }
+    for (int c = 0; c < n_cfg; c++)
+        if (kinds[c] == CFG_CART && !sonar) {
+            fprintf(stderr, "trk-sim mtt: --config cart: only with --family sonar (polar detections)\n");
+            return 2;
+        }
     if (sweep) {
         static const double frac[] = {0, 0.125, 0.25, 0.5, 1, 2, 3, 4};
         n_levels = (int)(sizeof frac / sizeof frac[0]);
@@ -1069,13 +1310,15 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     int pres_min = MTT_N_SLOTS, pres_max = 0;
     for (long i = 0; i < seeds; i++) {
         struct mtt_scen_params sp;
-        mtt_scen_defaults(&sp);
+        if (sonar) mtt_scen_sonar_defaults(&sp);
+        else mtt_scen_defaults(&sp);
         sp.family = family;
         sp.seed = com.seed + (uint64_t)i;
         sp.n_scans = scans;
         sp.pd = pd;
         sp.snr_db = snr_db;
-        sp.amplitude = !no_amp;
+        sp.amplitude = !no_amp && !sonar; /* sonar: no amplitudes */
+        sp.persistent = !no_persist;
         sp.speed_min_mps = v_min;
         sp.speed_max_mps = v_max;
         sp.parallel_sep_m = par_sep;
@@ -1107,7 +1350,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
             pres_max = np > pres_max ? np : pres_max;
         }
     }
-    const double area = sc[0].p.region_m * sc[0].p.region_m;
+    const double area = sc[0].area_m2;
     /* ---- the configurations at every level (the clutter density differs) */
     const int nl = n_levels, nc = n_cfg;
     struct trk_tracker_params *tp = malloc((size_t)(nl * nc) * sizeof *tp);
@@ -1123,18 +1366,69 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                 return 2;
             }
         }
+    /* ---- sonar: does the library take polar scans? (one scan of one
+     * detection through the first tracker configuration) */
+    int lib_polar = 1;
+    for (int c = 0; sonar && c < nc; c++) {
+        if (kinds[c] == CFG_ORACLE || kinds[c] == CFG_CART) continue;
+        struct trk_tracker *tk = malloc(sizeof *tk);
+        if (!tk) return 1;
+        struct trk_polar_detection pdet;
+        memset(&pdet, 0, sizeof pdet);
+        pdet.range_m = (trk_real)(0.5 * (sc[0].p.range_min_m + sc[0].p.range_max_m));
+        struct trk_scan ps;
+        memset(&ps, 0, sizeof ps);
+        ps.n_detections = 1;
+        ps.polar = &pdet;
+        ps.has_pose = 1;
+        mtt_scen_pose(&sc[0], 0, &ps.pose);
+        struct trk_scan_report prep;
+        if (trk_tracker_init(tk, &tp[c]) != TRK_OK) lib_polar = -1;
+        else if (trk_tracker_process_scan(tk, &ps, &prep) == TRK_E_ARG) lib_polar = 0;
+        free(tk);
+        if (lib_polar < 0) {
+            fprintf(stderr, "trk-sim mtt: the tracker refuses configuration %s\n", cfg_name[kinds[c]]);
+            return 2;
+        }
+        break;
+    }
     /* ---- run: every (seed, level, configuration) on its own, in parallel */
     const long n_jobs = seeds * nl * nc;
     struct run_result *res = calloc((size_t)n_jobs, sizeof *res);
     if (!res) return 1;
     const int threads = sim_threads(&com);
-    printf("== trk-sim mtt: family %s, %ld seeds (%llu..%llu) x %ld scans of %g s, region %g km x %g km, "
-           "TRK_MAX_TRACKS %d, TRK_MAX_DETECTIONS %d, %d threads\n",
-           mtt_family_name(family), seeds, (unsigned long long)com.seed,
-           (unsigned long long)(com.seed + (uint64_t)seeds - 1), scans,
-           sc[0].p.scan_period_s, sc[0].p.region_m / 1000, sc[0].p.region_m / 1000, TRK_MAX_TRACKS,
-           TRK_MAX_DETECTIONS, threads);
-    if (family == MTT_FAMILY_FIXED)
+    if (sonar)
+        printf("== trk-sim mtt: family %s, %ld seeds (%llu..%llu) x %ld scans of %g s, sector %g-%g km +-%g deg "
+               "(%.1f km^2), TRK_MAX_TRACKS %d, TRK_MAX_DETECTIONS %d, %d threads\n",
+               mtt_family_name(family), seeds, (unsigned long long)com.seed,
+               (unsigned long long)(com.seed + (uint64_t)seeds - 1), scans, sc[0].p.scan_period_s,
+               sc[0].p.range_min_m / 1000, sc[0].p.range_max_m / 1000, sc[0].p.half_width_deg, area / 1e6,
+               TRK_MAX_TRACKS, TRK_MAX_DETECTIONS, threads);
+    else
+        printf("== trk-sim mtt: family %s, %ld seeds (%llu..%llu) x %ld scans of %g s, region %g km x %g km, "
+               "TRK_MAX_TRACKS %d, TRK_MAX_DETECTIONS %d, %d threads\n",
+               mtt_family_name(family), seeds, (unsigned long long)com.seed,
+               (unsigned long long)(com.seed + (uint64_t)seeds - 1), scans,
+               sc[0].p.scan_period_s, sc[0].p.region_m / 1000, sc[0].p.region_m / 1000, TRK_MAX_TRACKS,
+               TRK_MAX_DETECTIONS, threads);
+    if (sonar) {
+        const struct trk_pd_profile *pr = &sc[0].sonar.pd_profile;
+        printf("   sonar family, 8 targets: %.2f present per scan (%d-%d); speeds %.1f-%.1f m/s (drawn in [%g, %g]); "
+               "platform %g m/s due north\n",
+               pres_sum / ((double)seeds * (double)scans), pres_min, pres_max, vmin, vmax, sc[0].p.speed_min_mps,
+               sc[0].p.speed_max_mps, sc[0].p.platform_speed_mps);
+        printf("   polar sensor: sigma %g m, %g deg; P_D %.2f at %g km to %.2f at %g km (profile of %u points), "
+               "%.3f over the sector (cart's); no amplitudes\n",
+               sc[0].p.sigma_range_m, sc[0].p.sigma_bearing_deg, (double)pr->pd[0], (double)pr->range_m[0] / 1000,
+               (double)pr->pd[pr->n - 1], (double)pr->range_m[pr->n - 1] / 1000, pr->n, sc[0].sonar_pd_mean);
+        printf("   clutter: 30 %% in 4 patches (3 %% of the area), 15 %% near-field, the rest uniform in range x "
+               "bearing; persistent scatterers %s\n",
+               no_persist ? "off" : "on (12, 85 % of pings)");
+        if (!lib_polar)
+            printf("   NOTE: this libtrk refuses a polar scan (TRK_E_ARG): new, pda and old get the detections "
+                   "converted (trk_polar_to_cartesian) beside scan.polar, and (a library without polar sensors) "
+                   "read neither the pose nor the P_D profile\n");
+    } else if (family == MTT_FAMILY_FIXED)
         printf("   fixed family: 8 targets, alive the whole run but the birth (from ~20 %%) and the death "
                "(to ~70 %%), %.2f present per scan (%d-%d); speeds %.1f-%.1f m/s (drawn in [%g, %g]; %ld of %ld "
                "reduced to keep the path inside)\n",
@@ -1146,8 +1440,11 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                n_tg_sum / (double)seeds, n_tg_min, n_tg_max, pres_sum / ((double)seeds * (double)scans), pres_min,
                pres_max, vmin, vmax, sc[0].p.speed_min_mps, sc[0].p.speed_max_mps,
                reduced ? "; the pair's reduced to keep 40 scans together" : "");
-    printf("   P_D %g, sigma %g m, %s, q %g; GOSPA c %g m\n", pd, sc[0].p.meas_sigma_m,
-           no_amp ? "no amplitudes" : "Rayleigh amplitudes", q, c_m);
+    if (!sonar)
+        printf("   P_D %g, sigma %g m, %s, q %g; GOSPA c %g m\n", pd, sc[0].p.meas_sigma_m,
+               no_amp ? "no amplitudes" : "Rayleigh amplitudes", q, c_m);
+    else
+        printf("   q %g; GOSPA c %g m\n", q, c_m);
     {
         /* the manoeuvres: the turn's length in scans over the seeds */
         long t_min = LONG_MAX, t_max = 0;
@@ -1165,7 +1462,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         if (kinds[c] == CFG_IMM)
             printf("   imm: CV (q %g) and turns at +-%g deg/s (q %g), p_stay %g\n", q, im.rate_dps, im.turn_q,
                    im.p_stay);
-    if (!no_amp)
+    if (sc[0].p.amplitude)
         printf("   amplitudes: target SNR %g dB, threshold P_FA %.4g (P_D = %.3f), use_amplitude on\n", snr_db,
                sc[0].pfa, sc[0].amp_tg.pd);
     printf("   clutter per scan:");
@@ -1181,7 +1478,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     }
     fflush(stdout);
     /* every (seed, level, configuration) a work unit */
-    struct mtt_units mu = {sc, levels, over, tp, kinds, c_m, nl, nc};
+    struct mtt_units mu = {sc, levels, over, tp, kinds, c_m, nl, nc, lib_polar};
     double wall;
     const int urc = sim_run_units(&com, "mtt", (size_t)n_jobs, sizeof *res, 1, mtt_unit, mtt_ws_free, &mu, res, &wall,
                                   NULL);
@@ -1208,7 +1505,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
             r->clutter = levels[l];
             r->seeds = seeds;
             r->scans = scans;
-            r->amplitude = !no_amp;
+            r->amplitude = sc[0].p.amplitude;
             for (int m = 0; m < M_N; m++) {
                 size_t k = 0;
                 for (long i = 0; i < seeds; i++) {

@@ -1,0 +1,145 @@
+#!/bin/sh
+# tests/mtt_sonar_smoke.sh TRK_SIM - the `make test` step mtt-sonar-smoke (mk/mtt.mk): the
+# sonar family of trk-sim mtt (tools/sim/mtt_scenario.h), a short
+# `trk-sim mtt --family sonar --scans 60 --seeds 3 --clutter-count 0,20,100` run with 1 and
+# 2 threads, one without the persistent scatterers, and their CSVs checked:
+#   - the header: the key columns, then <metric>_mean,_lo,_hi with the sonar family's
+#     own (patch_coverage, far_coverage, target_pd, persistent_per_scan and the false
+#     tracks split by where); a transit CSV has none of them (its columns as before)
+#   - exactly the rows {new, pda, cart, oracle} x {0, 20, 100}, family sonar, seeds 3,
+#     scans 60, amplitude 0; per row and metric lo <= mean <= hi; fractions in [0, 1]
+#   - the scenario: 8 targets per run, (0, 8] present per scan; clutter per scan = the
+#     count asked for; detections seen by the tracker = 60 x (clutter + targets' +
+#     persistent returns'); the P_D seen (target detections per target-scan) the same in
+#     every row (common random numbers) and in [0.5, 0.7] (the profile: 0.93 at 0.5 km to
+#     0.39 at 8 km); persistent returns per scan in (6, 11] (12 scatterers at 85 %, some
+#     out of the sector at times)
+#   - the counts add up: false tracks in patches + outside = all false tracks; those on
+#     persistent returns no more than all
+#   - the oracle (known association, each detection with its converted covariance):
+#     blind to the clutter (GOSPA, parts, coverage the same at every level), no false
+#     track, coverage > 0.85, the close pair both held > 0.85, the crossing > 0.9, beyond
+#     5 km > 0.6; at clutter 0 the trackers cover > 0.6 and confirm every target
+#   - without the persistent scatterers (--no-persistent): no persistent return, no false
+#     track on one, the same P_D seen and the same oracle rows (the targets' detections
+#     do not change)
+#   - every column but the CPU time identical with 1 and 2 threads
+#   - --config cart is refused (exit 2) outside the sonar family; the sonar table on stdout
+set -u
+sim=$1
+d=$(mktemp -d) || exit 1
+trap 'rm -rf "$d"' EXIT
+fail() {
+    echo "mtt-sonar-smoke: FAILED: $*"
+    exit 1
+}
+args="--family sonar --scans 60 --seeds 3 --clutter-count 0,20,100 --seed 3 --quiet --no-plot"
+for t in 1 2; do
+    "$sim" mtt $args --threads $t --out "$d/s$t" >"$d/out$t.txt" 2>&1 ||
+        { cat "$d/out$t.txt"; fail "trk-sim mtt --family sonar exited with $?"; }
+done
+"$sim" mtt $args --threads 1 --no-persistent --out "$d/n1" >"$d/outn.txt" 2>&1 ||
+    { cat "$d/outn.txt"; fail "trk-sim mtt --family sonar --no-persistent exited with $?"; }
+"$sim" mtt --scans 20 --seeds 1 --clutter-count 0 --config new,oracle --threads 1 --quiet --no-plot \
+    --out "$d/t1" >"$d/outt.txt" 2>&1 || { cat "$d/outt.txt"; fail "trk-sim mtt (transit) exited with $?"; }
+# check CSV PERSISTENT(1/0)
+check() {
+    [ -f "$1" ] || fail "no CSV written ($1)"
+    awk -F, -v persist="$2" -v want_metrics="gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 coverage patch_coverage far_coverage parallel_both cross_both turn_coverage false_tracks_per_1000_scans false_tracks_patch_per_1000_scans false_tracks_outside_per_1000_scans false_tracks_persistent_per_1000_scans target_pd persistent_per_scan never_confirmed targets_per_run targets_present_per_scan clutter_per_scan rep_n_detections" '
+function bad(msg) { print "mtt-sonar-smoke: FAILED: " msg; err = 1; exit 1 }
+function abs(x) { return x < 0 ? -x : x }
+NR == 1 {
+    if ($1 != "capacity" || $2 != "config" || $3 != "clutter" || $7 != "family") bad("header starts " $1 "," $2 "," $3)
+    ncol = NF
+    for (i = 1; i <= NF; i++) col[$i] = i
+    n = split(want_metrics, w, " ")
+    for (k = 1; k <= n; k++)
+        for (p = 1; p <= 3; p++) {
+            c = w[k] (p == 1 ? "_mean" : p == 2 ? "_lo" : "_hi")
+            if (!(c in col)) bad("no column " c)
+        }
+    next
+}
+{
+    rows++
+    if (NF != ncol) bad("row " NR ": " NF " fields")
+    if ($4 != 3 || $5 != 60 || $6 != 0) bad("row " NR ": seeds/scans/amplitude " $4 "/" $5 "/" $6)
+    if ($7 != "sonar") bad("row " NR ": family " $7)
+    key = $2 "/" $3
+    if (key in seen) bad("row " key " twice")
+    seen[key] = 1
+    for (i = 8; i + 2 <= NF; i += 3) {
+        if ($i == "nan" || $i == "-nan") continue
+        if (!($(i + 1) <= $i + 1e-9 * (1 + abs($i)) && $i <= $(i + 2) + 1e-9 * (1 + abs($i))))
+            bad("row " key ": column " i " mean " $i " not in [" $(i + 1) ", " $(i + 2) "]")
+    }
+    split("coverage patch_coverage far_coverage parallel_both cross_both turn_coverage target_pd", f01, " ")
+    for (k in f01) { v = $(col[f01[k] "_mean"]); if (v != "nan" && (v < 0 || v > 1)) bad(key ": " f01[k] " " v) }
+    if ($(col["targets_per_run_mean"]) != 8) bad(key ": " $(col["targets_per_run_mean"]) " targets per run, want 8")
+    np = $(col["targets_present_per_scan_mean"])
+    if (!(np > 0 && np <= 8)) bad(key ": targets present per scan " np)
+    cl = $(col["clutter_per_scan_mean"])
+    if (cl != $3) bad(key ": clutter per scan " cl ", asked " $3)
+    pd = $(col["target_pd_mean"]); ps = $(col["persistent_per_scan_mean"])
+    if (pd0 == "") pd0 = pd
+    if (pd != pd0) bad(key ": P_D seen " pd ", another row " pd0 " (the same targets detections)")
+    if (!(pd >= 0.5 && pd <= 0.7)) bad(key ": P_D seen " pd ", want [0.5, 0.7]")
+    if (persist && !(ps > 6 && ps <= 11)) bad(key ": persistent returns per scan " ps ", want (6, 11]")
+    if (!persist && ps != 0) bad(key ": persistent returns per scan " ps " without them")
+    dets = $(col["rep_n_detections_mean"])
+    want = 60 * (cl + np * pd + ps)
+    if (abs(dets - want) > 1e-3 * want + 1) bad(key ": " dets " detections in 60 scans, want " want)
+    ft = $(col["false_tracks_per_1000_scans_mean"]); fp = $(col["false_tracks_patch_per_1000_scans_mean"])
+    fo = $(col["false_tracks_outside_per_1000_scans_mean"]); fq = $(col["false_tracks_persistent_per_1000_scans_mean"])
+    if (abs(fp + fo - ft) > 1e-4 * (1 + ft)) bad(key ": false tracks in patches " fp " + outside " fo " != all " ft)
+    if (fq > ft + 1e-9) bad(key ": false tracks on persistent returns " fq " > all " ft)
+    if (!persist && fq != 0) bad(key ": false tracks on persistent returns " fq " without them")
+    if ($3 == 0) {
+        if ($(col["coverage_mean"]) <= 0.6) bad(key ": coverage " $(col["coverage_mean"]) " at clutter 0")
+        if ($(col["never_confirmed_mean"]) != 0) bad(key ": targets never confirmed " $(col["never_confirmed_mean"]))
+    }
+    if ($2 == "oracle") {
+        o = ""
+        split("gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 coverage patch_coverage far_coverage", fo2, " ")
+        for (k = 1; k <= 7; k++) o = o $(col[fo2[k] "_mean"]) " "
+        if (oracle_acc != "" && o != oracle_acc) bad("oracle: clutter " $3 " changes it (" o " against " oracle_acc ")")
+        oracle_acc = o
+        if (ft != 0) bad("oracle: " ft " false tracks per 1000 scans")
+        if ($(col["coverage_mean"]) <= 0.85) bad("oracle: coverage " $(col["coverage_mean"]))
+        if ($(col["parallel_both_mean"]) <= 0.85) bad("oracle: the close pair held " $(col["parallel_both_mean"]))
+        if ($(col["cross_both_mean"]) <= 0.9) bad("oracle: the crossing held " $(col["cross_both_mean"]))
+        if ($(col["far_coverage_mean"]) <= 0.6) bad("oracle: beyond 5 km " $(col["far_coverage_mean"]))
+        print o > "/dev/stderr"
+    }
+}
+END {
+    if (err) exit 1
+    if (rows != 12) bad(rows " rows, want 12")
+    split("new pda cart oracle", cf, " ")
+    split("0 20 100", lv, " ")
+    for (a = 1; a <= 4; a++) for (b = 1; b <= 3; b++) if (!((cf[a] "/" lv[b]) in seen)) bad("no row " cf[a] "/" lv[b])
+    print pd0 > "/dev/stderr"
+}' "$1" 2>"$1.sig" || exit 1
+}
+check "$d/s1.csv" 1
+check "$d/n1.csv" 0
+cmp -s "$d/s1.csv.sig" "$d/n1.csv.sig" ||
+    fail "without the persistent scatterers the oracle or the P_D seen changed: $(cat "$d/s1.csv.sig") / $(cat "$d/n1.csv.sig")"
+strip() {
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) keep[i] = $i !~ /^cpu_/ }
+             { s = ""; for (i = 1; i <= NF; i++) if (keep[i]) s = s $i ","; print s }' "$1"
+}
+strip "$d/s1.csv" >"$d/x1" && strip "$d/s2.csv" >"$d/x2" || fail "cannot read the CSV files"
+cmp -s "$d/x1" "$d/x2" || fail "the CSV depends on the thread count (cpu_* columns aside)"
+head -1 "$d/t1.csv" | grep -q 'patch_coverage' && fail "a transit CSV holds the sonar family's columns"
+grep -q '^== trk-sim mtt: family sonar,' "$d/out1.txt" || fail "no family in the header line (sonar)"
+grep -q '^-- sonar situations' "$d/out1.txt" && grep -q ' sonar  *cart  *100 ' "$d/out1.txt" ||
+    fail "no sonar table on stdout"
+if "$sim" mtt --config cart --scans 20 --seeds 1 --no-plot --quiet --out "$d/c1" >"$d/outc.txt" 2>&1; then
+    fail "--config cart ran in the transit family"
+else
+    [ $? -eq 2 ] && grep -q 'only with --family sonar' "$d/outc.txt" || { cat "$d/outc.txt"; fail "--config cart: no clear refusal"; }
+fi
+echo "mtt-sonar-smoke: trk-sim mtt --family sonar: 12 rows (new, pda, cart, oracle x clutter 0, 20, 100) checked" \
+    "with and without persistent scatterers; the oracle blind to clutter, coverage > 0.85; false tracks add up;" \
+    "identical with 1 and 2 threads"
