@@ -47,10 +47,7 @@
  * sensor of kind TRK_SENSOR_POLAR with its sigmas, P_D profile and
  * coverage (the scenario's s->sonar), clutter density N / the sector's
  * area; the oracle the detections the scenario converted
- * (trk_polar_to_cartesian, each with its covariance). A library that
- * refuses a polar scan (TRK_E_ARG on a probe scan: before the tracker
- * reads polar scans) gets the converted detections beside scan.polar,
- * said on stdout. Its own measures (columns of sonar rows only):
+ * (trk_polar_to_cartesian, each with its covariance). Its own measures (columns of sonar rows only):
  * coverage in the patches and beyond SONAR_FAR_M, the P_D seen, the
  * persistent returns per scan, and the false confirmed tracks split by
  * where they were (mostly in a patch or not; mostly within c of a
@@ -518,11 +515,9 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
  * scenario (trk_polar_to_cartesian, each with its covariance); cart the
  * old way, each converted by the caller with trk_detection_from_polar at
  * its absolute bearing, no pose; the others the polar scan as a user
- * gives it: scan.polar, has_pose, pose, detections NULL (lib_polar 0: a
- * library that refuses a polar scan gets the converted ones beside it).
- * 0, or -1. */
+ * gives it: scan.polar, has_pose, pose, detections NULL. 0, or -1. */
 static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int oracle, int cart,
-                          int lib_polar, struct run_ws *ws, struct trk_scan *scan, struct mtt_scan_info *info)
+                          struct run_ws *ws, struct trk_scan *scan, struct mtt_scan_info *info)
 {
     if (mtt_scen_scan_polar(sc, k, clutter, ws->det, ws->polar, max, ws->origin, scan, info) != 0) return -1;
     if (oracle) return 0;
@@ -538,15 +533,15 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
         return 0;
     }
     scan->polar = ws->polar;
-    scan->detections = lib_polar ? NULL : ws->det;
+    scan->detections = NULL;
     scan->has_pose = 1;
     scan->pose = pose;
     return 0;
 }
 
 /* One run of the trackers' configuration tp, or of the oracle (tp gives
- * its sensor R and q). cart, lib_polar: the sonar family's (sonar_scan_for). */
-static int run_one(const struct mtt_scenario *sc, long clutter, int over, int oracle, int cart, int lib_polar,
+ * its sensor R and q). cart: the sonar family's (sonar_scan_for). */
+static int run_one(const struct mtt_scenario *sc, long clutter, int over, int oracle, int cart,
                    const struct trk_tracker_params *tp, double c_m, struct run_ws *ws, struct run_result *res)
 {
     const int sonar = sc->p.family == MTT_FAMILY_SONAR;
@@ -573,7 +568,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int or
         struct mtt_scan_info info;
         const size_t max = over == OVER_CAP ? TRK_MAX_DETECTIONS : TRK_MAX_SCAN_DETECTIONS;
         if (!sonar) mtt_scen_scan(sc, k, clutter, ws->det, max, ws->origin, &scan, &info);
-        else if (sonar_scan_for(sc, k, clutter, max, oracle, cart, lib_polar, ws, &scan, &info) != 0) {
+        else if (sonar_scan_for(sc, k, clutter, max, oracle, cart, ws, &scan, &info) != 0) {
             rc = -1;
             break;
         }
@@ -1100,7 +1095,6 @@ struct mtt_units {
     const int *kinds;           /* per configuration */
     double c_m;
     long nl, nc;
-    int lib_polar;              /* sonar: the library takes polar scans */
 };
 
 static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
@@ -1117,7 +1111,7 @@ static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
     }
     const long i = (long)j / (u->nl * u->nc), l = ((long)j / u->nc) % u->nl, c = (long)j % u->nc;
     return run_one(&u->sc[i], (long)u->levels[l], u->over, u->kinds[c] == CFG_ORACLE, u->kinds[c] == CFG_CART,
-                   u->lib_polar, &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
+                   &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
 }
 
 static void mtt_ws_free(void *ctx, void *wsp)
@@ -1366,32 +1360,6 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                 return 2;
             }
         }
-    /* ---- sonar: does the library take polar scans? (one scan of one
-     * detection through the first tracker configuration) */
-    int lib_polar = 1;
-    for (int c = 0; sonar && c < nc; c++) {
-        if (kinds[c] == CFG_ORACLE || kinds[c] == CFG_CART) continue;
-        struct trk_tracker *tk = malloc(sizeof *tk);
-        if (!tk) return 1;
-        struct trk_polar_detection pdet;
-        memset(&pdet, 0, sizeof pdet);
-        pdet.range_m = (trk_real)(0.5 * (sc[0].p.range_min_m + sc[0].p.range_max_m));
-        struct trk_scan ps;
-        memset(&ps, 0, sizeof ps);
-        ps.n_detections = 1;
-        ps.polar = &pdet;
-        ps.has_pose = 1;
-        mtt_scen_pose(&sc[0], 0, &ps.pose);
-        struct trk_scan_report prep;
-        if (trk_tracker_init(tk, &tp[c]) != TRK_OK) lib_polar = -1;
-        else if (trk_tracker_process_scan(tk, &ps, &prep) == TRK_E_ARG) lib_polar = 0;
-        free(tk);
-        if (lib_polar < 0) {
-            fprintf(stderr, "trk-sim mtt: the tracker refuses configuration %s\n", cfg_name[kinds[c]]);
-            return 2;
-        }
-        break;
-    }
     /* ---- run: every (seed, level, configuration) on its own, in parallel */
     const long n_jobs = seeds * nl * nc;
     struct run_result *res = calloc((size_t)n_jobs, sizeof *res);
@@ -1424,10 +1392,6 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         printf("   clutter: 30 %% in 4 patches (3 %% of the area), 15 %% near-field, the rest uniform in range x "
                "bearing; persistent scatterers %s\n",
                no_persist ? "off" : "on (12, 85 % of pings)");
-        if (!lib_polar)
-            printf("   NOTE: this libtrk refuses a polar scan (TRK_E_ARG): new, pda and old get the detections "
-                   "converted (trk_polar_to_cartesian) beside scan.polar, and (a library without polar sensors) "
-                   "read neither the pose nor the P_D profile\n");
     } else if (family == MTT_FAMILY_FIXED)
         printf("   fixed family: 8 targets, alive the whole run but the birth (from ~20 %%) and the death "
                "(to ~70 %%), %.2f present per scan (%d-%d); speeds %.1f-%.1f m/s (drawn in [%g, %g]; %ld of %ld "
@@ -1478,7 +1442,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     }
     fflush(stdout);
     /* every (seed, level, configuration) a work unit */
-    struct mtt_units mu = {sc, levels, over, tp, kinds, c_m, nl, nc, lib_polar};
+    struct mtt_units mu = {sc, levels, over, tp, kinds, c_m, nl, nc};
     double wall;
     const int urc = sim_run_units(&com, "mtt", (size_t)n_jobs, sizeof *res, 1, mtt_unit, mtt_ws_free, &mu, res, &wall,
                                   NULL);
