@@ -107,20 +107,22 @@ void trk_i_view_init(struct trk_i_view *v, const struct trk_sensor_params *sp, c
     v->min_r2 = c->min_range_m * c->min_range_m;
     v->max_r2 = c->max_range_m * c->max_range_m;
     v->limited = v->sector || c->min_range_m > 0 || c->max_range_m > 0 || sp->pd_profile.n > 0;
+    v->clutter_varies = sp->clutter_profile.n > 0;
 }
 
-/* The profile at range r: linear between its points, flat beyond the
- * ends (n >= 2, ranges increasing: checked at init). */
-static trk_real profile_at(const struct trk_pd_profile *p, trk_real r)
+/* A profile of n points (range_m, value) at range r: linear between its
+ * points, flat beyond the ends (n >= 2, ranges increasing: checked at
+ * init). */
+static trk_real profile_at(unsigned n, const trk_real *range_m, const trk_real *value, trk_real r)
 {
-    if (!(r > p->range_m[0])) return p->pd[0];
-    for (unsigned k = 1; k < p->n; k++) {
-        if (r < p->range_m[k]) {
-            const trk_real f = (r - p->range_m[k - 1]) / (p->range_m[k] - p->range_m[k - 1]);
-            return p->pd[k - 1] + f * (p->pd[k] - p->pd[k - 1]);
+    if (!(r > range_m[0])) return value[0];
+    for (unsigned k = 1; k < n; k++) {
+        if (r < range_m[k]) {
+            const trk_real f = (r - range_m[k - 1]) / (range_m[k] - range_m[k - 1]);
+            return value[k - 1] + f * (value[k] - value[k - 1]);
         }
     }
-    return p->pd[p->n - 1];
+    return value[n - 1];
 }
 
 trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_m, trk_real y_m)
@@ -130,7 +132,25 @@ trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_
     if (r2 < v->min_r2 || (v->max_r2 > 0 && r2 > v->max_r2)) return 0;
     const trk_real r = trk_sqrt(r2);
     if (v->sector && !(dx * v->sin_h + dy * v->cos_h >= r * v->cos_half)) return 0;
-    return v->sp->pd_profile.n > 0 ? profile_at(&v->sp->pd_profile, r) : pd_flat;
+    const struct trk_pd_profile *pp = &v->sp->pd_profile;
+    return pp->n > 0 ? profile_at(pp->n, pp->range_m, pp->pd, r) : pd_flat;
+}
+
+trk_real trk_i_view_clutter(const struct trk_i_view *v, trk_real x_m, trk_real y_m)
+{
+    const struct trk_clutter_profile *cp = &v->sp->clutter_profile;
+    if (!v->clutter_varies) return v->sp->clutter_density_per_m2;
+    const trk_real dx = x_m - v->pose.x_m, dy = y_m - v->pose.y_m;
+    return profile_at(cp->n, cp->range_m, cp->density_per_m2, trk_sqrt(dx * dx + dy * dy));
+}
+
+trk_real trk_sensor_clutter_at(const struct trk_sensor_params *sp, const struct trk_pose *pose, trk_real x_m,
+                               trk_real y_m)
+{
+    if (!sp || !pose) return (trk_real)NAN;
+    struct trk_i_view v;
+    trk_i_view_init(&v, sp, pose);
+    return trk_i_view_clutter(&v, x_m, y_m);
 }
 
 trk_real trk_sensor_pd_at(const struct trk_sensor_params *sp, const struct trk_pose *pose, trk_real x_m,

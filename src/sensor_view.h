@@ -15,4 +15,7 @@ void trk_i_view_init(struct trk_i_view *v, const struct trk_sensor_params *sp, c
  * the sensor's P_D without a profile (its pd, or its amplitude model's). */
 trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_m, trk_real y_m);
 
+/* lambda at (x_m, y_m): trk_sensor_clutter_at with the view's pose. */
+trk_real trk_i_view_clutter(const struct trk_i_view *v, trk_real x_m, trk_real y_m);
+
 #endif

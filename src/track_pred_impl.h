@@ -17,28 +17,31 @@ static int over_covariance_bound(trk_real bound_m2, const trk_real *p)
     return bound_m2 > 0 && p[P(X, X)] + p[P(Y, Y)] > bound_m2;
 }
 
-/* The PDA's constants of the scan's sensor with P_D pd in (0, 1] instead of
- * its own (trk_pda_init's, for one track: a P_D profile). */
-static void pda_with_pd(const struct trk_pda *sensor, trk_real pd, struct trk_pda *out)
+/* The PDA's constants of the scan's sensor with P_D pd in (0, 1] and
+ * clutter density lambda > 0 instead of its own (trk_pda_init's, for one
+ * track: the profiles). */
+static void pda_with(const struct trk_pda *sensor, trk_real pd, trk_real lambda, struct trk_pda *out)
 {
     *out = *sensor;
     out->params.pd = pd;
+    out->params.clutter_density = lambda;
     out->log_pd_norm = trk_log(pd) - TRK_REAL_C(0.5) * (trk_real)NZ * TRK_LN_2PI;
     out->log_miss = trk_log1p(-pd * sensor->params.gate_prob);
-    out->log_e0_param = trk_log(sensor->params.clutter_density) + out->log_miss;
+    out->log_e0_param = trk_log(lambda) + out->log_miss;
 }
 
 /* What the scan's sensor is to the track predicted at pr->x (see struct
- * pred): R, P_D and its PDA constants, the covariance bound (ratio^2 tr R,
+ * pred): R, P_D and lambda there in its PDA constants, the covariance bound (ratio^2 tr R,
  * with R at the prediction for a polar sensor). */
 static void pred_sensor(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
 {
     const struct trk_pda *sensor = &t->pda[scan->sensor_id];
     pr->r = sensor_r_at(t, scan, pr->x[X], pr->x[Y], pr->r_own);
     pr->pd = sensor_pd_at(t, scan, pr->x[X], pr->x[Y]);
+    const trk_real lambda = sensor_lambda_at(t, scan, pr->x[X], pr->x[Y]);
     pr->pda = sensor;
-    if (pr->pd > 0 && pr->pd != sensor->params.pd) {
-        pda_with_pd(sensor, pr->pd, &pr->pda_own);
+    if (pr->pd > 0 && (pr->pd != sensor->params.pd || lambda != sensor->params.clutter_density)) {
+        pda_with(sensor, pr->pd, lambda, &pr->pda_own);
         pr->pda = &pr->pda_own;
     }
     const trk_real ratio = t->params.max_pos_sigma_ratio;

@@ -97,7 +97,7 @@ static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
     trk_i_view_init(&t->ws.view, sp, scan->has_pose ? &scan->pose : &sp->pose);
-    t->ws.pd_scale = 1;
+    t->ws.pd_scale = t->ws.lambda_scale = 1;
 }
 
 /* Tracks that ended in the previous scan were shown once: free their slots. */

@@ -238,7 +238,8 @@ static int start_single(struct trk_tracker *t, struct slots *sl, const struct tr
                         const trk_real *r_j, struct trk_scan_report *rep)
 {
     if (!slot_possible(t, sl, rep)) return 0;
-    const trk_real psi0 = initial_existence(t, t->init_log_odds[scan->sensor_id].first + t->ws.log_lr[j]);
+    const trk_real psi0 = initial_existence(t, t->init_log_odds[scan->sensor_id].first + t->ws.log_lr[j] -
+                                                   sensor_log_lambda_ratio(t, scan, t->ws.x[j], t->ws.y[j]));
     struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
     if (!tr) return 0;
     const trk_real vv = t->params.init_speed_sigma_mps * t->params.init_speed_sigma_mps;
@@ -385,23 +386,28 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
 
 /* ln(P_D / lambda) of a new track's point at (x, y) of sensor s
  * (init_log_odds.second): with the scan sensor's P_D profile or coverage,
- * its P_D there (a candidate of an earlier scan seen from this scan's pose:
+ * or its clutter profile, its P_D and lambda there (a candidate of an earlier scan seen from this scan's pose:
  * the platform moves little between two scans against the profile's
  * scale). */
 static trk_real second_log_odds(const struct trk_tracker *t, const struct trk_scan *scan, unsigned s, trk_real x,
                                 trk_real y)
 {
-    if (s != scan->sensor_id || !t->ws.view.limited) return t->init_log_odds[s].second;
-    return t->init_log_odds[s].second + trk_log(sensor_pd_at(t, scan, x, y)) - trk_log(t->pda[s].params.pd);
+    if (s != scan->sensor_id || (!t->ws.view.limited && !t->ws.view.clutter_varies)) return t->init_log_odds[s].second;
+    return t->init_log_odds[s].second + trk_log(sensor_pd_at(t, scan, x, y)) - trk_log(t->pda[s].params.pd) -
+           sensor_log_lambda_ratio(t, scan, x, y);
 }
 
-/* ln O of a pair: its first point candidate c (of run), its second point's
+/* ln O of a pair: its first point candidate c (of run; its ln(beta l^a /
+ * lambda), lambda at c as second_log_odds takes it), its second point's
  * ln(P_D l^a / lambda) in second, dt apart (trk_init_params). */
-static trk_real pair_log_odds(const struct trk_tracker *t, const struct trk_i_cand_run *run,
-                              const struct trk_candidate *c, trk_real second, trk_real dt)
+static trk_real pair_log_odds(const struct trk_tracker *t, const struct trk_scan *scan,
+                              const struct trk_i_cand_run *run, const struct trk_candidate *c, trk_real second,
+                              trk_real dt)
 {
     const trk_real pi = TRK_REAL_C(3.14159265358979323846), vdt = t->params.init.max_speed_mps * dt;
-    return t->init_log_odds[run->sensor_id].first + c->log_lr + second - trk_log(pi * vdt * vdt);
+    const trk_real first = t->init_log_odds[run->sensor_id].first -
+                           (run->sensor_id == scan->sensor_id ? sensor_log_lambda_ratio(t, scan, c->x_m, c->y_m) : 0);
+    return first + c->log_lr + second - trk_log(pi * vdt * vdt);
 }
 
 /* The three-point ln O (trk_init_params) of workspace detection j (R_j
@@ -437,7 +443,7 @@ static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_sca
     const trk_real pi = TRK_REAL_C(3.14159265358979323846);
     const trk_real hit = second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j] -
                          trk_log(2 * pi) - TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
-    return pair_log_odds(t, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr, dt_pc) +
+    return pair_log_odds(t, scan, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr, dt_pc) +
            hit;
 }
 
@@ -460,7 +466,7 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
     /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v, or
      * the three points' when c ended a refused pair that j continues */
     const trk_real log_odds =
-        pair_log_odds(t, run, c, second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j], dt);
+        pair_log_odds(t, scan, run, c, second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j], dt);
     const trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt);
     const trk_real psi0 = initial_existence(t, log_odds3 > -TRK_REAL_MAX ? log_odds3 : log_odds);
     const trk_real z_c[NZ] = {c->x_m, c->y_m}, z_j[NZ] = {t->ws.x[j], t->ws.y[j]};

@@ -108,6 +108,23 @@ TRK_INLINE trk_real sensor_pd_at(const struct trk_tracker *t, const struct trk_s
     return t->ws.view.sp->pd_profile.n > 0 ? pd * t->ws.pd_scale : pd; /* a thinned scan's factor */
 }
 
+/* lambda of the scan's sensor at (x, y): its clutter profile (scaled as
+ * the scan's thinning scaled lambda), else its PDA's. */
+TRK_INLINE trk_real sensor_lambda_at(const struct trk_tracker *t, const struct trk_scan *scan, trk_real x, trk_real y)
+{
+    if (!t->ws.view.clutter_varies) return t->pda[scan->sensor_id].params.clutter_density;
+    return trk_i_view_clutter(&t->ws.view, x, y) * t->ws.lambda_scale;
+}
+
+/* ln(lambda(x, y) / lambda_sensor) of the scan's sensor: what a new track's
+ * initial odds (init_log_odds, over the sensor's lambda) lose at (x, y). */
+TRK_INLINE trk_real sensor_log_lambda_ratio(const struct trk_tracker *t, const struct trk_scan *scan, trk_real x,
+                                            trk_real y)
+{
+    if (!t->ws.view.clutter_varies) return 0;
+    return trk_log(sensor_lambda_at(t, scan, x, y)) - trk_log(t->pda[scan->sensor_id].params.clutter_density);
+}
+
 /* R of the scan's sensor for a track predicted at (x, y): a polar
  * sensor's conversion covariance there (trk_polar_cov), but sigma_r^2 I
  * nearer than sigma_r / sigma_b (where the cross-range spread falls below

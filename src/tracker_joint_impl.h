@@ -55,7 +55,9 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
     const struct trk_pda *pda = pr.pda;
     const trk_real psi = joint_psi(t, tr);
     if (psi > 0) {
-        const trk_real base = trk_log(psi) - t->log_clutter_density[scan->sensor_id];
+        const trk_real log_lambda = t->ws.view.clutter_varies ? trk_log(pda->params.clutter_density)
+                                                              : t->log_clutter_density[scan->sensor_id];
+        const trk_real base = trk_log(psi) - log_lambda; /* lambda at the track (its profile) */
         for (size_t i = 0; i < set.n; i++) set.w[i] += base;
         t->ws.miss[k] = trk_log1p(-pda->params.pd * pda->params.gate_prob * psi);
     } else { /* a track that cannot exist takes nothing */

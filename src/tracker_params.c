@@ -74,12 +74,13 @@ void trk_tracker_mn_kn_params(struct trk_tracker_params *p)
  * (no stdio to format them): one row per index, rows up to TRK_MAX_SENSORS
  * (in blocks of up to twice the rows needed above 2). */
 enum { F_PD, F_COV, F_DENSITY, F_USE_AMP, F_AMP, F_KIND, F_SIGMA_R, F_SIGMA_B, F_CONV, F_POSE, F_PROFILE, F_COVER,
-       N_SENSOR_FIELDS };
+       F_CLUTTER_PROFILE, N_SENSOR_FIELDS };
 #define ROW(i)                                                                                      \
     {"sensor[" #i "].pd", "sensor[" #i "].meas_cov_m2", "sensor[" #i "].clutter_density_per_m2",       \
      "sensor[" #i "].use_amplitude", "sensor[" #i "].amplitude", "sensor[" #i "].kind",                \
      "sensor[" #i "].sigma_range_m", "sensor[" #i "].sigma_bearing_rad", "sensor[" #i "].conversion",  \
-     "sensor[" #i "].pose", "sensor[" #i "].pd_profile", "sensor[" #i "].coverage"},
+     "sensor[" #i "].pose", "sensor[" #i "].pd_profile", "sensor[" #i "].coverage",                   \
+     "sensor[" #i "].clutter_profile"},
 #define ROWS10(d) ROW(d##0) ROW(d##1) ROW(d##2) ROW(d##3) ROW(d##4) ROW(d##5) ROW(d##6) ROW(d##7) ROW(d##8) ROW(d##9)
 static const char *const sensor_field[][N_SENSOR_FIELDS] = {
     ROW(0)
@@ -228,7 +229,9 @@ static trk_status check_polar(const struct trk_sensor_params *sp, const char *co
 
 /* Where the sensor sees: its fixed pose (finite, in the surveillance
  * bound), its P_D profile (points in range order, P_D in [0, 1]; not with
- * an amplitude model, whose P_D is its threshold's) and its coverage. */
+ * an amplitude model, whose P_D is its threshold's), its clutter profile
+ * (points in range order, lambda in (0, 1e6] per m^2; parametric clutter
+ * only) and its coverage. */
 static trk_status check_view(const struct trk_tracker_params *p, const struct trk_sensor_params *sp,
                              const char *const *name, const char **field)
 {
@@ -246,6 +249,18 @@ static trk_status check_view(const struct trk_tracker_params *p, const struct tr
             const trk_real lo = k == 0 ? 0 : pr->range_m[k - 1];
             if ((st = check_real(pr->range_m[k], lo, k > 0, TRK_MAX_COORD_M_LIMIT, name[F_PROFILE], field)) != TRK_OK ||
                 (st = check_real(pr->pd[k], 0, 0, 1, name[F_PROFILE], field)) != TRK_OK)
+                return st;
+        }
+    }
+    const struct trk_clutter_profile *cp = &sp->clutter_profile;
+    if (cp->n != 0) {
+        if (cp->n < 2 || cp->n > TRK_PD_PROFILE_MAX) return refuse(field, name[F_CLUTTER_PROFILE], TRK_E_RANGE);
+        if (p->clutter != TRK_CLUTTER_PARAMETRIC) return refuse(field, name[F_CLUTTER_PROFILE], TRK_E_UNSUPPORTED);
+        for (unsigned k = 0; k < cp->n; k++) {
+            const trk_real lo = k == 0 ? 0 : cp->range_m[k - 1];
+            if ((st = check_real(cp->range_m[k], lo, k > 0, TRK_MAX_COORD_M_LIMIT, name[F_CLUTTER_PROFILE], field)) !=
+                    TRK_OK ||
+                (st = check_real(cp->density_per_m2[k], 0, 1, TRK_REAL_C(1e6), name[F_CLUTTER_PROFILE], field)) != TRK_OK)
                 return st;
         }
     }

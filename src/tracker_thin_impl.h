@@ -250,6 +250,7 @@ static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thi
     }
     saved->dl = th->dl;
     t->ws.pd_scale = th->pd / t->pda_saved.params.pd;
+    t->ws.lambda_scale = t->pda_saved.params.clutter_density > 0 ? th->lambda / t->pda_saved.params.clutter_density : 1;
     for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] += th->dl;
 #if TRK_WITH_JOINT
     saved->log_lambda = t->log_clutter_density[s];
@@ -262,7 +263,7 @@ static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thi
 static void thin_restore(struct trk_tracker *t, unsigned s, const struct thin_saved *saved)
 {
     t->pda[s] = t->pda_saved;
-    t->ws.pd_scale = 1;
+    t->ws.pd_scale = t->ws.lambda_scale = 1;
     for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] -= saved->dl;
 #if TRK_WITH_JOINT
     t->log_clutter_density[s] = saved->log_lambda;

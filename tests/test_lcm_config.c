@@ -421,6 +421,9 @@ static void test_polar_keys(void **state)
     assert_true(sp->pd_profile.range_m[0] == 0 && sp->pd_profile.pd[0] == TRK_REAL_C(0.75));
     assert_true(sp->pd_profile.range_m[1] == 1000 && sp->pd_profile.pd[1] == TRK_REAL_C(0.5));
     assert_true(sp->pd_profile.range_m[2] == 2500 && sp->pd_profile.pd[2] == TRK_REAL_C(0.125));
+    assert_int_equal(set("sensor.0.clutter_profile", "500:1e-6, 8000:2e-8"), 0);
+    assert_true(sp->clutter_profile.n == 2 && sp->clutter_profile.range_m[1] == 8000 &&
+                sp->clutter_profile.density_per_m2[0] == TRK_REAL_C(1e-6));
     assert_int_equal(set("sensor.0.coverage.min_range_m", "20"), 0);
     assert_int_equal(set("sensor.0.coverage.max_range_m", "3000"), 0);
     assert_int_equal(set("sensor.0.coverage.half_width_rad", "1.5"), 0);
@@ -443,6 +446,7 @@ static void test_polar_keys(void **state)
     fclose(f);
     buf1[n1] = 0;
     assert_non_null(strstr(buf1, "sensor.0.pd_profile = 0:0.75, 1000:0.5, 2500:0.125\n"));
+    assert_non_null(strstr(buf1, "sensor.0.clutter_profile = 500:1e-06, 8000:2e-08\n"));
     assert_non_null(strstr(buf1, "sensor.0.kind = polar\n"));
     assert_non_null(strstr(buf1, "sensor.0.conversion = unbiased\n"));
     assert_non_null(strstr(buf1, "sensor.0.pose.heading_rad = -1.25\n"));
@@ -460,6 +464,8 @@ static void test_polar_keys(void **state)
     /* "none" clears the profile */
     assert_int_equal(set("sensor.0.pd_profile", "none"), 0);
     assert_int_equal(sp->pd_profile.n, 0);
+    refused("sensor.0.clutter_profile", "500:1e-6, 8000:0", "density 0 must be in (0, 1e6]");
+    assert_int_equal(sp->clutter_profile.n, 2);
     /* refusals, the field untouched */
     refused("sensor.0.kind", "sonar", "must be one of: cartesian polar");
     assert_int_equal(sp->kind, TRK_SENSOR_POLAR);

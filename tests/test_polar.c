@@ -154,6 +154,16 @@ static void test_pd_at(void **state)
     sp.coverage.half_width_rad = 0;
     TRK_ASSERT_NEAR(trk_sensor_pd_at(&sp, &o, 1000 - 3000, 500), 0.8 - 0.4 / 6, 1e-12, TRK_TOL(1e-12, 1e-6));
     assert_true(isnan(trk_sensor_pd_at(NULL, &o, 0, 0)));
+    /* the clutter profile: interpolated, flat beyond its ends; none: the density */
+    sp.clutter_density_per_m2 = TRK_REAL_C(2e-7);
+    TRK_ASSERT_NEAR(trk_sensor_clutter_at(&sp, &o, 1000 + 3000, 500), 2e-7, 0, TRK_TOL(1e-15, 1e-7));
+    sp.clutter_profile.n = 2;
+    sp.clutter_profile.range_m[0] = 1000, sp.clutter_profile.density_per_m2[0] = TRK_REAL_C(1e-6);
+    sp.clutter_profile.range_m[1] = 5000, sp.clutter_profile.density_per_m2[1] = TRK_REAL_C(2e-7);
+    TRK_ASSERT_NEAR(trk_sensor_clutter_at(&sp, &o, 1000 + 3000, 500), 6e-7, 1e-20, TRK_TOL(1e-12, 1e-6));
+    TRK_ASSERT_NEAR(trk_sensor_clutter_at(&sp, &o, 1000 - 500, 500), 1e-6, 0, TRK_TOL(1e-15, 1e-7));
+    TRK_ASSERT_NEAR(trk_sensor_clutter_at(&sp, &o, 1000 + 9000, 500), 2e-7, 0, TRK_TOL(1e-15, 1e-7));
+    assert_true(isnan(trk_sensor_clutter_at(&sp, NULL, 0, 0)));
 }
 
 /* Each refused sensor field by name. */
@@ -205,6 +215,14 @@ static void test_params(void **state)
     q.sensor[0].pd_profile.n = 2, q.sensor[0].pd_profile.range_m[1] = 200;
     q.sensor[0].pd_profile.pd[0] = q.sensor[0].pd_profile.pd[1] = TRK_REAL_C(0.5);
     check_refused(&q, "sensor[0].pd_profile", TRK_E_UNSUPPORTED);
+    q = p, q.sensor[0].clutter_profile.n = 2, q.sensor[0].clutter_profile.range_m[1] = 100;
+    q.sensor[0].clutter_profile.density_per_m2[0] = q.sensor[0].clutter_profile.density_per_m2[1] = TRK_REAL_C(1e-6);
+    TRK_ASSERT_OK(trk_tracker_check_params(&q, NULL));
+    q.sensor[0].clutter_profile.density_per_m2[1] = 0;
+    check_refused(&q, "sensor[0].clutter_profile", TRK_E_RANGE);
+    q.sensor[0].clutter_profile.density_per_m2[1] = TRK_REAL_C(1e-6);
+    q.clutter = TRK_CLUTTER_NONPARAMETRIC, q.association = TRK_ASSOC_PDA;
+    check_refused(&q, "sensor[0].clutter_profile", TRK_E_UNSUPPORTED);
     q = p, q.filter = TRK_FILTER_ALPHA_BETA;
     check_refused(&q, "filter", TRK_E_UNSUPPORTED);
 }

@@ -14,7 +14,9 @@
  *     conversion's covariance at its predicted position, at the first scan
  *     its predicted trace is over it;
  *   - nothing starts outside the coverage; malformed polar detections are
- *     counted, malformed polar scans refused. */
+ *     counted, malformed polar scans refused;
+ *   - with a clutter profile, a lone track's beta0 is the PDA's closed form
+ *     with lambda and P_D at its predicted position, at two ranges. */
 #include "trk_test.h"
 #include "trk/kalman.h"
 #include "trk/tracker.h"
@@ -368,6 +370,62 @@ static void test_coverage_and_bad_input(void **state)
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk_b, &s, &rep), TRK_E_ARG); /* polar to a Cartesian sensor */
 }
 
+/* A clutter profile: the PDA's beta0 of a lone track (per-track PDA) is
+ * lambda (1 - P_D P_G) / (lambda (1 - P_D P_G) + P_D N(nu; 0, S)) with
+ * lambda and P_D the profiles' at its predicted position and S with the
+ * conversion's R there, at two ranges. */
+static void test_clutter_profile_beta0(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    polar_params(&p);
+    p.association = TRK_ASSOC_PDA;
+    struct trk_clutter_profile *cp = &p.sensor[0].clutter_profile;
+    cp->n = 2;
+    cp->range_m[0] = 500, cp->density_per_m2[0] = TRK_REAL_C(1e-6);
+    cp->range_m[1] = 8000, cp->density_per_m2[1] = TRK_REAL_C(1e-8);
+    TRK_ASSERT_OK(trk_tracker_init(&tk_a, &p));
+    const struct trk_pose o = {0, 0, 0};
+    const double tx[2] = {200, -400}, ty[2] = {1200, 6000};
+    uint64_t rng = 51;
+    for (int k = 0; k < 12; k++) {
+        struct trk_polar_detection pd[2];
+        for (int t = 0; t < 2; t++) pd[t] = seen(&o, tx[t], ty[t], &rng);
+        const struct trk_scan s = polar_scan(k, &o, 2, pd);
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &s, NULL));
+    }
+    const struct trk_track *tr[2];
+    trk_real x[2][TRK_CV2_NX], pp[2][TRK_CV2_NX * TRK_CV2_NX];
+    struct trk_polar_detection pd[2];
+    for (int t = 0; t < 2; t++) {
+        tr[t] = track_near(&tk_a, tx[t], ty[t], 300);
+        assert_non_null(tr[t]);
+        memcpy(x[t], tr[t]->x, sizeof x[t]);
+        memcpy(pp[t], tr[t]->p, sizeof pp[t]);
+        TRK_ASSERT_OK(trk_cv2_predict((trk_real)DT_S, p.process_noise_q, x[t], pp[t]));
+        pd[t] = seen(&o, tx[t] + 20, ty[t] - 10, NULL);
+    }
+    const struct trk_scan s = polar_scan(12, &o, 2, pd);
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &s, NULL));
+    double lambda_at[2];
+    for (int t = 0; t < 2; t++) {
+        struct trk_detection d;
+        trk_real r[3];
+        TRK_ASSERT_OK(trk_polar_to_cartesian(&p.sensor[0], &o, &pd[t], &d));
+        trk_polar_cov(&p.sensor[0], d.x_m, d.y_m, r); /* the detection's own R */
+        const double sxx = pp[t][TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)] + r[0], sxy = pp[t][TRK_CV2_P(TRK_CV2_X, TRK_CV2_Y)] + r[1];
+        const double syy = pp[t][TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)] + r[2], det = sxx * syy - sxy * sxy;
+        const double nx = d.x_m - x[t][TRK_CV2_X], ny = d.y_m - x[t][TRK_CV2_Y];
+        const double d2 = (syy * nx * nx - 2 * sxy * nx * ny + sxx * ny * ny) / det;
+        const double g = exp(-0.5 * d2) / (2 * 3.14159265358979323846 * sqrt(det));
+        const double pdv = trk_sensor_pd_at(&p.sensor[0], &o, x[t][TRK_CV2_X], x[t][TRK_CV2_Y]);
+        lambda_at[t] = trk_sensor_clutter_at(&p.sensor[0], &o, x[t][TRK_CV2_X], x[t][TRK_CV2_Y]);
+        const double e0 = lambda_at[t] * (1 - pdv * p.gate_prob);
+        TRK_ASSERT_NEAR(tr[t]->beta0_last, e0 / (e0 + pdv * g), 0, TRK_TOL(1e-9, 1e-3));
+    }
+    assert_true(lambda_at[0] > 3 * lambda_at[1]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -377,6 +435,7 @@ int main(void)
         cmocka_unit_test(test_out_of_sight),
         cmocka_unit_test(test_covariance_bound_at_position),
         cmocka_unit_test(test_coverage_and_bad_input),
+        cmocka_unit_test(test_clutter_profile_beta0),
     };
     trk_test_filter_from_env();
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -278,6 +278,17 @@ struct trk_pd_profile {
     trk_real pd[TRK_PD_PROFILE_MAX];       /**< each in [0, 1] */
 };
 
+/** A clutter-density profile over range from the sensor (e.g. a sonar's
+ * reverberation, falling with range; a polar sensor's uniform clutter in
+ * range and bearing, N / (w r) per m^2): lambda at range_m[k] is
+ * density_per_m2[k], linear between points, flat beyond the ends. n = 0: no
+ * profile, the sensor's clutter_density_per_m2 everywhere. */
+struct trk_clutter_profile {
+    unsigned n;                                    /**< points, 0 or 2 .. TRK_PD_PROFILE_MAX */
+    trk_real range_m[TRK_PD_PROFILE_MAX];          /**< strictly increasing, >= 0 */
+    trk_real density_per_m2[TRK_PD_PROFILE_MAX];   /**< each > 0 and finite */
+};
+
 /** Where a sensor can see: an annulus sector about the pose's heading.
  * Outside it the sensor's P_D is 0: a track there is predicted, not
  * gated, and not penalised for the scan (its existence only predicted,
@@ -318,6 +329,9 @@ struct trk_sensor_params {
     struct trk_pd_profile pd_profile;   /**< P_D over range from the pose (n = 0: pd everywhere);
                                            not with use_amplitude */
     struct trk_coverage coverage;       /**< where P_D is not 0 (all zero: everywhere) */
+    struct trk_clutter_profile clutter_profile; /**< lambda over range from the pose (n = 0:
+                                                   clutter_density_per_m2 everywhere);
+                                                   parametric clutter only */
 };
 
 /** Confirmation of a tentative track (one method per tracker). */
@@ -768,6 +782,7 @@ struct trk_i_view {
     /** @} */
     uint8_t sector;                      /**< 1: the coverage is a sector */
     uint8_t limited;                     /**< 1: P_D depends on the position */
+    uint8_t clutter_varies;              /**< 1: lambda depends on the position */
 };
 
 /** One scan's initiation candidates: cand[start, start + n) in the run's
@@ -828,6 +843,7 @@ struct trk_tracker {
         struct trk_i_view view;                                /**< the scan's sensor and pose */
         trk_real pd_scale;                                     /**< a thinned scan's P_D over the
                                                                   sensor's (its profile's factor) */
+        trk_real lambda_scale;                                 /**< the same for lambda */
         struct trk_i_grid grid;                                /**< gating's index of [0, n_shared), */
         uint16_t cell_end[TRK_MAX_DETECTIONS];                 /**< its cells' ends (after the
                                                                   updates: the merge's index) */
@@ -930,7 +946,9 @@ struct trk_tracker {
  *   "sensor[i].use_amplitude", "sensor[i].amplitude" (no usable model, or its
  *   P_D), "sensor[i].kind", "sensor[i].sigma_range_m", "sensor[i].sigma_bearing_rad",
  *   "sensor[i].conversion", "sensor[i].pose", "sensor[i].pd_profile" (also
- *   TRK_E_UNSUPPORTED with use_amplitude), "sensor[i].coverage", i the sensor
+ *   TRK_E_UNSUPPORTED with use_amplitude), "sensor[i].coverage",
+ *   "sensor[i].clutter_profile" (also TRK_E_UNSUPPORTED with nonparametric
+ *   clutter), i the sensor
  *   index; "filter" (also TRK_E_UNSUPPORTED: alpha-beta with a polar sensor);
  *   "confirm.method" (unknown, not built in, or a visibility method without
  *   track_visibility), "confirm.u.mn", "confirm.u.sprt", "confirm.u.chi2",
@@ -1008,6 +1026,14 @@ TRK_NODISCARD trk_status trk_polar_to_cartesian(const struct trk_sensor_params *
  * At the pose itself (dx = dy = 0) the covariance is singular (refused as
  * not SPD where used). */
 void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real dy_m, trk_real cov_m2[3]);
+
+/** The clutter density of sensor sp at (x_m, y_m) with the sensor at pose:
+ * its clutter profile at the range (linear, flat beyond the ends), else its
+ * clutter_density_per_m2. The tracker takes each track's lambda from this
+ * function at its predicted position and each new track's at its
+ * detections. NaN for NULL pointers. */
+trk_real trk_sensor_clutter_at(const struct trk_sensor_params *sp, const struct trk_pose *pose, trk_real x_m,
+                               trk_real y_m);
 
 /** The detection probability of sensor sp at (x_m, y_m) with the sensor at
  * pose: 0 outside its coverage, else its P_D profile at the range (linear,

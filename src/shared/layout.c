@@ -114,6 +114,7 @@ static const struct layout_row sensor_rows[] = {
     ROW(S, pose, 's', struct trk_pose, 1, "pose", "", "the pose of a scan without its own"),
     ROW(S, pd_profile, 's', struct trk_pd_profile, 1, "pd_profile", "", "n 0: pd everywhere"),
     ROW(S, coverage, 's', struct trk_coverage, 1, "coverage", "", "all 0: everywhere"),
+    ROW(S, clutter_profile, 's', struct trk_clutter_profile, 1, "clutter_profile", "", "n 0: clutter_density_per_m2 everywhere"),
 };
 #undef S
 
@@ -132,6 +133,14 @@ static const struct layout_row pd_profile_rows[] = {
     REAL(F, pd, TRK_PD_PROFILE_MAX, "", "[0, 1]"),
 };
 #undef F
+
+#define L struct trk_clutter_profile
+static const struct layout_row clutter_profile_rows[] = {
+    ROW(L, n, 'u', unsigned, 1, "", "", "0, 2 .. TRK_PD_PROFILE_MAX"),
+    REAL(L, range_m, TRK_PD_PROFILE_MAX, "m", "increasing, >= 0"),
+    REAL(L, density_per_m2, TRK_PD_PROFILE_MAX, "1/m^2", "(0, 1e6]"),
+};
+#undef L
 
 #define V struct trk_coverage
 static const struct layout_row coverage_rows[] = {
@@ -272,6 +281,7 @@ static const struct layout_struct structs[] = {
     {"pose", sizeof(struct trk_pose), pose_rows, N(pose_rows)},
     {"pd_profile", sizeof(struct trk_pd_profile), pd_profile_rows, N(pd_profile_rows)},
     {"coverage", sizeof(struct trk_coverage), coverage_rows, N(coverage_rows)},
+    {"clutter_profile", sizeof(struct trk_clutter_profile), clutter_profile_rows, N(clutter_profile_rows)},
     {"polar_detection", sizeof(struct trk_polar_detection), polar_detection_rows, N(polar_detection_rows)},
     {"detection", sizeof(struct trk_detection), detection_rows, N(detection_rows)},
     {"scan", sizeof(struct trk_scan), scan_rows, N(scan_rows)},

@@ -269,6 +269,7 @@ static const char *const SENSOR_KEYS[] = {"pd",
                                           "pose.y_m",
                                           "pose.heading_rad",
                                           "pd_profile",
+                                          "clutter_profile",
                                           "coverage.min_range_m",
                                           "coverage.max_range_m",
                                           "coverage.half_width_rad",
@@ -328,16 +329,46 @@ static const struct range R_POSE = {-1e15, 1e15, 0, 0};
 static const struct range R_DIST = {0, 1e15, 0, 0};
 static const struct range R_HALF_WIDTH = {0, 3.141592653589793, 0, 0};
 
-/* "none", or "R:P, R:P, ..." (range m : P_D) with 2 .. TRK_PD_PROFILE_MAX
- * points, ranges >= 0 and increasing, P_D in [0, 1]: into *pr (untouched
- * on error). */
+/* A profile over range being read: "none", or "R:V, R:V, ..." (range m :
+ * value) with 2 .. TRK_PD_PROFILE_MAX points, ranges >= 0 and increasing;
+ * the values P_D in [0, 1] (density 0) or densities in (0, 1e6] per m^2
+ * (density 1). */
+struct points {
+    unsigned n;
+    trk_real range_m[TRK_PD_PROFILE_MAX], v[TRK_PD_PROFILE_MAX];
+};
+
+static int get_points(const char *v, int density, struct points *out, char *err, size_t n);
+
+/* sensor.N.pd_profile into *pr (untouched on error). */
 static int get_profile(const char *v, struct trk_pd_profile *pr, char *err, size_t n)
 {
-    struct trk_pd_profile t;
+    struct points t;
+    if (get_points(v, 0, &t, err, n) != 0) return -1;
+    memset(pr, 0, sizeof *pr);
+    pr->n = t.n;
+    for (unsigned i = 0; i < t.n; i++) pr->range_m[i] = t.range_m[i], pr->pd[i] = t.v[i];
+    return 0;
+}
+
+/* sensor.N.clutter_profile into *cp (untouched on error). */
+static int get_clutter_profile(const char *v, struct trk_clutter_profile *cp, char *err, size_t n)
+{
+    struct points t;
+    if (get_points(v, 1, &t, err, n) != 0) return -1;
+    memset(cp, 0, sizeof *cp);
+    cp->n = t.n;
+    for (unsigned i = 0; i < t.n; i++) cp->range_m[i] = t.range_m[i], cp->density_per_m2[i] = t.v[i];
+    return 0;
+}
+
+static int get_points(const char *v, int density, struct points *out, char *err, size_t n)
+{
+    struct points t;
     memset(&t, 0, sizeof t);
     while (*v == ' ' || *v == '\t') v++;
     if (strcmp(v, "none") == 0) {
-        *pr = t;
+        *out = t;
         return 0;
     }
     const char *p = v;
@@ -360,22 +391,26 @@ static int get_profile(const char *v, struct trk_pd_profile *pr, char *err, size
             snprintf(err, n, "point %u: range %g m: ranges must be >= 0, <= 1e15 and increasing", t.n + 1, r);
             return -1;
         }
-        if (!in_range(d, R_PROB_CC)) {
+        if (!density && !in_range(d, R_PROB_CC)) {
             snprintf(err, n, "point %u: P_D %g must be in [0, 1]", t.n + 1, d);
             return -1;
         }
+        if (density && !(d > 0 && d <= 1e6)) {
+            snprintf(err, n, "point %u: density %g must be in (0, 1e6] per m^2", t.n + 1, d);
+            return -1;
+        }
         t.range_m[t.n] = (trk_real)r;
-        t.pd[t.n++] = (trk_real)d;
+        t.v[t.n++] = (trk_real)d;
         while (*p == ' ' || *p == '\t') p++;
         if (*p == 0) {
             if (t.n < 2) break;
-            *pr = t;
+            *out = t;
             return 0;
         }
         if (*p++ != ',') break;
     }
-    snprintf(err, n, "expected none, or 2 .. %d points RANGE_M:PD separated by commas (e.g. 0:0.9, 2000:0.3)",
-             TRK_PD_PROFILE_MAX);
+    snprintf(err, n, "expected none, or 2 .. %d points RANGE_M:%s separated by commas (e.g. %s)", TRK_PD_PROFILE_MAX,
+             density ? "DENSITY" : "PD", density ? "500:1e-6, 8000:2e-8" : "0:0.9, 2000:0.3");
     return -1;
 }
 
@@ -430,6 +465,7 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *full, const char *
     if (strcmp(key, "pose.y_m") == 0) return get_real(v, R_POSE, &sp->pose.y_m, err, n);
     if (strcmp(key, "pose.heading_rad") == 0) return get_real(v, R_HEADING, &sp->pose.heading_rad, err, n);
     if (strcmp(key, "pd_profile") == 0) return get_profile(v, &sp->pd_profile, err, n);
+    if (strcmp(key, "clutter_profile") == 0) return get_clutter_profile(v, &sp->clutter_profile, err, n);
     if (strcmp(key, "coverage.min_range_m") == 0) return get_real(v, R_DIST, &sp->coverage.min_range_m, err, n);
     if (strcmp(key, "coverage.max_range_m") == 0) return get_real(v, R_DIST, &sp->coverage.max_range_m, err, n);
     if (strcmp(key, "coverage.half_width_rad") == 0)
@@ -1027,6 +1063,15 @@ void tcfg_write(FILE *f, const struct tcfg *c)
             fprintf(f, "%s%s:%s", i ? ", " : "", r, d);
         }
         fputc('\n', f);
+        fprintf(f, "sensor.%u.clutter_profile = ", s);
+        if (sp->clutter_profile.n == 0) fputs("none", f);
+        for (unsigned i = 0; i < sp->clutter_profile.n; i++) {
+            char r[40], d[40];
+            shortest(r, sizeof r, (double)sp->clutter_profile.range_m[i]);
+            shortest(d, sizeof d, (double)sp->clutter_profile.density_per_m2[i]);
+            fprintf(f, "%s%s:%s", i ? ", " : "", r, d);
+        }
+        fputc('\n', f);
         snprintf(k, sizeof k, "sensor.%u.coverage.min_range_m", s);
         put_num(f, k, (double)sp->coverage.min_range_m);
         snprintf(k, sizeof k, "sensor.%u.coverage.max_range_m", s);
@@ -1105,12 +1150,14 @@ void tcfg_help(FILE *f)
             "                                    none; heading clockwise from north, [-2pi, 2pi] (0, 0, 0)\n"
             "  sensor.N.pd_profile = none|R:P, ...  P_D over range (m) from the pose, 2..%d points,\n"
             "                                    linear between them; not with an amplitude model (none)\n"
+            "  sensor.N.clutter_profile = none|R:D, ...  clutter density (1/m^2) over range from the\n"
+            "                                    pose, 2..%d points; parametric clutter only (none)\n"
             "  sensor.N.coverage.min_range_m, .max_range_m, .half_width_rad   where P_D is not 0:\n"
             "                                    ranges (max 0: no limit) and the sector's half width\n"
             "                                    about the heading, [0, pi] (0: all round) (0, 0, 0)\n"
             "Amplitude tables and q2 tables are read and checked at start-up; a bad one\n"
             "stops the program (exit status 2).\n",
-            TRK_MN_MAX_N, TRK_PD_PROFILE_MAX);
+            TRK_MN_MAX_N, TRK_PD_PROFILE_MAX, TRK_PD_PROFILE_MAX);
 #if TRK_WITH_IMM
     fprintf(f, "IMM tracks (this build: TRK_WITH_IMM = 1):\n"
                "  imm.turn_rate_dps = W             CV and coordinated turns at +-W deg/s (trk_tracker_imm_params),\n"

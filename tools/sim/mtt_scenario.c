@@ -737,6 +737,22 @@ static void sonar_sensor(struct mtt_scenario *s)
     }
     s->sonar_pd_mean = num / den;
     sp->pd = (trk_real)s->sonar_pd_mean;
+    /* The clutter's density over range per clutter point per scan, at the
+     * P_D profile's ranges (what the sonar's description says of its
+     * reverberation; the caller scales it by the points per scan): the
+     * uniform share in range x bearing, dN / (2 w r dr); the near-field
+     * rise, Exp(SONAR_NEAR_SCALE_M) beyond range_min_m over 2 w r; the
+     * patches' share spread over the sector (where they are is the clutter
+     * map's to find, not the sensor's description). */
+    const double w2 = 2 * p->half_width_deg * DEG;
+    sp->clutter_profile.n = MTT_SONAR_PD_POINTS;
+    for (int k = 0; k < MTT_SONAR_PD_POINTS; k++) {
+        const double r = (double)sp->pd_profile.range_m[k];
+        const double uni = (1 - SONAR_PATCH_SHARE - SONAR_NEAR_SHARE) / (w2 * (p->range_max_m - p->range_min_m) * r);
+        const double near = SONAR_NEAR_SHARE * exp(-(r - p->range_min_m) / SONAR_NEAR_SCALE_M) / (SONAR_NEAR_SCALE_M * w2 * r);
+        sp->clutter_profile.range_m[k] = (trk_real)r;
+        sp->clutter_profile.density_per_m2[k] = (trk_real)(uni + near + SONAR_PATCH_SHARE / s->area_m2);
+    }
     /* meas_cov_m2 is unused by a polar sensor: the conversion's covariance
      * straight ahead at mid-range as a stand-in (SPD) */
     trk_polar_cov(sp, 0, (trk_real)(0.5 * (p->range_min_m + p->range_max_m)), sp->meas_cov_m2);

@@ -256,6 +256,11 @@ static int build_params(int kind, const struct mtt_scenario *sc, double lambda, 
             memset(&p.sensor[0].coverage, 0, sizeof p.sensor[0].coverage);
             p.sensor[0].pd = (trk_real)sc->sonar_pd_mean;
         }
+        /* the clutter profile per point, times the points per scan (none at
+         * clutter 0, or for cart: the sector's mean lambda everywhere) */
+        struct trk_clutter_profile *cp = &p.sensor[0].clutter_profile;
+        if (kind == CFG_CART || !(lambda * sc->area_m2 > 0.5)) memset(cp, 0, sizeof *cp);
+        for (unsigned k = 0; k < cp->n; k++) cp->density_per_m2[k] *= (trk_real)(lambda * sc->area_m2);
     } else {
         p.sensor[0].pd = (trk_real)sc->p.pd;
         p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = (trk_real)(sg * sg);
