@@ -164,7 +164,10 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
         rep->n_covariance++;
         return;
     }
-    if (!look.seen) return; /* out of the sensor's sight: no look, no test step */
+    if (!look.seen) { /* out of the sensor's sight: no look, no test step; a tentative */
+        if (tr->status == TRK_TRACK_TENTATIVE) end_track(tr, TRK_END_REJECTED, rep); /* track can never */
+        return;                                                                       /* be confirmed there */
+    }
     tr->n_scans++;
     if (look.detected) {
         tr->n_hits++;

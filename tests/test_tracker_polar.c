@@ -9,7 +9,8 @@
  *     the profile's P_D at its predicted position, at two ranges;
  *   - a track out of the sensor's sight (the platform turned away) is only
  *     predicted: existence delta^K pv, no miss counted, no test stepped; it
- *     continues under its id when seen again;
+ *     continues under its id when seen again; a tentative track out of
+ *     sight ends (rejected);
  *   - a coasting track ends on the covariance bound ratio^2 tr R with R the
  *     conversion's covariance at its predicted position, at the first scan
  *     its predicted trace is over it;
@@ -269,6 +270,23 @@ static void test_out_of_sight(void **state)
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk_b, &s, NULL));
     }
     assert_null(track_near(&tk_b, tx, ty, 1000));
+    /* a tentative track out of sight ends at once (rejected): two points
+     * north make it, then the platform looks east */
+    TRK_ASSERT_OK(trk_tracker_init(&tk_b, &p));
+    for (k = 0; k < 2; k++) {
+        const struct trk_polar_detection d = seen(&north, tx, ty, NULL);
+        const struct trk_scan s = polar_scan(k, &north, 1, &d);
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk_b, &s, NULL));
+    }
+    const struct trk_track *tent = trk_tracker_track(&tk_b, 0);
+    assert_non_null(tent);
+    assert_int_equal(tent->status, TRK_TRACK_TENTATIVE);
+    const struct trk_scan se = polar_scan(k, &east, 0, NULL);
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk_b, &se, &rep));
+    assert_int_equal(tent->status, TRK_TRACK_TERMINATED);
+    assert_int_equal(tent->end_reason, TRK_END_REJECTED);
+    assert_int_equal(rep.n_terminated, 1);
 }
 
 /* ratio^2 tr R at (x, y) from pose o (R the first-order conversion's). */

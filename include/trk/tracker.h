@@ -22,8 +22,10 @@
  * about the heading): a track's P_D is the sensor's at its predicted
  * position (trk_sensor_pd_at) wherever P_D enters its update (PDA and joint
  * weights, existence) and a new track's at its detections (initiation's
- * existence); where P_D is 0 a track is predicted and not gated, its
- * existence only predicted, its tests not stepped, and nothing starts.
+ * existence); where P_D is 0 a confirmed track is predicted and not gated,
+ * its existence only predicted, its tests not stepped; a tentative track
+ * there ends (TRK_END_REJECTED: it could never be confirmed), and nothing
+ * starts. A clutter profile over range does the same for lambda.
  *
  * One scan, trk_tracker_process_scan():
  *   1. validate the scan (at most TRK_MAX_SCAN_DETECTIONS, time order,
@@ -627,7 +629,8 @@ enum trk_track_status {
 /** Why a track ended (valid when status is TRK_TRACK_TERMINATED). */
 enum trk_track_end {
     TRK_END_NONE = 0,
-    TRK_END_REJECTED,     /**< tentative track failed its confirmation test */
+    TRK_END_REJECTED,     /**< tentative track failed its confirmation test, or went out of
+                             the sensor's sight (P_D 0 at its prediction) */
     TRK_END_TENTATIVE_AGE,/**< tentative longer than max_tentative_scans */
     TRK_END_TERMINATED,   /**< confirmed track's termination test fired */
     TRK_END_NUMERICAL,    /**< covariance lost positive definiteness */
