@@ -74,16 +74,24 @@ static void test_two_point_start(void **state)
     assert_non_null(tr);
     assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
     const double tol = TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12;
-    TRK_ASSERT_NEAR(tr->x[X], 140, 0, tol);
-    TRK_ASSERT_NEAR(tr->x[Y], 220, 0, tol);
-    TRK_ASSERT_NEAR(tr->x[VX], 10, 0, tol);
-    TRK_ASSERT_NEAR(tr->x[VY], 5, 0, tol);
-    TRK_ASSERT_NEAR(tr->p[P(X, X)], 25, 0, tol);
-    TRK_ASSERT_NEAR(tr->p[P(X, VX)], 25 / SCAN_S, 0, tol);
-    TRK_ASSERT_NEAR(tr->p[P(VX, X)], 25 / SCAN_S, 0, tol);
-    TRK_ASSERT_NEAR(tr->p[P(VX, VX)], 50 / (SCAN_S * SCAN_S), 0, tol);
-    TRK_ASSERT_NEAR(tr->p[P(VY, VY)], 50 / (SCAN_S * SCAN_S), 0, tol);
-    assert_true(tr->p[P(X, Y)] == 0 && tr->p[P(X, VY)] == 0 && tr->p[P(VX, VY)] == 0);
+    /* two-point differencing (x = z_j, v = dz / dt, P_pp = R, P_pv = R / dt,
+     * P_vv = 2 R / dt^2 per axis), then the velocity prior N(0, s^2) fused
+     * per axis in closed form: g = P_vv / (P_vv + s^2), v' = (1 - g) v,
+     * x' = x - (P_pv / (P_vv + s^2)) v, P'_vv = P_vv s^2 / (P_vv + s^2),
+     * P'_pv = P_pv s^2 / (P_vv + s^2), P'_pp = P_pp - P_pv^2 / (P_vv + s^2) */
+    const double s2 = p.init_speed_sigma_mps * p.init_speed_sigma_mps, ppp = 25, ppv = 25 / SCAN_S,
+                 pvv = 50 / (SCAN_S * SCAN_S), den = pvv + s2;
+    TRK_ASSERT_NEAR(tr->x[X], 140 - ppv / den * 10, 0, tol);
+    TRK_ASSERT_NEAR(tr->x[Y], 220 - ppv / den * 5, 0, tol);
+    TRK_ASSERT_NEAR(tr->x[VX], 10 * s2 / den, 0, tol);
+    TRK_ASSERT_NEAR(tr->x[VY], 5 * s2 / den, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(X, X)], ppp - ppv * ppv / den, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(X, VX)], ppv * s2 / den, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(VX, X)], ppv * s2 / den, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(VX, VX)], pvv * s2 / den, 0, tol);
+    TRK_ASSERT_NEAR(tr->p[P(VY, VY)], pvv * s2 / den, 0, tol);
+    assert_true(trk_fabs(tr->p[P(X, Y)]) < 1e-12 && trk_fabs(tr->p[P(X, VY)]) < 1e-12 &&
+                trk_fabs(tr->p[P(VX, VY)]) < 1e-12);
     const double odds = beta / lambda * pd / (lambda * 3.14159265358979323846 * pow(vmax * SCAN_S, 2));
     TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
     TRK_ASSERT_NEAR(tr->vis.pv, tr->existence0, 0, 0);
@@ -132,7 +140,8 @@ static void test_velocity_gate_and_lifetime(void **state)
     assert_int_equal(rep.n_started, 1);
     const struct trk_track *tr = only_live_track();
     assert_non_null(tr);
-    TRK_ASSERT_NEAR(tr->x[VX], 50 / (2 * SCAN_S), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
+    const double pvv = 50 / (4 * SCAN_S * SCAN_S), s2 = p.init_speed_sigma_mps * p.init_speed_sigma_mps;
+    TRK_ASSERT_NEAR(tr->x[VX], 50 / (2 * SCAN_S) * s2 / (pvv + s2), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
 }
 
 /* A target followed with P_D 1 from scan 0; n_fresh new "clutter pairs" per

@@ -68,7 +68,8 @@
  *      two-point (default): a detection that pairs with a candidate, an
  *      unexplained detection of a recent scan within the velocity gate,
  *      starts a tentative track whose velocity and covariance come from the
- *      two points; the others become candidates (a bounded store of
+ *      two points with the velocity prior init_speed_sigma_mps fused in; the
+ *      others become candidates (a bounded store of
  *      TRK_MAX_CANDIDATES, config.h). Single-point: every such detection
  *      starts a track (velocity from a zero-mean prior).
  *      A new track takes a free slot, else the slot of the weakest tentative
