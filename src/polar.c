@@ -88,7 +88,9 @@ trk_status trk_polar_to_cartesian(const struct trk_sensor_params *sp, const stru
     const trk_real dx = k * pd->range_m * trk_sin(b), dy = k * pd->range_m * trk_cos(b);
     d->x_m = pose->x_m + dx;
     d->y_m = pose->y_m + dy;
-    trk_polar_cov(sp, dx, dy, d->cov_m2);
+    /* from the offset of the position as stored: the covariance the tracker
+     * derives again from it, bit for bit */
+    trk_polar_cov(sp, d->x_m - pose->x_m, d->y_m - pose->y_m, d->cov_m2);
     d->has_cov = 1;
     d->has_amplitude = pd->has_amplitude;
     d->amplitude = pd->amplitude;

@@ -28,10 +28,7 @@ static const struct trk_detection *scan_detection(const struct trk_tracker *t, c
     const struct trk_i_view *v = &t->ws.view;
     if (scan->polar) {
         const trk_status st = trk_polar_to_cartesian(v->sp, &v->pose, &scan->polar[i], tmp);
-        if (st == TRK_OK) { /* its covariance as det_cov derives it again from the position */
-            trk_polar_cov(v->sp, tmp->x_m - v->pose.x_m, tmp->y_m - v->pose.y_m, tmp->cov_m2);
-            return tmp;
-        }
+        if (st == TRK_OK) return tmp; /* its covariance is the one det_cov derives from its position */
         if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
         else rep->n_rejected_region++;
         return NULL;

@@ -1011,7 +1011,8 @@ size_t trk_tracker_sizeof(void);
  * Cartesian detection the tracker uses (has_cov 1; its amplitude copied):
  * absolute bearing b = heading + bearing, position pose + k r (sin b, cos b)
  * with k = 1 (TRK_POLAR_FIRST_ORDER) or e^(sb^2 / 2) (TRK_POLAR_UNBIASED),
- * and the covariance of the conversion (trk_polar_cov). The tracker converts
+ * and the covariance of the conversion (trk_polar_cov of the stored
+ * position's offset from the pose). The tracker converts
  * a polar scan with this function. TRK_E_ARG NULL or not a polar sensor,
  * TRK_E_NAN non-finite input, TRK_E_RANGE range <= 0 or sigma out of range
  * (*d untouched on error). */

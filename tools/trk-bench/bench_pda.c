@@ -34,6 +34,12 @@
  *                     (trk/tracker.h "Scans beyond capacity"), alternating
  *                     with scan_64x256 in the same run; the ratio
  *                     scan_64x1024_vs_scan_64x256
+ *   scan_64x1024_polar  the scans of scan_64x1024 (1024 detections) as a polar
+ *                     sensor's (range and bearing from a sonar 2 km west,
+ *                     sigma_r 1 m, sigma_b 0.5 mrad: converted and gated with
+ *                     their own covariances by the tracker) against the same
+ *                     positions as Cartesian detections of one shared
+ *                     covariance, same run, and their ratio
  *   candidates_full   ns per scan of the initiation stage at full scan capacity
  *                     (TRK_MAX_DETECTIONS unexplained detections) and the store's bytes
  *   sizeof_tracker    bytes of struct trk_tracker at this build's capacities */
@@ -175,6 +181,7 @@ struct scan_job {
     struct trk_tracker tk;
     struct trk_detection det[N_SCANS][N_DET_OVER]; /* the first N_DET: scan_64x256's */
     struct trk_detection det_own[N_SCANS][N_DET];  /* the same with their own covariances */
+    struct trk_polar_detection polar[N_SCANS][N_DET_OVER]; /* det as the polar sensor sees them */
     struct trk_scan scan[N_SCANS];
     struct trk_scan_report rep;
     double n_updated; /* track updates in the timed scans (all repetitions) */
@@ -182,10 +189,14 @@ struct scan_job {
 
 /* The scans' configurations: the defaults (joint association), the same
  * with the per-track PDA, and the M/N path. */
-enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER, SCAN_AB, SCAN_OWN };
+enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER, SCAN_AB, SCAN_OWN, SCAN_POLAR };
 
 /* Detections per scan of a configuration. */
-static size_t scan_n_det(enum scan_cfg cfg) { return cfg == SCAN_OVER ? N_DET_OVER : N_DET; }
+static size_t scan_n_det(enum scan_cfg cfg) { return cfg == SCAN_OVER || cfg == SCAN_POLAR ? N_DET_OVER : N_DET; }
+
+/* The polar sensor of scan_64x1024_polar: 2 km west of the area. */
+#define POLAR_X_M (-2000.0)
+#define POLAR_Y_M 500.0
 
 static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
 {
@@ -198,6 +209,13 @@ static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
     }
     if (cfg == SCAN_PDA) p->association = TRK_ASSOC_PDA;
     if (cfg == SCAN_AB) p->filter = TRK_FILTER_ALPHA_BETA;
+    if (cfg == SCAN_POLAR) {
+        p->sensor[0].kind = TRK_SENSOR_POLAR;
+        p->sensor[0].sigma_range_m = 1;
+        p->sensor[0].sigma_bearing_rad = TRK_REAL_C(0.0005);
+        p->sensor[0].pose.x_m = (trk_real)POLAR_X_M;
+        p->sensor[0].pose.y_m = (trk_real)POLAR_Y_M;
+    }
     p->sensor[0].pd = TRK_REAL_C(0.9);
     p->sensor[0].clutter_density_per_m2 = (trk_real)((double)(scan_n_det(cfg) - N_TGT) / (1200.0 * 1200.0));
     p->process_noise_q = TRK_REAL_C(0.01);
@@ -253,16 +271,26 @@ static struct scan_job *scan_job_new(void)
             d->x_m = (trk_real)(-100 + 1200 * urand() + k);
             d->y_m = (trk_real)(-100 + 1200 * urand() + k);
         }
+    for (int k = 0; k < N_SCANS; k++) /* scan_64x1024_polar: range, bearing from the sensor */
+        for (int i = 0; i < N_DET_OVER; i++) {
+            const double ex = j->det[k][i].x_m - POLAR_X_M, ey = j->det[k][i].y_m - POLAR_Y_M;
+            j->polar[k][i].range_m = (trk_real)hypot(ex, ey);
+            j->polar[k][i].bearing_rad = (trk_real)atan2(ex, ey);
+        }
     return j;
 }
 
 /* One repetition: init, warm up (targets first, so all 64 tracks exist),
  * then the timed full scans; ns per scan, or -1. *n_conf: confirmed tracks
  * at the end. */
-static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, size_t n_det, int own, int *n_conf)
+static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, size_t n_det, enum scan_cfg cfg,
+                       int *n_conf)
 {
     if (trk_tracker_init(&j->tk, p) != TRK_OK) return -1;
-    for (int k = 0; k < N_SCANS; k++) j->scan[k].detections = own ? j->det_own[k] : j->det[k];
+    for (int k = 0; k < N_SCANS; k++) {
+        j->scan[k].detections = cfg == SCAN_POLAR ? NULL : cfg == SCAN_OWN ? j->det_own[k] : j->det[k];
+        j->scan[k].polar = cfg == SCAN_POLAR ? j->polar[k] : NULL;
+    }
     for (int k = 0; k < 4; k++) {
         j->scan[k].time_us = (int64_t)k * 1000000;
         j->scan[k].n_detections = N_TGT;
@@ -303,7 +331,7 @@ static void scan_bench(const char *const *names, const enum scan_cfg *cfg, int n
             struct trk_tracker_params p;
             scan_params(cfg[c], &p);
             j->n_updated = 0;
-            const double per = scan_rep(j, &p, scan_n_det(cfg[c]), cfg[c] == SCAN_OWN, &n_conf[c]);
+            const double per = scan_rep(j, &p, scan_n_det(cfg[c]), cfg[c], &n_conf[c]);
             if (per >= 0 && per < best[c]) best[c] = per;
             updated[c] += j->n_updated;
         }
@@ -402,6 +430,15 @@ TRK_BENCH(scan_64x256_own)
 {
     static const char *const names[] = {"scan_64x256_shared", "scan_64x256_own_cov"};
     static const enum scan_cfg cfg[] = {SCAN_DEFAULT, SCAN_OWN};
+    scan_bench(names, cfg, 2);
+}
+
+/* A polar sensor's 1024 detections per scan against the same positions
+ * with one shared covariance, alternating in the same run. */
+TRK_BENCH(scan_64x1024_polar)
+{
+    static const char *const names[] = {"scan_64x1024", "scan_64x1024_polar"};
+    static const enum scan_cfg cfg[] = {SCAN_OVER, SCAN_POLAR};
     scan_bench(names, cfg, 2);
 }
 
