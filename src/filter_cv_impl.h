@@ -17,7 +17,7 @@
  * positive definiteness is checked once it is known to be the posterior),
  * and its innovation (S = H P H' + R of the scan's sensor; TRK_E_NOT_SPD
  * when S is not positive definite). */
-static trk_status cv_predict(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
+static trk_status cv_predict(struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
                              struct pred *pr)
 {
     const trk_real dt = (trk_real)(scan->time_us - tr->time_us) * TRK_REAL_C(1e-6);

@@ -33,16 +33,16 @@ static void pda_with(const struct trk_pda *sensor, trk_real pd, trk_real lambda,
 /* What the scan's sensor is to the track predicted at pr->x (see struct
  * pred): R, P_D and lambda there in its PDA constants, the covariance bound (ratio^2 tr R,
  * with R at the prediction for a polar sensor). */
-static void pred_sensor(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
+static void pred_sensor(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
 {
     const struct trk_pda *sensor = &t->pda[scan->sensor_id];
-    pr->r = sensor_r_at(t, scan, pr->x[X], pr->x[Y], pr->r_own);
+    pr->r = sensor_r_at(t, scan, pr->x[X], pr->x[Y], t->ws.track_r);
     pr->pd = sensor_pd_at(t, scan, pr->x[X], pr->x[Y]);
     const trk_real lambda = sensor_lambda_at(t, scan, pr->x[X], pr->x[Y]);
     pr->pda = sensor;
     if (pr->pd > 0 && (pr->pd != sensor->params.pd || lambda != sensor->params.clutter_density)) {
-        pda_with(sensor, pr->pd, lambda, &pr->pda_own);
-        pr->pda = &pr->pda_own;
+        pda_with(sensor, pr->pd, lambda, &t->ws.track_pda);
+        pr->pda = &t->ws.track_pda;
     }
     const trk_real ratio = t->params.max_pos_sigma_ratio;
     pr->bound_m2 = ratio * ratio * (pr->r[S(ZX, ZX)] + pr->r[S(ZY, ZY)]);
@@ -55,7 +55,7 @@ static int pred_seen(const struct pred *pr) { return pr->pd > 0; }
 
 /* The prediction pr->x, pr->p checked, the sensor at it (pred_sensor), its
  * view for the PDA, and its innovation. */
-static trk_status pred_finish(const struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
+static trk_status pred_finish(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
 {
     const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
     if (st != TRK_OK) return st;

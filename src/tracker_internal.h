@@ -71,20 +71,21 @@ TRK_INLINE trk_status trk_i_cov2_unpack(const trk_real c[3], trk_real r[NZ * NZ]
 }
 
 /* One track's prediction for this scan, and the same as the PDA takes it
- * (pp and the pointers below point into this struct or the tracker: it is
- * filled in place and never copied). What the sensor is to this track: its
- * R (a polar sensor's at the predicted position, else the sensor's), its
- * P_D there (0: the sensor cannot see it this scan) with the PDA's
- * constants for it, and its covariance bound (0: none). */
+ * (pp points into this struct: it is filled in place and never copied).
+ * What the sensor is to this track: its R (a polar sensor's at the
+ * predicted position, else the sensor's), its P_D there (0: the sensor
+ * cannot see it this scan) with the PDA's constants for it (P_D and lambda
+ * at the track), and its covariance bound (0: none). A track's own R and
+ * PDA constants live in the workspace (ws.track_r, ws.track_pda: off the
+ * firmware's stack), valid until the next track's prediction: one track is
+ * predicted and updated at a time. */
 struct pred {
     trk_real x[NX], p[NX * NX], pht[NX * NZ];
     struct trk_innovation inn;
     struct trk_i_pda_pred pp;
-    const trk_real *r;          /* R: r_own or the sensor's */
-    trk_real r_own[NZ * NZ];
+    const trk_real *r;          /* R: ws.track_r or the sensor's */
     trk_real pd;                /* P_D at the prediction */
-    const struct trk_pda *pda;  /* the PDA's constants with that P_D: pda_own or the sensor's */
-    struct trk_pda pda_own;
+    const struct trk_pda *pda;  /* the PDA's constants there: ws.track_pda or the sensor's */
     trk_real bound_m2;          /* the covariance bound on tr P (max_pos_sigma_ratio) */
 #if TRK_WITH_ALPHA_BETA
     struct trk_cv_steady ab[2]; /* the alpha-beta filter's steady state per axis (x, y) */

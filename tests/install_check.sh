@@ -131,7 +131,8 @@ fi
 # --- Java: the jar and the launcher
 if [ -f "$P/share/java/trk_lcm.jar" ]; then
     classes=$(cd "$D" && jar tf "$P/share/java/trk_lcm.jar" 2> /dev/null | grep -c '^trk/.*_t\.class$')
-    [ "$classes" = 5 ] || fail "trk_lcm.jar holds $classes of the 5 trk classes"
+    want=$(ls tools/lcm/types/*.lcm | wc -l) # one class per LCM type
+    [ "$classes" = "$want" ] || fail "trk_lcm.jar holds $classes of the $want trk classes"
     msg=$(env -u DISPLAY "$P/bin/trk-lcm-spy" 2>&1)
     rc=$?
     if [ -f /usr/share/java/jchart2d.jar ]; then

@@ -80,13 +80,15 @@
 #define TRK_MAX_SENSORS 4
 #endif
 
-/** Points of a sensor's detection-probability profile over range
- * (trk_pd_profile, trk/tracker.h): 16 points hold a transmission-loss
- * curve from the near field to the far edge to within a few hundredths of
- * P_D (interpolated linearly). Each point costs two trk_real per sensor in
- * the tracker's parameters. */
+/** Points of a sensor's profiles over range (P_D, trk_pd_profile, and
+ * clutter density, trk_clutter_profile; trk/tracker.h): 8 points spaced
+ * evenly in log range hold a transmission-loss curve from 0.5 to 8 km to
+ * within 0.02 of P_D, and a 1/r clutter density within 4 % (interpolated
+ * linearly). Each point costs four trk_real per sensor in the tracker's
+ * parameters (the default 4 sensors x 8 points: 512 B in float); 16 points
+ * took the default build's RAM past its 64 KB budget. */
 #ifndef TRK_PD_PROFILE_MAX
-#define TRK_PD_PROFILE_MAX 16
+#define TRK_PD_PROFILE_MAX 8
 #endif
 
 /** Largest state and measurement dimension of the general linear-Gaussian

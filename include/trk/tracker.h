@@ -848,6 +848,10 @@ struct trk_tracker {
         trk_real pd_scale;                                     /**< a thinned scan's P_D over the
                                                                   sensor's (its profile's factor) */
         trk_real lambda_scale;                                 /**< the same for lambda */
+        struct trk_pda track_pda;                              /**< the track being updated: the
+                                                                  PDA's constants with its P_D
+                                                                  and lambda (profiles), */
+        trk_real track_r[TRK_CV2_NZ * TRK_CV2_NZ];             /**< and its R (polar) */
         struct trk_i_grid grid;                                /**< gating's index of [0, n_shared), */
         uint16_t cell_end[TRK_MAX_DETECTIONS];                 /**< its cells' ends (after the
                                                                   updates: the merge's index) */

@@ -351,7 +351,7 @@ void mtt_scen_sonar_defaults(struct mtt_scen_params *p);
 
 #define MTT_SONAR_PATCHES 4     /* reverberation patches */
 #define MTT_SONAR_PERSIST 12    /* persistent scatterers */
-#define MTT_SONAR_PD_POINTS 16  /* points of the P_D profile (<= TRK_PD_PROFILE_MAX) */
+#define MTT_SONAR_PD_POINTS 8   /* points of the P_D and clutter profiles (<= TRK_PD_PROFILE_MAX) */
 
 /* A disc on the ground (a reverberation patch). */
 struct mtt_disc {
