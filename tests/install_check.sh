@@ -139,7 +139,7 @@ if [ -f "$P/share/java/trk_lcm.jar" ]; then
         [ $rc -eq 2 ] && echo "$msg" | grep -q 'no \$DISPLAY' ||
             fail "installed trk-lcm-spy without a display: exit $rc, '$msg' (want 2, 'no \$DISPLAY': its jars found)"
     fi
-    ok "share/java/trk_lcm.jar (5 classes); bin/trk-lcm-spy finds it ($msg)"
+    ok "share/java/trk_lcm.jar ($classes classes); bin/trk-lcm-spy finds it ($msg)"
 else
     echo "install-check: no share/java/trk_lcm.jar (no JDK or liblcm-java here): Java not checked"
 fi
