@@ -160,7 +160,13 @@ TRK_INLINE trk_real trk_i_pda_normalise(trk_real log_e0, size_t n, trk_real *w, 
 TRK_INLINE void trk_i_pda_own_s(const struct trk_i_pda_pred *pr, const trk_real *r_j, trk_real *s)
 {
     const int nz = pr->nz;
-    if (pr->sel) {
+    if (pr->sel && nz == 2) { /* the tracker's [x, y]: written out */
+        const trk_real *px = pr->pht + pr->sel[0] * 2, *py = pr->pht + pr->sel[1] * 2;
+        s[0] = px[0] + r_j[0];
+        s[1] = px[1] + r_j[1];
+        s[2] = py[0] + r_j[2];
+        s[3] = py[1] + r_j[3];
+    } else if (pr->sel) {
         for (int j = 0; j < nz; j++)
             for (int k = 0; k < nz; k++) s[j * nz + k] = pr->pht[pr->sel[j] * nz + k] + r_j[j * nz + k];
     } else {
@@ -567,14 +573,19 @@ TRK_INLINE void trk_i_pda_combine_cv2_own(const struct trk_i_pda_pred *pr, const
     struct trk_i_pda_set sh = *s;
     sh.n = s->n_shared;
     struct trk_i_cv2_moments ms = {0, 0, 0, 0, 0, 0};
-    if (sh.n > 0) trk_i_pda_moments_cv2(pr, &sh, trk_i_pda_arg_max(sh.n, sh.w), &ms);
-    trk_i_pda_gain_cv2(pr, &g);
-    for (int a = 0; a < N; a++) mu_sh[a] = g.u0[a] * ms.y0 + g.u1[a] * ms.y1;
-    /* acc = beta0 P- + B P_c + u W u' (upper triangle) */
+    /* acc = beta0 P- + B P_c + u W u' (upper triangle; a set of own
+     * covariances alone, a polar sensor's, has no shared group to form) */
     for (int a = 0; a < N; a++)
-        for (int b = a; b < N; b++)
-            acc[a * N + b] = beta0 * pr->p[a * N + b] + ms.b * g.pc[a * N + b] +
-                             g.u0[a] * (ms.w00 * g.u0[b] + ms.w01 * g.u1[b]) + g.u1[a] * (ms.w01 * g.u0[b] + ms.w11 * g.u1[b]);
+        for (int b = a; b < N; b++) acc[a * N + b] = beta0 * pr->p[a * N + b];
+    if (sh.n > 0) {
+        trk_i_pda_moments_cv2(pr, &sh, trk_i_pda_arg_max(sh.n, sh.w), &ms);
+        trk_i_pda_gain_cv2(pr, &g);
+        for (int a = 0; a < N; a++) mu_sh[a] = g.u0[a] * ms.y0 + g.u1[a] * ms.y1;
+        for (int a = 0; a < N; a++)
+            for (int b = a; b < N; b++)
+                acc[a * N + b] += ms.b * g.pc[a * N + b] + g.u0[a] * (ms.w00 * g.u0[b] + ms.w01 * g.u1[b]) +
+                                  g.u1[a] * (ms.w01 * g.u0[b] + ms.w11 * g.u1[b]);
+    }
     /* the shift: the heaviest component's mean */
     size_t k = s->n_shared;
     for (size_t i = s->n_shared + 1; i < s->n; i++)
