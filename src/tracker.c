@@ -164,10 +164,14 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
         rep->n_covariance++;
         return;
     }
-    if (!look.seen) { /* out of the sensor's sight: no look, no test step; a tentative */
-        if (tr->status == TRK_TRACK_TENTATIVE) end_track(tr, TRK_END_REJECTED, rep); /* track can never */
-        return;                                                                       /* be confirmed there */
+    if (!look.seen) { /* out of the sensor's sight: no look, no test step */
+        if (tr->status == TRK_TRACK_TENTATIVE) end_track(tr, TRK_END_REJECTED, rep); /* never confirmed there */
+        else if ((tr->n_unseen_in_row < UINT16_MAX ? ++tr->n_unseen_in_row : tr->n_unseen_in_row) >
+                 t->params.max_unseen_scans) /* (65535 or more: never) */
+            end_track(tr, TRK_END_TERMINATED, rep);
+        return;
     }
+    tr->n_unseen_in_row = 0;
     tr->n_scans++;
     if (look.detected) {
         tr->n_hits++;

@@ -484,6 +484,7 @@ static void test_polar_imm(void **state)
     p.sensor[0].sigma_range_m = TRK_REAL_C(7.5);
     p.sensor[0].sigma_bearing_rad = (trk_real)(1.5 * deg);
     p.sensor[0].coverage.half_width_rad = (trk_real)(60 * deg);
+    p.max_unseen_scans = 4; /* the sector turns away for 4 scans at the end */
     TRK_ASSERT_OK(trk_tracker_imm_params(&p, (trk_real)(2 * deg), TRK_REAL_C(0.95)));
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));

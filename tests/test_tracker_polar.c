@@ -9,8 +9,10 @@
  *     the profile's P_D at its predicted position, at two ranges;
  *   - a track out of the sensor's sight (the platform turned away) is only
  *     predicted: existence delta^K pv, no miss counted, no test stepped; it
- *     continues under its id when seen again; a tentative track out of
- *     sight ends (rejected);
+ *     continues under its id when seen again (max_unseen_scans), ends
+ *     after more scans out of sight than that (at once by default: its
+ *     target left the coverage); a tentative track out of sight ends
+ *     (rejected);
  *   - a coasting track ends on the covariance bound ratio^2 tr R with R the
  *     conversion's covariance at its predicted position, at the first scan
  *     its predicted trace is over it;
@@ -226,6 +228,8 @@ static void test_out_of_sight(void **state)
     polar_params(&p);
     p.sensor[0].coverage.half_width_rad = (trk_real)(60 * DEG);
     p.sensor[0].coverage.max_range_m = 8000;
+    const int K = 6;
+    p.max_unseen_scans = (uint32_t)K; /* the sector turns away for K scans and back */
     TRK_ASSERT_OK(trk_tracker_init(&tk_a, &p));
     const struct trk_pose north = {0, 0, 0}, east = {0, 0, (trk_real)(90 * DEG)};
     const double tx = 200, ty = 3000;
@@ -240,7 +244,6 @@ static void test_out_of_sight(void **state)
     assert_non_null(tr);
     const uint32_t id = tr->id, n_scans = tr->n_scans, misses = tr->n_misses_in_row;
     double pv = tr->vis.pv;
-    const int K = 6;
     for (int j = 0; j < K; j++, k++) { /* looking east: the track is 86 degrees off */
         const struct trk_scan s = polar_scan(k, &east, 0, NULL);
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &s, NULL));
@@ -258,6 +261,28 @@ static void test_out_of_sight(void **state)
     assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
     assert_int_equal(tr->id, id);
     assert_true(tr->vis.pv > 0.99);
+    /* K + 1 scans out of sight end it (terminated); with the default 0, the
+     * first does: a track whose target left the coverage */
+    for (int limit = K; limit >= 0; limit -= K) {
+        p.max_unseen_scans = (uint32_t)limit;
+        TRK_ASSERT_OK(trk_tracker_init(&tk_b, &p));
+        int kk = 0;
+        for (; kk < 10; kk++) {
+            const struct trk_polar_detection d = seen(&north, tx, ty, &rng);
+            const struct trk_scan s = polar_scan(kk, &north, 1, &d);
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk_b, &s, NULL));
+        }
+        const struct trk_track *tb = track_near(&tk_b, tx, ty, 100);
+        assert_non_null(tb);
+        for (int j = 0; j <= limit; j++, kk++) {
+            assert_int_equal(tb->status, TRK_TRACK_CONFIRMED);
+            const struct trk_scan s = polar_scan(kk, &east, 0, NULL);
+            TRK_ASSERT_OK(trk_tracker_process_scan(&tk_b, &s, NULL));
+        }
+        assert_int_equal(tb->status, TRK_TRACK_TERMINATED);
+        assert_int_equal(tb->end_reason, TRK_END_TERMINATED);
+        if (limit == 0) break;
+    }
     /* the same K scans seen but missed end it (existence below 0.1) */
     TRK_ASSERT_OK(trk_tracker_init(&tk_b, &p));
     for (k = 0; k < 10; k++) {

@@ -23,9 +23,10 @@
  * position (trk_sensor_pd_at) wherever P_D enters its update (PDA and joint
  * weights, existence) and a new track's at its detections (initiation's
  * existence); where P_D is 0 a confirmed track is predicted and not gated,
- * its existence only predicted, its tests not stepped; a tentative track
- * there ends (TRK_END_REJECTED: it could never be confirmed), and nothing
- * starts. A clutter profile over range does the same for lambda.
+ * its existence only predicted, its tests not stepped, for up to
+ * max_unseen_scans scans in a row (default 0: a track that leaves the
+ * coverage ends, as its target left it); a tentative track there ends
+ * (TRK_END_REJECTED: it could never be confirmed), and nothing starts. A clutter profile over range does the same for lambda.
  *
  * One scan, trk_tracker_process_scan():
  *   1. validate the scan (at most TRK_MAX_SCAN_DETECTIONS, time order,
@@ -554,6 +555,16 @@ struct trk_tracker_params {
                                                          duplicates. <= gamma: gate only */
     uint32_t max_tentative_scans;                     /**< drop a tentative track after this
                                                          many scans (0 = no limit) */
+    uint32_t max_unseen_scans;                        /**< a confirmed track out of the scan
+                                                         sensor's sight (P_D 0 at its
+                                                         prediction: outside the coverage)
+                                                         for more than this many scans in a
+                                                         row ends (TRK_END_TERMINATED): 0
+                                                         (default) ends a track that leaves
+                                                         the coverage at once, as its target
+                                                         left it; a sector that turns away
+                                                         and back keeps its tracks with a
+                                                         larger value */
     struct trk_init_params init;                      /**< how tracks start */
     trk_real max_pos_sigma_ratio;                     /**< covariance bound (as Stone Soup's
                                                          CovarianceBasedDeleter): a track
@@ -633,7 +644,8 @@ enum trk_track_end {
     TRK_END_REJECTED,     /**< tentative track failed its confirmation test, or went out of
                              the sensor's sight (P_D 0 at its prediction) */
     TRK_END_TENTATIVE_AGE,/**< tentative longer than max_tentative_scans */
-    TRK_END_TERMINATED,   /**< confirmed track's termination test fired */
+    TRK_END_TERMINATED,   /**< confirmed track's termination test fired, or it stayed out of
+                             the sensor's sight longer than max_unseen_scans */
     TRK_END_NUMERICAL,    /**< covariance lost positive definiteness */
     TRK_END_MERGED,       /**< duplicate of a stronger track (merge_gate_d2) */
     TRK_END_COVARIANCE    /**< position uncertainty over max_pos_sigma_ratio */
@@ -651,6 +663,7 @@ struct trk_track {
     uint32_t n_hits;                  /**< scans with at least one detection in the gate */
     uint32_t n_misses_in_row;         /**< consecutive scans without */
     uint16_t n_gated_last;            /**< detections in the gate at the last scan */
+    uint16_t n_unseen_in_row;         /**< consecutive scans out of the sensor's sight */
     trk_real beta0_last;              /**< P(no detection is the target's), last scan */
     trk_real existence0;              /**< existence at initiation (trk_init_params) */
     struct trk_visibility vis;        /**< existence (IPDA) vis.pv and its smoothed

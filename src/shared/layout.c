@@ -86,6 +86,7 @@ static const struct layout_row params_rows[] = {
     REAL(P, merge_gate_d2, 1, "", ">= 0 (0: never merge)"),
     REAL(P, init_exclusion_d2, 1, "", ">= 0"),
     ROW(P, max_tentative_scans, 'u', uint32_t, 1, "", "scans", ">= 0 (0: no limit)"),
+    ROW(P, max_unseen_scans, 'u', uint32_t, 1, "", "scans", ">= 0 (0: a track leaving the coverage ends; 65535+: never)"),
     ENUM(P, init.method, "INIT_SINGLE_POINT, INIT_TWO_POINT"),
     REAL(P, init.max_speed_mps, 1, "m/s", "> 0"),
     ROW(P, init.max_gap_scans, 'u', uint32_t, 1, "", "scans", "1 .. TRK_MAX_CANDIDATE_SCANS - 1"),

@@ -240,7 +240,7 @@ static const char *const CONVERSION_NAMES[] = {"first_order", "unbiased", NULL};
  * tcfg_write. */
 static const char *const KEYS[] = {
     "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
-    "max_tentative_scans", "merge_gate_d2", "init_exclusion_d2", "association", "filter", "init.method",
+    "max_tentative_scans", "max_unseen_scans", "merge_gate_d2", "init_exclusion_d2", "association", "filter", "init.method",
     "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "max_pos_sigma_ratio",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
     "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
@@ -516,6 +516,12 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         if (get_long(v, 0, LONG_MAX < 4294967295L ? LONG_MAX : 4294967295L, &l, err, n) != 0)
             return -1;
         p->max_tentative_scans = (uint32_t)l;
+        return 0;
+    }
+    if (strcmp(key, "max_unseen_scans") == 0) {
+        if (get_long(v, 0, LONG_MAX < 4294967295L ? LONG_MAX : 4294967295L, &l, err, n) != 0)
+            return -1;
+        p->max_unseen_scans = (uint32_t)l;
         return 0;
     }
     if (strcmp(key, "merge_gate_d2") == 0) return get_real(v, R_NONNEG, &p->merge_gate_d2, err, n);
@@ -971,6 +977,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "init_speed_sigma_mps", (double)p->init_speed_sigma_mps);
     put_num(f, "max_dt_s", (double)p->max_dt_s);
     fprintf(f, "max_tentative_scans = %lu\n", (unsigned long)p->max_tentative_scans);
+    fprintf(f, "max_unseen_scans = %lu\n", (unsigned long)p->max_unseen_scans);
     put_num(f, "merge_gate_d2", (double)p->merge_gate_d2);
     put_num(f, "init_exclusion_d2", (double)p->init_exclusion_d2);
     fprintf(f, "association = %s\n", ASSOC_NAMES[p->association == TRK_ASSOC_JOINT]);
@@ -1092,6 +1099,8 @@ void tcfg_help(FILE *f)
             "  init_speed_sigma_mps = S          velocity prior of a new track, per axis, > 0 (5)\n"
             "  max_dt_s = S                      longest accepted gap between scans, [1e-6,1e9] (3600)\n"
             "  max_tentative_scans = N           drop tentative tracks older than N scans, 0 = off (0)\n"
+            "  max_unseen_scans = N              end a confirmed track out of the sensor's sight for\n"
+            "                                    more than N scans in a row (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
             "  association = pda|joint           per-track PDA, or joint association (JPDA / JIPDA) (joint)\n"
