@@ -26,6 +26,7 @@ static const struct trk_detection *scan_detection(const struct trk_tracker *t, c
                                                   struct trk_detection *tmp, struct trk_scan_report *rep)
 {
     const struct trk_i_view *v = &t->ws.view;
+    if (v->sp->kind != TRK_SENSOR_POLAR) return &scan->detections[i]; /* a Cartesian sensor's, as given */
     if (scan->polar) {
         const trk_status st = trk_polar_to_cartesian(v->sp, &v->pose, &scan->polar[i], tmp);
         if (st == TRK_OK) return tmp; /* its covariance is the one det_cov derives from its position */
@@ -34,7 +35,7 @@ static const struct trk_detection *scan_detection(const struct trk_tracker *t, c
         return NULL;
     }
     const struct trk_detection *d = &scan->detections[i];
-    if (v->sp->kind != TRK_SENSOR_POLAR || d->has_cov) return d;
+    if (d->has_cov) return d;
     *tmp = *d;
     tmp->has_cov = 1;
     if (isfinite(d->x_m) && isfinite(d->y_m))
