@@ -59,6 +59,22 @@ static void test_invariants(void **state)
     for (int i = 0; i < 16; i++) TRK_ASSERT_NEAR(p2[i], p[i], TRK_TOL(1e-12, 1e-4), 0);
 }
 
+/* A random CV prior: x uniform in [0, 100), P = L L' + I with L random
+ * lower triangular (SPD). */
+static void random_prior(uint64_t *rs, trk_real x[4], trk_real p[16])
+{
+    trk_real l[16] = {0};
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j <= i; j++) l[i * 4 + j] = (trk_real)(2 * trk_test_urand(rs) - 1) * 3;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double v = i == j;
+            for (int k = 0; k < 4; k++) v += (double)l[i * 4 + k] * (double)l[j * 4 + k];
+            p[i * 4 + j] = (trk_real)v;
+        }
+    for (int i = 0; i < 4; i++) x[i] = (trk_real)(100 * trk_test_urand(rs));
+}
+
 /* The 2-D CV model's fixed-index combination (pda_impl.h,
  * trk_i_pda_combine_cv2) against the general code: the same track embedded
  * in 5 states (an extra state uncorrelated with the rest, H picking x and y)
@@ -72,17 +88,7 @@ static void test_cv_fast_path(void **state)
     for (int rep = 0; rep < 200; rep++) {
         struct trk_pda pda = make_pda(TRK_CLUTTER_PARAMETRIC, TRK_REAL_C(0.85), TRK_REAL_C(0.02), rep % 4 != 3);
         trk_real x[4], p[16], x5[5], p5[25] = {0}, h5[10] = {0}, z[2 * 12], beta[12], beta5[12];
-        /* a random SPD prior: P = L L' + I, L random lower */
-        trk_real l[16] = {0};
-        for (int i = 0; i < 4; i++)
-            for (int j = 0; j <= i; j++) l[i * 4 + j] = (trk_real)(2 * trk_test_urand(&rs) - 1) * 3;
-        for (int i = 0; i < 4; i++)
-            for (int j = 0; j < 4; j++) {
-                double v = i == j;
-                for (int k = 0; k < 4; k++) v += (double)l[i * 4 + k] * (double)l[j * 4 + k];
-                p[i * 4 + j] = (trk_real)v;
-            }
-        for (int i = 0; i < 4; i++) x[i] = (trk_real)(100 * trk_test_urand(&rs));
+        random_prior(&rs, x, p);
         const size_t m = (size_t)(rep % 12);
         /* every fifth set clustered, with R << H P H': within 1e-3 of a
          * point up to 2 m off (the spread W small against the shift: the
@@ -131,16 +137,7 @@ static void test_cv_own_path(void **state)
     uint64_t rs = 19;
     for (int rep = 0; rep < 300; rep++) {
         trk_real x[4], p[16], x5[5], p5[25] = {0}, h5[10] = {0};
-        trk_real l[16] = {0};
-        for (int i = 0; i < 4; i++)
-            for (int j = 0; j <= i; j++) l[i * 4 + j] = (trk_real)(2 * trk_test_urand(&rs) - 1) * 3;
-        for (int i = 0; i < 4; i++)
-            for (int j = 0; j < 4; j++) {
-                double v = i == j;
-                for (int k = 0; k < 4; k++) v += (double)l[i * 4 + k] * (double)l[j * 4 + k];
-                p[i * 4 + j] = (trk_real)v;
-            }
-        for (int i = 0; i < 4; i++) x[i] = (trk_real)(100 * trk_test_urand(&rs));
+        random_prior(&rs, x, p);
         const int clustered = rep % 5 == 4;
         const size_t n_sh = (size_t)(rep % 4), n = n_sh + 1 + (size_t)(rep % 7);
         trk_real z[2 * 12], r_own[4 * 12], w[12];
