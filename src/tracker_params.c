@@ -256,6 +256,8 @@ static trk_status check_view(const struct trk_tracker_params *p, const struct tr
     if (cp->n != 0) {
         if (cp->n < 2 || cp->n > TRK_PD_PROFILE_MAX) return refuse(field, name[F_CLUTTER_PROFILE], TRK_E_RANGE);
         if (p->clutter != TRK_CLUTTER_PARAMETRIC) return refuse(field, name[F_CLUTTER_PROFILE], TRK_E_UNSUPPORTED);
+        /* the sensor's density stays the reference the profile's odds are taken against */
+        if (!(sp->clutter_density_per_m2 > 0)) return refuse(field, name[F_CLUTTER_PROFILE], TRK_E_RANGE);
         for (unsigned k = 0; k < cp->n; k++) {
             const trk_real lo = k == 0 ? 0 : cp->range_m[k - 1];
             if ((st = check_real(cp->range_m[k], lo, k > 0, TRK_MAX_COORD_M_LIMIT, name[F_CLUTTER_PROFILE], field)) !=

@@ -221,7 +221,10 @@ static void test_params(void **state)
     q.sensor[0].clutter_profile.density_per_m2[1] = 0;
     check_refused(&q, "sensor[0].clutter_profile", TRK_E_RANGE);
     q.sensor[0].clutter_profile.density_per_m2[1] = TRK_REAL_C(1e-6);
-    q.clutter = TRK_CLUTTER_NONPARAMETRIC, q.association = TRK_ASSOC_PDA;
+    q.sensor[0].clutter_density_per_m2 = 0, q.association = TRK_ASSOC_PDA; /* no reference density */
+    check_refused(&q, "sensor[0].clutter_profile", TRK_E_RANGE);
+    q.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+    q.clutter = TRK_CLUTTER_NONPARAMETRIC;
     check_refused(&q, "sensor[0].clutter_profile", TRK_E_UNSUPPORTED);
     q = p, q.filter = TRK_FILTER_ALPHA_BETA;
     check_refused(&q, "filter", TRK_E_UNSUPPORTED);

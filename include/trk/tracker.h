@@ -335,7 +335,9 @@ struct trk_sensor_params {
     struct trk_coverage coverage;       /**< where P_D is not 0 (all zero: everywhere) */
     struct trk_clutter_profile clutter_profile; /**< lambda over range from the pose (n = 0:
                                                    clutter_density_per_m2 everywhere);
-                                                   parametric clutter only */
+                                                   parametric clutter only, and
+                                                   clutter_density_per_m2 > 0 with it (the
+                                                   reference, e.g. the mean) */
 };
 
 /** Confirmation of a tentative track (one method per tracker). */
