@@ -110,6 +110,11 @@ void trk_i_view_init(struct trk_i_view *v, const struct trk_sensor_params *sp, c
     v->max_r2 = c->max_range_m * c->max_range_m;
     v->limited = v->sector || c->min_range_m > 0 || c->max_range_m > 0 || sp->pd_profile.n > 0;
     v->clutter_varies = sp->clutter_profile.n > 0;
+    v->map = 0; /* the tracker's: trk_i_map_view */
+    v->map_params = NULL;
+    v->map_count = NULL;
+    v->map_scans = 0;
+    v->map_half_b = 0;
 }
 
 /* A profile of n points (range_m, value) at range r: linear between its
@@ -140,10 +145,16 @@ trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_
 
 trk_real trk_i_view_clutter(const struct trk_i_view *v, trk_real x_m, trk_real y_m)
 {
-    const struct trk_clutter_profile *cp = &v->sp->clutter_profile;
-    if (!v->clutter_varies) return v->sp->clutter_density_per_m2;
+    if (v->sp->clutter_profile.n == 0) return v->sp->clutter_density_per_m2;
     const trk_real dx = x_m - v->pose.x_m, dy = y_m - v->pose.y_m;
-    return profile_at(cp->n, cp->range_m, cp->density_per_m2, trk_sqrt(dx * dx + dy * dy));
+    return trk_i_view_clutter_r(v, trk_sqrt(dx * dx + dy * dy));
+}
+
+trk_real trk_i_view_clutter_r(const struct trk_i_view *v, trk_real r_m)
+{
+    const struct trk_clutter_profile *cp = &v->sp->clutter_profile;
+    if (cp->n == 0) return v->sp->clutter_density_per_m2;
+    return profile_at(cp->n, cp->range_m, cp->density_per_m2, r_m);
 }
 
 trk_real trk_sensor_clutter_at(const struct trk_sensor_params *sp, const struct trk_pose *pose, trk_real x_m,

@@ -15,7 +15,11 @@ void trk_i_view_init(struct trk_i_view *v, const struct trk_sensor_params *sp, c
  * the sensor's P_D without a profile (its pd, or its amplitude model's). */
 trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_m, trk_real y_m);
 
-/* lambda at (x_m, y_m): trk_sensor_clutter_at with the view's pose. */
+/* lambda at (x_m, y_m): trk_sensor_clutter_at with the view's pose (its
+ * configured density, without the tracker's clutter map). */
 trk_real trk_i_view_clutter(const struct trk_i_view *v, trk_real x_m, trk_real y_m);
+
+/* The same at range r_m from the pose. */
+trk_real trk_i_view_clutter_r(const struct trk_i_view *v, trk_real r_m);
 
 #endif

@@ -9,6 +9,7 @@
 #include "tracker_internal.h"
 
 /* the stages, each a module on the ones below it (tracker_internal.h) */
+#include "tracker_clutter_map_impl.h"
 #include "tracker_initiate_impl.h"
 #include "tracker_load_impl.h"
 #include "tracker_merge_impl.h"
@@ -20,6 +21,7 @@
 static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan *scan);
 static void see_from(struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
+static trk_real clutter_kept_share(const struct trk_tracker *t, const struct trk_scan_report *rep);
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 #if TRK_WITH_JOINT
 static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
@@ -56,9 +58,15 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     else
 #endif
         update_each(t, scan, &rep);
+    const trk_real kept_share = model ? t->ws.lambda_scale : clutter_kept_share(t, &rep);
     if (model) thin_restore(t, scan->sensor_id, &saved);
     if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
     initiate(t, scan, &rep);
+#if TRK_CLUTTER_MAP_CELLS > 0
+    learn_clutter_map(t, scan, kept_share);
+#else
+    (void)kept_share;
+#endif
     t->last_time_us = scan->time_us;
     t->has_time = 1;
     if (report) *report = rep;
@@ -92,12 +100,26 @@ static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan 
 }
 
 /* The scan's sensor from its pose (the scan's, or the sensor's fixed
- * one): the view every stage asks for R and P_D at a position. */
+ * one), with its clutter map as it stands before the scan: the view every
+ * stage asks for R, P_D and lambda at a position. */
 static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
     trk_i_view_init(&t->ws.view, sp, scan->has_pose ? &scan->pose : &sp->pose);
+#if TRK_CLUTTER_MAP_CELLS > 0
+    if (t->params.clutter == TRK_CLUTTER_PARAMETRIC)
+        trk_i_map_view(&t->ws.view, &t->params.clutter_map, t->clutter_map[scan->sensor_id],
+                       t->clutter_map_scans[scan->sensor_id]);
+#endif
     t->ws.pd_scale = t->ws.lambda_scale = 1;
+}
+
+/* The share of a scan's clutter that a thinning without the amplitude
+ * model kept: its kept detections over its valid ones (1 unthinned). */
+static trk_real clutter_kept_share(const struct trk_tracker *t, const struct trk_scan_report *rep)
+{
+    const trk_real kept = (trk_real)t->ws.n_valid;
+    return rep->n_thinned > 0 && kept > 0 ? kept / (kept + (trk_real)rep->n_thinned) : 1;
 }
 
 /* Tracks that ended in the previous scan were shown once: free their slots. */
@@ -210,6 +232,12 @@ trk_status trk_tracker_init(struct trk_tracker *t, const struct trk_tracker_para
         t->log_clutter_density[s] = lambda > 0 ? trk_log(lambda) : -(trk_real)INFINITY; /* joint needs > 0 */
 #endif
     }
+#if TRK_CLUTTER_MAP_CELLS > 0
+    for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) { /* every cell at the configured density */
+        for (size_t c = 0; c < TRK_CLUTTER_MAP_CELLS; c++) t->clutter_map[s][c] = 0;
+        t->clutter_map_scans[s] = 0;
+    }
+#endif
     t->scan_no = 0;
     t->n_cand = 0;
     t->run_first = t->n_runs = 0;
@@ -239,5 +267,25 @@ const struct trk_track *trk_tracker_track(const struct trk_tracker *t, size_t sl
 }
 
 size_t trk_tracker_live_count(const struct trk_tracker *t) { return t ? t->n_live : 0; }
+
+trk_status trk_tracker_clutter_at(const struct trk_tracker *t, unsigned sensor_id, const struct trk_pose *pose,
+                                  trk_real x_m, trk_real y_m, trk_real *lambda_per_m2)
+{
+    if (!t || !lambda_per_m2) return TRK_E_ARG;
+    if (sensor_id >= t->params.n_sensors) return TRK_E_SENSOR;
+    const struct trk_sensor_params *sp = &t->params.sensor[sensor_id];
+    if (!pose) pose = &sp->pose;
+    if (!isfinite(x_m) || !isfinite(y_m) || !isfinite(pose->x_m) || !isfinite(pose->y_m) ||
+        !isfinite(pose->heading_rad))
+        return TRK_E_NAN;
+    struct trk_i_view v;
+    trk_i_view_init(&v, sp, pose);
+#if TRK_CLUTTER_MAP_CELLS > 0
+    if (t->params.clutter == TRK_CLUTTER_PARAMETRIC)
+        trk_i_map_view(&v, &t->params.clutter_map, t->clutter_map[sensor_id], t->clutter_map_scans[sensor_id]);
+#endif
+    *lambda_per_m2 = v.map ? trk_i_map_lambda_at(&v, x_m, y_m) : trk_i_view_clutter(&v, x_m, y_m);
+    return TRK_OK;
+}
 
 size_t trk_tracker_sizeof(void) { return sizeof(struct trk_tracker); }

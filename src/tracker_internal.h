@@ -29,7 +29,7 @@
 #define TRK_TRACKER_INTERNAL_H
 
 #include "pda_impl.h"
-#include "sensor_view.h"
+#include "clutter_map.h"
 #include "track_tests.h"
 #include "trk/tracker.h"
 
@@ -114,7 +114,8 @@ TRK_INLINE trk_real sensor_pd_at(const struct trk_tracker *t, const struct trk_s
 TRK_INLINE trk_real sensor_lambda_at(const struct trk_tracker *t, const struct trk_scan *scan, trk_real x, trk_real y)
 {
     if (!t->ws.view.clutter_varies) return t->pda[scan->sensor_id].params.clutter_density;
-    return trk_i_view_clutter(&t->ws.view, x, y) * t->ws.lambda_scale;
+    const trk_real lambda = t->ws.view.map ? trk_i_map_lambda_at(&t->ws.view, x, y) : trk_i_view_clutter(&t->ws.view, x, y);
+    return lambda * t->ws.lambda_scale;
 }
 
 /* ln(lambda(x, y) / lambda_sensor) of the scan's sensor: what a new track's

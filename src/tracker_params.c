@@ -31,6 +31,14 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_speed_mps = 15; /* 30 knots */
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
+    /* a clutter map for a sensor with a coverage: 16 x 16 cells, 20 scans'
+     * memory, 2 pseudo-counts (docs/tracker.md "Clutter map") */
+    p->clutter_map.n_range = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
+    p->clutter_map.n_bearing = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
+    p->clutter_map.time_constant_scans = 20;
+    p->clutter_map.prior_count = 2;
+    p->clutter_map.min_ratio = TRK_REAL_C(0.1);
+    p->clutter_map.max_ratio = 100;
     p->max_pos_sigma_ratio = 20;
     p->max_coord_m = TRK_MAX_COORD_M_DEFAULT;
     p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: docs/tracker.md "Association" */
@@ -144,6 +152,24 @@ static trk_status check_speed_sigma(trk_real v, const char **field)
     return vv <= TRK_REAL_MAX && vv >= 1 / TRK_REAL_MAX ? TRK_OK : refuse(field, "init_speed_sigma_mps", TRK_E_RANGE);
 }
 
+/* The clutter maps' cells and estimator (trk_clutter_map_params): no cells
+ * is no map (the rest unread). */
+static trk_status check_clutter_map(const struct trk_clutter_map_params *mp, const char **field)
+{
+    trk_status st;
+    if (mp->n_range == 0 && mp->n_bearing == 0) return TRK_OK;
+    if (mp->n_range == 0 || mp->n_bearing == 0) return refuse(field, "clutter_map.n_range", TRK_E_RANGE);
+    if ((unsigned long)mp->n_range * mp->n_bearing > (unsigned long)TRK_CLUTTER_MAP_CELLS)
+        return refuse(field, "clutter_map.n_range", TRK_E_CAPACITY);
+    if ((st = check_real(mp->time_constant_scans, 1, 0, TRK_REAL_C(1e6), "clutter_map.time_constant_scans", field)) !=
+            TRK_OK ||
+        (st = check_real(mp->prior_count, 0, 1, TRK_REAL_C(1e6), "clutter_map.prior_count", field)) != TRK_OK ||
+        (st = check_real(mp->min_ratio, 0, 1, 1, "clutter_map.min_ratio", field)) != TRK_OK ||
+        (st = check_real(mp->max_ratio, 1, 0, TRK_REAL_C(1e6), "clutter_map.max_ratio", field)) != TRK_OK)
+        return st;
+    return TRK_OK;
+}
+
 /* How tracks start (trk_init_params). */
 static trk_status check_init(const struct trk_init_params *in, const char **field)
 {
@@ -208,6 +234,7 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
     if ((st = check_real(p->max_pos_sigma_ratio, 0, 0, TRK_REAL_MAX, "max_pos_sigma_ratio", field)) != TRK_OK ||
         (st = check_real(p->max_coord_m, 0, 1, TRK_MAX_COORD_M_LIMIT, "max_coord_m", field)) != TRK_OK)
         return st;
+    if ((st = check_clutter_map(&p->clutter_map, field)) != TRK_OK) return st;
     return check_init(&p->init, field);
 }
 

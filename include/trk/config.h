@@ -91,6 +91,16 @@
 #define TRK_PD_PROFILE_MAX 8
 #endif
 
+/** Cells of each sensor's clutter map (trk/tracker.h, struct
+ * trk_clutter_map_params: range x bearing cells over the sensor's
+ * coverage): the map's n_range x n_bearing is at most this. Each cell costs
+ * one trk_real per sensor (the default 4 sensors x 256 cells: 4 KB in
+ * float). 0 compiles the map out (its parameters must then ask for no
+ * cells). At most 65535. */
+#ifndef TRK_CLUTTER_MAP_CELLS
+#define TRK_CLUTTER_MAP_CELLS 256
+#endif
+
 /** Largest state and measurement dimension of the general linear-Gaussian
  * functions (kalman.h, gate.h, pda.h). The tracker itself runs the 2-D
  * constant-velocity model (4 states, 2 measurements). */
@@ -266,6 +276,9 @@
 #endif
 #if TRK_MAX_SENSORS < 1 || TRK_MAX_SENSORS > 255
 #error "TRK_MAX_SENSORS must be in 1..255 (sensor ids are uint8_t); set -DTRK_MAX_SENSORS=4"
+#endif
+#if TRK_CLUTTER_MAP_CELLS < 0 || TRK_CLUTTER_MAP_CELLS > 65535
+#error "TRK_CLUTTER_MAP_CELLS must be in 0..65535 (cells of a sensor's clutter map); set -DTRK_CLUTTER_MAP_CELLS=256"
 #endif
 #if TRK_PD_PROFILE_MAX < 2 || TRK_PD_PROFILE_MAX > 255
 #error "TRK_PD_PROFILE_MAX must be in 2..255 (points of a P_D profile); set -DTRK_PD_PROFILE_MAX=16"

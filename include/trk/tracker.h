@@ -526,6 +526,34 @@ enum trk_filter_kind {
 };
 
 /** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */
+/** A clutter map per sensor (seed survey ch. 5.3; docs/tracker.md "Clutter
+ * map"): the sensor's coverage (trk_coverage: range limits and sector about
+ * the heading; a sensor without a maximum range has no map) cut into
+ * n_range x n_bearing cells, even in range and in bearing, in the sensor's
+ * own frame. Each scan counts per cell the detections no confirmed track
+ * gated (weighted by 1 / the kept share in a thinned scan) into an
+ * exponentially weighted sum N_c, and the scans into W (both with memory
+ * time_constant_scans); a cell's expected count per scan from the
+ * configured density is e_c (its profile integrated over the cell). Its
+ * ratio is the Gamma-Poisson posterior mean with prior_count pseudo-counts
+ * at the configured density,
+ *     rho_c = (N_c + a) / (e_c W + a),
+ * bounded to [min_ratio, max_ratio], and the density the tracker uses at a
+ * position is the configured one (profile) there times its cell's rho:
+ * wherever lambda enters (PDA and joint weights, existence, a new track's
+ * initial existence). The map starts at rho = 1 (the configured density)
+ * and is used before it is updated with the scan's own detections. */
+struct trk_clutter_map_params {
+    unsigned n_range;              /**< cells over the coverage's ranges; 0: no map */
+    unsigned n_bearing;            /**< cells over its bearings (n_range x n_bearing
+                                      <= TRK_CLUTTER_MAP_CELLS) */
+    trk_real time_constant_scans;  /**< the counts' memory tau, >= 1 scan: weight
+                                      (1 - 1/tau)^k on the scan k scans ago */
+    trk_real prior_count;          /**< a, > 0: pseudo-counts at the configured density */
+    trk_real min_ratio;            /**< rho's floor, (0, 1] */
+    trk_real max_ratio;            /**< rho's ceiling, >= 1 */
+};
+
 struct trk_tracker_params {
     unsigned n_sensors;                               /**< 1 .. TRK_MAX_SENSORS */
     struct trk_sensor_params sensor[TRK_MAX_SENSORS];  /**< sensor[0 .. n_sensors - 1] */
@@ -568,6 +596,9 @@ struct trk_tracker_params {
                                                          and back keeps its tracks with a
                                                          larger value */
     struct trk_init_params init;                      /**< how tracks start */
+    struct trk_clutter_map_params clutter_map;        /**< each sensor's clutter map (a
+                                                         sensor with a coverage's maximum
+                                                         range; parametric clutter only) */
     trk_real max_pos_sigma_ratio;                     /**< covariance bound (as Stone Soup's
                                                          CovarianceBasedDeleter): a track
                                                          ends (TRK_END_COVARIANCE) when
@@ -802,6 +833,11 @@ struct trk_i_view {
     uint8_t sector;                      /**< 1: the coverage is a sector */
     uint8_t limited;                     /**< 1: P_D depends on the position */
     uint8_t clutter_varies;              /**< 1: lambda depends on the position */
+    uint8_t map;                         /**< 1: the sensor's clutter map scales lambda: */
+    const struct trk_clutter_map_params *map_params;  /**< its cells and estimator, */
+    const trk_real *map_count;           /**< its cells' N_c, */
+    trk_real map_scans;                  /**< its W, */
+    trk_real map_half_b;                 /**< and its bearings' half span (rad) */
 };
 
 /** One scan's initiation candidates: cand[start, start + n) in the run's
@@ -841,6 +877,12 @@ struct trk_tracker {
     } init_log_odds[TRK_MAX_SENSORS];  /**< per sensor */
 #if TRK_WITH_JOINT
     trk_real log_clutter_density[TRK_MAX_SENSORS]; /**< ln lambda of the joint weights (lambda > 0) */
+#endif
+#if TRK_CLUTTER_MAP_CELLS > 0
+    trk_real clutter_map[TRK_MAX_SENSORS][TRK_CLUTTER_MAP_CELLS]; /**< per sensor and cell:
+                                                   N_c, the weighted count of detections no
+                                                   confirmed track gated (trk_clutter_map_params) */
+    trk_real clutter_map_scans[TRK_MAX_SENSORS];  /**< per sensor: W, the scans' weighted sum */
 #endif
     uint32_t scan_no;                           /**< scans processed (initiation ages) */
     size_t n_cand;                              /**< initiation candidates not used */
@@ -1058,6 +1100,15 @@ void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real d
  * detections. NaN for NULL pointers. */
 trk_real trk_sensor_clutter_at(const struct trk_sensor_params *sp, const struct trk_pose *pose, trk_real x_m,
                                trk_real y_m);
+
+/** The clutter density tracker t uses at (x_m, y_m) in a scan of sensor
+ * sensor_id from pose (NULL: the sensor's own pose): the configured one
+ * (trk_sensor_clutter_at) times the ratio of its clutter map's cell there
+ * (trk_clutter_map_params; outside the map, or without one, 1), into
+ * *lambda_per_m2. TRK_E_ARG for NULL t or lambda_per_m2, TRK_E_SENSOR for
+ * an unknown sensor, TRK_E_NAN for a non-finite position or pose. */
+trk_status trk_tracker_clutter_at(const struct trk_tracker *t, unsigned sensor_id, const struct trk_pose *pose,
+                                  trk_real x_m, trk_real y_m, trk_real *lambda_per_m2);
 
 /** The detection probability of sensor sp at (x_m, y_m) with the sensor at
  * pose: 0 outside its coverage, else its P_D profile at the range (linear,

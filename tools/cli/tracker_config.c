@@ -241,7 +241,9 @@ static const char *const CONVERSION_NAMES[] = {"first_order", "unbiased", NULL};
 static const char *const KEYS[] = {
     "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
     "max_tentative_scans", "max_unseen_scans", "merge_gate_d2", "init_exclusion_d2", "association", "filter", "init.method",
-    "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "max_pos_sigma_ratio",
+    "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "clutter_map.n_range",
+    "clutter_map.n_bearing", "clutter_map.time_constant_scans", "clutter_map.prior_count", "clutter_map.min_ratio",
+    "clutter_map.max_ratio", "max_pos_sigma_ratio",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
     "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
     "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.mn.m", "confirm.mn.n",
@@ -550,6 +552,17 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     }
     if (strcmp(key, "init.birth_density_per_m2") == 0)
         return get_real(v, R_NONNEG, &p->init.birth_density_per_m2, err, n);
+    /* the clutter maps (cells 0: none; the library checks the rest) */
+    if (strcmp(key, "clutter_map.n_range") == 0 || strcmp(key, "clutter_map.n_bearing") == 0) {
+        if (get_long(v, 0, 65535, &l, err, n) != 0) return -1;
+        *(strcmp(key, "clutter_map.n_range") == 0 ? &p->clutter_map.n_range : &p->clutter_map.n_bearing) = (unsigned)l;
+        return 0;
+    }
+    if (strcmp(key, "clutter_map.time_constant_scans") == 0)
+        return get_real(v, R_POS, &p->clutter_map.time_constant_scans, err, n);
+    if (strcmp(key, "clutter_map.prior_count") == 0) return get_real(v, R_POS, &p->clutter_map.prior_count, err, n);
+    if (strcmp(key, "clutter_map.min_ratio") == 0) return get_real(v, R_PROB_OC, &p->clutter_map.min_ratio, err, n);
+    if (strcmp(key, "clutter_map.max_ratio") == 0) return get_real(v, R_POS, &p->clutter_map.max_ratio, err, n);
     if (strcmp(key, "max_pos_sigma_ratio") == 0) return get_real(v, R_NONNEG, &p->max_pos_sigma_ratio, err, n);
     if (strcmp(key, "max_coord_m") == 0) return get_real(v, R_COORD, &p->max_coord_m, err, n);
     /* visibility (IPDA existence) */
@@ -986,6 +999,12 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "init.max_speed_mps", (double)p->init.max_speed_mps);
     fprintf(f, "init.max_gap_scans = %lu\n", (unsigned long)p->init.max_gap_scans);
     put_num(f, "init.birth_density_per_m2", (double)p->init.birth_density_per_m2);
+    fprintf(f, "clutter_map.n_range = %u\n", p->clutter_map.n_range);
+    fprintf(f, "clutter_map.n_bearing = %u\n", p->clutter_map.n_bearing);
+    put_num(f, "clutter_map.time_constant_scans", (double)p->clutter_map.time_constant_scans);
+    put_num(f, "clutter_map.prior_count", (double)p->clutter_map.prior_count);
+    put_num(f, "clutter_map.min_ratio", (double)p->clutter_map.min_ratio);
+    put_num(f, "clutter_map.max_ratio", (double)p->clutter_map.max_ratio);
     put_num(f, "max_pos_sigma_ratio", (double)p->max_pos_sigma_ratio);
     put_num(f, "max_coord_m", (double)p->max_coord_m);
     fprintf(f, "visibility = %d\n", p->track_visibility);
@@ -1110,6 +1129,11 @@ void tcfg_help(FILE *f)
             "    init.max_gap_scans               candidate lifetime in scans, >= 1 (2)\n"
             "    init.birth_density_per_m2        new targets per m^2 per scan: the initial existence,\n"
             "                                     >= 0, 0 = visibility.pv0 (1e-9)\n"
+            "  clutter_map.n_range, .n_bearing   each sensor's clutter map: cells over its coverage\n"
+            "                                    (range x bearing; needs a maximum range), 0 = none (16, 16)\n"
+            "    clutter_map.time_constant_scans  the counts' memory, >= 1 scan (20)\n"
+            "    clutter_map.prior_count          pseudo-counts at the configured density, > 0 (2)\n"
+            "    clutter_map.min_ratio, .max_ratio   bounds of a cell's ratio to it (0.1, 100)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
             "                                    sensor's, 0 = off (20)\n"
             "  max_coord_m = M                   surveillance bound: a detection with |x| or |y| > M\n"

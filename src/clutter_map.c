@@ -1,0 +1,89 @@
+/* clutter_map.c - each sensor's clutter map (trk/tracker.h, struct
+ * trk_clutter_map_params; seed survey ch. 5.3, the clutter map that
+ * estimates the local density from the detections and feeds it back to the
+ * tracker): cells even in range and bearing over the sensor's coverage, in
+ * its own frame; per cell an exponentially weighted count N_c of the
+ * detections no confirmed track gated, and per sensor the weighted number
+ * of scans W; a cell's ratio to the configured density is the Gamma-Poisson
+ * posterior mean (N_c + a) / (e_c W + a), e_c the cell's expected clutter
+ * count per scan from the configured density (docs/tracker.md "Clutter
+ * map"). */
+#include "clutter_map.h"
+
+int trk_i_map_kept(const struct trk_clutter_map_params *mp, const struct trk_sensor_params *sp)
+{
+    return TRK_CLUTTER_MAP_CELLS > 0 && mp->n_range > 0 && mp->n_bearing > 0 && sp->coverage.max_range_m > 0 &&
+           sp->clutter_density_per_m2 > 0;
+}
+
+void trk_i_map_view(struct trk_i_view *v, const struct trk_clutter_map_params *mp, const trk_real *count,
+                    trk_real scans)
+{
+    const struct trk_coverage *c = &v->sp->coverage;
+    v->map = (uint8_t)trk_i_map_kept(mp, v->sp);
+    v->map_params = mp;
+    v->map_count = count;
+    v->map_scans = scans;
+    v->map_half_b = v->sector ? c->half_width_rad : TRK_PI;
+    if (v->map) v->clutter_varies = 1;
+}
+
+void trk_i_view_polar(const struct trk_i_view *v, trk_real x_m, trk_real y_m, trk_real *r_m, trk_real *b_rad)
+{
+    const trk_real dx = x_m - v->pose.x_m, dy = y_m - v->pose.y_m;
+    const trk_real along = dx * v->sin_h + dy * v->cos_h, across = dx * v->cos_h - dy * v->sin_h;
+    *r_m = trk_sqrt(dx * dx + dy * dy);
+    *b_rad = trk_atan2(across, along);
+}
+
+long trk_i_map_cell(const struct trk_i_view *v, trk_real r_m, trk_real b_rad)
+{
+    if (!v->map) return -1;
+    const struct trk_clutter_map_params *mp = v->map_params;
+    const trk_real r0 = v->sp->coverage.min_range_m, r1 = v->sp->coverage.max_range_m, hb = v->map_half_b;
+    if (!(r_m >= r0 && r_m <= r1 && b_rad >= -hb && b_rad <= hb)) return -1;
+    long ir = (long)((r_m - r0) / (r1 - r0) * (trk_real)mp->n_range);
+    long ib = (long)((b_rad + hb) / (2 * hb) * (trk_real)mp->n_bearing);
+    if (ir >= (long)mp->n_range) ir = (long)mp->n_range - 1; /* the far edge itself */
+    if (ib >= (long)mp->n_bearing) ib = (long)mp->n_bearing - 1;
+    return ir * (long)mp->n_bearing + ib;
+}
+
+/* e_c: the expected clutter count per scan in a cell of range row ir from
+ * the configured density lambda(r): dtheta * int lambda(r) r dr over the
+ * row, by two-point Gauss-Legendre (exact for lambda r cubic in r, so for
+ * a 1/r density). */
+static trk_real expected_count(const struct trk_i_view *v, long ir)
+{
+    const struct trk_clutter_map_params *mp = v->map_params;
+    const trk_real r0 = v->sp->coverage.min_range_m, r1 = v->sp->coverage.max_range_m;
+    const trk_real h = (r1 - r0) / (trk_real)mp->n_range / 2; /* the row's half width */
+    const trk_real m = r0 + ((trk_real)(2 * ir + 1)) * h;
+    const trk_real d = h * TRK_REAL_C(0.57735026918962576); /* h / sqrt(3) */
+    const trk_real integral = h * (trk_i_view_clutter_r(v, m - d) * (m - d) + trk_i_view_clutter_r(v, m + d) * (m + d));
+    return 2 * v->map_half_b / (trk_real)mp->n_bearing * integral;
+}
+
+trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real y_m)
+{
+    trk_real r, b;
+    trk_i_view_polar(v, x_m, y_m, &r, &b);
+    const trk_real lambda = trk_i_view_clutter_r(v, r);
+    const long c = trk_i_map_cell(v, r, b);
+    if (c < 0) return lambda;
+    const struct trk_clutter_map_params *mp = v->map_params;
+    const trk_real e = expected_count(v, c / (long)mp->n_bearing);
+    trk_real rho = (v->map_count[c] + mp->prior_count) / (e * v->map_scans + mp->prior_count);
+    /* the estimator's documented bounds (trk_clutter_map_params) */
+    if (rho < mp->min_ratio) rho = mp->min_ratio;
+    if (rho > mp->max_ratio) rho = mp->max_ratio;
+    return lambda * rho;
+}
+
+void trk_i_map_forget(const struct trk_clutter_map_params *mp, trk_real *count, trk_real *scans)
+{
+    const trk_real keep = 1 - 1 / mp->time_constant_scans;
+    const size_t n = (size_t)mp->n_range * mp->n_bearing;
+    for (size_t c = 0; c < n; c++) count[c] *= keep;
+    *scans = *scans * keep + 1;
+}

@@ -1,0 +1,281 @@
+/* test_clutter_map.c - each sensor's clutter map (trk/tracker.h, struct
+ * trk_clutter_map_params; docs/tracker.md "Clutter map"):
+ *   - after K scans of the same detections, a cell's density is the
+ *     configured one times the Gamma-Poisson ratio (N + a) / (e W + a) with
+ *     N and W the closed-form weighted sums and e the cell's exact area
+ *     times the density; an empty cell's ratio falls to the floor, a busy
+ *     one's rises to the ceiling; outside the coverage the configured
+ *     density holds;
+ *   - a cell's e integrates the clutter profile (a 1/r density: the
+ *     two-point rule is exact);
+ *   - the detections of a confirmed track's gate are not counted: from the
+ *     scan after its confirmation its cell only forgets;
+ *   - a polar scan and the same scan as Cartesian detections count alike;
+ *   - the parameter check names the field; the accessor's refusals. */
+#include "trk_test.h"
+#include "trk/tracker.h"
+
+#define DEG (3.14159265358979323846 / 180)
+#define SCAN_US(k) ((int64_t)(k) * 8000000)
+
+static struct trk_tracker tk, tk2;
+
+/* A polar sensor at the origin facing north, coverage 1-9 km +-60 deg,
+ * lambda 1e-7 per m^2; a map of 4 x 4 cells (2 km x 30 deg), tau 10 scans,
+ * a = 2; nothing is confirmed in fewer than 64 scans (M of N 64 / 64). */
+static void map_params(struct trk_tracker_params *p)
+{
+    trk_tracker_default_params(p);
+    struct trk_sensor_params *s = &p->sensor[0];
+    s->kind = TRK_SENSOR_POLAR;
+    s->sigma_range_m = TRK_REAL_C(7.5);
+    s->sigma_bearing_rad = (trk_real)(1.5 * DEG);
+    s->pd = TRK_REAL_C(0.9);
+    s->clutter_density_per_m2 = TRK_REAL_C(1e-7);
+    s->coverage.min_range_m = 1000;
+    s->coverage.max_range_m = 9000;
+    s->coverage.half_width_rad = (trk_real)(60 * DEG);
+    p->clutter_map.n_range = 4;
+    p->clutter_map.n_bearing = 4;
+    p->clutter_map.time_constant_scans = 10;
+    p->clutter_map.prior_count = 2;
+    p->clutter_map.min_ratio = TRK_REAL_C(0.1);
+    p->clutter_map.max_ratio = 100;
+    p->confirm.method = TRK_CONFIRM_MN;
+    p->confirm.u.mn.m = 64;
+    p->confirm.u.mn.n = 64;
+    p->confirm.u.mn.mode = TRK_MN_FIXED;
+    p->term.method = TRK_TERM_KN;
+    p->term.u.kn.k = 0;
+    p->term.u.kn.n = 64;
+}
+
+static double polar_x(double r, double b_deg) { return r * sin(b_deg * DEG); }
+static double polar_y(double r, double b_deg) { return r * cos(b_deg * DEG); }
+
+/* The map's ratio after K scans of c detections per scan in a cell of
+ * rows [ra, rb] (m), 30 deg wide, lambda 1e-7: (N + a) / (e W + a). */
+static double ratio_after(int K, double c, double ra, double rb)
+{
+    const double keep = 1 - 1.0 / 10;
+    double W = 0;
+    for (int k = 0; k < K; k++) W = W * keep + 1;
+    const double e = 1e-7 * (30 * DEG) * (rb * rb - ra * ra) / 2;
+    return (c * W + 2) / (e * W + 2);
+}
+
+static double lambda_at(const struct trk_tracker *t, double x, double y)
+{
+    trk_real l = 0;
+    TRK_ASSERT_OK(trk_tracker_clutter_at(t, 0, NULL, (trk_real)x, (trk_real)y, &l));
+    return (double)l;
+}
+
+/* Three detections in cell (row 1: 3-5 km, column 2: 0..30 deg) and
+ * twelve in cell (row 0, column 0) every scan, at fixed spots (they start
+ * tentative tracks, none confirmed). */
+static void test_closed_form(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    p.clutter_map.max_ratio = 20;
+    p.clutter_map.min_ratio = TRK_REAL_C(0.25);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_polar_detection d[15];
+    memset(d, 0, sizeof d);
+    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)((5 + 8 * i) * DEG);
+    for (int i = 3; i < 15; i++) d[i].range_m = (trk_real)(1200 + 100 * i), d[i].bearing_rad = (trk_real)(-55 * DEG);
+    const int K = 25;
+    for (int k = 0; k < K; k++) {
+        const struct trk_scan s = {SCAN_US(k), 0, 15, NULL, d, 0, {0, 0, 0}};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+        assert_int_equal(rep.n_confirmed, 0);
+    }
+    const double tol = TRK_TOL(1e-12, 2e-5);
+    /* the busy cell, at its centre and at a corner */
+    const double want = 1e-7 * ratio_after(K, 3, 3000, 5000);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), want, 0, tol);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(3010, 1), polar_y(3010, 1)), want, 0, tol);
+    assert_true(want > 3e-7); /* what the test is about: the map rose */
+    /* twelve per scan in the smallest cell: the ceiling */
+    assert_true(ratio_after(K, 12, 1000, 3000) > 20);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(2000, -45), polar_y(2000, -45)), 1e-7 * 20, 0, tol);
+    /* an empty far cell: a / (e W + a), below the floor */
+    const double empty = ratio_after(K, 0, 7000, 9000);
+    assert_true(empty < 0.25);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(8000, 45), polar_y(8000, 45)), 1e-7 * 0.25, 0, tol);
+    /* an empty near cell: above the floor */
+    const double near = ratio_after(K, 0, 1000, 3000);
+    assert_true(near > 0.25 && near < 1);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(2000, 45), polar_y(2000, 45)), 1e-7 * near, 0, tol);
+    /* outside the coverage: the configured density */
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(9500, 0), polar_y(9500, 0)), 1e-7, 0, 0);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 70), polar_y(4000, 70)), 1e-7, 0, 0);
+    /* the same position from another pose is another cell (the sensor's frame) */
+    const struct trk_pose turned = {0, 0, (trk_real)(-40 * DEG)};
+    trk_real l = 0;
+    TRK_ASSERT_OK(trk_tracker_clutter_at(&tk, 0, &turned, (trk_real)polar_x(4000, 15), (trk_real)polar_y(4000, 15), &l));
+    TRK_ASSERT_NEAR((double)l, 1e-7 * ratio_after(K, 0, 3000, 5000), 0, tol); /* column 3: empty */
+}
+
+/* With a 1/r clutter profile, a cell's expected count is lambda(r) r
+ * integrated exactly: one detection per scan in a cell keeps lambda(r) x
+ * ratio, ratio with e = c0 dtheta (rb - ra) for lambda = c0 / r. */
+static void test_profile_integral(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    struct trk_clutter_profile *cp = &p.sensor[0].clutter_profile;
+    const double c0 = 1e-4; /* lambda = c0 / r: 1e-7 at 1 km */
+    cp->n = 2;
+    cp->range_m[0] = 1000, cp->density_per_m2[0] = (trk_real)(c0 / 1000);
+    cp->range_m[1] = 9000, cp->density_per_m2[1] = (trk_real)(c0 / 9000);
+    /* linear between the points is not 1/r: compare with the profile's own
+     * linear density, integrated exactly (the rule is exact for a cubic) */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_polar_detection d = {5500, (trk_real)(-20 * DEG), 0, 0};
+    const int K = 12;
+    for (int k = 0; k < K; k++) {
+        const struct trk_scan s = {SCAN_US(k), 0, 1, NULL, &d, 0, {0, 0, 0}};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
+    }
+    /* lambda(r) = l0 + s (r - 1000): int over [5000, 7000] of lambda r dr */
+    const double l0 = c0 / 1000, sl = (c0 / 9000 - c0 / 1000) / 8000;
+    const double ra = 5000, rb = 7000;
+    const double I = (l0 - sl * 1000) * (rb * rb - ra * ra) / 2 + sl * (rb * rb * rb - ra * ra * ra) / 3;
+    const double e = (30 * DEG) * I;
+    const double keep = 0.9;
+    double W = 0;
+    for (int k = 0; k < K; k++) W = W * keep + 1;
+    const double rho = (W + 2) / (e * W + 2);
+    const double r = 6000, lam = l0 + sl * (r - 1000);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(r, -15), polar_y(r, -15)), lam * rho, 0, TRK_TOL(1e-12, 2e-5));
+}
+
+/* A target standing at 4 km, 15 deg, detected every scan without noise:
+ * its track confirms (the default confirmation); from the scan after that
+ * its detections are in a confirmed track's gate and not counted. */
+static void test_confirmed_not_counted(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    p.confirm.method = TRK_CONFIRM_MN; /* 3 of 5: confirmed at a known scan */
+    p.confirm.u.mn.m = 3;
+    p.confirm.u.mn.n = 5;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const struct trk_polar_detection d = {4000, (trk_real)(15 * DEG), 0, 0};
+    const int K = 20;
+    int kc = -1; /* the scan whose update confirmed the track */
+    for (int k = 0; k < K; k++) {
+        const struct trk_scan s = {SCAN_US(k), 0, 1, NULL, &d, 0, {0, 0, 0}};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+        if (rep.n_confirmed > 0) {
+            assert_int_equal(kc, -1);
+            kc = k;
+        }
+    }
+    assert_true(kc > 0 && kc < K - 5);
+    /* counted: scans 0 .. kc (the detection of scan kc was gated while the
+     * track was still tentative); then only forgotten */
+    const double keep = 0.9;
+    double N = 0, W = 0;
+    for (int k = 0; k < K; k++) {
+        N = N * keep + (k <= kc ? 1 : 0);
+        W = W * keep + 1;
+    }
+    const double e = 1e-7 * (30 * DEG) * (5000.0 * 5000 - 3000.0 * 3000) / 2;
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(3100, 29), polar_y(3100, 29)), 1e-7 * (N + 2) / (e * W + 2), 0,
+                    TRK_TOL(1e-12, 2e-5));
+}
+
+/* The same detections as a polar scan and as the caller's conversion give
+ * the same map (and tables). */
+static void test_polar_equals_cartesian(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    uint64_t rng = 7;
+    const struct trk_pose o = {0, 0, 0};
+    for (int k = 0; k < 10; k++) {
+        struct trk_polar_detection d[20];
+        struct trk_detection c[20];
+        for (int i = 0; i < 20; i++) {
+            d[i].range_m = (trk_real)(1000 + 8000 * trk_test_urand(&rng));
+            d[i].bearing_rad = (trk_real)((-60 + 120 * trk_test_urand(&rng)) * DEG);
+            d[i].has_amplitude = 0;
+            d[i].amplitude = 0;
+            TRK_ASSERT_OK(trk_polar_to_cartesian(&p.sensor[0], &o, &d[i], &c[i]));
+        }
+        const struct trk_scan sp = {SCAN_US(k), 0, 20, NULL, d, 0, {0, 0, 0}};
+        const struct trk_scan sc = {SCAN_US(k), 0, 20, c, NULL, 0, {0, 0, 0}};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &sp, NULL));
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &sc, NULL));
+    }
+    for (int i = 0; i < 40; i++) {
+        const double r = 1000 + 200 * i, b = -58 + 3 * i;
+        TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(r, b), polar_y(r, b)), lambda_at(&tk2, polar_x(r, b), polar_y(r, b)),
+                        0, TRK_TOL(1e-12, 1e-5));
+    }
+}
+
+static void test_params_and_refusals(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const char *field = NULL;
+    map_params(&p);
+    p.clutter_map.n_range = TRK_CLUTTER_MAP_CELLS + 1;
+    p.clutter_map.n_bearing = 1;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_CAPACITY);
+    assert_string_equal(field, "clutter_map.n_range");
+    map_params(&p);
+    p.clutter_map.n_bearing = 0;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    map_params(&p);
+    p.clutter_map.time_constant_scans = TRK_REAL_C(0.5);
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "clutter_map.time_constant_scans");
+    map_params(&p);
+    p.clutter_map.prior_count = 0;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "clutter_map.prior_count");
+    map_params(&p);
+    p.clutter_map.min_ratio = (trk_real)NAN;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_NAN);
+    assert_string_equal(field, "clutter_map.min_ratio");
+    map_params(&p);
+    p.clutter_map.max_ratio = TRK_REAL_C(0.5);
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "clutter_map.max_ratio");
+    map_params(&p); /* no cells: no map, the rest unread */
+    p.clutter_map.n_range = p.clutter_map.n_bearing = 0;
+    p.clutter_map.prior_count = 0;
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    TRK_ASSERT_NEAR(lambda_at(&tk, 0, 4000), 1e-7, 0, 0);
+    trk_real l;
+    TRK_ASSERT_STATUS(trk_tracker_clutter_at(NULL, 0, NULL, 0, 0, &l), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_tracker_clutter_at(&tk, 0, NULL, 0, 0, NULL), TRK_E_ARG);
+    TRK_ASSERT_STATUS(trk_tracker_clutter_at(&tk, 1, NULL, 0, 0, &l), TRK_E_SENSOR);
+    TRK_ASSERT_STATUS(trk_tracker_clutter_at(&tk, 0, NULL, (trk_real)NAN, 0, &l), TRK_E_NAN);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_closed_form),
+        cmocka_unit_test(test_profile_integral),
+        cmocka_unit_test(test_confirmed_not_counted),
+        cmocka_unit_test(test_polar_equals_cartesian),
+        cmocka_unit_test(test_params_and_refusals),
+    };
+    return trk_run_tests("clutter_map", tests, NULL, NULL);
+}
