@@ -40,6 +40,10 @@
  *                     their own covariances by the tracker) against the same
  *                     positions as Cartesian detections of one shared
  *                     covariance, same run, and their ratio
+ *   scan_64x1024_map  the polar scans with a coverage (0.5-4.5 km, all
+ *                     round) and the default clutter map (16 x 16 cells over
+ *                     it) against the same without a map, same run, and
+ *                     their ratio
  *   candidates_full   ns per scan of the initiation stage at full scan capacity
  *                     (TRK_MAX_DETECTIONS unexplained detections) and the store's bytes
  *   sizeof_tracker    bytes of struct trk_tracker at this build's capacities */
@@ -189,10 +193,16 @@ struct scan_job {
 
 /* The scans' configurations: the defaults (joint association), the same
  * with the per-track PDA, and the M/N path. */
-enum scan_cfg { SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER, SCAN_AB, SCAN_OWN, SCAN_POLAR };
+enum scan_cfg {
+    SCAN_DEFAULT, SCAN_PDA, SCAN_MN_KN, SCAN_IMM, SCAN_OVER, SCAN_AB, SCAN_OWN, SCAN_POLAR,
+    SCAN_POLAR_COV, /* the polar scans with a coverage (0.5-4.5 km, all round), no clutter map */
+    SCAN_POLAR_MAP  /* ... and the default clutter map over it */
+};
 
 /* Detections per scan of a configuration. */
-static size_t scan_n_det(enum scan_cfg cfg) { return cfg == SCAN_OVER || cfg == SCAN_POLAR ? N_DET_OVER : N_DET; }
+static int scan_polar(enum scan_cfg cfg) { return cfg == SCAN_POLAR || cfg == SCAN_POLAR_COV || cfg == SCAN_POLAR_MAP; }
+
+static size_t scan_n_det(enum scan_cfg cfg) { return cfg == SCAN_OVER || scan_polar(cfg) ? N_DET_OVER : N_DET; }
 
 /* The polar sensor of scan_64x1024_polar: 2 km west of the area. */
 #define POLAR_X_M (-2000.0)
@@ -209,13 +219,18 @@ static void scan_params(enum scan_cfg cfg, struct trk_tracker_params *p)
     }
     if (cfg == SCAN_PDA) p->association = TRK_ASSOC_PDA;
     if (cfg == SCAN_AB) p->filter = TRK_FILTER_ALPHA_BETA;
-    if (cfg == SCAN_POLAR) {
+    if (scan_polar(cfg)) {
         p->sensor[0].kind = TRK_SENSOR_POLAR;
         p->sensor[0].sigma_range_m = 1;
         p->sensor[0].sigma_bearing_rad = TRK_REAL_C(0.0005);
         p->sensor[0].pose.x_m = (trk_real)POLAR_X_M;
         p->sensor[0].pose.y_m = (trk_real)POLAR_Y_M;
     }
+    if (cfg == SCAN_POLAR_COV || cfg == SCAN_POLAR_MAP) {
+        p->sensor[0].coverage.min_range_m = 500;
+        p->sensor[0].coverage.max_range_m = 4500;
+    }
+    if (cfg != SCAN_POLAR_MAP) p->clutter_map.n_range = p->clutter_map.n_bearing = 0;
     p->sensor[0].pd = TRK_REAL_C(0.9);
     p->sensor[0].clutter_density_per_m2 = (trk_real)((double)(scan_n_det(cfg) - N_TGT) / (1200.0 * 1200.0));
     p->process_noise_q = TRK_REAL_C(0.01);
@@ -288,8 +303,8 @@ static double scan_rep(struct scan_job *j, const struct trk_tracker_params *p, s
 {
     if (trk_tracker_init(&j->tk, p) != TRK_OK) return -1;
     for (int k = 0; k < N_SCANS; k++) {
-        j->scan[k].detections = cfg == SCAN_POLAR ? NULL : cfg == SCAN_OWN ? j->det_own[k] : j->det[k];
-        j->scan[k].polar = cfg == SCAN_POLAR ? j->polar[k] : NULL;
+        j->scan[k].detections = scan_polar(cfg) ? NULL : cfg == SCAN_OWN ? j->det_own[k] : j->det[k];
+        j->scan[k].polar = scan_polar(cfg) ? j->polar[k] : NULL;
     }
     for (int k = 0; k < 4; k++) {
         j->scan[k].time_us = (int64_t)k * 1000000;
@@ -439,6 +454,16 @@ TRK_BENCH(scan_64x1024_polar)
 {
     static const char *const names[] = {"scan_64x1024", "scan_64x1024_polar"};
     static const enum scan_cfg cfg[] = {SCAN_OVER, SCAN_POLAR};
+    scan_bench(names, cfg, 2);
+}
+
+/* The clutter map's cost: the polar scans of 1024 detections with a
+ * coverage, with the default map (16 x 16 cells over it) and without,
+ * alternating in the same run. */
+TRK_BENCH(scan_64x1024_map)
+{
+    static const char *const names[] = {"scan_64x1024_polar_nomap", "scan_64x1024_polar_map"};
+    static const enum scan_cfg cfg[] = {SCAN_POLAR_COV, SCAN_POLAR_MAP};
     scan_bench(names, cfg, 2);
 }
 
