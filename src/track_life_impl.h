@@ -20,15 +20,31 @@ static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_s
     if (why == TRK_END_MERGED) rep->n_merged++;
 }
 
+/* Is tentative track tr's velocity consistent with standing still,
+ * v' P_v^-1 v < stationary_d2 (0: never)? A P_v that is not positive
+ * definite cannot tell: not held. */
+static int standing_still(const struct trk_tracker *t, const struct trk_track *tr)
+{
+    const trk_real h = t->params.stationary_d2;
+    if (!(h > 0)) return 0;
+    const trk_real a = tr->p[P(VX, VX)], b = tr->p[P(VX, VY)], c = tr->p[P(VY, VY)];
+    const trk_real vx = tr->x[VX], vy = tr->x[VY], det = a * c - b * b;
+    if (!(a > 0 && det > 0)) return 0;
+    return c * vx * vx - 2 * b * vx * vy + a * vy * vy < h * det; /* v' P_v^-1 v < h */
+}
+
 /* The track's test on this look and what it decides: confirmation (or
- * rejection, or the tentative age limit) of a tentative track, termination
- * of a confirmed one. */
+ * rejection, or the tentative age limit) of a tentative track, held while
+ * it stands still (a persistent return), termination of a confirmed one. */
 static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
                        struct trk_scan_report *rep)
 {
     if (tr->status == TRK_TRACK_TENTATIVE) {
         const int d = trk_i_confirm_step(t, tr, look);
-        if (d > 0) {
+        tr->stationary = (uint8_t)(d > 0 && standing_still(t, tr));
+        if (tr->stationary) {
+            rep->n_stationary++;
+        } else if (d > 0) {
             tr->status = TRK_TRACK_CONFIRMED;
             trk_i_term_start(t, tr);
             rep->n_confirmed++;

@@ -31,6 +31,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_speed_mps = 15; /* 30 knots */
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
+    p->stationary_d2 = TRK_REAL_C(9.2103403719761836); /* -2 ln 0.01: chi^2_2 at 0.99 */
     /* a clutter map for a sensor with a coverage: 16 x 16 cells, 20 scans'
      * memory, 2 pseudo-counts (docs/tracker.md "Clutter map") */
     p->clutter_map.n_range = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
@@ -71,6 +72,7 @@ void trk_tracker_mn_kn_params(struct trk_tracker_params *p)
     p->term.u.kn.n = 5;
     p->init.method = TRK_INIT_SINGLE_POINT;
     p->init.birth_density_per_m2 = 0;
+    p->stationary_d2 = 0; /* as before the hold of tracks that stand still */
     p->max_pos_sigma_ratio = 0;
     p->visibility.delta_become = TRK_REAL_C(0.01);
     p->association = TRK_ASSOC_PDA;
@@ -228,7 +230,8 @@ static trk_status check_scalars(const struct trk_tracker_params *p, const char *
         (st = check_speed_sigma(p->init_speed_sigma_mps, field)) != TRK_OK ||
         (st = check_real(p->max_dt_s, TRK_MAX_DT_S_MIN, 0, TRK_REAL_C(1e9), "max_dt_s", field)) != TRK_OK ||
         (st = check_real(p->merge_gate_d2, 0, 0, TRK_REAL_MAX, "merge_gate_d2", field)) != TRK_OK ||
-        (st = check_real(p->init_exclusion_d2, 0, 0, TRK_REAL_MAX, "init_exclusion_d2", field)) != TRK_OK)
+        (st = check_real(p->init_exclusion_d2, 0, 0, TRK_REAL_MAX, "init_exclusion_d2", field)) != TRK_OK ||
+        (st = check_real(p->stationary_d2, 0, 0, TRK_REAL_MAX, "stationary_d2", field)) != TRK_OK)
         return st;
     if (p->track_visibility != 0 && p->track_visibility != 1) return refuse(field, "track_visibility", TRK_E_ARG);
     if ((st = check_real(p->max_pos_sigma_ratio, 0, 0, TRK_REAL_MAX, "max_pos_sigma_ratio", field)) != TRK_OK ||

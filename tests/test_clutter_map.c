@@ -26,6 +26,7 @@ static struct trk_tracker tk, tk2;
 static void map_params(struct trk_tracker_params *p)
 {
     trk_tracker_default_params(p);
+    p->stationary_d2 = 0; /* its targets stand still: they are targets here, not persistent returns */
     struct trk_sensor_params *s = &p->sensor[0];
     s->kind = TRK_SENSOR_POLAR;
     s->sigma_range_m = TRK_REAL_C(7.5);

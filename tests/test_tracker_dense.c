@@ -32,6 +32,7 @@ static size_t formation_run(double spacing_m, double speed_mps, uint64_t seed, s
     p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = 1;
     p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
     p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-7); /* joint association needs lambda > 0 */
+    p.stationary_d2 = 0; /* the lattice stands still or creeps: targets, not persistent returns */
     p.process_noise_q = TRK_REAL_C(1e-3);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     rng_state = seed;

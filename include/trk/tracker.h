@@ -595,6 +595,25 @@ struct trk_tracker_params {
                                                          left it; a sector that turns away
                                                          and back keeps its tracks with a
                                                          larger value */
+    trk_real stationary_d2;                           /**< a tentative track whose test would
+                                                         confirm it is held tentative (flag
+                                                         stationary) while its velocity is
+                                                         consistent with standing still:
+                                                         v' P_v^-1 v < this (v, P_v its
+                                                         velocity and covariance). A
+                                                         persistent return (a rock, a wreck)
+                                                         then keeps a tentative track that
+                                                         takes its returns (they start no
+                                                         track; joint association shares
+                                                         them) and is never reported
+                                                         confirmed; once it moves it is
+                                                         confirmed (under its id when its
+                                                         gate can follow; a sudden jump
+                                                         starts a new track) (seed survey
+                                                         ch. 5.3, stationary point tracks).
+                                                         Default 9.21 (chi^2, 2 dof, 0.99);
+                                                         0 = off (a tracker of objects that
+                                                         stand still) */
     struct trk_init_params init;                      /**< how tracks start */
     struct trk_clutter_map_params clutter_map;        /**< each sensor's clutter map (a
                                                          sensor with a coverage's maximum
@@ -646,7 +665,8 @@ void trk_tracker_default_params(struct trk_tracker_params *p);
  * (kept for comparison and for users of M/N): the defaults with M/N 3-of-5
  * confirmation, termination after 5 consecutive misses (K/N 0/5),
  * single-point initiation at the visibility's pv0, no covariance bound,
- * Delta_bar 0.01 and the per-track PDA (TRK_ASSOC_PDA). */
+ * Delta_bar 0.01, the per-track PDA (TRK_ASSOC_PDA) and no hold of tracks
+ * that stand still (stationary_d2 = 0). */
 void trk_tracker_mn_kn_params(struct trk_tracker_params *p);
 
 #if TRK_WITH_IMM
@@ -689,6 +709,9 @@ struct trk_track {
     uint32_t id;                      /**< stable, > 0 */
     uint8_t status;                   /**< enum trk_track_status */
     uint8_t end_reason;               /**< enum trk_track_end */
+    uint8_t stationary;               /**< 1: a tentative track held because its
+                                         velocity is consistent with standing still
+                                         (trk_tracker_params.stationary_d2) */
     int64_t time_us;                  /**< time of x and P */
     trk_real x[TRK_CV2_NX];           /**< [x, vx, y, vy] */
     trk_real p[TRK_CV2_NX * TRK_CV2_NX];  /**< covariance of x (4 x 4, row-major; TRK_CV2_P) */
@@ -747,6 +770,8 @@ struct trk_scan_report {
     uint32_t n_tracks_hit;          /**< ... with at least one detection gated */
     uint32_t n_started;             /**< new tentative tracks */
     uint32_t n_confirmed;           /**< tentative -> confirmed */
+    uint32_t n_stationary;          /**< tentative tracks held as standing still
+                                       (trk_tracker_params.stationary_d2) */
     uint32_t n_terminated;          /**< tracks ended this scan (any reason) */
     uint32_t n_init_refused_full;   /**< initiations refused: table full (single point: each
                                        detection that could not start; two points: each pair

@@ -85,6 +85,7 @@ static const struct layout_row params_rows[] = {
     REAL(P, term.u.existence.p_terminate, 1, "", "(0, 1), below p_confirm"),
     REAL(P, merge_gate_d2, 1, "", ">= 0 (0: never merge)"),
     REAL(P, init_exclusion_d2, 1, "", ">= 0"),
+    REAL(P, stationary_d2, 1, "", ">= 0 (0: off)"),
     ROW(P, max_tentative_scans, 'u', uint32_t, 1, "", "scans", ">= 0 (0: no limit)"),
     ROW(P, max_unseen_scans, 'u', uint32_t, 1, "", "scans", ">= 0 (0: a track leaving the coverage ends; 65535+: never)"),
     ENUM(P, init.method, "INIT_SINGLE_POINT, INIT_TWO_POINT"),
@@ -232,7 +233,7 @@ static const struct layout_row scan_rows[] = {
 #define R(M) ROW(struct trk_scan_report, M, 'u', uint32_t, 1, "", "", "")
 static const struct layout_row report_rows[] = {
     R(n_detections), R(n_rejected_nonfinite), R(n_rejected_cov), R(n_rejected_amplitude),
-    R(n_rejected_region), R(n_below_threshold), R(n_kept), R(n_thinned), R(n_tracks_updated), R(n_tracks_hit), R(n_started), R(n_confirmed),
+    R(n_rejected_region), R(n_below_threshold), R(n_kept), R(n_thinned), R(n_tracks_updated), R(n_tracks_hit), R(n_started), R(n_confirmed), R(n_stationary),
     R(n_terminated), R(n_init_refused_full), R(n_numerical), R(n_merged), R(n_replaced),
     R(n_covariance), R(n_candidates), R(n_candidates_dropped), R(n_clusters), R(n_clusters_approx),
     R(largest_cluster), R(n_assoc_overflow),
@@ -248,6 +249,7 @@ static const struct layout_row track_rows[] = {
     ROW(T, id, 'u', uint32_t, 1, "", "", "> 0"),
     ROW(T, status, 'u', uint8_t, 1, "", "", "TRACK_FREE, TRACK_TENTATIVE, TRACK_CONFIRMED, TRACK_TERMINATED"),
     ROW(T, end_reason, 'u', uint8_t, 1, "", "", "END_*"),
+    ROW(T, stationary, 'u', uint8_t, 1, "", "", "1: tentative, held standing still"),
     ROW(T, time_us, 'i', int64_t, 1, "", "us", ""),
     REAL(T, x, TRK_CV2_NX, "m, m/s", "[x, vx, y, vy]"),
     REAL(T, p, TRK_CV2_NX * TRK_CV2_NX, "m^2, m^2/s, m^2/s^2", "4 x 4 row-major"),

@@ -240,7 +240,7 @@ static const char *const CONVERSION_NAMES[] = {"first_order", "unbiased", NULL};
  * tcfg_write. */
 static const char *const KEYS[] = {
     "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
-    "max_tentative_scans", "max_unseen_scans", "merge_gate_d2", "init_exclusion_d2", "association", "filter", "init.method",
+    "max_tentative_scans", "max_unseen_scans", "merge_gate_d2", "init_exclusion_d2", "stationary_d2", "association", "filter", "init.method",
     "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "clutter_map.n_range",
     "clutter_map.n_bearing", "clutter_map.time_constant_scans", "clutter_map.prior_count", "clutter_map.min_ratio",
     "clutter_map.max_ratio", "max_pos_sigma_ratio",
@@ -528,6 +528,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     }
     if (strcmp(key, "merge_gate_d2") == 0) return get_real(v, R_NONNEG, &p->merge_gate_d2, err, n);
     if (strcmp(key, "init_exclusion_d2") == 0) return get_real(v, R_NONNEG, &p->init_exclusion_d2, err, n);
+    if (strcmp(key, "stationary_d2") == 0) return get_real(v, R_NONNEG, &p->stationary_d2, err, n);
     if (strcmp(key, "association") == 0) {
         if (get_name(v, ASSOC_NAMES, &e, err, n) != 0) return -1;
         p->association = e ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA;
@@ -993,6 +994,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     fprintf(f, "max_unseen_scans = %lu\n", (unsigned long)p->max_unseen_scans);
     put_num(f, "merge_gate_d2", (double)p->merge_gate_d2);
     put_num(f, "init_exclusion_d2", (double)p->init_exclusion_d2);
+    put_num(f, "stationary_d2", (double)p->stationary_d2);
     fprintf(f, "association = %s\n", ASSOC_NAMES[p->association == TRK_ASSOC_JOINT]);
     fprintf(f, "filter = %s\n", FILTER_NAMES[p->filter == TRK_FILTER_ALPHA_BETA]);
     fprintf(f, "init.method = %s\n", INIT_NAMES[p->init.method == TRK_INIT_TWO_POINT]);
@@ -1122,6 +1124,9 @@ void tcfg_help(FILE *f)
             "                                    more than N scans in a row (0)\n"
             "  merge_gate_d2 = G                 merge two tracks whose 4-D states are within d2 <= G, 0 = off (4)\n"
             "  init_exclusion_d2 = G             no new track from a detection within d2 <= G of a confirmed track (18.42)\n"
+            "  stationary_d2 = G                 hold a tentative track tentative while its velocity is\n"
+            "                                    consistent with standing still, v' P_v^-1 v < G (a\n"
+            "                                    persistent return), 0 = off (9.21)\n"
             "  association = pda|joint           per-track PDA, or joint association (JPDA / JIPDA) (joint)\n"
             "  filter = kalman|alpha_beta        track filter: CV Kalman, or constant gains (TRK_WITH_ALPHA_BETA builds) (kalman)\n"
             "  init.method = two_point|single_point   how tracks start (two_point)\n"

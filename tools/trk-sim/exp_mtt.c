@@ -141,7 +141,7 @@
 #define MTT_REPORT_COUNTERS(X)                                                                             \
     X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_rejected_region) \
     X(n_below_threshold) \
-    X(n_kept) X(n_thinned) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_terminated) X(n_init_refused_full) \
+    X(n_kept) X(n_thinned) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_stationary) X(n_terminated) X(n_init_refused_full) \
     X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)       \
     X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
 
@@ -864,6 +864,7 @@ static void print_tables(const struct mtt_row *rows, int n)
         {"live", M_LIVE, 7, 1, 0, 1},                {"full%", M_FULL, 6, 1, 0, 100},
         {"conf", M_CONF, 6, 1, 0, 1},                {"refused", M_REP_n_init_refused_full, 9, 0, 0, 1},
         {"replaced", M_REP_n_replaced, 8, 0, 0, 1},  {"merged", M_REP_n_merged, 7, 0, 0, 1},
+        {"held", M_REP_n_stationary, 7, 0, 0, 1},
     };
     static const struct column capacity[] = {
         {"dets/scan", M_CLUTTER, 9, 1, 0, 1},        {"kept/scan", M_KEPT, 9, 1, 0, 1},

@@ -1,0 +1,181 @@
+/* test_stationary.c - the hold of tracks that stand still
+ * (trk_tracker_params.stationary_d2; docs/tracker.md "Persistent
+ * returns"):
+ *   - a persistent return (a fixed scatterer detected every scan with
+ *     noise) keeps one tentative track, flagged stationary, whose existence
+ *     would confirm it; it is never confirmed, its returns start no other
+ *     track, and the flag is the closed form v' P_v^-1 v < stationary_d2 of
+ *     its published state whenever its existence is past p_confirm;
+ *   - once the scatterer moves (6 m/s) a track is confirmed on it within
+ *     12 scans (a new one: its still track cannot follow the jump), the
+ *     still one never;
+ *   - a target moving clearly (8 m/s, sigma 5 m, 4 s) is confirmed at the
+ *     same scan with the hold as without it;
+ *   - stationary_d2 = 0 confirms the scatterer (the hold off);
+ *   - the parameter check. */
+#include "trk_test.h"
+#include "trk/tracker.h"
+
+#define SEC(k) ((int64_t)(k) * 4000000)
+#define DT_S 4.0
+
+static struct trk_tracker tk;
+
+/* Sigma 5 m, P_D 0.9, clutter 1e-6 per m^2, q 1e-3: the defaults else. */
+static void params(struct trk_tracker_params *p)
+{
+    trk_tracker_default_params(p);
+    p->sensor[0].pd = TRK_REAL_C(0.9);
+    p->sensor[0].meas_cov_m2[TRK_COV2_XX] = p->sensor[0].meas_cov_m2[TRK_COV2_YY] = 25;
+    p->sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
+    p->sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+    p->process_noise_q = TRK_REAL_C(1e-3);
+}
+
+/* v' P_v^-1 v of track tr. */
+static double velocity_d2(const struct trk_track *tr)
+{
+    const double a = (double)tr->p[TRK_CV2_P(TRK_CV2_VX, TRK_CV2_VX)];
+    const double b = (double)tr->p[TRK_CV2_P(TRK_CV2_VX, TRK_CV2_VY)];
+    const double c = (double)tr->p[TRK_CV2_P(TRK_CV2_VY, TRK_CV2_VY)];
+    const double vx = (double)tr->x[TRK_CV2_VX], vy = (double)tr->x[TRK_CV2_VY];
+    return (c * vx * vx - 2 * b * vx * vy + a * vy * vy) / (a * c - b * b);
+}
+
+/* One scan of the object at (x, y) with noise (every scan). */
+static void scan_at(int k, double x, double y, uint64_t *rng, struct trk_scan_report *rep)
+{
+    struct trk_detection d;
+    memset(&d, 0, sizeof d);
+    d.x_m = (trk_real)(x + 5 * trk_test_nrand(rng));
+    d.y_m = (trk_real)(y + 5 * trk_test_nrand(rng));
+    const struct trk_scan s = {SEC(k), 0, 1, &d, NULL, 0, {0, 0, 0}};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, rep));
+}
+
+/* The live tracks: exactly one, returned. */
+static const struct trk_track *only_track(void)
+{
+    const struct trk_track *one = NULL;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *tr = trk_tracker_track(&tk, i);
+        if (!tr) continue;
+        assert_null(one);
+        one = tr;
+    }
+    assert_non_null(one);
+    return one;
+}
+
+static void test_persistent_return_held_then_handed_over(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    params(&p);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    uint64_t rng = 11;
+    struct trk_scan_report rep;
+    int held = 0;
+    uint32_t id = 0;
+    for (int k = 0; k < 40; k++) {
+        scan_at(k, 1000, 2000, &rng, &rep);
+        assert_int_equal(rep.n_confirmed, 0);
+        if (k < 1) continue;
+        const struct trk_track *tr = only_track();
+        if (id == 0) id = tr->id;
+        assert_int_equal(tr->id, id); /* one track, never another */
+        assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
+        if (tr->vis.pv >= p.confirm.u.existence.p_confirm) { /* its test would confirm it */
+            assert_int_equal(tr->stationary, velocity_d2(tr) < 9.2103403719761836);
+            assert_int_equal(tr->stationary, 1);
+            assert_int_equal(rep.n_stationary, 1);
+            held++;
+        }
+    }
+    assert_true(held >= 30);
+    /* it moves away at 6 m/s, a jump its still track cannot follow (24 m a
+     * scan against a gate of about 16 m): a new track takes it over and is
+     * confirmed, the still one is never confirmed */
+    int confirmed_at = -1;
+    for (int k = 40; k < 60; k++) {
+        const double x = 1000 + 6 * DT_S * (k - 40);
+        scan_at(k, x, 2000, &rng, &rep);
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *tr = trk_tracker_track(&tk, i);
+            if (!tr || tr->status != TRK_TRACK_CONFIRMED) continue;
+            assert_true(tr->id != id);
+            assert_int_equal(tr->stationary, 0);
+            assert_true(fabs((double)tr->x[TRK_CV2_X] - x) < 30);
+            if (confirmed_at < 0) confirmed_at = k;
+        }
+    }
+    assert_true(confirmed_at > 40 && confirmed_at < 52);
+}
+
+/* The scan at which the mover is confirmed (-1: never in 20 scans). */
+static int mover_confirmed_at(trk_real stationary_d2)
+{
+    struct trk_tracker_params p;
+    params(&p);
+    p.stationary_d2 = stationary_d2;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    uint64_t rng = 5;
+    for (int k = 0; k < 20; k++) {
+        struct trk_scan_report rep;
+        scan_at(k, -500 + 8 * DT_S * k, 300 - 2 * DT_S * k, &rng, &rep);
+        if (rep.n_confirmed == 1) return k;
+    }
+    return -1;
+}
+
+static void test_mover_not_delayed(void **state)
+{
+    (void)state;
+    const int with = mover_confirmed_at(TRK_REAL_C(9.2103403719761836)), without = mover_confirmed_at(0);
+    assert_true(without > 0);
+    assert_int_equal(with, without);
+}
+
+static void test_hold_off_confirms_the_return(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    params(&p);
+    p.stationary_d2 = 0;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    uint64_t rng = 11;
+    int confirmed = 0;
+    for (int k = 0; k < 20; k++) {
+        struct trk_scan_report rep;
+        scan_at(k, 1000, 2000, &rng, &rep);
+        confirmed += (int)rep.n_confirmed;
+        assert_int_equal(rep.n_stationary, 0);
+    }
+    assert_int_equal(confirmed, 1);
+}
+
+static void test_param_check(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    const char *field = NULL;
+    params(&p);
+    p.stationary_d2 = -1;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "stationary_d2");
+    p.stationary_d2 = (trk_real)NAN;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_NAN);
+    p.stationary_d2 = 0;
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_persistent_return_held_then_handed_over),
+        cmocka_unit_test(test_mover_not_delayed),
+        cmocka_unit_test(test_hold_off_confirms_the_return),
+        cmocka_unit_test(test_param_check),
+    };
+    return trk_run_tests("stationary", tests, NULL, NULL);
+}
