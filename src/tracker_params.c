@@ -160,7 +160,8 @@ static trk_status check_clutter_map(const struct trk_clutter_map_params *mp, con
 {
     trk_status st;
     if (mp->n_range == 0 && mp->n_bearing == 0) return TRK_OK;
-    if (mp->n_range == 0 || mp->n_bearing == 0) return refuse(field, "clutter_map.n_range", TRK_E_RANGE);
+    if (mp->n_range == 0) return refuse(field, "clutter_map.n_range", TRK_E_RANGE);
+    if (mp->n_bearing == 0) return refuse(field, "clutter_map.n_bearing", TRK_E_RANGE);
     if ((unsigned long)mp->n_range * mp->n_bearing > (unsigned long)TRK_CLUTTER_MAP_CELLS)
         return refuse(field, "clutter_map.n_range", TRK_E_CAPACITY);
     if ((st = check_real(mp->time_constant_scans, 1, 0, TRK_REAL_C(1e6), "clutter_map.time_constant_scans", field)) !=

@@ -240,6 +240,7 @@ static void test_params_and_refusals(void **state)
     map_params(&p);
     p.clutter_map.n_bearing = 0;
     TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "clutter_map.n_bearing");
     map_params(&p);
     p.clutter_map.time_constant_scans = TRK_REAL_C(0.5);
     TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
