@@ -988,6 +988,24 @@ void mtt_scen_pose(const struct mtt_scenario *s, long k, struct trk_pose *pose)
     pose->heading_rad = (trk_real)h;
 }
 
+double mtt_scen_clutter_density(const struct mtt_scenario *s, long k, long clutter_count, double x_m, double y_m)
+{
+    const struct mtt_scen_params *p = &s->p;
+    if (p->family != MTT_FAMILY_SONAR) return 0;
+    struct trk_pose pose;
+    mtt_scen_pose(s, k, &pose);
+    const double dx = x_m - (double)pose.x_m, dy = y_m - (double)pose.y_m, r = hypot(dx, dy);
+    const double b = atan2(dx, dy) - (double)pose.heading_rad, bb = atan2(sin(b), cos(b));
+    if (!sonar_covered(s, r, bb)) return 0;
+    const double w2 = 2 * p->half_width_deg * DEG, n = (double)clutter_count;
+    double d = n * (1 - SONAR_PATCH_SHARE - SONAR_NEAR_SHARE) / (w2 * (p->range_max_m - p->range_min_m) * r);
+    d += n * SONAR_NEAR_SHARE * exp(-(r - p->range_min_m) / SONAR_NEAR_SCALE_M) / (SONAR_NEAR_SCALE_M * w2 * r);
+    for (int j = 0; j < MTT_SONAR_PATCHES; j++)
+        if (hypot(x_m - s->patch[j].x_m, y_m - s->patch[j].y_m) <= s->patch[j].r_m)
+            d += n * SONAR_PATCH_SHARE / MTT_SONAR_PATCHES / (3.14159265358979323846 * s->patch[j].r_m * s->patch[j].r_m);
+    return d;
+}
+
 int mtt_scen_in_patch(const struct mtt_scenario *s, double x_m, double y_m)
 {
     if (s->p.family != MTT_FAMILY_SONAR) return 0;

@@ -440,6 +440,13 @@ int mtt_scen_scan_polar(const struct mtt_scenario *s, long k, long clutter_count
 /* The sensor's pose at scan k (sonar: the platform's; the others: the
  * origin, heading 0). */
 void mtt_scen_pose(const struct mtt_scenario *s, long k, struct trk_pose *pose);
+/* Sonar: the clutter's true density (per m^2 per scan) at (x, y) at scan
+ * k with clutter_count points per scan: the uniform share's over range x
+ * bearing, the near field's and the patches' (ignoring the few patch and
+ * near-field points that fall outside the sector and are drawn again as
+ * uniform ones); 0 outside the sector and for the other families. */
+double mtt_scen_clutter_density(const struct mtt_scenario *s, long k, long clutter_count, double x_m, double y_m);
+
 /* Sonar: 1 when (x, y) is in a reverberation patch (0 for the others). */
 int mtt_scen_in_patch(const struct mtt_scenario *s, double x_m, double y_m);
 /* Sonar with persistent = 1: the distance from (x, y) to the nearest

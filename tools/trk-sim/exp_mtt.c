@@ -1128,6 +1128,85 @@ static void mtt_ws_free(void *ctx, void *wsp)
     free(ws);
 }
 
+/* The sonar family's clutter map against the truth: the first seed's run
+ * of `new` at each clutter level, its map after the last scan, per cell
+ * (at its centre, from the last pose) the true density
+ * (mtt_scen_clutter_density), the configured one (the sensor's profile) and
+ * the tracker's (trk_tracker_clutter_at): PREFIX_clutter_map.csv and
+ * PREFIX_clutter_map.png (tracker's and configured against the truth,
+ * log-log). 0, or -1 on a failed run or write. */
+static int clutter_map_dump(const struct sim_common *com, const struct mtt_scenario *sc, const double *levels, int nl,
+                            const struct trk_tracker_params *tp, const int *kinds, int nc)
+{
+    int c = 0;
+    while (c < nc && kinds[c] != CFG_NEW) c++;
+    const struct trk_clutter_map_params *mp = c < nc ? &tp[c].clutter_map : NULL;
+    if (!mp || sc->p.family != MTT_FAMILY_SONAR || mp->n_range == 0) return 0;
+    struct run_ws *ws = malloc(sizeof *ws);
+    if (!ws || !(ws->tk = malloc(sizeof *ws->tk))) {
+        free(ws);
+        return -1;
+    }
+    struct fileio_out f_out;
+    char path[1024];
+    FILE *f = sim_csv_open(com, &f_out, "_clutter_map.csv", path, sizeof path,
+                           "clutter,range_cell,bearing_cell,x_m,y_m,in_patch,true_per_m2,configured_per_m2,"
+                           "tracker_per_m2");
+    int rc = f ? 0 : -1;
+    const long ns = sc->p.n_scans;
+    for (int l = 0; l < nl && rc == 0; l++) {
+        const long clutter = (long)levels[l];
+        if (trk_tracker_init(ws->tk, &tp[l * nc + c]) != TRK_OK) rc = -1;
+        for (long k = 0; k < ns && rc == 0; k++) {
+            struct trk_scan scan;
+            struct mtt_scan_info info;
+            if (sonar_scan_for(sc, k, clutter, TRK_MAX_SCAN_DETECTIONS, 0, 0, ws, &scan, &info) != 0 ||
+                trk_tracker_process_scan(ws->tk, &scan, NULL) != TRK_OK)
+                rc = -1;
+        }
+        struct trk_pose pose;
+        mtt_scen_pose(sc, ns - 1, &pose);
+        const struct trk_coverage *cv = &sc->sonar.coverage;
+        const double r0 = (double)cv->min_range_m, dr = ((double)cv->max_range_m - r0) / mp->n_range;
+        const double hb = (double)cv->half_width_rad, db = 2 * hb / mp->n_bearing;
+        for (unsigned ir = 0; ir < mp->n_range && rc == 0; ir++)
+            for (unsigned ib = 0; ib < mp->n_bearing && rc == 0; ib++) {
+                const double r = r0 + (ir + 0.5) * dr, b = (double)pose.heading_rad - hb + (ib + 0.5) * db;
+                const double x = (double)pose.x_m + r * sin(b), y = (double)pose.y_m + r * cos(b);
+                trk_real lt = 0;
+                if (trk_tracker_clutter_at(ws->tk, 0, &pose, (trk_real)x, (trk_real)y, &lt) != TRK_OK) rc = -1;
+                fprintf(f, "%ld,%u,%u,%.1f,%.1f,%d,%.6g,%.6g,%.6g\n", clutter, ir, ib, x, y,
+                        mtt_scen_in_patch(sc, x, y), mtt_scen_clutter_density(sc, ns - 1, clutter, x, y),
+                        (double)trk_sensor_clutter_at(&tp[l * nc + c].sensor[0], &pose, (trk_real)x, (trk_real)y),
+                        (double)lt);
+            }
+    }
+    if (f && (rc != 0 ? (sim_csv_discard(&f_out), -1) : sim_csv_close(&f_out)) != 0) rc = -1;
+    free(ws->tk);
+    free(ws);
+    if (rc != 0) return -1;
+    struct sim_text body = {NULL, 0, 0, 0};
+    sim_text_add(&body,
+                 "set datafile separator ','\nset key top left\nset logscale xy\nset grid\n"
+                 "set xlabel 'true clutter density (per km^2 per ping)'\n"
+                 "set ylabel 'density the tracker uses (per km^2 per ping)'\n"
+                 "set title 'clutter map after %ld pings, seed %lu, 16 x 16 cells (first seed, config new)'\n"
+                 "plot x title 'truth' with lines lc rgb 'black'",
+                 ns, (unsigned long)sc->p.seed);
+    for (int l = 0; l < nl; l++)
+        sim_text_add(&body,
+                     ", '%s' using ($1 == %ld && $7 > 0 ? $7 * 1e6 : 1/0):($9 * 1e6) title 'map, %ld per ping' "
+                     "with points pt 7 ps 0.6, '' using ($1 == %ld && $7 > 0 ? $7 * 1e6 : 1/0):($8 * 1e6) title "
+                     "'configured (profile), %ld per ping' with points pt 6 ps 0.6",
+                     path, (long)levels[l], (long)levels[l], (long)levels[l], (long)levels[l]);
+    sim_text_add(&body, "\n");
+    const int prc = body.failed ? -1 : sim_plot(com, "_clutter_map", body.s);
+    sim_text_free(&body);
+    printf("-- clutter map against the truth (first seed, new): %s%s\n", path,
+           com->no_plot ? "" : " and its PNG");
+    return prc < 0 ? -1 : 0;
+}
+
 SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) over clutter levels")
 {
     /* the options whose default is the family's: -1 / NULL until given */
@@ -1494,6 +1573,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     plot_all(&com, rows, nr, title);
     printf("-- %ld runs in %.1f s wall on %d threads; CSV %s%s\n", n_jobs, wall, threads, path,
            com.no_plot ? "" : " and PNG plots beside it");
+    if (family == MTT_FAMILY_SONAR && clutter_map_dump(&com, &sc[0], levels, nl, tp, kinds, nc) != 0) return 1;
     for (int k = 0; k < nl * nc; k++) tcfg_unload(&rts[k]);
     for (long i = 0; i < seeds; i++) mtt_scen_free(&sc[i]);
     free(rts);
