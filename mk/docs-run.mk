@@ -17,7 +17,7 @@ docs-run: $(TEST_EXTRA_DEPS_docs-run)
 	@[ '$(BUILD)' = build ] || { echo "docs-run: the documented commands use build/: run it without BUILD=$(BUILD)"; exit 1; }
 	@# the runner itself: a failing block fails at its FILE:LINE, skipped ones do not run
 	@sh tests/docs_run_selftest.sh
-	@# what the Python examples read: the demo's CSV files (build/demo) and
-	@# the LCM demo's track log (build/demo-lcm)
-	@$(MAKE) --no-print-directory demo-main demo-lcm > /dev/null
+	@# what the Python examples read: the amplitude demo's CSV files
+	@# (build/demo-amplitude) and the LCM demo's track log (build/demo-lcm)
+	@$(MAKE) --no-print-directory demo-amplitude demo-lcm > /dev/null
 	@python3 tools/scripts/docs_run.py $(DOCS_RUN_FLAGS) README.md docs/*.md

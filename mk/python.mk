@@ -5,7 +5,7 @@
 #   make test-python   a step of `make test` (tests/python_tools.sh): the reader
 #                      and types against trk-lcm-bridge --summarize and the
 #                      bridge's counts on a log made by trk-sonar-sim, the CSV
-#                      readers against trk-sim demo's files, the example with
+#                      readers against trk-sim demo-amplitude's files, the example with
 #                      each plotter present, the committed types against lcm-gen
 #   make python-types  regenerate the type modules of tools/python/trk from
 #                      tools/lcm/types (the package itself: mk/python-binding.mk)

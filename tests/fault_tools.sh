@@ -156,12 +156,12 @@ else
 fi
 if [ -x "$bin/trk-sim" ]; then
     expect 2 "trk-sim: unknown experiment 'kenedy-null'; did you mean 'kennedy-null'?" "$bin/trk-sim" kenedy-null
-    expect 2 "trk-sim demo: unknown option --scnas; did you mean '--scans'? (see --help)" \
-        "$bin/trk-sim" demo --scnas 12 --out "$T/demo"
+    expect 2 "trk-sim demo-amplitude: unknown option --scnas; did you mean '--scans'? (see --help)" \
+        "$bin/trk-sim" demo-amplitude --scnas 12 --out "$T/demo"
     # a missing input file: exit 1, one line
-    expect 1 "trk-sim demo: $T/none/amp_k1_snr15_pfa1e-2.tbl: cannot read" "$bin/trk-sim" demo --tables "$T/none" \
+    expect 1 "trk-sim demo-amplitude: $T/none/amp_k1_snr15_pfa1e-2.tbl: cannot read" "$bin/trk-sim" demo-amplitude --tables "$T/none" \
         --scans 12 --out "$T/demo" --quiet --no-plot
-    [ "$(wc -l < "$T/err")" -eq 1 ] || fail "trk-sim demo, no table: more than one line: $(cat "$T/err")"
+    [ "$(wc -l < "$T/err")" -eq 1 ] || fail "trk-sim demo-amplitude, no table: more than one line: $(cat "$T/err")"
 fi
 if [ -x "$bin/trk-vectors" ]; then
     expect 1 "trk-vectors: cannot read $T/none.vec: No such file or directory" "$bin/trk-vectors" "$T/none.vec"

@@ -8,7 +8,7 @@
 #     5e12 clutter points a scan, forever); a live trk-sonar-sim stops cleanly
 #     (exit 0, "stopped by signal") on SIGTERM and on SIGINT
 #   write errors, destroyed outputs: with writes failing (a file size
-#     limit, as a full disk; /dev/full) trk-tablegen, trk-sim demo and
+#     limit, as a full disk; /dev/full) trk-tablegen, trk-sim demo-amplitude, trk-sim demo and
 #     kennedy-null and trk-sonar-sim exit 1, and a failed regeneration leaves
 #     the old table byte-identical, with no temporary file left; demo prints
 #     no "files:" line; `trk-sonar-sim --scan-period-s 1e13` is refused (it
@@ -85,14 +85,21 @@ rc=$?
 [ $rc -eq 1 ] || fail "tablegen amp --out /dev/full: exit $rc, want 1 ($out)"
 echo "$out" | grep -q 'No space left' || fail "tablegen amp --out /dev/full: message ($out)"
 ok
-"$bin/trk-sim" demo --amp-table "$d/t.orig" --scans 12 --out "$d/demo" --quiet --no-plot > "$d/demo.out" 2>&1 ||
-    fail "trk-sim demo: $(cat "$d/demo.out")"
-out=$(limited 4 "$bin/trk-sim" demo --amp-table "$d/t.orig" --scans 12 --out "$d/demo2" --quiet --no-plot 2>&1)
+"$bin/trk-sim" demo-amplitude --amp-table "$d/t.orig" --scans 12 --out "$d/demo" --quiet --no-plot > "$d/demo.out" 2>&1 ||
+    fail "trk-sim demo-amplitude: $(cat "$d/demo.out")"
+out=$(limited 4 "$bin/trk-sim" demo-amplitude --amp-table "$d/t.orig" --scans 12 --out "$d/demo2" --quiet --no-plot 2>&1)
+rc=$?
+[ $rc -eq 1 ] || fail "trk-sim demo-amplitude, writes failing: exit $rc, want 1"
+echo "$out" | grep -q 'write error' || fail "trk-sim demo-amplitude, writes failing: no 'write error' message"
+echo "$out" | grep -q 'files:' && fail "trk-sim demo-amplitude, writes failing: prints its files"
+ls "$d/demo2" | grep -q 'tmp-' && fail "trk-sim demo-amplitude: temporary file left: $(ls "$d/demo2")"
+ok
+out=$(limited 4 "$bin/trk-sim" demo --scans 30 --out "$d/demo3" --no-plot 2>&1)
 rc=$?
 [ $rc -eq 1 ] || fail "trk-sim demo, writes failing: exit $rc, want 1"
 echo "$out" | grep -q 'write error' || fail "trk-sim demo, writes failing: no 'write error' message"
 echo "$out" | grep -q 'files:' && fail "trk-sim demo, writes failing: prints its files"
-ls "$d/demo2" | grep -q 'tmp-' && fail "trk-sim demo: temporary file left: $(ls "$d/demo2")"
+ls "$d/demo3" | grep -q 'tmp-' && fail "trk-sim demo: temporary file left: $(ls "$d/demo3")"
 ok
 out=$(limited 0 "$bin/trk-sim" kennedy-null --runs 20 --max-scans 5 --quiet --no-plot --out "$d/kn" 2>&1)
 rc=$?

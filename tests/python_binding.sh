@@ -3,7 +3,7 @@
 # test-python-binding, part of make test; docs/python.md):
 #   - the library's layout table and the parameters API (refusals name the
 #     field and the status; units and ranges)
-#   - same bytes as C: trk-sim demo's detections through the C program
+#   - same bytes as C: trk-sim demo-amplitude's detections through the C program
 #     (py-replay-csv) and through trk.Tracker, every track of every scan
 #     printed exactly and compared (double, and float with libtrk_f.so)
 #   - the UDP multicast reassembler on synthetic datagrams, then live in a
@@ -28,8 +28,8 @@ $PY tests/python/check_binding.py layout > "$T/layout.out" 2>&1 || fail "layout:
 ok "$(cat "$T/layout.out")"
 
 # --- same bytes as C, double and float
-"$B/trk-sim" demo --tables "$BUILD/tables" --out "$T/demo" --no-plot > "$T/demo.txt" 2>&1 ||
-    fail "trk-sim demo exited $?: $(tail -5 "$T/demo.txt")"
+"$B/trk-sim" demo-amplitude --tables "$BUILD/tables" --out "$T/demo" --no-plot > "$T/demo.txt" 2>&1 ||
+    fail "trk-sim demo-amplitude exited $?: $(tail -5 "$T/demo.txt")"
 lam=$(awk -F, '$1 == "clutter_per_scan" { printf "%.17g", $2 / 4e6 }' "$T/demo/summary.csv")
 [ -n "$lam" ] || fail "no clutter_per_scan in the demo's summary.csv"
 same_bytes() { # label, replay program, library, table

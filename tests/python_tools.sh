@@ -40,8 +40,8 @@ fi
     --set sensor.0.meas_sigma_m=3 --set sensor.0.clutter_density_per_m2=2.5e-6 > "$T/replay.txt" ||
     fail "trk-lcm-bridge --replay exited $?"
 "$B/trk-lcm-bridge" --summarize "$T/tracks.lcmlog" > "$T/summary.txt" || fail "--summarize exited $?"
-"$B/trk-sim" demo --tables "$BUILD/tables" --out "$T/demo" --no-plot > "$T/demo.txt" 2>&1 ||
-    fail "trk-sim demo exited $?: $(tail -5 "$T/demo.txt")"
+"$B/trk-sim" demo-amplitude --tables "$BUILD/tables" --out "$T/demo" --no-plot > "$T/demo.txt" 2>&1 ||
+    fail "trk-sim demo-amplitude exited $?: $(tail -5 "$T/demo.txt")"
 "$B/trk-sim" blanding-add-arl --runs 40 --max-scans 1000 --seed 5 --quiet --no-plot --out "$T/bl" > /dev/null ||
     fail "trk-sim blanding-add-arl exited $?"
 

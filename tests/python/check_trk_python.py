@@ -7,7 +7,7 @@ side, on files tests/python_tools.sh made in DIR:
   broken.lcmlog    written here: garbage, a corrupt header, a cut last record
   broken.txt       trk-lcm-bridge --summarize broken.lcmlog (run by the script
                    after this program's first pass: --broken-only)
-  demo/            trk-sim demo --no-plot CSV files
+  demo/            trk-sim demo-amplitude --no-plot CSV files
   bl.csv           trk-sim blanding-add-arl (strings and empty fields)
 
 Every check compares a value the Python side computes with the value the C

@@ -6,7 +6,7 @@ detections and plot the mean GOSPA against them (docs/python.md).
         [--x process_noise_q=1e-4,1e-3,1e-2] [--y init.birth_density_per_m2=1e-10,1e-9,1e-8]
         [--table AMP.tbl] [--sigma 5] [--lambda L] [--plotter auto|matplotlib|none]
 
-DIR holds trk-sim demo's files: detections.csv (scan, time_s, x_m, y_m,
+DIR holds trk-sim demo-amplitude's files: detections.csv (scan, time_s, x_m, y_m,
 amplitude) and truth.csv (scan, target, x_m, y_m, present); lambda defaults
 to the demo's clutter_per_scan / 2000 m x 2000 m (summary.csv). Every grid
 point runs the whole recording through trk.Tracker (defaults, the sensor of

@@ -7,14 +7,14 @@ of column names, then one row per line, comma-separated, with empty fields
 where a value does not apply (e.g. blanding-add-arl's k, n for Page rows).
 
     import trkcsv
-    t = trkcsv.read("build/demo/tracks.csv")
+    t = trkcsv.read("build/demo-amplitude/tracks.csv")
     t.columns            # ['scan', 'time_s', 'id', ...]
     t["x_m"]             # numpy float64 array; an empty field is NaN
     t.comments           # the '#' lines, without the '#'
     t.params             # {'runs': 300, 'alpha': 0.01, ...} from "key value" pairs in them
     len(t)               # rows
     t.to_pandas()        # a pandas DataFrame (pandas optional)
-    trkcsv.key_value("build/demo/summary.csv")   # a key,value file as a dict
+    trkcsv.key_value("build/demo-amplitude/summary.csv")   # a key,value file as a dict
 
 A column whose non-empty fields all parse as numbers is float64 (int64 when
 they are all integers and none is empty); any other column is str.
@@ -140,7 +140,7 @@ def read(path, typed=True):
 
 
 def key_value(path):
-    """A two-column key,value CSV (e.g. trk-sim demo's summary.csv) as a
+    """A two-column key,value CSV (e.g. trk-sim demo-amplitude's summary.csv) as a
     dict; numbers become int or float."""
     t = read(path, typed=False)
     out = {}

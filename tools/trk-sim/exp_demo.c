@@ -1,62 +1,64 @@
 /* exp_demo.c - trk-sim demo: trk's main job end to end, the scenario of
- * `make demo`. A simulated sonar (tools/sim/scenario.h) with K-distributed
- * (heavy-tailed, nu = 1) clutter amplitudes feeds the track table
- * (trk_tracker_process_scan, the code firmware runs) with amplitude-aided
- * association (PDAFAI: the amplitude table made by `trk-tablegen amp`) and
- * the library's defaults: two-point initiation, confirmation and termination
- * by the track's existence (IPDA, Kennedy eqs 21-24, whose likelihood
- * carries the same amplitude ratios; trk/tracker.h). The tracks are scored
- * against the truth and the position RMSE against the MRE's prediction
- * (toc_curve.h: Brekke eq 27 with q2 of the PDAFAI at this scenario).
+ * `make demo`: the sonar's own problem. One run of the sonar family of
+ * tools/sim/mtt_scenario.h (a polar sensor, sigma 7.5 m in range and 1.5
+ * deg in bearing, on a platform moving north at 3 m/s; its sector 0.5-8 km
+ * +-60 deg, a ping every 8 s; P_D falling with range; reverberation patches
+ * and a near-field rise; 12 persistent scatterers; eight targets: a shallow
+ * crossing, a close pair on one bearing, a 3 deg/s turn, a far target, a
+ * birth, a death) through the track table as firmware runs it
+ * (trk_tracker_process_scan with each ping as range and bearing and the
+ * platform's pose), with the library's defaults and the sensor as the
+ * scenario describes it (configuration new of trk-sim mtt, mtt_params.h),
+ * next to the known-association oracle (mtt_oracle.h: a CV Kalman filter
+ * per target fed with its own detections, what this sensor and motion
+ * model allow).
  *
- * Scenario: a 2 km x 2 km area, one ping every 2 s, 250 scans; four targets
- * at 1.5-2.6 m/s with process noise q = 1e-3 m^2/s^3 (the tracker's model),
- * one of them gone after scan 150 (its track must be terminated); position
- * noise 5 m; P_D = S1(t) of the table (SNR 15 dB, P_FA 1e-2: 0.775); clutter
- * 150 detections per scan on average (heavy clutter; --clutter-count),
- * uniform (Poisson), amplitudes from the K law. Same seed, same run.
- *
- * Scoring: a confirmed track is on a target at a scan when its position is
- * within --assoc-m of that target's true position; a confirmed track is
- * true when it is on one target for at least half of its confirmed scans
- * (its target), false otherwise. A true track is lost when it ends (or
- * leaves its target for good) while its target is still there; the track of
- * a target that is gone should end, and the delay is reported. The RMSE is
- * over the true tracks' scans on their target from 10 scans after
- * confirmation (steady state). */
+ * Scoring per ping, as trk-sim mtt: the confirmed tracks assigned to the
+ * targets present within the GOSPA cut-off c (mtt_eval.h, optimal
+ * assignment); a target is covered at a ping when a confirmed track is
+ * assigned to it. A confirmed track never assigned nor within c of a target
+ * at a ping is false there; a false track is one with a false ping. The
+ * oracle's estimate of target i is its own track's. Position errors are
+ * reported against the range from the sonar, in bands. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli.h"
 #include "errmsg.h"
-#include "kvfile.h"
+#include "mtt_eval.h"
+#include "mtt_oracle.h"
+#include "mtt_params.h"
+#include "mtt_scenario.h"
 #include "progress.h"
-#include "scenario.h"
 #include "sim.h"
-#include "toc_curve.h"
 #include "tracker_config.h"
-#include "trk/gate.h"
 #include "trk/tracker.h"
 
-#define N_TG 4
-#define MAX_SETTINGS 64
+#define N_BANDS 3
+static const double band_lo_m[N_BANDS] = {500, 2500, 5000}, band_hi_m[N_BANDS] = {2500, 5000, 8000};
+#define FAR_M 5000.0 /* "beyond 5 km", as trk-sim mtt */
 
-struct trk_rec {             /* one track id */
-    long start, confirm, end;  /* scans (confirm/end 0 = not) */
-    int end_reason;
-    long n_conf;               /* confirmed scans */
-    long on[N_TG];             /* confirmed scans on each target */
-    long last_on;              /* last confirmed scan on its target */
+/* Per target: pings present, covered by trk and by the oracle, the first
+ * ping present and the first covered by trk; the same beyond 5 km and in a
+ * patch. */
+struct tgt_stats {
+    long present, cov, ocov, first, first_cov;
+    long far, far_cov, far_ocov, patch, patch_cov, patch_ocov;
+    double r_min, r_max;
 };
 
-struct err_row {
-    long scan;
+/* Per range band: squared errors and counts, trk and the oracle. */
+struct band_stats {
+    double se[2];
+    long n[2];
+};
+
+/* A confirmed track's id and whether it was false at some ping, where. */
+struct false_rec {
     uint32_t id;
-    int target;
-    double err;
+    long false_pings, in_patch, on_persist;
 };
 
 static int mkdir_p(const char *path)
@@ -78,456 +80,434 @@ static int mkdir_p(const char *path)
     return 0;
 }
 
-/* Tracker settings, applied after the demo's own, in command-line order:
- * --set key=value, and the old bare key=value operands (deprecated). */
-struct demo_settings {
-    const char *kv[MAX_SETTINGS];
-    int n;
-};
-
-static int take_setting(const char *arg, void *ctx)
+static int band_of(double r_m)
 {
-    struct demo_settings *s = ctx;
-    if (arg[0] == '-' || !strchr(arg, '=') || s->n >= MAX_SETTINGS) return -1;
-    char new_form[600];
-    snprintf(new_form, sizeof new_form, "--set %.500s", arg);
-    cli_note_deprecated("trk-sim demo", arg, new_form);
-    s->kv[s->n++] = arg;
-    return 0;
+    for (int b = 0; b < N_BANDS; b++)
+        if (r_m >= band_lo_m[b] && r_m < band_hi_m[b]) return b;
+    return -1;
 }
 
-SIM_EXPERIMENT(demo, "demo", "make demo: sonar scenario with heavy-tailed clutter through the tracker, scored")
+static struct false_rec *false_rec_of(struct false_rec **v, size_t *n, size_t *cap, uint32_t id)
 {
-    const char *tables, *amp_table = NULL;
-    long scans, mre_samples = 0;
-    double clutter_per_scan, assoc_m;
-    int fluct = 0;
-    struct demo_settings set = {{NULL}, 0};
+    for (size_t i = 0; i < *n; i++)
+        if ((*v)[i].id == id) return &(*v)[i];
+    if (*n == *cap) {
+        *cap = *cap ? 2 * *cap : 64;
+        struct false_rec *nv = realloc(*v, *cap * sizeof *nv);
+        if (!nv) return NULL;
+        *v = nv;
+    }
+    struct false_rec *r = &(*v)[(*n)++];
+    memset(r, 0, sizeof *r);
+    r->id = id;
+    return r;
+}
+
+static double ratio(long a, long b) { return b > 0 ? (double)a / (double)b : NAN; }
+
+static double rmse(double se, long n) { return n > 0 ? sqrt(se / (double)n) : NAN; }
+
+/* The fan plot and the error plot (gnuplot through sim_plot). */
+static int demo_plots(const struct sim_common *com, const struct mtt_scenario *sc, long scans, long clutter)
+{
+    const char *o = com->out;
+    const struct trk_coverage *cv = &sc->sonar.coverage;
+    struct trk_pose p0, p1;
+    mtt_scen_pose(sc, 0, &p0);
+    mtt_scen_pose(sc, scans - 1, &p1);
+    struct sim_text b = {NULL, 0, 0, 0};
+    sim_text_add(&b, "set datafile separator ','\nset size ratio -1\nset key outside bottom center horizontal maxrows 3 font ',9'\n"
+                     "set xlabel 'east (m)'\nset ylabel 'north (m)'\nset grid\n"
+                     "set title 'trk demo: the sonar, %ld pings, %ld clutter per ping, seed %lu'\n",
+                 scans, clutter, (unsigned long)sc->p.seed);
+    for (int j = 0; j < MTT_SONAR_PATCHES; j++)
+        sim_text_add(&b, "set object %d circle at %.1f,%.1f size %.1f fc rgb '#f0d8c0' fs solid 0.6 noborder behind\n",
+                     j + 1, sc->patch[j].x_m, sc->patch[j].y_m, sc->patch[j].r_m);
+    /* the sector at the first and the last ping: its outline as a parametric curve */
+    const double hb = (double)cv->half_width_rad, r0 = (double)cv->min_range_m, r1 = (double)cv->max_range_m;
+    sim_text_add(&b, "set parametric\nset trange [0:1]\nset samples 400\n");
+    sim_text_add(&b, "plot ");
+    for (int w = 0; w < 2; w++) {
+        const struct trk_pose *p = w ? &p1 : &p0;
+        const double x = (double)p->x_m, y = (double)p->y_m, h = (double)p->heading_rad;
+        /* the outline: out along -hb, the far arc, back along +hb, the near arc */
+        sim_text_add(&b,
+                     "(t < 0.25 ? %.1f + (%.1f + (%.1f - %.1f) * t * 4) * sin(%.6f) : "
+                     "t < 0.5 ? %.1f + %.1f * sin(%.6f + %.6f * (t - 0.25) * 4) : "
+                     "t < 0.75 ? %.1f + (%.1f - (%.1f - %.1f) * (t - 0.5) * 4) * sin(%.6f) : "
+                     "%.1f + %.1f * sin(%.6f - %.6f * (t - 0.75) * 4)), "
+                     "(t < 0.25 ? %.1f + (%.1f + (%.1f - %.1f) * t * 4) * cos(%.6f) : "
+                     "t < 0.5 ? %.1f + %.1f * cos(%.6f + %.6f * (t - 0.25) * 4) : "
+                     "t < 0.75 ? %.1f + (%.1f - (%.1f - %.1f) * (t - 0.5) * 4) * cos(%.6f) : "
+                     "%.1f + %.1f * cos(%.6f - %.6f * (t - 0.75) * 4)) "
+                     "with lines lc rgb '%s' dt %d title 'sector, %s ping', ",
+                     x, r0, r1, r0, h - hb, x, r1, h - hb, 2 * hb, x, r1, r1, r0, h + hb, x, r0, h + hb, 2 * hb,
+                     y, r0, r1, r0, h - hb, y, r1, h - hb, 2 * hb, y, r1, r1, r0, h + hb, y, r0, h + hb, 2 * hb,
+                     w ? "#404040" : "#909090", w ? 1 : 2, w ? "last" : "first");
+    }
+    sim_text_add(&b,
+                 "'%s/detections.csv' using 5:6 with dots lc rgb '#b0b0b0' title 'detections (all pings)', "
+                 "'%s/pose.csv' using 3:4 with lines lw 2 lc rgb 'black' title 'platform', "
+                 "'%s/persistent.csv' using 2:3 with points pt 2 ps 1.2 lc rgb '#8b4513' title 'persistent scatterers', "
+                 "'%s/truth.csv' using ($6 > 0 ? $4 : 1/0):5 with points pt 7 ps 0.25 lc rgb '#1f77b4' title 'truth', "
+                 "'%s/oracle.csv' using 4:5 with points pt 1 ps 0.4 lc rgb '#2ca02c' title 'oracle (known association)', "
+                 "'%s/tracks.csv' using 4:5 with points pt 6 ps 0.5 lc rgb '#d62728' title 'confirmed tracks'\n",
+                 o, o, o, o, o, o);
+    int rc = b.failed ? -1 : sim_plot(com, "/demo_sonar", b.s);
+    sim_text_free(&b);
+    struct sim_text e = {NULL, 0, 0, 0};
+    sim_text_add(&e, "set datafile separator ','\nset key top left\nset grid\nset logscale y\n"
+                     "set xlabel 'range from the sonar (m)'\nset ylabel 'position error (m)'\n"
+                     "set title 'trk demo: position error against range (confirmed tracks on a target; the oracle)'\n"
+                     "plot '%s/errors.csv' using ($1 == 0 ? $4 : 1/0):5 with points pt 6 ps 0.4 lc rgb '#d62728' "
+                     "title 'trk', '' using ($1 == 1 ? $4 : 1/0):5 with points pt 1 ps 0.4 lc rgb '#2ca02c' title "
+                     "'oracle', '%s/error_by_range.csv' using 3:4 with linespoints lw 2 pt 7 lc rgb '#d62728' title "
+                     "'trk RMSE by band', '' using 3:5 with linespoints lw 2 pt 7 lc rgb '#2ca02c' title 'oracle RMSE "
+                     "by band', '' using 3:6 with lines dt 2 lc rgb 'black' title 'cross-range sigma r sigma_b'\n",
+                 o, o);
+    const int rc2 = e.failed ? -1 : sim_plot(com, "/demo_error_range", e.s);
+    sim_text_free(&e);
+    return rc < 0 || rc2 < 0 ? -1 : 0;
+}
+
+SIM_EXPERIMENT(demo, "demo", "make demo: the sonar's own problem through the track table, against the oracle")
+{
+    long scans, clutter;
+    double c_m;
+    struct mtt_settings set = {{NULL}, 0};
     const struct sim_opt opts[] = {
-        SIM_OPT_STRING("--tables", &tables, "DIR", "build/tables",
-                       "amplitude tables of `make tables`; the demo\n"
-                       "uses DIR/amp_k1_snr15_pfa1e-2.tbl"),
-        SIM_OPT_STRING("--amp-table", &amp_table, "FILE", NULL, "another amplitude table (its model, SNR and P_FA)"),
-        SIM_OPT_LONG("--scans", &scans, "N", "250", SIM_IN, 10, 100000, "scans, one every 2 s"),
-        SIM_OPT_DOUBLE("--clutter-count", &clutter_per_scan, "N", "150", SIM_IN, 0, 200,
-                       "clutter detections per scan over the 2 km x 2 km area\n"
-                       "(the mean of a Poisson count)"),
-        SIM_OPT_ALIAS("--clutter", "--clutter-count"),
-        SIM_OPT_STRINGS("--set", set.kv, &set.n, MAX_SETTINGS, "KEY=VALUE",
+        SIM_OPT_LONG("--scans", &scans, "N", "150", SIM_IN, 20, 100000, "pings, one every 8 s"),
+        SIM_OPT_LONG("--clutter-count", &clutter, "N", "50", SIM_IN, 0, 4096,
+                     "clutter detections per ping (30 % in the patches, 15 % near field,\n"
+                     "the rest uniform in range x bearing)"),
+        SIM_OPT_DOUBLE("--gospa-c", &c_m, "M", "200", SIM_GT, 0, 0,
+                       "a confirmed track is on a target within M m (the GOSPA cut-off of\n"
+                       "trk-sim mtt --family sonar)"),
+        SIM_OPT_STRINGS("--set", set.kv, &set.n, MTT_MAX_SETTINGS, "KEY=VALUE",
                         "a tracker setting (the keys below; repeat for more)"),
-        SIM_OPT_FLAG("--fluct", &fluct, "targets fade (Blanding's two-state P_D: p 0.1, q 0.02, P_D low 0.1)"),
-        SIM_OPT_DOUBLE("--assoc-m", &assoc_m, "D", "25", SIM_GT, 0, 0, "a track is on a target within D m"),
-        SIM_OPT_LONG("--mre-samples", &mre_samples, "N", NULL, SIM_GE, 1000, 0,
-                     "importance samples of the MRE's q2 (default: toc.h's)"),
         SIM_OPT_END};
     const struct sim_cli cli = {
         "demo", "[options] [--set key=value ...]",
-        "trk's main job end to end (`make demo`): a simulated sonar with heavy-tailed (K, nu 1)\n"
-        "clutter through the track table (PDAFAI, the library's defaults: two-point initiation,\n"
-        "existence-based confirmation and termination);\n"
-        "prints a summary (tracks confirmed, lost, false; RMSE against the MRE prediction) and\n"
-        "writes CSV files and PNG plots.",
+        "trk's main job end to end (`make demo`): the sonar's own problem, one run of the sonar\n"
+        "family of trk-sim mtt (a polar sensor on a moving platform, P_D falling with range,\n"
+        "reverberation patches, persistent scatterers, eight targets) through the track table with\n"
+        "the library's defaults and the sensor's description, next to the known-association oracle;\n"
+        "prints a summary (coverage per target and beyond 5 km, false tracks, RMSE by range band)\n"
+        "and writes CSV files and PNG plots.",
         opts, "demo", "DIR", SIM_UNUSED_RUNS | SIM_UNUSED_THREADS,
-        "--set key=value: tracker settings (the keys below, as in a config file, e.g.\n"
-        "--set term=page --set confirm=mn), applied after the demo's own (the scenario's sensor,\n"
-        "and its detection model for the HMM tests). (A bare key=value operand still works,\n"
-        "with a deprecation note.)\n"
-        "Writes DIR/detections.csv, truth.csv, tracks.csv, errors.csv, summary.csv,\n"
-        "demo_tracks.png (tracks over detections), demo_error.png (error over time).\n",
-        take_setting, &set};
+        "--set key=value: tracker settings (the keys below), applied after the sensor's.\n"
+        "Writes DIR/detections.csv, truth.csv, tracks.csv, oracle.csv, pose.csv, persistent.csv,\n"
+        "errors.csv, error_by_range.csv, summary.csv, demo_sonar.png (the sector, detections,\n"
+        "truth, tracks and oracle), demo_error_range.png (position error against range).\n",
+        NULL, NULL};
     struct sim_common com;
     const int parsed = sim_parse_more(&cli, tcfg_help, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
-    const double t_start = progress_now_s();
-    char err[512], table_path[1024], path[1200];
-    if (amp_table) snprintf(table_path, sizeof table_path, "%s", amp_table);
-    else snprintf(table_path, sizeof table_path, "%s/amp_k1_snr15_pfa1e-2.tbl", tables);
+    char err[512], path[1200];
     if (mkdir_p(com.out) != 0) {
         fprintf(stderr, "trk-sim demo: cannot create %s\n", com.out);
         return 1;
     }
-    /* ---- the scenario */
-    const double dt = 2, sigma = 5, q = 1e-3, area = 2000.0 * 2000.0;
-    static const struct scen_target_init tg[N_TG] = {{200, 300, 2.0, 1.0, NAN},
-                                                     {1700, 400, -1.5, 2.0, NAN},
-                                                     {1000, 1800, 0.5, -2.5, NAN},
-                                                     {300, 1400, 2.0, 0.2, NAN}};
-    static const long tg_end_def[N_TG] = {0, 0, 0, 150};
-    long tg_end[N_TG]; /* ends within the run (0: present to the end) */
-    for (int j = 0; j < N_TG; j++) tg_end[j] = tg_end_def[j] < scans ? tg_end_def[j] : 0;
-    struct scen_params sp;
-    scen_defaults(&sp);
+    /* ---- the scenario and the tracker */
+    struct mtt_scen_params sp;
+    mtt_scen_sonar_defaults(&sp);
     sp.seed = com.seed;
-    sp.scan_period_s = dt;
-    sp.clutter_density_per_m2 = clutter_per_scan / area;
-    sp.meas_sigma_m = sigma;
-    sp.process_noise_q = q;
-    sp.amp_kind = AMP_TABLE;
-    sp.amp_table = table_path;
-    sp.n_targets = N_TG;
-    sp.targets = tg;
-    sp.target_end_scan = tg_end;
-    sp.fluct = fluct;
-    sp.fluct_p = 0.1;
-    sp.fluct_q = 0.02;
-    sp.fluct_pd_low = 0.1;
-    struct scenario sc;
-    if (scen_init(&sc, &sp, err, sizeof err) != 0) {
-        fprintf(stderr, "trk-sim demo: %s (run `make tables` first, or give --tables / --amp-table)\n", err);
+    sp.n_scans = scans;
+    static struct mtt_scenario sc;
+    if (mtt_scen_init(&sc, &sp, err, sizeof err) != 0) {
+        fprintf(stderr, "trk-sim demo: %s\n", err);
         return 1;
     }
-    const double pd = sc.tg[0].pd, lambda = sp.clutter_density_per_m2;
-    /* ---- the tracker: defaults, the demo's settings, then the user's */
-    static struct tcfg cfg;
-    tcfg_defaults(&cfg);
-    /* the library's defaults (existence-based confirmation and termination,
-     * two-point initiation) with the scenario's sensor */
-    const char *demo_set[] = {"sensor.0.meas_sigma_m", "process_noise_q", "gate_prob",
-                              "sensor.0.clutter_density_per_m2", "sensor.0.amp_table", "hmm.pd_high",
-                              "hmm.pd_low", "hmm.p_low_high", "hmm.q_high_low"};
-    enum { N_DEMO_SET = 9 };
-    char demo_val[N_DEMO_SET][1100];
-    snprintf(demo_val[0], sizeof demo_val[0], "%g", sigma);
-    snprintf(demo_val[1], sizeof demo_val[1], "%g", q);
-    snprintf(demo_val[2], sizeof demo_val[2], "0.99");
-    snprintf(demo_val[3], sizeof demo_val[3], "%.17g", lambda);
-    snprintf(demo_val[4], sizeof demo_val[4], "%s", table_path);
-    snprintf(demo_val[5], sizeof demo_val[5], "%.6f", pd);
-    /* the detection model of an HMM termination test chosen with --set:
-     * the scenario's (fixed P_D: both HMM states alike; fading: Blanding's
-     * two states) */
-    if (fluct) snprintf(demo_val[6], sizeof demo_val[6], "0.1");
-    else snprintf(demo_val[6], sizeof demo_val[6], "%.6f", pd);
-    snprintf(demo_val[7], sizeof demo_val[7], "0.1");
-    snprintf(demo_val[8], sizeof demo_val[8], "%g", fluct ? 0.02 : 0.1);
-    for (int i = 0; i < N_DEMO_SET; i++)
-        if (tcfg_set(&cfg, demo_set[i], demo_val[i], err, sizeof err) != 0) {
-            fprintf(stderr, "trk-sim demo: %s = %s: %s\n", demo_set[i], demo_val[i], err);
-            scen_free(&sc);
-            return 1;
-        }
-    for (int i = 0; i < set.n; i++)
-        if (kv_parse_assignment(set.kv[i], tcfg_set, &cfg, err, sizeof err) != 0) {
-            fprintf(stderr, "trk-sim demo: --set %s: %s (see trk-sim demo --help)\n", set.kv[i], err);
-            scen_free(&sc);
-            return 2;
-        }
-    if (tcfg_check(&cfg, err, sizeof err) != 0) {
-        fprintf(stderr, "trk-sim demo: tracker configuration: %s\n", err);
-        scen_free(&sc);
+    const double lambda = (double)clutter / sc.area_m2;
+    static struct trk_tracker_params tp;
+    static struct tcfg_runtime rt;
+    const struct imm_opts im = {3, 0.95, 1e-2}; /* unused by new */
+    /* q 1e-3 m^2/s^3: trk-sim mtt's (--q), the targets' own */
+    if (mtt_build_params(CFG_NEW, &sc, lambda, 1e-3, &im, &set, &tp, &rt, err, sizeof err) != 0) {
+        fprintf(stderr, "trk-sim demo: %s (see trk-sim demo --help)\n", err);
+        mtt_scen_free(&sc);
         return 2;
     }
-    static struct tcfg_runtime rt;
     static struct trk_tracker tk;
-    struct trk_tracker_params tp;
-    if (tcfg_load(&cfg, &rt, err, sizeof err) != 0) {
-        fprintf(stderr, "trk-sim demo: %s\n", err);
-        scen_free(&sc);
-        return 1;
-    }
-    tcfg_params_rt(&cfg, &rt, &tp);
     trk_status st = trk_tracker_init(&tk, &tp);
-    if (st != TRK_OK) {
+    struct mtt_oracle orc;
+    if (st != TRK_OK || mtt_oracle_init(&orc, sc.n_targets, tp.sensor[0].meas_cov_m2, tp.process_noise_q) != 0) {
         fprintf(stderr, "trk-sim demo: trk_tracker_init: %s\n", ERRMSG_STATUS(st));
         return 1;
     }
-    /* ---- run */
-    struct fileio_out fd_out;
-    FILE *fd = sim_csv_open(&com, &fd_out, "/detections.csv", path, sizeof path, "scan,time_s,x_m,y_m,amplitude");
-    struct fileio_out ft_out;
-    FILE *ft = sim_csv_open(&com, &ft_out, "/truth.csv", path, sizeof path,
-                            "scan,time_s,target,x_m,y_m,vx_mps,vy_mps,present,high");
-    struct fileio_out fk_out;
-    FILE *fk = sim_csv_open(&com, &fk_out, "/tracks.csv", path, sizeof path,
-                            "scan,time_s,id,status,x_m,y_m,vx_mps,vy_mps,sd_x_m,sd_y_m,target,err_m");
-    if (!fd || !ft || !fk) {
-        sim_csv_discard(&fd_out);
-        sim_csv_discard(&ft_out);
-        sim_csv_discard(&fk_out);
+    struct mtt_eval ev;
+    mtt_eval_init(&ev, c_m);
+    /* ---- the files */
+    struct fileio_out f_out[8];
+    static const char *const fname[8] = {"/detections.csv", "/truth.csv", "/tracks.csv", "/oracle.csv",
+                                         "/pose.csv", "/errors.csv", "/persistent.csv", "/summary.csv"};
+    static const char *const fhead[8] = {
+        "ping,time_s,range_m,bearing_rad,x_m,y_m,origin",
+        "ping,time_s,target,x_m,y_m,present,range_m,role",
+        "ping,time_s,id,x_m,y_m,sd_x_m,sd_y_m,target,err_m,range_m",
+        "ping,time_s,target,x_m,y_m,err_m,range_m",
+        "ping,time_s,x_m,y_m,heading_rad",
+        "who,ping,target,range_m,err_m",
+        "scatterer,x_m,y_m",
+        "key,value"};
+    FILE *f[8];
+    int bad = 0;
+    for (int i = 0; i < 8; i++) bad |= !(f[i] = sim_csv_open(&com, &f_out[i], fname[i], path, sizeof path, fhead[i]));
+    if (bad) {
+        for (int i = 0; i < 8; i++)
+            if (f[i]) sim_csv_discard(&f_out[i]);
         return 1;
     }
-    static struct trk_detection det[TRK_MAX_DETECTIONS];
-    struct trk_rec *rec = NULL;
-    size_t n_rec = 0, cap_rec = 0;
-    struct err_row *er = NULL;
-    size_t n_er = 0, cap_er = 0;
-    long n_det = 0, n_dropped = 0, n_started = 0, n_refused = 0, n_merged = 0, max_live = 0, updates = 0;
+    for (int j = 0; j < MTT_SONAR_PERSIST; j++)
+        fprintf(f[6], "%d,%.1f,%.1f\n", j, sc.persist_x_m[j], sc.persist_y_m[j]);
+    /* ---- run */
+    static struct trk_detection det[TRK_MAX_SCAN_DETECTIONS];
+    static struct trk_polar_detection polar[TRK_MAX_SCAN_DETECTIONS];
+    static long origin[TRK_MAX_SCAN_DETECTIONS];
+    struct tgt_stats *ts = calloc(sc.n_targets, sizeof *ts);
+    struct false_rec *fr = NULL;
+    size_t n_fr = 0, cap_fr = 0;
+    struct band_stats band[N_BANDS];
+    memset(band, 0, sizeof band);
+    if (!ts) return 1;
+    for (size_t i = 0; i < sc.n_targets; i++) ts[i].first = ts[i].first_cov = -1, ts[i].r_min = INFINITY;
+    long n_det = 0, held = 0, conf_pings = 0;
     double t_track = 0;
-    for (long k = 0; k < scans; k++) {
+    int rc = 0;
+    for (long k = 0; k < scans && rc == 0; k++) {
         struct trk_scan scan;
-        size_t nt, nd;
-        scen_next(&sc, det, TRK_MAX_DETECTIONS, &scan, &nt, &nd);
+        struct mtt_scan_info info;
+        struct trk_pose pose;
+        mtt_scen_pose(&sc, k, &pose);
+        if (mtt_scen_scan_polar(&sc, k, clutter, det, polar, TRK_MAX_SCAN_DETECTIONS, origin, &scan, &info) != 0) {
+            rc = 1;
+            break;
+        }
+        const double t_s = (double)scan.time_us * 1e-6;
         n_det += (long)scan.n_detections;
-        n_dropped += (long)nd;
+        /* the oracle: the detections converted by the scenario, known origin */
+        for (size_t i = 0; i < sc.n_targets; i++)
+            if (k >= sc.tg[i].death_scan) (void)mtt_oracle_end(&orc, i);
+        if (mtt_oracle_scan(&orc, &scan, origin, NULL) != 0) {
+            rc = 1;
+            break;
+        }
+        /* the tracker: the ping as range and bearing with the platform's pose */
+        struct trk_scan ps = scan;
+        ps.detections = NULL;
+        ps.polar = polar;
+        ps.has_pose = 1;
+        ps.pose = pose;
         struct trk_scan_report rep;
         const double t0 = progress_now_s();
-        st = trk_tracker_process_scan(&tk, &scan, &rep);
+        st = trk_tracker_process_scan(&tk, &ps, &rep);
         t_track += progress_now_s() - t0;
         if (st != TRK_OK) {
-            fprintf(stderr, "trk-sim demo: scan %ld refused: %s\n", k, ERRMSG_STATUS(st));
-            return 1;
+            fprintf(stderr, "trk-sim demo: ping %ld refused: %s\n", k, ERRMSG_STATUS(st));
+            rc = 1;
+            break;
         }
-        updates += rep.n_tracks_updated;
-        n_started += rep.n_started;
-        n_refused += rep.n_init_refused_full;
-        n_merged += rep.n_merged;
-        const double ts = (double)scan.time_us * 1e-6;
+        held += rep.n_stationary;
+        fprintf(f[4], "%ld,%.1f,%.2f,%.2f,%.6f\n", k, t_s, (double)pose.x_m, (double)pose.y_m,
+                (double)pose.heading_rad);
         for (size_t i = 0; i < scan.n_detections; i++)
-            fprintf(fd, "%ld,%.1f,%.3f,%.3f,%.4g\n", k, ts, (double)det[i].x_m, (double)det[i].y_m,
-                    (double)det[i].amplitude);
-        int present[N_TG];
-        for (int j = 0; j < N_TG; j++) {
-            const struct scen_target *t = &sc.tg[j];
-            present[j] = !(t->end_scan > 0 && k >= t->end_scan);
-            fprintf(ft, "%ld,%.1f,%d,%.3f,%.3f,%.4f,%.4f,%d,%d\n", k, ts, j, t->x[TRK_CV2_X], t->x[TRK_CV2_Y], t->x[TRK_CV2_VX], t->x[TRK_CV2_VY],
-                    present[j], t->high);
+            fprintf(f[0], "%ld,%.1f,%.2f,%.6f,%.2f,%.2f,%ld\n", k, t_s, (double)polar[i].range_m,
+                    (double)polar[i].bearing_rad, (double)det[i].x_m, (double)det[i].y_m, origin[i]);
+        /* the targets present and the confirmed tracks, assigned */
+        struct mtt_obj truth[MTT_N_SLOTS], est[TRK_MAX_TRACKS];
+        long tix[MTT_N_SLOTS], assign[MTT_N_SLOTS];
+        const struct trk_track *etr[TRK_MAX_TRACKS];
+        size_t nt = 0, ne = 0;
+        for (size_t i = 0; i < sc.n_targets; i++) {
+            double x[4];
+            mtt_scen_truth(&sc, (long)i, t_s, x);
+            const int present = mtt_scen_present(&sc, (long)i, k);
+            const double r = hypot(x[TRK_CV2_X] - (double)pose.x_m, x[TRK_CV2_Y] - (double)pose.y_m);
+            fprintf(f[1], "%ld,%.1f,%zu,%.2f,%.2f,%d,%.1f,%s\n", k, t_s, i, x[TRK_CV2_X], x[TRK_CV2_Y], present, r,
+                    mtt_role_name(sc.tg[i].role));
+            if (!present || nt == MTT_N_SLOTS) continue;
+            tix[nt] = (long)i;
+            truth[nt++] = (struct mtt_obj){(long)i, x[TRK_CV2_X], x[TRK_CV2_Y]};
         }
-        long live = 0;
         for (size_t s = 0; s < TRK_MAX_TRACKS; s++) {
-            const struct trk_track *tr = trk_tracker_track(&tk, s);
-            if (!tr) continue;
-            live++;
-            while (n_rec < tr->id) { /* ids start at 1 and grow */
-                if (n_rec == cap_rec) {
-                    cap_rec = cap_rec ? 2 * cap_rec : 1024;
-                    struct trk_rec *nr = realloc(rec, cap_rec * sizeof *nr);
-                    if (!nr) return 1;
-                    rec = nr;
+            const struct trk_track *t = trk_tracker_track(&tk, s);
+            if (!t || t->status != TRK_TRACK_CONFIRMED) continue;
+            etr[ne] = t;
+            est[ne++] = (struct mtt_obj){(long)t->id, (double)t->x[TRK_CV2_X], (double)t->x[TRK_CV2_Y]};
+        }
+        conf_pings += (long)ne;
+        if (mtt_eval_scan_assign(&ev, truth, nt, est, ne, assign) != 0) {
+            rc = 1;
+            break;
+        }
+        long est_target[TRK_MAX_TRACKS];
+        for (size_t j = 0; j < ne; j++) est_target[j] = -1;
+        for (size_t a = 0; a < nt; a++) {
+            const long i = tix[a];
+            struct tgt_stats *g = &ts[i];
+            const double r = hypot(truth[a].x_m - (double)pose.x_m, truth[a].y_m - (double)pose.y_m);
+            const int far = r > FAR_M, patch = mtt_scen_in_patch(&sc, truth[a].x_m, truth[a].y_m);
+            const struct mtt_oracle_track *ot = mtt_oracle_track(&orc, (size_t)i);
+            const double oerr = ot ? hypot((double)ot->x[TRK_CV2_X] - truth[a].x_m,
+                                           (double)ot->x[TRK_CV2_Y] - truth[a].y_m)
+                                   : INFINITY;
+            const int ocov = oerr <= c_m, cov = assign[a] >= 0;
+            g->present++;
+            if (g->first < 0) g->first = k;
+            if (r < g->r_min) g->r_min = r;
+            if (r > g->r_max) g->r_max = r;
+            g->cov += cov;
+            g->ocov += ocov;
+            g->far += far, g->far_cov += far && cov, g->far_ocov += far && ocov;
+            g->patch += patch, g->patch_cov += patch && cov, g->patch_ocov += patch && ocov;
+            if (cov && g->first_cov < 0) g->first_cov = k;
+            const int bi = band_of(r);
+            if (ot) {
+                fprintf(f[3], "%ld,%.1f,%ld,%.2f,%.2f,%.2f,%.1f\n", k, t_s, i, (double)ot->x[TRK_CV2_X],
+                        (double)ot->x[TRK_CV2_Y], oerr, r);
+                if (ocov) {
+                    fprintf(f[5], "1,%ld,%ld,%.1f,%.3f\n", k, i, r, oerr);
+                    if (bi >= 0) band[bi].se[1] += oerr * oerr, band[bi].n[1]++;
                 }
-                memset(&rec[n_rec], 0, sizeof rec[n_rec]);
-                rec[n_rec].start = -1;
-                n_rec++;
             }
-            struct trk_rec *r = &rec[tr->id - 1];
-            if (r->start < 0) r->start = k;
-            if (tr->status == TRK_TRACK_TERMINATED) {
-                if (!r->end) {
-                    r->end = k;
-                    r->end_reason = tr->end_reason;
-                }
-                continue;
-            }
-            if (tr->status != TRK_TRACK_CONFIRMED) continue;
-            if (!r->confirm) r->confirm = k;
-            r->n_conf++;
-            int best = -1;
-            double bd = INFINITY;
-            for (int j = 0; j < N_TG; j++) {
-                if (!present[j]) continue;
-                const double d = hypot((double)tr->x[TRK_CV2_X] - sc.tg[j].x[TRK_CV2_X], (double)tr->x[TRK_CV2_Y] - sc.tg[j].x[TRK_CV2_Y]);
-                if (d < bd) bd = d, best = j;
-            }
-            const int on = best >= 0 && bd <= assoc_m;
-            if (on) r->on[best]++;
-            fprintf(fk, "%ld,%.1f,%u,%d,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%d,%.4f\n", k, ts, tr->id, tr->status,
-                    (double)tr->x[TRK_CV2_X], (double)tr->x[TRK_CV2_Y], (double)tr->x[TRK_CV2_VX], (double)tr->x[TRK_CV2_VY], sqrt((double)tr->p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)]),
-                    sqrt((double)tr->p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)]), on ? best : -1, on ? bd : NAN);
-            if (on) {
-                if (n_er == cap_er) {
-                    cap_er = cap_er ? 2 * cap_er : 4096;
-                    struct err_row *ne = realloc(er, cap_er * sizeof *ne);
-                    if (!ne) return 1;
-                    er = ne;
-                }
-                er[n_er++] = (struct err_row){k, tr->id, best, bd};
+            if (cov) {
+                const size_t j = (size_t)assign[a];
+                est_target[j] = i;
+                const double e = hypot(est[j].x_m - truth[a].x_m, est[j].y_m - truth[a].y_m);
+                fprintf(f[5], "0,%ld,%ld,%.1f,%.3f\n", k, i, r, e);
+                if (bi >= 0) band[bi].se[0] += e * e, band[bi].n[0]++;
             }
         }
-        if (live > max_live) max_live = live;
-    }
-    const int bad_fd = sim_csv_close(&fd_out) != 0, bad_ft = sim_csv_close(&ft_out) != 0;
-    if (sim_csv_close(&fk_out) != 0 || bad_fd || bad_ft) return 1;
-    /* ---- score */
-    long n_conf = 0, n_true = 0, n_false = 0, n_dup = 0, false_scans = 0;
-    long first_cover[N_TG], cover[N_TG], n_lost[N_TG], last_end[N_TG];
-    for (int j = 0; j < N_TG; j++) first_cover[j] = -1, cover[j] = 0, n_lost[j] = 0, last_end[j] = -1;
-    int *major = calloc(n_rec ? n_rec : 1, sizeof *major);
-    char *held = calloc((size_t)scans * N_TG, 1);
-    if (!major || !held) return 1;
-    for (size_t i = 0; i < n_er; i++) held[er[i].scan * N_TG + er[i].target] = 1;
-    for (size_t i = 0; i < n_rec; i++) {
-        const struct trk_rec *r = &rec[i];
-        major[i] = -1;
-        if (!r->confirm) continue;
-        n_conf++;
-        int best = 0;
-        for (int j = 1; j < N_TG; j++)
-            if (r->on[j] > r->on[best]) best = j;
-        if (2 * r->on[best] >= r->n_conf && r->on[best] > 0) {
-            major[i] = best;
-            n_true++;
-            if (first_cover[best] < 0 || r->confirm < first_cover[best]) first_cover[best] = r->confirm;
-            /* a duplicate: its target already held by another track when it was confirmed */
-            for (size_t e = 0; e < n_er; e++)
-                if (er[e].scan == r->confirm && er[e].target == best && er[e].id != i + 1) {
-                    n_dup++;
-                    break;
-                }
-            const long last = r->end ? r->end : scans;
-            if (last > last_end[best]) last_end[best] = last;
-        } else {
-            n_false++;
-            false_scans += r->n_conf;
-        }
-    }
-    /* per target: scans held (a confirmed track on it), and losses: held -> not
-     * held for 3 scans or more while the target is there */
-    for (int j = 0; j < N_TG; j++) {
-        const long alive = tg_end[j] > 0 ? tg_end[j] : scans; /* tg_end < scans */
-        long gap = 0;
-        int was = 0;
-        for (long k = 0; k < alive; k++) {
-            const int h = held[k * N_TG + j];
-            cover[j] += h;
-            if (h) {
-                was = 1;
-                gap = 0;
-            } else if (was && ++gap == 3) {
-                n_lost[j]++;
-                was = 0;
+        for (size_t j = 0; j < ne && rc == 0; j++) {
+            const struct trk_track *t = etr[j];
+            const double r = hypot(est[j].x_m - (double)pose.x_m, est[j].y_m - (double)pose.y_m);
+            double err_m = NAN;
+            if (est_target[j] >= 0)
+                for (size_t a = 0; a < nt; a++)
+                    if (tix[a] == est_target[j]) err_m = hypot(est[j].x_m - truth[a].x_m, est[j].y_m - truth[a].y_m);
+            fprintf(f[2], "%ld,%.1f,%u,%.2f,%.2f,%.2f,%.2f,%ld,%.2f,%.1f\n", k, t_s, t->id, est[j].x_m, est[j].y_m,
+                    sqrt((double)t->p[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)]),
+                    sqrt((double)t->p[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)]), est_target[j], err_m, r);
+            if (est_target[j] >= 0) continue;
+            int near = 0;
+            for (size_t a = 0; a < nt && !near; a++) near = hypot(truth[a].x_m - est[j].x_m, truth[a].y_m - est[j].y_m) < c_m;
+            if (near) continue; /* a duplicate, not false */
+            struct false_rec *q = false_rec_of(&fr, &n_fr, &cap_fr, t->id);
+            if (!q) {
+                rc = 1;
+                break;
             }
+            q->false_pings++;
+            q->in_patch += mtt_scen_in_patch(&sc, est[j].x_m, est[j].y_m);
+            q->on_persist += mtt_scen_persist_dist(&sc, est[j].x_m, est[j].y_m) <= c_m;
         }
     }
-    long lost_total = 0;
-    for (int j = 0; j < N_TG; j++) lost_total += n_lost[j];
-    free(held);
-    /* RMSE: true tracks on their target, from 10 scans after confirmation */
-    double sse = 0;
-    long nse = 0;
-    struct fileio_out fe_out;
-    FILE *fe = sim_csv_open(&com, &fe_out, "/errors.csv", path, sizeof path, "scan,time_s,id,target,err_m,in_rmse");
-    if (!fe) return 1;
-    uint32_t prev_id = 0;
-    for (size_t i = 0; i < n_er; i++) {
-        const struct err_row *e = &er[i];
-        if (major[e->id - 1] != e->target) continue;
-        const int use = e->scan >= rec[e->id - 1].confirm + 10;
-        if (use) sse += e->err * e->err, nse++;
-        (void)prev_id;
-        fprintf(fe, "%ld,%.1f,%u,%d,%.4f,%d\n", e->scan, (double)e->scan * dt, e->id, e->target, e->err, use);
+    if (rc != 0) {
+        for (int i = 0; i < 8; i++) sim_csv_discard(&f_out[i]);
+        return 1;
     }
-    if (sim_csv_close(&fe_out) != 0) return 1;
-    const double rmse = nse ? sqrt(sse / (double)nse) : NAN;
-    /* ---- the MRE's prediction (toc_curve.h: q2 of this scenario by importance sampling) */
-    double mre[2] = {NAN, NAN};
-    const double t_mre0 = progress_now_s();
-    {
-        const struct trk_amplitude *am = &rt.amp[0];
-        struct toc_scenario ts;
-        memset(&ts, 0, sizeof ts);
-        toc_scenario_brekke(&ts, am->model, (double)am->nu, (double)am->snr_db, (double)am->pfa / lambda);
-        ts.dt_s = dt;
-        ts.q_m2_per_s3 = q;
-        ts.r_m2 = sigma * sigma;
-        ts.gate_gamma = (double)tk.pda[0].gamma;
-        ts.pfa_min = (double)am->pfa / 1.5;
-        ts.pfa_max = fmin((double)am->pfa * 1.5, 0.9);
-        struct toc_q2_source src;
-        memset(&src, 0, sizeof src);
-        src.samples = (uint64_t)mre_samples;
-        src.seed = com.seed;
-        src.quiet = 1;
-        src.par = com.par;
-        struct toc *toc = toc_new(&ts, &src, err, sizeof err);
-        struct toc_point pt;
-        if (!toc || toc_point_at(toc, (double)am->pfa, &pt, err, sizeof err) != 0)
-            fprintf(stderr, "trk-sim demo: MRE prediction unavailable: %s\n", err);
-        else
-            mre[0] = pt.rmse_m[TOC_PDAF], mre[1] = pt.rmse_m[TOC_PDAFAI];
-        toc_free(toc);
+    /* ---- the summary */
+    struct mtt_summary gs;
+    mtt_eval_summary(&ev, &gs);
+    long pres = 0, cov = 0, ocov = 0, far = 0, far_cov = 0, far_ocov = 0, patch = 0, patch_cov = 0, patch_ocov = 0;
+    long n_confirmed_targets = 0, n_long = 0;
+    for (size_t i = 0; i < sc.n_targets; i++) {
+        const struct tgt_stats *g = &ts[i];
+        pres += g->present, cov += g->cov, ocov += g->ocov;
+        far += g->far, far_cov += g->far_cov, far_ocov += g->far_ocov;
+        patch += g->patch, patch_cov += g->patch_cov, patch_ocov += g->patch_ocov;
+        n_long += g->present >= 25;
+        n_confirmed_targets += g->present >= 25 && g->first_cov >= 0;
     }
-    const double mre_s = progress_now_s() - t_mre0;
-    /* ---- summary */
-    struct fileio_out fs_out;
-    FILE *fs = sim_csv_open(&com, &fs_out, "/summary.csv", path, sizeof path, "key,value");
-    if (!fs) return 1;
-    const struct trk_amplitude *am = &rt.amp[0];
-    printf("\n== trk demo: %ld sonar scans (%.0f s), 2 km x 2 km, seed %llu\n", scans, (double)scans * dt,
-           (unsigned long long)com.seed);
-    printf("   clutter: %.1f detections/scan, amplitudes %s (nu %g) -- heavy-tailed; threshold P_FA %g\n",
-           clutter_per_scan, am->model == TRK_AMP_K ? "K-distributed" : "Rayleigh", (double)am->nu, (double)am->pfa);
-    printf("   targets: %d (SNR %.0f dB, P_D %.3f%s)", N_TG, (double)am->snr_db, pd, fluct ? ", fading" : "");
-    if (tg_end[3] > 0) printf(", one gone after scan %ld", tg_end[3]);
-    printf("; position noise %g m\n", sigma);
-    static const char *const conf_name[] = {"M-of-N", "SPRT", "clutter density test", "clutter amplitude test",
-                                            "visibility", "existence (amplitude-aided IPDA)"};
-    static const char *const term_name[] = {"K-of-N", "Page", "Shiryaev", "visibility", "existence"};
-    printf("   tracker: PDAFAI (amplitude table %s), confirm by %s, terminate by %s, P_G %g, %d track slots\n",
-           table_path, conf_name[cfg.confirm], term_name[cfg.term], (double)tp.gate_prob, TRK_MAX_TRACKS);
-    printf("   detections: %ld (%.1f per scan)%s\n", n_det, (double)n_det / (double)scans,
-           n_dropped ? " -- some dropped: more than TRK_MAX_DETECTIONS in a scan" : "");
-    printf("-- tracks\n");
-    printf("   started %ld tentative tracks, %ld merged duplicates, at most %ld of %d slots live\n", n_started, n_merged,
-           max_live, TRK_MAX_TRACKS);
-    if (n_refused)
-        printf("   %ld initiations refused while the table was full of confirmed tracks or of stronger\n"
-               "   tentative ones\n",
-               n_refused);
-    printf("   confirmed %ld: %ld on targets (%ld of them duplicates of a held target, merged or ended), %ld false "
-           "(%ld confirmed scans in all)\n",
-           n_conf, n_true, n_dup, n_false, false_scans);
-    printf("   lost (a target without a confirmed track for 3+ scans after being held): %ld\n", lost_total);
-    for (int j = 0; j < N_TG; j++) {
-        const long alive = tg_end[j] > 0 ? tg_end[j] : scans; /* tg_end < scans */
-        printf("   target %d: confirmed at scan %ld, held %.0f%% of its %ld scans, lost %ld times", j + 1, first_cover[j],
-               100.0 * (double)cover[j] / (double)alive, alive, n_lost[j]);
-        if (tg_end[j] > 0) {
-            if (last_end[j] >= tg_end[j] && last_end[j] < scans)
-                printf("; gone at scan %ld, its track ended %ld scans later", tg_end[j], last_end[j] - tg_end[j]);
-            else
-                printf("; gone at scan %ld, its track did not end", tg_end[j]);
-        }
-        printf("\n");
+    long n_false = 0, false_patch = 0, false_persist = 0, false_pings = 0;
+    for (size_t i = 0; i < n_fr; i++) {
+        n_false++;
+        false_pings += fr[i].false_pings;
+        false_patch += 2 * fr[i].in_patch > fr[i].false_pings;
+        false_persist += 2 * fr[i].on_persist > fr[i].false_pings;
     }
-    printf("-- accuracy (true tracks, from 10 scans after confirmation, %ld track-scans)\n", nse);
-    printf("   position RMSE %.2f m; MRE prediction (Brekke eq 27): PDAFAI %.2f m, PDAF %.2f m\n", rmse, mre[1],
-           mre[0]);
-    printf("-- cost: %ld track updates in %.3f s of tracker time (%.3g updates/s); total %.1f s (MRE %.1f s)\n", updates,
-           t_track, (double)updates / (t_track > 0 ? t_track : 1e-9), progress_now_s() - t_start, mre_s);
-    fprintf(fs, "scans,%ld\nseed,%llu\nclutter_per_scan,%g\npd,%.6f\npfa,%g\nnu,%g\nsnr_db,%g\ntargets,%d\n", scans,
-            (unsigned long long)com.seed, clutter_per_scan, pd, (double)am->pfa, (double)am->nu, (double)am->snr_db,
-            N_TG);
-    fprintf(fs, "detections,%ld\ndropped,%ld\n", n_det, n_dropped);
-    fprintf(fs, "started,%ld\nrefused,%ld\nmerged,%ld\nconfirmed,%ld\ntrue,%ld\nduplicates,%ld\nfalse,%ld\nlost,%ld\n",
-            n_started, n_refused, n_merged, n_conf, n_true, n_dup, n_false, lost_total);
-    for (int j = 0; j < N_TG; j++)
-        fprintf(fs, "target%d_confirm_scan,%ld\ntarget%d_held_scans,%ld\n", j + 1, first_cover[j], j + 1, cover[j]);
-    fprintf(fs, "target4_end_delay_scans,%ld\nrmse_m,%.6g\nrmse_samples,%ld\nmre_pdafai_m,%.6g\nmre_pdaf_m,%.6g\n",
-            tg_end[3] > 0 && last_end[3] >= tg_end[3] && last_end[3] < scans ? last_end[3] - tg_end[3] : -1, rmse, nse,
-            mre[1], mre[0]);
-    if (sim_csv_close(&fs_out) != 0) return 1;
-    printf("   files: %s/{detections,truth,tracks,errors,summary}.csv%s\n", com.out,
-           com.no_plot ? "" : ", demo_tracks.png, demo_error.png");
-    const int plot_tracks = sim_plotf(&com, "/demo_tracks",
-              "set datafile separator ','\nset size ratio -1\nset grid\n"
-              "set key bottom right opaque box font ',9'\n"
-              "set title 'trk demo: tracks over detections (%ld scans, K clutter nu %g, %.0f per scan)'\n"
-              "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset xrange [0:2000]\nset yrange [0:2000]\n"
-              "plot '%s/detections.csv' every ::1 using 3:4 with dots lc rgb '#a0a0a0' title 'detections (all scans)', "
-              "\\\n"
-              "     '%s/truth.csv' every ::1 using ($8==1 ? $4 : NaN):5 with points pt 7 ps 0.9 lc rgb '#c8c8c8' "
-              "title 'targets (truth)', \\\n"
-              "     '%s/tracks.csv' every ::1 using ($11>=0 ? $5 : NaN):6:($3) with points pt 7 ps 0.25 lc variable "
-              "title 'confirmed tracks on targets', \\\n"
-              "     '%s/tracks.csv' every ::1 using ($11<0 ? $5 : NaN):6 with points pt 1 ps 0.7 lc rgb 'red' "
-              "title 'confirmed, off target'\n",
-              scans, (double)am->nu, clutter_per_scan, com.out, com.out, com.out, com.out);
-    char mre_line[256] = "";
-    if (isfinite(mre[1]))
-        snprintf(mre_line, sizeof mre_line,
-                 ", \\\n     %.6g with lines lw 2 lc rgb '#d62728' title 'MRE prediction %.2f m (PDAFAI)'", mre[1],
-                 mre[1]);
-    const int plot_error = sim_plotf(&com, "/demo_error",
-              "set datafile separator ','\nset grid\nset key top right opaque box\n"
-              "set title 'trk demo: position error of the tracks on targets'\n"
-              "set xlabel 'time (s)'\nset ylabel 'position error (m)'\nset yrange [0:*]\n"
-              "plot '%s/errors.csv' every ::1 using 2:5:($3) with points pt 7 ps 0.4 lc variable title 'track error', "
-              "\\\n"
-              "     %.6g with lines lw 2 dt 2 lc rgb 'black' title 'RMSE %.2f m (measured)'%s\n",
-              com.out, isnan(rmse) ? 0 : rmse, isnan(rmse) ? 0 : rmse, mre_line);
-    free(major);
-    free(rec);
-    free(er);
+    printf("\n== trk demo: the sonar's own problem, %ld pings (%.0f s), %ld clutter per ping, seed %llu\n", scans,
+           (double)scans * sp.scan_period_s, clutter, (unsigned long long)com.seed);
+    printf("   sensor: range/bearing (sigma %.1f m, %.1f deg) on a platform at 3 m/s due north, sector %.1f-%.0f km "
+           "+-%.0f deg, a ping every %.0f s\n",
+           (double)sc.sonar.sigma_range_m, (double)sc.sonar.sigma_bearing_rad * 180 / 3.14159265358979323846,
+           (double)sc.sonar.coverage.min_range_m / 1000, (double)sc.sonar.coverage.max_range_m / 1000,
+           (double)sc.sonar.coverage.half_width_rad * 180 / 3.14159265358979323846, sp.scan_period_s);
+    printf("   P_D %.2f at 0.5 km to %.2f at 8 km (profile); clutter 30 %% in %d patches, 15 %% near field; %d "
+           "persistent scatterers\n",
+           (double)trk_sensor_pd_at(&sc.sonar, &(struct trk_pose){0, 0, 0}, 0, 500),
+           (double)trk_sensor_pd_at(&sc.sonar, &(struct trk_pose){0, 0, 0}, 0, 7999), MTT_SONAR_PATCHES,
+           MTT_SONAR_PERSIST);
+    printf("   tracker: the library's defaults with the sensor's description (polar scans with the pose, P_D and\n"
+           "   clutter profiles, coverage), %d track slots; the oracle: a CV Kalman filter per target fed its own\n"
+           "   detections\n", TRK_MAX_TRACKS);
+    printf("   detections: %ld (%.1f per ping)\n", n_det, (double)n_det / (double)scans);
+    printf("-- targets (coverage: pings with a confirmed track on it, within %.0f m)\n", c_m);
+    printf("   target  role        pings  range km     trk   oracle  pings to confirm\n");
+    for (size_t i = 0; i < sc.n_targets; i++) {
+        const struct tgt_stats *g = &ts[i];
+        if (g->present == 0) continue;
+        char conf[32];
+        if (g->first_cov >= 0) snprintf(conf, sizeof conf, "%ld", g->first_cov - g->first);
+        else snprintf(conf, sizeof conf, "never");
+        printf("   %6zu  %-10s  %5ld  %3.1f-%-4.1f  %6.2f  %6.2f  %s\n", i, mtt_role_name(sc.tg[i].role), g->present,
+               g->r_min / 1000, g->r_max / 1000, ratio(g->cov, g->present), ratio(g->ocov, g->present), conf);
+    }
+    printf("-- coverage             trk     oracle\n");
+    printf("   all targets      %7.3f   %7.3f\n", ratio(cov, pres), ratio(ocov, pres));
+    printf("   beyond 5 km      %7.3f   %7.3f\n", ratio(far_cov, far), ratio(far_ocov, far));
+    printf("   in the patches   %7.3f   %7.3f\n", ratio(patch_cov, patch), ratio(patch_ocov, patch));
+    printf("-- false confirmed tracks: %ld (%ld mostly in a patch, %ld mostly on a persistent scatterer), %ld false "
+           "pings;\n   tracks held as standing still (persistent returns): %.1f per ping\n",
+           n_false, false_patch, false_persist, false_pings, (double)held / (double)scans);
+    printf("-- GOSPA (c %.0f m): %.1f m per ping\n", c_m, gs.gospa_mean_m);
+    printf("-- position RMSE by range (m)   trk    oracle   cross-range sigma\n");
+    for (int b = 0; b < N_BANDS; b++) {
+        const double rm = 0.5 * (band_lo_m[b] + band_hi_m[b]);
+        printf("   %3.1f-%.1f km            %7.1f  %7.1f   %7.1f\n", band_lo_m[b] / 1000, band_hi_m[b] / 1000,
+               rmse(band[b].se[0], band[b].n[0]), rmse(band[b].se[1], band[b].n[1]),
+               rm * (double)sc.sonar.sigma_bearing_rad);
+    }
+    printf("-- cost: %.1f us of tracker time per ping (this host)\n", 1e6 * t_track / (double)scans);
+    /* the summary and the range bands as files */
+    fprintf(f[7], "pings,%ld\nclutter_per_ping,%ld\nseed,%llu\ndetections,%ld\ntargets,%zu\n", scans, clutter,
+            (unsigned long long)com.seed, n_det, sc.n_targets);
+    fprintf(f[7], "targets_present_25,%ld\ntargets_confirmed_25,%ld\n", n_long, n_confirmed_targets);
+    fprintf(f[7], "target_pings,%ld\ncoverage,%.6f\noracle_coverage,%.6f\n", pres, ratio(cov, pres),
+            ratio(ocov, pres));
+    fprintf(f[7], "far_pings,%ld\nfar_coverage,%.6f\noracle_far_coverage,%.6f\n", far, ratio(far_cov, far),
+            ratio(far_ocov, far));
+    fprintf(f[7], "patch_pings,%ld\npatch_coverage,%.6f\noracle_patch_coverage,%.6f\n", patch,
+            ratio(patch_cov, patch), ratio(patch_ocov, patch));
+    fprintf(f[7], "false_tracks,%ld\nfalse_tracks_patch,%ld\nfalse_tracks_persistent,%ld\nfalse_pings,%ld\n", n_false,
+            false_patch, false_persist, false_pings);
+    fprintf(f[7], "confirmed_track_pings,%ld\nheld_per_ping,%.4f\ngospa_m,%.4f\ntracker_us_per_ping,%.2f\n",
+            conf_pings, (double)held / (double)scans, gs.gospa_mean_m, 1e6 * t_track / (double)scans);
+    for (int b = 0; b < N_BANDS; b++)
+        fprintf(f[7], "rmse_%.0f_%.0f_m,%.4f\noracle_rmse_%.0f_%.0f_m,%.4f\n", band_lo_m[b], band_hi_m[b],
+                rmse(band[b].se[0], band[b].n[0]), band_lo_m[b], band_hi_m[b], rmse(band[b].se[1], band[b].n[1]));
+    for (int i = 0; i < 8; i++)
+        if (sim_csv_close(&f_out[i]) != 0) rc = 1;
+    struct fileio_out fb_out;
+    FILE *fb = sim_csv_open(&com, &fb_out, "/error_by_range.csv", path, sizeof path,
+                            "lo_m,hi_m,mid_m,trk_rmse_m,oracle_rmse_m,cross_range_sigma_m,trk_n,oracle_n");
+    if (!fb) return 1;
+    for (int b = 0; b < N_BANDS; b++) {
+        const double rm = 0.5 * (band_lo_m[b] + band_hi_m[b]);
+        fprintf(fb, "%.0f,%.0f,%.0f,%.4f,%.4f,%.4f,%ld,%ld\n", band_lo_m[b], band_hi_m[b], rm,
+                rmse(band[b].se[0], band[b].n[0]), rmse(band[b].se[1], band[b].n[1]),
+                rm * (double)sc.sonar.sigma_bearing_rad, band[b].n[0], band[b].n[1]);
+    }
+    if (sim_csv_close(&fb_out) != 0) rc = 1;
+    if (rc == 0)
+        printf("   files: %s/{detections,truth,tracks,oracle,pose,persistent,errors,error_by_range,summary}.csv%s\n",
+           com.out, com.no_plot ? "" : ", demo_sonar.png, demo_error_range.png");
+    if (rc == 0 && demo_plots(&com, &sc, scans, clutter) != 0) rc = 1;
     tcfg_unload(&rt);
-    scen_free(&sc);
-    return plot_tracks < 0 || plot_error < 0 ? 1 : 0; /* a .gp script not written */
+    mtt_oracle_free(&orc);
+    mtt_eval_free(&ev);
+    mtt_scen_free(&sc);
+    free(ts);
+    free(fr);
+    return rc;
 }

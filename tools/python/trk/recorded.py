@@ -2,7 +2,7 @@
 scan, time_s, x_m, y_m and optionally amplitude; one row per detection,
 scans in order) as a list of scans.
 
-    for s in trk.recorded.read_scans("build/demo/detections.csv"):
+    for s in trk.recorded.read_scans("build/demo-amplitude/detections.csv"):
         report, tracks = tk.process_scan(s.time_s, s.xy, amplitude=s.amplitude)
 """
 import csv
