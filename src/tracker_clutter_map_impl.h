@@ -12,13 +12,18 @@
 #if TRK_CLUTTER_MAP_CELLS > 0
 /* Forget (1 - 1/tau), then count each valid detection outside every
  * confirmed track's gate in its cell, weighted by 1 / kept_share (a
- * thinned scan kept that share of the clutter). A polar detection's cell
+ * thinned scan kept that share of the clutter; below 1e-6 the scan is
+ * skipped). A polar detection's cell
  * is taken from its own range and bearing, a Cartesian one's from its
  * position. */
 static TRK_NOINLINE void learn_clutter_map(struct trk_tracker *t, const struct trk_scan *scan, trk_real kept_share)
 {
     const struct trk_i_view *v = &t->ws.view;
-    if (!v->map) return;
+    /* a scan that kept less than a millionth of its clutter (an amplitude
+     * threshold raised that far) says nothing of the density below it:
+     * the map skips it rather than count each kept detection a million
+     * times over */
+    if (!v->map || !(kept_share >= TRK_REAL_C(1e-6))) return;
     trk_real *count = t->clutter_map[scan->sensor_id];
     trk_i_map_forget(&t->params.clutter_map, count, &t->clutter_map_scans[scan->sensor_id]);
     const trk_real w = 1 / kept_share;

@@ -11,6 +11,8 @@
  *   - the detections of a confirmed track's gate are not counted: from the
  *     scan after its confirmation its cell only forgets;
  *   - a polar scan and the same scan as Cartesian detections count alike;
+ *   - a scan of twice the capacity, thinned, counts the whole scan (each
+ *     kept detection weighted by 1 / the kept share);
  *   - the parameter check names the field; the accessor's refusals. */
 #include "trk_test.h"
 #include "trk/tracker.h"
@@ -227,6 +229,42 @@ static void test_polar_equals_cartesian(void **state)
     }
 }
 
+/* A scan of twice the capacity (no amplitudes: the deterministic thinning)
+ * counts each kept detection 1 / (its kept share): the cells' counts add up
+ * to the whole scan's, N_c = rho_c (e_c W + a) - a with W = 1. */
+static void test_thinned_scan_counts_all(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    p.clutter_map.min_ratio = TRK_REAL_C(1e-6);
+    p.clutter_map.max_ratio = TRK_REAL_C(1e6);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    enum { N = 2 * TRK_MAX_DETECTIONS };
+    static struct trk_polar_detection d[N];
+    uint64_t rng = 3;
+    for (int i = 0; i < N; i++) {
+        d[i].range_m = (trk_real)(1000 + 8000 * trk_test_urand(&rng));
+        d[i].bearing_rad = (trk_real)((-59 + 118 * trk_test_urand(&rng)) * DEG);
+        d[i].has_amplitude = 0;
+        d[i].amplitude = 0;
+    }
+    const struct trk_scan s = {SCAN_US(0), 0, N, NULL, d, 0, {0, 0, 0}};
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+    assert_true(rep.n_thinned > 0);
+    assert_int_equal(rep.n_kept + rep.n_thinned, N);
+    double total = 0;
+    for (int ir = 0; ir < 4; ir++)
+        for (int ib = 0; ib < 4; ib++) {
+            const double ra = 1000 + 2000.0 * ir, rb = ra + 2000, b = -45 + 30 * ib;
+            const double e = 1e-7 * (30 * DEG) * (rb * rb - ra * ra) / 2;
+            const double rho = lambda_at(&tk, polar_x(ra + 1000, b), polar_y(ra + 1000, b)) / 1e-7;
+            total += rho * (e + 2) - 2;
+        }
+    TRK_ASSERT_NEAR(total, (double)N, 0, TRK_TOL(1e-9, 1e-4));
+}
+
 static void test_params_and_refusals(void **state)
 {
     (void)state;
@@ -277,6 +315,7 @@ int main(void)
         cmocka_unit_test(test_profile_integral),
         cmocka_unit_test(test_confirmed_not_counted),
         cmocka_unit_test(test_polar_equals_cartesian),
+        cmocka_unit_test(test_thinned_scan_counts_all),
         cmocka_unit_test(test_params_and_refusals),
     };
     return trk_run_tests("clutter_map", tests, NULL, NULL);
