@@ -15,6 +15,7 @@
  *     kept detection weighted by 1 / the kept share);
  *   - the parameter check names the field; the accessor's refusals. */
 #include "trk_test.h"
+#include "trk_test_sonar.h"
 #include "trk/tracker.h"
 
 #define DEG (3.14159265358979323846 / 180)
@@ -27,14 +28,8 @@ static struct trk_tracker tk, tk2;
  * a = 2; nothing is confirmed in fewer than 64 scans (M of N 64 / 64). */
 static void map_params(struct trk_tracker_params *p)
 {
-    trk_tracker_default_params(p);
-    p->stationary_d2 = 0; /* its targets stand still: they are targets here, not persistent returns */
+    trk_test_polar_params(p, 1e-7);
     struct trk_sensor_params *s = &p->sensor[0];
-    s->kind = TRK_SENSOR_POLAR;
-    s->sigma_range_m = TRK_REAL_C(7.5);
-    s->sigma_bearing_rad = (trk_real)(1.5 * DEG);
-    s->pd = TRK_REAL_C(0.9);
-    s->clutter_density_per_m2 = TRK_REAL_C(1e-7);
     s->coverage.min_range_m = 1000;
     s->coverage.max_range_m = 9000;
     s->coverage.half_width_rad = (trk_real)(60 * DEG);

@@ -21,6 +21,7 @@
  *   - with a clutter profile, a lone track's beta0 is the PDA's closed form
  *     with lambda and P_D at its predicted position, at two ranges. */
 #include "trk_test.h"
+#include "trk_test_sonar.h"
 #include "trk/kalman.h"
 #include "trk/tracker.h"
 
@@ -34,14 +35,8 @@ static struct trk_tracker tk_a, tk_b;
  * falling to 0.5 at 8 km. */
 static void polar_params(struct trk_tracker_params *p)
 {
-    trk_tracker_default_params(p);
-    p->stationary_d2 = 0; /* its targets stand still: they are targets here, not persistent returns */
+    trk_test_polar_params(p, 1e-8);
     struct trk_sensor_params *s = &p->sensor[0];
-    s->kind = TRK_SENSOR_POLAR;
-    s->sigma_range_m = TRK_REAL_C(7.5);
-    s->sigma_bearing_rad = (trk_real)(1.5 * DEG);
-    s->pd = TRK_REAL_C(0.9);
-    s->clutter_density_per_m2 = TRK_REAL_C(1e-8);
     s->pd_profile.n = 3;
     const double r[3] = {500, 2000, 8000}, pd[3] = {0.9, 0.9, 0.5};
     for (int k = 0; k < 3; k++) s->pd_profile.range_m[k] = (trk_real)r[k], s->pd_profile.pd[k] = (trk_real)pd[k];

@@ -20,6 +20,22 @@ static inline void trk_test_sonar_params(struct trk_tracker_params *p, double la
     p->process_noise_q = TRK_REAL_C(1e-3);
 }
 
+/* The defaults with sensor 0 a polar sonar at the origin facing north
+ * (sigma 7.5 m in range, 1.5 deg in bearing, P_D 0.9, clutter lambda) whose
+ * targets stand still where a test puts them: targets, not persistent
+ * returns (stationary_d2 0). */
+static inline void trk_test_polar_params(struct trk_tracker_params *p, double lambda)
+{
+    trk_tracker_default_params(p);
+    p->stationary_d2 = 0;
+    struct trk_sensor_params *s = &p->sensor[0];
+    s->kind = TRK_SENSOR_POLAR;
+    s->sigma_range_m = TRK_REAL_C(7.5);
+    s->sigma_bearing_rad = (trk_real)(1.5 * 3.14159265358979323846 / 180);
+    s->pd = TRK_REAL_C(0.9);
+    s->clutter_density_per_m2 = (trk_real)lambda;
+}
+
 static inline size_t trk_test_count_confirmed(const struct trk_tracker *t)
 {
     size_t n = 0;

@@ -24,7 +24,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "errmsg.h"
 #include "mtt_eval.h"
@@ -60,25 +59,6 @@ struct false_rec {
     uint32_t id;
     long false_pings, in_patch, on_persist;
 };
-
-static int mkdir_p(const char *path)
-{
-    char buf[1024];
-    size_t n = strlen(path);
-    if (n == 0 || n >= sizeof buf) return -1;
-    memcpy(buf, path, n + 1);
-    for (size_t i = 1; i <= n; i++)
-        if (buf[i] == '/' || buf[i] == 0) {
-            char c = buf[i];
-            buf[i] = 0;
-            if (mkdir(buf, 0777) != 0) {
-                struct stat st;
-                if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode)) return -1;
-            }
-            buf[i] = c;
-        }
-    return 0;
-}
 
 static int band_of(double r_m)
 {
@@ -204,7 +184,7 @@ SIM_EXPERIMENT(demo, "demo", "make demo: the sonar's own problem through the tra
     const int parsed = sim_parse_more(&cli, tcfg_help, &com, argc, argv);
     if (parsed != SIM_RUN) return parsed;
     char err[512], path[1200];
-    if (mkdir_p(com.out) != 0) {
+    if (sim_mkdir_p(com.out) != 0) {
         fprintf(stderr, "trk-sim demo: cannot create %s\n", com.out);
         return 1;
     }

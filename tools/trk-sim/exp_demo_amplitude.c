@@ -29,7 +29,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
 #include "errmsg.h"
@@ -59,25 +58,6 @@ struct err_row {
     int target;
     double err;
 };
-
-static int mkdir_p(const char *path)
-{
-    char buf[1024];
-    size_t n = strlen(path);
-    if (n == 0 || n >= sizeof buf) return -1;
-    memcpy(buf, path, n + 1);
-    for (size_t i = 1; i <= n; i++)
-        if (buf[i] == '/' || buf[i] == 0) {
-            char c = buf[i];
-            buf[i] = 0;
-            if (mkdir(buf, 0777) != 0) {
-                struct stat st;
-                if (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode)) return -1;
-            }
-            buf[i] = c;
-        }
-    return 0;
-}
 
 /* Tracker settings, applied after the demo's own, in command-line order:
  * --set key=value, and the old bare key=value operands (deprecated). */
@@ -143,7 +123,7 @@ SIM_EXPERIMENT(demo_amplitude, "demo-amplitude", "make demo-amplitude: amplitude
     char err[512], table_path[1024], path[1200];
     if (amp_table) snprintf(table_path, sizeof table_path, "%s", amp_table);
     else snprintf(table_path, sizeof table_path, "%s/amp_k1_snr15_pfa1e-2.tbl", tables);
-    if (mkdir_p(com.out) != 0) {
+    if (sim_mkdir_p(com.out) != 0) {
         fprintf(stderr, "trk-sim demo-amplitude: cannot create %s\n", com.out);
         return 1;
     }

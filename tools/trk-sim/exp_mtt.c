@@ -82,7 +82,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 
 #include "errmsg.h"
@@ -890,15 +889,7 @@ static int make_parent(const char *prefix)
     if (n == 0 || n >= sizeof buf) return n == 0 ? 0 : -1;
     memcpy(buf, prefix, n);
     buf[n] = 0;
-    for (size_t i = 1; i <= n; i++)
-        if (buf[i] == '/' || buf[i] == 0) {
-            const char c = buf[i];
-            buf[i] = 0;
-            struct stat st;
-            if (mkdir(buf, 0777) != 0 && (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode))) return -1;
-            buf[i] = c;
-        }
-    return 0;
+    return sim_mkdir_p(buf);
 }
 
 static int take_configs(const char *s, int *kinds, int *n, char *err, size_t errlen)

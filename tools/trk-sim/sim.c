@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -17,6 +18,25 @@
 #include "single_target.h"
 #include "toc_curve.h"
 #include "trk/table_file.h"
+
+/* ---------------------------------------------------------------- directories */
+
+int sim_mkdir_p(const char *path)
+{
+    char buf[1024];
+    const size_t n = strlen(path);
+    if (n == 0 || n >= sizeof buf) return -1;
+    memcpy(buf, path, n + 1);
+    for (size_t i = 1; i <= n; i++)
+        if (buf[i] == '/' || buf[i] == 0) {
+            const char c = buf[i];
+            buf[i] = 0;
+            struct stat st;
+            if (mkdir(buf, 0777) != 0 && (stat(buf, &st) != 0 || !S_ISDIR(st.st_mode))) return -1;
+            buf[i] = c;
+        }
+    return 0;
+}
 
 /* ---------------------------------------------------------------- options */
 

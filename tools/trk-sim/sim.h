@@ -280,6 +280,10 @@ int sim_load_table(const char *exp, const char *dir, const char *file, struct tr
 
 /* ---------------------------------------------------------------- output */
 
+/* mkdir -p: path and every directory above it (those there already kept).
+ * 0, or -1 (a part that is not a directory, a path too long). */
+int sim_mkdir_p(const char *path);
+
 /* Opens c->out + suffix (e.g. ".csv", "_front.csv") for writing with its
  * header line, through o (fileio.h: a temporary file renamed into place by
  * sim_csv_close, so a failed run never leaves a cut file); the name goes to
