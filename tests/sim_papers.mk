@@ -18,7 +18,7 @@ sim-papers-repro: $(TEST_EXTRA_DEPS_sim-papers-repro)
 	  $$s kennedy-null --runs 100 --max-scans 8 --seed 3 --threads $$t --quiet --no-plot --out $$d/kn$$t > /dev/null || st=1; \
 	  $$s brekke-errpdf --runs 30 --scans 60 --from 31 --pfa 1e-3,1e-1 --q2-samples 20000 \
 	    --seed 3 --threads $$t --quiet --no-plot --out $$d/ep$$t > /dev/null || st=1; \
-	  $$s demo --tables $(BUILD)/tables --scans 60 --mre-samples 20000 --seed 3 --threads $$t --quiet --no-plot \
+	  $$s demo-amplitude --tables $(BUILD)/tables --scans 60 --mre-samples 20000 --seed 3 --threads $$t --quiet --no-plot \
 	    --out $$d/demo$$t > /dev/null || st=1; \
 	done; \
 	if [ $$st = 0 ]; then \

@@ -109,8 +109,8 @@ static void test_closed_form(void **state)
     assert_true(near > 0.25 && near < 1);
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(2000, 45), polar_y(2000, 45)), 1e-7 * near, 0, tol);
     /* outside the coverage: the configured density */
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(9500, 0), polar_y(9500, 0)), 1e-7, 0, 0);
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 70), polar_y(4000, 70)), 1e-7, 0, 0);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(9500, 0), polar_y(9500, 0)), (double)TRK_REAL_C(1e-7), 0, 0);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 70), polar_y(4000, 70)), (double)TRK_REAL_C(1e-7), 0, 0);
     /* the same position from another pose is another cell (the sensor's frame) */
     const struct trk_pose turned = {0, 0, (trk_real)(-40 * DEG)};
     trk_real l = 0;
@@ -295,7 +295,7 @@ static void test_params_and_refusals(void **state)
     p.clutter_map.prior_count = 0;
     TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    TRK_ASSERT_NEAR(lambda_at(&tk, 0, 4000), 1e-7, 0, 0);
+    TRK_ASSERT_NEAR(lambda_at(&tk, 0, 4000), (double)TRK_REAL_C(1e-7), 0, 0);
     trk_real l;
     TRK_ASSERT_STATUS(trk_tracker_clutter_at(NULL, 0, NULL, 0, 0, &l), TRK_E_ARG);
     TRK_ASSERT_STATUS(trk_tracker_clutter_at(&tk, 0, NULL, 0, 0, NULL), TRK_E_ARG);

@@ -525,7 +525,6 @@ enum trk_filter_kind {
                                  process_noise_q > 0; docs/tracker.md "Track filters") */
 };
 
-/** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */
 /** A clutter map per sensor (seed survey ch. 5.3; docs/tracker.md "Clutter
  * map"): the sensor's coverage (trk_coverage: range limits and sector about
  * the heading; a sensor without a maximum range has no map) cut into
@@ -554,6 +553,7 @@ struct trk_clutter_map_params {
     trk_real max_ratio;            /**< rho's ceiling, >= 1 */
 };
 
+/** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */
 struct trk_tracker_params {
     unsigned n_sensors;                               /**< 1 .. TRK_MAX_SENSORS */
     struct trk_sensor_params sensor[TRK_MAX_SENSORS];  /**< sensor[0 .. n_sensors - 1] */
