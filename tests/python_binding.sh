@@ -27,6 +27,15 @@ export PYTHONPATH="$ROOT/tools/python" TRK_LIBRARY="$ROOT/$BUILD/libtrk.so"
 $PY tests/python/check_binding.py layout > "$T/layout.out" 2>&1 || fail "layout: $(cat "$T/layout.out")"
 ok "$(cat "$T/layout.out")"
 
+# --- a polar sensor through the binding, double and float
+$PY tests/python/check_binding.py polar > "$T/polar.out" 2>&1 || fail "polar (double): $(cat "$T/polar.out")"
+ok "$(cat "$T/polar.out")"
+if [ -e "$BUILD/float/libtrk_f.so" ]; then
+    TRK_LIBRARY="$ROOT/$BUILD/float/libtrk_f.so" TRK_REAL=float $PY tests/python/check_binding.py polar \
+        > "$T/polar_f.out" 2>&1 || fail "polar (float): $(cat "$T/polar_f.out")"
+    ok "float: $(cat "$T/polar_f.out")"
+fi
+
 # --- same bytes as C, double and float
 "$B/trk-sim" demo-amplitude --tables "$BUILD/tables" --out "$T/demo" --no-plot > "$T/demo.txt" 2>&1 ||
     fail "trk-sim demo-amplitude exited $?: $(tail -5 "$T/demo.txt")"

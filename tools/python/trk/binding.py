@@ -21,9 +21,15 @@ ST = _structs
 REAL = np.dtype("f%d" % ST["detection"].fields["x_m"].size)
 MAX_TRACKS = _consts["TRK_MAX_TRACKS"]
 MAX_DETECTIONS = _consts["TRK_MAX_DETECTIONS"]
+# a scan may hold this many; beyond MAX_DETECTIONS the library thins it (trk/tracker.h)
+MAX_SCAN_DETECTIONS = _consts["TRK_MAX_SCAN_DETECTIONS"]
 MAX_SENSORS = _consts["TRK_MAX_SENSORS"]
 WITH_IMM = bool(_consts["TRK_WITH_IMM"])
 WITH_JOINT = bool(_consts["TRK_WITH_JOINT"])
+_c_real = ctypes.c_double if REAL.itemsize == 8 else ctypes.c_float
+_c.trk_tracker_clutter_at.restype = ctypes.c_int
+_c.trk_tracker_clutter_at.argtypes = [ctypes.c_void_p, ctypes.c_uint, ctypes.c_void_p, _c_real, _c_real,
+                                      ctypes.POINTER(_c_real)]
 if WITH_IMM:
     _c.trk_tracker_imm_params.restype = ctypes.c_int
     _c.trk_tracker_imm_params.argtypes = [ctypes.c_void_p, ctypes.c_double if REAL.itemsize == 8 else ctypes.c_float,
@@ -256,7 +262,7 @@ def _track_dtype():
     f = ST["track"].fields
     nx = constants["CV2_NX"]
     names = [("id", "id", None), ("status", "status", None), ("end_reason", "end_reason", None),
-             ("time_us", "time_us", None), ("state", "x", (nx,)), ("covariance", "p", (nx, nx)),
+             ("stationary", "stationary", None), ("time_us", "time_us", None), ("state", "x", (nx,)), ("covariance", "p", (nx, nx)),
              ("existence", "vis.pv", None), ("confidence", "vis.pcv", None), ("n_scans", "n_scans", None),
              ("n_hits", "n_hits", None)]
     base = ST["track"].dtype
@@ -283,10 +289,12 @@ class Tracker(object):
     """struct trk_tracker: one call per scan. process_scan returns
     (report, tracks): the scan report (dict of its counts) and the live
     tracks in slot order as a numpy structured array (TRACK_DTYPE: id,
-    status, end_reason, time_us, state [x, vx, y, vy] (m, m/s), covariance
+    status, end_reason, stationary (1: held tentative, standing still), time_us, state [x, vx, y, vy] (m, m/s), covariance
     4 x 4, existence vis.pv, confidence vis.pcv, n_scans, n_hits; a copy of
     the track slots, laid out as struct trk_track:
-    numpy.lib.recfunctions.repack_fields packs it)."""
+    numpy.lib.recfunctions.repack_fields packs it). process_polar_scan takes
+    a polar sensor's ranges and bearings; clutter_at reads the density the
+    tracker uses (its clutter map)."""
 
     def __init__(self, params=None):
         self.params = (params if params is not None else default_params()).copy().check()
@@ -299,23 +307,47 @@ class Tracker(object):
         tf = ST["tracker"].fields["track"]
         self._slots = np.ndarray((tf.count,), TRACK_DTYPE, self._buf, tf.offset)
         self._det = np.zeros(MAX_DETECTIONS, ST["detection"].dtype)
+        self._polar = np.zeros(0, ST["polar_detection"].dtype)
         self._scan = np.zeros(1, ST["scan"].dtype)
-        self._scan["detections"] = self._det.ctypes.data
         self._scan_p = ctypes.c_void_p(self._scan.ctypes.data)
+        self._pose = np.zeros(1, ST["pose"].dtype)
         self._report = np.zeros(1, ST["scan_report"].dtype)
         self._report_p = ctypes.c_void_p(self._report.ctypes.data)
         self._process = _c.trk_tracker_process_scan
 
-    def process_scan(self, time_s, xy, cov=None, amplitude=None, sensor=0):
+    @staticmethod
+    def _room(buf, n):
+        """buf, or a larger zeroed one of the same dtype when it holds fewer than n."""
+        if n > MAX_SCAN_DETECTIONS:
+            raise TrkError("a scan of %d detections: this build takes at most %d" % (n, MAX_SCAN_DETECTIONS),
+                           STATUS["TRK_E_CAPACITY"])
+        return buf if buf.shape[0] >= n else np.zeros(max(n, MAX_DETECTIONS), buf.dtype)
+
+    def _run(self, time_s, sensor, n, pose):
+        s = self._scan
+        s["time_us"] = time_us(time_s)
+        s["sensor_id"] = sensor
+        s["n_detections"] = n
+        s["has_pose"] = 0 if pose is None else 1
+        if pose is not None:
+            self._pose["x_m"], self._pose["y_m"], self._pose["heading_rad"] = pose
+            s["pose"] = self._pose[0]
+        st = self._process(self._tk, self._scan_p, self._report_p)
+        if st != 0:
+            raise TrkError("process_scan", st)
+        return self.report(), self.tracks()
+
+    def process_scan(self, time_s, xy, cov=None, amplitude=None, sensor=0, pose=None):
         """One scan at time_s (s; rounded to the microsecond) of sensor:
         xy (n x 2, m), cov (None: the sensor's; n x 3 [xx, xy, yy] or
-        n x 2 x 2, m^2), amplitude (None, or n linear amplitudes). A refused
-        scan raises TrkError (the table untouched)."""
+        n x 2 x 2, m^2), amplitude (None, or n linear amplitudes); pose
+        (x_m, y_m, heading_rad) this scan's, None: the sensor's own. More
+        than MAX_DETECTIONS detections are thinned by the library (the
+        report counts them). A refused scan raises TrkError (the table
+        untouched)."""
         xy = np.asarray(xy, dtype=float).reshape(-1, 2)
         n = xy.shape[0]
-        if n > MAX_DETECTIONS:
-            raise TrkError("process_scan: %d detections, this build holds %d" % (n, MAX_DETECTIONS),
-                           STATUS["TRK_E_CAPACITY"])
+        self._det = self._room(self._det, n)
         d = self._det[:n]
         d["x_m"] = xy[:, 0]
         d["y_m"] = xy[:, 1]
@@ -332,14 +364,48 @@ class Tracker(object):
         else:
             d["amplitude"] = np.broadcast_to(np.asarray(amplitude, dtype=float), (n,))
             d["has_amplitude"] = 1
-        s = self._scan
-        s["time_us"] = time_us(time_s)
-        s["sensor_id"] = sensor
-        s["n_detections"] = n
-        st = self._process(self._tk, self._scan_p, self._report_p)
+        self._scan["detections"] = self._det.ctypes.data
+        self._scan["polar"] = 0
+        return self._run(time_s, sensor, n, pose)
+
+    def process_polar_scan(self, time_s, range_m, bearing_rad, amplitude=None, sensor=0, pose=None):
+        """One scan of a polar sensor (kind SENSOR_POLAR) at time_s: n ranges
+        (m) and bearings (rad, clockwise from the pose's heading), amplitude
+        as process_scan; pose (x_m, y_m, heading_rad) this scan's (a moving
+        platform), None: the sensor's own. The library converts each
+        detection and gives it its own covariance (trk_polar_to_cartesian)."""
+        r = np.asarray(range_m, dtype=float).ravel()
+        b = np.asarray(bearing_rad, dtype=float).ravel()
+        if r.shape != b.shape:
+            raise TrkError("process_polar_scan: %d ranges, %d bearings" % (r.shape[0], b.shape[0]),
+                           STATUS["TRK_E_ARG"])
+        n = r.shape[0]
+        self._polar = self._room(self._polar, n)
+        d = self._polar[:n]
+        d["range_m"] = r
+        d["bearing_rad"] = b
+        if amplitude is None:
+            d["has_amplitude"] = 0
+        else:
+            d["amplitude"] = np.broadcast_to(np.asarray(amplitude, dtype=float), (n,))
+            d["has_amplitude"] = 1
+        self._scan["detections"] = 0
+        self._scan["polar"] = self._polar.ctypes.data
+        return self._run(time_s, sensor, n, pose)
+
+    def clutter_at(self, x_m, y_m, sensor=0, pose=None):
+        """The clutter density (1/m^2) the tracker uses at (x_m, y_m) in a scan
+        of sensor from pose (None: the sensor's own): the configured one
+        times its clutter map's cell there (trk_tracker_clutter_at)."""
+        pp = None
+        if pose is not None:
+            self._pose["x_m"], self._pose["y_m"], self._pose["heading_rad"] = pose
+            pp = ctypes.c_void_p(self._pose.ctypes.data)
+        out = _c_real()
+        st = _c.trk_tracker_clutter_at(self._tk, sensor, pp, x_m, y_m, ctypes.byref(out))
         if st != 0:
-            raise TrkError("process_scan", st)
-        return self.report(), self.tracks()
+            raise TrkError("clutter_at", st)
+        return out.value
 
     def report(self):
         """The last scan's report (dict of struct trk_scan_report)."""
