@@ -73,6 +73,23 @@ void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real d
  * r sb^2 / 2 exceeds 12 % of the range). */
 #define SIGMA_BEARING_MAX TRK_REAL_C(0.5)
 
+/* The conversion itself (trk_polar_to_cartesian), k the unbiased scale (1
+ * first order), the inputs checked by the caller. */
+static void polar_convert(const struct trk_sensor_params *sp, const struct trk_pose *pose, trk_real k,
+                          const struct trk_polar_detection *pd, struct trk_detection *d)
+{
+    const trk_real b = pose->heading_rad + pd->bearing_rad;
+    const trk_real dx = k * pd->range_m * trk_sin(b), dy = k * pd->range_m * trk_cos(b);
+    d->x_m = pose->x_m + dx;
+    d->y_m = pose->y_m + dy;
+    /* from the offset of the position as stored: the covariance the tracker
+     * derives again from it, bit for bit */
+    trk_polar_cov(sp, d->x_m - pose->x_m, d->y_m - pose->y_m, d->cov_m2);
+    d->has_cov = 1;
+    d->has_amplitude = pd->has_amplitude;
+    d->amplitude = pd->amplitude;
+}
+
 trk_status trk_polar_to_cartesian(const struct trk_sensor_params *sp, const struct trk_pose *pose,
                                   const struct trk_polar_detection *pd, struct trk_detection *d)
 {
@@ -83,17 +100,16 @@ trk_status trk_polar_to_cartesian(const struct trk_sensor_params *sp, const stru
     if (!(pd->range_m > 0) || !(sp->sigma_range_m > 0) ||
         !(sp->sigma_bearing_rad > 0 && sp->sigma_bearing_rad <= SIGMA_BEARING_MAX))
         return TRK_E_RANGE;
-    const trk_real b = pose->heading_rad + pd->bearing_rad;
-    const trk_real k = sp->conversion == TRK_POLAR_UNBIASED ? unbiased_scale(sp->sigma_bearing_rad) : 1;
-    const trk_real dx = k * pd->range_m * trk_sin(b), dy = k * pd->range_m * trk_cos(b);
-    d->x_m = pose->x_m + dx;
-    d->y_m = pose->y_m + dy;
-    /* from the offset of the position as stored: the covariance the tracker
-     * derives again from it, bit for bit */
-    trk_polar_cov(sp, d->x_m - pose->x_m, d->y_m - pose->y_m, d->cov_m2);
-    d->has_cov = 1;
-    d->has_amplitude = pd->has_amplitude;
-    d->amplitude = pd->amplitude;
+    polar_convert(sp, pose, sp->conversion == TRK_POLAR_UNBIASED ? unbiased_scale(sp->sigma_bearing_rad) : 1, pd, d);
+    return TRK_OK;
+}
+
+trk_status trk_i_view_convert(const struct trk_i_view *v, const struct trk_polar_detection *pd,
+                              struct trk_detection *d)
+{
+    if (!isfinite(pd->range_m) || !isfinite(pd->bearing_rad)) return TRK_E_NAN;
+    if (!(pd->range_m > 0)) return TRK_E_RANGE;
+    polar_convert(v->sp, &v->pose, v->polar_k, pd, d);
     return TRK_OK;
 }
 
@@ -110,6 +126,9 @@ void trk_i_view_init(struct trk_i_view *v, const struct trk_sensor_params *sp, c
     v->max_r2 = c->max_range_m * c->max_range_m;
     v->limited = v->sector || c->min_range_m > 0 || c->max_range_m > 0 || sp->pd_profile.n > 0;
     v->clutter_varies = sp->clutter_profile.n > 0;
+    v->polar_k = sp->kind == TRK_SENSOR_POLAR && sp->conversion == TRK_POLAR_UNBIASED
+                     ? unbiased_scale(sp->sigma_bearing_rad)
+                     : 1;
     v->map = 0; /* the tracker's: trk_i_map_view */
     v->map_params = NULL;
     v->map_count = NULL;

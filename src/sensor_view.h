@@ -11,6 +11,13 @@
 /* The view of sensor sp from pose (finite: checked by the caller). */
 void trk_i_view_init(struct trk_i_view *v, const struct trk_sensor_params *sp, const struct trk_pose *pose);
 
+/* A polar detection of the view's sensor as a Cartesian one with its
+ * covariance, exactly as trk_polar_to_cartesian gives it (the sensor and
+ * the pose checked already: at init and with the scan): TRK_E_NAN for a
+ * range or bearing that is not finite, TRK_E_RANGE for a range <= 0. */
+trk_status trk_i_view_convert(const struct trk_i_view *v, const struct trk_polar_detection *pd,
+                              struct trk_detection *d);
+
 /* P_D at (x_m, y_m): trk_sensor_pd_at with the view's pose. pd_flat is
  * the sensor's P_D without a profile (its pd, or its amplitude model's). */
 trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_m, trk_real y_m);

@@ -28,7 +28,7 @@ static const struct trk_detection *scan_detection(const struct trk_tracker *t, c
     const struct trk_i_view *v = &t->ws.view;
     if (v->sp->kind != TRK_SENSOR_POLAR) return &scan->detections[i]; /* a Cartesian sensor's, as given */
     if (scan->polar) {
-        const trk_status st = trk_polar_to_cartesian(v->sp, &v->pose, &scan->polar[i], tmp);
+        const trk_status st = trk_i_view_convert(v, &scan->polar[i], tmp);
         if (st == TRK_OK) return tmp; /* its covariance is the one det_cov derives from its position */
         if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
         else rep->n_rejected_region++;

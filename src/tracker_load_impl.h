@@ -33,6 +33,24 @@ static void load_detection(struct trk_tracker *t, const struct trk_detection *d,
     }
 }
 
+/* Kept polar detection i of a thinned scan, the k-th kept, as converted by
+ * thin_select (its position in ws.x[k], ws.y[k]: the load writes entry
+ * n <= k, after this read), into *tmp: the covariance derived from the
+ * position as trk_i_view_convert derives it, bit for bit. */
+static const struct trk_detection *kept_polar(const struct trk_tracker *t, const struct trk_scan *scan, size_t k,
+                                              size_t i, struct trk_detection *tmp)
+{
+    const struct trk_i_view *v = &t->ws.view;
+    const struct trk_polar_detection *pd = &scan->polar[i];
+    tmp->x_m = t->ws.x[k];
+    tmp->y_m = t->ws.y[k];
+    trk_polar_cov(v->sp, tmp->x_m - v->pose.x_m, tmp->y_m - v->pose.y_m, tmp->cov_m2);
+    tmp->has_cov = 1;
+    tmp->has_amplitude = pd->has_amplitude;
+    tmp->amplitude = pd->amplitude;
+    return tmp;
+}
+
 /* The valid detections into the workspace: those with the sensor's
  * covariance first [0, n_shared), in gating's 2-D index (ws.grid,
  * src/grid_impl.h), own-covariance ones after, in their own index
@@ -56,7 +74,8 @@ static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk
             const size_t i = over ? t->ws.cand[k] : k;
             struct trk_detection tmp;
             if (scan->polar && !own) continue; /* converted, each has its own covariance */
-            const struct trk_detection *d = scan_detection(t, scan, i, &tmp, rep);
+            const struct trk_detection *d =
+                over && scan->polar ? kept_polar(t, scan, k, i, &tmp) : scan_detection(t, scan, i, &tmp, rep);
             if (d && (d->has_cov != 0) == own) load_detection(t, d, i, &au, rep);
         }
         if (!own) t->ws.n_shared = t->ws.n_valid;

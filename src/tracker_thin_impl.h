@@ -54,15 +54,44 @@ static int thin_below(const struct trk_tracker *t, size_t a, size_t b)
 
 static void thin_swap(struct trk_tracker *t, size_t a, size_t b)
 {
-    const trk_real w = t->ws.w[a];
+    const trk_real w = t->ws.w[a], x = t->ws.x[a], y = t->ws.y[a];
     const uint16_t c = t->ws.cand[a];
     const uint8_t u = t->ws.used[a];
     t->ws.w[a] = t->ws.w[b];
+    t->ws.x[a] = t->ws.x[b];
+    t->ws.y[a] = t->ws.y[b];
     t->ws.cand[a] = t->ws.cand[b];
     t->ws.used[a] = t->ws.used[b];
     t->ws.w[b] = w;
+    t->ws.x[b] = x;
+    t->ws.y[b] = y;
     t->ws.cand[b] = c;
     t->ws.used[b] = u;
+}
+
+/* The kept entries [0, n) in scan order: ws.cand ascending, and for a
+ * polar scan their converted positions ws.x, ws.y with them (so that the
+ * load converts no detection twice; ws.src, ws.w and ws.log_lr are the
+ * scratch, free until the load). */
+static void thin_sort_kept(struct trk_tracker *t, const struct trk_scan *scan, size_t n)
+{
+    if (!scan->polar) {
+        sort_u16_by(t->ws.cand, n, NULL);
+        return;
+    }
+    uint16_t *perm = t->ws.src, *cand = t->ws.cell_end;
+    for (size_t k = 0; k < n; k++) perm[k] = (uint16_t)k;
+    sort_u16_by(perm, n, t->ws.cand); /* the scan indices are distinct: one order */
+    for (size_t k = 0; k < n; k++) {
+        t->ws.w[k] = t->ws.x[perm[k]];
+        t->ws.log_lr[k] = t->ws.y[perm[k]];
+        cand[k] = t->ws.cand[perm[k]];
+    }
+    for (size_t k = 0; k < n; k++) {
+        t->ws.x[k] = t->ws.w[k];
+        t->ws.y[k] = t->ws.log_lr[k];
+        t->ws.cand[k] = cand[k];
+    }
 }
 
 /* The min-heap [0, n) after its root changed: sift it down. */
@@ -160,7 +189,8 @@ static void thin_model(const struct trk_sensor_params *sp, const struct trk_pda 
 /* A scan of more than TRK_MAX_DETECTIONS detections: count the invalid
  * ones (as load_detection would), rank the valid ones, keep the
  * TRK_MAX_DETECTIONS highest: their scan indices, ascending, in
- * ws.cand[0, n) (n returned); the rest counted as thinned, the model at
+ * ws.cand[0, n) (n returned), their positions in ws.x, ws.y (read back by
+ * the load of a polar scan: thin_sort_kept); the rest counted as thinned, the model at
  * the cut into *th and the report. O(n_det (log boxes + boxes in the strip
  * + log TRK_MAX_DETECTIONS)) + O(TRK_MAX_TRACKS^2) for the boxes' order.
  * Not inlined: its predictions' frame stays off the scan's deepest path
@@ -189,6 +219,8 @@ static TRK_NOINLINE size_t thin_select(struct trk_tracker *t, const struct trk_s
                                                 : -1 - (trk_real)thin_hash(d);
         if (n < TRK_MAX_DETECTIONS) { /* room: append, sift up */
             t->ws.w[n] = key;
+            t->ws.x[n] = d->x_m;
+            t->ws.y[n] = d->y_m;
             t->ws.cand[n] = (uint16_t)i;
             t->ws.used[n] = in;
             for (size_t c = n++; c > 0 && thin_below(t, c, (c - 1) / 2); c = (c - 1) / 2) thin_swap(t, c, (c - 1) / 2);
@@ -198,6 +230,8 @@ static TRK_NOINLINE size_t thin_select(struct trk_tracker *t, const struct trk_s
          * tie goes to the root: earlier in the scan) */
         if (in != t->ws.used[0] ? in < t->ws.used[0] : !(key > t->ws.w[0])) continue;
         t->ws.w[0] = key;
+        t->ws.x[0] = d->x_m;
+        t->ws.y[0] = d->y_m;
         t->ws.cand[0] = (uint16_t)i;
         t->ws.used[0] = in;
         thin_sift_down(t, n);
@@ -215,7 +249,7 @@ static TRK_NOINLINE size_t thin_select(struct trk_tracker *t, const struct trk_s
         rep->thin_clutter_density = th->lambda;
         rep->thin_in_gates = (uint32_t)th->in_gates;
     }
-    sort_u16_by(t->ws.cand, n, NULL);
+    thin_sort_kept(t, scan, n);
     return n;
 }
 

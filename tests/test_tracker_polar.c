@@ -130,6 +130,52 @@ static void test_polar_equals_converted(void **state)
     assert_true(confirmed >= 4);
 }
 
+/* Scans of twice the capacity: the polar scan is thinned and tracked
+ * exactly as the same detections converted by the caller (the same kept
+ * detections, reports and tables, bit for bit: the load reuses the
+ * selection's conversions). */
+static void test_thinned_polar_equals_converted(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    polar_params(&p);
+    p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+    TRK_ASSERT_OK(trk_tracker_init(&tk_a, &p));
+    TRK_ASSERT_OK(trk_tracker_init(&tk_b, &p));
+    enum { N = 2 * TRK_MAX_DETECTIONS + 5 };
+    static struct trk_polar_detection pd[N];
+    static struct trk_detection cd[N];
+    uint64_t rng = 9;
+    size_t thinned = 0;
+    for (int k = 0; k < 12; k++) {
+        const struct trk_pose o = platform(k);
+        const double tx[3] = {800, -2500 + 4.0 * DT_S * k, 3000}, ty[3] = {3000, 5000, 6000 - 5.0 * DT_S * k};
+        size_t n = 0;
+        for (int t = 0; t < 3; t++) pd[n++] = seen(&o, tx[t], ty[t], &rng);
+        while (n < N) {
+            const struct trk_polar_detection d = {(trk_real)(500 + 7500 * trk_test_urand(&rng)),
+                                                  (trk_real)((120 * trk_test_urand(&rng) - 60) * DEG), 0, 0};
+            pd[n++] = d;
+        }
+        for (size_t i = 0; i < n; i++) TRK_ASSERT_OK(trk_polar_to_cartesian(&p.sensor[0], &o, &pd[i], &cd[i]));
+        const struct trk_scan sa = polar_scan(k, &o, n, pd);
+        struct trk_scan sb = sa;
+        sb.polar = NULL;
+        sb.detections = cd;
+        struct trk_scan_report ra, rb;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &sa, &ra));
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk_b, &sb, &rb));
+        assert_int_equal(ra.n_kept, rb.n_kept);
+        assert_int_equal(ra.n_thinned, rb.n_thinned);
+        assert_int_equal(ra.n_kept + ra.n_thinned, N);
+        assert_int_equal(ra.n_started, rb.n_started);
+        assert_int_equal(ra.thin_in_gates, rb.thin_in_gates);
+        thinned += ra.n_thinned;
+        assert_same_tables(&tk_a, &tk_b);
+    }
+    assert_true(thinned > 0);
+}
+
 /* The confirmed track nearest (x, y), or NULL. */
 static const struct trk_track *track_near(const struct trk_tracker *t, double x, double y, double within_m)
 {
@@ -469,6 +515,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_polar_equals_converted),
+        cmocka_unit_test(test_thinned_polar_equals_converted),
         cmocka_unit_test(test_moving_platform),
         cmocka_unit_test(test_existence_with_profile),
         cmocka_unit_test(test_out_of_sight),

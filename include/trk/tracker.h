@@ -858,6 +858,8 @@ struct trk_i_view {
     uint8_t sector;                      /**< 1: the coverage is a sector */
     uint8_t limited;                     /**< 1: P_D depends on the position */
     uint8_t clutter_varies;              /**< 1: lambda depends on the position */
+    trk_real polar_k;                    /**< a polar sensor's conversion scale (1, or the
+                                            unbiased conversion's e^(sb^2 / 2)) */
     uint8_t map;                         /**< 1: the sensor's clutter map scales lambda: */
     const struct trk_clutter_map_params *map_params;  /**< its cells and estimator, */
     const trk_real *map_count;           /**< its cells' N_c, */
