@@ -698,12 +698,47 @@ TRK_INLINE trk_status trk_i_pda_check_posterior(int nx, const trk_real *x, const
     return why != TRK_OK ? why : TRK_E_NOT_SPD;
 }
 
-/* V_G of the shared S and the clutter density (given, or m_G / V_G) into *o,
- * with beta0 = 1 and no detection weight yet. */
+/* V_G of an update (docs/conventions.md "PDA"): the shared S's; for
+ * nonparametric clutter over a set with detections of their own covariance,
+ * each gated in its own S_j = H P H' + R_j, the mean of the gated
+ * detections' gate volumes (V(S) for a shared one, V(S_j) for an own one),
+ * so that lambda = m_G / V_G counts the detections against the gates they
+ * were gated in. */
+static TRK_NOINLINE trk_real trk_i_pda_own_volume_mean(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                                       const struct trk_i_pda_set *s, trk_real v);
+
+TRK_INLINE trk_real trk_i_pda_gate_volume(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                          const struct trk_i_pda_set *s)
+{
+    const trk_real v = trk_i_gate_volume(pr->nz, pda->gamma, pr->inn->sqrt_det_s, pr->inn->log_det_s);
+    if (pda->params.clutter != TRK_CLUTTER_NONPARAMETRIC || s->n <= s->n_shared) return v;
+    return trk_i_pda_own_volume_mean(pda, pr, s, v);
+}
+
+/* The mean of trk_i_pda_gate_volume, v the shared S's volume (not inlined:
+ * its S_j and factor stay off the update's deepest frame). */
+static TRK_NOINLINE trk_real trk_i_pda_own_volume_mean(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
+                                                       const struct trk_i_pda_set *s, trk_real v)
+{
+    const int nz = pr->nz;
+    trk_real sum = v * (trk_real)s->n_shared;
+    for (size_t i = s->n_shared; i < s->n; i++) {
+        trk_real sj[TRK_MAX_MEAS * TRK_MAX_MEAS], li[TRK_MAX_MEAS * TRK_MAX_MEAS], log_det;
+        trk_i_pda_own_s(pr, s->r_own + (i - s->n_shared) * (size_t)(nz * nz), sj);
+        /* gated, so S_j factors; were it not, its share is the shared V */
+        sum += trk_i_pda_factor(nz, sj, li, &log_det) == TRK_OK
+                   ? trk_i_gate_volume(nz, pda->gamma, (trk_real)INFINITY, log_det)
+                   : v;
+    }
+    return sum / (trk_real)s->n;
+}
+
+/* V_G (trk_i_pda_gate_volume) and the clutter density (given, or m_G /
+ * V_G) into *o, with beta0 = 1 and no detection weight yet. */
 TRK_INLINE void trk_i_pda_clutter(const struct trk_pda *pda, const struct trk_i_pda_pred *pr,
                                   const struct trk_i_pda_set *s, struct trk_i_pda_out *o)
 {
-    o->gate_volume = trk_i_gate_volume(pr->nz, pda->gamma, pr->inn->sqrt_det_s, pr->inn->log_det_s);
+    o->gate_volume = trk_i_pda_gate_volume(pda, pr, s);
     o->lambda = pda->params.clutter == TRK_CLUTTER_PARAMETRIC ? pda->params.clutter_density
                                                              : (trk_real)s->m_gated / o->gate_volume;
     o->beta0 = 1;

@@ -13,9 +13,13 @@
  *   - a polar scan and the same scan as Cartesian detections count alike;
  *   - a scan of twice the capacity, thinned, counts the whole scan (each
  *     kept detection weighted by 1 / the kept share);
- *   - the parameter check names the field; the accessor's refusals. */
+ *   - the parameter check names the field; the accessor's refusals;
+ *   - the nonparametric density with detections of their own covariance:
+ *     lambda = m_G / V_G with V_G the mean of the gated detections' own
+ *     gate volumes (beta0 of a lone track, closed form). */
 #include "trk_test.h"
 #include "trk_test_sonar.h"
+#include "trk/kalman.h"
 #include "trk/tracker.h"
 
 #define DEG (3.14159265358979323846 / 180)
@@ -303,6 +307,60 @@ static void test_params_and_refusals(void **state)
     TRK_ASSERT_STATUS(trk_tracker_clutter_at(&tk, 0, NULL, (trk_real)NAN, 0, &l), TRK_E_NAN);
 }
 
+/* A lone track at rest at the origin (own covariance 25 I each scan), then
+ * two detections with different own covariances in its gate: beta0 =
+ * b / (b + e_1 + e_2), e_j = P_D N(nu_j; 0, S_j), b = lambda (1 - P_D P_G),
+ * lambda = 2 / ((V_1 + V_2) / 2), V_j = pi gamma sqrt(det S_j). */
+static void test_nonparametric_own_volumes(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_test_sonar_params(&p, 1e-6);
+    p.stationary_d2 = 0;
+    p.association = TRK_ASSOC_PDA;
+    p.clutter = TRK_CLUTTER_NONPARAMETRIC;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d[2];
+    memset(d, 0, sizeof d);
+    d[0].has_cov = 1;
+    d[0].cov_m2[TRK_COV2_XX] = d[0].cov_m2[TRK_COV2_YY] = 25;
+    for (int k = 0; k < 12; k++) {
+        const struct trk_scan s = {SCAN_US(k), 0, 1, d, NULL, 0, {0, 0, 0}};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
+    }
+    const struct trk_track *tr = trk_tracker_track(&tk, 0);
+    assert_non_null(tr);
+    assert_true(tr->status == TRK_TRACK_TENTATIVE || tr->status == TRK_TRACK_CONFIRMED);
+    trk_real x[TRK_CV2_NX], pp[TRK_CV2_NX * TRK_CV2_NX];
+    memcpy(x, tr->x, sizeof x);
+    memcpy(pp, tr->p, sizeof pp);
+    TRK_ASSERT_OK(trk_cv2_predict(8, p.process_noise_q, x, pp));
+    const double zx[2] = {3, -2}, zy[2] = {-1, 4}, rxx[2] = {4, 60}, rxy[2] = {1, -10}, ryy[2] = {9, 30};
+    for (int j = 0; j < 2; j++) {
+        d[j].x_m = (trk_real)zx[j], d[j].y_m = (trk_real)zy[j];
+        d[j].has_cov = 1;
+        d[j].cov_m2[TRK_COV2_XX] = (trk_real)rxx[j];
+        d[j].cov_m2[TRK_COV2_XY] = (trk_real)rxy[j];
+        d[j].cov_m2[TRK_COV2_YY] = (trk_real)ryy[j];
+    }
+    const struct trk_scan s = {SCAN_US(12), 0, 2, d, NULL, 0, {0, 0, 0}};
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+    const double gamma = -2 * log(1 - (double)p.gate_prob), pd = (double)p.sensor[0].pd;
+    double vsum = 0, esum = 0;
+    for (int j = 0; j < 2; j++) {
+        const double sxx = pp[TRK_CV2_P(TRK_CV2_X, TRK_CV2_X)] + rxx[j], sxy = pp[TRK_CV2_P(TRK_CV2_X, TRK_CV2_Y)] + rxy[j];
+        const double syy = pp[TRK_CV2_P(TRK_CV2_Y, TRK_CV2_Y)] + ryy[j], det = sxx * syy - sxy * sxy;
+        const double nx = zx[j] - x[TRK_CV2_X], ny = zy[j] - x[TRK_CV2_Y];
+        const double d2 = (syy * nx * nx - 2 * sxy * nx * ny + sxx * ny * ny) / det;
+        assert_true(d2 < gamma); /* both gated */
+        vsum += 3.14159265358979323846 * gamma * sqrt(det);
+        esum += pd * exp(-0.5 * d2) / (2 * 3.14159265358979323846 * sqrt(det));
+    }
+    const double lambda = 2 / (vsum / 2), b = lambda * (1 - pd * (double)p.gate_prob);
+    TRK_ASSERT_NEAR(tr->beta0_last, b / (b + esum), 0, TRK_TOL(1e-9, 1e-4));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -312,6 +370,7 @@ int main(void)
         cmocka_unit_test(test_polar_equals_cartesian),
         cmocka_unit_test(test_thinned_scan_counts_all),
         cmocka_unit_test(test_params_and_refusals),
+        cmocka_unit_test(test_nonparametric_own_volumes),
     };
     return trk_run_tests("clutter_map", tests, NULL, NULL);
 }
