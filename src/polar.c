@@ -162,6 +162,13 @@ trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_
     return pp->n > 0 ? profile_at(pp->n, pp->range_m, pp->pd, r) : pd_flat;
 }
 
+trk_real trk_i_view_pd_profile(const struct trk_i_view *v, trk_real x_m, trk_real y_m)
+{
+    const trk_real dx = x_m - v->pose.x_m, dy = y_m - v->pose.y_m;
+    const struct trk_pd_profile *pp = &v->sp->pd_profile;
+    return profile_at(pp->n, pp->range_m, pp->pd, trk_sqrt(dx * dx + dy * dy));
+}
+
 trk_real trk_i_view_clutter(const struct trk_i_view *v, trk_real x_m, trk_real y_m)
 {
     if (v->sp->clutter_profile.n == 0) return v->sp->clutter_density_per_m2;

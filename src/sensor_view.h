@@ -22,6 +22,11 @@ trk_status trk_i_view_convert(const struct trk_i_view *v, const struct trk_polar
  * the sensor's P_D without a profile (its pd, or its amplitude model's). */
 trk_real trk_i_view_pd(const struct trk_i_view *v, trk_real pd_flat, trk_real x_m, trk_real y_m);
 
+/* The P_D profile's value at the range of (x_m, y_m), inside the coverage
+ * or not (a profile is set: n >= 2): the SNR a target there would have, for
+ * the amplitude likelihood ratio of a detection there. */
+trk_real trk_i_view_pd_profile(const struct trk_i_view *v, trk_real x_m, trk_real y_m);
+
 /* lambda at (x_m, y_m): trk_sensor_clutter_at with the view's pose (its
  * configured density, without the tracker's clutter map). */
 trk_real trk_i_view_clutter(const struct trk_i_view *v, trk_real x_m, trk_real y_m);

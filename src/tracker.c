@@ -49,17 +49,17 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     t->scan_no++;
     see_from(t, scan);
     free_terminated(t);
-    struct thin th = {0, 0, 0, 0, 0};
+    struct thin th = {0, 0, 0, 0, 0, 1, 0, 0};
     load_detections(t, scan, &th, &rep);
     struct thin_saved saved = {0}; /* written by thin_apply when it returns TRK_OK */
-    const int model = th.in_gates && thin_apply(t, scan->sensor_id, &th, &saved) == TRK_OK;
+    const int model = th.in_gates && thin_apply(t, scan, &th, &saved) == TRK_OK;
 #if TRK_WITH_JOINT
     if (t->params.association == TRK_ASSOC_JOINT) update_joint(t, scan, &rep);
     else
 #endif
         update_each(t, scan, &rep);
     const trk_real kept_share = model ? t->ws.lambda_scale : clutter_kept_share(t, &rep);
-    if (model) thin_restore(t, scan->sensor_id, &saved);
+    if (model) thin_restore(t, scan, &saved);
     if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
     initiate(t, scan, &rep);
 #if TRK_CLUTTER_MAP_CELLS > 0
@@ -111,7 +111,7 @@ static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
         trk_i_map_view(&t->ws.view, &t->params.clutter_map, t->clutter_map[scan->sensor_id],
                        t->clutter_map_scans[scan->sensor_id]);
 #endif
-    t->ws.pd_scale = t->ws.lambda_scale = 1;
+    t->ws.pd_scale = t->ws.lambda_scale = t->ws.pd_power = 1;
 }
 
 /* The share of a scan's clutter that a thinning without the amplitude

@@ -15,7 +15,56 @@ struct amp_use {
     trk_real max_coord_m; /* the surveillance bound (params.max_coord_m) */
     int want_db;       /* the clutter-amplitude test needs the amplitudes in dB */
     trk_real ref_db;   /* mean clutter power (dB): the amplitudes' reference */
+    /* an amplitude model with a P_D profile: the view whose profile gives
+     * the target SNR at each detection's range (else NULL: the model's) */
+    const struct trk_i_view *snr_view;
+    trk_real eta, pd_s; /* persistent returns: their share and P_D (eta 0: none) */
 };
+
+/* How sensor sp's detections are read in scan view v. */
+static struct amp_use amp_use_of(const struct trk_tracker *t, const struct trk_sensor_params *sp,
+                                 const struct trk_i_view *v)
+{
+    const struct amp_use au = {
+        sp, t->params.max_coord_m, t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP, /* the dB values' only user */
+        TRK_REAL_C(10.0) * trk_log10(sp->use_amplitude ? sp->amplitude.clutter_power : 1),
+        sp->use_amplitude && sp->pd_profile.n > 0 ? v : NULL, sp->use_amplitude ? sp->persistent_share : 0,
+        sp->persistent_pd};
+    return au;
+}
+
+/* The target's P_D behind detection d's amplitude: the profile's at its
+ * range, else the model's. */
+static trk_real amp_pd(const struct amp_use *au, const struct trk_detection *d)
+{
+    return au->snr_view ? trk_i_view_pd_profile(au->snr_view, d->x_m, d->y_m) : au->sp->amplitude.pd;
+}
+
+/* ln l^a of amplitude a over clutter and persistent returns (struct
+ * trk_sensor_params: l = l_t / ((1 - eta) + eta l_s), Rayleigh), the
+ * target at P_D pd, at the threshold raised by x0 >= 0 (pfa' = pfa e^-x0;
+ * 0: the sensor's): there each l^a loses (1 - 1/u) x0 (u = 1 + SNR: eq 19
+ * at t'^2 = t^2 + P x0) and the scatterers' share becomes
+ * eta' = eta e^(-x0/u_s) / ((1 - eta) e^-x0 + eta e^(-x0/u_s)). */
+static trk_status amp_mixture_log_lr(const struct amp_use *au, trk_real pd, trk_real x0, trk_real a, trk_real *llr)
+{
+    const struct trk_amplitude *m = &au->sp->amplitude;
+    trk_real lt, ls;
+    trk_status st = trk_amplitude_log_lr_at_pd(m, pd, a, &lt);
+    if (st == TRK_OK) st = trk_amplitude_log_lr_at_pd(m, au->pd_s, a, &ls);
+    if (st != TRK_OK) return st;
+    const trk_real ln_pfa = trk_log(m->pfa), inv_ut = trk_log(pd) / ln_pfa, inv_us = trk_log(au->pd_s) / ln_pfa;
+    lt -= (1 - inv_ut) * x0;
+    ls -= (1 - inv_us) * x0;
+    /* ln((1 - eta') + eta' e^ls) = ln((1 - eta) e^-x0 + eta e^(-x0/u_s) e^ls) - ln((1 - eta) e^-x0 + eta e^(-x0/u_s)) */
+    const trk_real c0 = trk_log(1 - au->eta) - x0, c1 = trk_log(au->eta) - x0 * inv_us;
+    const trk_real top_hi = c0 > c1 + ls ? c0 : c1 + ls, top_lo = c0 > c1 + ls ? c1 + ls : c0;
+    const trk_real bot_hi = c0 > c1 ? c0 : c1, bot_lo = c0 > c1 ? c1 : c0;
+    const trk_real v = lt - (top_hi + trk_log1p(trk_exp(top_lo - top_hi))) + (bot_hi + trk_log1p(trk_exp(bot_lo - bot_hi)));
+    if (!isfinite(v)) return TRK_E_RANGE;
+    *llr = v;
+    return TRK_OK;
+}
 
 /* Scan detection i as a Cartesian detection: the caller's; a polar
  * sensor's converted (trk_polar_to_cartesian) into *tmp, or a Cartesian
@@ -57,7 +106,10 @@ static trk_status check_detection(const struct trk_detection *d)
 /* Is detection d usable: 1 with its ln l^a in *llr, else 0 and counted
  * why not: a finite position outside the surveillance bound, the checks
  * above, then with an amplitude model its ln l^a (PDAFAI, Brekke eqs
- * 19-20, once per scan), refusing amplitudes below the threshold. */
+ * 19-20, once per scan; with a P_D profile, the target SNR of the
+ * profile's P_D at the detection's range: trk_amplitude_log_lr_at_pd; with
+ * persistent returns over their mixture with the clutter),
+ * refusing amplitudes below the threshold. */
 static int detection_usable(const struct trk_detection *d, const struct amp_use *au, struct trk_scan_report *rep,
                             trk_real *llr)
 {
@@ -74,7 +126,9 @@ static int detection_usable(const struct trk_detection *d, const struct amp_use 
     }
     *llr = 0; /* positions only: l^a = 1 */
     if (au->sp->use_amplitude && d->has_amplitude) {
-        st = trk_amplitude_log_lr(&au->sp->amplitude, d->amplitude, llr);
+        st = au->eta > 0 ? amp_mixture_log_lr(au, amp_pd(au, d), 0, d->amplitude, llr)
+             : au->snr_view ? trk_amplitude_log_lr_at_pd(&au->sp->amplitude, amp_pd(au, d), d->amplitude, llr)
+                            : trk_amplitude_log_lr(&au->sp->amplitude, d->amplitude, llr);
         /* TRK_E_RANGE at or above the threshold: ln l^a beyond the real type (a Rayleigh
          * amplitude above ~1e154 sqrt(P)), a bad amplitude, not one below the threshold */
         if (st == TRK_E_RANGE && d->amplitude < trk_amplitude_threshold(&au->sp->amplitude))

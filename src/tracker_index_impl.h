@@ -56,4 +56,34 @@ static void sort_u16_by(uint16_t *a, size_t n, const uint16_t *key)
 #undef SORT_KEY
 }
 
+/* a[0, n) into descending order of key[a[i]], ties in ascending a[i] (a
+ * total order: the same result whatever the input's order); heap sort. */
+static void sort_u16_by_real_desc(uint16_t *a, size_t n, const trk_real *key)
+{
+#define SORT_BELOW(i, m) (key[a[i]] < key[a[m]] || (key[a[i]] == key[a[m]] && a[i] > a[m]))
+    for (size_t end = n, start = n / 2;;) {
+        if (start > 0) {
+            start--;
+        } else {
+            if (end <= 1) break;
+            end--;
+            const uint16_t v = a[0];
+            a[0] = a[end];
+            a[end] = v;
+        }
+        for (size_t i = start;;) { /* sift a[i] down in the heap [0, end) whose root ranks last */
+            size_t m = i;
+            const size_t l = 2 * i + 1, r = l + 1;
+            if (l < end && SORT_BELOW(l, m)) m = l;
+            if (r < end && SORT_BELOW(r, m)) m = r;
+            if (m == i) break;
+            const uint16_t v = a[i];
+            a[i] = a[m];
+            a[m] = v;
+            i = m;
+        }
+    }
+#undef SORT_BELOW
+}
+
 #endif

@@ -40,7 +40,7 @@ struct run_reach {
 static struct run_reach expire_candidates(struct trk_tracker *t, const struct trk_scan *scan, const uint16_t *idx,
                                           size_t n);
 static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
-                           const struct run_reach *rr, trk_real *r_j, size_t *run_k);
+                           const struct run_reach *rr, trk_real *r_j, size_t *run_k, trk_real *score);
 static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t run_k, size_t c,
                       size_t j, const trk_real *r_j, const struct run_reach *rr, struct trk_scan_report *rep);
 static int start_single(struct trk_tracker *t, struct slots *sl, const struct trk_scan *scan, size_t j,
@@ -100,14 +100,27 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
             rep->n_candidates = (uint32_t)t->n_cand;
             return;
         }
-        for (size_t k = 0; k < n; k++) { /* in workspace order */
+        /* the strongest pairs first: each detection's best pair's score (its
+         * own ln l^a included), so that a candidate goes to the detection that
+         * explains it best, not to the first one in reach (a persistent
+         * return's candidate to its own next return, not to clutter beside it) */
+        trk_real *score = t->ws.u.set.z; /* the gated-set scratch is free by now */
+        for (size_t k = 0; k < n; k++) {
             const size_t j = idx[k];
-            trk_real r_j[NZ * NZ] = {0}; /* set when c >= 0 */
+            trk_real r_j[NZ * NZ], sc = 0;
             size_t run_k = 0;
-            const long c = best_candidate(t, scan, j, &rr, r_j, &run_k);
+            score[j] = best_candidate(t, scan, j, &rr, r_j, &run_k, &sc) >= 0 ? sc + t->ws.log_lr[j] : -TRK_REAL_MAX;
+        }
+        sort_u16_by_real_desc(idx, n, score);
+        for (size_t k = 0; k < n; k++) {
+            const size_t j = idx[k];
+            trk_real r_j[NZ * NZ] = {0}, sc; /* r_j set when c >= 0 */
+            size_t run_k = 0;
+            const long c = score[j] > -TRK_REAL_MAX ? best_candidate(t, scan, j, &rr, r_j, &run_k, &sc) : -1;
             if (c >= 0 && start_pair(t, &sl, scan, run_k, (size_t)c, j, r_j, &rr, rep)) continue;
             idx[n_new++] = (uint16_t)j;
         }
+        sort_u16_by(idx, n_new, NULL); /* the new candidates in workspace order */
         store_candidates(t, scan, idx, n_new, rep);
     }
     rep->n_candidates = (uint32_t)t->n_cand;
@@ -342,12 +355,12 @@ static struct run_reach expire_candidates(struct trk_tracker *t, const struct tr
 
 /* The candidate detection j pairs with (trk_init_params: within the velocity
  * gate, the highest ln l^a - ln r; ties: the smaller x), its index in cand[]
- * and its run's in *run_k, or -1. Each run is searched in its box of
+ * and its run's in *run_k, that score in *score, or -1. Each run is searched in its box of
  * half side rr->reach_m (expire_candidates). r_j gets the detection's
  * covariance once a candidate is in a box (it is set whenever the result is
  * not -1). */
 static long best_candidate(const struct trk_tracker *t, const struct trk_scan *scan, size_t j,
-                           const struct run_reach *rr, trk_real *r_j, size_t *run_k)
+                           const struct run_reach *rr, trk_real *r_j, size_t *run_k, trk_real *score)
 {
     const trk_real vmax = t->params.init.max_speed_mps, gamma = t->pda[scan->sensor_id].gamma;
     const trk_real xj = t->ws.x[j], yj = t->ws.y[j];
@@ -376,13 +389,14 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
                  * at density 1 / (2 pi r v_max dt), so nearer partners weigh more (r
                  * no smaller than the noise) */
                 const trk_real noise2 = r_sum[S(ZX, ZX)] + r_sum[S(ZY, ZY)];
-                const trk_real score = c->log_lr - TRK_REAL_C(0.5) * trk_log(d2 > noise2 ? d2 : noise2);
-                if (best < 0 || score > best_score || (score == best_score && c->x_m < t->cand[best].x_m)) {
-                    best = (long)i, best_score = score;
+                const trk_real sc = c->log_lr - TRK_REAL_C(0.5) * trk_log(d2 > noise2 ? d2 : noise2);
+                if (best < 0 || sc > best_score || (sc == best_score && c->x_m < t->cand[best].x_m)) {
+                    best = (long)i, best_score = sc;
                     *run_k = k;
                 }
             }
     }
+    *score = best_score;
     return best;
 }
 

@@ -106,7 +106,9 @@ TRK_INLINE trk_real sensor_pd_at(const struct trk_tracker *t, const struct trk_s
     const trk_real flat = t->pda[scan->sensor_id].params.pd;
     if (!t->ws.view.limited) return flat; /* no call for a sensor that sees everywhere alike */
     const trk_real pd = trk_i_view_pd(&t->ws.view, flat, x, y);
-    return t->ws.view.sp->pd_profile.n > 0 ? pd * t->ws.pd_scale : pd; /* a thinned scan's factor */
+    if (t->ws.view.sp->pd_profile.n == 0) return pd;
+    /* a thinned scan's factor, or with amplitudes its power (S1 at the raised threshold) */
+    return t->ws.pd_power != 1 ? trk_pow(pd, t->ws.pd_power) : pd * t->ws.pd_scale;
 }
 
 /* lambda of the scan's sensor at (x, y): its clutter profile (scaled as

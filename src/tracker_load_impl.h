@@ -62,9 +62,7 @@ static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk
                             struct trk_scan_report *rep)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
-    const struct amp_use au = {
-        sp, t->params.max_coord_m, t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP, /* the dB values' only user */
-        TRK_REAL_C(10.0) * trk_log10(sp->use_amplitude ? sp->amplitude.clutter_power : 1)};
+    const struct amp_use au = amp_use_of(t, sp, &t->ws.view);
     const int over = scan->n_detections > TRK_MAX_DETECTIONS;
     const size_t n_load = over ? thin_select(t, scan, &au, th, rep) : scan->n_detections;
     t->ws.n_valid = 0;

@@ -84,13 +84,13 @@ void trk_tracker_mn_kn_params(struct trk_tracker_params *p)
  * (no stdio to format them): one row per index, rows up to TRK_MAX_SENSORS
  * (in blocks of up to twice the rows needed above 2). */
 enum { F_PD, F_COV, F_DENSITY, F_USE_AMP, F_AMP, F_KIND, F_SIGMA_R, F_SIGMA_B, F_CONV, F_POSE, F_PROFILE, F_COVER,
-       F_CLUTTER_PROFILE, N_SENSOR_FIELDS };
+       F_CLUTTER_PROFILE, F_PERSIST, N_SENSOR_FIELDS };
 #define ROW(i)                                                                                      \
     {"sensor[" #i "].pd", "sensor[" #i "].meas_cov_m2", "sensor[" #i "].clutter_density_per_m2",       \
      "sensor[" #i "].use_amplitude", "sensor[" #i "].amplitude", "sensor[" #i "].kind",                \
      "sensor[" #i "].sigma_range_m", "sensor[" #i "].sigma_bearing_rad", "sensor[" #i "].conversion",  \
      "sensor[" #i "].pose", "sensor[" #i "].pd_profile", "sensor[" #i "].coverage",                   \
-     "sensor[" #i "].clutter_profile"},
+     "sensor[" #i "].clutter_profile", "sensor[" #i "].persistent_share"},
 #define ROWS10(d) ROW(d##0) ROW(d##1) ROW(d##2) ROW(d##3) ROW(d##4) ROW(d##5) ROW(d##6) ROW(d##7) ROW(d##8) ROW(d##9)
 static const char *const sensor_field[][N_SENSOR_FIELDS] = {
     ROW(0)
@@ -259,8 +259,8 @@ static trk_status check_polar(const struct trk_sensor_params *sp, const char *co
 }
 
 /* Where the sensor sees: its fixed pose (finite, in the surveillance
- * bound), its P_D profile (points in range order, P_D in [0, 1]; not with
- * an amplitude model, whose P_D is its threshold's), its clutter profile
+ * bound), its P_D profile (points in range order, P_D in [0, 1]; with an
+ * amplitude model, a Rayleigh one and P_D in (pfa, 1)), its clutter profile
  * (points in range order, lambda in (0, 1e6] per m^2; parametric clutter
  * only) and its coverage. */
 static trk_status check_view(const struct trk_tracker_params *p, const struct trk_sensor_params *sp,
@@ -275,12 +275,17 @@ static trk_status check_view(const struct trk_tracker_params *p, const struct tr
     const struct trk_pd_profile *pr = &sp->pd_profile;
     if (pr->n != 0) {
         if (pr->n < 2 || pr->n > TRK_PD_PROFILE_MAX) return refuse(field, name[F_PROFILE], TRK_E_RANGE);
-        if (sp->use_amplitude) return refuse(field, name[F_PROFILE], TRK_E_UNSUPPORTED);
+        /* with amplitudes the profile is the target's SNR over range: the
+         * Rayleigh closed form (trk_amplitude_log_lr_at_pd), P_D in (pfa, 1) */
+        const int snr = sp->use_amplitude;
+        if (snr && (sp->amplitude.tabulated || sp->amplitude.model != TRK_AMP_RAYLEIGH))
+            return refuse(field, name[F_PROFILE], TRK_E_UNSUPPORTED);
         for (unsigned k = 0; k < pr->n; k++) {
             const trk_real lo = k == 0 ? 0 : pr->range_m[k - 1];
             if ((st = check_real(pr->range_m[k], lo, k > 0, TRK_MAX_COORD_M_LIMIT, name[F_PROFILE], field)) != TRK_OK ||
                 (st = check_real(pr->pd[k], 0, 0, 1, name[F_PROFILE], field)) != TRK_OK)
                 return st;
+            if (snr && !(pr->pd[k] > sp->amplitude.pfa && pr->pd[k] < 1)) return refuse(field, name[F_PROFILE], TRK_E_RANGE);
         }
     }
     const struct trk_clutter_profile *cp = &sp->clutter_profile;
@@ -303,6 +308,20 @@ static trk_status check_view(const struct trk_tracker_params *p, const struct tr
         (st = check_real(c->half_width_rad, 0, 0, TRK_PI, name[F_COVER], field)) != TRK_OK)
         return st;
     if (c->max_range_m > 0 && !(c->max_range_m > c->min_range_m)) return refuse(field, name[F_COVER], TRK_E_RANGE);
+    return TRK_OK;
+}
+
+/* Persistent returns in the amplitudes: eta in [0, 1); with eta > 0 a
+ * Rayleigh closed-form model and their P_D in (pfa, 1). */
+static trk_status check_persistent(const struct trk_sensor_params *sp, const char *const *name, const char **field)
+{
+    const trk_real eta = sp->persistent_share;
+    if (isnan(eta) || isnan(sp->persistent_pd)) return refuse(field, name[F_PERSIST], TRK_E_NAN);
+    if (!(eta >= 0 && eta < 1)) return refuse(field, name[F_PERSIST], TRK_E_RANGE);
+    if (eta == 0) return TRK_OK;
+    if (!sp->use_amplitude || sp->amplitude.tabulated || sp->amplitude.model != TRK_AMP_RAYLEIGH)
+        return refuse(field, name[F_PERSIST], TRK_E_UNSUPPORTED);
+    if (!(sp->persistent_pd > sp->amplitude.pfa && sp->persistent_pd < 1)) return refuse(field, name[F_PERSIST], TRK_E_RANGE);
     return TRK_OK;
 }
 
@@ -329,7 +348,9 @@ static trk_status check_sensor(const struct trk_tracker_params *p, unsigned s, c
     if (sp->use_amplitude && trk_amplitude_check(&sp->amplitude) != TRK_OK) /* not built by its init */
         return refuse(field, name[F_AMP], TRK_E_ARG);
     trk_status st0;
-    if ((st0 = check_polar(sp, name, field)) != TRK_OK || (st0 = check_view(p, sp, name, field)) != TRK_OK) return st0;
+    if ((st0 = check_polar(sp, name, field)) != TRK_OK || (st0 = check_view(p, sp, name, field)) != TRK_OK ||
+        (st0 = check_persistent(sp, name, field)) != TRK_OK)
+        return st0;
     const struct trk_pda_params pp = {NZ, sp->use_amplitude ? trk_amplitude_pd(&sp->amplitude) : sp->pd,
                                       p->gate_prob, p->clutter, sp->clutter_density_per_m2, 1};
     const char *pf;

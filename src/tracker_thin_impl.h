@@ -161,6 +161,12 @@ struct thin {
     trk_real pd;          /* P_D and */
     trk_real lambda;      /* clutter density at what was kept */
     trk_real dl;          /* ln l^a at the raised threshold minus at the sensor's */
+    /* an amplitude model with a P_D profile (Rayleigh): P_D' = P_D^pd_power
+     * at every range, pd_power = a_cut^2 / t^2 (1 otherwise), and each
+     * detection's ln l^a gains -(pd_power - 1) ln P_D(r) - x0 in place of dl */
+    trk_real pd_power;
+    trk_real x0;          /* -ln(pfa'/pfa) */
+    int mixture;          /* persistent returns in the amplitudes: ln l^a anew at x0 */
 };
 
 /* P_D and lambda of the kept part of the class the cut fell in (*th):
@@ -168,7 +174,8 @@ struct thin {
  * lambda' = lambda S0(a_cut) / S0(t), P_D' = S1(a_cut), and ln l^a gains
  * ln(pfa'/pfa) - ln(P_D'/P_D)); else uniform thinning of a fraction f:
  * lambda' = f lambda, P_D' = f P_D (a target's detection is left out as
- * often as a clutter one). */
+ * often as a clutter one). With a P_D profile and amplitudes P_D and the
+ * target's S1 depend on the range: thin_shift. */
 static void thin_model(const struct trk_sensor_params *sp, const struct trk_pda *pda, int by_amp, trk_real a_cut,
                        trk_real f, struct thin *th, struct trk_scan_report *rep)
 {
@@ -178,6 +185,10 @@ static void thin_model(const struct trk_sensor_params *sp, const struct trk_pda 
         th->pd = pda->params.pd * trk_exp(-x1);
         th->lambda = pda->params.clutter_density * trk_exp(-x0);
         th->dl = x1 - x0;
+        th->x0 = x0;
+        th->mixture = sp->persistent_share > 0;
+        if (sp->pd_profile.n > 0) /* Rayleigh: S1(a) = P_D^(a^2/t^2) */
+            th->pd_power = a_cut * a_cut / sp->amplitude.t2;
         rep->thin_threshold = a_cut;
     } else {
         th->pd = pda->params.pd * f;
@@ -262,14 +273,47 @@ static TRK_NOINLINE size_t thin_select(struct trk_tracker *t, const struct trk_s
  * of P_D' (below the smallest normal number): the scan then keeps the
  * sensor's constants. */
 struct thin_saved {
-    trk_real dl;
+    const struct thin *th; /* what thin_apply applied (the scan's, kept by its caller) */
 #if TRK_WITH_JOINT
     trk_real log_lambda;
 #endif
 };
 
-static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thin *th, struct thin_saved *saved)
+/* Each loaded ln l^a moved to the raised threshold (sign 1) or back (-1):
+ * with persistent returns anew from its amplitude (every kept detection
+ * has one: the cut fell among amplitudes); else by dl, or with a P_D
+ * profile and amplitudes by ln(pfa/pfa') -
+ * ln(P_D'/P_D) at the detection's range, x1 - x0 with the target's
+ * x1 = -(pd_power - 1) ln P_D(r) (Rayleigh). */
+static TRK_NOINLINE void thin_shift(struct trk_tracker *t, const struct trk_scan *scan, const struct thin *th,
+                                    trk_real sign)
 {
+    if (th->mixture) { /* from each amplitude anew: amp_mixture_log_lr at x0 (or 0, back) */
+        const struct amp_use au = amp_use_of(t, &t->params.sensor[scan->sensor_id], &t->ws.view);
+        for (size_t j = 0; j < t->ws.n_valid; j++) {
+            const size_t i = t->ws.src[j];
+            struct trk_detection d = {t->ws.x[j], t->ws.y[j], {0, 0, 0}, 0, 0, 0};
+            d.amplitude = scan->polar ? scan->polar[i].amplitude : scan->detections[i].amplitude;
+            trk_real llr;
+            if (amp_mixture_log_lr(&au, amp_pd(&au, &d), sign > 0 ? th->x0 : 0, d.amplitude, &llr) == TRK_OK)
+                t->ws.log_lr[j] = llr;
+        }
+        return;
+    }
+    if (th->pd_power == 1) {
+        for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] += sign * th->dl;
+        return;
+    }
+    for (size_t j = 0; j < t->ws.n_valid; j++) {
+        const trk_real pd = trk_i_view_pd_profile(&t->ws.view, t->ws.x[j], t->ws.y[j]);
+        t->ws.log_lr[j] += sign * (-(th->pd_power - 1) * trk_log(pd) - th->x0);
+    }
+}
+
+static trk_status thin_apply(struct trk_tracker *t, const struct trk_scan *scan, const struct thin *th,
+                             struct thin_saved *saved)
+{
+    const unsigned s = scan->sensor_id;
     struct trk_pda_params pp = t->pda[s].params;
     pp.pd = th->pd;
     pp.clutter_density = th->lambda;
@@ -282,10 +326,11 @@ static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thi
         t->pda[s] = t->pda_saved;
         return st;
     }
-    saved->dl = th->dl;
-    t->ws.pd_scale = th->pd / t->pda_saved.params.pd;
+    saved->th = th;
+    t->ws.pd_power = th->pd_power;
+    t->ws.pd_scale = th->pd_power == 1 ? th->pd / t->pda_saved.params.pd : 1;
     t->ws.lambda_scale = t->pda_saved.params.clutter_density > 0 ? th->lambda / t->pda_saved.params.clutter_density : 1;
-    for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] += th->dl;
+    thin_shift(t, scan, th, 1);
 #if TRK_WITH_JOINT
     saved->log_lambda = t->log_clutter_density[s];
     if (th->lambda > 0) t->log_clutter_density[s] = trk_log(th->lambda);
@@ -294,11 +339,12 @@ static trk_status thin_apply(struct trk_tracker *t, unsigned s, const struct thi
 }
 
 /* Undo thin_apply once the updates are done. */
-static void thin_restore(struct trk_tracker *t, unsigned s, const struct thin_saved *saved)
+static void thin_restore(struct trk_tracker *t, const struct trk_scan *scan, const struct thin_saved *saved)
 {
+    const unsigned s = scan->sensor_id;
     t->pda[s] = t->pda_saved;
-    t->ws.pd_scale = t->ws.lambda_scale = 1;
-    for (size_t j = 0; j < t->ws.n_valid; j++) t->ws.log_lr[j] -= saved->dl;
+    t->ws.pd_scale = t->ws.lambda_scale = t->ws.pd_power = 1;
+    thin_shift(t, scan, saved->th, -1);
 #if TRK_WITH_JOINT
     t->log_clutter_density[s] = saved->log_lambda;
 #endif

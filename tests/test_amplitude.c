@@ -80,6 +80,50 @@ static void test_rayleigh_closed_form(void **state)
     TRK_ASSERT_NEAR(v4, v1, TRK_TOL(1e-13, 1e-5), 0);
 }
 
+/* ln l^a with the SNR that gives P_D pd (a P_D profile's target): the
+ * model's own at its P_D, the model of that SNR at another, the density
+ * ratio (pfa/P_D) p1(a)/p0(a) of Rayleigh laws, and the refusals. */
+static void test_log_lr_at_pd(void **state)
+{
+    (void)state;
+    struct trk_amplitude m;
+    const double pfa = 1e-3;
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&m, 2, 12, (trk_real)pfa));
+    const double a[4] = {1.0001 * (double)trk_amplitude_threshold(&m), 4, 6, 9};
+    for (int i = 0; i < 4; i++) {
+        trk_real own, at;
+        TRK_ASSERT_OK(trk_amplitude_log_lr(&m, (trk_real)a[i], &own));
+        TRK_ASSERT_OK(trk_amplitude_log_lr_at_pd(&m, trk_amplitude_pd(&m), (trk_real)a[i], &at));
+        TRK_ASSERT_NEAR(at, own, TRK_TOL(1e-12, 1e-4), TRK_TOL(1e-12, 1e-5));
+        /* P_D 0.4: 1 + SNR = ln pfa / ln 0.4 */
+        const double pd = 0.4, u = log(pfa) / log(pd), P = 2;
+        struct trk_amplitude m2;
+        TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&m2, 2, (trk_real)(10 * log10(u - 1)), (trk_real)pfa));
+        TRK_ASSERT_NEAR(trk_amplitude_pd(&m2), pd, 0, TRK_TOL(1e-13, 1e-5));
+        TRK_ASSERT_OK(trk_amplitude_log_lr_at_pd(&m, (trk_real)pd, (trk_real)a[i], &at));
+        TRK_ASSERT_OK(trk_amplitude_log_lr(&m2, (trk_real)a[i], &own));
+        TRK_ASSERT_NEAR(at, own, TRK_TOL(1e-12, 1e-4), TRK_TOL(1e-11, 1e-5));
+        const double p1 = 2 * a[i] / (P * u) * exp(-a[i] * a[i] / (P * u)), p0 = 2 * a[i] / P * exp(-a[i] * a[i] / P);
+        TRK_ASSERT_NEAR(at, log(pfa / pd * p1 / p0), TRK_TOL(1e-12, 1e-4), TRK_TOL(1e-11, 1e-5));
+    }
+    trk_real v = 7;
+    assert_int_equal(trk_amplitude_log_lr_at_pd(&m, (trk_real)pfa, 5, &v), TRK_E_RANGE); /* no SNR > 0 */
+    assert_int_equal(trk_amplitude_log_lr_at_pd(&m, 1, 5, &v), TRK_E_RANGE);
+    assert_int_equal(trk_amplitude_log_lr_at_pd(&m, TRK_REAL_C(0.5), 1, &v), TRK_E_RANGE); /* below t */
+    assert_int_equal(trk_amplitude_log_lr_at_pd(&m, (trk_real)NAN, 5, &v), TRK_E_NAN);
+    assert_int_equal(trk_amplitude_log_lr_at_pd(&m, TRK_REAL_C(0.5), (trk_real)INFINITY, &v), TRK_E_NAN);
+    assert_int_equal(trk_amplitude_log_lr_at_pd(NULL, TRK_REAL_C(0.5), 5, &v), TRK_E_ARG);
+    assert_int_equal(trk_amplitude_log_lr_at_pd(&m, TRK_REAL_C(0.5), 5, NULL), TRK_E_ARG);
+    TRK_ASSERT_NEAR(v, 7, 0, 0); /* untouched */
+    struct amp_table_result r;
+    unsigned char *b = build(TRK_AMP_K, 1, 15, 1e-3, 0, 32, 32, 0, &r);
+    struct trk_table t;
+    struct trk_amplitude k;
+    load(b, r.len, &t, &k);
+    assert_int_equal(trk_amplitude_log_lr_at_pd(&k, TRK_REAL_C(0.5), 5, &v), TRK_E_UNSUPPORTED);
+    free(b);
+}
+
 static void test_bad_input(void **state)
 {
     (void)state;
@@ -578,6 +622,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rayleigh_closed_form),
+        cmocka_unit_test(test_log_lr_at_pd),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_k_tables),
         cmocka_unit_test(test_measured_error),

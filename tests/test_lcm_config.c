@@ -514,7 +514,19 @@ static void test_polar_keys(void **state)
     assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
     assert_int_equal(set("sensor.0.pd_profile", "0:0.9, 100:0.5"), 0);
     assert_int_equal(set("sensor.0.amplitude", "rayleigh"), 0);
-    expect_check_fails("sensor.0.pd_profile with an amplitude model");
+    assert_int_equal(tcfg_check(&c, err, sizeof err), 0); /* the target's SNR over range */
+    assert_int_equal(set("sensor.0.pfa", "0.6"), 0);
+    expect_check_fails("sensor.0.pd_profile: P_D 0.5 with the Rayleigh amplitude model must lie in (pfa, 1)");
+    assert_int_equal(set("sensor.0.amplitude", "k"), 0);
+    expect_check_fails("sensor.0.pd_profile with a tabulated amplitude model");
+    assert_int_equal(set("sensor.0.pd_profile", "none"), 0);
+    assert_int_equal(set("sensor.0.persistent_share", "0.2"), 0);
+    assert_int_equal(set("sensor.0.persistent_pd", "0.9"), 0);
+    expect_check_fails("sensor.0.persistent_share needs sensor.0.amplitude = rayleigh");
+    assert_int_equal(set("sensor.0.amplitude", "rayleigh"), 0);
+    assert_int_equal(set("sensor.0.pfa", "0.001"), 0);
+    assert_int_equal(tcfg_check(&c, err, sizeof err), 0);
+    assert_int_equal(set("sensor.0.persistent_share", "1"), -1); /* [0, 1) */
 }
 
 static void test_check(void **state)

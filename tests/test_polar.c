@@ -214,7 +214,27 @@ static void test_params(void **state)
     TRK_ASSERT_OK(trk_tracker_check_params(&q, NULL));
     q.sensor[0].pd_profile.n = 2, q.sensor[0].pd_profile.range_m[1] = 200;
     q.sensor[0].pd_profile.pd[0] = q.sensor[0].pd_profile.pd[1] = TRK_REAL_C(0.5);
+    TRK_ASSERT_OK(trk_tracker_check_params(&q, NULL)); /* Rayleigh: the target's SNR over range */
+    q.sensor[0].pd_profile.pd[1] = TRK_REAL_C(1e-3);   /* = pfa: no SNR gives it */
+    check_refused(&q, "sensor[0].pd_profile", TRK_E_RANGE);
+    q.sensor[0].pd_profile.pd[1] = 1;
+    check_refused(&q, "sensor[0].pd_profile", TRK_E_RANGE);
+    q.sensor[0].pd_profile.pd[1] = TRK_REAL_C(0.5);
+    q.sensor[0].amplitude.model = TRK_AMP_K; /* K clutter: no closed form for the SNR over range */
     check_refused(&q, "sensor[0].pd_profile", TRK_E_UNSUPPORTED);
+    /* persistent returns in the amplitudes: a Rayleigh model, eta in [0, 1), their P_D in (pfa, 1) */
+    q = p;
+    q.sensor[0].persistent_share = TRK_REAL_C(0.2), q.sensor[0].persistent_pd = TRK_REAL_C(0.9);
+    check_refused(&q, "sensor[0].persistent_share", TRK_E_UNSUPPORTED); /* no amplitude model */
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&q.sensor[0].amplitude, 1, TRK_REAL_C(10.0), TRK_REAL_C(1e-3)));
+    q.sensor[0].use_amplitude = 1;
+    TRK_ASSERT_OK(trk_tracker_check_params(&q, NULL));
+    q.sensor[0].persistent_share = 1;
+    check_refused(&q, "sensor[0].persistent_share", TRK_E_RANGE);
+    q.sensor[0].persistent_share = (trk_real)NAN;
+    check_refused(&q, "sensor[0].persistent_share", TRK_E_NAN);
+    q.sensor[0].persistent_share = TRK_REAL_C(0.2), q.sensor[0].persistent_pd = TRK_REAL_C(1e-3);
+    check_refused(&q, "sensor[0].persistent_share", TRK_E_RANGE);
     q = p, q.sensor[0].clutter_profile.n = 2, q.sensor[0].clutter_profile.range_m[1] = 100;
     q.sensor[0].clutter_profile.density_per_m2[0] = q.sensor[0].clutter_profile.density_per_m2[1] = TRK_REAL_C(1e-6);
     TRK_ASSERT_OK(trk_tracker_check_params(&q, NULL));

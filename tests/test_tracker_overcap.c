@@ -291,6 +291,102 @@ static void test_gates_overflow(void **state)
     assert_true(tk.pda[0].params.clutter_density == p.sensor[0].clutter_density_per_m2);
 }
 
+/* The same with a P_D profile (the target's SNR over range, Rayleigh):
+ * at the raised threshold t' every range's P_D is P_D(r)^(t'^2/t^2), the
+ * track's at its prediction, and each detection's ln l^a is the one of
+ * the profile's P_D' at its own range (trk_amplitude_log_lr_at_pd of the
+ * model at pfa'). */
+static void gates_overflow_profile(double eta)
+{
+    struct trk_tracker_params p;
+    params(&p, 1);
+    struct trk_pd_profile *pr = &p.sensor[0].pd_profile;
+    pr->n = 2, pr->range_m[0] = 0, pr->range_m[1] = 2000, pr->pd[0] = TRK_REAL_C(0.95), pr->pd[1] = TRK_REAL_C(0.3);
+    const trk_real pd_s = TRK_REAL_C(0.98);
+    p.sensor[0].persistent_share = (trk_real)eta;
+    p.sensor[0].persistent_pd = pd_s;
+    p.sensor[0].clutter_density_per_m2 = 2; /* beta0 near 0.7: P_D counts */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const struct trk_amplitude *m = &p.sensor[0].amplitude;
+    const trk_real x0 = 1000;
+    struct trk_detection d0 = {x0, 0, {0, 0, 0}, 2 * m->threshold, 0, 1};
+    struct trk_scan s0 = {SEC(0), 0, 1, &d0, NULL, 0, {0, 0, 0}};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
+    const struct trk_track *tr = trk_tracker_track(&tk, 0);
+    assert_non_null(tr);
+    trk_real x[4], pm[16];
+    memcpy(x, tr->x, sizeof x);
+    memcpy(pm, tr->p, sizeof pm);
+    rng_state = 15;
+    memset(det, 0, sizeof det);
+    for (int i = 0; i < N_OVER; i++) {
+        det[i].x_m = x0 + (trk_real)(4 * urand() - 2);
+        det[i].y_m = (trk_real)(4 * urand() - 2);
+        det[i].has_amplitude = 1;
+        det[i].amplitude = m->threshold * (trk_real)(1 + TRK_REAL_C(0.2) * urand());
+    }
+    struct trk_scan scan = {SEC(1), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan_report rep;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    assert_int_equal(rep.thin_in_gates, 1);
+    assert_counts_add_up(&rep);
+    const trk_real k = rep.thin_threshold * rep.thin_threshold / m->t2; /* t'^2 / t^2 */
+    assert_true(k > 1);
+    const trk_real pfa2 = trk_exp(-rep.thin_threshold * rep.thin_threshold / m->clutter_power);
+    struct trk_amplitude raised;
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&raised, m->clutter_power, m->snr_db, pfa2));
+    const struct trk_pose origin = {0, 0, 0};
+    static trk_real z[2 * K], lr[K], beta[K];
+    size_t n = 0;
+    for (int i = 0; i < N_OVER; i++)
+        if (det[i].amplitude >= rep.thin_threshold) {
+            z[2 * n] = det[i].x_m;
+            z[2 * n + 1] = det[i].y_m;
+            const trk_real pd = trk_sensor_pd_at(&p.sensor[0], &origin, det[i].x_m, det[i].y_m);
+            TRK_ASSERT_OK(trk_amplitude_log_lr_at_pd(&raised, trk_pow(pd, k), det[i].amplitude, &lr[n]));
+            if (eta > 0) { /* over clutter and persistent returns, their share at the raised threshold */
+                trk_real ls;
+                TRK_ASSERT_OK(trk_amplitude_log_lr_at_pd(&raised, trk_pow(pd_s, k), det[i].amplitude, &ls));
+                const double ps_ratio = pow((double)pd_s, (double)k - 1), pfa_ratio = (double)pfa2 / (double)m->pfa;
+                const double eta2 = eta * ps_ratio / ((1 - eta) * pfa_ratio + eta * ps_ratio);
+                lr[n] -= (trk_real)log((1 - eta2) + eta2 * exp((double)ls));
+            }
+            n++;
+        }
+    assert_int_equal(n, K);
+    TRK_ASSERT_OK(trk_cv2_predict(1, p.process_noise_q, x, pm));
+    const trk_real pd_track = trk_pow(trk_sensor_pd_at(&p.sensor[0], &origin, x[TRK_CV2_X], x[TRK_CV2_Y]), k);
+    struct trk_pda pda;
+    const struct trk_pda_params pp = {2, pd_track, p.gate_prob, TRK_CLUTTER_PARAMETRIC, rep.thin_clutter_density, 1};
+    TRK_ASSERT_OK(trk_pda_init(&pda, &pp));
+    const trk_real r[4] = {1, 0, 0, 1};
+    struct trk_pda_report prep;
+    TRK_ASSERT_OK(trk_pda_update(&pda, 4, trk_cv2_h, r, x, pm, n, z, lr, beta, NULL, &prep));
+    tr = trk_tracker_track(&tk, 0);
+    assert_int_equal(tr->n_gated_last, prep.n_gated);
+    assert_true(prep.beta0 > TRK_REAL_C(0.1) && prep.beta0 < TRK_REAL_C(0.9));
+    TRK_ASSERT_NEAR(tr->beta0_last, prep.beta0, TRK_TOL(1e-12, 1e-5), TRK_TOL(1e-9, 1e-3));
+    for (int i = 0; i < 4; i++) TRK_ASSERT_NEAR(tr->x[i], x[i], TRK_TOL(1e-10, 1e-4), TRK_TOL(1e-9, 1e-3));
+    for (int i = 0; i < 16; i++) TRK_ASSERT_NEAR(tr->p[i], pm[i], TRK_TOL(1e-10, 1e-4), TRK_TOL(1e-9, 1e-3));
+    /* the profile's P_D holds again for the next scan */
+    TRK_ASSERT_NEAR(tk.ws.pd_power, 1, 0, 0);
+}
+
+static void test_gates_overflow_profile(void **state)
+{
+    (void)state;
+    gates_overflow_profile(0);
+}
+
+/* The same with persistent returns in the amplitudes (struct
+ * trk_sensor_params persistent_share): each kept detection's l^a over the
+ * clutter-and-scatterer mixture at the raised threshold. */
+static void test_gates_overflow_persistent(void **state)
+{
+    (void)state;
+    gates_overflow_profile(0.3);
+}
+
 /* The workspace's kept positions, sorted (x then y), into kx, ky. */
 static int cmp_xy(const void *a, const void *b)
 {
@@ -387,6 +483,8 @@ int main(void)
         cmocka_unit_test(test_counts_add_up),
         cmocka_unit_test(test_raised_threshold_model),
         cmocka_unit_test(test_gates_overflow),
+        cmocka_unit_test(test_gates_overflow_profile),
+        cmocka_unit_test(test_gates_overflow_persistent),
         cmocka_unit_test(test_no_amplitude_thinning),
         cmocka_unit_test(test_hard_bound),
     };

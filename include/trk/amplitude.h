@@ -166,6 +166,19 @@ trk_real trk_amplitude_pd(const struct trk_amplitude *m);
  * a^2 / P above ~1e308 in double, 3e38 in float), TRK_E_ARG NULL pointers. */
 TRK_NODISCARD trk_status trk_amplitude_log_lr(const struct trk_amplitude *m, trk_real a, trk_real *log_lr);
 
+/** ln l^a(a) of a Rayleigh model whose target is seen with P_D pd at the
+ * model's threshold, in place of the model's own SNR: a P_D that falls
+ * with range (a sensor's P_D profile) is a target SNR that falls with
+ * range. Eq 8 solved for the SNR, 1 + SNR = u = ln pfa / ln pd, in eq 19:
+ *   ln l^a(a) = (1 - 1/u) (a^2 - t^2) / P - ln u,
+ * equal to trk_amplitude_log_lr at pd = the model's P_D.
+ * TRK_E_UNSUPPORTED a tabulated model (no closed form), TRK_E_NAN pd or a
+ * not finite, TRK_E_RANGE pd outside (pfa, 1) (no positive SNR gives it),
+ * a < 0 or below the threshold, or ln l^a beyond the real type, TRK_E_ARG
+ * NULL pointers. */
+TRK_NODISCARD trk_status trk_amplitude_log_lr_at_pd(const struct trk_amplitude *m, trk_real pd, trk_real a,
+                                                    trk_real *log_lr);
+
 /** Inverse-CDF sampling (Brekke eqs 41-47): the amplitude a >= t with
  * -ln(S(a)/S(t)) = x, for x ~ Exp(1) (e.g. x = -ln U, U uniform in (0, 1]).
  * source: enum trk_amp_source. TRK_E_NAN x not finite, TRK_E_RANGE x < 0,

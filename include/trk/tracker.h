@@ -314,7 +314,9 @@ struct trk_sensor_params {
     /** Amplitude-aided association (PDAFAI, Brekke eqs 19-25): when
      * use_amplitude is 1 each detection's weight is multiplied by
      * l^a(amplitude) of this model (trk_amplitude_init_rayleigh or
-     * trk_amplitude_init_table); P_D becomes the model's P_D at its threshold.
+     * trk_amplitude_init_table); P_D becomes the model's P_D at its threshold,
+     * or with a P_D profile (Rayleigh only) the profile's, the model's SNR
+     * then replaced by the one that gives the profile's P_D at each range.
      * A detection below the threshold, or with a NaN/negative amplitude, is
      * rejected and counted; one without an amplitude is used by position only.
      * A table-backed model points into the table's bytes: they must outlive
@@ -331,13 +333,26 @@ struct trk_sensor_params {
     enum trk_polar_conversion conversion; /**< polar: first-order (default) or unbiased */
     struct trk_pose pose;               /**< the pose of a scan without its own (has_pose 0) */
     struct trk_pd_profile pd_profile;   /**< P_D over range from the pose (n = 0: pd everywhere);
-                                           not with use_amplitude */
+                                           with use_amplitude a Rayleigh model's target SNR
+                                           over range (P_D in (pfa, 1): each detection's
+                                           l^a at its range, trk_amplitude_log_lr_at_pd) */
     struct trk_coverage coverage;       /**< where P_D is not 0 (all zero: everywhere) */
     struct trk_clutter_profile clutter_profile; /**< lambda over range from the pose (n = 0:
                                                    clutter_density_per_m2 everywhere);
                                                    parametric clutter only, and
                                                    clutter_density_per_m2 > 0 with it (the
                                                    reference, e.g. the mean) */
+    /** Persistent returns in the amplitudes (a Rayleigh model, use_amplitude):
+     * a share eta of the detections that are not targets' are persistent
+     * scatterers' (a rock, a wreck), Swerling I with the SNR whose P_D at
+     * the threshold is persistent_pd; the rest is the model's clutter. A
+     * detection's l^a is then its target density over that mixture,
+     *   l = l_t / ((1 - eta) + eta l_s),
+     * l_t, l_s the target's and the scatterers' l^a against the clutter
+     * (trk_amplitude_log_lr_at_pd): a return stronger than targets are is
+     * taken for a scatterer's, not a target's. 0: none. */
+    trk_real persistent_share;         /**< eta, [0, 1) */
+    trk_real persistent_pd;            /**< their P_D at the threshold, (pfa, 1) when eta > 0 */
 };
 
 /** Confirmation of a tentative track (one method per tracker). */
@@ -932,6 +947,9 @@ struct trk_tracker {
         trk_real pd_scale;                                     /**< a thinned scan's P_D over the
                                                                   sensor's (its profile's factor) */
         trk_real lambda_scale;                                 /**< the same for lambda */
+        trk_real pd_power;                                     /**< with amplitudes and a P_D
+                                                                  profile: P_D' = P_D^pd_power
+                                                                  (Rayleigh; 1 unthinned) */
         struct trk_pda track_pda;                              /**< the track being updated: the
                                                                   PDA's constants with its P_D
                                                                   and lambda (profiles), */

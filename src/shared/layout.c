@@ -123,6 +123,8 @@ static const struct layout_row sensor_rows[] = {
     ROW(S, pd_profile, 's', struct trk_pd_profile, 1, "pd_profile", "", "n 0: pd everywhere"),
     ROW(S, coverage, 's', struct trk_coverage, 1, "coverage", "", "all 0: everywhere"),
     ROW(S, clutter_profile, 's', struct trk_clutter_profile, 1, "clutter_profile", "", "n 0: clutter_density_per_m2 everywhere"),
+    REAL(S, persistent_share, 1, "", "[0, 1); > 0 needs a Rayleigh amplitude model"),
+    REAL(S, persistent_pd, 1, "", "(pfa, 1) when persistent_share > 0"),
 };
 #undef S
 

@@ -272,6 +272,8 @@ static const char *const SENSOR_KEYS[] = {"pd",
                                           "pose.heading_rad",
                                           "pd_profile",
                                           "clutter_profile",
+                                          "persistent_share",
+                                          "persistent_pd",
                                           "coverage.min_range_m",
                                           "coverage.max_range_m",
                                           "coverage.half_width_rad",
@@ -468,6 +470,8 @@ static int set_sensor(struct tcfg *c, unsigned s, const char *full, const char *
     if (strcmp(key, "pose.heading_rad") == 0) return get_real(v, R_HEADING, &sp->pose.heading_rad, err, n);
     if (strcmp(key, "pd_profile") == 0) return get_profile(v, &sp->pd_profile, err, n);
     if (strcmp(key, "clutter_profile") == 0) return get_clutter_profile(v, &sp->clutter_profile, err, n);
+    if (strcmp(key, "persistent_share") == 0) return get_real(v, R_PROB_CO, &sp->persistent_share, err, n);
+    if (strcmp(key, "persistent_pd") == 0) return get_real(v, R_PROB_CO, &sp->persistent_pd, err, n);
     if (strcmp(key, "coverage.min_range_m") == 0) return get_real(v, R_DIST, &sp->coverage.min_range_m, err, n);
     if (strcmp(key, "coverage.max_range_m") == 0) return get_real(v, R_DIST, &sp->coverage.max_range_m, err, n);
     if (strcmp(key, "coverage.half_width_rad") == 0)
@@ -852,15 +856,39 @@ int tcfg_check(const struct tcfg *c, char *err, size_t n)
                      s, (double)sp->coverage.max_range_m, (double)sp->coverage.min_range_m);
             return -1;
         }
-        if (sp->pd_profile.n > 0 && (c->amp[s].model != TCFG_AMP_NONE || c->amp[s].table[0])) {
-            snprintf(err, n, "sensor.%u.pd_profile with an amplitude model: the model's P_D is its threshold's "
-                             "(set sensor.%u.pd_profile = none or sensor.%u.amplitude = none)", s, s, s);
+        if (sp->pd_profile.n > 0 && (c->amp[s].model == TCFG_AMP_K || c->amp[s].table[0])) {
+            snprintf(err, n, "sensor.%u.pd_profile with a tabulated amplitude model: only the Rayleigh model "
+                             "turns a P_D profile into a target SNR over range "
+                             "(set sensor.%u.amplitude = rayleigh, or sensor.%u.pd_profile = none)", s, s, s);
+            return -1;
+        }
+        for (unsigned k = 0; c->amp[s].model == TCFG_AMP_RAYLEIGH && k < sp->pd_profile.n; k++)
+            if (!((double)sp->pd_profile.pd[k] > c->amp[s].pfa && sp->pd_profile.pd[k] < 1)) {
+                snprintf(err, n, "sensor.%u.pd_profile: P_D %g with the Rayleigh amplitude model must lie in "
+                                 "(pfa, 1) = (%g, 1): the target SNR that gives it",
+                         s, (double)sp->pd_profile.pd[k], c->amp[s].pfa);
+                return -1;
+            }
+    }
+    /* persistent returns live in a Rayleigh model's amplitudes (the tracker
+     *    checks them again with the model loaded) */
+    for (unsigned s = 0; s < p->n_sensors; s++) {
+        const struct trk_sensor_params *sp = &p->sensor[s];
+        if (!(sp->persistent_share > 0)) continue;
+        if (c->amp[s].model != TCFG_AMP_RAYLEIGH || c->amp[s].table[0]) {
+            snprintf(err, n, "sensor.%u.persistent_share needs sensor.%u.amplitude = rayleigh (closed form)", s, s);
+            return -1;
+        }
+        if (!((double)sp->persistent_pd > c->amp[s].pfa && sp->persistent_pd < 1)) {
+            snprintf(err, n, "sensor.%u.persistent_pd = %g must lie in (pfa, 1) = (%g, 1)", s,
+                     (double)sp->persistent_pd, c->amp[s].pfa);
             return -1;
         }
     }
     /* 1. the tracker (the authority) with the chosen methods: it names the
-     *    field it refuses */
+     *    field it refuses (the amplitude models are not loaded here) */
     tcfg_params(c, &full);
+    for (unsigned s = 0; s < TRK_MAX_SENSORS; s++) full.sensor[s].persistent_share = 0;
     st = trk_tracker_check_params(&full, &field);
     if (st != TRK_OK) {
         explain(c, field, st, err, n);
@@ -1100,6 +1128,10 @@ void tcfg_write(FILE *f, const struct tcfg *c)
             fprintf(f, "%s%s:%s", i ? ", " : "", r, d);
         }
         fputc('\n', f);
+        snprintf(k, sizeof k, "sensor.%u.persistent_share", s);
+        put_num(f, k, (double)sp->persistent_share);
+        snprintf(k, sizeof k, "sensor.%u.persistent_pd", s);
+        put_num(f, k, (double)sp->persistent_pd);
         snprintf(k, sizeof k, "sensor.%u.coverage.min_range_m", s);
         put_num(f, k, (double)sp->coverage.min_range_m);
         snprintf(k, sizeof k, "sensor.%u.coverage.max_range_m", s);
@@ -1187,7 +1219,11 @@ void tcfg_help(FILE *f)
             "  sensor.N.pose.x_m, .pose.y_m, .pose.heading_rad   the sensor's pose when a scan carries\n"
             "                                    none; heading clockwise from north, [-2pi, 2pi] (0, 0, 0)\n"
             "  sensor.N.pd_profile = none|R:P, ...  P_D over range (m) from the pose, 2..%d points,\n"
-            "                                    linear between them; not with an amplitude model (none)\n"
+            "                                    linear between them; with an amplitude model (Rayleigh\n"
+            "                                    only) the target's SNR over range, P_D in (pfa, 1) (none)\n"
+            "  sensor.N.persistent_share, .persistent_pd   persistent returns in a Rayleigh model's\n"
+            "                                    amplitudes: their share of what is not a target, [0, 1),\n"
+            "                                    and their P_D at the threshold, (pfa, 1) (0, 0)\n"
             "  sensor.N.clutter_profile = none|R:D, ...  clutter density (1/m^2) over range from the\n"
             "                                    pose, 2..%d points; parametric clutter only (none)\n"
             "  sensor.N.coverage.min_range_m, .max_range_m, .half_width_rad   where P_D is not 0:\n"

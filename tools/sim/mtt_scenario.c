@@ -58,7 +58,7 @@ void mtt_scen_sonar_defaults(struct mtt_scen_params *p)
     p->speed_min_mps = 3;
     p->speed_max_mps = 10;
     p->parallel_sep_m = 100;
-    p->amplitude = 0;
+    p->amplitude = 1;
 }
 
 const char *mtt_role_name(int role)
@@ -615,7 +615,7 @@ static void place_fixed(struct mtt_scenario *s, struct mtt_target dg[MTT_N_SLOTS
 #define SONAR_PATCH_SHARE 0.30  /* ... and of the clutter: 10 x the average density */
 #define SONAR_NEAR_SHARE 0.15   /* the near-field rise's share of the clutter ... */
 #define SONAR_NEAR_SCALE_M 400  /* ... its range beyond range_min_m: Exp(this) */
-#define SONAR_PERSIST_PD 0.85   /* a persistent scatterer's return probability per ping */
+#define SONAR_PERSIST_PD MTT_SONAR_PERSIST_PD
 
 static double wrap_pi(double a)
 {
@@ -737,6 +737,7 @@ static void sonar_sensor(struct mtt_scenario *s)
     }
     s->sonar_pd_mean = num / den;
     sp->pd = (trk_real)s->sonar_pd_mean;
+    s->sonar_snr_db = 10 * log10(log(SONAR_PFA) / log(s->sonar_pd_mean) - 1);
     /* The clutter's density over range per clutter point per scan, at the
      * P_D profile's ranges (what the sonar's description says of its
      * reverberation; the caller scales it by the points per scan): the
@@ -1022,20 +1023,43 @@ double mtt_scen_persist_dist(const struct mtt_scenario *s, double x_m, double y_
     return d;
 }
 
-/* One polar detection (range rr, relative bearing bb from pose) into
- * det[n] (trk_polar_to_cartesian) and polar[n] (may be NULL). 1 when
- * stored. */
-static int sonar_put(const struct mtt_scenario *s, const struct trk_pose *pose, double rr, double bb,
+/* One polar detection (range rr, relative bearing bb from pose; with
+ * amplitudes amplitude a) into det[n] (trk_polar_to_cartesian) and
+ * polar[n] (may be NULL). 1 when stored. */
+static int sonar_put(const struct mtt_scenario *s, const struct trk_pose *pose, double rr, double bb, double a,
                      struct trk_detection *det, struct trk_polar_detection *polar, size_t n)
 {
     struct trk_polar_detection pd;
     memset(&pd, 0, sizeof pd);
     pd.range_m = (trk_real)(rr > 1 ? rr : 1);
     pd.bearing_rad = (trk_real)wrap_pi(bb);
+    pd.has_amplitude = (uint8_t)(s->p.amplitude != 0);
+    pd.amplitude = s->p.amplitude ? (trk_real)a : 0;
     memset(&det[n], 0, sizeof det[n]);
     if (trk_polar_to_cartesian(&s->sonar, pose, &pd, &det[n]) != TRK_OK) return 0;
     if (polar) polar[n] = pd;
     return 1;
+}
+
+/* The amplitudes' own stream of scan k: far from every position stream
+ * (0 and 4k + 1 .. 4k + 4), so that amplitudes leave the positions alone. */
+#define SONAR_AMP_STREAM(k) ((UINT64_C(1) << 62) + (uint64_t)(k))
+
+/* An amplitude drawn from the stream r: clutter (pd 0), or a target seen
+ * with P_D pd at the threshold, 1 + SNR = ln pfa / ln pd (one Exp(1)
+ * draw either way). */
+static double sonar_amplitude(const struct mtt_scenario *s, struct rng *r, double pd)
+{
+    const double x = rng_exp(r);
+    struct trk_amplitude tg;
+    const struct trk_amplitude *m = &s->amp.lib;
+    int src = TRK_AMP_CLUTTER;
+    if (pd > s->pfa && pd < 1 &&
+        trk_amplitude_init_rayleigh(&tg, 1, (trk_real)(10 * log10(log(s->pfa) / log(pd) - 1)), (trk_real)s->pfa) ==
+            TRK_OK)
+        m = &tg, src = TRK_AMP_TARGET;
+    trk_real a;
+    return trk_amplitude_inv_sf(m, src, (trk_real)x, &a) == TRK_OK ? (double)a : s->amp.t;
 }
 
 /* The sonar family's scan k (mtt_scenario.h "The sonar family"). */
@@ -1050,7 +1074,8 @@ static void sonar_scan(const struct mtt_scenario *s, long k, long clutter_count,
     struct trk_pose pose;
     mtt_scen_pose(s, k, &pose);
     size_t nd = 0, nt = 0, np = 0, nc = 0, capped = 0;
-    struct rng r;
+    struct rng r, ra;
+    rng_init(&ra, p->seed, SONAR_AMP_STREAM(k)); /* one draw per slot, scatterer and point, always */
     /* targets: four draws per slot (detected?, two noises, one unused), always */
     rng_init(&r, p->seed, 4 * (uint64_t)k + 1);
     for (int j = 0; j < MTT_N_SLOTS; j++) {
@@ -1062,9 +1087,10 @@ static void sonar_scan(const struct mtt_scenario *s, long k, long clutter_count,
         truth_of(&s->tg[i], t, x);
         /* the library's P_D at the target's position: the profile, 0 outside the sector */
         const double pd = (double)trk_sensor_pd_at(&s->sonar, &pose, (trk_real)x[TRK_CV2_X], (trk_real)x[TRK_CV2_Y]);
+        const double a = sonar_amplitude(s, &ra, pd);
         if (!(u < pd)) continue;
         sonar_rb(s, t, x[TRK_CV2_X], x[TRK_CV2_Y], &rr, &bb);
-        if (!sonar_put(s, &pose, rr + sr * e1, bb + sb * e2, det, polar, nd)) continue;
+        if (!sonar_put(s, &pose, rr + sr * e1, bb + sb * e2, a, det, polar, nd)) continue;
         if (origin) origin[nd] = i;
         nd++;
         nt++;
@@ -1073,10 +1099,11 @@ static void sonar_scan(const struct mtt_scenario *s, long k, long clutter_count,
     rng_init(&r, p->seed, 4 * (uint64_t)k + 4);
     for (int j = 0; j < MTT_SONAR_PERSIST; j++) {
         const double u = rng_uniform(&r), e1 = rng_normal(&r), e2 = rng_normal(&r);
+        const double a = sonar_amplitude(s, &ra, SONAR_PERSIST_PD);
         double rr, bb;
         sonar_rb(s, t, s->persist_x_m[j], s->persist_y_m[j], &rr, &bb);
         if (!p->persistent || !sonar_covered(s, rr, bb) || !(u < SONAR_PERSIST_PD) || nd == cap) continue;
-        if (!sonar_put(s, &pose, rr + sr * e1, bb + sb * e2, det, polar, nd)) continue;
+        if (!sonar_put(s, &pose, rr + sr * e1, bb + sb * e2, a, det, polar, nd)) continue;
         if (origin) origin[nd] = -2;
         nd++;
         np++;
@@ -1089,7 +1116,7 @@ static void sonar_scan(const struct mtt_scenario *s, long k, long clutter_count,
             break;
         }
         const double uk = rng_uniform(&r), us = rng_uniform(&r), u1 = rng_uniform(&r), u2 = rng_uniform(&r);
-        const double u3 = rng_uniform(&r), u4 = rng_uniform(&r);
+        const double u3 = rng_uniform(&r), u4 = rng_uniform(&r), a = sonar_amplitude(s, &ra, 0);
         double rr = -1, bb = 0;
         if (uk < SONAR_PATCH_SHARE) { /* in a patch, uniform over its disc */
             int j = (int)(us * MTT_SONAR_PATCHES);
@@ -1106,7 +1133,7 @@ static void sonar_scan(const struct mtt_scenario *s, long k, long clutter_count,
             rr = rmin + (rmax - rmin) * u3;
             bb = -hw + 2 * hw * u4;
         }
-        if (!sonar_put(s, &pose, rr, bb, det, polar, nd)) continue;
+        if (!sonar_put(s, &pose, rr, bb, a, det, polar, nd)) continue;
         if (origin) origin[nd] = -1;
         nd++;
         nc++;
@@ -1201,8 +1228,8 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
                          "half width in (2, 90] deg, sigma range > 0, sigma bearing in (0, 10] deg");
         return -1;
     }
-    if (p->family == MTT_FAMILY_SONAR && (p->amplitude || p->accel_mps2 != 0)) {
-        snprintf(err, n, "sonar: no amplitudes (its P_D profile goes without an amplitude model) and no acceleration");
+    if (p->family == MTT_FAMILY_SONAR && p->accel_mps2 != 0) {
+        snprintf(err, n, "sonar: no acceleration");
         return -1;
     }
     if (p->family == MTT_FAMILY_TRANSIT &&
@@ -1212,9 +1239,10 @@ int mtt_scen_init(struct mtt_scenario *s, const struct mtt_scen_params *p, char 
     }
     s->p = *p;
     if (s->p.max_det == 0) s->p.max_det = TRK_MAX_SCAN_DETECTIONS;
-    /* P_D = pfa^(1 / (1 + SNR)) (Swerling I in Rayleigh): pfa = pd^(1 + SNR) */
+    /* P_D = pfa^(1 / (1 + SNR)) (Swerling I in Rayleigh): pfa = pd^(1 + SNR);
+     * the sonar's threshold is its P_D law's */
     const double d = pow(10.0, p->snr_db / 10);
-    s->pfa = pow(p->pd, 1 + d);
+    s->pfa = p->family == MTT_FAMILY_SONAR ? SONAR_PFA : pow(p->pd, 1 + d);
     if (amp_model_init(&s->amp, AMP_RAYLEIGH, s->pfa, 1, err, n) != 0) return -1;
     if (amp_target_init(&s->amp, p->snr_db, &s->amp_tg) != 0) {
         snprintf(err, n, "target SNR %g dB not usable", p->snr_db);

@@ -213,8 +213,17 @@
  *              a scan is trk_sensor_pd_at(s->sonar, pose, x, y) at its
  *              true position: the library's formula. sonar_pd_mean: P_D
  *              averaged over the sector's area (0.53; the `cart`
- *              configuration's single P_D). No amplitudes (the library
- *              takes a P_D profile without an amplitude model).
+ *              configuration's single P_D).
+ *   Amplitudes (amplitude = 1, the default) the same law's: Rayleigh
+ *              (Swerling I) in Rayleigh reverberation of power 1 above the
+ *              threshold t^2 = -ln 0.01; a target's SNR the one whose P_D
+ *              at that threshold is the profile's at its true position
+ *              (1 + SNR = ln pfa / ln P_D), a persistent scatterer's the
+ *              one of its 0.85, every clutter point's the clutter law
+ *              (the patches and the near field too: a CFAR-normalised
+ *              detector). Drawn by inverse CDF (trk_amplitude_inv_sf) from
+ *              a stream of their own, so that the positions are the same
+ *              with amplitudes or without.
  *   Targets    the eight slots, one target each, straight but the turn,
  *              speeds uniform in [speed_min_mps, speed_max_mps] (3-10 m/s),
  *              headings compass (clockwise from north). Positions are
@@ -351,6 +360,7 @@ void mtt_scen_sonar_defaults(struct mtt_scen_params *p);
 
 #define MTT_SONAR_PATCHES 4     /* reverberation patches */
 #define MTT_SONAR_PERSIST 12    /* persistent scatterers */
+#define MTT_SONAR_PERSIST_PD 0.85 /* ... each returning on this share of the pings */
 #define MTT_SONAR_PD_POINTS 8   /* points of the P_D and clutter profiles (<= TRK_PD_PROFILE_MAX) */
 
 /* A disc on the ground (a reverberation patch). */
@@ -377,7 +387,7 @@ struct mtt_scenario {
     struct mtt_scen_params p;
     struct amp_model amp;       /* Rayleigh clutter law at the threshold (amplitude = 1) */
     struct amp_target amp_tg;   /* the targets' law */
-    double pfa;                 /* threshold P_FA (pd^(1 + SNR)) */
+    double pfa;                 /* threshold P_FA (pd^(1 + SNR); sonar: the P_D law's, 0.01) */
     /* the targets: tg[0 .. MTT_N_SLOTS) the designated ones (index = role =
      * slot), then the transit ones; a target's index is its id */
     struct mtt_target *tg;
@@ -395,6 +405,8 @@ struct mtt_scenario {
     struct trk_sensor_params sonar; /* the sensor: kind polar, sigmas, pd_profile, coverage
                                        (pd = sonar_pd_mean; clutter density the caller's) */
     double sonar_pd_mean;       /* P_D averaged over the sector's area */
+    double sonar_snr_db;        /* the SNR whose P_D at pfa is sonar_pd_mean (cart's
+                                   amplitude model; with amplitudes) */
     double area_m2;             /* the region's area (the square's, or the sector's) */
     struct mtt_disc patch[MTT_SONAR_PATCHES];
     double persist_x_m[MTT_SONAR_PERSIST], persist_y_m[MTT_SONAR_PERSIST];

@@ -1241,7 +1241,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         sp.n_scans = scans;
         sp.pd = pd;
         sp.snr_db = snr_db;
-        sp.amplitude = !no_amp && !sonar; /* sonar: no amplitudes */
+        sp.amplitude = !no_amp;
         sp.persistent = !no_persist;
         sp.speed_min_mps = v_min;
         sp.speed_max_mps = v_max;
@@ -1316,9 +1316,12 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                pres_sum / ((double)seeds * (double)scans), pres_min, pres_max, vmin, vmax, sc[0].p.speed_min_mps,
                sc[0].p.speed_max_mps, sc[0].p.platform_speed_mps);
         printf("   polar sensor: sigma %g m, %g deg; P_D %.2f at %g km to %.2f at %g km (profile of %u points), "
-               "%.3f over the sector (cart's); no amplitudes\n",
+               "%.3f over the sector (cart's); %s\n",
                sc[0].p.sigma_range_m, sc[0].p.sigma_bearing_deg, (double)pr->pd[0], (double)pr->range_m[0] / 1000,
-               (double)pr->pd[pr->n - 1], (double)pr->range_m[pr->n - 1] / 1000, pr->n, sc[0].sonar_pd_mean);
+               (double)pr->pd[pr->n - 1], (double)pr->range_m[pr->n - 1] / 1000, pr->n, sc[0].sonar_pd_mean,
+               no_amp ? "no amplitudes"
+                      : "Rayleigh amplitudes at the P_D law's threshold (P_FA 0.01), the target's SNR its P_D's, "
+                        "use_amplitude on (cart: one SNR, the mean P_D's)");
         printf("   clutter: 30 %% in 4 patches (3 %% of the area), 15 %% near-field, the rest uniform in range x "
                "bearing; persistent scatterers %s\n",
                no_persist ? "off" : "on (12, 85 % of pings)");
@@ -1356,7 +1359,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         if (kinds[c] == CFG_IMM)
             printf("   imm: CV (q %g) and turns at +-%g deg/s (q %g), p_stay %g\n", q, im.rate_dps, im.turn_q,
                    im.p_stay);
-    if (sc[0].p.amplitude)
+    if (sc[0].p.amplitude && !sonar)
         printf("   amplitudes: target SNR %g dB, threshold P_FA %.4g (P_D = %.3f), use_amplitude on\n", snr_db,
                sc[0].pfa, sc[0].amp_tg.pd);
     printf("   clutter per scan:");

@@ -51,16 +51,26 @@ int mtt_build_params(int kind, const struct mtt_scenario *sc, double lambda, dou
         struct trk_clutter_profile *cp = &p.sensor[0].clutter_profile;
         if (kind == CFG_CART || !(lambda * sc->area_m2 > 0.5)) memset(cp, 0, sizeof *cp);
         for (unsigned k = 0; k < cp->n; k++) cp->density_per_m2[k] *= (trk_real)(lambda * sc->area_m2);
+        /* its persistent returns in the amplitudes (not cart's): their share
+         * of what is not a target's (at clutter 0: of one clutter point) and P_D */
+        if (kind != CFG_CART && sc->p.amplitude && sc->p.persistent) {
+            const double n_p = MTT_SONAR_PERSIST * MTT_SONAR_PERSIST_PD, n_c = lambda * sc->area_m2;
+            p.sensor[0].persistent_share = (trk_real)(n_p / (n_p + (n_c > 1 ? n_c : 1)));
+            p.sensor[0].persistent_pd = (trk_real)MTT_SONAR_PERSIST_PD;
+        }
     } else {
         p.sensor[0].pd = (trk_real)sc->p.pd;
         p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = (trk_real)(sg * sg);
         p.sensor[0].meas_cov_m2[TRK_COV2_XY] = 0;
     }
     p.sensor[0].clutter_density_per_m2 = (trk_real)lambda;
+    /* the sonar's amplitude model: its threshold, its P_D profile the
+     * target's SNR over range (cart: one SNR, the one of its mean P_D) */
+    const double snr_db = sc->p.family == MTT_FAMILY_SONAR ? sc->sonar_snr_db : sc->p.snr_db;
     p.sensor[0].use_amplitude = sc->p.amplitude;
     if (sc->p.amplitude &&
-        trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, (trk_real)sc->p.snr_db, (trk_real)sc->pfa) != TRK_OK) {
-        snprintf(err, n, "Rayleigh model (SNR %g dB, P_FA %g) refused", sc->p.snr_db, sc->pfa);
+        trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, (trk_real)snr_db, (trk_real)sc->pfa) != TRK_OK) {
+        snprintf(err, n, "Rayleigh model (SNR %g dB, P_FA %g) refused", snr_db, sc->pfa);
         return -1;
     }
     p.process_noise_q = (trk_real)q;
@@ -86,7 +96,7 @@ int mtt_build_params(int kind, const struct mtt_scenario *sc, double lambda, dou
         if (p.confirm.method == TRK_CONFIRM_MN) c->mn = p.confirm.u.mn;
         if (p.term.method == TRK_TERM_KN) c->kn = p.term.u.kn;
         c->amp[0].model = sc->p.amplitude ? TCFG_AMP_RAYLEIGH : TCFG_AMP_NONE;
-        c->amp[0].snr_db = sc->p.snr_db;
+        c->amp[0].snr_db = snr_db;
         c->amp[0].pfa = sc->pfa;
 #if TRK_WITH_IMM
         /* tcfg_params assembles p.imm from these: the configuration's, then --set imm.* */
