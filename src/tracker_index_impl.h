@@ -26,41 +26,18 @@ static void grid_order(struct trk_tracker *t, const trk_real *x, const trk_real 
     trk_i_grid_fill(g, x, y, idx, n, end, t->ws.u.sort.count, t->ws.u.sort.tmp);
 }
 
-/* a[0, n) sorted ascending by key[a[i]] (key NULL: by a[i]), in place:
- * heapsort, O(n log n), no scratch. */
-static void sort_u16_by(uint16_t *a, size_t n, const uint16_t *key)
+/* Does a[i] go after a[m]: ascending key16[a[]] (NULL: a[] itself), or
+ * with key_desc descending key_desc[a[]], ties in ascending a[] (a total
+ * order: the same result whatever the input's order)? */
+static int sort_after(const uint16_t *a, size_t i, size_t m, const uint16_t *key16, const trk_real *key_desc)
 {
-#define SORT_KEY(i) (key ? key[a[i]] : a[i])
-    for (size_t end = n, start = n / 2;;) {
-        if (start > 0) {
-            start--;
-        } else {
-            if (end <= 1) break;
-            end--;
-            const uint16_t v = a[0];
-            a[0] = a[end];
-            a[end] = v;
-        }
-        for (size_t i = start;;) { /* sift a[i] down in the max-heap [0, end) */
-            size_t m = i;
-            const size_t l = 2 * i + 1, r = l + 1;
-            if (l < end && SORT_KEY(l) > SORT_KEY(m)) m = l;
-            if (r < end && SORT_KEY(r) > SORT_KEY(m)) m = r;
-            if (m == i) break;
-            const uint16_t v = a[i];
-            a[i] = a[m];
-            a[m] = v;
-            i = m;
-        }
-    }
-#undef SORT_KEY
+    if (key_desc) return key_desc[a[i]] < key_desc[a[m]] || (key_desc[a[i]] == key_desc[a[m]] && a[i] > a[m]);
+    return key16 ? key16[a[i]] > key16[a[m]] : a[i] > a[m];
 }
 
-/* a[0, n) into descending order of key[a[i]], ties in ascending a[i] (a
- * total order: the same result whatever the input's order); heap sort. */
-static void sort_u16_by_real_desc(uint16_t *a, size_t n, const trk_real *key)
+/* a[0, n) in place in sort_after's order: heapsort, O(n log n), no scratch. */
+static void sort_u16(uint16_t *a, size_t n, const uint16_t *key16, const trk_real *key_desc)
 {
-#define SORT_BELOW(i, m) (key[a[i]] < key[a[m]] || (key[a[i]] == key[a[m]] && a[i] > a[m]))
     for (size_t end = n, start = n / 2;;) {
         if (start > 0) {
             start--;
@@ -71,11 +48,11 @@ static void sort_u16_by_real_desc(uint16_t *a, size_t n, const trk_real *key)
             a[0] = a[end];
             a[end] = v;
         }
-        for (size_t i = start;;) { /* sift a[i] down in the heap [0, end) whose root ranks last */
+        for (size_t i = start;;) { /* sift a[i] down in the heap [0, end) whose root goes last */
             size_t m = i;
             const size_t l = 2 * i + 1, r = l + 1;
-            if (l < end && SORT_BELOW(l, m)) m = l;
-            if (r < end && SORT_BELOW(r, m)) m = r;
+            if (l < end && sort_after(a, l, m, key16, key_desc)) m = l;
+            if (r < end && sort_after(a, r, m, key16, key_desc)) m = r;
             if (m == i) break;
             const uint16_t v = a[i];
             a[i] = a[m];
@@ -83,7 +60,12 @@ static void sort_u16_by_real_desc(uint16_t *a, size_t n, const trk_real *key)
             i = m;
         }
     }
-#undef SORT_BELOW
 }
+
+/* a[0, n) sorted ascending by key[a[i]] (key NULL: by a[i]). */
+static void sort_u16_by(uint16_t *a, size_t n, const uint16_t *key) { sort_u16(a, n, key, NULL); }
+
+/* a[0, n) into descending order of key[a[i]], ties in ascending a[i]. */
+static void sort_u16_by_real_desc(uint16_t *a, size_t n, const trk_real *key) { sort_u16(a, n, NULL, key); }
 
 #endif
