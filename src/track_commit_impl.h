@@ -27,16 +27,36 @@ static trk_status update_visibility(const struct trk_tracker *t, const struct tr
     return trk_visibility_update_log(&t->vis_model, vis, pda->params.pd, pda->params.gate_prob, log_sum);
 }
 
+/* Does a tentative track of posterior existence pv claim its gated
+ * detection of weight beta (given existence), so that it starts no track?
+ * With joint association and existence (JIPDA: pv beta is the probability
+ * that the detection is this track's target, the other tracks weighed),
+ * only one it more likely than not explains, pv beta >= 1/2: a weak
+ * tentative track near a target (often a pair of one target detection and
+ * one clutter point, its velocity wrong, its gate wide) then does not keep
+ * the target's own detections from starting the pair that holds it.
+ * Otherwise every gated one: per-track PDA weighs no other track, and
+ * there the detections it left free started duplicates (trk-sim mtt
+ * --family sonar, 40 seeds: GOSPA 270 -> 297 m at 20 per ping). */
+static int tentative_claims(const struct trk_tracker *t, trk_real pv, trk_real beta)
+{
+    if (!t->params.track_visibility || t->params.association != TRK_ASSOC_JOINT) return 1;
+    return pv * beta >= TRK_REAL_C(0.5);
+}
+
 /* The update is accepted: from here on the track changes. The posterior
  * (pr->x, pr->p), its visibility and beta0 into the track; its gated
- * detections (cand) start no track. */
+ * detections (cand) start no track: a confirmed track's all, a tentative
+ * one's those it claims. */
 static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan,
                    const struct trk_i_pda_set *set, const uint16_t *cand, const struct pred *pr,
                    const struct trk_visibility *vis, trk_real beta0)
 {
-    const uint8_t mark = tr->status == TRK_TRACK_CONFIRMED ? USED_CONFIRMED : USED_NO_START;
+    const int confirmed = tr->status == TRK_TRACK_CONFIRMED;
+    const uint8_t mark = confirmed ? USED_CONFIRMED : USED_NO_START;
     for (size_t i = 0; i < set->n; i++)
-        if (t->ws.used[cand[i]] < mark) t->ws.used[cand[i]] = mark;
+        if (t->ws.used[cand[i]] < mark && (confirmed || tentative_claims(t, vis->pv, set->w[i])))
+            t->ws.used[cand[i]] = mark;
     for (int i = 0; i < NX; i++) tr->x[i] = pr->x[i];
     for (int i = 0; i < NX * NX; i++) tr->p[i] = pr->p[i];
     tr->vis = *vis;

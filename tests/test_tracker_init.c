@@ -197,6 +197,54 @@ static void test_full_table_replaces_weakest(void **state)
     if (TRK_MAX_TRACKS < 2 * n_fresh) assert_true(replaced > 0);
 }
 
+/* With joint association a tentative track claims (starts no track
+ * from) only the gated detections it more likely than not explains:
+ * posterior existence x joint weight >= 1/2. A fresh pair's track
+ * (existence ~1e-3) whose next detection lies at its prediction rises only
+ * to pv ~0.1: that detection is still stored as a candidate. At the next
+ * scan the track (pv ~0.9, beta ~1, still tentative) claims its detection:
+ * neither a candidate nor a pair with the one before. With per-track PDA
+ * a tentative track claims every gated detection (no candidate at k = 2). */
+static void run_claims(enum trk_assoc_method assoc)
+{
+    struct trk_tracker_params p;
+    sonar_params(&p, 1e-5);
+    p.association = assoc;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_scan_report rep;
+    struct trk_detection d = det_at(0, 0);
+    TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+    d = det_at(40, 0);
+    TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+    assert_int_equal(rep.n_started, 1);
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    const uint32_t id = tr->id;
+    assert_true(tr->vis.pv < 0.01);
+    for (int k = 2; k <= 3; k++) {
+        d = det_at(tr->x[X] + tr->x[VX] * SCAN_S, tr->x[Y] + tr->x[VY] * SCAN_S); /* at its prediction */
+        TRK_ASSERT_OK(run_scan(k, &d, 1, &rep));
+        tr = only_live_track();
+        assert_non_null(tr);
+        assert_int_equal(tr->id, id);
+        assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
+        assert_int_equal(rep.n_started, 0);
+        if (k == 2) assert_true(tr->vis.pv < 0.5 * 0.99);
+        else assert_true(tr->vis.pv > 0.5 / 0.99 && tr->vis.pv < 0.999);
+        /* joint, k = 2: its own detection; k = 3: still the one of k = 2 */
+        assert_int_equal(rep.n_candidates, assoc == TRK_ASSOC_JOINT ? 1 : 0);
+    }
+}
+
+static void test_weak_tentative_claims_nothing(void **state)
+{
+    (void)state;
+#if TRK_WITH_JOINT
+    run_claims(TRK_ASSOC_JOINT);
+#endif
+    run_claims(TRK_ASSOC_PDA);
+}
+
 /* A table nearly full of confirmed tracks (all slots but one, 63 of 64 by
  * default: targets on a 300 m grid with P_D 0.9, confirmed before the
  * clutter begins) under 100 clutter detections per scan (lambda = 100 /
@@ -597,6 +645,7 @@ int main(void)
         cmocka_unit_test(test_existence_rejects_clutter_pair),
         cmocka_unit_test(test_full_table_replaces_weakest),
         cmocka_unit_test(test_new_target_in_nearly_full_table),
+        cmocka_unit_test(test_weak_tentative_claims_nothing),
         cmocka_unit_test(test_no_duplicates),
         cmocka_unit_test(test_vanished_target_every_method),
         cmocka_unit_test(test_existence_params_punned),

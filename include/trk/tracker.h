@@ -63,9 +63,13 @@
  *      within merge_gate_d2, the confirmed (else the one with more hits,
  *      else the older) is kept (the pairs to test from a 2-D index of the
  *      tracks' positions)
- *   5. initiation (struct trk_init_params) from the valid detections no live
- *      track gated (tentative ones included: no track starts inside another's
- *      gate) nor fell within a confirmed track's init_exclusion_d2:
+ *   5. initiation (struct trk_init_params) from the valid detections that no
+ *      confirmed track gated nor found within its init_exclusion_d2, and no
+ *      tentative track claimed: with joint association and existence, a
+ *      tentative track claims a gated detection it more likely than not
+ *      explains (posterior existence x its joint weight >= 1/2), so that a
+ *      weak tentative track near a target does not keep the target's own
+ *      pair from starting; otherwise every one it gated:
  *      two-point (default): a detection that pairs with a candidate, an
  *      unexplained detection of a recent scan within the velocity gate,
  *      starts a tentative track whose velocity and covariance come from the
