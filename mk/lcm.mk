@@ -103,16 +103,21 @@ install-lcm-types: $(LCM_TYPES_LIB)
 # --- demo: simulated sonar -> LCM log -> bridge (replay) -> track log -> summary
 DEMO_LCM_DIR = $(BUILD)/demo-lcm
 .PHONY: demo-lcm test-lcm-udpm
-demo-lcm: $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
+DEMO_LCM_SONAR = --targets 4 --seed 7 --clutter-model k --k-shape 2 --snr-db 16 --pfa 1e-3 --clutter-density 2.5e-6
+demo-lcm: $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge $(BUILD)/bin/trk-tablegen
 	@mkdir -p $(DEMO_LCM_DIR)
-	@echo "== LCM demo 1/3: simulated sonar -> $(DEMO_LCM_DIR)/detections.lcmlog"
+	@echo "== LCM demo 1/4: simulated sonar -> $(DEMO_LCM_DIR)/detections.lcmlog"
 	@echo "   (4 targets, K-distributed clutter nu 2, 16 dB, 10 clutter detections per scan, a malformed message every 25th scan)"
-	$(BUILD)/bin/trk-sonar-sim --out $(DEMO_LCM_DIR)/detections.lcmlog --scans 150 --targets 4 --seed 7 \
-	  --clutter-model k --k-shape 2 --snr-db 16 --pfa 1e-3 --clutter-density 2.5e-6 --bad-every 25
-	@echo "== LCM demo 2/3: trk-lcm-bridge --replay -> $(DEMO_LCM_DIR)/tracks.lcmlog"
-	$(BUILD)/bin/trk-lcm-bridge --replay $(DEMO_LCM_DIR)/detections.lcmlog --out $(DEMO_LCM_DIR)/tracks.lcmlog \
-	  --keep-input --set sensor.0.pd=0.7 --set sensor.0.meas_sigma_m=3 --set sensor.0.clutter_density_per_m2=2.5e-6
-	@echo "== LCM demo 3/3: what the track log holds"
+	$(BUILD)/bin/trk-sonar-sim --out $(DEMO_LCM_DIR)/detections.lcmlog --scans 150 $(DEMO_LCM_SONAR) --bad-every 25
+	@echo "== LCM demo 2/4: the bridge's settings for this sonar (amplitude model included) and its K table"
+	$(BUILD)/bin/trk-sonar-sim $(DEMO_LCM_SONAR) --print-bridge-config --bridge-amp-table $(DEMO_LCM_DIR)/sonar.amp \
+	  > $(DEMO_LCM_DIR)/bridge.conf
+	$(BUILD)/bin/trk-tablegen amp --clutter-model k --k-shape 2 --snr-db 16 --pfa 1e-3 --out $(DEMO_LCM_DIR)/sonar.amp \
+	  > /dev/null
+	@echo "== LCM demo 3/4: trk-lcm-bridge --replay -> $(DEMO_LCM_DIR)/tracks.lcmlog"
+	$(BUILD)/bin/trk-lcm-bridge --config $(DEMO_LCM_DIR)/bridge.conf --replay $(DEMO_LCM_DIR)/detections.lcmlog \
+	  --out $(DEMO_LCM_DIR)/tracks.lcmlog --keep-input
+	@echo "== LCM demo 4/4: what the track log holds"
 	$(BUILD)/bin/trk-lcm-bridge --summarize $(DEMO_LCM_DIR)/tracks.lcmlog
 demo: demo-lcm
 
@@ -126,6 +131,6 @@ test-lcm-udpm: $(TEST_EXTRA_DEPS_test-lcm-udpm)
 # udpm in a network namespace): as many confirmed tracks as targets
 .PHONY: test-lcm-walkthrough
 TEST_EXTRA += test-lcm-walkthrough
-TEST_EXTRA_DEPS_test-lcm-walkthrough := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge
+TEST_EXTRA_DEPS_test-lcm-walkthrough := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge $(BUILD)/bin/trk-tablegen
 test-lcm-walkthrough: $(TEST_EXTRA_DEPS_test-lcm-walkthrough)
 	@$(if $(filter build,$(BUILD)),sh tests/lcm_walkthrough.sh docs/lcm.md,echo "test-lcm-walkthrough: the commands of docs/lcm.md name build/bin: run with BUILD=build")

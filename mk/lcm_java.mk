@@ -54,7 +54,7 @@ spy: $(LCM_JAR)
 	TRK_LCM_JAR=$(LCM_JAR) sh tools/lcm/java/trk-lcm-spy $(if $(SPY_URL),-l '$(SPY_URL)')
 
 TEST_EXTRA += test-lcm-spy
-TEST_EXTRA_DEPS_test-lcm-spy := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge \
+TEST_EXTRA_DEPS_test-lcm-spy := $(BUILD)/bin/trk-sonar-sim $(BUILD)/bin/trk-lcm-bridge $(BUILD)/bin/trk-tablegen \
   $(if $(HAVE_JAVA),$(LCM_JAR) $(SPY_CHECK_JAR))
 test-lcm-spy: $(TEST_EXTRA_DEPS_test-lcm-spy)
 	@if ! command -v javac > /dev/null 2>&1 || ! command -v jar > /dev/null 2>&1; then \

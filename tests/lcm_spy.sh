@@ -33,8 +33,10 @@ ls "$jhome"/lib/libawt_xawt.* > /dev/null 2>&1 || skip "the Java runtime in $jho
 # --- a log with the four channels, and what trk's C side counts in it
 "$B/trk-sonar-sim" --out "$T/det.lcmlog" --scans 60 --targets 4 --seed 3 --clutter-model k --k-shape 2 --snr-db 16 \
     --quiet > /dev/null || fail "trk-sonar-sim exited $?"
-"$B/trk-sonar-sim" --targets 4 --clutter-model k --k-shape 2 --snr-db 16 --print-bridge-config > "$T/bridge.conf" ||
-    fail "--print-bridge-config exited $?"
+"$B/trk-sonar-sim" --targets 4 --clutter-model k --k-shape 2 --snr-db 16 --print-bridge-config \
+    --bridge-amp-table "$T/sonar.amp" > "$T/bridge.conf" || fail "--print-bridge-config exited $?"
+"$B/trk-tablegen" amp --clutter-model k --k-shape 2 --snr-db 16 --pfa 0.001 --out "$T/sonar.amp" > /dev/null ||
+    fail "trk-tablegen amp exited $?"
 "$B/trk-lcm-bridge" --config "$T/bridge.conf" --replay "$T/det.lcmlog" --out "$T/tracks.lcmlog" --keep-input --quiet \
     > /dev/null || fail "trk-lcm-bridge --replay exited $?"
 "$B/trk-lcm-bridge" --summarize "$T/tracks.lcmlog" > "$T/summary.txt" || fail "--summarize exited $?"

@@ -6,7 +6,8 @@
 # The commands below must appear in PAGE (docs/lcm.md) word for word (checked first),
 # so the walk-through a reader copies is the one tested. Then, in a scratch
 # directory (build/ linked into it):
-#   offline: trk-sonar-sim --out -> trk-lcm-bridge --replay -> --summarize
+#   offline: the settings and the amplitude table (trk-tablegen amp), then
+#            trk-sonar-sim --out -> trk-lcm-bridge --replay -> --summarize
 #   live:    the bridge, lcm-logger and trk-sonar-sim over UDP multicast in a
 #            private network namespace (unshare -rn; skipped with the reason
 #            when the machine cannot create one)
@@ -14,7 +15,7 @@
 # duplicating another, each target followed by a confirmed track in >= 90 %
 # of the scans. The same check must refuse the walk-through's old settings
 # (the bridge's defaults: P_D 0.9, 1 m, 1e-4 per m^2 against the sonar's
-# 0.73, 3 m, 5e-6): it confirms 12 tracks for 4 targets.
+# 0.73, 3 m, 5e-6): it confirms 11 tracks for 4 targets.
 set -u
 README=${1:-docs/lcm.md}
 ROOT=$(pwd)
@@ -23,6 +24,7 @@ STEP=test-lcm-walkthrough
 
 SONAR='build/bin/trk-sonar-sim --targets 4 --clutter-model k --k-shape 2 --snr-db 16'
 C_CONF="$SONAR --print-bridge-config > bridge.conf"
+C_TABLE='build/bin/trk-tablegen amp --clutter-model k --k-shape 2 --snr-db 16 --pfa 0.001 --out sonar.amp'
 C_BRIDGE='build/bin/trk-lcm-bridge --config bridge.conf --max-scans 150'
 C_LOGGER="lcm-logger -f -c 'TRK_.*' tracks.lcmlog"
 C_SONAR="$SONAR --scans 150 --rate-hz 25"
@@ -30,10 +32,10 @@ C_SUMMARY='build/bin/trk-lcm-bridge --summarize tracks.lcmlog'
 C_LOG="$SONAR --scans 150 --out detections.lcmlog"
 C_REPLAY='build/bin/trk-lcm-bridge --config bridge.conf --replay detections.lcmlog --out tracks.lcmlog --keep-input'
 
-for c in "$C_CONF" "$C_BRIDGE" "$C_LOGGER" "$C_SONAR" "$C_SUMMARY" "$C_LOG" "$C_REPLAY"; do
+for c in "$C_CONF" "$C_TABLE" "$C_BRIDGE" "$C_LOGGER" "$C_SONAR" "$C_SUMMARY" "$C_LOG" "$C_REPLAY"; do
     grep -qxF "$c" "$README" || fail "$README lacks the walk-through line: $c"
 done
-ok "the walk-through's 7 commands are in $README word for word"
+ok "the walk-through's 8 commands are in $README word for word"
 
 ln -s "$ROOT/build" "$T/build"
 cd "$T" || exit 1
@@ -59,11 +61,30 @@ sh -c "$C_CONF" || fail "$C_CONF exited $?"
 grep -q '^sensor.0.pd = 0.732325$' bridge.conf && grep -q '^sensor.0.meas_sigma_m = 3$' bridge.conf &&
     grep -q '^sensor.0.clutter_density_per_m2 = 5e-06$' bridge.conf ||
     fail "bridge.conf does not hold the sonar's P_D 0.732325, 3 m, 5e-6: $(cat bridge.conf)"
+grep -q '^sensor.0.amp_table = sonar.amp$' bridge.conf &&
+    grep -qF "#   trk-tablegen amp --clutter-model k --k-shape 2 --snr-db 16 --pfa 0.001 --out sonar.amp" bridge.conf ||
+    fail "bridge.conf does not name the sonar's K amplitude table and how to make it: $(cat bridge.conf)"
+sh -c "$C_TABLE" > table.out 2>&1 || fail "$C_TABLE exited $?: $(cat table.out)"
 sh -c "$C_LOG" > log.out 2>&1 || fail "$C_LOG exited $?: $(cat log.out)"
 sh -c "$C_REPLAY" > replay.out 2>&1 || fail "$C_REPLAY exited $?: $(cat replay.out)"
 sh -c "$C_SUMMARY" > offline.txt 2>&1 || fail "$C_SUMMARY exited $?"
 why=$(check offline.txt) || fail "offline walk-through: $why: $(cat offline.txt)"
 ok "offline: $(sed -n 's/^\(confirmed track ids ([0-9]*)\).*/\1/p' offline.txt) for 4 targets, $(grep -c '^  target' offline.txt) followed in >= 90 % of 150 scans"
+
+# --- the settings carry the amplitude model of any sonar: Rayleigh in closed
+# form (and, with a P_D profile, the SNR over range from it); K or a table with
+# a profile has none in the library: positions only, said
+build/bin/trk-sonar-sim --targets 4 --print-bridge-config > ray.conf || fail "--print-bridge-config (Rayleigh) exited $?"
+grep -q '^sensor.0.amplitude = rayleigh$' ray.conf && grep -q '^sensor.0.snr_db = 15$' ray.conf &&
+    grep -q '^sensor.0.pfa = 0.001$' ray.conf || fail "Rayleigh settings lack the amplitude model: $(cat ray.conf)"
+build/bin/trk-lcm-bridge --config ray.conf --print-config > ray.eff 2>&1 || fail "the bridge refuses the Rayleigh settings: $(cat ray.eff)"
+build/bin/trk-sonar-sim --polar --pd-profile 0:0.9,2000:0.5 --clutter-model k --k-shape 2 --print-bridge-config > pk.conf ||
+    fail "--print-bridge-config (polar, K, profile) exited $?"
+if grep -q 'amp_table\|amplitude =' pk.conf || ! grep -q 'positions only' pk.conf; then
+    fail "polar K with a P_D profile: $(cat pk.conf)"
+fi
+build/bin/trk-lcm-bridge --config pk.conf --print-config > pk.eff 2>&1 || fail "the bridge refuses the polar K settings: $(cat pk.eff)"
+ok "the settings carry the amplitude model (Rayleigh: closed form; K with a P_D profile: positions only, said)"
 
 # --- the check refuses the old settings (the bridge's defaults)
 build/bin/trk-lcm-bridge --set sensor.0.pd=0.8 --replay detections.lcmlog --out old.lcmlog --keep-input > /dev/null 2>&1 ||

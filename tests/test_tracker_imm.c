@@ -432,19 +432,26 @@ static void test_subnormal_model_weight(void **state)
 /* Two targets 40 m apart on parallel straight paths (R = 25 I, P_D 0.8, a
  * little clutter), IMM tracks of three models, 20 runs of 60 scans: the
  * merge test weighs an IMM track with its most probable model's covariance,
- * not the combined one that holds the spread between the models. Measured:
- * 1 merge, 36 of 40 tracks held at the end (with the combined covariance:
- * 4 merges). */
+ * not the combined one that holds the spread between the models, so that no
+ * track on one target is merged into the other's. Counted: merges that end
+ * a track confirmed at the scan before, and merges that leave the ended
+ * track's target with no live track within 20 m (a tentative duplicate,
+ * which initiation may start beside a weak tentative track, is merged by
+ * design, and its target keeps the other). Measured: 0, 0 and 40 of 40
+ * tracks held at the end (23 merges in all); with the combined covariance
+ * 0, 3 and 40 (31 merges). */
 static void test_close_pair_not_merged(void **state)
 {
     (void)state;
-    uint32_t merged = 0;
+    uint32_t merged = 0, merged_all = 0, lost = 0;
     size_t held = 0;
     for (uint64_t seed = 1; seed <= 20; seed++) {
         struct trk_tracker_params p;
         trk_test_sonar_params(&p, 1e-5);
         TRK_ASSERT_OK(trk_tracker_imm_params(&p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)));
         TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        static uint32_t confirmed_id[TRK_MAX_TRACKS]; /* per slot: its id while confirmed, else 0 */
+        memset(confirmed_id, 0, sizeof confirmed_id);
         uint64_t rng = seed;
         for (int k = 0; k < 60; k++) {
             struct trk_detection d[8];
@@ -461,12 +468,31 @@ static void test_close_pair_not_merged(void **state)
             const struct trk_scan s = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}};
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
-            merged += rep.n_merged;
+            merged_all += rep.n_merged;
+            for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+                const struct trk_track *tr = trk_tracker_track(&tk, i);
+                if (tr && tr->status == TRK_TRACK_TERMINATED && tr->end_reason == TRK_END_MERGED) {
+                    /* on which target, and does another live track stay on it? */
+                    const double tx = 10 * DT_S * k, ty = tr->x[TRK_CV2_Y] < 20 ? 0 : 40;
+                    int other = 0;
+                    for (size_t j = 0; j < TRK_MAX_TRACKS; j++) {
+                        const struct trk_track *o = trk_tracker_track(&tk, j);
+                        other |= j != i && o && o->status != TRK_TRACK_TERMINATED && fabs(o->x[TRK_CV2_X] - tx) < 20 &&
+                                 fabs(o->x[TRK_CV2_Y] - ty) < 20;
+                    }
+                    if (fabs(tr->x[TRK_CV2_X] - tx) < 20 && fabs(tr->x[TRK_CV2_Y] - ty) < 20 && !other) lost++;
+                    if (confirmed_id[i] == tr->id) merged++;
+                }
+                confirmed_id[i] = tr && tr->status == TRK_TRACK_CONFIRMED ? tr->id : 0;
+            }
         }
         held += trk_test_count_confirmed(&tk);
     }
-    assert_true(merged <= 2);
-    assert_true(held >= 34);
+    print_message("confirmed tracks merged %u (all merges %u, %u leaving their target no track), held %zu of 40\n",
+                  (unsigned)merged, (unsigned)merged_all, (unsigned)lost, held);
+    assert_true(merged <= 1);
+    assert_int_equal(lost, 0);
+    assert_true(held >= 36);
 }
 
 /* A polar sensor (sigma 7.5 m, 1.5 deg; a +-60 degree sector) on a

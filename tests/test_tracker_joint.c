@@ -210,9 +210,12 @@ static void test_pair_store_overflow(void **state)
     assert_int_equal(rb.n_assoc_overflow, 3 - fit);
     assert_int_equal(rb.n_clusters, 1);
     assert_int_equal(rb.largest_cluster, fit);
-    size_t last = TRK_MAX_TRACKS;
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
-        if (trk_tracker_track(&tk_joint, i)) last = i;
+    size_t last = TRK_MAX_TRACKS; /* the slot of the last of the three (the joint tracker's weak
+                                     tentative tracks claimed few of the 256: new ones started beside) */
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *tr = trk_tracker_track(&tk_joint, i);
+        if (tr && tr->id <= 3) last = i;
+    }
     assert_true(last < TRK_MAX_TRACKS);
     assert_tracks_equal(trk_tracker_track(&tk_pda, last), trk_tracker_track(&tk_joint, last), TRK_TOL(1e-12, 1e-6));
 }

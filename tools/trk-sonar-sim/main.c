@@ -129,13 +129,15 @@ static void truth_msg(const struct scenario *sc, int64_t utime, int64_t seq, trk
     m->n_omitted = (int32_t)(sc->n_tg - n);
 }
 
+static void print_amplitude_config(const struct scenario *sc, int profile, const char *k_table, FILE *f);
+
 /* --print-bridge-config: the trk-lcm-bridge settings that match this
  * scenario (a config file for `trk-lcm-bridge --config`): the sensor's P_D
  * (the amplitude model's at the threshold, or --pd), its position noise, the
  * clutter density it produces and the targets' process noise. A bridge left
  * at its own defaults (P_D 0.9, 1 m, 1e-4 per m^2) tracks this sonar's
  * detections with the wrong model. */
-static void print_bridge_config(const struct scenario *sc, int polar, FILE *f)
+static void print_bridge_config(const struct scenario *sc, int polar, int profile, const char *k_table, FILE *f)
 {
     const struct scen_params *p = &sc->p;
     const double area = (p->x_max_m - p->x_min_m) * (p->y_max_m - p->y_min_m);
@@ -163,16 +165,63 @@ static void print_bridge_config(const struct scenario *sc, int polar, FILE *f)
             p->clutter_count >= 0 ? "a fixed count per scan" : "Poisson", p->x_min_m, p->x_max_m, p->y_min_m,
             p->y_max_m);
     fprintf(f, "sensor.%u.clutter_density_per_m2 = %.9g\n", s, density);
+    print_amplitude_config(sc, profile, k_table, f);
+}
+
+/* The amplitude part of --print-bridge-config: the model the detections
+ * carry, so that the bridge runs the amplitude-aided update (PDAFAI) with
+ * it: Rayleigh in closed form (pfa, the targets' SNR; with a P_D profile
+ * the library reads the profile as the SNR over range, and the simulator
+ * draws each target's amplitude at the SNR of its P_D there); K through a
+ * table the bridge reads (amp_table FILE, made once by trk-tablegen amp with
+ * the command the comment gives); the simulator's own table as it is. A
+ * table with a P_D profile has no SNR over range in the library: positions
+ * only, said in a comment. */
+static void print_amplitude_config(const struct scenario *sc, int profile, const char *k_table, FILE *f)
+{
+    const struct scen_params *p = &sc->p;
+    const unsigned s = p->sensor_id;
+    if (p->amp_kind == AMP_NONE) return;
+    if (profile && p->amp_kind != AMP_RAYLEIGH) {
+        fprintf(f, "# the detections carry %s amplitudes, but with a P_D profile only a Rayleigh\n"
+                   "# model has an SNR over range in the library: positions only\n",
+                p->amp_kind == AMP_K ? "K" : "table");
+        return;
+    }
+    int same = 1;
+    for (size_t i = 1; i < sc->n_tg; i++) same &= sc->tg[i].amp.snr_db == sc->tg[0].amp.snr_db;
+    if (!same && p->amp_kind != AMP_TABLE)
+        fprintf(f, "# the targets' SNR differ: the bridge takes the scenario's %g dB for all\n", p->snr_db);
+    switch (p->amp_kind) {
+    case AMP_RAYLEIGH:
+        fprintf(f, "# the detections carry Rayleigh amplitudes: the amplitude-aided update%s\n",
+                profile ? " (the targets'\n# SNR over range: the P_D profile's)" : "");
+        fprintf(f, "sensor.%u.amplitude = rayleigh\n", s);
+        fprintf(f, "sensor.%u.snr_db = %.9g\n", s, p->snr_db);
+        fprintf(f, "sensor.%u.pfa = %.9g\n", s, p->pfa);
+        break;
+    case AMP_K:
+        fprintf(f, "# the detections carry K amplitudes: the amplitude-aided update reads their\n"
+                   "# table, made once with\n"
+                   "#   trk-tablegen amp --clutter-model k --k-shape %.9g --snr-db %.9g --pfa %.9g --out %s\n",
+                p->k_shape, p->snr_db, p->pfa, k_table);
+        fprintf(f, "sensor.%u.amp_table = %s\n", s, k_table);
+        break;
+    default: /* AMP_TABLE */
+        fprintf(f, "# the detections' amplitudes come from this table: the bridge reads the same\n");
+        fprintf(f, "sensor.%u.amp_table = %s\n", s, p->amp_table);
+        break;
+    }
 }
 
 /* --print-bridge-config --polar: the same for a polar sensor: its kind and
  * noise, P_D (flat, or the profile the simulator draws with), coverage and
  * the clutter density inside it. The pose comes with every scan. */
 static void print_polar_bridge_config(const struct scenario *sc, const struct trk_sensor_params *sp,
-                                      const struct polar_platform *pf, FILE *f)
+                                      const struct polar_platform *pf, const char *k_table, FILE *f)
 {
     const unsigned s = sc->p.sensor_id;
-    print_bridge_config(sc, 1, f);
+    print_bridge_config(sc, 1, sp->pd_profile.n > 0, k_table, f);
     fprintf(f, "# polar: range and bearing from the platform's pose, which every scan carries\n"
                "# (start %g, %g m, course %g rad, %g m/s); clutter at the density above inside\n"
                "# the coverage\n",
@@ -269,6 +318,7 @@ int main(int argc, char **argv)
     struct scen_params p;
     static struct targets tgt;
     const char *url = NULL, *log_path = NULL, *channel = "TRK_DETECTIONS", *truth_channel = "TRK_TRUTH";
+    const char *bridge_amp_table = "sonar.amp";
     double rate_hz = -1, pd = NAN, speed[2], region[4];
     long scans = -1, bad_every = 0, seed, sensor_id, n_targets;
     long start_utime_l = -1;
@@ -314,8 +364,11 @@ int main(int argc, char **argv)
         CLI_OPT_FLAG("--quiet", &quiet, "no start-up line on stderr"),
         CLI_OPT_FLAG("--print-bridge-config", &print_config,
                      "print the trk-lcm-bridge settings that match this scenario\n"
-                     "(P_D, position noise, clutter density, q; a file for\n"
-                     "trk-lcm-bridge --config) and exit"),
+                     "(P_D, position noise, clutter density, q, the amplitude\n"
+                     "model; a file for trk-lcm-bridge --config) and exit"),
+        CLI_OPT_STRING("--bridge-amp-table", &bridge_amp_table, "FILE", NULL,
+                       "with K amplitudes: the table file the printed settings\n"
+                       "name (made by trk-tablegen amp as their comment says) (sonar.amp)"),
         CLI_OPT_HEADING("Polar sensor on a moving platform:"),
         CLI_OPT_FLAG("--polar", &polar,
                      "publish range and bearing from the platform's pose\n"
@@ -439,8 +492,8 @@ int main(int argc, char **argv)
         }
     }
     if (print_config) {
-        if (polar) print_polar_bridge_config(&sc, psp, &pf, stdout);
-        else print_bridge_config(&sc, 0, stdout);
+        if (polar) print_polar_bridge_config(&sc, psp, &pf, bridge_amp_table, stdout);
+        else print_bridge_config(&sc, 0, 0, bridge_amp_table, stdout);
         scen_free(&sc);
         return fflush(stdout) == 0 && !ferror(stdout) ? 0 : 1;
     }

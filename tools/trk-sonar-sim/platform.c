@@ -69,7 +69,15 @@ size_t polar_scan(struct scenario *sc, const struct trk_sensor_params *sp, const
         const double range = hypot(x - px, y - py) + (double)sp->sigma_range_m * rng_normal(&r);
         const double bearing = wrap_pi(atan2(x - px, y - py) - h + (double)sp->sigma_bearing_rad * rng_normal(&r));
         if (!(range > 0)) continue;
-        nt += add(sc, &t->amp, &r, range, bearing, out, max, &n, &dropped);
+        /* with a P_D profile and Rayleigh amplitudes the target's SNR is the
+         * one of its P_D there, 1 + SNR = ln pfa / ln P_D (what the library
+         * reads a profile with a Rayleigh model as); else its own */
+        const struct amp_target *ta = &t->amp;
+        struct amp_target at_pd;
+        if (sp->pd_profile.n > 0 && sc->amp.kind == AMP_RAYLEIGH && pd > sc->amp.pfa && pd < 1 &&
+            amp_target_init(&sc->amp, 10 * log10(log(sc->amp.pfa) / log(pd) - 1), &at_pd) == 0)
+            ta = &at_pd;
+        nt += add(sc, ta, &r, range, bearing, out, max, &n, &dropped);
     }
     /* clutter over the scenario's region, where the sensor sees */
     struct trk_sensor_params cov = *sp;
