@@ -46,6 +46,7 @@ static void worst_params(struct trk_tracker_params *p, int imm)
     p->sensor[0].pd = TRK_REAL_C(0.9);
     p->sensor[0].clutter_density_per_m2 = (trk_real)(192.0 / (1200.0 * 1200.0));
     p->process_noise_q = TRK_REAL_C(0.01);
+    p->stationary_d2 = 0; /* the geometries' tracks stand still: targets, not persistent returns */
 #if TRK_WITH_IMM
     if (imm && trk_tracker_imm_params(p, TRK_REAL_C(0.035), TRK_REAL_C(0.95)) != TRK_OK) p->imm.n_models = 0;
 #else
@@ -247,9 +248,13 @@ static void worst_run(int imm, const char *prefix)
                 worst_storm(j, 0, "storm_empty");
                 memcpy(&j->base, keep63, sizeof *keep63);
                 worst_storm(j, W_TRK - 1, "storm_full");
+            } else {
+                bench_print(imm ? "imm_worst_failed_setup_64" : "worst_failed_setup_64", 0, "-");
             }
             free(keep63);
         }
+    } else {
+        bench_print(imm ? "imm_worst_failed_setup_63" : "worst_failed_setup_63", 0, "-");
     }
     free(j);
 }
