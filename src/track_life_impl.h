@@ -33,9 +33,32 @@ static int standing_still(const struct trk_tracker *t, const struct trk_track *t
     return c * vx * vx - 2 * b * vx * vy + a * vy * vy < h * det; /* v' P_v^-1 v < h */
 }
 
+/* Confirmed track tr's velocity on this look: consistent with standing
+ * still for TRK_STILL_LOOKS looks in a row, it goes back to held (tentative,
+ * stationary; its confirmation test starts again): a pair that passed a
+ * persistent return with a clutter point's velocity, was confirmed, and
+ * was then held still by the scatterer's returns (the survey's stationary
+ * point tracks, ch. 5.3). It is confirmed again, under its id, once it
+ * moves. 1 when it went back. */
+static int hold_if_still(struct trk_tracker *t, struct trk_track *tr, struct trk_scan_report *rep)
+{
+    if (!standing_still(t, tr)) {
+        tr->n_still_in_row = 0;
+        return 0;
+    }
+    if (++tr->n_still_in_row < TRK_STILL_LOOKS) return 0;
+    tr->n_still_in_row = 0;
+    tr->status = TRK_TRACK_TENTATIVE;
+    tr->stationary = 1;
+    trk_i_confirm_start(t, tr);
+    rep->n_stationary++;
+    return 1;
+}
+
 /* The track's test on this look and what it decides: confirmation (or
  * rejection, or the tentative age limit) of a tentative track, held while
- * it stands still (a persistent return), termination of a confirmed one. */
+ * it stands still (a persistent return), termination of a confirmed one,
+ * or its return to held when it has stood still (hold_if_still). */
 static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look,
                        struct trk_scan_report *rep)
 {
@@ -55,6 +78,8 @@ static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct
         }
     } else if (trk_i_term_step(t, tr, look)) {
         end_track(tr, TRK_END_TERMINATED, rep);
+    } else {
+        (void)hold_if_still(t, tr, rep);
     }
 }
 

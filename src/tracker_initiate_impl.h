@@ -213,6 +213,7 @@ static void new_track(struct trk_tracker *t, struct trk_track *tr, const struct 
     tr->n_misses_in_row = 0;
     tr->n_unseen_in_row = 0;
     tr->stationary = 0;
+    tr->n_still_in_row = 0;
     tr->n_gated_last = 1;
     tr->beta0_last = 0;
     tr->term_stat = 0;

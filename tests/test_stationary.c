@@ -9,6 +9,9 @@
  *   - once the scatterer moves (6 m/s) a track is confirmed on it within
  *     12 scans (a new one: its still track cannot follow the jump), the
  *     still one never;
+ *   - a confirmed target that slows to a stop goes back to held under its
+ *     id at its TRK_STILL_LOOKS-th still look, and is confirmed again when
+ *     it moves;
  *   - a target moving clearly (8 m/s, sigma 5 m, 4 s) is confirmed at the
  *     same scan with the hold as without it;
  *   - stationary_d2 = 0 confirms the scatterer (the hold off);
@@ -112,6 +115,63 @@ static void test_persistent_return_held_then_handed_over(void **state)
     assert_true(confirmed_at > 40 && confirmed_at < 52);
 }
 
+/* A target moving at 4 m/s is confirmed; it slows to a stop over 80 s
+ * (q 0.05, so that the track follows): once its velocity has been
+ * consistent with standing still (the closed form above) for
+ * TRK_STILL_LOOKS looks in a row, its track goes back to held (tentative,
+ * flagged stationary, counted in n_stationary), under its id, at that look
+ * and not before; it speeds up to 2 m/s north: the same track is confirmed
+ * again. */
+static void test_confirmed_track_that_stops_is_held(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    params(&p);
+    p.process_noise_q = TRK_REAL_C(0.05);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    uint64_t rng = 21;
+    struct trk_scan_report rep;
+    double x = 0, y = 0;
+    uint32_t id = 0;
+    int still_in_row = 0, held_at = -1, again_at = -1;
+    for (int k = 0; k < 100; k++) {
+        const double vx = k < 20 ? 4 : k < 40 ? 4.0 * (40 - k) / 20 : 0, vy = k < 60 ? 0 : k < 70 ? 0.2 * (k - 60) : 2;
+        x += vx * DT_S;
+        y += vy * DT_S;
+        scan_at(k, x, y, &rng, &rep);
+        if (k < 2) continue;
+        const struct trk_track *tr = only_track();
+        if (k == 19) {
+            assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
+            id = tr->id;
+        }
+        if (k < 20) continue;
+        assert_int_equal(tr->id, id);
+        if (held_at < 0) {
+            if (tr->status == TRK_TRACK_CONFIRMED) {
+                still_in_row = velocity_d2(tr) < 9.2103403719761836 ? still_in_row + 1 : 0;
+                assert_true(still_in_row < TRK_STILL_LOOKS);
+                assert_int_equal(tr->n_still_in_row, still_in_row);
+            } else { /* the look that made it TRK_STILL_LOOKS in a row */
+                assert_int_equal(still_in_row + 1, TRK_STILL_LOOKS);
+                assert_true(velocity_d2(tr) < 9.2103403719761836);
+                assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
+                assert_int_equal(tr->stationary, 1);
+                assert_int_equal(rep.n_stationary, 1);
+                held_at = k;
+            }
+        } else if (k < 60) {
+            assert_int_equal(tr->status, TRK_TRACK_TENTATIVE); /* held while it stands */
+        } else if (again_at < 0 && tr->status == TRK_TRACK_CONFIRMED) {
+            assert_int_equal(tr->stationary, 0);
+            again_at = k;
+        }
+    }
+    print_message("held at scan %d, confirmed again at %d\n", held_at, again_at);
+    assert_true(held_at > 30 && held_at < 50);
+    assert_true(again_at > 62 && again_at < 85);
+}
+
 /* The scan at which the mover is confirmed (-1: never in 20 scans). */
 static int mover_confirmed_at(trk_real stationary_d2)
 {
@@ -173,6 +233,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_persistent_return_held_then_handed_over),
+        cmocka_unit_test(test_confirmed_track_that_stops_is_held),
         cmocka_unit_test(test_mover_not_delayed),
         cmocka_unit_test(test_hold_off_confirms_the_return),
         cmocka_unit_test(test_param_check),

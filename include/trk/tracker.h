@@ -225,6 +225,12 @@ struct trk_pose {
  * the workspace's 16-bit indices. A longer scan is refused (TRK_E_CAPACITY). */
 #define TRK_MAX_SCAN_DETECTIONS 65535u
 
+/** Looks in a row that a confirmed track's velocity must be consistent with
+ * standing still (trk_tracker_params.stationary_d2) before it goes back to
+ * held: a few, so that a moving target whose velocity is one scan's noise
+ * from zero is not taken for a persistent return. */
+#define TRK_STILL_LOOKS 3
+
 /** One scan of one sensor. The detections are read, never written. */
 struct trk_scan {
     int64_t time_us;                        /**< scan time (microseconds, any epoch);
@@ -630,6 +636,15 @@ struct trk_tracker_params {
                                                          gate can follow; a sudden jump
                                                          starts a new track) (seed survey
                                                          ch. 5.3, stationary point tracks).
+                                                         A confirmed track whose velocity is
+                                                         consistent with standing still for
+                                                         TRK_STILL_LOOKS looks in a row goes
+                                                         back to held the same way (a pair
+                                                         that passed a scatterer with a
+                                                         clutter point's velocity, confirmed,
+                                                         then held still by its returns; a
+                                                         target that stops is not reported
+                                                         while it stands, as a new one).
                                                          Default 9.21 (chi^2, 2 dof, 0.99);
                                                          0 = off (a tracker of objects that
                                                          stand still) */
@@ -731,6 +746,9 @@ struct trk_track {
     uint8_t stationary;               /**< 1: a tentative track held because its
                                          velocity is consistent with standing still
                                          (trk_tracker_params.stationary_d2) */
+    uint8_t n_still_in_row;           /**< a confirmed track: consecutive looks whose
+                                         velocity was consistent with standing still;
+                                         at TRK_STILL_LOOKS it goes back to held */
     int64_t time_us;                  /**< time of x and P */
     trk_real x[TRK_CV2_NX];           /**< [x, vx, y, vy] */
     trk_real p[TRK_CV2_NX * TRK_CV2_NX];  /**< covariance of x (4 x 4, row-major; TRK_CV2_P) */
