@@ -223,6 +223,21 @@ static void test_raised_threshold_model(void **state)
     TRK_ASSERT_STATUS(trk_amplitude_log_sf(m, 7, m->threshold, &x), TRK_E_ARG);
 }
 
+/* tk with parameters p, one track started by a strong detection at
+ * (x0_m, 0) at scan 0 (single-point start): its state and covariance into
+ * x and pm, the prior of the next scan's reference update. */
+static void start_one_track(const struct trk_tracker_params *p, trk_real x0_m, trk_real x[4], trk_real pm[16])
+{
+    TRK_ASSERT_OK(trk_tracker_init(&tk, p));
+    struct trk_detection d0 = {x0_m, 0, {0, 0, 0}, 2 * p->sensor[0].amplitude.threshold, 0, 1};
+    struct trk_scan s0 = {SEC(0), 0, 1, &d0, NULL, 0, {0, 0, 0}};
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
+    const struct trk_track *tr = trk_tracker_track(&tk, 0);
+    assert_non_null(tr);
+    memcpy(x, tr->x, 4 * sizeof *x);
+    memcpy(pm, tr->p, 16 * sizeof *pm);
+}
+
 /* More gated detections than the workspace holds: every detection within
  * a metre of one track's prediction. The cut falls in the gates, and the
  * track's update is the PDA with the raised threshold's P_D', lambda' and
@@ -232,16 +247,10 @@ static void test_gates_overflow(void **state)
     (void)state;
     struct trk_tracker_params p;
     params(&p, 1);
-    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     const struct trk_amplitude *m = &p.sensor[0].amplitude;
-    struct trk_detection d0 = {0, 0, {0, 0, 0}, 2 * m->threshold, 0, 1};
-    struct trk_scan s0 = {SEC(0), 0, 1, &d0, NULL, 0, {0, 0, 0}};
-    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
-    const struct trk_track *tr = trk_tracker_track(&tk, 0);
-    assert_non_null(tr);
     trk_real x[4], pm[16];
-    memcpy(x, tr->x, sizeof x);
-    memcpy(pm, tr->p, sizeof pm);
+    start_one_track(&p, 0, x, pm);
+    const struct trk_track *tr;
     rng_state = 14;
     memset(det, 0, sizeof det);
     for (int i = 0; i < N_OVER; i++) {
@@ -306,17 +315,11 @@ static void gates_overflow_profile(double eta)
     p.sensor[0].persistent_share = (trk_real)eta;
     p.sensor[0].persistent_pd = pd_s;
     p.sensor[0].clutter_density_per_m2 = 2; /* beta0 near 0.7: P_D counts */
-    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     const struct trk_amplitude *m = &p.sensor[0].amplitude;
     const trk_real x0 = 1000;
-    struct trk_detection d0 = {x0, 0, {0, 0, 0}, 2 * m->threshold, 0, 1};
-    struct trk_scan s0 = {SEC(0), 0, 1, &d0, NULL, 0, {0, 0, 0}};
-    TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
-    const struct trk_track *tr = trk_tracker_track(&tk, 0);
-    assert_non_null(tr);
     trk_real x[4], pm[16];
-    memcpy(x, tr->x, sizeof x);
-    memcpy(pm, tr->p, sizeof pm);
+    start_one_track(&p, x0, x, pm);
+    const struct trk_track *tr;
     rng_state = 15;
     memset(det, 0, sizeof det);
     for (int i = 0; i < N_OVER; i++) {
