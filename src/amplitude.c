@@ -90,17 +90,26 @@ trk_status trk_amplitude_log_lr(const struct trk_amplitude *m, trk_real a, trk_r
     return TRK_OK;
 }
 
+trk_status trk_i_amplitude_log_lr_inv_u(const struct trk_amplitude *m, trk_real inv_u, trk_real ln_inv_u, trk_real a,
+                                        trk_real *log_lr)
+{
+    if (!isfinite(a)) return TRK_E_NAN;
+    if (!(a >= 0) || a < m->threshold) return TRK_E_RANGE;
+    const trk_real v = (1 - inv_u) * ((a * a - m->t2) / m->clutter_power) + ln_inv_u; /* eq 19 */
+    if (!isfinite(v)) return TRK_E_RANGE; /* a^2 overflows the real type */
+    *log_lr = v;
+    return TRK_OK;
+}
+
 trk_status trk_amplitude_log_lr_at_pd(const struct trk_amplitude *m, trk_real pd, trk_real a, trk_real *log_lr)
 {
     if (!m || !log_lr) return TRK_E_ARG;
     if (m->tabulated || m->model != TRK_AMP_RAYLEIGH) return TRK_E_UNSUPPORTED;
     if (!isfinite(a) || !isfinite(pd)) return TRK_E_NAN;
-    if (!(pd > m->pfa && pd < 1) || !(a >= 0) || a < m->threshold) return TRK_E_RANGE;
-    const trk_real u = trk_log(m->pfa) / trk_log(pd); /* 1 + SNR (eq 8) */
-    const trk_real v = (1 - 1 / u) * ((a * a - m->t2) / m->clutter_power) - trk_log(u); /* eq 19 */
-    if (!isfinite(v)) return TRK_E_RANGE; /* a^2 overflows the real type */
-    *log_lr = v;
-    return TRK_OK;
+    if (!(pd > m->pfa && pd < 1)) return TRK_E_RANGE;
+    /* 1/u = ln P_D / ln pfa (eq 8: 1 + SNR = u), ln pfa = -t^2/P (eq 6) */
+    const trk_real inv_u = trk_log(pd) * (-m->clutter_power / m->t2);
+    return trk_i_amplitude_log_lr_inv_u(m, inv_u, trk_log(inv_u), a, log_lr);
 }
 
 /* Normalised u^2 = a^2/P of a tabulated inverse-survival curve at x >= 0. */

@@ -16,6 +16,16 @@
 /* trk_amplitude.built of a model made by its init functions (amplitude.h). */
 #define TRK_I_AMP_BUILT 0x616d706cu /* "ampl" */
 
+struct trk_amplitude;
+/* The Rayleigh ln l^a of a target with 1 + SNR = u (Brekke eq 19), from
+ * inv_u = 1/u = ln P_D / ln pfa and its log: (1 - inv_u)(a^2 - t^2)/P +
+ * ln inv_u. The one closed form behind trk_amplitude_log_lr_at_pd, for a
+ * caller that holds 1/u (the tracker's persistent returns: per scan). m is
+ * a closed-form Rayleigh model (not checked). TRK_E_NAN a not finite,
+ * TRK_E_RANGE a < 0, below the threshold, or ln l^a beyond the real type. */
+trk_status trk_i_amplitude_log_lr_inv_u(const struct trk_amplitude *m, trk_real inv_u, trk_real ln_inv_u, trk_real a,
+                                        trk_real *log_lr);
+
 /* Small kernels in *_impl.h are forced inline unless TRK_SIZE_OPT (config.h:
  * default 1 under -Os) leaves the inlining decision to the compiler. */
 #if (defined(__GNUC__) || defined(__clang__)) && !TRK_SIZE_OPT

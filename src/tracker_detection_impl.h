@@ -19,7 +19,8 @@ struct amp_use {
      * the target SNR at each detection's range (else NULL: the model's) */
     const struct trk_i_view *snr_view;
     trk_real eta, pd_s; /* persistent returns: their share and P_D (eta 0: none), */
-    trk_real ln_eta, ln_1m_eta, inv_us; /* ln eta, ln(1 - eta), 1/u_s = ln pd_s / ln pfa */
+    trk_real ln_eta, ln_1m_eta; /* ln eta, ln(1 - eta), */
+    trk_real inv_ln_pfa, inv_us, ln_inv_us; /* 1 / ln pfa, 1/u_s = ln pd_s / ln pfa and its log */
 };
 
 /* How sensor sp's detections are read in scan view v. */
@@ -30,11 +31,13 @@ static struct amp_use amp_use_of(const struct trk_tracker *t, const struct trk_s
         sp, t->params.max_coord_m, t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP, /* the dB values' only user */
         TRK_REAL_C(10.0) * trk_log10(sp->use_amplitude ? sp->amplitude.clutter_power : 1),
         sp->use_amplitude && sp->pd_profile.n > 0 ? v : NULL, sp->use_amplitude ? sp->persistent_share : 0,
-        sp->persistent_pd, 0, 0, 0};
+        sp->persistent_pd, 0, 0, 0, 0, 0};
     if (au.eta > 0) { /* the mixture's constants, once per scan (checked at init: eta in (0, 1), pd_s in (pfa, 1)) */
         au.ln_eta = trk_log(au.eta);
         au.ln_1m_eta = trk_log1p(-au.eta);
-        au.inv_us = trk_log(au.pd_s) / trk_log(sp->amplitude.pfa);
+        au.inv_ln_pfa = -sp->amplitude.clutter_power / sp->amplitude.t2; /* ln pfa = -t^2/P (eq 6) */
+        au.inv_us = trk_log(au.pd_s) * au.inv_ln_pfa;
+        au.ln_inv_us = trk_log(au.inv_us);
     }
     return au;
 }
@@ -55,18 +58,22 @@ static trk_real amp_pd(const struct amp_use *au, const struct trk_detection *d)
 static trk_status amp_mixture_log_lr(const struct amp_use *au, trk_real pd, trk_real x0, trk_real a, trk_real *llr)
 {
     const struct trk_amplitude *m = &au->sp->amplitude;
+    if (!isfinite(pd)) return TRK_E_NAN;
+    if (!(pd > m->pfa && pd < 1)) return TRK_E_RANGE;
+    const trk_real inv_ut = trk_log(pd) * au->inv_ln_pfa, inv_us = au->inv_us; /* 1/u = ln P_D / ln pfa */
     trk_real lt, ls;
-    trk_status st = trk_amplitude_log_lr_at_pd(m, pd, a, &lt);
-    if (st == TRK_OK) st = trk_amplitude_log_lr_at_pd(m, au->pd_s, a, &ls);
+    trk_status st = trk_i_amplitude_log_lr_inv_u(m, inv_ut, trk_log(inv_ut), a, &lt);
+    if (st == TRK_OK) st = trk_i_amplitude_log_lr_inv_u(m, inv_us, au->ln_inv_us, a, &ls);
     if (st != TRK_OK) return st;
-    const trk_real inv_ut = trk_log(pd) / trk_log(m->pfa), inv_us = au->inv_us;
     lt -= (1 - inv_ut) * x0;
     ls -= (1 - inv_us) * x0;
-    /* ln((1 - eta') + eta' e^ls) = ln((1 - eta) e^-x0 + eta e^(-x0/u_s) e^ls) - ln((1 - eta) e^-x0 + eta e^(-x0/u_s)) */
+    /* ln((1 - eta') + eta' e^ls) = ln((1 - eta) e^-x0 + eta e^(-x0/u_s) e^ls) - ln((1 - eta) e^-x0 + eta e^(-x0/u_s));
+     * the second term is ln 1 = 0 at the sensor's threshold (x0 = 0) */
     const trk_real c0 = au->ln_1m_eta - x0, c1 = au->ln_eta - x0 * inv_us;
     const trk_real top_hi = c0 > c1 + ls ? c0 : c1 + ls, top_lo = c0 > c1 + ls ? c1 + ls : c0;
     const trk_real bot_hi = c0 > c1 ? c0 : c1, bot_lo = c0 > c1 ? c1 : c0;
-    const trk_real v = lt - (top_hi + trk_log1p(trk_exp(top_lo - top_hi))) + (bot_hi + trk_log1p(trk_exp(bot_lo - bot_hi)));
+    const trk_real bot = x0 > 0 ? bot_hi + trk_log1p(trk_exp(bot_lo - bot_hi)) : 0;
+    const trk_real v = lt - (top_hi + trk_log1p(trk_exp(top_lo - top_hi))) + bot;
     if (!isfinite(v)) return TRK_E_RANGE;
     *llr = v;
     return TRK_OK;
