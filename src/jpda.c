@@ -1,6 +1,6 @@
 /* jpda.c - JPDA / JIPDA marginal association probabilities (trk/jpda.h;
  * docs/conventions.md "Joint association (JPDA / JIPDA)"): clusters by
- * union-find over the gated pairs, a closed form for a lone track, an exact subset dynamic programme
+ * union-find over the gated pairs, closed forms for one and two tracks, an exact subset dynamic programme
  * per cluster, loopy belief propagation beyond the exact bound. */
 #include "trk/jpda.h"
 
@@ -31,6 +31,7 @@ struct cluster {
 static trk_status check_pairs(const struct trk_jpda_pairs *s, const trk_real *p_pair, const trk_real *p_miss);
 static size_t form_clusters(const struct trk_jpda_pairs *s, struct trk_jpda_solver *w);
 static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
+static void solve_two(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
 static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget);
 static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged);
 
@@ -55,6 +56,9 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
         if (c.nd > r.largest_dets) r.largest_dets = c.nd;
         if (c.nt == 1) {
             solve_lone(&c, p_pair, p_miss);
+            r.n_exact++;
+        } else if (c.nt == 2) {
+            solve_two(&c, p_pair, p_miss);
             r.n_exact++;
         } else if (solve_exact(&c, p_pair, p_miss, &budget)) {
             r.n_exact++;
@@ -310,6 +314,45 @@ static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_mi
     for (size_t k = s->first[t]; k < s->first[t + 1]; k++) z += p_pair[k] = wpair(c, k);
     for (size_t k = s->first[t]; k < s->first[t + 1]; k++) p_pair[k] /= z;
     p_miss[t] = wmiss(c, 0) / z;
+}
+
+/* ------------------------------------------------------------------ two tracks */
+
+/* Track a of a two-track cluster, o the other. The joint events are each
+ * track missed or on its own detection, so
+ *   P(a <- j) ~ w_aj (w_o0 + sum_{k != j} w_ok),
+ *   P(a <- none) ~ w_a0 (w_o0 + sum_k w_ok),
+ * with o's sum without j formed as its part before j (forward) plus its
+ * part after j (backward, held in p_pair meanwhile): every term a sum of
+ * products of weights, no subtraction (as in the programmes below), in
+ * O(pairs) where the programmes take O(2^2 n_d) with a larger constant. */
+static void two_track_marginals(const struct cluster *c, size_t a, trk_real *p_pair, trk_real *p_miss)
+{
+    const struct trk_jpda_pairs *s = c->s;
+    const size_t ta = c->tracks[a], to = c->tracks[1 - a];
+    const size_t a_lo = s->first[ta], a_hi = s->first[ta + 1], o_lo = s->first[to], o_hi = s->first[to + 1];
+    trk_real after = 0, before = wmiss(c, 1 - a), w_o = wmiss(c, 1 - a);
+    size_t q = o_hi;
+    for (size_t k = a_hi; k-- > a_lo;) { /* o's weights on the detections after k's */
+        while (q > o_lo && s->det[q - 1] > s->det[k]) after += wpair(c, --q);
+        p_pair[k] = after;
+    }
+    for (q = o_lo; q < o_hi; q++) w_o += wpair(c, q);
+    const trk_real pm = wmiss(c, a) * w_o;
+    trk_real z = pm;
+    q = o_lo;
+    for (size_t k = a_lo; k < a_hi; k++) { /* and those before it, with o's miss */
+        while (q < o_hi && s->det[q] < s->det[k]) before += wpair(c, q++);
+        z += p_pair[k] = wpair(c, k) * (before + p_pair[k]);
+    }
+    p_miss[ta] = pm / z;
+    for (size_t k = a_lo; k < a_hi; k++) p_pair[k] /= z;
+}
+
+static void solve_two(const struct cluster *c, trk_real *p_pair, trk_real *p_miss)
+{
+    two_track_marginals(c, 0, p_pair, p_miss);
+    two_track_marginals(c, 1, p_pair, p_miss);
 }
 
 /* ------------------------------------------------------------------ exact */

@@ -25,7 +25,6 @@ struct gate {
     int full;                  /* one more was gated */
 };
 
-static size_t gate_add(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *r_j);
 
 /* Is detection j at d2 inside the gate (d2 <= gamma)? If not, and d2 <= g,
  * the exclusion mark: it starts no track. */
@@ -58,14 +57,25 @@ static size_t gate_add(struct trk_tracker *t, struct gate *gt, size_t j, const t
 
 /* Detection j passed the bounding box: the ellipse d2 <= gamma adds it to
  * the gated set with its ln e_i (and its R_j when it has its own, r_j not
- * NULL); gamma < d2 <= g only marks it, so that it starts no track. */
-static void gate_ellipse(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *nu,
-                         const trk_real *l_inv, trk_real log_det, const trk_real *r_j)
+ * NULL); gamma < d2 <= g only marks it, so that it starts no track. Inline
+ * in the loop over the detections that share the sensor's covariance (a
+ * call per pair was a fifth of a scan with every detection in every gate);
+ * gate_ellipse is the same out of line, for the own-covariance loop whose
+ * factorisation per pair dwarfs a call (and the firmware image stays
+ * small). */
+TRK_INLINE void gate_ellipse_inline(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *nu,
+                                    const trk_real *l_inv, trk_real log_det, const trk_real *r_j)
 {
     const trk_real d2 = trk_i_mahalanobis2(NZ, l_inv, nu);
     if (!gate_inside(t, gt, j, d2)) return;
     const size_t n = gate_add(t, gt, j, r_j);
     if (n < gt->cap) trk_i_pda_set_w(gt->set, n, trk_i_pda_log_e(gt->pda, log_det, d2, t->ws.log_lr[j]));
+}
+
+static void gate_ellipse(struct trk_tracker *t, struct gate *gt, size_t j, const trk_real *nu, const trk_real *l_inv,
+                         trk_real log_det, const trk_real *r_j)
+{
+    gate_ellipse_inline(t, gt, j, nu, l_inv, log_det, r_j);
 }
 
 /* A detection with its own covariance: R_j and S_j = H P H' + R_j; 0 when
@@ -156,7 +166,7 @@ static int gate(struct trk_tracker *t, const struct trk_track *tr, const struct 
             const trk_real dx = t->ws.x[j] - zx, dy = t->ws.y[j] - zy;
             if (trk_fabs(dx) <= wx && trk_fabs(dy) <= wy && !(tentative && used[j] == USED_CONFIRMED)) {
                 const trk_real nu[NZ] = {dx, dy}; /* formed in the box only (measured: 2 % of the scan) */
-                gate_ellipse(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
+                gate_ellipse_inline(t, &gt, j, nu, inn->s_chol_inv, inn->log_det_s, NULL);
             }
         }
     if (n_valid > n_shared && !gt.full) { /* the own-covariance group through its index */

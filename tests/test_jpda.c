@@ -140,6 +140,40 @@ static void test_wide_dynamic_range(void **state)
     }
 }
 
+/* Two tracks (their closed form): random gates, weights over hundreds of
+ * decades, and both tracks on one dominant shared detection with every
+ * other weight and the misses far below it, where a form that subtracts
+ * the shared events from W_1 W_2 cancels; every marginal, however small,
+ * to the working precision (relative). */
+static void test_two_tracks(void **state)
+{
+    (void)state;
+    const double spread = TRK_TEST_IS_FLOAT ? 60 : 600, tiny = TRK_TEST_IS_FLOAT ? -40 : -300;
+    struct problem p;
+    for (int rep = 0; rep < 100; rep++) {
+        random_problem(&p, 2, 1 + (size_t)(urand() * MAXD) % MAXD, 0.3 + 0.7 * urand(), spread);
+        compare(&p, TRK_TOL(1e-12, 1e-4));
+    }
+    for (int rep = 0; rep < 20; rep++) {
+        p.nt = 2;
+        p.nd = 2 + (size_t)rep % (MAXD - 1);
+        for (size_t t = 0; t < 2; t++) {
+            p.lw0[t] = tiny + urand();
+            for (size_t j = 0; j < p.nd; j++) p.lw[t * p.nd + j] = j == 0 ? urand() : tiny + 10 * urand();
+        }
+        double ba[MAXT * MAXD], bm[MAXT];
+        trk_real pa[MAXT * MAXD], pm[MAXT];
+        struct trk_jpda_report rep_out;
+        brute(&p, ba, bm);
+        run(&p, pa, pm, &rep_out);
+        assert_int_equal(rep_out.n_exact, 1);
+        for (size_t t = 0; t < 2; t++) {
+            TRK_ASSERT_NEAR(pm[t], bm[t], 0, TRK_TOL(1e-12, 1e-4));
+            for (size_t j = 0; j < p.nd; j++) TRK_ASSERT_NEAR(pa[t * p.nd + j], ba[t * p.nd + j], 0, TRK_TOL(1e-12, 1e-4));
+        }
+    }
+}
+
 /* One track: the PDA weights w_j / (w_0 + sum w). */
 static void test_single_track_is_pda(void **state)
 {
@@ -355,6 +389,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact_matches_enumeration),
         cmocka_unit_test(test_wide_dynamic_range),
+        cmocka_unit_test(test_two_tracks),
         cmocka_unit_test(test_single_track_is_pda),
         cmocka_unit_test(test_clusters),
         cmocka_unit_test(test_symmetry),

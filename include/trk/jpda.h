@@ -14,7 +14,10 @@
  * Method. Tracks that share no gated detection are independent: clusters are
  * formed by union-find over the gated pairs (work in proportion to the pairs,
  * not to tracks x detections), and each cluster is solved on its own; a
- * cluster of one track in closed form (its PDA weights). A cluster of n_t tracks and n_d detections is solved EXACTLY by a
+ * cluster of one track in closed form (its PDA weights), of two tracks in
+ * closed form too: P(a <- j) ~ w_aj (w_o0 + sum_{k != j} w_ok), the other
+ * track's sum without j as its part before j plus its part after j (no
+ * subtraction), O(pairs). A cluster of n_t >= 3 tracks and n_d detections is solved EXACTLY by a
  * dynamic programme over the subsets of one side (2^k states, k = n_d or
  * n_t, at most TRK_JPDA_EXACT_BITS), processing the other side one element
  * at a time (the sum over joint events factorises that way; the idea of
