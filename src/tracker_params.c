@@ -31,7 +31,8 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_speed_mps = 15; /* 30 knots */
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
-    p->stationary_d2 = TRK_REAL_C(9.2103403719761836); /* -2 ln 0.01: chi^2_2 at 0.99 */
+    p->stationary_d2 = 25; /* motion past 5 sigma: a still object passes at e^-12.5 = 3.7e-6 (chi^2_2);
+                              docs/tracker.md "Persistent returns" for the measured choice */
     /* a clutter map for a sensor with a coverage: 16 x 16 cells, 20 scans'
      * memory, 2 pseudo-counts (docs/tracker.md "Clutter map") */
     p->clutter_map.n_range = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;

@@ -645,7 +645,13 @@ struct trk_tracker_params {
                                                          then held still by its returns; a
                                                          target that stops is not reported
                                                          while it stands, as a new one).
-                                                         Default 9.21 (chi^2, 2 dof, 0.99);
+                                                         Default 25: motion beyond 5 sigma
+                                                         (a still object passes at 3.7e-6,
+                                                         chi^2 2 dof; measured against
+                                                         9.21, chi^2 at 0.99, which reports
+                                                         a slow target under a large q
+                                                         sooner at more false tracks on
+                                                         persistent returns: docs/tracker.md);
                                                          0 = off (a tracker of objects that
                                                          stand still) */
     struct trk_init_params init;                      /**< how tracks start */

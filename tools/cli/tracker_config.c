@@ -1159,7 +1159,7 @@ void tcfg_help(FILE *f)
             "  stationary_d2 = G                 hold a tentative track tentative while its velocity is\n"
             "                                    consistent with standing still, v' P_v^-1 v < G (a\n"
             "                                    persistent return), and a confirmed one back after 3\n"
-            "                                    such looks in a row, 0 = off (9.21)\n"
+            "                                    such looks in a row, 0 = off (25)\n"
             "  association = pda|joint           per-track PDA, or joint association (JPDA / JIPDA) (joint)\n"
             "  filter = kalman|alpha_beta        track filter: CV Kalman, or constant gains (TRK_WITH_ALPHA_BETA builds) (kalman)\n"
             "  init.method = two_point|single_point   how tracks start (two_point)\n"
