@@ -25,7 +25,6 @@ struct gate {
     int full;                  /* one more was gated */
 };
 
-
 /* Is detection j at d2 inside the gate (d2 <= gamma)? If not, and d2 <= g,
  * the exclusion mark: it starts no track. */
 static int gate_inside(struct trk_tracker *t, const struct gate *gt, size_t j, trk_real d2)
@@ -59,7 +58,7 @@ static size_t gate_add(struct trk_tracker *t, struct gate *gt, size_t j, const t
  * the gated set with its ln e_i (and its R_j when it has its own, r_j not
  * NULL); gamma < d2 <= g only marks it, so that it starts no track. Inline
  * in the loop over the detections that share the sensor's covariance (a
- * call per pair was a fifth of a scan with every detection in every gate);
+ * call per pair was a quarter of a scan with every detection in every gate);
  * gate_ellipse is the same out of line, for the own-covariance loop whose
  * factorisation per pair dwarfs a call (and the firmware image stays
  * small). */
