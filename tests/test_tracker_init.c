@@ -205,20 +205,31 @@ static void test_full_table_replaces_weakest(void **state)
  * scan the track (pv ~0.9, beta ~1, still tentative) claims its detection:
  * neither a candidate nor a pair with the one before. With per-track PDA
  * a tentative track claims every gated detection (no candidate at k = 2). */
+/* A fresh table of parameters p on one
+ * detection at (0, 0) at scan 0 and one at (x1_m, 0) at scan 1: their
+ * pair's tentative track, the only live one; *rep the second scan's. */
+static const struct trk_track *start_on_pair(const struct trk_tracker_params *p, double x1_m,
+                                             struct trk_scan_report *rep)
+{
+    TRK_ASSERT_OK(trk_tracker_init(&tk, p));
+    struct trk_detection d = det_at(0, 0);
+    TRK_ASSERT_OK(run_scan(0, &d, 1, rep));
+    d = det_at(x1_m, 0);
+    TRK_ASSERT_OK(run_scan(1, &d, 1, rep));
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    return tr;
+}
+
 static void run_claims(enum trk_assoc_method assoc)
 {
     struct trk_tracker_params p;
     sonar_params(&p, 1e-5);
     p.association = assoc;
-    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_scan_report rep;
-    struct trk_detection d = det_at(0, 0);
-    TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
-    d = det_at(40, 0);
-    TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+    const struct trk_track *tr = start_on_pair(&p, 40, &rep);
     assert_int_equal(rep.n_started, 1);
-    const struct trk_track *tr = only_live_track();
-    assert_non_null(tr);
+    struct trk_detection d;
     const uint32_t id = tr->id;
     assert_true(tr->vis.pv < 0.01);
     for (int k = 2; k <= 3; k++) {
@@ -308,14 +319,8 @@ static void test_existence_rejects_clutter_pair(void **state)
     (void)state;
     struct trk_tracker_params p;
     sonar_params(&p, 1e-5);
-    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_scan_report rep;
-    struct trk_detection d = det_at(0, 0);
-    TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
-    d = det_at(30, 0);
-    TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
-    const struct trk_track *tr = only_live_track();
-    assert_non_null(tr);
+    const struct trk_track *tr = start_on_pair(&p, 30, &rep);
     TRK_ASSERT_OK(run_scan(2, NULL, 0, &rep));
     assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
     TRK_ASSERT_NEAR(tr->vis.pv / (1 - tr->vis.pv),
