@@ -197,17 +197,9 @@ static void test_full_table_replaces_weakest(void **state)
     if (TRK_MAX_TRACKS < 2 * n_fresh) assert_true(replaced > 0);
 }
 
-/* With joint association a tentative track claims (starts no track
- * from) only the gated detections it more likely than not explains:
- * posterior existence x joint weight >= 1/2. A fresh pair's track
- * (existence ~1e-3) whose next detection lies at its prediction rises only
- * to pv ~0.1: that detection is still stored as a candidate. At the next
- * scan the track (pv ~0.9, beta ~1, still tentative) claims its detection:
- * neither a candidate nor a pair with the one before. With per-track PDA
- * a tentative track claims every gated detection (no candidate at k = 2). */
-/* A fresh table of parameters p on one
- * detection at (0, 0) at scan 0 and one at (x1_m, 0) at scan 1: their
- * pair's tentative track, the only live one; *rep the second scan's. */
+/* A fresh table of parameters p on one detection at (0, 0) at scan 0
+ * and one at (x1_m, 0) at scan 1: their pair's tentative track, the only
+ * live one; *rep the second scan's report. */
 static const struct trk_track *start_on_pair(const struct trk_tracker_params *p, double x1_m,
                                              struct trk_scan_report *rep)
 {
@@ -221,6 +213,14 @@ static const struct trk_track *start_on_pair(const struct trk_tracker_params *p,
     return tr;
 }
 
+/* With joint association a tentative track claims (starts no track
+ * from) only the gated detections it more likely than not explains:
+ * posterior existence x joint weight >= 1/2. A fresh pair's track
+ * (existence ~1e-3) whose next detection lies at its prediction rises only
+ * to pv ~0.1: that detection is still stored as a candidate. At the next
+ * scan the track (pv ~0.9, beta ~1, still tentative) claims its detection:
+ * neither a candidate nor a pair with the one before. With per-track PDA
+ * a tentative track claims every gated detection (no candidate at k = 2). */
 static void run_claims(enum trk_assoc_method assoc)
 {
     struct trk_tracker_params p;
