@@ -292,6 +292,28 @@ static void candidate_r(const struct trk_candidate *c, trk_real *r)
     trk_i_cov2_matrix(c->cov_m2, r); /* stored from a checked detection */
 }
 
+/* ln of the density of the displacement from candidate c (R_c r_c) to
+ * the point (x, y) of covariance R r, dt later, under the velocity prior of
+ * a new track, v ~ N(0, s_v^2 I) with s_v = init_speed_sigma_mps (the prior
+ * speed_prior fuses into its state), and the two points' noise:
+ *   ln N((x, y) - z_c; 0, R_c + R + s_v^2 dt^2 I).
+ * The one model of a target's second point: it ranks a detection's
+ * candidates (best_candidate) and gives the pair's existence
+ * (pair_log_odds). The velocity gate (max_speed_mps) truncates it; the mass
+ * it cuts off (a speed beyond v_max, 1.1 % at the defaults' 3 s_v) is not
+ * renormalised. -TRK_REAL_MAX when the sum is not positive definite. */
+static TRK_NOINLINE trk_real pair_log_disp(const struct trk_tracker *t, const struct trk_candidate *c,
+                                           const trk_real *r_c, trk_real x, trk_real y, const trk_real *r, trk_real dt)
+{
+    const trk_real pi = TRK_REAL_C(3.14159265358979323846), sv = t->params.init_speed_sigma_mps * dt;
+    const trk_real a = r_c[S(ZX, ZX)] + r[S(ZX, ZX)] + sv * sv, b = r_c[S(ZX, ZY)] + r[S(ZX, ZY)];
+    const trk_real cc = r_c[S(ZY, ZY)] + r[S(ZY, ZY)] + sv * sv, det = a * cc - b * b;
+    if (!(a > 0 && det > 0)) return -TRK_REAL_MAX;
+    const trk_real dx = x - c->x_m, dy = y - c->y_m;
+    const trk_real d2 = (cc * dx * dx - 2 * b * dx * dy + a * dy * dy) / det;
+    return -trk_log(2 * pi) - TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
+}
+
 /* The slot in t->run of run k of the store (0 the oldest). */
 static size_t run_slot(const struct trk_tracker *t, size_t k) { return (t->run_first + k) % TRK_MAX_CANDIDATE_SCANS; }
 
@@ -386,17 +408,14 @@ static long best_candidate(const struct trk_tracker *t, const struct trk_scan *s
                 const struct trk_candidate *c = &t->cand[i];
                 if (c->used || trk_fabs(xj - c->x_m) > reach || trk_fabs(yj - c->y_m) > reach) continue;
                 if (!have_r) detection_r(t, scan, j, r_j), have_r = 1;
-                trk_real r_sum[NZ * NZ];
-                candidate_r(c, r_sum);
-                for (int q = 0; q < NZ * NZ; q++) r_sum[q] += r_j[q];
+                trk_real r_c[NZ * NZ], r_sum[NZ * NZ];
+                candidate_r(c, r_c);
+                for (int q = 0; q < NZ * NZ; q++) r_sum[q] = r_c[q] + r_j[q];
                 const trk_real dx = xj - c->x_m, dy = yj - c->y_m, d2 = dx * dx + dy * dy;
                 const trk_real lim = vmax * dt + trk_sqrt(gamma * lambda_max2(r_sum));
                 if (d2 > lim * lim) continue;
-                /* ln l^a - ln r: a speed uniform in [0, v_max] puts the displacement r
-                 * at density 1 / (2 pi r v_max dt), so nearer partners weigh more (r
-                 * no smaller than the noise) */
-                const trk_real noise2 = r_sum[S(ZX, ZX)] + r_sum[S(ZY, ZY)];
-                const trk_real sc = c->log_lr - TRK_REAL_C(0.5) * trk_log(d2 > noise2 ? d2 : noise2);
+                /* ln l^a of the candidate and ln of the displacement's density */
+                const trk_real sc = c->log_lr + pair_log_disp(t, c, r_c, xj, yj, r_j, dt);
                 if (best < 0 || sc > best_score || (sc == best_score && c->x_m < t->cand[best].x_m)) {
                     best = (long)i, best_score = sc;
                     *run_k = k;
@@ -440,15 +459,15 @@ static trk_status speed_prior(const struct trk_tracker *t, trk_real *x, trk_real
 
 /* ln O of a pair: its first point candidate c (of run; its ln(beta l^a /
  * lambda), lambda at c as second_log_odds takes it), its second point's
- * ln(P_D l^a / lambda) in second, dt apart (trk_init_params). */
+ * ln(P_D l^a / lambda) in second, and the ln density of the displacement
+ * between them in log_disp (pair_log_disp; trk_init_params). */
 static trk_real pair_log_odds(const struct trk_tracker *t, const struct trk_scan *scan,
                               const struct trk_i_cand_run *run, const struct trk_candidate *c, trk_real second,
-                              trk_real dt)
+                              trk_real log_disp)
 {
-    const trk_real pi = TRK_REAL_C(3.14159265358979323846), vdt = t->params.init.max_speed_mps * dt;
     const trk_real first = t->init_log_odds[run->sensor_id].first -
                            (run->sensor_id == scan->sensor_id ? sensor_log_lambda_ratio(t, scan, c->x_m, c->y_m) : 0);
-    return first + c->log_lr + second - trk_log(pi * vdt * vdt);
+    return first + c->log_lr + second + log_disp;
 }
 
 /* The three-point ln O (trk_init_params) of workspace detection j (R_j
@@ -484,7 +503,8 @@ static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_sca
     const trk_real pi = TRK_REAL_C(3.14159265358979323846);
     const trk_real hit = second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j] -
                          trk_log(2 * pi) - TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
-    return pair_log_odds(t, scan, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr, dt_pc) +
+    return pair_log_odds(t, scan, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr,
+                         pair_log_disp(t, cp, r_p, c->x_m, c->y_m, r_c, dt_pc)) +
            hit;
 }
 
@@ -504,10 +524,12 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
     const trk_real dt = rr->dt_s[run_k];
     trk_real r_c[NZ * NZ], x[NX], p[NX * NX];
     candidate_r(c, r_c);
-    /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) - ln A_v, or
-     * the three points' when c ended a refused pair that j continues */
+    /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) + ln N(z_j - z_c;
+     * 0, R_c + R_j + s_v^2 dt^2 I), or the three points' when c ended a
+     * refused pair that j continues */
     const trk_real log_odds =
-        pair_log_odds(t, scan, run, c, second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j], dt);
+        pair_log_odds(t, scan, run, c, second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j],
+                      pair_log_disp(t, c, r_c, t->ws.x[j], t->ws.y[j], r_j, dt));
     const trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt);
     const trk_real psi0 = initial_existence(t, log_odds3 > -TRK_REAL_MAX ? log_odds3 : log_odds);
     const trk_real z_c[NZ] = {c->x_m, c->y_m}, z_j[NZ] = {t->ws.x[j], t->ws.y[j]};

@@ -51,12 +51,13 @@ static const struct trk_track *only_live_track(void)
 }
 
 /* Two detections 4 s apart start one track: x = z2, v = (z2 - z1) / dt,
- * P_pp = R, P_pv = R / dt, P_vv = 2 R / dt^2, existence from the odds
- * beta / lambda * P_D / (lambda pi (v_max dt)^2). */
+ * P_pp = R, P_pv = R / dt, P_vv = 2 R / dt^2 (then the velocity prior),
+ * existence from the odds beta / lambda * P_D / lambda * N(z2 - z1; 0,
+ * 2 R + s^2 dt^2 I). */
 static void test_two_point_start(void **state)
 {
     (void)state;
-    const double lambda = 1e-5, beta = 1e-9, pd = 0.8, vmax = 15;
+    const double lambda = 1e-5, beta = 1e-9, pd = 0.8;
     struct trk_tracker_params p;
     sonar_params(&p, lambda);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
@@ -92,10 +93,57 @@ static void test_two_point_start(void **state)
     TRK_ASSERT_NEAR(tr->p[P(VY, VY)], pvv * s2 / den, 0, tol);
     assert_true(trk_fabs(tr->p[P(X, Y)]) < 1e-12 && trk_fabs(tr->p[P(X, VY)]) < 1e-12 &&
                 trk_fabs(tr->p[P(VX, VY)]) < 1e-12);
-    const double odds = beta / lambda * pd / (lambda * 3.14159265358979323846 * pow(vmax * SCAN_S, 2));
+    /* the displacement (40, 20) m under the velocity prior and the two
+     * points' noise: N(dz; 0, (2 R + s^2 dt^2) I) */
+    const double var = 50 + s2 * SCAN_S * SCAN_S;
+    const double dens = exp(-0.5 * (40.0 * 40.0 + 20.0 * 20.0) / var) / (2 * 3.14159265358979323846 * var);
+    const double odds = beta / lambda * pd / lambda * dens;
     TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
     TRK_ASSERT_NEAR(tr->vis.pv, tr->existence0, 0, 0);
     assert_int_equal(tr->n_hits, 2);
+}
+
+/* A detection's partner is the candidate of the highest ln l^a + ln N(dz;
+ * 0, R_c + R + s^2 dt^2 I), the model that also gives the pair's odds: of
+ * candidate A 60 m away with R = 1 m^2 and B 80 m away with R = 1e4 m^2
+ * (its position known to 100 m), B explains the detection better (the
+ * density of 80 m under 10 401 m^2 against 60 m under 402 m^2), though A is
+ * nearer; the track's existence is B's pair's, in closed form. */
+static void test_pair_by_displacement_density(void **state)
+{
+    (void)state;
+    const double lambda = 1e-5, beta = 1e-9, pd = 0.8, pi = 3.14159265358979323846;
+    struct trk_tracker_params p;
+    sonar_params(&p, lambda);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const double s2 = p.init_speed_sigma_mps * p.init_speed_sigma_mps;
+    struct trk_scan_report rep;
+    struct trk_detection c[2] = {det_at(0, 0), det_at(-20, 0)};
+    c[0].has_cov = c[1].has_cov = 1;
+    c[0].cov_m2[TRK_COV2_XX] = c[0].cov_m2[TRK_COV2_YY] = 1;
+    c[1].cov_m2[TRK_COV2_XX] = c[1].cov_m2[TRK_COV2_YY] = 1e4;
+    c[0].cov_m2[TRK_COV2_XY] = c[1].cov_m2[TRK_COV2_XY] = 0;
+    TRK_ASSERT_OK(run_scan(0, c, 2, &rep));
+    assert_int_equal(rep.n_candidates, 2);
+    struct trk_detection d = det_at(60, 0);
+    d.has_cov = 1;
+    d.cov_m2[TRK_COV2_XX] = d.cov_m2[TRK_COV2_YY] = 1;
+    d.cov_m2[TRK_COV2_XY] = 0;
+    TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+    assert_int_equal(rep.n_started, 1);
+    assert_int_equal(rep.n_candidates, 1); /* A is left */
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    const double var_a = 2 + s2 * SCAN_S * SCAN_S, var_b = 1e4 + 1 + s2 * SCAN_S * SCAN_S;
+    const double dens_a = exp(-0.5 * 60 * 60 / var_a) / (2 * pi * var_a);
+    const double dens_b = exp(-0.5 * 80 * 80 / var_b) / (2 * pi * var_b);
+    assert_true(dens_b > dens_a);
+    const double odds = beta / lambda * pd / lambda * dens_b;
+    TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
+    /* its velocity points from B: (z - z_B) / dt = 20 m/s east, shrunk by
+     * the prior (per axis, P_vv = (1e4 + 1) / dt^2 against s^2) */
+    const double pvv = (1e4 + 1) / (SCAN_S * SCAN_S);
+    TRK_ASSERT_NEAR(tr->x[VX], 80 / SCAN_S * s2 / (pvv + s2), 0, TRK_REAL_IS_FLOAT ? 1e-4 : 1e-10);
 }
 
 /* The velocity gate: |dz| <= v_max dt + sqrt(gamma lambda_max(R1 + R2)),
@@ -645,6 +693,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_two_point_start),
+        cmocka_unit_test(test_pair_by_displacement_density),
         cmocka_unit_test(test_velocity_gate_and_lifetime),
         cmocka_unit_test(test_candidate_store),
         cmocka_unit_test(test_existence_rejects_clutter_pair),

@@ -481,12 +481,12 @@ enum trk_init_method {
  *   |z - z_c| <= max_speed_mps dt + sqrt(gamma lambda_max(R_c + R))
  * (gamma the sensor's gate); the track starts at x = z, v = (z - z_c) / dt,
  * P_pp = R, P_pv = R / dt, P_vv = (R_c + R) / dt^2 (per axis pair, with the
- * xy terms). A detection pairs with the candidate of the highest
- * ln l^a(z_c) - ln max(r, sqrt(tr(R_c + R))), r = |z - z_c| (a speed uniform
- * in [0, v_max] puts r at density 1 / (2 pi r v_max dt): nearer partners
- * weigh more; measured against "highest l^a, then nearest" and "nearest",
- * within the seeds' intervals on both trk-sim mtt families); a candidate
- * serves one track. Detections are taken in the workspace's order (by the
+ * xy terms), then the velocity prior v ~ N(0, s_v^2 I), s_v =
+ * init_speed_sigma_mps, fused in. A detection pairs with the candidate of
+ * the highest ln l^a(z_c) + ln N(z - z_c; 0, R_c + R + s_v^2 dt^2 I): the
+ * density of the displacement under that prior and the two points' noise,
+ * the same density as in the pair's odds below; a candidate serves one
+ * track. Detections are taken in the workspace's order (by the
  * cells of gating's 2-D index, then in scan order; ties of the score: the
  * candidate of smaller x). A candidate pairs with detections of the next
  * max_gap_scans scans (scans processed by this tracker, any sensor), then
@@ -501,10 +501,12 @@ enum trk_init_method {
  * false-alarm density, times the amplitude likelihood ratio l^a of each
  * detection (1 without an amplitude model)), as odds:
  *   single point: O = beta l^a(z) / lambda
- *   two points:   O = beta l^a(z_c) / lambda_c * P_D l^a(z) / (lambda A_v),
- *                 A_v = pi (max_speed_mps dt)^2 (the target's second point is
- *                 uniform over the reachable disc; a clutter one has density
- *                 lambda)
+ *   two points:   O = beta l^a(z_c) / lambda_c * P_D l^a(z) / lambda
+ *                     * N(z - z_c; 0, R_c + R + s_v^2 dt^2 I)
+ *                 (the target's second point at the density of its
+ *                 displacement under the velocity prior and the two
+ *                 points' noise, truncated by the gate and not
+ *                 renormalised; a clutter one has density lambda)
  *   three points: a pair refused for want of a slot leaves its second
  *                 point a candidate that remembers the first; a detection
  *                 that pairs with it inside the gate of that pair's track
@@ -585,7 +587,11 @@ struct trk_tracker_params {
     trk_real process_noise_q;                         /**< m^2/s^3 (docs/conventions.md), >= 0 */
     trk_real gate_prob;                               /**< P_G, (0, 1) */
     enum trk_clutter_mode clutter;                    /**< parametric: the sensor's density */
-    trk_real init_speed_sigma_mps;                    /**< velocity prior std per axis, > 0 */
+    trk_real init_speed_sigma_mps;                    /**< velocity prior std per axis, > 0: a
+                                                         single-point track's velocity, fused
+                                                         into a two-point track's, and the
+                                                         density of a pair's displacement
+                                                         (trk_init_params) */
     trk_real max_dt_s;                                /**< longest gap between scans, [1e-6, 1e9]
                                                          (TRK_MAX_DT_S_MIN: the scan times'
                                                          resolution, 1 us; to the nearest us);
