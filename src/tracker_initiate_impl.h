@@ -292,6 +292,19 @@ static void candidate_r(const struct trk_candidate *c, trk_real *r)
     trk_i_cov2_matrix(c->cov_m2, r); /* stored from a checked detection */
 }
 
+/* ln N(e; 0, S) of the 2-D point e = (ex, ey), S 2x2 SPD in s (closed-form
+ * inverse), and its d^2 = e' S^-1 e in *d2; -TRK_REAL_MAX when S is not
+ * positive definite. The one Gaussian of initiation: a pair's displacement
+ * (pair_log_disp) and a third point's hit (three_point_log_odds). */
+static TRK_NOINLINE trk_real log_normal2(const trk_real *s, trk_real ex, trk_real ey, trk_real *d2)
+{
+    const trk_real pi = TRK_REAL_C(3.14159265358979323846);
+    const trk_real a = s[S(ZX, ZX)], b = s[S(ZX, ZY)], c = s[S(ZY, ZY)], det = a * c - b * b;
+    if (!(a > 0 && det > 0)) return -TRK_REAL_MAX;
+    *d2 = (c * ex * ex - 2 * b * ex * ey + a * ey * ey) / det;
+    return -trk_log(2 * pi) - TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * *d2;
+}
+
 /* ln of the density of the displacement from candidate c (R_c r_c) to
  * the point (x, y) of covariance R r, dt later, under the velocity prior of
  * a new track, v ~ N(0, s_v^2 I) with s_v = init_speed_sigma_mps (the prior
@@ -302,16 +315,15 @@ static void candidate_r(const struct trk_candidate *c, trk_real *r)
  * (pair_log_odds). The velocity gate (max_speed_mps) truncates it; the mass
  * it cuts off (a speed beyond v_max, 1.1 % at the defaults' 3 s_v) is not
  * renormalised. -TRK_REAL_MAX when the sum is not positive definite. */
-static TRK_NOINLINE trk_real pair_log_disp(const struct trk_tracker *t, const struct trk_candidate *c,
-                                           const trk_real *r_c, trk_real x, trk_real y, const trk_real *r, trk_real dt)
+static trk_real pair_log_disp(const struct trk_tracker *t, const struct trk_candidate *c, const trk_real *r_c,
+                              trk_real x, trk_real y, const trk_real *r, trk_real dt)
 {
-    const trk_real pi = TRK_REAL_C(3.14159265358979323846), sv = t->params.init_speed_sigma_mps * dt;
-    const trk_real a = r_c[S(ZX, ZX)] + r[S(ZX, ZX)] + sv * sv, b = r_c[S(ZX, ZY)] + r[S(ZX, ZY)];
-    const trk_real cc = r_c[S(ZY, ZY)] + r[S(ZY, ZY)] + sv * sv, det = a * cc - b * b;
-    if (!(a > 0 && det > 0)) return -TRK_REAL_MAX;
-    const trk_real dx = x - c->x_m, dy = y - c->y_m;
-    const trk_real d2 = (cc * dx * dx - 2 * b * dx * dy + a * dy * dy) / det;
-    return -trk_log(2 * pi) - TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
+    const trk_real sv = t->params.init_speed_sigma_mps * dt;
+    trk_real s[NZ * NZ], d2;
+    for (int i = 0; i < NZ * NZ; i++) s[i] = r_c[i] + r[i];
+    s[S(ZX, ZX)] += sv * sv;
+    s[S(ZY, ZY)] += sv * sv;
+    return log_normal2(s, x - c->x_m, y - c->y_m, &d2);
 }
 
 /* The slot in t->run of run k of the store (0 the oldest). */
@@ -495,14 +507,10 @@ static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_sca
     s[S(ZY, ZY)] += qp;
     const trk_real ex = t->ws.x[j] - (c->x_m + a * (c->x_m - cp->x_m));
     const trk_real ey = t->ws.y[j] - (c->y_m + a * (c->y_m - cp->y_m));
-    const trk_real det = s[S(ZX, ZX)] * s[S(ZY, ZY)] - s[S(ZX, ZY)] * s[S(ZX, ZY)];
-    if (!(det > 0)) return -TRK_REAL_MAX;
-    const trk_real d2 =
-        (s[S(ZY, ZY)] * ex * ex - 2 * s[S(ZX, ZY)] * ex * ey + s[S(ZX, ZX)] * ey * ey) / det;
-    if (!(d2 <= t->pda[scan->sensor_id].gamma)) return -TRK_REAL_MAX;
-    const trk_real pi = TRK_REAL_C(3.14159265358979323846);
-    const trk_real hit = second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j] -
-                         trk_log(2 * pi) - TRK_REAL_C(0.5) * trk_log(det) - TRK_REAL_C(0.5) * d2;
+    trk_real d2 = 0;
+    const trk_real log_n = log_normal2(s, ex, ey, &d2);
+    if (log_n == -TRK_REAL_MAX || !(d2 <= t->pda[scan->sensor_id].gamma)) return -TRK_REAL_MAX;
+    const trk_real hit = second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j] + log_n;
     return pair_log_odds(t, scan, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr,
                          pair_log_disp(t, cp, r_p, c->x_m, c->y_m, r_c, dt_pc)) +
            hit;
