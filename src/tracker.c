@@ -48,6 +48,7 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     rep.n_detections = (uint32_t)scan->n_detections;
     t->scan_no++;
     see_from(t, scan);
+    rep.persistent_share = t->ws.persistent_share;
     free_terminated(t);
     struct thin th = {0, 0, 0, 0, 0, 1, 0, 0};
     load_detections(t, scan, &th, &rep);
@@ -101,7 +102,8 @@ static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan 
 
 /* The scan's sensor from its pose (the scan's, or the sensor's fixed
  * one), with its clutter map as it stands before the scan: the view every
- * stage asks for R, P_D and lambda at a position. */
+ * stage asks for R, P_D and lambda at a position; and the share of
+ * persistent returns no held track explains (the amplitude mixture's). */
 static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
@@ -112,6 +114,11 @@ static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
                        t->clutter_map_scans[scan->sensor_id]);
 #endif
     t->ws.pd_scale = t->ws.lambda_scale = t->ws.pd_power = 1;
+#if TRK_WITH_JOINT
+    t->ws.persistent_share = unexplained_persistent_share(t, scan);
+#else
+    t->ws.persistent_share = sp->persistent_share;
+#endif
 }
 
 /* The share of a scan's clutter that a thinning without the amplitude

@@ -15,6 +15,9 @@
  *   - a target moving clearly (8 m/s, sigma 5 m, 4 s) is confirmed at the
  *     same scan with the hold as without it;
  *   - stationary_d2 = 0 confirms the scatterer (the hold off);
+ *   - with persistent returns in the amplitudes, each scan's mixture takes
+ *     the sensor's share less the returns the held tracks explain (closed
+ *     form from the table before the scan; per-track PDA: the sensor's);
  *   - the parameter check. */
 #include "trk_test.h"
 #include "trk/tracker.h"
@@ -220,6 +223,63 @@ static void test_hold_off_confirms_the_return(void **state)
     assert_int_equal(confirmed, 1);
 }
 
+/* The share of persistent returns a scan's amplitude mixture takes
+ * (trk_scan_report persistent_share): with the sensor's eta of the n
+ * detections on scatterers, and each tentative track standing still
+ * explaining pv P_s of them, n_u = max(eta n - sum pv P_s, P_s) and
+ * eta' = n_u / ((1 - eta) n + n_u). A scatterer with a strong return and
+ * 9 weak clutter points a scan, 40 scans; joint association, or per-track
+ * PDA (there eta stays). */
+static int persistent_scans(enum trk_assoc_method assoc)
+{
+    const double eta = 0.2, p_s = 0.9;
+    struct trk_tracker_params p;
+    params(&p);
+    p.association = assoc;
+    p.sensor[0].use_amplitude = 1;
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, 15, TRK_REAL_C(1e-2)));
+    p.sensor[0].persistent_share = (trk_real)eta;
+    p.sensor[0].persistent_pd = (trk_real)p_s;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const trk_real thr = p.sensor[0].amplitude.threshold;
+    uint64_t rng = 5;
+    int discounted = 0;
+    for (int k = 0; k < 40; k++) {
+        double held = 0;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *tr = trk_tracker_track(&tk, i);
+            if (tr && tr->status == TRK_TRACK_TENTATIVE && velocity_d2(tr) < (double)p.stationary_d2)
+                held += (double)tr->vis.pv * p_s;
+        }
+        struct trk_detection d[10];
+        memset(d, 0, sizeof d);
+        d[0].x_m = (trk_real)(1000 + 5 * trk_test_nrand(&rng));
+        d[0].y_m = (trk_real)(2000 + 5 * trk_test_nrand(&rng));
+        d[0].amplitude = 3 * thr;
+        for (int i = 1; i < 10; i++) {
+            d[i].x_m = (trk_real)(20000 * trk_test_urand(&rng) - 10000);
+            d[i].y_m = (trk_real)(20000 * trk_test_urand(&rng) - 10000);
+            d[i].amplitude = thr * (trk_real)(1 + 0.2 * trk_test_urand(&rng));
+        }
+        for (int i = 0; i < 10; i++) d[i].has_amplitude = 1;
+        const struct trk_scan s = {SEC(k), 0, 10, d, NULL, 0, {0, 0, 0}};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+        const double n_u = fmax(eta * 10 - held, p_s);
+        const double want = assoc == TRK_ASSOC_JOINT ? n_u / ((1 - eta) * 10 + n_u) : eta;
+        TRK_ASSERT_NEAR((double)rep.persistent_share, want, 0, 1e-5);
+        discounted += want < eta - 1e-6;
+    }
+    return discounted;
+}
+
+static void test_held_tracks_explain_persistent_returns(void **state)
+{
+    (void)state;
+    assert_true(persistent_scans(TRK_ASSOC_JOINT) >= 30); /* the scatterer held from its first pings */
+    assert_int_equal(persistent_scans(TRK_ASSOC_PDA), 0);
+}
+
 static void test_param_check(void **state)
 {
     (void)state;
@@ -242,6 +302,7 @@ int main(void)
         cmocka_unit_test(test_confirmed_track_that_stops_is_held),
         cmocka_unit_test(test_mover_not_delayed),
         cmocka_unit_test(test_hold_off_confirms_the_return),
+        cmocka_unit_test(test_held_tracks_explain_persistent_returns),
         cmocka_unit_test(test_param_check),
     };
     return trk_run_tests("stationary", tests, NULL, NULL);

@@ -850,6 +850,11 @@ struct trk_scan_report {
                                        detection (0: thinned without amplitudes) */
     trk_real thin_pd;               /**< P_D and clutter density (per m^2) of the kept part */
     trk_real thin_clutter_density;  /**< of the class the cut fell in */
+    /* persistent returns in the amplitudes (struct trk_sensor_params persistent_share) */
+    trk_real persistent_share;      /**< the share the scan's amplitude mixture took: the
+                                       sensor's, less the returns its held tracks explain
+                                       (joint association; docs/tracker.md "Amplitudes on a
+                                       sonar"); 0 without persistent returns */
 };
 
 /* ---------------------------------------------------------------- tracker */
@@ -981,6 +986,9 @@ struct trk_tracker {
         trk_real pd_scale;                                     /**< a thinned scan's P_D over the
                                                                   sensor's (its profile's factor) */
         trk_real lambda_scale;                                 /**< the same for lambda */
+        trk_real persistent_share;                             /**< the sensor's eta less the returns
+                                                                  its held tracks explain (this
+                                                                  scan's amplitude mixture) */
         trk_real pd_power;                                     /**< with amplitudes and a P_D
                                                                   profile: P_D' = P_D^pd_power
                                                                   (Rayleigh; 1 unthinned) */

@@ -243,6 +243,7 @@ static const struct layout_row report_rows[] = {
     REAL(struct trk_scan_report, thin_threshold, 1, "", ">= 0 (0: thinned without amplitudes)"),
     REAL(struct trk_scan_report, thin_pd, 1, "", "[0, 1]"),
     REAL(struct trk_scan_report, thin_clutter_density, 1, "1/m^2", ">= 0"),
+    REAL(struct trk_scan_report, persistent_share, 1, "", "[0, 1)"),
 };
 #undef R
 
