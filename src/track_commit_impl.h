@@ -68,7 +68,8 @@ static void commit(struct trk_tracker *t, struct trk_track *tr, const struct trk
 
 /* The clutter tests' inputs (Kennedy eqs 5-9, 13-15): the scan's detection
  * nearest the prediction (smallest d2 with the sensor's S), rho V_g of the
- * ellipse it encloses, and its amplitude (dB) against the scan's others
+ * ellipse it encloses (rho the clutter density at the track, as its PDA
+ * weights take it), and its amplitude (dB) against the scan's others
  * (workspace amp_db holds the amplitudes twice over, so the others of entry
  * k are the n_amp - 1 entries from k + 1). */
 static void clutter_look(const struct trk_tracker *t, const struct trk_innovation *inn, trk_real rho,
@@ -99,7 +100,7 @@ static void clutter_look(const struct trk_tracker *t, const struct trk_innovatio
 /* What this scan told the track's tests: the one place a look is built
  * (the M/N test's first look at initiation apart). */
 static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
-                       const struct trk_innovation *inn, const struct trk_i_pda_out *out, struct trk_look *look)
+                       const struct pred *pr, const struct trk_i_pda_out *out, struct trk_look *look)
 {
     look->seen = 1;
     look->detected = tr->n_gated_last > 0;
@@ -115,7 +116,8 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     look->n_others = 0;
     look->a_others_db = t->ws.amp_db;
     if (tr->status == TRK_TRACK_TENTATIVE && trk_i_confirm_needs_nearest(&t->params) && t->ws.n_valid > 0)
-        clutter_look(t, inn, t->pda[scan->sensor_id].params.clutter_density, look);
+        clutter_look(t, &pr->inn, pr->pda->params.clutter_density, look); /* lambda at the track: its
+                                                                             profile's and the map's */
 }
 
 /* A track the scan's sensor cannot see (P_D 0 at its prediction pr): its
@@ -135,7 +137,7 @@ static int track_unseen(struct trk_tracker *t, struct trk_track *tr, const struc
         trk_visibility_update_posterior(&t->vis_model, &vis, trk_visibility_predict(&t->vis_model, &vis)) != TRK_OK)
         return -1;
     commit(t, tr, scan, &set, t->ws.cand, pr, &vis, out.beta0);
-    build_look(t, tr, scan, &pr->inn, &out, look);
+    build_look(t, tr, scan, pr, &out, look);
     look->seen = 0;
     return over_covariance_bound(pr->bound_m2, tr->p);
 }

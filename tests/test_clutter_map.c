@@ -14,11 +14,14 @@
  *   - a scan of twice the capacity, thinned, counts the whole scan (each
  *     kept detection weighted by 1 / the kept share);
  *   - the parameter check names the field; the accessor's refusals;
+ *   - Kennedy's clutter-density test weighs rho V_g with the map's density
+ *     at the track's prediction (closed form of its window's entry);
  *   - the nonparametric density with detections of their own covariance:
  *     lambda = m_G / V_G with V_G the mean of the gated detections' own
  *     gate volumes (beta0 of a lone track, closed form). */
 #include "trk_test.h"
 #include "trk_test_sonar.h"
+#include "trk/gate.h"
 #include "trk/kalman.h"
 #include "trk/tracker.h"
 
@@ -361,6 +364,72 @@ static void test_nonparametric_own_volumes(void **state)
     TRK_ASSERT_NEAR(tr->beta0_last, b / (b + esum), 0, TRK_TOL(1e-9, 1e-4));
 }
 
+#if TRK_WITH_CLUTTER_TESTS
+/* A tentative track's clutter-density test (Kennedy eqs 5-9) takes rho V_g
+ * with rho the density at the track as its PDA weights do, the map's: each
+ * look's window entry is lambda_map(prediction) times the volume of the
+ * ellipse through the scan's nearest detection, S = P_pred + R. A
+ * Cartesian sensor (R 25 I) with the map's coverage, lambda 1e-5; a
+ * target standing at 4 km, 15 deg (sigma 5 m) every scan and 12 clutter
+ * points a scan at 4.8-4.9 km, 25 deg, in its cell (the cell's ratio
+ * falls to about 0.3 by scan 2: the configured density expects 42 a scan
+ * there). alpha 1e-12 keeps the first looks tentative. */
+static void test_clutter_test_takes_map_density(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    struct trk_sensor_params *sp = &p.sensor[0];
+    sp->kind = TRK_SENSOR_CARTESIAN;
+    sp->meas_cov_m2[TRK_COV2_XX] = sp->meas_cov_m2[TRK_COV2_YY] = 25;
+    sp->meas_cov_m2[TRK_COV2_XY] = 0;
+    sp->clutter_density_per_m2 = TRK_REAL_C(1e-5);
+    p.confirm.method = TRK_CONFIRM_CLUTTER_CHI2;
+    p.confirm.u.chi2.alpha = TRK_REAL_C(1e-12);
+    p.confirm.u.chi2.kmax = 25;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const double x0 = polar_x(4000, 15), y0 = polar_y(4000, 15);
+    const trk_real h[8] = {1, 0, 0, 0, 0, 0, 1, 0}, r[4] = {25, 0, 0, 25};
+    uint64_t rng = 3;
+    int checked = 0;
+    for (int k = 0; k < 5; k++) {
+        /* the target's tentative track before the scan, predicted */
+        const struct trk_track *tr = NULL;
+        for (size_t i = 0; i < TRK_MAX_TRACKS && !tr; i++) {
+            const struct trk_track *c = trk_tracker_track(&tk, i);
+            if (c && c->status == TRK_TRACK_TENTATIVE &&
+                hypot((double)c->x[TRK_CV2_X] - x0, (double)c->x[TRK_CV2_Y] - y0) < 50)
+                tr = c;
+        }
+        trk_real x[TRK_CV2_NX], pp[TRK_CV2_NX * TRK_CV2_NX];
+        double lambda = 0;
+        const uint32_t id = tr ? tr->id : 0;
+        if (tr) {
+            memcpy(x, tr->x, sizeof x);
+            memcpy(pp, tr->p, sizeof pp);
+            TRK_ASSERT_OK(trk_cv2_predict(8, p.process_noise_q, x, pp));
+            lambda = lambda_at(&tk, (double)x[TRK_CV2_X], (double)x[TRK_CV2_Y]);
+        }
+        struct trk_detection d[13];
+        d[0] = trk_test_det_at(x0 + 5 * trk_test_nrand(&rng), y0 + 5 * trk_test_nrand(&rng));
+        for (int i = 1; i < 13; i++) d[i] = trk_test_det_at(polar_x(4800 + 10 * i, 25), polar_y(4800 + 10 * i, 25));
+        const struct trk_scan s = {SCAN_US(k), 0, 13, d, NULL, 0, {0, 0, 0}};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+        if (!tr || tr->id != id || tr->status != TRK_TRACK_TENTATIVE) continue;
+        struct trk_innovation inn;
+        TRK_ASSERT_OK(trk_kalman_innovation(TRK_CV2_NX, TRK_CV2_NZ, h, r, x, pp, &inn));
+        const trk_real nu[2] = {d[0].x_m - inn.z_pred[0], d[0].y_m - inn.z_pred[1]};
+        const struct trk_clutter_chi2 *c = &tr->test.confirm.chi2;
+        const double got = (double)c->win[(c->head + p.confirm.u.chi2.kmax - 1) % p.confirm.u.chi2.kmax];
+        TRK_ASSERT_NEAR(got, lambda * (double)trk_gate_volume_inn(&inn, trk_gate_d2(&inn, nu)), 0, TRK_TOL(1e-9, 1e-3));
+        assert_true(lambda < 0.5e-5); /* the map's density, not the configured one */
+        checked++;
+    }
+    assert_true(checked >= 2);
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -371,6 +440,9 @@ int main(void)
         cmocka_unit_test(test_thinned_scan_counts_all),
         cmocka_unit_test(test_params_and_refusals),
         cmocka_unit_test(test_nonparametric_own_volumes),
+#if TRK_WITH_CLUTTER_TESTS
+        cmocka_unit_test(test_clutter_test_takes_map_density),
+#endif
     };
     return trk_run_tests("clutter_map", tests, NULL, NULL);
 }
