@@ -86,6 +86,10 @@ static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan 
     if (scan->n_detections > 0 && !scan->detections == !scan->polar) return TRK_E_ARG;
     if (scan->polar && t->params.sensor[scan->sensor_id].kind != TRK_SENSOR_POLAR) return TRK_E_ARG;
     if (scan->has_pose != 0 && scan->has_pose != 1) return TRK_E_ARG;
+    /* the caller's densities stand in for lambda as ratios to the tracker's own */
+    if (scan->clutter_density_per_m2 && (t->params.clutter != TRK_CLUTTER_PARAMETRIC ||
+                                          !(t->params.sensor[scan->sensor_id].clutter_density_per_m2 > 0)))
+        return TRK_E_UNSUPPORTED;
     if (scan->has_pose) {
         const struct trk_pose *o = &scan->pose;
         if (!isfinite(o->x_m) || !isfinite(o->y_m) || !isfinite(o->heading_rad)) return TRK_E_NAN;

@@ -105,6 +105,12 @@ static const struct trk_detection *scan_detection(const struct trk_tracker *t, c
     return tmp;
 }
 
+/* The caller's clutter density at scan detection i (NULL: none given). */
+static const trk_real *caller_density(const struct trk_scan *scan, size_t i)
+{
+    return scan->clutter_density_per_m2 ? &scan->clutter_density_per_m2[i] : NULL;
+}
+
 /* TRK_OK for a usable detection, else why not: TRK_E_NAN non-finite
  * position or covariance, TRK_E_NOT_SPD covariance, TRK_E_RANGE amplitude
  * NaN, infinite or negative. */
@@ -122,9 +128,10 @@ static trk_status check_detection(const struct trk_detection *d)
  * 19-20, once per scan; with a P_D profile, the target SNR of the
  * profile's P_D at the detection's range: trk_amplitude_log_lr_at_pd; with
  * persistent returns over their mixture with the clutter),
- * refusing amplitudes below the threshold. */
-static int detection_usable(const struct trk_detection *d, const struct amp_use *au, struct trk_scan_report *rep,
-                            trk_real *llr)
+ * refusing amplitudes below the threshold; the caller's clutter density
+ * lambda_c (NULL: none) must be finite and > 0. */
+static int detection_usable(const struct trk_detection *d, const trk_real *lambda_c, const struct amp_use *au,
+                            struct trk_scan_report *rep, trk_real *llr)
 {
     if (isfinite(d->x_m) && isfinite(d->y_m) && !(trk_fabs(d->x_m) <= au->max_coord_m && trk_fabs(d->y_m) <= au->max_coord_m)) {
         rep->n_rejected_region++; /* outside the surveillance bound: no position (trk/tracker.h) */
@@ -135,6 +142,10 @@ static int detection_usable(const struct trk_detection *d, const struct amp_use 
         if (st == TRK_E_NAN) rep->n_rejected_nonfinite++;
         else if (st == TRK_E_RANGE) rep->n_rejected_amplitude++;
         else rep->n_rejected_cov++;
+        return 0;
+    }
+    if (lambda_c && !(*lambda_c > 0 && *lambda_c <= TRK_REAL_MAX)) {
+        rep->n_rejected_density++;
         return 0;
     }
     *llr = 0; /* positions only: l^a = 1 */

@@ -13,13 +13,29 @@
 
 static void order_by_grid(struct trk_tracker *t, const struct trk_scan *scan);
 
+/* ln l^a of detection d with the caller's clutter density lambda_c there:
+ * ln(lambda(z) / lambda_c) added, lambda(z) the tracker's own at the
+ * detection. Every weight divides l^a by the tracker's lambda (PDA and
+ * joint weights and existence at the track, a new track's start value at
+ * the detection), so each then divides by lambda_c: exactly where the
+ * tracker's lambda is the same at the track and at the detection (a
+ * constant, a map cell or profile step wider than a gate). A thinned scan
+ * scales both alike. */
+static trk_real with_caller_density(const struct trk_tracker *t, const struct trk_scan *scan,
+                                    const struct trk_detection *d, trk_real lambda_c, trk_real llr)
+{
+    return llr + trk_log(sensor_lambda_at(t, scan, d->x_m, d->y_m)) - trk_log(lambda_c);
+}
+
 /* Take scan detection i into the workspace, or count why not
  * (detection_usable). */
-static void load_detection(struct trk_tracker *t, const struct trk_detection *d, size_t i,
-                           const struct amp_use *au, struct trk_scan_report *rep)
+static void load_detection(struct trk_tracker *t, const struct trk_scan *scan, const struct trk_detection *d,
+                           size_t i, const struct amp_use *au, struct trk_scan_report *rep)
 {
     trk_real llr;
-    if (!detection_usable(d, au, rep, &llr)) return;
+    const trk_real *lambda_c = caller_density(scan, i);
+    if (!detection_usable(d, lambda_c, au, rep, &llr)) return;
+    if (lambda_c) llr = with_caller_density(t, scan, d, *lambda_c, llr);
     const size_t n = t->ws.n_valid++;
     t->ws.x[n] = d->x_m;
     t->ws.y[n] = d->y_m;
@@ -74,7 +90,7 @@ static TRK_NOINLINE void load_detections(struct trk_tracker *t, const struct trk
             if (scan->polar && !own) continue; /* converted, each has its own covariance */
             const struct trk_detection *d =
                 over && scan->polar ? kept_polar(t, scan, k, i, &tmp) : scan_detection(t, scan, i, &tmp, rep);
-            if (d && (d->has_cov != 0) == own) load_detection(t, d, i, &au, rep);
+            if (d && (d->has_cov != 0) == own) load_detection(t, scan, d, i, &au, rep);
         }
         if (!own) t->ws.n_shared = t->ws.n_valid;
     }

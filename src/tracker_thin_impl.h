@@ -219,7 +219,7 @@ static TRK_NOINLINE size_t thin_select(struct trk_tracker *t, const struct trk_s
         struct trk_detection tmp;
         const struct trk_detection *d = scan_detection(t, scan, i, &tmp, rep);
         trk_real llr;
-        if (!d || !detection_usable(d, au, rep, &llr)) continue;
+        if (!d || !detection_usable(d, caller_density(scan, i), au, rep, &llr)) continue;
         n_valid++;
         const uint8_t in = (uint8_t)thin_in_box(box, n_box, pmax, pda->gamma, d, t->r[scan->sensor_id]);
         n_gated += in;
@@ -280,23 +280,27 @@ struct thin_saved {
 };
 
 /* Each loaded ln l^a moved to the raised threshold (sign 1) or back (-1):
- * with persistent returns anew from its amplitude (every kept detection
- * has one: the cut fell among amplitudes); else by dl, or with a P_D
+ * with persistent returns by its amplitude's mixture there less here
+ * (every kept detection has one: the cut fell among amplitudes; a caller's
+ * clutter density folded in at load stays); else by dl, or with a P_D
  * profile and amplitudes by ln(pfa/pfa') -
  * ln(P_D'/P_D) at the detection's range, x1 - x0 with the target's
  * x1 = -(pd_power - 1) ln P_D(r) (Rayleigh). */
 static TRK_NOINLINE void thin_shift(struct trk_tracker *t, const struct trk_scan *scan, const struct thin *th,
                                     trk_real sign)
 {
-    if (th->mixture) { /* from each amplitude anew: amp_mixture_log_lr at x0 (or 0, back) */
+    if (th->mixture) { /* by each amplitude's amp_mixture_log_lr at x0 less at 0 (or back) */
         const struct amp_use au = amp_use_of(t, &t->params.sensor[scan->sensor_id], &t->ws.view);
+        const trk_real x_to = sign > 0 ? th->x0 : 0, x_from = sign > 0 ? 0 : th->x0;
         for (size_t j = 0; j < t->ws.n_valid; j++) {
             const size_t i = t->ws.src[j];
             struct trk_detection d = {t->ws.x[j], t->ws.y[j], {0, 0, 0}, 0, 0, 0};
             d.amplitude = scan->polar ? scan->polar[i].amplitude : scan->detections[i].amplitude;
-            trk_real llr;
-            if (amp_mixture_log_lr(&au, amp_pd(&au, &d), sign > 0 ? th->x0 : 0, d.amplitude, &llr) == TRK_OK)
-                t->ws.log_lr[j] = llr;
+            const trk_real pd = amp_pd(&au, &d);
+            trk_real to, from;
+            if (amp_mixture_log_lr(&au, pd, x_to, d.amplitude, &to) == TRK_OK &&
+                amp_mixture_log_lr(&au, pd, x_from, d.amplitude, &from) == TRK_OK)
+                t->ws.log_lr[j] += to - from;
         }
         return;
     }

@@ -93,7 +93,7 @@ static void test_closed_form(void **state)
     for (int i = 3; i < 15; i++) d[i].range_m = (trk_real)(1200 + 100 * i), d[i].bearing_rad = (trk_real)(-55 * DEG);
     const int K = 25;
     for (int k = 0; k < K; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, 15, NULL, d, 0, {0, 0, 0}};
+        const struct trk_scan s = {SCAN_US(k), 0, 15, NULL, d, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
         assert_int_equal(rep.n_confirmed, 0);
@@ -144,7 +144,7 @@ static void test_profile_integral(void **state)
     struct trk_polar_detection d = {5500, (trk_real)(-20 * DEG), 0, 0};
     const int K = 12;
     for (int k = 0; k < K; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, 1, NULL, &d, 0, {0, 0, 0}};
+        const struct trk_scan s = {SCAN_US(k), 0, 1, NULL, &d, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
     }
     /* lambda(r) = l0 + s (r - 1000): int over [5000, 7000] of lambda r dr */
@@ -176,7 +176,7 @@ static void test_confirmed_not_counted(void **state)
     const int K = 20;
     int kc = -1; /* the scan whose update confirmed the track */
     for (int k = 0; k < K; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, 1, NULL, &d, 0, {0, 0, 0}};
+        const struct trk_scan s = {SCAN_US(k), 0, 1, NULL, &d, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
         if (rep.n_confirmed > 0) {
@@ -219,8 +219,8 @@ static void test_polar_equals_cartesian(void **state)
             d[i].amplitude = 0;
             TRK_ASSERT_OK(trk_polar_to_cartesian(&p.sensor[0], &o, &d[i], &c[i]));
         }
-        const struct trk_scan sp = {SCAN_US(k), 0, 20, NULL, d, 0, {0, 0, 0}};
-        const struct trk_scan sc = {SCAN_US(k), 0, 20, c, NULL, 0, {0, 0, 0}};
+        const struct trk_scan sp = {SCAN_US(k), 0, 20, NULL, d, 0, {0, 0, 0}, NULL};
+        const struct trk_scan sc = {SCAN_US(k), 0, 20, c, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &sp, NULL));
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &sc, NULL));
     }
@@ -251,7 +251,7 @@ static void test_thinned_scan_counts_all(void **state)
         d[i].has_amplitude = 0;
         d[i].amplitude = 0;
     }
-    const struct trk_scan s = {SCAN_US(0), 0, N, NULL, d, 0, {0, 0, 0}};
+    const struct trk_scan s = {SCAN_US(0), 0, N, NULL, d, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
     assert_true(rep.n_thinned > 0);
@@ -328,7 +328,7 @@ static void test_nonparametric_own_volumes(void **state)
     d[0].has_cov = 1;
     d[0].cov_m2[TRK_COV2_XX] = d[0].cov_m2[TRK_COV2_YY] = 25;
     for (int k = 0; k < 12; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, 1, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan s = {SCAN_US(k), 0, 1, d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
     }
     const struct trk_track *tr = trk_tracker_track(&tk, 0);
@@ -346,7 +346,7 @@ static void test_nonparametric_own_volumes(void **state)
         d[j].cov_m2[TRK_COV2_XY] = (trk_real)rxy[j];
         d[j].cov_m2[TRK_COV2_YY] = (trk_real)ryy[j];
     }
-    const struct trk_scan s = {SCAN_US(12), 0, 2, d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan s = {SCAN_US(12), 0, 2, d, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
     const double gamma = -2 * log(1 - (double)p.gate_prob), pd = (double)p.sensor[0].pd;
@@ -412,7 +412,7 @@ static void test_clutter_test_takes_map_density(void **state)
         }
         struct trk_detection d[1];
         d[0] = trk_test_det_at(x0 + 5 * trk_test_nrand(&rng), y0 + 5 * trk_test_nrand(&rng));
-        const struct trk_scan s = {SCAN_US(k), 0, 1, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan s = {SCAN_US(k), 0, 1, d, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
         if (!tr || tr->id != id || tr->status != TRK_TRACK_TENTATIVE) continue;

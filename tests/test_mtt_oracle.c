@@ -15,7 +15,7 @@
 /* Scan k at k T_S holding det[0 .. n). */
 static struct trk_scan scan_at(long k, const struct trk_detection *det, size_t n)
 {
-    struct trk_scan s = {(int64_t)(k * T_S * 1e6), 0, n, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan s = {(int64_t)(k * T_S * 1e6), 0, n, det, NULL, 0, {0, 0, 0}, NULL};
     return s;
 }
 

@@ -55,7 +55,7 @@ static void scan_at(int k, double x, double y, uint64_t *rng, struct trk_scan_re
     memset(&d, 0, sizeof d);
     d.x_m = (trk_real)(x + 5 * trk_test_nrand(rng));
     d.y_m = (trk_real)(y + 5 * trk_test_nrand(rng));
-    const struct trk_scan s = {SEC(k), 0, 1, &d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan s = {SEC(k), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, rep));
 }
 
@@ -262,7 +262,7 @@ static int persistent_scans(enum trk_assoc_method assoc)
             d[i].amplitude = thr * (trk_real)(1 + 0.2 * trk_test_urand(&rng));
         }
         for (int i = 0; i < 10; i++) d[i].has_amplitude = 1;
-        const struct trk_scan s = {SEC(k), 0, 10, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan s = {SEC(k), 0, 10, d, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
         const double n_u = fmax(eta * 10 - held, p_s);

@@ -91,7 +91,7 @@ static void test_follow_target(void **state)
             det[n].has_cov = det[n].has_amplitude = 0;
             n++;
         }
-        struct trk_scan scan = {SEC(k), 0, n, det, NULL, 0, {0, 0, 0}};
+        struct trk_scan scan = {SEC(k), 0, n, det, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
         check_invariants(&tk);
@@ -128,7 +128,7 @@ static void test_termination_and_slot_reuse(void **state)
     for (int k = 0; k < 6; k++) {
         d.x_m = (trk_real)(2.0 * k);
         d.y_m = 0;
-        struct trk_scan scan = {SEC(k), 0, 1, &d, NULL, 0, {0, 0, 0}};
+        struct trk_scan scan = {SEC(k), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
     }
     assert_int_equal(count_status(&tk, TRK_TRACK_CONFIRMED), 1);
@@ -136,7 +136,7 @@ static void test_termination_and_slot_reuse(void **state)
     uint32_t id = tr->id;
     struct trk_scan_report rep;
     for (int k = 6; k < 11; k++) {
-        struct trk_scan empty = {SEC(k), 0, 0, NULL, NULL, 0, {0, 0, 0}};
+        struct trk_scan empty = {SEC(k), 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &empty, &rep));
         check_invariants(&tk);
         if (k < 10) assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
@@ -146,7 +146,7 @@ static void test_termination_and_slot_reuse(void **state)
     assert_int_equal(rep.n_terminated, 1);
     /* next scan: the slot is reused by a new track with a new id */
     d.x_m = 500;
-    struct trk_scan scan = {SEC(11), 0, 1, &d, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {SEC(11), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_started, 1);
     tr = trk_tracker_track(&tk, 0);
@@ -168,7 +168,7 @@ static void test_bad_input(void **state)
     memset(d, 0, sizeof d);
     d[0].x_m = 10;
     d[0].y_m = 10;
-    struct trk_scan scan = {SEC(5), 0, 1, d, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {SEC(5), 0, 1, d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
     static struct trk_tracker copy;
     memcpy(&copy, &tk, sizeof tk);
@@ -237,7 +237,7 @@ static void test_extreme_positions(void **state)
     d[1].x_m = -TRK_MAX_COORD_M_LIMIT;
     d[2].x_m = 10;
     struct trk_scan_report rep;
-    const struct trk_scan scan = {SEC(1), 0, 3, d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {SEC(1), 0, 3, d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_candidates, 3);
     assert_int_equal(tk.n_runs, 1);
@@ -272,7 +272,7 @@ static void test_absurd_coordinates(void **state)
             d[2].x_m = 100 + 5 * k, d[2].y_m = (trk_real)(big / 2); /* one coordinate only */
             d[3].x_m = 2 * TRK_MAX_COORD_M_DEFAULT;              /* just beyond the default */
             d[4].x_m = 100 + 5 * k, d[4].y_m = 50;               /* a real target */
-            const struct trk_scan scan = {SEC(k), 0, 5, d, NULL, 0, {0, 0, 0}};
+            const struct trk_scan scan = {SEC(k), 0, 5, d, NULL, 0, {0, 0, 0}, NULL};
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
             rejected += rep.n_rejected_region;
@@ -373,8 +373,8 @@ static void test_check_params(void **state)
     p.max_dt_s = TRK_REAL_C(1e-6); /* the least: scans 1 us apart */
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     {
-        const struct trk_scan s0 = {SEC(1), 0, 0, NULL, NULL, 0, {0, 0, 0}}, s1 = {SEC(1) + 1, 0, 0, NULL, NULL, 0, {0, 0, 0}},
-                               s2 = {SEC(1) + 3, 0, 0, NULL, NULL, 0, {0, 0, 0}};
+        const struct trk_scan s0 = {SEC(1), 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL}, s1 = {SEC(1) + 1, 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL},
+                               s2 = {SEC(1) + 3, 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, NULL));
         TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &s2, NULL), TRK_E_RANGE);
@@ -509,7 +509,7 @@ static void test_full_table(void **state)
         d[i].x_m = (trk_real)(1000.0 * (double)i); /* far apart: each starts a track */
         d[i].y_m = 0;
     }
-    struct trk_scan scan = {0, 0, n, d, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {0, 0, n, d, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     size_t cap = TRK_MAX_TRACKS;
@@ -553,7 +553,7 @@ static void test_covariance_bound_at_prediction(void **state)
             memset(&d, 0, sizeof d);
             for (int k = 0; k < 6; k++) {
                 d.x_m = (trk_real)(2.0 * k);
-                struct trk_scan scan = {SEC(k), 0, 1, &d, NULL, 0, {0, 0, 0}};
+                struct trk_scan scan = {SEC(k), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
                 TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
             }
             assert_int_equal(count_status(&tk, TRK_TRACK_CONFIRMED), 1);
@@ -572,7 +572,7 @@ static void test_covariance_bound_at_prediction(void **state)
             const uint32_t id = tr->id;
             d.x_m = (trk_real)(tr->x[X] + gap * tr->x[VX]);
             d.y_m = (trk_real)(tr->x[Y] + gap * tr->x[VY]);
-            struct trk_scan scan = {SEC(5 + gap), 0, 1, &d, NULL, 0, {0, 0, 0}};
+            struct trk_scan scan = {SEC(5 + gap), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
             check_invariants(&tk);
@@ -614,7 +614,7 @@ static void test_own_covariance(void **state)
         d[2].x_m = d[0].x_m - 2;
         d[2].y_m = d[0].y_m + 1;
         for (int i = 0; i < 3; i++) d[i].has_cov = 0;
-        struct trk_scan sa = {SEC(k), 0, 3, d, NULL, 0, {0, 0, 0}};
+        struct trk_scan sa = {SEC(k), 0, 3, d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&a, &sa, NULL));
         for (int i = 0; i < 3; i++) {
             d[i].has_cov = 1;
@@ -726,7 +726,7 @@ static void test_methods_lifecycle(void **state)
                 d[n].has_amplitude = 1;
                 d[n].amplitude = TRK_REAL_C(1.5); /* 3.5 dB */
                 n++;
-                struct trk_scan scan = {SEC(k), 0, n, d, NULL, 0, {0, 0, 0}};
+                struct trk_scan scan = {SEC(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
                 const int was_tentative = tr && tr->status == TRK_TRACK_TENTATIVE;
                 TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
                 check_invariants(&tk);
@@ -797,7 +797,7 @@ static void test_two_sensors(void **state)
     for (int k = 0; k < 20; k++) {
         d.x_m = (trk_real)(1.0 * k);
         d.y_m = (trk_real)(-0.5 * k);
-        struct trk_scan s = {SEC(k) / 2, (unsigned)(k % 2), 1, &d, NULL, 0, {0, 0, 0}};
+        struct trk_scan s = {SEC(k) / 2, (unsigned)(k % 2), 1, &d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
         check_invariants(&tk);
     }
@@ -834,7 +834,7 @@ static void test_amplitude_pdafai(void **state)
     memset(d, 0, sizeof d);
     d[0].has_amplitude = 1;
     d[0].amplitude = 4 * thr;
-    struct trk_scan s0 = {SEC(0), 0, 1, d, NULL, 0, {0, 0, 0}};
+    struct trk_scan s0 = {SEC(0), 0, 1, d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
     const struct trk_track *tr = trk_tracker_track(&tk, 0);
     assert_non_null(tr);
@@ -853,7 +853,7 @@ static void test_amplitude_pdafai(void **state)
     d[2].amplitude = TRK_REAL_C(0.5) * thr;
     d[3].amplitude = NAN;
     d[4].amplitude = -1;
-    struct trk_scan s1 = {SEC(1), 0, 5, d, NULL, 0, {0, 0, 0}};
+    struct trk_scan s1 = {SEC(1), 0, 5, d, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &rep));
     assert_amplitude_counts(&rep, 1, 2);
@@ -872,7 +872,7 @@ static void test_amplitude_pdafai(void **state)
             trk_real llr;
             TRK_ASSERT_STATUS(trk_amplitude_log_lr(&p.sensor[0].amplitude, huge[i], &llr), TRK_E_RANGE);
         }
-        struct trk_scan sh = {SEC(0), 0, 3, h, NULL, 0, {0, 0, 0}};
+        struct trk_scan sh = {SEC(0), 0, 3, h, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rh;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &sh, &rh));
         assert_amplitude_counts(&rh, 0, 3);
@@ -919,7 +919,7 @@ static void test_visibility_methods(void **state)
     trk_real pcv_prev = p.visibility.pcv0;
     for (int k = 0; k < 40; k++) {
         d.x_m = (trk_real)(2.0 * k);
-        struct trk_scan s = {SEC(k), 0, k < 15 ? 1u : 0u, &d, NULL, 0, {0, 0, 0}};
+        struct trk_scan s = {SEC(k), 0, k < 15 ? 1u : 0u, &d, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
         check_invariants(&tk);
@@ -990,7 +990,7 @@ static void test_merge_many(void **state)
                 d[i].x_m = (trk_real)(cx + 10 * trk_test_urand(&rs) + k);
                 d[i].y_m = (trk_real)(cy + 10 * trk_test_urand(&rs));
             }
-            struct trk_scan sc = {SEC(k), 0, n, d, NULL, 0, {0, 0, 0}};
+            struct trk_scan sc = {SEC(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
             struct trk_scan_report rep;
             uint32_t old_id = 0; /* tracks started in this scan came after the merge */
             for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
@@ -1029,13 +1029,13 @@ static void test_merge_duplicates(void **state)
         memset(d, 0, sizeof d);
         d[0].x_m = 0;
         d[1].x_m = TRK_REAL_C(1.5); /* scan 0: two detections of one target */
-        struct trk_scan s0 = {SEC(0), 0, 2, d, NULL, 0, {0, 0, 0}};
+        struct trk_scan s0 = {SEC(0), 0, 2, d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
         assert_int_equal(trk_tracker_live_count(&tk), 2);
         uint32_t merged = 0;
         for (int k = 1; k < 12; k++) {
             d[0].x_m = (trk_real)(1.0 * k);
-            struct trk_scan s = {SEC(k), 0, 1, d, NULL, 0, {0, 0, 0}};
+            struct trk_scan s = {SEC(k), 0, 1, d, NULL, 0, {0, 0, 0}, NULL};
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
             check_invariants(&tk);
@@ -1055,7 +1055,7 @@ static void test_merge_duplicates(void **state)
         assert_int_equal(alive, merge ? 1 : 2);
         assert_int_equal(merged, merge ? 1 : 0);
     }
-    struct trk_scan far = {TRK_TIME_US_MAX + 1, 0, 0, NULL, NULL, 0, {0, 0, 0}};
+    struct trk_scan far = {TRK_TIME_US_MAX + 1, 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &far, NULL), TRK_E_RANGE);
     far.time_us = -TRK_TIME_US_MAX - 1;
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &far, NULL), TRK_E_RANGE);
@@ -1080,13 +1080,13 @@ static void test_init_exclusion_and_visibility_reject(void **state)
         struct trk_detection d[2];
         memset(d, 0, sizeof d);
         for (int k = 0; k < 8; k++) { /* a confirmed track at rest at the origin */
-            struct trk_scan s = {SEC(k), 0, 1, d, NULL, 0, {0, 0, 0}};
+            struct trk_scan s = {SEC(k), 0, 1, d, NULL, 0, {0, 0, 0}, NULL};
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
         }
         const struct trk_track *tr = trk_tracker_track(&tk, 0);
         assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
         d[1].x_m = 8; /* d2 ~ 8^2 / S_xx: outside the 0.99 gate (9.2), inside 400 */
-        struct trk_scan s = {SEC(8), 0, 2, d, NULL, 0, {0, 0, 0}};
+        struct trk_scan s = {SEC(8), 0, 2, d, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
         assert_int_equal(rep.n_tracks_hit, 1);
@@ -1099,11 +1099,11 @@ static void test_init_exclusion_and_visibility_reject(void **state)
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_detection d;
     memset(&d, 0, sizeof d);
-    struct trk_scan s0 = {SEC(0), 0, 1, &d, NULL, 0, {0, 0, 0}};
+    struct trk_scan s0 = {SEC(0), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
     int rejected = 0;
     for (int k = 1; k < 20 && !rejected; k++) {
-        struct trk_scan s = {SEC(k), 0, 0, NULL, NULL, 0, {0, 0, 0}};
+        struct trk_scan s = {SEC(k), 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
         const struct trk_track *tr = trk_tracker_track(&tk, 0);
         if (tr && tr->status == TRK_TRACK_TERMINATED) {

@@ -65,7 +65,7 @@ static void one_target_scan(int k, uint64_t *rng, int detected)
 {
     const double ex = 5 * trk_test_nrand(rng), ey = 5 * trk_test_nrand(rng); /* in this order */
     struct trk_detection d = trk_test_det_at(100 + 3 * DT_S * k + ex, 50 - 2 * DT_S * k + ey);
-    const struct trk_scan s = {SCAN_US(k), 0, detected ? 1u : 0u, &d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan s = {SCAN_US(k), 0, detected ? 1u : 0u, &d, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk_cv, &s, &rep));
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk_ab, &s, &rep));
@@ -172,7 +172,7 @@ static void test_same_time_is_a_kalman_update(void **state)
     assert_non_null(tr);
     const struct trk_track before = *tr;
     struct trk_detection d = trk_test_det_at(before.x[TRK_CV2_X] + 6, before.x[TRK_CV2_Y] - 4);
-    const struct trk_scan s = {SCAN_US(19), 0, 1, &d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan s = {SCAN_US(19), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk_ab, &s, NULL));
     tr = only_track(&tk_ab);
     assert_non_null(tr);
@@ -192,7 +192,7 @@ static void test_two_targets_in_clutter(void **state)
     for (int k = 0; k < 40; k++) {
         struct trk_detection d[8];
         const size_t n = trk_test_pair_scan(k, DT_S, 60, 3, &rng, d);
-        const struct trk_scan s = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan s = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk_ab, &s, NULL));
     }
     int held[2] = {0, 0};

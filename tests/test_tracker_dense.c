@@ -42,7 +42,7 @@ static size_t formation_run(double spacing_m, double speed_mps, uint64_t seed, s
             d[i].x_m = (trk_real)(spacing_m * (i % 8) + speed_mps * SCAN_S * k + trk_test_nrand(&rng_state));
             d[i].y_m = (trk_real)(spacing_m * (i / 8) + trk_test_nrand(&rng_state));
         }
-        const struct trk_scan scan = {(int64_t)k * 4000000, 0, N_TGT, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {(int64_t)k * 4000000, 0, N_TGT, d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
         if (k == 10) *at10 = count_confirmed();
     }

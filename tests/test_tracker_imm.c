@@ -77,7 +77,7 @@ static void run_pair(enum trk_assoc_method assoc)
     for (int k = 0; k < 30; k++) {
         struct trk_detection d[8];
         const size_t n = trk_test_pair_scan(k, DT_S, 60, 3, &rng, d);
-        const struct trk_scan scan = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report r1, r2;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &r1));
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &scan, &r2));
@@ -123,7 +123,7 @@ static const struct trk_track *lone_track(enum trk_assoc_method assoc, struct tr
     uint64_t rng = 11;
     for (int k = 0; k < 8; k++) {
         struct trk_detection d = trk_test_det_at(5 * DT_S * k + 3 * trk_test_nrand(&rng), 3 * trk_test_nrand(&rng));
-        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
     }
     const struct trk_track *found = NULL;
@@ -164,7 +164,7 @@ static void lone_is_imm_pda(enum trk_assoc_method assoc)
     trk_real x[TRK_CV2_NX], pc[TRK_CV2_NX * TRK_CV2_NX];
     trk_imm_combine(&p.imm, &s, x, pc);
     /* the tracker's */
-    const struct trk_scan scan = {SCAN_US(8), 0, 3, d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {SCAN_US(8), 0, 3, d, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_started, 0);
@@ -183,7 +183,7 @@ static void lone_is_imm_pda(enum trk_assoc_method assoc)
     /* the target gone: the existence test ends the IMM track */
     int ended = 0;
     for (int k = 9; k < 40 && !ended; k++) {
-        const struct trk_scan empty = {SCAN_US(k), 0, 0, NULL, NULL, 0, {0, 0, 0}};
+        const struct trk_scan empty = {SCAN_US(k), 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &empty, &rep));
         if (rep.n_terminated > 0) {
             ended = k;
@@ -212,7 +212,7 @@ static void test_maneuver_d2(void **state)
     const struct trk_track *tr = NULL;
     for (int k = 0; k < 8; k++) {
         struct trk_detection d = trk_test_det_at(5 * DT_S * k, 0);
-        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
     }
     for (size_t i = 0; i < TRK_MAX_TRACKS && !tr; i++) tr = trk_tracker_track(&tk, i);
@@ -225,12 +225,12 @@ static void test_maneuver_d2(void **state)
     TRK_ASSERT_OK(trk_kalman_innovation(TRK_CV2_NX, TRK_CV2_NZ, trk_cv2_h, tk.r[0], x, pp, &inn));
     const trk_real nu[2] = {6, -4};
     struct trk_detection d = trk_test_det_at(inn.z_pred[TRK_CV2_ZX] + nu[0], inn.z_pred[TRK_CV2_ZY] + nu[1]);
-    const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
     assert_int_equal(tr->n_gated_last, 1);
     TRK_ASSERT_NEAR(tr->maneuver_d2, trk_gate_d2(&inn, nu), 0, TRK_TOL(1e-10, 1e-4));
     assert_true(tr->maneuver_d2 > 0.5);
-    const struct trk_scan empty = {SCAN_US(9), 0, 0, NULL, NULL, 0, {0, 0, 0}};
+    const struct trk_scan empty = {SCAN_US(9), 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &empty, NULL));
     assert_true(tr->maneuver_d2 == 0);
 }
@@ -253,7 +253,7 @@ static void test_maneuver_d2_imm(void **state)
     TRK_ASSERT_OK(trk_kalman_innovation(TRK_CV2_NX, TRK_CV2_NZ, trk_cv2_h, tk.r[0], x, pc, &inn));
     const trk_real nu[2] = {-5, 7};
     struct trk_detection d = trk_test_det_at(inn.z_pred[TRK_CV2_ZX] + nu[0], inn.z_pred[TRK_CV2_ZY] + nu[1]);
-    const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
     assert_int_equal(tr->n_gated_last, 1);
     TRK_ASSERT_NEAR(tr->maneuver_d2, trk_gate_d2(&inn, nu), 0, TRK_TOL(1e-9, 1e-4));
@@ -269,7 +269,7 @@ static void test_same_time_and_unreachable(void **state)
     struct trk_tracker_params p;
     const struct trk_track *tr = lone_track(TRK_ASSOC_PDA, &p);
     const struct trk_imm_state before = tr->imm;
-    const struct trk_scan again = {tr->time_us, 0, 0, NULL, NULL, 0, {0, 0, 0}};
+    const struct trk_scan again = {tr->time_us, 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &again, NULL));
     for (int m = 0; m < 3; m++) {
         TRK_ASSERT_NEAR(tr->imm.mu[m], before.mu[m], TRK_TOL(1e-12, 1e-6), 0);
@@ -288,7 +288,7 @@ static void test_same_time_and_unreachable(void **state)
         const double far_x = (double)w->imm.x[1][TRK_CV2_X] + (double)w->imm.x[1][TRK_CV2_VX] * DT_S;
         const double far_y = (double)w->imm.x[1][TRK_CV2_Y] + (double)w->imm.x[1][TRK_CV2_VY] * DT_S;
         struct trk_detection d = trk_test_det_at(far_x, far_y);
-        const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
         assert_int_equal(tr->n_gated_last, 0);
@@ -327,7 +327,7 @@ static void test_turn(void **state)
             }
         }
         struct trk_detection d = trk_test_det_at(px + 5 * trk_test_nrand(&rng), py + 5 * trk_test_nrand(&rng));
-        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {SCAN_US(k), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &scan, NULL));
         if (k < 6) continue;
@@ -404,7 +404,7 @@ static void test_subnormal_model_weight(void **state)
         const trk_real unit[2] = {1, 0};
         const double d2_per_m2 = (double)trk_gate_d2(&inn, unit);
         struct trk_detection d = trk_test_det_at(inn.z_pred[TRK_CV2_ZX], inn.z_pred[TRK_CV2_ZY]);
-        const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {SCAN_US(8), 0, 1, &d, NULL, 0, {0, 0, 0}, NULL};
         base = tk;
         int n_kept = 0;
         for (int k = 0; k <= 3400; k++) {
@@ -465,7 +465,7 @@ static void test_close_pair_not_merged(void **state)
                 const double cx = 3000 * trk_test_urand(&rng) - 500, cy = 1000 * trk_test_urand(&rng) - 500;
                 d[n++] = trk_test_det_at(cx, cy);
             }
-            const struct trk_scan s = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}};
+            const struct trk_scan s = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
             merged_all += rep.n_merged;
@@ -529,7 +529,7 @@ static void test_polar_imm(void **state)
         pd.bearing_rad = (trk_real)(atan2(dx, dy) + 1.5 * deg * trk_test_nrand(&rng));
         TRK_ASSERT_OK(trk_polar_to_cartesian(&p.sensor[0], &o, &pd, &cd));
         cd.has_cov = 0;
-        const struct trk_scan sa = {SCAN_US(k), 0, 1, NULL, &pd, 1, o}, sb = {SCAN_US(k), 0, 1, &cd, NULL, 1, o};
+        const struct trk_scan sa = {SCAN_US(k), 0, 1, NULL, &pd, 1, o, NULL}, sb = {SCAN_US(k), 0, 1, &cd, NULL, 1, o, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &sa, NULL));
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &sb, NULL));
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
@@ -551,7 +551,7 @@ static void test_polar_imm(void **state)
     double pv = tr->vis.pv;
     for (int j = 0; j < 4; j++, k++) {
         const struct trk_pose east = {0, (trk_real)(2.0 * DT_S * k), (trk_real)(100 * deg)};
-        const struct trk_scan s = {SCAN_US(k), 0, 0, NULL, NULL, 1, east};
+        const struct trk_scan s = {SCAN_US(k), 0, 0, NULL, NULL, 1, east, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
         pv *= p.visibility.delta_stay;
         TRK_ASSERT_NEAR(tr->vis.pv, pv, 0, TRK_TOL(1e-13, 1e-6));

@@ -31,7 +31,7 @@ static double nrand(void) { return trk_test_nrand(&rng_state); }
 
 static trk_status run_scan(int k, const struct trk_detection *d, size_t n, struct trk_scan_report *rep)
 {
-    const struct trk_scan scan = {T_US(k), 0, n, d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {T_US(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
     return trk_tracker_process_scan(&tk, &scan, rep);
 }
 

@@ -32,7 +32,7 @@ static void sonar_params(struct trk_tracker_params *p, double lambda, enum trk_a
 static trk_status run(struct trk_tracker *t, int k, const struct trk_detection *d, size_t n,
                       struct trk_scan_report *rep)
 {
-    const struct trk_scan scan = {T_US(k), 0, n, d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {T_US(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
     return trk_tracker_process_scan(t, &scan, rep);
 }
 

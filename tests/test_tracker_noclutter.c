@@ -94,7 +94,7 @@ static void test_other_methods_run(void **state)
             int confirmed_at = -1, ended_at = -1;
             for (int k = 0; k < 30 && ended_at < 0; k++) {
                 d.x_m = (trk_real)(2.0 * k);
-                struct trk_scan scan = {SEC(k), 0, k < 10 ? 1u : 0u, &d, NULL, 0, {0, 0, 0}};
+                struct trk_scan scan = {SEC(k), 0, k < 10 ? 1u : 0u, &d, NULL, 0, {0, 0, 0}, NULL};
                 TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, NULL));
                 const struct trk_track *tr = trk_tracker_track(&tk, 0);
                 assert_non_null(tr);

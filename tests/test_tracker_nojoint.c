@@ -39,7 +39,7 @@ static void test_tracks(void **state)
         d[0].x_m = (trk_real)(2 * k);
         d[1].x_m = (trk_real)(500 - 2 * k);
         d[1].y_m = 300;
-        const struct trk_scan scan = {(int64_t)k * 1000000, 0, 2, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {(int64_t)k * 1000000, 0, 2, d, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
         assert_int_equal(rep.n_clusters, 0);

@@ -38,7 +38,8 @@ static void params(struct trk_tracker_params *p, int amp)
 static void assert_counts_add_up(const struct trk_scan_report *r)
 {
     assert_int_equal(r->n_detections, r->n_kept + r->n_thinned + r->n_rejected_nonfinite + r->n_rejected_cov +
-                                          r->n_rejected_amplitude + r->n_rejected_region + r->n_below_threshold);
+                                          r->n_rejected_amplitude + r->n_rejected_region + r->n_below_threshold +
+                                          r->n_rejected_density);
     assert_true(r->n_kept <= K);
 }
 
@@ -59,7 +60,7 @@ static void start_targets(struct trk_tracker *t, trk_real thr)
             d[k].has_amplitude = thr > 0;
             d[k].amplitude = TRK_REAL_C(1.01) * thr;
         }
-        struct trk_scan scan = {SEC(s), 0, N_TGT, d, NULL, 0, {0, 0, 0}};
+        struct trk_scan scan = {SEC(s), 0, N_TGT, d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(t, &scan, NULL));
     }
     assert_int_equal(trk_tracker_live_count(t), N_TGT);
@@ -97,7 +98,7 @@ static void test_gated_kept(void **state)
         rng_state = 11;
         start_targets(&tk, thr);
         over_scan(thr);
-        struct trk_scan scan = {SEC(3), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
+        struct trk_scan scan = {SEC(3), 0, N_OVER, det, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
         assert_int_equal(rep.n_detections, N_OVER);
@@ -137,7 +138,7 @@ static void test_counts_add_up(void **state)
         default: d->amplitude = TRK_REAL_C(0.5) * thr; break;
         }
     }
-    struct trk_scan scan = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_rejected_nonfinite, n_bad / 4);
@@ -192,7 +193,7 @@ static void test_raised_threshold_model(void **state)
         det[i].has_amplitude = 1;
         TRK_ASSERT_OK(trk_amplitude_inv_sf(m, TRK_AMP_CLUTTER, (trk_real)-log(1 - urand()), &det[i].amplitude));
     }
-    struct trk_scan scan = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_kept, K);
@@ -230,7 +231,7 @@ static void start_one_track(const struct trk_tracker_params *p, trk_real x0_m, t
 {
     TRK_ASSERT_OK(trk_tracker_init(&tk, p));
     struct trk_detection d0 = {x0_m, 0, {0, 0, 0}, 2 * p->sensor[0].amplitude.threshold, 0, 1};
-    struct trk_scan s0 = {SEC(0), 0, 1, &d0, NULL, 0, {0, 0, 0}};
+    struct trk_scan s0 = {SEC(0), 0, 1, &d0, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s0, NULL));
     const struct trk_track *tr = trk_tracker_track(&tk, 0);
     assert_non_null(tr);
@@ -259,7 +260,7 @@ static void test_gates_overflow(void **state)
         det[i].has_amplitude = 1;
         det[i].amplitude = m->threshold * (trk_real)(1 + 3 * urand());
     }
-    struct trk_scan scan = {SEC(1), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {SEC(1), 0, N_OVER, det, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_kept, K);
@@ -328,7 +329,7 @@ static void gates_overflow_profile(double eta)
         det[i].has_amplitude = 1;
         det[i].amplitude = m->threshold * (trk_real)(1 + TRK_REAL_C(0.2) * urand());
     }
-    struct trk_scan scan = {SEC(1), 0, N_OVER, det, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {SEC(1), 0, N_OVER, det, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.thin_in_gates, 1);
@@ -423,7 +424,7 @@ static void test_no_amplitude_thinning(void **state)
     rng_state = 15;
     over_scan(0);
     for (int i = 0; i < N_OVER; i++) det2[i] = det[N_OVER - 1 - i];
-    struct trk_scan s1 = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}}, s2 = {SEC(0), 0, N_OVER, det2, NULL, 0, {0, 0, 0}};
+    struct trk_scan s1 = {SEC(0), 0, N_OVER, det, NULL, 0, {0, 0, 0}, NULL}, s2 = {SEC(0), 0, N_OVER, det2, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report r1, r2;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &r1));
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk2, &s2, &r2));
@@ -465,7 +466,7 @@ static void test_hard_bound(void **state)
     }
     static struct trk_tracker copy;
     memcpy(&copy, &tk, sizeof tk);
-    struct trk_scan scan = {SEC(3), 0, n_max + 1, big, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {SEC(3), 0, n_max + 1, big, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &scan, &rep), TRK_E_CAPACITY);
     assert_int_equal(rep.n_detections, 0);

@@ -42,7 +42,7 @@ static void test_own_r_equals_shared(void **state)
             b[i].has_cov = 1;
             for (int c = 0; c < 3; c++) b[i].cov_m2[c] = p.sensor[0].meas_cov_m2[c];
         }
-        const struct trk_scan sa = {SCAN_US(k), 0, n, a, NULL, 0, {0, 0, 0}}, sb = {SCAN_US(k), 0, n, b, NULL, 0, {0, 0, 0}};
+        const struct trk_scan sa = {SCAN_US(k), 0, n, a, NULL, 0, {0, 0, 0}, NULL}, sb = {SCAN_US(k), 0, n, b, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &sa, NULL));
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk_b, &sb, NULL));
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
@@ -95,7 +95,7 @@ static void test_large_own_covariance_reaches_gate(void **state)
             d[n].cov_m2[TRK_COV2_XY] = 0;
             n++;
         }
-        const struct trk_scan s = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}};
+        const struct trk_scan s = {SCAN_US(k), 0, n, d, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &s, NULL));
     }
     size_t found = 0;

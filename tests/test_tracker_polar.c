@@ -63,7 +63,7 @@ static struct trk_polar_detection seen(const struct trk_pose *o, double x, doubl
 
 static struct trk_scan polar_scan(int k, const struct trk_pose *o, size_t n, const struct trk_polar_detection *d)
 {
-    const struct trk_scan s = {SCAN_US(k), 0, n, NULL, d, 1, *o};
+    const struct trk_scan s = {SCAN_US(k), 0, n, NULL, d, 1, *o, NULL};
     return s;
 }
 

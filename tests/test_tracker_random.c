@@ -78,6 +78,23 @@ static struct trk_detection random_detection(void)
     return d;
 }
 
+/* Scan k's clutter density for detection i, from its own hash (the
+ * detections' stream is untouched): mostly log-uniform over 1e-9 .. 1e-2
+ * per m^2, 2 % each 0 (rejected), the smallest normal number and the
+ * largest finite one (ratios of e^+-700 to the configured 1e-5). */
+static trk_real random_density(long k, size_t i)
+{
+    uint64_t h = (uint64_t)k * 0x9E3779B97F4A7C15u + (uint64_t)i * 0xBF58476D1CE4E5B9u;
+    h ^= h >> 31;
+    h *= 0x94D049BB133111EBu;
+    h ^= h >> 29;
+    const double u = (double)(h >> 11) * 0x1.0p-53;
+    if (u < 0.02) return 0;
+    if (u < 0.04) return TRK_REAL_MIN;
+    if (u < 0.06) return TRK_REAL_MAX;
+    return (trk_real)pow(10.0, -9.0 + 7.0 * (u - 0.06) / 0.94);
+}
+
 /* A positive count from the environment variable name (a long run of the
  * same test: TRK_RANDOM_SCANS=100000), else def. */
 static long env_count(const char *name, long def)
@@ -93,13 +110,16 @@ static long env_count(const char *name, long def)
  * along the tiny own covariances), and M/N with single-point initiation
  * and a huge velocity prior; in a build with TRK_WITH_IMM also IMM tracks of
  * three models (turns at 3 deg/s) with the per-track PDA and, with q = 0,
- * joint association. Every scan: the invariants (every model's too).
+ * joint association; every third scan carries the caller's clutter
+ * densities, extreme ones among them. Every scan: the invariants (every
+ * model's too).
  * TRK_RANDOM_SCANS (scans per configuration, 4000) and TRK_RANDOM_SEED
  * (added to each configuration's seed, 0) make a longer or another run. */
 static void test_random_scans(void **state)
 {
     (void)state;
     static struct trk_detection det[TRK_MAX_DETECTIONS];
+    static trk_real lam[TRK_MAX_DETECTIONS];
     const long n_scans = env_count("TRK_RANDOM_SCANS", 4000), seed = env_count("TRK_RANDOM_SEED", 0);
     unsigned numerical = 0;
     const int n_cfg = TRK_WITH_IMM ? 5 : 3;
@@ -129,10 +149,14 @@ static void test_random_scans(void **state)
                 det[i].y_m = (trk_real)(-50.0 * (double)i + 3 * urand());
             }
             t_us += 1 + (int64_t)(urand() * 8e6);
-            const struct trk_scan scan = {t_us, 0, n, det, NULL, 0, {0, 0, 0}};
+            /* every third scan with the caller's densities */
+            const int dense = k % 3 == 2;
+            for (size_t i = 0; dense && i < n; i++) lam[i] = random_density(k, i);
+            const struct trk_scan scan = {t_us, 0, n, det, NULL, 0, {0, 0, 0}, dense ? lam : NULL};
             struct trk_scan_report rep;
             TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
             assert_int_equal(rep.n_detections, n);
+            assert_true(dense || rep.n_rejected_density == 0);
             numerical_cfg += check_table(&rep);
         }
         print_message("configuration %d: %u tracks ended as numerical\n", cfg, numerical_cfg);
@@ -160,7 +184,7 @@ static void test_hostile_covariances(void **state)
     d[2].has_cov = 1; /* correlation 0.5: fine */
     d[2].cov_m2[TRK_COV2_XX] = d[2].cov_m2[TRK_COV2_YY] = 4;
     d[2].cov_m2[TRK_COV2_XY] = 2;
-    const struct trk_scan scan = {0, 0, 3, d, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {0, 0, 3, d, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
     assert_int_equal(rep.n_rejected_cov, 2);
@@ -182,7 +206,7 @@ static void test_hostile_covariances(void **state)
         one.has_cov = 1;
         one.cov_m2[TRK_COV2_XX] = one.cov_m2[TRK_COV2_YY] = (trk_real)1e-20;
         one.x_m = 1000;
-        const struct trk_scan s1 = {(int64_t)k * 1000000, 0, 1, &one, NULL, 0, {0, 0, 0}};
+        const struct trk_scan s1 = {(int64_t)k * 1000000, 0, 1, &one, NULL, 0, {0, 0, 0}, NULL};
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s1, &rep));
         numerical += check_table(&rep);
     }
@@ -220,11 +244,11 @@ static void test_extreme_times(void **state)
     p.max_dt_s = TRK_REAL_C(1e9);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_scan_report rep;
-    const struct trk_scan first = {-TRK_TIME_US_MAX, 0, 0, NULL, NULL, 0, {0, 0, 0}};
+    const struct trk_scan first = {-TRK_TIME_US_MAX, 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &first, &rep));
-    const struct trk_scan last = {TRK_TIME_US_MAX, 0, 0, NULL, NULL, 0, {0, 0, 0}};
+    const struct trk_scan last = {TRK_TIME_US_MAX, 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &last, &rep), TRK_E_RANGE);
-    const struct trk_scan beyond = {TRK_TIME_US_MAX + 1, 0, 0, NULL, NULL, 0, {0, 0, 0}};
+    const struct trk_scan beyond = {TRK_TIME_US_MAX + 1, 0, 0, NULL, NULL, 0, {0, 0, 0}, NULL};
     TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &beyond, &rep), TRK_E_RANGE);
     assert_true((double)TRK_TIME_US_MAX - (double)(-TRK_TIME_US_MAX) < 9.3e18); /* below 2^63 */
 }

@@ -248,6 +248,17 @@ struct trk_scan {
     int has_pose;                           /**< 1: pose is this scan's (a moving
                                                platform); 0: the sensor's fixed pose */
     struct trk_pose pose;                   /**< the sensor's pose at time_us, when has_pose */
+    const trk_real *clutter_density_per_m2; /**< the caller's clutter density at each detection
+                                               (n_detections of them, per m^2 at its
+                                               position; e.g. its CFAR's local estimate),
+                                               or NULL: the tracker's own (the sensor's,
+                                               its profile or its clutter map). Where given
+                                               it wins (docs/tracker.md "The caller's
+                                               clutter density"); parametric clutter and a
+                                               sensor density > 0 only (else the scan is
+                                               refused, TRK_E_UNSUPPORTED); a value not
+                                               finite or not > 0 rejects its detection
+                                               (n_rejected_density) */
 };
 
 /** Set up every member of *scan: a scan of n_detections Cartesian
@@ -798,7 +809,7 @@ struct trk_track {
 
 /* ---------------------------------------------------------------- report */
 
-/** What one scan did (trk_tracker_process_scan): the detections' fate and the tracks' changes. n_detections = n_kept + n_thinned + the rejected and below-threshold counts. */
+/** What one scan did (trk_tracker_process_scan): the detections' fate and the tracks' changes. n_detections = n_kept + n_thinned + the rejected (n_rejected_*) and below-threshold counts. */
 struct trk_scan_report {
     uint32_t n_detections;          /**< in the scan */
     uint32_t n_rejected_nonfinite;  /**< NaN/inf position or covariance (polar: range or bearing) */
@@ -809,10 +820,12 @@ struct trk_scan_report {
                                        (|x_m| or |y_m| > params.max_coord_m), or a polar
                                        detection of range <= 0 */
     uint32_t n_below_threshold;     /**< amplitude below the sensor's detection threshold */
+    uint32_t n_rejected_density;    /**< the caller's clutter density (trk_scan
+                                       clutter_density_per_m2) NaN, infinite or not > 0 */
     uint32_t n_kept;                /**< valid detections processed (at most TRK_MAX_DETECTIONS);
                                        n_detections = n_kept + n_thinned + n_rejected_nonfinite
                                        + n_rejected_cov + n_rejected_amplitude + n_rejected_region
-                                       + n_below_threshold */
+                                       + n_below_threshold + n_rejected_density */
     uint32_t n_thinned;             /**< valid detections left out: the scan held more than
                                        TRK_MAX_DETECTIONS ("Scans beyond capacity") */
     uint32_t n_tracks_updated;      /**< live tracks predicted and updated */
@@ -1129,7 +1142,8 @@ TRK_NODISCARD trk_status trk_tracker_init(struct trk_tracker *t, const struct tr
  * thinned, never refused), TRK_E_TIME time before the previous scan, TRK_E_RANGE gap
  * longer than max_dt_s or |time_us| > 2^62, or a pose outside the surveillance
  * bound (or |heading| > 1e6 rad), TRK_E_NAN a non-finite pose, TRK_E_SENSOR
- * unknown sensor.
+ * unknown sensor, TRK_E_UNSUPPORTED the caller's clutter densities with
+ * nonparametric clutter or a sensor density of 0.
  * Per-detection and per-track problems are counted in the report; the call
  * then still returns TRK_OK. */
 TRK_NODISCARD trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan *scan,

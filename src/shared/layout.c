@@ -229,13 +229,15 @@ static const struct layout_row scan_rows[] = {
     ROW(C, polar, 'p', const struct trk_polar_detection *, 1, "", "", "a polar sensor's; detections then NULL"),
     ROW(C, has_pose, 'i', int, 1, "", "", "0, 1"),
     ROW(C, pose, 's', struct trk_pose, 1, "pose", "", "used when has_pose"),
+    ROW(C, clutter_density_per_m2, 'p', const trk_real *, 1, "", "1/m^2",
+        "NULL, or n_detections of them, each finite and > 0"),
 };
 #undef C
 
 #define R(M) ROW(struct trk_scan_report, M, 'u', uint32_t, 1, "", "", "")
 static const struct layout_row report_rows[] = {
     R(n_detections), R(n_rejected_nonfinite), R(n_rejected_cov), R(n_rejected_amplitude),
-    R(n_rejected_region), R(n_below_threshold), R(n_kept), R(n_thinned), R(n_tracks_updated), R(n_tracks_hit), R(n_started), R(n_confirmed), R(n_stationary),
+    R(n_rejected_region), R(n_below_threshold), R(n_rejected_density), R(n_kept), R(n_thinned), R(n_tracks_updated), R(n_tracks_hit), R(n_started), R(n_confirmed), R(n_stationary),
     R(n_terminated), R(n_init_refused_full), R(n_numerical), R(n_merged), R(n_replaced),
     R(n_covariance), R(n_candidates), R(n_candidates_dropped), R(n_clusters), R(n_clusters_approx),
     R(largest_cluster), R(n_assoc_overflow),

@@ -66,7 +66,7 @@ int main(int argc, char **argv)
     struct trk_detection det = {0};
     det.x_m = TRK_REAL_C(100.0);
     det.y_m = TRK_REAL_C(200.0);
-    struct trk_scan scan = {1000000, 0, 1, &det, NULL, 0, {0, 0, 0}};
+    struct trk_scan scan = {1000000, 0, 1, &det, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     if (st == TRK_OK) st = trk_tracker_process_scan(&tracker, &scan, &rep);
     if (st != TRK_OK) {

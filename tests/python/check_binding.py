@@ -18,7 +18,9 @@
                                still object seen from the moving platform stays
                                put; a scan beyond capacity is thinned and its
                                counts add up; clutter_at is the configured
-                               density before any scan and the map's after
+                               density before any scan and the map's after;
+                               the caller's densities equal to the map's give
+                               the same tracks, bad ones are counted
   check_binding.py udpm        the UDP multicast reassembler on synthetic
                                datagrams (short, fragmented, reordered,
                                superseded, malformed)
@@ -251,7 +253,7 @@ def polar(_):
     p = polar_params()
     sp = p._ptr(B.ST["tracker_params"].fields["sensor"].offset)
     rng = np.random.default_rng(5)
-    ta, tb = trk.Tracker(p), trk.Tracker(p)
+    ta, tb, te = trk.Tracker(p), trk.Tracker(p), trk.Tracker(p)
     pose = np.zeros(1, B.ST["pose"].dtype)
     pdet = np.zeros(1, B.ST["polar_detection"].dtype)
     det = np.zeros(1, B.ST["detection"].dtype)
@@ -282,6 +284,12 @@ def polar(_):
         assert ra == rb, (k, ra, rb)
         for f in rb_.dtype.names:
             assert np.array_equal(rb_[f], tb_[f]), (k, f, rb_[f], tb_[f])
+        # the caller's densities equal to the tracker's own (its map's, before the scan): the same tracks
+        lam = [te.clutter_at(x, y, pose=o) for (x, y) in xy]
+        re_, te_ = te.process_polar_scan(t, r, b, pose=o, clutter_density=lam)
+        assert re_ == ra, (k, re_, ra)
+        for f in rb_.dtype.names:
+            assert np.array_equal(rb_[f], te_[f]), (k, f, rb_[f], te_[f])
         n_conf = int((rb_["status"] == trk.constants["TRACK_CONFIRMED"]).sum())
     assert n_conf == 3, n_conf
     # the still object (the third) stays put though the platform moved 960 m
@@ -306,8 +314,12 @@ def polar(_):
         td.process_polar_scan(8.0 * k, 4000 + 20 * rng.random(30), 0.002 * rng.random(30))
     hot, cold = td.clutter_at(0, 4010), td.clutter_at(0, 7000, pose=(0, 0, 0))
     assert hot > 10 * lam and 0 < cold < lam, (hot, cold)
+    # a bad density rejects its detection only
+    rep, _ = td.process_polar_scan(8.0 * 30, [3000, 4000, 5000], [0.0, 0.1, 0.2], clutter_density=[1e-7, np.nan, 0])
+    assert rep["n_rejected_density"] == 2 and rep["n_kept"] == 1, rep
     print("polar: process_polar_scan gives the tracks of process_scan with the library's own "
-          "conversion, bit for bit, 40 scans from a moving platform (3 confirmed, the still one at rest); nothing "
+          "conversion, bit for bit, 40 scans from a moving platform (3 confirmed, the still one at rest), and "
+          "with the caller's densities equal to its map's; nothing "
           "starts outside the coverage; %d detections thinned to %d; clutter_at %.3g -> %.3g in a hot cell"
           % (n, trk.MAX_DETECTIONS, lam, hot))
 

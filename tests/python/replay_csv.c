@@ -150,7 +150,7 @@ int main(int argc, char **argv)
             n++;
         }
         if (scan < 0) break;
-        struct trk_scan sc = {(int64_t)llround(time_s * 1e6), 0, n, det, NULL, 0, {0, 0, 0}};
+        struct trk_scan sc = {(int64_t)llround(time_s * 1e6), 0, n, det, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         const double t0 = bench ? now_ns() : 0;
         st = trk_tracker_process_scan(&tk, &sc, &rep);

@@ -462,7 +462,7 @@ static int stack_scenario(void)
             d->x_m = urand() * TRK_REAL_C(1000.0) - TRK_REAL_C(300.0);
             d->y_m = urand() * TRK_REAL_C(1000.0) - TRK_REAL_C(500.0);
         }
-        struct trk_scan scan = {(int64_t)k * 2000000, 0, n, det, NULL, 0, {0, 0, 0}};
+        struct trk_scan scan = {(int64_t)k * 2000000, 0, n, det, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         if (measured_scan(&scan, &rep) != TRK_OK) {
             printf("stack scenario: scan %d refused\n", k);

@@ -239,7 +239,7 @@ static enum lcmc_reason process(struct bridge *b, char *detail, size_t detail_le
     b->c.det_cov += rep.n_rejected_cov;
     b->c.det_amplitude += rep.n_rejected_amplitude;
     b->c.det_rejected += (uint64_t)dropped + rep.n_rejected_nonfinite + rep.n_rejected_cov +
-                         rep.n_rejected_amplitude + rep.n_rejected_region;
+                         rep.n_rejected_amplitude + rep.n_rejected_region + rep.n_rejected_density;
     b->c.det_below_threshold += rep.n_below_threshold;
     b->c.started += rep.n_started;
     b->c.confirmed += rep.n_confirmed;

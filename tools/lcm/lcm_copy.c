@@ -399,7 +399,7 @@ void lcmc_tracks_to_msg(const struct trk_tracker *t, const struct trk_scan *scan
         m->n_detections = clamp32(rep->n_detections);
         m->n_detections_rejected =
             clamp32(rep->n_rejected_nonfinite + rep->n_rejected_cov + rep->n_rejected_amplitude +
-                    rep->n_rejected_region);
+                    rep->n_rejected_region + rep->n_rejected_density);
         m->n_started = clamp32(rep->n_started);
         m->n_confirmed = clamp32(rep->n_confirmed);
         m->n_terminated = clamp32(rep->n_terminated);

@@ -33,7 +33,7 @@ int main(void)
         }
     }
     for (int64_t k = 0;; k++) {
-        struct trk_scan scan = {k * 1000000, 0, TRK_MAX_DETECTIONS, det, NULL, 0, {0, 0, 0}};
+        struct trk_scan scan = {k * 1000000, 0, TRK_MAX_DETECTIONS, det, NULL, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         trk_status st = trk_tracker_process_scan(&tracker, &scan, &rep);
         fw_name = trk_status_str(st);

@@ -81,7 +81,7 @@ static double grid_rep(struct grid_job *j, int *n_conf)
     for (int k = 0; k < GRID_SCANS; k++) {
         if (k == GRID_WARM) t0 = bench_now_ns();
         const struct trk_scan scan = {(int64_t)k * 1000000, 0, k < GRID_WARM ? j->n_tgt : j->n_det,
-                                      j->det + (size_t)k * j->n_det, NULL, 0, {0, 0, 0}};
+                                      j->det + (size_t)k * j->n_det, NULL, 0, {0, 0, 0}, NULL};
         if (trk_tracker_process_scan(&j->tk, &scan, NULL) != TRK_OK) return -1;
     }
     const double per = (bench_now_ns() - t0) / (GRID_SCANS - GRID_WARM);

@@ -46,7 +46,7 @@ static int make_tracks(struct joint_job *j, double spacing_m)
             j->det[i].x_m = (trk_real)(1000.0 * (i % 8));
             j->det[i].y_m = (trk_real)(1000.0 * (i / 8));
         }
-        const struct trk_scan scan = {(int64_t)k * 1000000, 0, N_TRK, j->det, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {(int64_t)k * 1000000, 0, N_TRK, j->det, NULL, 0, {0, 0, 0}, NULL};
         if (trk_tracker_process_scan(&j->base, &scan, NULL) != TRK_OK) return -1;
     }
     int n = 0;
@@ -64,7 +64,7 @@ static int make_tracks(struct joint_job *j, double spacing_m)
 /* The fastest of 30 scans from the copy, and the last one's report. */
 static void time_scan(struct joint_job *j, const char *name)
 {
-    const struct trk_scan scan = {8 * 1000000, 0, N_DETS, j->det, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {8 * 1000000, 0, N_DETS, j->det, NULL, 0, {0, 0, 0}, NULL};
     struct trk_scan_report rep;
     double best = 1e300;
     for (int r = 0; r < 30; r++) {

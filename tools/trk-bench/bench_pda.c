@@ -510,11 +510,11 @@ TRK_BENCH(candidates_full)
     for (int rep = 0; rep < 5; rep++) {
         if (trk_tracker_init(&j->tk, &p) != TRK_OK) break;
         struct trk_scan_report r;
-        const struct trk_scan first = {0, 0, TRK_MAX_DETECTIONS, j->det[0], NULL, 0, {0, 0, 0}};
+        const struct trk_scan first = {0, 0, TRK_MAX_DETECTIONS, j->det[0], NULL, 0, {0, 0, 0}, NULL};
         if (trk_tracker_process_scan(&j->tk, &first, &r) != TRK_OK) break;
         double t0 = bench_now_ns();
         for (int k = 1; k < N_SC; k++) {
-            const struct trk_scan scan = {(int64_t)k * 4000000, 0, TRK_MAX_DETECTIONS, j->det[k], NULL, 0, {0, 0, 0}};
+            const struct trk_scan scan = {(int64_t)k * 4000000, 0, TRK_MAX_DETECTIONS, j->det[k], NULL, 0, {0, 0, 0}, NULL};
             if (trk_tracker_process_scan(&j->tk, &scan, &r) != TRK_OK) break;
             n_cand = r.n_candidates;
             n_started += r.n_started;

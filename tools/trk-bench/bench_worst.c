@@ -67,7 +67,7 @@ static int worst_make_tracks(struct worst_job *j, int n_trk)
     if (trk_tracker_init(&j->base, &j->p) != TRK_OK) return -1;
     for (int k = 0; k < 8; k++) {
         for (int i = 0; i < n_trk; i++) det_at(&j->det[i], 1000.0 * (i % 8), 1000.0 * (i / 8));
-        const struct trk_scan scan = {(int64_t)k * 1000000, 0, (size_t)n_trk, j->det, NULL, 0, {0, 0, 0}};
+        const struct trk_scan scan = {(int64_t)k * 1000000, 0, (size_t)n_trk, j->det, NULL, 0, {0, 0, 0}, NULL};
         if (trk_tracker_process_scan(&j->base, &scan, NULL) != TRK_OK) return -1;
     }
     int n = 0;
@@ -95,7 +95,7 @@ static void worst_place(struct worst_job *j, const double *xy)
  * j->work; -1 if a scan is refused. */
 static double worst_time(struct worst_job *j, size_t nd, int64_t time_us)
 {
-    const struct trk_scan scan = {time_us, 0, nd, j->det, NULL, 0, {0, 0, 0}};
+    const struct trk_scan scan = {time_us, 0, nd, j->det, NULL, 0, {0, 0, 0}, NULL};
     double best = 1e300;
     for (int r = 0; r < N_REPS; r++) {
         memcpy(&j->tk, &j->work, sizeof j->tk);
@@ -213,7 +213,7 @@ static void worst_storm(struct worst_job *j, int n_trk, const char *name)
         }
         for (int k = 0; k < 2; k++) {
             for (int i = 0; i < nd; i++) det_at(&j->det[i], 50.0 * (i % 16) + 7.0 * k, 50.0 * (i / 16) + 3.0 * k);
-            const struct trk_scan scan = {8000000 + (int64_t)k * 1000000, 0, (size_t)nd, j->det, NULL, 0, {0, 0, 0}};
+            const struct trk_scan scan = {8000000 + (int64_t)k * 1000000, 0, (size_t)nd, j->det, NULL, 0, {0, 0, 0}, NULL};
             if (trk_tracker_process_scan(&j->work, &scan, NULL) != TRK_OK) return;
         }
         for (int i = 0; i < nd; i++) det_at(&j->det[i], 50.0 * (i % 16) + 25.0, 50.0 * (i / 16) + 25.0);

@@ -154,7 +154,7 @@ static int run_mode(const struct fd_setup *s, const struct trk_tracker_params *p
         struct rng rk; /* the scan's own stream: both modes see the same clutter */
         rng_init(&rk, s->seed ^ 0x5bd1e995u, ((uint64_t)run << 24) | (uint64_t)k);
         const double pd = !after ? s->pd_high : vanish ? 0 : s->pd_low;
-        struct trk_scan scan = {(int64_t)llround((double)k * s->dt_s * 1e6), 0, 0, w->det, NULL, 0, {0, 0, 0}};
+        struct trk_scan scan = {(int64_t)llround((double)k * s->dt_s * 1e6), 0, 0, w->det, NULL, 0, {0, 0, 0}, NULL};
         scan.n_detections = make_scan(s, &rk, tx, ty, pd, w->det);
         if (trk_tracker_process_scan(&w->tracker, &scan, NULL) != TRK_OK) return -2;
         if (k + 1 == s->warmup) { /* the confirmed track nearest the target */

@@ -35,6 +35,10 @@
  *        converted by the caller (trk_detection_from_polar at its
  *        absolute bearing), a Cartesian sensor with one P_D (the profile
  *        averaged over the sector's area), no pose, no coverage
+ *   cfar the sonar family only: new with each detection's true clutter
+ *        density in the scan (trk_scan.clutter_density_per_m2,
+ *        mtt_scen_clutter_density): what a CFAR that knew its background
+ *        would pass
  * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
  * of the scenario with use_amplitude, q = 1e-3; then every --set).
  *
@@ -139,7 +143,7 @@
 /* Every counter of struct trk_scan_report (summed over a run's scans). */
 #define MTT_REPORT_COUNTERS(X)                                                                             \
     X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_rejected_region) \
-    X(n_below_threshold) \
+    X(n_below_threshold) X(n_rejected_density) \
     X(n_kept) X(n_thinned) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_stationary) X(n_terminated) X(n_init_refused_full) \
     X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)       \
     X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
@@ -221,6 +225,7 @@ struct run_ws {
     struct trk_tracker *tk;
     struct trk_detection det[TRK_MAX_SCAN_DETECTIONS];
     struct trk_polar_detection polar[TRK_MAX_SCAN_DETECTIONS]; /* the sonar family's */
+    trk_real lambda[TRK_MAX_SCAN_DETECTIONS];                  /* ... their clutter densities (cfar) */
     long origin[TRK_MAX_SCAN_DETECTIONS];
     struct mtt_obj est[TRK_MAX_TRACKS];
 };
@@ -368,20 +373,23 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
     return 0;
 }
 
-/* The sonar family's scan k for configuration (oracle, cart) into *scan
+/* The sonar family's scan k for configuration kind (CFG_*) into *scan
  * (mtt_scenario.h): the oracle gets the detections converted by the
  * scenario (trk_polar_to_cartesian, each with its covariance); cart the
  * old way, each converted by the caller with trk_detection_from_polar at
  * its absolute bearing, no pose; the others the polar scan as a user
- * gives it: scan.polar, has_pose, pose, detections NULL. 0, or -1. */
-static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int oracle, int cart,
+ * gives it: scan.polar, has_pose, pose, detections NULL; cfar with each
+ * detection's true clutter density (mtt_scen_clutter_density: what a
+ * CFAR that knew its background would pass; none at clutter 0). 0, or
+ * -1. */
+static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int kind,
                           struct run_ws *ws, struct trk_scan *scan, struct mtt_scan_info *info)
 {
     if (mtt_scen_scan_polar(sc, k, clutter, ws->det, ws->polar, max, ws->origin, scan, info) != 0) return -1;
-    if (oracle) return 0;
+    if (kind == CFG_ORACLE) return 0;
     struct trk_pose pose;
     mtt_scen_pose(sc, k, &pose);
-    if (cart) {
+    if (kind == CFG_CART) {
         const struct trk_sensor_params *sp = &sc->sonar;
         for (size_t i = 0; i < scan->n_detections; i++)
             if (trk_detection_from_polar(ws->polar[i].range_m, pose.heading_rad + ws->polar[i].bearing_rad,
@@ -394,14 +402,23 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
     scan->detections = NULL;
     scan->has_pose = 1;
     scan->pose = pose;
+    if (kind == CFG_CFAR && clutter > 0) {
+        for (size_t i = 0; i < scan->n_detections; i++) {
+            const double r = (double)ws->polar[i].range_m, b = (double)(pose.heading_rad + ws->polar[i].bearing_rad);
+            ws->lambda[i] = (trk_real)mtt_scen_clutter_density(sc, k, clutter, (double)pose.x_m + r * sin(b),
+                                                                (double)pose.y_m + r * cos(b));
+        }
+        scan->clutter_density_per_m2 = ws->lambda;
+    }
     return 0;
 }
 
 /* One run of the trackers' configuration tp, or of the oracle (tp gives
  * its sensor R and q). cart: the sonar family's (sonar_scan_for). */
-static int run_one(const struct mtt_scenario *sc, long clutter, int over, int oracle, int cart,
+static int run_one(const struct mtt_scenario *sc, long clutter, int over, int kind,
                    const struct trk_tracker_params *tp, double c_m, struct run_ws *ws, struct run_result *res)
 {
+    const int oracle = kind == CFG_ORACLE;
     const int sonar = sc->p.family == MTT_FAMILY_SONAR;
     struct sonar_false sf = {NULL, 0, 0};
     long patch_n = 0, patch_hit = 0, far_n = 0, far_hit = 0, tgt_det = 0, persist_sum = 0;
@@ -426,7 +443,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int or
         struct mtt_scan_info info;
         const size_t max = over == OVER_CAP ? TRK_MAX_DETECTIONS : TRK_MAX_SCAN_DETECTIONS;
         if (!sonar) mtt_scen_scan(sc, k, clutter, ws->det, max, ws->origin, &scan, &info);
-        else if (sonar_scan_for(sc, k, clutter, max, oracle, cart, ws, &scan, &info) != 0) {
+        else if (sonar_scan_for(sc, k, clutter, max, kind, ws, &scan, &info) != 0) {
             rc = -1;
             break;
         }
@@ -901,7 +918,7 @@ static int take_configs(const char *s, int *kinds, int *n, char *err, size_t err
         for (int i = 0; i < N_CFG_KINDS; i++)
             if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
         if (k < 0 || *n >= N_CFG_KINDS) {
-            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle, cart (each once)",
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle, cart, cfar (each once)",
                      (int)len, s);
             return -1;
         }
@@ -961,7 +978,7 @@ static int mtt_unit(void *ctx, size_t j, void *res, void **wsp)
         *wsp = ws;
     }
     const long i = (long)j / (u->nl * u->nc), l = ((long)j / u->nc) % u->nl, c = (long)j % u->nc;
-    return run_one(&u->sc[i], (long)u->levels[l], u->over, u->kinds[c] == CFG_ORACLE, u->kinds[c] == CFG_CART,
+    return run_one(&u->sc[i], (long)u->levels[l], u->over, u->kinds[c],
                    &u->tp[l * u->nc + c], u->c_m, ws, res) != 0;
 }
 
@@ -1005,7 +1022,7 @@ static int clutter_map_dump(const struct sim_common *com, const struct mtt_scena
         for (long k = 0; k < ns && rc == 0; k++) {
             struct trk_scan scan;
             struct mtt_scan_info info;
-            if (sonar_scan_for(sc, k, clutter, TRK_MAX_SCAN_DETECTIONS, 0, 0, ws, &scan, &info) != 0 ||
+            if (sonar_scan_for(sc, k, clutter, TRK_MAX_SCAN_DETECTIONS, CFG_NEW, ws, &scan, &info) != 0 ||
                 trk_tracker_process_scan(ws->tk, &scan, NULL) != TRK_OK)
                 rc = -1;
         }
@@ -1105,7 +1122,10 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                        "cart (sonar only): new the old way, the polar detections\n"
                        "converted by the caller (trk_detection_from_polar), one P_D\n"
                        "averaged over the sector, no pose, no coverage; new and pda\n"
-                       "get sonar scans as polar scans with the platform's pose"),
+                       "get sonar scans as polar scans with the platform's pose;\n"
+                       "cfar (sonar only): new with each detection's true clutter\n"
+                       "density passed (trk_scan.clutter_density_per_m2: a CFAR\n"
+                       "that knew its background)"),
         SIM_OPT_FLAG("--no-persistent", &no_persist,
                      "sonar: no persistent scatterers (the same targets' detections\n"
                      "and clutter)"),
@@ -1204,8 +1224,9 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         return 2;
     }
     for (int c = 0; c < n_cfg; c++)
-        if (kinds[c] == CFG_CART && !sonar) {
-            fprintf(stderr, "trk-sim mtt: --config cart: only with --family sonar (polar detections)\n");
+        if ((kinds[c] == CFG_CART || kinds[c] == CFG_CFAR) && !sonar) {
+            fprintf(stderr, "trk-sim mtt: --config %s: only with --family sonar (polar detections)\n",
+                    cfg_name[kinds[c]]);
             return 2;
         }
     if (sweep) {

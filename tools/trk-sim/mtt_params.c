@@ -8,7 +8,7 @@
 #include "mtt_params.h"
 #include "trk/amplitude.h"
 
-const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm", "oracle", "cart"};
+const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm", "oracle", "cart", "cfar"};
 
 #if TRK_WITH_IMM
 /* p->imm: CV at p->process_noise_q (--q) and turns at +-rate_dps with
@@ -27,7 +27,7 @@ int mtt_build_params(int kind, const struct mtt_scenario *sc, double lambda, dou
 {
     struct trk_tracker_params p;
     if (kind == CFG_OLD) mtt_old_defaults(&p);
-    else trk_tracker_default_params(&p); /* new, pda, imm, cart; oracle: its sensor R and q */
+    else trk_tracker_default_params(&p); /* new, pda, imm, cart, cfar; oracle: its sensor R and q */
     if (kind == CFG_PDA) p.association = TRK_ASSOC_PDA;
 #if !TRK_WITH_IMM
     (void)im;

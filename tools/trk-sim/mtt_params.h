@@ -17,7 +17,7 @@
  * per-track PDA), old (the defaults before two-point initiation), imm (new
  * with IMM tracks), oracle (no tracker: its R and q), cart (the sonar
  * family's new the old way: the caller converts). cfg_name[kind]. */
-enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, CFG_ORACLE, CFG_CART, N_CFG_KINDS };
+enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, CFG_ORACLE, CFG_CART, CFG_CFAR, N_CFG_KINDS };
 extern const char *const cfg_name[N_CFG_KINDS];
 
 struct mtt_settings {

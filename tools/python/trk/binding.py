@@ -308,6 +308,7 @@ class Tracker(object):
         self._slots = np.ndarray((tf.count,), TRACK_DTYPE, self._buf, tf.offset)
         self._det = np.zeros(MAX_DETECTIONS, ST["detection"].dtype)
         self._polar = np.zeros(0, ST["polar_detection"].dtype)
+        self._lambda = np.zeros(MAX_DETECTIONS, REAL)
         self._scan = np.zeros(1, ST["scan"].dtype)
         self._scan_p = ctypes.c_void_p(self._scan.ctypes.data)
         self._pose = np.zeros(1, ST["pose"].dtype)
@@ -323,6 +324,16 @@ class Tracker(object):
                            STATUS["TRK_E_CAPACITY"])
         return buf if buf.shape[0] >= n else np.zeros(max(n, MAX_DETECTIONS), buf.dtype)
 
+    def _densities(self, n, clutter_density):
+        """The scan's clutter densities: None, or n values (1/m^2; one
+        broadcast) copied into the scan's own array."""
+        if clutter_density is None:
+            self._scan["clutter_density_per_m2"] = 0
+            return
+        self._lambda = self._room(self._lambda, n)
+        self._lambda[:n] = np.broadcast_to(np.asarray(clutter_density, dtype=float), (n,))
+        self._scan["clutter_density_per_m2"] = self._lambda.ctypes.data
+
     def _run(self, time_s, sensor, n, pose):
         s = self._scan
         s["time_us"] = time_us(time_s)
@@ -337,11 +348,13 @@ class Tracker(object):
             raise TrkError("process_scan", st)
         return self.report(), self.tracks()
 
-    def process_scan(self, time_s, xy, cov=None, amplitude=None, sensor=0, pose=None):
+    def process_scan(self, time_s, xy, cov=None, amplitude=None, sensor=0, pose=None, clutter_density=None):
         """One scan at time_s (s; rounded to the microsecond) of sensor:
         xy (n x 2, m), cov (None: the sensor's; n x 3 [xx, xy, yy] or
         n x 2 x 2, m^2), amplitude (None, or n linear amplitudes); pose
-        (x_m, y_m, heading_rad) this scan's, None: the sensor's own. More
+        (x_m, y_m, heading_rad) this scan's, None: the sensor's own;
+        clutter_density (None: the tracker's own, or n values per m^2,
+        e.g. a CFAR's local estimates: trk_scan.clutter_density_per_m2). More
         than MAX_DETECTIONS detections are thinned by the library (the
         report counts them). A refused scan raises TrkError (the table
         untouched)."""
@@ -366,12 +379,14 @@ class Tracker(object):
             d["has_amplitude"] = 1
         self._scan["detections"] = self._det.ctypes.data
         self._scan["polar"] = 0
+        self._densities(n, clutter_density)
         return self._run(time_s, sensor, n, pose)
 
-    def process_polar_scan(self, time_s, range_m, bearing_rad, amplitude=None, sensor=0, pose=None):
+    def process_polar_scan(self, time_s, range_m, bearing_rad, amplitude=None, sensor=0, pose=None,
+                           clutter_density=None):
         """One scan of a polar sensor (kind SENSOR_POLAR) at time_s: n ranges
         (m) and bearings (rad, clockwise from the pose's heading), amplitude
-        as process_scan; pose (x_m, y_m, heading_rad) this scan's (a moving
+        and clutter_density as process_scan; pose (x_m, y_m, heading_rad) this scan's (a moving
         platform), None: the sensor's own. The library converts each
         detection and gives it its own covariance (trk_polar_to_cartesian)."""
         r = np.asarray(range_m, dtype=float).ravel()
@@ -391,6 +406,7 @@ class Tracker(object):
             d["has_amplitude"] = 1
         self._scan["detections"] = 0
         self._scan["polar"] = self._polar.ctypes.data
+        self._densities(n, clutter_density)
         return self._run(time_s, sensor, n, pose)
 
     def clutter_at(self, x_m, y_m, sensor=0, pose=None):
