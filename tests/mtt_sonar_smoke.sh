@@ -31,6 +31,8 @@
 #     100 per scan (measured: 0.31 and 0.39 against 0.11: the patches are smaller than a
 #     cell), outside them at 100 per scan nearer the truth than the profile (1.30 against
 #     1.55)
+#   - --config cfar (each detection's true clutter density passed): at clutter 0 (no
+#     densities) the same rows as new's, at 100 none rejected and the rows not new's
 #   - --config cart is refused (exit 2) outside the sonar family; the sonar table on stdout
 set -u
 sim=$1
@@ -163,6 +165,20 @@ head -1 "$d/t1.csv" | grep -q 'patch_coverage' && fail "a transit CSV holds the 
 grep -q '^== trk-sim mtt: family sonar,' "$d/out1.txt" || fail "no family in the header line (sonar)"
 grep -q '^-- sonar situations' "$d/out1.txt" && grep -q ' sonar  *cart  *100 ' "$d/out1.txt" ||
     fail "no sonar table on stdout"
+# cfar: the caller's density per detection; none at clutter 0 (the same rows as new's), all
+# valid at 100 (none rejected) and used (the rows differ from new's)
+"$sim" mtt --family sonar --scans 60 --seeds 3 --clutter-count 0,100 --seed 3 --config new,cfar --threads 1 \
+    --quiet --no-plot --out "$d/f1" >"$d/outf.txt" 2>&1 || { cat "$d/outf.txt"; fail "trk-sim mtt --config new,cfar exited with $?"; }
+strip "$d/f1.csv" | awk -F, '
+function bad(msg) { print "mtt-sonar-smoke: FAILED: cfar: " msg; exit 1 }
+NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+{ r = $0; sub(/^[^,]*,[^,]*,/, "", r); row[$2 "/" $3] = r; rej[$2 "/" $3] = $(col["rep_n_rejected_density_mean"]) }
+END {
+    if (!("cfar/0" in row) || !("new/100" in row)) bad("rows missing")
+    if (row["cfar/0"] != row["new/0"]) bad("at clutter 0 (no densities) cfar differs from new")
+    if (row["cfar/100"] == row["new/100"]) bad("at 100 per scan the densities changed nothing")
+    if (rej["cfar/100"] + 0 != 0) bad(rej["cfar/100"] " densities rejected")
+}' || exit 1
 if "$sim" mtt --config cart --scans 20 --seeds 1 --no-plot --quiet --out "$d/c1" >"$d/outc.txt" 2>&1; then
     fail "--config cart ran in the transit family"
 else
@@ -170,5 +186,5 @@ else
 fi
 echo "mtt-sonar-smoke: trk-sim mtt --family sonar: 12 rows (new, pda, cart, oracle x clutter 0, 20, 100) checked" \
     "with and without persistent scatterers; the oracle blind to clutter, coverage > 0.85; false tracks add up;" \
-    "the clutter map nearer the truth than the profile;" \
+    "the clutter map nearer the truth than the profile; cfar's densities used;" \
     "identical with 1 and 2 threads"

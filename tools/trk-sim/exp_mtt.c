@@ -380,10 +380,12 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
  * its absolute bearing, no pose; the others the polar scan as a user
  * gives it: scan.polar, has_pose, pose, detections NULL; cfar with each
  * detection's true clutter density (mtt_scen_clutter_density: what a
- * CFAR that knew its background would pass; none at clutter 0). 0, or
- * -1. */
+ * CFAR that knew its background would pass; where the truth has none, a
+ * return beyond the clutter's sector, the density of tp's sensor there;
+ * none at clutter 0). 0, or -1. */
 static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int kind,
-                          struct run_ws *ws, struct trk_scan *scan, struct mtt_scan_info *info)
+                          const struct trk_tracker_params *tp, struct run_ws *ws, struct trk_scan *scan,
+                          struct mtt_scan_info *info)
 {
     if (mtt_scen_scan_polar(sc, k, clutter, ws->det, ws->polar, max, ws->origin, scan, info) != 0) return -1;
     if (kind == CFG_ORACLE) return 0;
@@ -405,8 +407,10 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
     if (kind == CFG_CFAR && clutter > 0) {
         for (size_t i = 0; i < scan->n_detections; i++) {
             const double r = (double)ws->polar[i].range_m, b = (double)(pose.heading_rad + ws->polar[i].bearing_rad);
-            ws->lambda[i] = (trk_real)mtt_scen_clutter_density(sc, k, clutter, (double)pose.x_m + r * sin(b),
-                                                                (double)pose.y_m + r * cos(b));
+            const double x = (double)pose.x_m + r * sin(b), y = (double)pose.y_m + r * cos(b);
+            const double truth = mtt_scen_clutter_density(sc, k, clutter, x, y);
+            /* outside the clutter's region (a return beyond the sector) the sensor's description */
+            ws->lambda[i] = truth > 0 ? (trk_real)truth : trk_sensor_clutter_at(&tp->sensor[0], &pose, (trk_real)x, (trk_real)y);
         }
         scan->clutter_density_per_m2 = ws->lambda;
     }
@@ -443,7 +447,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
         struct mtt_scan_info info;
         const size_t max = over == OVER_CAP ? TRK_MAX_DETECTIONS : TRK_MAX_SCAN_DETECTIONS;
         if (!sonar) mtt_scen_scan(sc, k, clutter, ws->det, max, ws->origin, &scan, &info);
-        else if (sonar_scan_for(sc, k, clutter, max, kind, ws, &scan, &info) != 0) {
+        else if (sonar_scan_for(sc, k, clutter, max, kind, tp, ws, &scan, &info) != 0) {
             rc = -1;
             break;
         }
@@ -1022,7 +1026,7 @@ static int clutter_map_dump(const struct sim_common *com, const struct mtt_scena
         for (long k = 0; k < ns && rc == 0; k++) {
             struct trk_scan scan;
             struct mtt_scan_info info;
-            if (sonar_scan_for(sc, k, clutter, TRK_MAX_SCAN_DETECTIONS, CFG_NEW, ws, &scan, &info) != 0 ||
+            if (sonar_scan_for(sc, k, clutter, TRK_MAX_SCAN_DETECTIONS, CFG_NEW, &tp[l * nc + c], ws, &scan, &info) != 0 ||
                 trk_tracker_process_scan(ws->tk, &scan, NULL) != TRK_OK)
                 rc = -1;
         }
