@@ -64,6 +64,16 @@ static void assert_tables_alike(const struct trk_tracker *a, const struct trk_tr
     }
 }
 
+/* tk_a and tk_b configured with densities lambda_a and lambda_b */
+static void init_pair(double lambda_a, double lambda_b)
+{
+    struct trk_tracker_params pa, pb;
+    params_with(&pa, lambda_a);
+    params_with(&pb, lambda_b);
+    TRK_ASSERT_OK(trk_tracker_init(&tk_a, &pa));
+    TRK_ASSERT_OK(trk_tracker_init(&tk_b, &pb));
+}
+
 /* a runs the scans with lambda_c(detection) given, b without; confirmed
  * tracks counted at the end. */
 static size_t run_pair(double (*lambda_c)(const struct trk_detection *), int given_b)
@@ -104,11 +114,7 @@ static double uniform_4e6(const struct trk_detection *d)
 static void test_uniform_density_is_the_configured_one(void **state)
 {
     (void)state;
-    struct trk_tracker_params pa, pb;
-    params_with(&pa, 1e-6);
-    params_with(&pb, 4e-6);
-    TRK_ASSERT_OK(trk_tracker_init(&tk_a, &pa));
-    TRK_ASSERT_OK(trk_tracker_init(&tk_b, &pb));
+    init_pair(1e-6, 4e-6);
     assert_int_equal(run_pair(uniform_4e6, 0), N_TGT);
 }
 
@@ -120,11 +126,7 @@ static double patchy(const struct trk_detection *d) { return d->x_m > 1000 ? 3e-
 static void test_configured_density_no_longer_matters(void **state)
 {
     (void)state;
-    struct trk_tracker_params pa, pb;
-    params_with(&pa, 1e-7);
-    params_with(&pb, 1e-5);
-    TRK_ASSERT_OK(trk_tracker_init(&tk_a, &pa));
-    TRK_ASSERT_OK(trk_tracker_init(&tk_b, &pb));
+    init_pair(1e-7, 1e-5);
     assert_int_equal(run_pair(patchy, 1), N_TGT);
 }
 
