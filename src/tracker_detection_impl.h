@@ -30,7 +30,7 @@ static struct amp_use amp_use_of(const struct trk_tracker *t, const struct trk_s
     struct amp_use au = {
         sp, t->params.max_coord_m, t->params.confirm.method == TRK_CONFIRM_CLUTTER_AMP, /* the dB values' only user */
         TRK_REAL_C(10.0) * trk_log10(sp->use_amplitude ? sp->amplitude.clutter_power : 1),
-        sp->use_amplitude && sp->pd_profile.n > 0 ? v : NULL, sp->use_amplitude ? t->ws.persistent_share : 0,
+        sp->use_amplitude && sp->pd_profile.n > 0 ? v : NULL, t->ws.persistent_share, /* > 0 only with use_amplitude (checked at init) */
         sp->persistent_pd, 0, 0, 0, 0, 0};
     if (au.eta > 0) { /* the mixture's constants, once per scan (checked at init: eta in (0, 1), pd_s in (pfa, 1)) */
         au.ln_eta = trk_log(au.eta);

@@ -405,12 +405,11 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
     scan->has_pose = 1;
     scan->pose = pose;
     if (kind == CFG_CFAR && clutter > 0) {
-        for (size_t i = 0; i < scan->n_detections; i++) {
-            const double r = (double)ws->polar[i].range_m, b = (double)(pose.heading_rad + ws->polar[i].bearing_rad);
-            const double x = (double)pose.x_m + r * sin(b), y = (double)pose.y_m + r * cos(b);
-            const double truth = mtt_scen_clutter_density(sc, k, clutter, x, y);
+        for (size_t i = 0; i < scan->n_detections; i++) { /* at det[i], polar[i] converted by the library */
+            const trk_real x = ws->det[i].x_m, y = ws->det[i].y_m;
+            const double truth = mtt_scen_clutter_density(sc, k, clutter, (double)x, (double)y);
             /* outside the clutter's region (a return beyond the sector) the sensor's description */
-            ws->lambda[i] = truth > 0 ? (trk_real)truth : trk_sensor_clutter_at(&tp->sensor[0], &pose, (trk_real)x, (trk_real)y);
+            ws->lambda[i] = truth > 0 ? (trk_real)truth : trk_sensor_clutter_at(&tp->sensor[0], &pose, x, y);
         }
         scan->clutter_density_per_m2 = ws->lambda;
     }
