@@ -34,6 +34,9 @@ static void test_scripted_run(void **state)
     assert_int_equal(s.n_targets, 2);
     assert_int_equal(s.n_never, 0);
     TRK_ASSERT_NEAR(s.scans_to_confirm_mean, 1.5, 0, 0);    /* target 1 at scan 1, target 2 at scan 2 */
+    TRK_ASSERT_NEAR(mtt_eval_target_to_confirm(&e, 1), 1, 0, 0);
+    TRK_ASSERT_NEAR(mtt_eval_target_to_confirm(&e, 2), 2, 0, 0);
+    assert_true(isnan(mtt_eval_target_to_confirm(&e, 3))); /* never seen */
     TRK_ASSERT_NEAR(s.coverage, 8.0 / 12.0, 1e-12, 0);       /* assigned 0, 1, 2, 2, 1, 2 of 2 per scan */
     assert_int_equal(s.id_switches, 1);
     assert_int_equal(s.fragmentations, 1);
@@ -66,11 +69,29 @@ static void test_gospa_mean_closed_form(void **state)
     mtt_eval_free(&e);
 }
 
+/* A target present but never within c of a track: counted in n_never, and
+ * its own scans to confirm are undefined (not 0, not the run's length). */
+static void test_never_confirmed(void **state)
+{
+    (void)state;
+    struct mtt_eval e;
+    mtt_eval_init(&e, 10);
+    const struct mtt_obj t[1] = {{7, 0, 0}}, far[1] = {{1, 100, 0}};
+    for (int k = 0; k < 3; k++) assert_int_equal(mtt_eval_scan(&e, t, 1, far, 1), 0);
+    struct mtt_summary s;
+    mtt_eval_summary(&e, &s);
+    assert_int_equal(s.n_never, 1);
+    assert_true(isnan(s.scans_to_confirm_mean));
+    assert_true(isnan(mtt_eval_target_to_confirm(&e, 7)));
+    mtt_eval_free(&e);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scripted_run),
         cmocka_unit_test(test_gospa_mean_closed_form),
+        cmocka_unit_test(test_never_confirmed),
     };
     return trk_run_tests("mtt_eval", tests, NULL, NULL);
 }

@@ -145,6 +145,16 @@ out:
     return rc;
 }
 
+double mtt_eval_target_to_confirm(const struct mtt_eval *e, long id)
+{
+    for (size_t i = 0; i < e->n_targets; i++) {
+        const struct mtt_target_state *t = &e->targets[i];
+        if (t->id != id) continue;
+        return t->first_assigned < 0 ? NAN : (double)((size_t)t->first_assigned - t->first_scan);
+    }
+    return NAN;
+}
+
 void mtt_eval_summary(const struct mtt_eval *e, struct mtt_summary *s)
 {
     memset(s, 0, sizeof *s);

@@ -75,5 +75,8 @@ int mtt_eval_scan(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_trut
 int mtt_eval_scan_assign(struct mtt_eval *e, const struct mtt_obj *truth, size_t n_truth,
                          const struct mtt_obj *est, size_t n_est, long *assign_out);
 void mtt_eval_summary(const struct mtt_eval *e, struct mtt_summary *s);
+/* Scans from target id's first scan to its first assigned scan (its share
+ * of scans_to_confirm_mean); NAN when it was never assigned or never seen. */
+double mtt_eval_target_to_confirm(const struct mtt_eval *e, long id);
 
 #endif

@@ -154,6 +154,7 @@ enum {
     M_CROSS_IDSW, M_CROSS_DUP, M_CROSS_COAL, M_PAR_IDSW, M_PAR_DUP, M_PAR_COAL, M_FALSE_TRK,
     M_FALSE_TS, M_DUP_TS, M_FRAG, M_IDSW, M_RMSE, M_CPU, M_CONF, M_LIVE, M_FULL, M_CLUTTER, M_CAPPED,
     M_TARGETS, M_PRESENT, M_KEPT, M_THINNED, M_THIN_SCANS, M_THIN_GATES, M_REFUSED,
+    M_STC_CROSS, M_STC_PAIR, M_STC_TURN, M_STC_STRAIGHT, M_STC_BIRTH, M_STC_DEATH,
 #define X(f) M_REP_##f,
     MTT_REPORT_COUNTERS(X)
 #undef X
@@ -177,6 +178,8 @@ static const char *const metric_name[M_N] = {
     "clutter_capped_scans",
     "targets_per_run", "targets_present_per_scan", "kept_per_scan", "thinned_per_scan", "thinned_scans",
     "thinned_in_gates_scans", "refused_scans",
+    "to_confirm_cross", "to_confirm_pair", "to_confirm_turn", "to_confirm_straight", "to_confirm_birth",
+    "to_confirm_death",
 #define X(f) "rep_" #f,
     MTT_REPORT_COUNTERS(X)
 #undef X
@@ -418,6 +421,32 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
 
 /* One run of the trackers' configuration tp, or of the oracle (tp gives
  * its sensor R and q). cart: the sonar family's (sonar_scan_for). */
+/* Scans to confirm per designated role (the scenario's tg[r] has role r;
+ * the pairs' two averaged): a run's mean over its targets of that role
+ * that were ever confirmed, NAN when none was: which situations the
+ * overall figure comes from (on the sonar, the far target's). */
+static void role_to_confirm(const struct mtt_eval *ev, const struct mtt_scenario *sc, double *v)
+{
+    static const struct {
+        int metric, first, last; /* roles first .. last */
+    } group[] = {
+        {M_STC_CROSS, MTT_CROSS_A, MTT_CROSS_B}, {M_STC_PAIR, MTT_PAR_A, MTT_PAR_B},
+        {M_STC_TURN, MTT_TURN, MTT_TURN},        {M_STC_STRAIGHT, MTT_STRAIGHT, MTT_STRAIGHT},
+        {M_STC_BIRTH, MTT_BIRTH, MTT_BIRTH},     {M_STC_DEATH, MTT_DEATH, MTT_DEATH},
+    };
+    for (size_t g = 0; g < sizeof group / sizeof group[0]; g++) {
+        double sum = 0;
+        int n = 0;
+        for (int r = group[g].first; r <= group[g].last && (size_t)r < sc->n_targets; r++) {
+            const double x = mtt_eval_target_to_confirm(ev, r);
+            if (isnan(x)) continue;
+            sum += x;
+            n++;
+        }
+        v[group[g].metric] = n ? sum / n : NAN;
+    }
+}
+
 static int run_one(const struct mtt_scenario *sc, long clutter, int over, int kind,
                    const struct trk_tracker_params *tp, double c_m, struct run_ws *ws, struct run_result *res)
 {
@@ -588,6 +617,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
         v[M_MISSED] = su.missed_mean_m2;
         v[M_FALSE] = su.false_mean_m2;
         v[M_STC] = su.scans_to_confirm_mean;
+        role_to_confirm(&ev, sc, v);
         v[M_NEVER] = (double)su.n_never;
         v[M_COV] = su.coverage;
         man_result(&turn, v, M_TURN);
@@ -745,6 +775,12 @@ static void print_tables(const struct mtt_row *rows, int n)
         {"in gates", M_THIN_GATES, 8, 1, 0, 1},      {"refused scans", M_REFUSED, 13, 1, 0, 1},
         {"capped scans", M_CAPPED, 12, 1, 0, 1},
     };
+    static const struct column confirm[] = {
+        {"all", M_STC, 11, 1, 1, 1},              {"crossing", M_STC_CROSS, 11, 1, 1, 1},
+        {"pair", M_STC_PAIR, 11, 1, 1, 1},        {"turn", M_STC_TURN, 11, 1, 1, 1},
+        {"straight", M_STC_STRAIGHT, 11, 1, 1, 1}, {"birth", M_STC_BIRTH, 11, 1, 1, 1},
+        {"death", M_STC_DEATH, 11, 1, 1, 1},
+    };
     static const struct column pairs[] = {
         {"X both", M_CROSS, 7, 2, 0, 1},        {"X idsw", M_CROSS_IDSW, 7, 2, 0, 1},
         {"X dup%", M_CROSS_DUP, 7, 1, 0, 1},    {"X coal%", M_CROSS_COAL, 7, 1, 0, 1},
@@ -778,6 +814,10 @@ static void print_tables(const struct mtt_row *rows, int n)
            "   per run: scans thinned (in gates: the cut inside the gate boxes), refused, clutter capped\n",
            TRK_MAX_DETECTIONS);
     print_table(rows, n, capacity, N_COLS(capacity));
+    printf("-- scans to the first confirmed track (from the target's first scan) per designated target: all,\n"
+           "   the crossing's and the pair's two (their mean), the turn, the straight one (sonar: the far\n"
+           "   target, across the line of sight near the sector's end), the birth, the death\n");
+    print_table(rows, n, confirm, N_COLS(confirm));
     printf("-- the crossing (X) and the parallel pair: both held (fraction of scans), identity switches per run,\n"
            "   duplicate target-scans and coalesced scans per 100 (X: from %d scans before to %d after)\n",
            CROSS_WINDOW, CROSS_AFTER);
