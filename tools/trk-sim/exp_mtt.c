@@ -419,8 +419,6 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
     return 0;
 }
 
-/* One run of the trackers' configuration tp, or of the oracle (tp gives
- * its sensor R and q). cart: the sonar family's (sonar_scan_for). */
 /* Scans to confirm per designated role (the scenario's tg[r] has role r;
  * the pairs' two averaged): a run's mean over its targets of that role
  * that were ever confirmed, NAN when none was: which situations the
@@ -447,6 +445,8 @@ static void role_to_confirm(const struct mtt_eval *ev, const struct mtt_scenario
     }
 }
 
+/* One run of the trackers' configuration tp, or of the oracle (tp gives
+ * its sensor R and q). cart: the sonar family's (sonar_scan_for). */
 static int run_one(const struct mtt_scenario *sc, long clutter, int over, int kind,
                    const struct trk_tracker_params *tp, double c_m, struct run_ws *ws, struct run_result *res)
 {
