@@ -17,8 +17,20 @@
  *                                 empty table after two such scans
  *   worst_storm_full_<d>          the same on 63 confirmed tracks
  *   worst_gap<s>_<d>              the typical scan s seconds after the last
- * each with a "_ratio" line (the case over the typical scan, x). With
- * TRK_WITH_IMM every track an IMM track of three models (worst_imm_...). */
+ * each with a "_ratio" line (the case over the typical scan, x) and the
+ * methods the scan took (its report): "_own_pda", the tracks left out of the
+ * joint problem (its pair store full) to their own PDA, and "_bp", the
+ * clusters solved by belief propagation. A geometry's sizes end with
+ * "worst_<geometry>_monotone": 1 when, between consecutive sizes that split
+ * the work alike (as many tracks left to their own PDA, as many clusters by
+ * belief propagation), the time never fell by more than MONO_TOL (the
+ * machine's noise). Where the split changes the time may fall: the pair
+ * store holds TRK_MAX_GATED_PAIRS, so twice the detections in every gate
+ * leave half the tracks in the joint problem, and a cluster past the exact
+ * bound takes the cheaper belief propagation. The run
+ * ends with "worst_dearest_full_load": 1 when the dearest case of all is at
+ * the full load (256 detections), within MONO_TOL. With TRK_WITH_IMM every
+ * track an IMM track of three models (worst_imm_...). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,11 +42,26 @@
 #define W_TRK 64
 #define W_DET 256
 #define N_REPS 15
+#define MONO_TOL 0.05 /* a fall within 5 % is the machine's noise, not the scan's */
+
+static const int sizes[] = {16, 32, 64, 128, 256};
+#define N_SIZES ((int)(sizeof sizes / sizeof sizes[0]))
+
+/* One geometry's cases over the sizes: time and how the scan split its
+ * work (tracks left to their own PDA, clusters by belief propagation). */
+struct worst_series {
+    int n;
+    double ns[N_SIZES];
+    int own_pda[N_SIZES], bp[N_SIZES];
+};
 
 struct worst_job {
     struct trk_tracker_params p;
     struct trk_tracker base, work, tk;
     struct trk_detection det[W_DET];
+    struct trk_scan_report rep; /* of the last timed scan */
+    struct worst_series series;
+    double dearest_ratio, dearest_below_full_ratio; /* over every case of the run */
     uint64_t rs;
     double typical_ns;
     const char *prefix;
@@ -100,7 +127,7 @@ static double worst_time(struct worst_job *j, size_t nd, int64_t time_us)
     for (int r = 0; r < N_REPS; r++) {
         memcpy(&j->tk, &j->work, sizeof j->tk);
         const double t0 = bench_now_ns();
-        const trk_status st = trk_tracker_process_scan(&j->tk, &scan, NULL);
+        const trk_status st = trk_tracker_process_scan(&j->tk, &scan, &j->rep);
         const double dt = bench_now_ns() - t0;
         if (st != TRK_OK) return -1;
         if (dt < best) best = dt;
@@ -108,7 +135,7 @@ static double worst_time(struct worst_job *j, size_t nd, int64_t time_us)
     return best;
 }
 
-static void worst_report(const struct worst_job *j, const char *name, int size, double ns)
+static void worst_report(struct worst_job *j, const char *name, int size, double ns)
 {
     char what[96];
     snprintf(what, sizeof what, "%sworst_%s_%d", j->prefix, name, size);
@@ -117,8 +144,37 @@ static void worst_report(const struct worst_job *j, const char *name, int size, 
         return;
     }
     bench_print(what, ns, "ns");
+    const double ratio = ns / j->typical_ns;
     snprintf(what, sizeof what, "%sworst_%s_%d_ratio", j->prefix, name, size);
-    bench_print(what, ns / j->typical_ns, "x");
+    bench_print(what, ratio, "x");
+    snprintf(what, sizeof what, "%sworst_%s_%d_own_pda", j->prefix, name, size);
+    bench_print(what, j->rep.n_assoc_overflow, "tracks");
+    snprintf(what, sizeof what, "%sworst_%s_%d_bp", j->prefix, name, size);
+    bench_print(what, j->rep.n_clusters_approx, "clusters");
+    if (size == W_DET && ratio > j->dearest_ratio) j->dearest_ratio = ratio;
+    if (size < W_DET && ratio > j->dearest_below_full_ratio) j->dearest_below_full_ratio = ratio;
+    struct worst_series *se = &j->series;
+    if (se->n < N_SIZES) {
+        se->ns[se->n] = ns;
+        se->own_pda[se->n] = (int)j->rep.n_assoc_overflow;
+        se->bp[se->n] = (int)j->rep.n_clusters_approx;
+        se->n++;
+    }
+}
+
+/* The geometry's sizes done: is its time monotone within each method? */
+static void worst_series_end(struct worst_job *j, const char *name)
+{
+    const struct worst_series *se = &j->series;
+    int mono = se->n > 0;
+    for (int q = 1; q < se->n; q++)
+        if (se->own_pda[q] == se->own_pda[q - 1] && se->bp[q] == se->bp[q - 1] &&
+            se->ns[q] < (1 - MONO_TOL) * se->ns[q - 1])
+            mono = 0;
+    char what[96];
+    snprintf(what, sizeof what, "%sworst_%s_monotone", j->prefix, name);
+    bench_print(what, mono, "(1: at each split of the work)");
+    j->series.n = 0;
 }
 
 /* The typical scan: tracks on a 150 m grid, one detection each (within
@@ -141,9 +197,6 @@ static double worst_typical(struct worst_job *j, double gap_s)
     return worst_time(j, W_DET, 8000000 + (int64_t)(gap_s * 1e6));
 }
 
-static const int sizes[] = {16, 32, 64, 128, 256};
-#define N_SIZES ((int)(sizeof sizes / sizeof sizes[0]))
-
 static void worst_cluster(struct worst_job *j, int k)
 {
     double xy[2 * W_TRK];
@@ -159,6 +212,7 @@ static void worst_cluster(struct worst_job *j, int k)
         for (int i = 0; i < sizes[q]; i++) det_at(&j->det[i], bench_urand(&j->rs) - 0.5, bench_urand(&j->rs) - 0.5);
         worst_report(j, name, sizes[q], worst_time(j, (size_t)sizes[q], 8000000));
     }
+    worst_series_end(j, name);
 }
 
 static void worst_geometry(struct worst_job *j)
@@ -171,6 +225,7 @@ static void worst_geometry(struct worst_job *j)
         for (int i = 0; i < sizes[q]; i++) det_at(&j->det[i], 5.0 * (W_TRK - 1) * i / sizes[q], 0.5 * ((i % 3) - 1));
         worst_report(j, "chain", sizes[q], worst_time(j, (size_t)sizes[q], 8000000));
     }
+    worst_series_end(j, "chain");
     /* the lattice at gate spacing */
     for (int i = 0; i < W_TRK; i++) xy[2 * i] = 3.0 * (i % 8), xy[2 * i + 1] = 3.0 * (i / 8);
     worst_place(j, xy);
@@ -179,6 +234,7 @@ static void worst_geometry(struct worst_job *j)
         for (int i = 0; i < sizes[q]; i++) det_at(&j->det[i], 21.0 * bench_urand(&j->rs), 21.0 * bench_urand(&j->rs));
         worst_report(j, "lattice", sizes[q], worst_time(j, (size_t)sizes[q], 8000000));
     }
+    worst_series_end(j, "lattice");
     /* coincident detections on 4 tracks at one point */
     for (int i = 0; i < W_TRK; i++) {
         xy[2 * i] = i < 4 ? 0 : 5000.0 + 1000.0 * (i % 8);
@@ -189,12 +245,14 @@ static void worst_geometry(struct worst_job *j)
         for (int i = 0; i < sizes[q]; i++) det_at(&j->det[i], 0, 0);
         worst_report(j, "coincident", sizes[q], worst_time(j, (size_t)sizes[q], 8000000));
     }
+    worst_series_end(j, "coincident");
     /* long gaps before the typical scan */
     static const int gaps_s[] = {10, 60, 300};
     for (int g = 0; g < 3; g++) {
         char name[32];
         snprintf(name, sizeof name, "gap%d", gaps_s[g]);
         worst_report(j, name, W_DET, worst_typical(j, gaps_s[g]));
+        j->series.n = 0; /* one size each: nothing to be monotone */
     }
 }
 
@@ -219,6 +277,7 @@ static void worst_storm(struct worst_job *j, int n_trk, const char *name)
         for (int i = 0; i < nd; i++) det_at(&j->det[i], 50.0 * (i % 16) + 25.0, 50.0 * (i / 16) + 25.0);
         worst_report(j, name, nd, worst_time(j, (size_t)nd, 10000000));
     }
+    worst_series_end(j, name);
 }
 
 static void worst_run(int imm, const char *prefix)
@@ -248,6 +307,9 @@ static void worst_run(int imm, const char *prefix)
                 worst_storm(j, 0, "storm_empty");
                 memcpy(&j->base, keep63, sizeof *keep63);
                 worst_storm(j, W_TRK - 1, "storm_full");
+                bench_print(imm ? "imm_worst_dearest_full_load" : "worst_dearest_full_load",
+                            j->dearest_ratio >= (1 - MONO_TOL) * j->dearest_below_full_ratio,
+                            "(1: the dearest case is at 256 detections)");
             } else {
                 bench_print(imm ? "imm_worst_failed_setup_64" : "worst_failed_setup_64", 0, "-");
             }
