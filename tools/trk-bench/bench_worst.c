@@ -162,7 +162,8 @@ static void worst_report(struct worst_job *j, const char *name, int size, double
     }
 }
 
-/* The geometry's sizes done: is its time monotone within each method? */
+/* The geometry's sizes done: is its time monotone at each split of its work
+ * (a refused case, which a full-capacity build never has, is left out)? */
 static void worst_series_end(struct worst_job *j, const char *name)
 {
     const struct worst_series *se = &j->series;
