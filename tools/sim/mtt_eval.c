@@ -145,13 +145,16 @@ out:
     return rc;
 }
 
+/* Scans from a target's first scan to its first assigned one; NAN never assigned. */
+static double to_confirm(const struct mtt_target_state *t)
+{
+    return t->first_assigned < 0 ? NAN : (double)((size_t)t->first_assigned - t->first_scan);
+}
+
 double mtt_eval_target_to_confirm(const struct mtt_eval *e, long id)
 {
-    for (size_t i = 0; i < e->n_targets; i++) {
-        const struct mtt_target_state *t = &e->targets[i];
-        if (t->id != id) continue;
-        return t->first_assigned < 0 ? NAN : (double)((size_t)t->first_assigned - t->first_scan);
-    }
+    for (size_t i = 0; i < e->n_targets; i++)
+        if (e->targets[i].id == id) return to_confirm(&e->targets[i]);
     return NAN;
 }
 
@@ -169,11 +172,12 @@ void mtt_eval_summary(const struct mtt_eval *e, struct mtt_summary *s)
     double sum = 0;
     size_t k = 0;
     for (size_t i = 0; i < e->n_targets; i++) {
-        if (e->targets[i].first_assigned < 0) {
+        const double x = to_confirm(&e->targets[i]);
+        if (isnan(x)) {
             s->n_never++;
             continue;
         }
-        sum += (double)((size_t)e->targets[i].first_assigned - e->targets[i].first_scan);
+        sum += x;
         k++;
     }
     s->scans_to_confirm_mean = k ? sum / (double)k : NAN;
