@@ -14,11 +14,18 @@
 #include "tracker_index_impl.h"
 
 /* Is track a stronger than b (kept when they merge)? Confirmed over
- * tentative, then more hits, then older (smaller id: ids only grow, except
+ * tentative; of two tentative tracks with existence, the more probable one
+ * (a tentative track's existence is its quality, as when a slot is taken:
+ * a track on clutter that has gathered hits in its wide gate must not
+ * absorb a younger track on a target whose existence is higher: trk-sim mtt
+ * --family sonar at 100 per ping, 1 024 slots, 40 seeds: GOSPA 178.1 ->
+ * 175.0 m); then more hits, then older (smaller id: ids only grow, except
  * after 2^32 tracks). */
-static int stronger(const struct trk_track *a, const struct trk_track *b)
+static int stronger(const struct trk_tracker *t, const struct trk_track *a, const struct trk_track *b)
 {
     if (a->status != b->status) return a->status == TRK_TRACK_CONFIRMED;
+    if (a->status == TRK_TRACK_TENTATIVE && t->params.track_visibility && a->vis.pv != b->vis.pv)
+        return a->vis.pv > b->vis.pv;
     if (a->n_hits != b->n_hits) return a->n_hits > b->n_hits;
     return a->id < b->id;
 }
@@ -57,7 +64,7 @@ static void merge_pair(struct trk_tracker *t, struct trk_track *a, struct trk_tr
 {
     const trk_real g = t->params.merge_gate_d2;
     if (!is_live(a) || !is_live(b) || !may_duplicate(t, a, b, g) || !duplicates(t, a, b, g)) return;
-    end_track(stronger(a, b) ? b : a, TRK_END_MERGED, rep);
+    end_track(stronger(t, a, b) ? b : a, TRK_END_MERGED, rep);
 }
 
 /* Every pair (i < j) of live slots in slot order, as merge_duplicates'

@@ -1024,6 +1024,8 @@ static void test_merge_duplicates(void **state)
         base_params(&p);
         p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-3);
         p.merge_gate_d2 = merge ? 4 : 0;
+        p.track_visibility = 0; /* no existence: of two tentative tracks, more hits, then the older
+                                   (with existence the more probable: test_merge_keeps_more_probable) */
         TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
         struct trk_detection d[2];
         memset(d, 0, sizeof d);
@@ -1063,6 +1065,60 @@ static void test_merge_duplicates(void **state)
     base_params(&p);
     p.merge_gate_d2 = -1;
     TRK_ASSERT_STATUS(trk_tracker_init(&tk, &p), TRK_E_RANGE);
+}
+
+/* Of two tentative tracks on one target, the merge keeps the one whose
+ * existence is higher, not the one with more hits: a track on clutter that
+ * gathered hits in its wide gate must not absorb the target's own. Two
+ * pairs start two tracks on one target; the older one is given more hits
+ * and a lower existence; once they converge the younger survives. */
+static void test_merge_keeps_more_probable(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p);
+    p.sensor[0].pd = TRK_REAL_C(0.9);
+    p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
+    p.init_exclusion_d2 = 0;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_detection d[2];
+    memset(d, 0, sizeof d);
+    for (int k = 0; k < 2; k++) { /* two detections of one target 3 m apart, twice: two pairs */
+        d[0].x_m = (trk_real)k;
+        d[1].x_m = (trk_real)(k + 3);
+        struct trk_scan s = {SEC(k), 0, 2, d, NULL, 0, {0, 0, 0}, NULL};
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, NULL));
+    }
+    assert_int_equal(count_status(&tk, TRK_TRACK_TENTATIVE), 2);
+    struct trk_track *older = NULL, *younger = NULL;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        struct trk_track *a = &tk.track[i];
+        if (a->status != TRK_TRACK_TENTATIVE) continue;
+        if (!older || a->id < older->id) younger = older, older = a;
+        else younger = a;
+    }
+    assert_non_null(older);
+    assert_non_null(younger);
+    const uint32_t younger_id = younger->id;
+    older->n_hits += 5;
+    older->vis.pv = TRK_REAL_C(0.001);
+    younger->vis.pv = TRK_REAL_C(0.1);
+    uint32_t merged = 0;
+    for (int k = 2; k < 12 && merged == 0; k++) {
+        d[0].x_m = (trk_real)(k + 1.5);
+        struct trk_scan s = {SEC(k), 0, 1, d, NULL, 0, {0, 0, 0}, NULL};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+        check_invariants(&tk);
+        merged += rep.n_merged;
+    }
+    assert_int_equal(merged, 1);
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *a = trk_tracker_track(&tk, i);
+        if (!a) continue;
+        if (a->status == TRK_TRACK_TERMINATED) assert_int_equal(a->end_reason, TRK_END_MERGED);
+        else assert_int_equal(a->id, younger_id);
+    }
 }
 
 /* A detection outside a confirmed track's gate but within init_exclusion_d2
@@ -1134,6 +1190,7 @@ int main(void)
         cmocka_unit_test(test_amplitude_pdafai),
         cmocka_unit_test(test_visibility_methods),
         cmocka_unit_test(test_merge_duplicates),
+        cmocka_unit_test(test_merge_keeps_more_probable),
         cmocka_unit_test(test_merge_many),
         cmocka_unit_test(test_init_exclusion_and_visibility_reject),
     };
