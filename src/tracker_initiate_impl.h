@@ -540,6 +540,12 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
                       pair_log_disp(t, c, r_c, t->ws.x[j], t->ws.y[j], r_j, dt));
     const trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt);
     const trk_real psi0 = initial_existence(t, log_odds3 > -TRK_REAL_MAX ? log_odds3 : log_odds);
+    if (log_odds3 == -TRK_REAL_MAX && psi0 < t->params.init.min_existence) { /* a weak pair (NaN never
+                                                                        is): j waits for a third point */
+        link_refused(t, run_k, ci, j);
+        rep->n_init_deferred++;
+        return 0;
+    }
     const trk_real z_c[NZ] = {c->x_m, c->y_m}, z_j[NZ] = {t->ws.x[j], t->ws.y[j]};
     /* P is SPD in exact arithmetic; rounding can break it when R_c is tiny
      * against R_j: then no track, the detection stays a candidate */

@@ -31,6 +31,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_speed_mps = 15; /* 30 knots */
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
+    p->init.min_existence = TRK_REAL_C(0.003); /* docs/tuning.md "The least initial existence" */
     p->stationary_d2 = 25; /* motion past 5 sigma: a still object passes at e^-12.5 = 3.7e-6 (chi^2_2);
                               docs/tracker.md "Persistent returns" for the measured choice */
     /* a clutter map for a sensor with a coverage: 16 x 16 cells, 20 scans'
@@ -73,6 +74,7 @@ void trk_tracker_mn_kn_params(struct trk_tracker_params *p)
     p->term.u.kn.n = 5;
     p->init.method = TRK_INIT_SINGLE_POINT;
     p->init.birth_density_per_m2 = 0;
+    p->init.min_existence = 0;
     p->stationary_d2 = 0; /* as before the hold of tracks that stand still */
     p->max_pos_sigma_ratio = 0;
     p->visibility.delta_become = TRK_REAL_C(0.01);
@@ -182,6 +184,8 @@ static trk_status check_init(const struct trk_init_params *in, const char **fiel
         return refuse(field, "init.method", TRK_E_ARG);
     if ((st = check_real(in->birth_density_per_m2, 0, 0, TRK_REAL_MAX, "init.birth_density_per_m2", field)) != TRK_OK)
         return st;
+    if ((st = check_real(in->min_existence, 0, 0, 1, "init.min_existence", field)) != TRK_OK) return st;
+    if (in->min_existence >= 1) return refuse(field, "init.min_existence", TRK_E_RANGE); /* no pair would start */
     if (in->method == TRK_INIT_SINGLE_POINT) return TRK_OK;
     if ((st = check_real(in->max_speed_mps, 0, 1, TRK_REAL_MAX, "init.max_speed_mps", field)) != TRK_OK) return st;
     return in->max_gap_scans >= 1 && in->max_gap_scans < TRK_MAX_CANDIDATE_SCANS

@@ -380,6 +380,9 @@ static void test_check_params(void **state)
         TRK_ASSERT_STATUS(trk_tracker_process_scan(&tk, &s2, NULL), TRK_E_RANGE);
     }
     REFUSE(merge_gate_d2, -1, "merge_gate_d2", TRK_E_RANGE);
+    REFUSE(init.min_existence, -TRK_REAL_C(0.1), "init.min_existence", TRK_E_RANGE);
+    REFUSE(init.min_existence, 1, "init.min_existence", TRK_E_RANGE); /* no pair would start */
+    REFUSE(init.min_existence, NAN, "init.min_existence", TRK_E_NAN);
     REFUSE(init_exclusion_d2, (trk_real)INFINITY, "init_exclusion_d2", TRK_E_NAN);
     REFUSE(max_coord_m, 0, "max_coord_m", TRK_E_RANGE);
     REFUSE(max_coord_m, 2 * TRK_MAX_COORD_M_LIMIT, "max_coord_m", TRK_E_RANGE);
@@ -1080,6 +1083,7 @@ static void test_merge_keeps_more_probable(void **state)
     p.sensor[0].pd = TRK_REAL_C(0.9);
     p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-4);
     p.init_exclusion_d2 = 0;
+    p.init.min_existence = 0; /* both pairs start at once */
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     struct trk_detection d[2];
     memset(d, 0, sizeof d);

@@ -103,6 +103,48 @@ static void test_two_point_start(void **state)
     assert_int_equal(tr->n_hits, 2);
 }
 
+/* A pair below init.min_existence starts no track (counted); its second
+ * point waits as a candidate that remembers the first, and the third
+ * detection on the line starts the track with the three points' odds: the
+ * pair's times P_D N(z3; z^, S) / lambda, z^ = 2 z2 - z1 (equal gaps),
+ * S = R + 4 R + R + q dt^3 / 3 I. Three points start however weak; a pair
+ * above the threshold starts at once. */
+static void test_min_existence(void **state)
+{
+    (void)state;
+    const double lambda = 1e-5, beta = 1e-9, pd = 0.8, pi = 3.14159265358979323846;
+    for (int above = 0; above <= 1; above++) {
+        struct trk_tracker_params p;
+        sonar_params(&p, lambda);
+        p.init.min_existence = above ? TRK_REAL_C(1e-30) : TRK_REAL_C(0.99);
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        struct trk_scan_report rep;
+        struct trk_detection d = det_at(100, 200);
+        TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+        d = det_at(140, 220);
+        TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+        assert_int_equal(rep.n_started, above ? 1 : 0);
+        assert_int_equal(rep.n_init_deferred, above ? 0 : 1);
+        assert_int_equal(rep.n_candidates, above ? 0 : 2); /* the first stays, the second waits */
+        if (above) continue;
+        assert_null(only_live_track());
+        d = det_at(181, 239); /* (180, 240) predicted, 1 m and -1 m off */
+        TRK_ASSERT_OK(run_scan(2, &d, 1, &rep));
+        assert_int_equal(rep.n_started, 1);
+        assert_int_equal(rep.n_init_deferred, 0);
+        const struct trk_track *tr = only_live_track();
+        assert_non_null(tr);
+        assert_int_equal(tr->n_hits, 2); /* it starts from the last two points */
+        const double s2 = p.init_speed_sigma_mps * p.init_speed_sigma_mps, var2 = 50 + s2 * SCAN_S * SCAN_S;
+        const double dens2 = exp(-0.5 * (40.0 * 40.0 + 20.0 * 20.0) / var2) / (2 * pi * var2);
+        const double var3 = 6 * 25 + (double)p.process_noise_q * SCAN_S * SCAN_S * SCAN_S / 3;
+        const double dens3 = exp(-0.5 * (1.0 + 1.0) / var3) / (2 * pi * var3);
+        const double odds = beta / lambda * pd / lambda * dens2 * pd * dens3 / lambda;
+        TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
+        assert_true(tr->existence0 < p.init.min_existence);
+    }
+}
+
 /* A detection's partner is the candidate of the highest ln l^a + ln N(dz;
  * 0, R_c + R + s^2 dt^2 I), the model that also gives the pair's odds: of
  * candidate A 60 m away with R = 1 m^2 and B 80 m away with R = 1e4 m^2
@@ -693,6 +735,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_two_point_start),
+        cmocka_unit_test(test_min_existence),
         cmocka_unit_test(test_pair_by_displacement_density),
         cmocka_unit_test(test_velocity_gate_and_lifetime),
         cmocka_unit_test(test_candidate_store),

@@ -18,6 +18,8 @@ static inline void trk_test_sonar_params(struct trk_tracker_params *p, double la
     p->sensor[0].meas_cov_m2[1] = 0;
     p->sensor[0].clutter_density_per_m2 = (trk_real)lambda;
     p->process_noise_q = TRK_REAL_C(1e-3);
+    p->init.min_existence = 0; /* every pair starts (their odds here are ~1e-5): the tests of pairing
+                                  see the pair itself; test_tracker_init's test_min_existence the wait */
 }
 
 /* The defaults with sensor 0 a polar sonar at the origin facing north

@@ -518,7 +518,8 @@ enum trk_init_method {
  *                 displacement under the velocity prior and the two
  *                 points' noise, truncated by the gate and not
  *                 renormalised; a clutter one has density lambda)
- *   three points: a pair refused for want of a slot leaves its second
+ *   three points: a pair refused for want of a slot, or too weak to
+ *                 start (psi0 below min_existence), leaves its second
  *                 point a candidate that remembers the first; a detection
  *                 that pairs with it inside the gate of that pair's track
  *                 (predicted: S = R + (1 + a)^2 R_c + a^2 R_p + q dt^3 / 3,
@@ -531,6 +532,13 @@ enum trk_init_method {
  *                 free slots (they all start at the same pair odds, and
  *                 replacement needs a strictly lower existence);
  *   psi0 = O / (1 + O); lambda = 0 gives psi0 = 1.
+ * A pair whose psi0 is below min_existence starts no track: its second
+ * point waits as a candidate for a third, so that the many weak pairs of
+ * dense clutter do not each hold a slot and share the targets' detections,
+ * while a target's pair, continued, starts with the three points'
+ * existence (counted: trk_scan_report.n_init_deferred). Three points
+ * always start, whatever their existence: the rule delays a target's start
+ * by one detection at most, it never keeps a target from starting.
  * beta = birth_density_per_m2, lambda the sensor's clutter density, P_D the
  * sensor's. With birth_density_per_m2 = 0 a track starts at the visibility
  * parameters' pv0 / pcv0 instead (Kennedy 2008). The existence is
@@ -542,6 +550,11 @@ struct trk_init_params {
     uint32_t max_gap_scans;           /**< two-point: candidate lifetime in scans,
                                          1 .. TRK_MAX_CANDIDATE_SCANS - 1 (config.h) */
     trk_real birth_density_per_m2;    /**< new targets per m^2 per scan, >= 0 (0: pv0) */
+    trk_real min_existence;           /**< two points: the least initial existence psi0 a
+                                         pair starts a track with, [0, 1); a weaker pair
+                                         waits for a third point (three always start;
+                                         above). 0: every pair starts; no effect with
+                                         birth_density_per_m2 = 0 (no psi0) */
 };
 
 /** How the live tracks share a scan's detections (step 3 above). */
@@ -839,6 +852,8 @@ struct trk_scan_report {
                                        detection that could not start; two points: each pair
                                        without a slot, or, while every slot holds a confirmed
                                        track, each unexplained detection: no pairing runs) */
+    uint32_t n_init_deferred;       /**< pairs below init.min_existence: their second
+                                       point waits as a candidate for a third */
     uint32_t n_numerical;           /**< tracks ended for a numerical failure */
     uint32_t n_merged;              /**< tracks ended as duplicates of another */
     uint32_t n_replaced;            /**< tentative tracks whose slot a new track took */

@@ -92,6 +92,7 @@ static const struct layout_row params_rows[] = {
     REAL(P, init.max_speed_mps, 1, "m/s", "> 0"),
     ROW(P, init.max_gap_scans, 'u', uint32_t, 1, "", "scans", "1 .. TRK_MAX_CANDIDATE_SCANS - 1"),
     REAL(P, init.birth_density_per_m2, 1, "1/m^2 per scan", ">= 0 (0: visibility.pv0)"),
+    REAL(P, init.min_existence, 1, "", "[0, 1) (0: every pair starts)"),
     ROW(P, clutter_map.n_range, 'u', unsigned, 1, "", "cells", "0 (no map) or n_range x n_bearing <= TRK_CLUTTER_MAP_CELLS"),
     ROW(P, clutter_map.n_bearing, 'u', unsigned, 1, "", "cells", "0 (no map) or n_range x n_bearing <= TRK_CLUTTER_MAP_CELLS"),
     REAL(P, clutter_map.time_constant_scans, 1, "scans", ">= 1"),
@@ -238,7 +239,7 @@ static const struct layout_row scan_rows[] = {
 static const struct layout_row report_rows[] = {
     R(n_detections), R(n_rejected_nonfinite), R(n_rejected_cov), R(n_rejected_amplitude),
     R(n_rejected_region), R(n_below_threshold), R(n_rejected_density), R(n_kept), R(n_thinned), R(n_tracks_updated), R(n_tracks_hit), R(n_started), R(n_confirmed), R(n_stationary),
-    R(n_terminated), R(n_init_refused_full), R(n_numerical), R(n_merged), R(n_replaced),
+    R(n_terminated), R(n_init_refused_full), R(n_init_deferred), R(n_numerical), R(n_merged), R(n_replaced),
     R(n_covariance), R(n_candidates), R(n_candidates_dropped), R(n_clusters), R(n_clusters_approx),
     R(largest_cluster), R(n_assoc_overflow),
     ROW(struct trk_scan_report, thin_in_gates, 'u', uint32_t, 1, "", "", "0, 1"),

@@ -241,7 +241,7 @@ static const char *const CONVERSION_NAMES[] = {"first_order", "unbiased", NULL};
 static const char *const KEYS[] = {
     "sensors", "process_noise_q", "gate_prob", "clutter", "init_speed_sigma_mps", "max_dt_s",
     "max_tentative_scans", "max_unseen_scans", "merge_gate_d2", "init_exclusion_d2", "stationary_d2", "association", "filter", "init.method",
-    "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "clutter_map.n_range",
+    "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "init.min_existence", "clutter_map.n_range",
     "clutter_map.n_bearing", "clutter_map.time_constant_scans", "clutter_map.prior_count", "clutter_map.min_ratio",
     "clutter_map.max_ratio", "max_pos_sigma_ratio",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
@@ -557,6 +557,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     }
     if (strcmp(key, "init.birth_density_per_m2") == 0)
         return get_real(v, R_NONNEG, &p->init.birth_density_per_m2, err, n);
+    if (strcmp(key, "init.min_existence") == 0) return get_real(v, R_NONNEG, &p->init.min_existence, err, n);
     /* the clutter maps (cells 0: none; the library checks the rest) */
     if (strcmp(key, "clutter_map.n_range") == 0 || strcmp(key, "clutter_map.n_bearing") == 0) {
         if (get_long(v, 0, 65535, &l, err, n) != 0) return -1;
@@ -1029,6 +1030,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "init.max_speed_mps", (double)p->init.max_speed_mps);
     fprintf(f, "init.max_gap_scans = %lu\n", (unsigned long)p->init.max_gap_scans);
     put_num(f, "init.birth_density_per_m2", (double)p->init.birth_density_per_m2);
+    put_num(f, "init.min_existence", (double)p->init.min_existence);
     fprintf(f, "clutter_map.n_range = %u\n", p->clutter_map.n_range);
     fprintf(f, "clutter_map.n_bearing = %u\n", p->clutter_map.n_bearing);
     put_num(f, "clutter_map.time_constant_scans", (double)p->clutter_map.time_constant_scans);
@@ -1167,6 +1169,8 @@ void tcfg_help(FILE *f)
             "    init.max_gap_scans               candidate lifetime in scans, >= 1 (2)\n"
             "    init.birth_density_per_m2        new targets per m^2 per scan: the initial existence,\n"
             "                                     >= 0, 0 = visibility.pv0 (1e-9)\n"
+            "    init.min_existence               the least initial existence of a new track; a weaker\n"
+            "                                     pair waits for a third point, [0, 1), 0 = off (0.003)\n"
             "  clutter_map.n_range, .n_bearing   each sensor's clutter map: cells over its coverage\n"
             "                                    (range x bearing; needs a maximum range), 0 = none (16, 16)\n"
             "    clutter_map.time_constant_scans  the counts' memory, >= 1 scan (20)\n"

@@ -6,7 +6,7 @@
  * Keys (tcfg_help prints them with defaults and ranges):
  *   sensors, process_noise_q, gate_prob, clutter, init_speed_sigma_mps,
  *   max_dt_s, max_tentative_scans, merge_gate_d2, init_exclusion_d2,
- *   init.{method,max_speed_mps,max_gap_scans,birth_density_per_m2},
+ *   init.{method,max_speed_mps,max_gap_scans,birth_density_per_m2,min_existence},
  *   max_pos_sigma_ratio,
  *   visibility (0|1), visibility.{pv0,pcv0,delta_stay,delta_become,omega_c,p_con,p_term},
  *   confirm = existence | mn | sprt | clutter_density | clutter_amplitude | visibility,

@@ -144,7 +144,7 @@
 #define MTT_REPORT_COUNTERS(X)                                                                             \
     X(n_detections) X(n_rejected_nonfinite) X(n_rejected_cov) X(n_rejected_amplitude) X(n_rejected_region) \
     X(n_below_threshold) X(n_rejected_density) \
-    X(n_kept) X(n_thinned) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_stationary) X(n_terminated) X(n_init_refused_full) \
+    X(n_kept) X(n_thinned) X(n_tracks_updated) X(n_tracks_hit) X(n_started) X(n_confirmed) X(n_stationary) X(n_terminated) X(n_init_refused_full) X(n_init_deferred) \
     X(n_numerical) X(n_merged) X(n_replaced) X(n_covariance) X(n_candidates) X(n_candidates_dropped)       \
     X(n_clusters) X(n_clusters_approx) X(largest_cluster) X(n_assoc_overflow)
 
