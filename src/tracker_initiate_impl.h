@@ -516,6 +516,24 @@ static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_sca
            hit;
 }
 
+/* Is workspace detection j, with candidate c of run k, the third point of
+ * a refused or deferred pair (init.min_existence: three points always
+ * start)? Yes when its three-point ln O log_odds3 is finite, and also when
+ * c ended such a pair whose first point, young enough to be kept, has
+ * left the store to make room (scans of more than half the store's
+ * candidates each): the line cannot be checked, and the start falls back
+ * to the pair's odds rather than wait for a third point that could never
+ * be counted. A first point older than max_gap_scans has expired as every
+ * candidate does: then (c, j) is a pair of its own, and waits. */
+static int third_point(struct trk_tracker *t, size_t k, const struct trk_candidate *c, trk_real log_odds3)
+{
+    if (log_odds3 > -TRK_REAL_MAX) return 1;
+    if (c->prev_age == 0) return 0;
+    const uint32_t age_p = t->scan_no - (cand_run(t, k)->scan_no - c->prev_age); /* the first point's age */
+    const struct trk_i_cand_run *run_p = NULL;
+    return age_p <= t->params.init.max_gap_scans && !refused_first(t, k, c, &run_p);
+}
+
 /* A track from candidate c and workspace detection j (two-point
  * differencing, trk_init_params): x = z_j, v = (z_j - z_c) / dt,
  * P_pp = R_j, P_pv = R_j / dt, P_vv = (R_c + R_j) / dt^2. 0 when no slot,
@@ -540,8 +558,8 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
                       pair_log_disp(t, c, r_c, t->ws.x[j], t->ws.y[j], r_j, dt));
     const trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt);
     const trk_real psi0 = initial_existence(t, log_odds3 > -TRK_REAL_MAX ? log_odds3 : log_odds);
-    if (log_odds3 == -TRK_REAL_MAX && psi0 < t->params.init.min_existence) { /* a weak pair (NaN never
-                                                                        is): j waits for a third point */
+    if (psi0 < t->params.init.min_existence && !third_point(t, run_k, c, log_odds3)) { /* a weak pair (NaN
+                                                                  never is): j waits for a third point */
         link_refused(t, run_k, ci, j);
         rep->n_init_deferred++;
         return 0;

@@ -145,6 +145,46 @@ static void test_min_existence(void **state)
     }
 }
 
+/* Scans of more than half the candidate store each: the store keeps only
+ * the last scan's candidates, so a deferred pair's first point has gone
+ * when its third detection comes. The three points still start (on the
+ * pair's odds), as they must: otherwise a crowded sea would start nothing
+ * while init.min_existence waits for a third point it can never count. */
+static void test_min_existence_crowded_store(void **state)
+{
+    (void)state;
+    const size_t n_clutter = TRK_MAX_CANDIDATES / 2 + 1;
+    if (n_clutter + 1 > TRK_MAX_DETECTIONS) {
+        skip();
+        return;
+    }
+    static struct trk_detection d[TRK_MAX_DETECTIONS];
+    struct trk_tracker_params p;
+    sonar_params(&p, 1e-5);
+    p.init.min_existence = TRK_REAL_C(0.99);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    rng_state = 7;
+    size_t near = 0;
+    for (int k = 0; k < 3; k++) {
+        size_t n = 0;
+        d[n++] = det_at(40.0 * k, 20.0 * k); /* the target */
+        for (size_t i = 0; i < n_clutter; i++) /* far from it and from each other: no pairs */
+            d[n++] = det_at(5e4 + 2e5 * urand(), 5e4 + 2e5 * urand());
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(run_scan(k, d, n, &rep));
+        if (k == 1) {
+            assert_int_equal(rep.n_init_deferred, 1); /* the target's pair waits */
+            assert_int_equal(rep.n_candidates, n);    /* only this scan's: scan 0's left for room */
+        }
+        if (k == 2) assert_int_equal(rep.n_started, 1);
+    }
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+        const struct trk_track *tr = trk_tracker_track(&tk, i);
+        if (tr && tr->status == TRK_TRACK_TENTATIVE && fabs(tr->x[X] - 80) < 20 && fabs(tr->x[Y] - 40) < 20) near++;
+    }
+    assert_int_equal(near, 1);
+}
+
 /* A detection's partner is the candidate of the highest ln l^a + ln N(dz;
  * 0, R_c + R + s^2 dt^2 I), the model that also gives the pair's odds: of
  * candidate A 60 m away with R = 1 m^2 and B 80 m away with R = 1e4 m^2
@@ -736,6 +776,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_two_point_start),
         cmocka_unit_test(test_min_existence),
+        cmocka_unit_test(test_min_existence_crowded_store),
         cmocka_unit_test(test_pair_by_displacement_density),
         cmocka_unit_test(test_velocity_gate_and_lifetime),
         cmocka_unit_test(test_candidate_store),
