@@ -53,7 +53,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->track_visibility = 1;
     p->visibility.pv0 = TRK_REAL_C(0.5);
     p->visibility.pcv0 = TRK_REAL_C(0.5);
-    p->visibility.delta_stay = TRK_REAL_C(0.995);
+    p->visibility.delta_stay = TRK_REAL_C(0.99);
     p->visibility.delta_become = 0;
     p->visibility.omega_c = TRK_REAL_C(0.75);
     p->visibility.p_con = TRK_REAL_C(0.9);

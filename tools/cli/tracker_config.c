@@ -1182,7 +1182,7 @@ void tcfg_help(FILE *f)
             "                                    is counted and skipped, (0,1e15] (1e8)\n"
             "  visibility = 0|1                  track each track's visibility / existence (1)\n"
             "    visibility.pv0, .pcv0            at initiation (0.5, 0.5)\n"
-            "    visibility.delta_stay, .delta_become   Markov visibility model (0.995, 0)\n"
+            "    visibility.delta_stay, .delta_become   Markov visibility model (0.99, 0)\n"
             "    visibility.omega_c               confidence smoothing, [0,1) (0.75)\n"
             "    visibility.p_con, .p_term        confirm at pcv >= p_con, end at pcv < p_term (0.9, 0.1)\n"
             , TRK_MAX_SENSORS);
