@@ -537,8 +537,10 @@ enum trk_init_method {
  * dense clutter do not each hold a slot and share the targets' detections,
  * while a target's pair, continued, starts with the three points'
  * existence (counted: trk_scan_report.n_init_deferred). Three points
- * always start, whatever their existence: the rule delays a target's start
- * by one detection at most, it never keeps a target from starting.
+ * within the candidates' lifetime (max_gap_scans + 1 scans: three scans in
+ * a row at the default 2) always start, whatever their existence: a weak
+ * target waits for three detections in a row where two within two scans
+ * would have started it, and is never kept from starting.
  * beta = birth_density_per_m2, lambda the sensor's clutter density, P_D the
  * sensor's. With birth_density_per_m2 = 0 a track starts at the visibility
  * parameters' pv0 / pcv0 instead (Kennedy 2008). The existence is
@@ -552,8 +554,9 @@ struct trk_init_params {
     trk_real birth_density_per_m2;    /**< new targets per m^2 per scan, >= 0 (0: pv0) */
     trk_real min_existence;           /**< two points: the least initial existence psi0 a
                                          pair starts a track with, [0, 1); a weaker pair
-                                         waits for a third point (three always start;
-                                         above). 0: every pair starts; no effect with
+                                         waits for a third point (three within the
+                                         candidates' lifetime always start; above).
+                                         0: every pair starts; no effect with
                                          birth_density_per_m2 = 0 (no psi0) */
 };
 
