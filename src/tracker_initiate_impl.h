@@ -342,13 +342,20 @@ static void link_refused(struct trk_tracker *t, size_t run_k, size_t ci, size_t 
     t->ws.w[j] = (trk_real)(age * 65536u + (uint32_t)(ci - run->start)); /* < 2^24: exact in float */
 }
 
+/* The scan number of the first point of the refused pair candidate c (of
+ * run k, c->prev_age > 0) ended. */
+static uint32_t refused_first_scan_no(struct trk_tracker *t, size_t k, const struct trk_candidate *c)
+{
+    return cand_run(t, k)->scan_no - c->prev_age;
+}
+
 /* The first point of the refused pair candidate c (of run k) ended, and
  * its run in *run_p; NULL when there is none or its run has gone. */
 static const struct trk_candidate *refused_first(struct trk_tracker *t, size_t k, const struct trk_candidate *c,
                                                  const struct trk_i_cand_run **run_p)
 {
     if (c->prev_age == 0) return NULL;
-    const uint32_t scan_no = cand_run(t, k)->scan_no - c->prev_age;
+    const uint32_t scan_no = refused_first_scan_no(t, k, c);
     for (size_t m = 0; m < k; m++) {
         const struct trk_i_cand_run *r = cand_run(t, m);
         if (r->scan_no != scan_no) continue;
@@ -529,7 +536,7 @@ static int third_point(struct trk_tracker *t, size_t k, const struct trk_candida
 {
     if (log_odds3 > -TRK_REAL_MAX) return 1;
     if (c->prev_age == 0) return 0;
-    const uint32_t age_p = t->scan_no - (cand_run(t, k)->scan_no - c->prev_age); /* the first point's age */
+    const uint32_t age_p = t->scan_no - refused_first_scan_no(t, k, c); /* the first point's age */
     const struct trk_i_cand_run *run_p = NULL;
     return age_p <= t->params.init.max_gap_scans && !refused_first(t, k, c, &run_p);
 }
