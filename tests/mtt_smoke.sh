@@ -159,6 +159,55 @@ grep -q ' transit new  *50 ' "$d/out1.txt" && grep -q ' transit old  *0 ' "$d/ou
 grep -q '^== trk-sim mtt: family transit,' "$d/out1.txt" || fail "no family in the header line (transit)"
 grep -q ' fixed  *new  *50 ' "$d/outf.txt" && grep -q '^== trk-sim mtt: family fixed,' "$d/outf.txt" ||
     fail "no fixed-family table or header line on stdout"
+# every run in PREFIX_runs.csv: 4 configurations x 2 levels x 2 seeds, seeds 3 and 4;
+# their mean per (config, clutter) is the CSV's mean; the paired table's ratio of
+# new over the oracle is the ratio of their sums over the seeds (printed to 3 decimals)
+runs="$d/m1_runs.csv"
+[ -f "$runs" ] || fail "no per-run CSV ($runs)"
+awk -F, -v agg="$d/m1.csv" -v out="$d/out1.txt" '
+function bad(msg) { print "mtt-smoke: FAILED: runs CSV: " msg; err = 1; exit 1 }
+function abs(x) { return x < 0 ? -x : x }
+NR == 1 {
+    if ($1 != "capacity" || $2 != "config" || $3 != "clutter" || $4 != "family" || $5 != "seed" || $6 != "gospa_m")
+        bad("header starts " $1 "," $2 "," $3 "," $4 "," $5 "," $6)
+    next
+}
+{
+    rows++
+    if ($4 != "transit" || ($5 != 3 && $5 != 4)) bad("row " NR ": family " $4 ", seed " $5)
+    k = $2 "/" $3
+    sum[k] += $6
+    cnt[k]++
+}
+END {
+    if (err) exit 1
+    if (rows != 16) bad(rows " rows, want 16")
+    FS = ","
+    while ((getline line < agg) > 0) {
+        split(line, f, ",")
+        if (f[1] == "capacity") { for (i = 1; i in f; i++) if (f[i] == "gospa_m_mean") gc = i; continue }
+        k = f[2] "/" f[3]
+        if (cnt[k] != 2) bad("(" k ") has " cnt[k] " runs")
+        m = sum[k] / 2
+        if (abs(m - f[gc]) > 1e-4 * (abs(m) + 1)) bad("(" k ") mean GOSPA " m " against the CSV mean " f[gc])
+        checked++
+    }
+    if (checked != 8) bad(checked " aggregate rows matched, want 8")
+    FS = " "
+    while ((getline line < out) > 0) {
+        n = split(line, f, " ")
+        if (n >= 5 && f[2] == "transit" && f[3] == "new" && f[5] ~ /^[0-9.]+$/ && f[6] ~ /^\[/) {
+            r = sum["new/" f[4]] / sum["oracle/" f[4]]
+            if (abs(r - f[5]) > 6e-4) bad("paired ratio " f[5] " at clutter " f[4] ", runs give " r)
+            paired++
+        }
+    }
+    if (paired != 2) bad(paired " paired rows of new found, want 2")
+}' "$runs" || exit 1
+grep -q '^-- paired against oracle on the same seeds' "$d/out1.txt" || fail "no paired table against the oracle"
+"$sim" mtt --scans 30 --seeds 2 --clutter-count 0 --config new,old --paired-base nope --quiet --no-plot \
+    --out "$d/pb" >"$d/outpb.txt" 2>&1 && fail "--paired-base nope accepted"
+grep -q 'not one of --config' "$d/outpb.txt" || { cat "$d/outpb.txt"; fail "--paired-base: no clear refusal"; }
 # mtt-compare: the family is part of the key
 "$sim" mtt-compare "$d/m1.csv" "$d/f1.csv" --no-plot --out "$d/c" >"$d/outc.txt" 2>&1 ||
     { cat "$d/outc.txt"; fail "trk-sim mtt-compare of a transit and a fixed CSV exited with $?"; }
@@ -170,4 +219,5 @@ fi
 grep -q 'appears twice' "$d/outc2.txt" || { cat "$d/outc2.txt"; fail "mtt-compare: no 'appears twice' message"; }
 echo "mtt-smoke: trk-sim mtt: 8 rows (new, pda, old, oracle x clutter 0, 50) checked per family (transit, fixed)" \
     "and with the manoeuvres (turn, acceleration); the oracle blind to clutter and, without the turn, GOSPA <= new's;" \
-    "transit identical with 1 and 2 threads; mtt-compare keys rows by family"
+    "transit identical with 1 and 2 threads; the per-run CSV and the paired table agree with the means;" \
+    "mtt-compare keys rows by family"

@@ -716,6 +716,121 @@ static int write_csv(const struct sim_common *com, const char *suffix, const str
     return sim_csv_close(&f_out);
 }
 
+/* Every run's metrics, one row per (configuration, clutter, seed) in the
+ * tables' order, for the analyst's own statistics (the bad seeds, paired
+ * differences): capacity,config,clutter,family,seed, then the metrics. */
+static int write_runs_csv(const struct sim_common *com, const struct run_result *res, long seeds, const double *levels,
+                          int nl, const int *kinds, int nc, const char *family, int sonar, char *path, size_t pathlen)
+{
+    struct fileio_out f_out;
+    FILE *f = sim_csv_open(com, &f_out, "_runs.csv", path, pathlen, NULL);
+    if (!f) return -1;
+    fprintf(f, "capacity,config,clutter,family,seed");
+    for (int m = 0; m < n_metric_cols(sonar); m++) fprintf(f, ",%s", metric_name[m]);
+    fprintf(f, "\n");
+    for (int c = 0; c < nc; c++)
+        for (int l = 0; l < nl; l++)
+            for (long i = 0; i < seeds; i++) {
+                fprintf(f, "%d,%s,%g,%s,%llu", TRK_MAX_TRACKS, cfg_name[kinds[c]], levels[l], family,
+                        (unsigned long long)(com->seed + (uint64_t)i));
+                for (int m = 0; m < n_metric_cols(sonar); m++)
+                    fprintf(f, ",%.6g", res[(i * nl + l) * nc + c].v[m]);
+                fprintf(f, "\n");
+            }
+    return sim_csv_close(&f_out);
+}
+
+/* Configuration c against the base b at level l, over the seeds where both
+ * have metric m: the mean of the per-seed differences and its Student t
+ * interval (paired: the same scenarios, so the scenario-to-scenario spread
+ * cancels); NaN without a seed. */
+static void paired_diff(const struct run_result *res, long seeds, int nl, int nc, int l, int c, int b, int m,
+                        double *x, double *mean, double *lo, double *hi)
+{
+    size_t k = 0;
+    for (long i = 0; i < seeds; i++) {
+        const double vc = res[(i * nl + l) * nc + c].v[m], vb = res[(i * nl + l) * nc + b].v[m];
+        if (isfinite(vc) && isfinite(vb)) x[k++] = vc - vb;
+    }
+    mc_mean_ci_t(x, k, 0.95, mean, lo, hi);
+}
+
+/* "+1.23+-0.45" in w characters ("-" for NaN). */
+static void put_diff(double mean, double lo, double hi, int w, int prec)
+{
+    char b[64];
+    if (isnan(mean)) snprintf(b, sizeof b, "-");
+    else snprintf(b, sizeof b, "%+.*f+-%.*f", prec, mean, prec, 0.5 * (hi - lo));
+    printf(" %*s", w, b);
+}
+
+/* Each configuration against the base b on the same seeds: GOSPA as the
+ * ratio of the means (sum over seeds over the base's sum; its interval by
+ * the delta method on the paired seeds, mc_ratio_ci's standard error with
+ * Student's t of seeds - 1 degrees of freedom) and as the mean
+ * difference, and the differences in coverage, false tracks and (sonar)
+ * the coverage beyond SONAR_FAR_M. Levels ascending, as the tables. */
+static void print_paired(const struct run_result *res, long seeds, const double *lv_sorted, const double *levels,
+                         int nl, const int *kinds, int nc, int b, int sonar, const char *family)
+{
+    double *x = malloc((size_t)seeds * sizeof *x), *num = malloc((size_t)seeds * sizeof *num),
+           *den = malloc((size_t)seeds * sizeof *den);
+    if (!x || !num || !den) {
+        free(x);
+        free(num);
+        free(den);
+        return;
+    }
+    printf("-- paired against %s on the same seeds (common random numbers): GOSPA as the ratio of the means\n"
+           "   (95 %% interval: delta method, Student t) and the difference; per-seed differences in coverage,\n"
+           "   false confirmed tracks per 1000 scans%s (mean +- the 95 %% Student t half width)\n",
+           cfg_name[kinds[b]], sonar ? " and coverage beyond 5 km" : "");
+    printf("%5s %-7s %-6s %7s %20s %13s %15s %15s", "slots", "family", "cfg", "clutter", "GOSPA / base", "GOSPA diff m",
+           "coverage diff", "falseT diff");
+    if (sonar) printf(" %15s", "beyond 5 km diff");
+    printf("\n");
+    for (int c = 0; c < nc; c++) {
+        if (c == b) continue;
+        for (int ls = 0; ls < nl; ls++) {
+            if (ls > 0 && lv_sorted[ls] == lv_sorted[ls - 1]) continue;
+            int l = 0;
+            while (levels[l] != lv_sorted[ls]) l++;
+            size_t k = 0;
+            for (long i = 0; i < seeds; i++) {
+                const double vc = res[(i * nl + l) * nc + c].v[M_GOSPA], vb = res[(i * nl + l) * nc + b].v[M_GOSPA];
+                if (!isfinite(vc) || !isfinite(vb)) continue;
+                num[k] = vc;
+                den[k++] = vb;
+            }
+            double r, rlo, rhi, mean, lo, hi;
+            mc_ratio_ci(num, den, k, 0.95, &r, &rlo, &rhi);
+            if (k >= 2) { /* the delta method's standard error with Student's t of k - 1, as the others */
+                const double half = 0.5 * (rhi - rlo) * mc_t(0.95, (double)(k - 1)) / mc_z(0.95);
+                rlo = r - half;
+                rhi = r + half;
+            }
+            char rb[64];
+            if (isnan(r)) snprintf(rb, sizeof rb, "-");
+            else snprintf(rb, sizeof rb, "%.3f [%.3f, %.3f]", r, rlo, rhi);
+            printf("%5d %-7s %-6s %7g %20s", TRK_MAX_TRACKS, family, cfg_name[kinds[c]], levels[l], rb);
+            paired_diff(res, seeds, nl, nc, l, c, b, M_GOSPA, x, &mean, &lo, &hi);
+            put_diff(mean, lo, hi, 13, 1);
+            paired_diff(res, seeds, nl, nc, l, c, b, M_COV, x, &mean, &lo, &hi);
+            put_diff(mean, lo, hi, 15, 3);
+            paired_diff(res, seeds, nl, nc, l, c, b, M_FALSE_TRK, x, &mean, &lo, &hi);
+            put_diff(mean, lo, hi, 15, 1);
+            if (sonar) {
+                paired_diff(res, seeds, nl, nc, l, c, b, M_COV_FAR, x, &mean, &lo, &hi);
+                put_diff(mean, lo, hi, 15, 3);
+            }
+            printf("\n");
+        }
+    }
+    free(x);
+    free(num);
+    free(den);
+}
+
 /* "12.3+-0.4" (mean and the interval's half width) in w characters. */
 static void put_ci(const struct mtt_row *r, int m, int w, int prec)
 {
@@ -1120,7 +1235,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                                accel, accel_s;
     struct imm_opts im;
     int n_levels, no_amp = 0, family, over, sweep = 0, no_persist = 0;
-    const char *configs = NULL;
+    const char *configs = NULL, *paired_base = NULL;
     struct mtt_settings set = {{NULL}, 0};
     const struct sim_opt opts[] = {
         SIM_OPT_CHOICE("--family", &family, "transit|fixed|sonar", family_values, "transit",
@@ -1169,6 +1284,10 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                        "cfar (sonar only): new with each detection's true clutter\n"
                        "density passed (trk_scan.clutter_density_per_m2: a CFAR\n"
                        "that knew its background)"),
+        SIM_OPT_STRING("--paired-base", &paired_base, "CFG", NULL,
+                       "the configuration the others are paired against, seed by\n"
+                       "seed (the table \"paired against\"; default: oracle when it\n"
+                       "runs, else the first of --config)"),
         SIM_OPT_FLAG("--no-persistent", &no_persist,
                      "sonar: no persistent scatterers (the same targets' detections\n"
                      "and clutter)"),
@@ -1236,7 +1355,8 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
         "Writes PREFIX.csv: one row per (TRK_MAX_TRACKS, config, clutter), the family in\n"
         "the column family, then columns <metric>_mean, _lo, _hi; and PREFIX_gospa.png,\n"
         "_gospa_parts.png, _confirm.png, _false.png, _manoeuvre.png (gnuplot). Compare builds with\n"
-        "`trk-sim mtt-compare A.csv B.csv`.\n"
+        "`trk-sim mtt-compare A.csv B.csv`. PREFIX_runs.csv: every run's metrics, one row per\n"
+        "(config, clutter, seed), for statistics of your own.\n"
         "--set key=value: tracker settings (the keys below), applied after each\n"
         "configuration's own and the scenario's sensor (sensor.0.*, process_noise_q).\n",
         NULL, NULL};
@@ -1272,6 +1392,13 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                     cfg_name[kinds[c]]);
             return 2;
         }
+    int base = 0; /* the paired table's base: --paired-base, else the oracle, else the first */
+    for (int c = 0; c < n_cfg; c++)
+        if (paired_base ? strcmp(paired_base, cfg_name[kinds[c]]) == 0 : kinds[c] == CFG_ORACLE) base = c;
+    if (paired_base && strcmp(paired_base, cfg_name[kinds[base]]) != 0) {
+        fprintf(stderr, "trk-sim mtt: --paired-base %s: not one of --config %s\n", paired_base, configs);
+        return 2;
+    }
     if (sweep) {
         static const double frac[] = {0, 0.125, 0.25, 0.5, 1, 2, 3, 4};
         n_levels = (int)(sizeof frac / sizeof frac[0]);
@@ -1479,12 +1606,17 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     char path[1024];
     if (write_csv(&com, ".csv", rows, nr, path, sizeof path) != 0) return 1;
     print_tables(rows, nr);
+    if (nc > 1) print_paired(res, seeds, lv_sorted, levels, nl, kinds, nc, base, sonar, mtt_family_name(family));
+    char runs_path[1024];
+    if (write_runs_csv(&com, res, seeds, levels, nl, kinds, nc, mtt_family_name(family), sonar, runs_path,
+                       sizeof runs_path) != 0)
+        return 1;
     char title[256];
     snprintf(title, sizeof title, "trk-sim mtt: %s family, %ld seeds x %ld scans, %d slots", mtt_family_name(family),
              seeds, scans, TRK_MAX_TRACKS);
     plot_all(&com, rows, nr, title);
-    printf("-- %ld runs in %.1f s wall on %d threads; CSV %s%s\n", n_jobs, wall, threads, path,
-           com.no_plot ? "" : " and PNG plots beside it");
+    printf("-- %ld runs in %.1f s wall on %d threads; CSV %s%s; every run in %s\n", n_jobs, wall, threads, path,
+           com.no_plot ? "" : " and PNG plots beside it", runs_path);
     if (family == MTT_FAMILY_SONAR && clutter_map_dump(&com, &sc[0], levels, nl, tp, kinds, nc) != 0) return 1;
     for (int k = 0; k < nl * nc; k++) tcfg_unload(&rts[k]);
     for (long i = 0; i < seeds; i++) mtt_scen_free(&sc[i]);
