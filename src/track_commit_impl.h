@@ -108,6 +108,7 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     look->n_gated = (int)tr->n_gated_last;
     look->pfa_gate = -trk_expm1(-out->lambda * out->gate_volume);
     look->beta0 = out->beta0;
+    look->pd_pg = pr->pd * pr->pda->params.gate_prob;
     look->has_nearest = 0;
     look->nearest = 0;
     look->rho_vg = 0;

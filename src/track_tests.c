@@ -8,6 +8,7 @@
 #include "track_tests.h"
 
 #include "internal.h"
+#include "trk/special.h"
 
 int trk_i_confirm_needs_nearest(const struct trk_tracker_params *p)
 {
@@ -37,7 +38,7 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
     case TRK_CONFIRM_EXISTENCE: {
         const struct trk_existence_confirm_params *x = &p->confirm.u.existence;
         if (!p->track_visibility) return TRK_E_ARG;
-        if (!isfinite(x->p_confirm) || !isfinite(x->reject_odds_ratio)) return TRK_E_NAN;
+        if (!isfinite(x->p_confirm) || !isfinite(x->reject_odds_ratio) || !isfinite(x->count_alpha)) return TRK_E_NAN;
         st = trk_i_existence_confirm_ok(x) ? TRK_OK : TRK_E_RANGE;
         break;
     }
@@ -94,6 +95,7 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
         /* odds(pv) < r odds(e0)  <=>  pv < r e0 / (1 - e0 + r e0): once per track */
         const trk_real r = t->params.confirm.u.existence.reject_odds_ratio, e0 = tr->existence0;
         c->existence.reject_below = r > 0 && e0 < 1 ? r * e0 / (1 - e0 + r * e0) : 0;
+        c->existence.count_gated = c->existence.count_expected = 0;
         tr->confirm_stat = tr->vis.pv;
         break;
     }
@@ -101,12 +103,43 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
     }
 }
 
+/* The gate-count check's sums with this look (trk/tracker.h count_alpha):
+ * the detections gated and the count the track's model expects there,
+ * lambda V_G (from the look's P_FA of the gate, 1 - e^-lambda V_G) and
+ * P_D P_G of its own target, each forgotten at 1 - 1/tau per look. */
+static void gate_count_look(const struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look)
+{
+    const trk_real keep = 1 - 1 / t->params.clutter_map.time_constant_scans;
+    tr->test.confirm.existence.count_gated = keep * tr->test.confirm.existence.count_gated + (trk_real)look->n_gated;
+    tr->test.confirm.existence.count_expected =
+        keep * tr->test.confirm.existence.count_expected - trk_log1p(-look->pfa_gate) + look->pd_pg;
+}
+
+trk_real trk_i_gate_count_tail(trk_real gated, trk_real expected)
+{
+    /* P(N >= k; mu) = P(chi2 with 2k degrees of freedom <= 2 mu), k = floor(gated).
+     * The target's detections are Bernoulli, not Poisson: the Poisson tail of
+     * the same mean is the larger, so the check errs towards confirming. */
+    const trk_real k = trk_floor(gated);
+    if (!(k >= 1)) return 1;
+    if (!(expected > 0)) return 0;
+    if (k > TRK_REAL_C(1e6)) return 0; /* beyond any gate's count: 2k must stay an int */
+    return trk_chi2_cdf(2 * (int)k, 2 * expected);
+}
+
 /* TRK_CONFIRM_EXISTENCE on the existence the scan's update left in tr->vis
- * (the rejection threshold was derived at the track's start) */
+ * (the rejection threshold was derived at the track's start); at p_confirm
+ * the gate-count check may hold the confirmation for this look */
 static enum trk_decision existence_confirm(const struct trk_existence_confirm_params *x,
                                            const struct trk_track *tr)
 {
-    if (tr->vis.pv >= x->p_confirm) return TRK_DECISION_CONFIRM;
+    if (tr->vis.pv >= x->p_confirm) {
+        const trk_real alpha = x->count_alpha;
+        if (alpha > 0 && trk_i_gate_count_tail(tr->test.confirm.existence.count_gated,
+                                               tr->test.confirm.existence.count_expected) < alpha)
+            return TRK_DECISION_CONTINUE;
+        return TRK_DECISION_CONFIRM;
+    }
     if (tr->vis.pv < tr->test.confirm.existence.reject_below) return TRK_DECISION_TERMINATE;
     return TRK_DECISION_CONTINUE;
 }
@@ -151,6 +184,7 @@ enum trk_decision trk_i_confirm_decide(const struct trk_tracker *t, struct trk_t
         tr->confirm_stat = tr->vis.pcv;
         break;
     case TRK_CONFIRM_EXISTENCE:
+        if (look->seen) gate_count_look(t, tr, look);
         d = existence_confirm(&t->params.confirm.u.existence, tr);
         tr->confirm_stat = tr->vis.pv;
         break;

@@ -17,6 +17,7 @@ struct trk_look {
     unsigned sensor_id;
     int n_gated;
     trk_real pfa_gate;   /* P(clutter in the gate) = 1 - exp(-lambda V_G) */
+    trk_real pd_pg;      /* P_D P_G at the track: its target's expected detections in the gate */
     trk_real beta0;
     /* clutter tests: nearest detection of the scan (has_nearest = 0: none) */
     int has_nearest;
@@ -30,12 +31,17 @@ struct trk_look {
 
 /* Existence confirmation's parameters usable (trk/tracker.h): p_confirm
  * in [0.5, 1) (a normal number, so a value punned through another union
- * member is refused), reject_odds_ratio in [0, 1). */
+ * member is refused), reject_odds_ratio in [0, 1), count_alpha 0 or a
+ * normal number below 1. */
 static inline int trk_i_existence_confirm_ok(const struct trk_existence_confirm_params *x)
 {
     return x->p_confirm >= TRK_REAL_C(0.5) && x->p_confirm < 1 && x->reject_odds_ratio >= 0 &&
-           x->reject_odds_ratio < 1;
+           x->reject_odds_ratio < 1 && (x->count_alpha == 0 || (x->count_alpha >= TRK_REAL_MIN && x->count_alpha < 1));
 }
+
+/* The gate-count check's tail P(N >= floor(gated)) of a Poisson count of
+ * mean expected (trk/tracker.h count_alpha): 1 below one detection. */
+trk_real trk_i_gate_count_tail(trk_real gated, trk_real expected);
 
 /* Does the confirmation method need the nearest detection (clutter tests)? */
 int trk_i_confirm_needs_nearest(const struct trk_tracker_params *p);

@@ -24,6 +24,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->confirm.method = TRK_CONFIRM_EXISTENCE;
     p->confirm.u.existence.p_confirm = TRK_REAL_C(0.999);
     p->confirm.u.existence.reject_odds_ratio = TRK_REAL_C(0.01);
+    p->confirm.u.existence.count_alpha = TRK_REAL_C(0.01); /* docs/tracker.md "The gate-count check" */
     p->term.method = TRK_TERM_EXISTENCE;
     p->term.u.existence.p_terminate = TRK_REAL_C(0.1);
     p->max_tentative_scans = 0;

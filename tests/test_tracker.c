@@ -6,7 +6,9 @@
  * and termination method through a track's life. */
 #include "trk_test.h"
 #include "trk/linalg.h"
+#include "trk/special.h"
 #include "trk/tracker.h"
+#include "../src/track_tests.h"
 
 static struct trk_tracker tk; /* ~40 KB: static, as in firmware */
 
@@ -481,6 +483,21 @@ static void test_check_params(void **state)
         p.term.u.shiryaev.rho = TRK_REAL_C(0.01);
         p.term.u.shiryaev.h = TRK_REAL_C(4.6);
         expect_refused(&p, "term.u.shiryaev.hmm", TRK_E_SENSOR);
+    }
+    /* existence confirmation's gate-count check: 0 (off) or a normal number below 1 */
+    {
+        const trk_real bad[] = {-TRK_REAL_C(0.1), 1, TRK_REAL_MIN / 4};
+        for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+            trk_tracker_default_params(&p);
+            p.confirm.u.existence.count_alpha = bad[i];
+            expect_refused(&p, "confirm.u.existence", TRK_E_RANGE);
+        }
+        trk_tracker_default_params(&p);
+        p.confirm.u.existence.count_alpha = NAN;
+        expect_refused(&p, "confirm.u.existence", TRK_E_NAN);
+        trk_tracker_default_params(&p);
+        p.confirm.u.existence.count_alpha = 0;
+        assert_int_equal(trk_tracker_check_params(&p, NULL), TRK_OK);
     }
 #if TRK_WITH_CLUTTER_TESTS
     base_params(&p);
@@ -1175,6 +1192,109 @@ static void test_init_exclusion_and_visibility_reject(void **state)
     assert_true(rejected);
 }
 
+/* One run of the gate-count check's scenario: a target moving at 10 m/s
+ * along x, detected where it is at every scan (1 s apart), and with extras
+ * other detections each scan scattered within 20 m of it (a clutter density
+ * far above the configured 1e-6 per m2, as in a reverberation patch that a
+ * clutter map averages away). The scan at which the target's track (the
+ * one nearest it) is confirmed, -1 if it is not within 30 scans; *first_pass
+ * the track at the first scan its existence reached p_confirm, and
+ * *gated_sum the closed form of its count_gated there, sum over its scans
+ * of (1 - 1/tau)^age n_gated. */
+static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *first_pass, double *gated_sum)
+{
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p);
+    p.sensor[0].pd = TRK_REAL_C(0.9);
+    p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = 25;
+    p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(1e-6);
+    p.confirm.u.existence.count_alpha = count_alpha;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const double keep = 1 - 1 / (double)p.clutter_map.time_constant_scans;
+    struct trk_detection det[1 + 8];
+    static uint32_t slot_id[TRK_MAX_TRACKS];
+    static double slot_sum[TRK_MAX_TRACKS];
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) slot_id[i] = 0;
+    int passed = 0;
+    rng_state = 777;
+    for (int k = 0; k < 30; k++) {
+        const double tx = 10.0 * k;
+        size_t n = 0;
+        det[n].x_m = (trk_real)tx;
+        det[n].y_m = 0;
+        det[n].has_cov = det[n].has_amplitude = 0;
+        n++;
+        for (int e = 0; e < extras && n < TRK_MAX_DETECTIONS; e++, n++) {
+            det[n].x_m = (trk_real)(tx - 20 + 40 * urand());
+            det[n].y_m = (trk_real)(-20 + 40 * urand());
+            det[n].has_cov = det[n].has_amplitude = 0;
+        }
+        struct trk_scan scan = {SEC(k), 0, n, det, NULL, 0, {0, 0, 0}, NULL};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+        check_invariants(&tk);
+        const struct trk_track *best = NULL;
+        double best_d = 1e300, best_sum = 0;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
+            const struct trk_track *a = trk_tracker_track(&tk, i);
+            if (!a || a->status == TRK_TRACK_TERMINATED) continue;
+            /* each track's sum from the scan after its start (its first look) */
+            if (a->id != slot_id[i]) {
+                slot_id[i] = a->id;
+                slot_sum[i] = 0;
+            } else {
+                slot_sum[i] = keep * slot_sum[i] + (double)a->n_gated_last;
+            }
+            const double d = hypot((double)a->x[X] - tx, (double)a->x[Y]);
+            if (d < best_d) {
+                best_d = d;
+                best = a;
+                best_sum = slot_sum[i];
+            }
+        }
+        if (!best) continue;
+        if (best->status == TRK_TRACK_CONFIRMED) return k;
+        if (!passed && best->vis.pv >= p.confirm.u.existence.p_confirm) {
+            passed = 1;
+            if (first_pass) *first_pass = *best;
+            if (gated_sum) *gated_sum = best_sum;
+        }
+    }
+    return -1;
+}
+
+/* The gate-count check (trk_existence_confirm_params count_alpha): without
+ * the extra detections it changes nothing (the same scan of confirmation
+ * as with the check off); with them the check off confirms the track at
+ * within the run, and the check on holds it: at the scan its existence passed
+ * p_confirm it is tentative, its count_gated is the closed form, and the
+ * Poisson tail of its counts is below count_alpha (trk_i_gate_count_tail
+ * against the chi-square form P(N >= k; mu) = P(chi2_2k <= 2 mu)). */
+static void test_gate_count_check(void **state)
+{
+    (void)state;
+    const int clean_off = gate_count_run(0, 0, NULL, NULL), clean_on = gate_count_run(TRK_REAL_C(0.01), 0, NULL, NULL);
+    assert_true(clean_off >= 1);
+    assert_int_equal(clean_on, clean_off);
+    const int dense_off = gate_count_run(0, 4, NULL, NULL);
+    assert_true(dense_off >= 1); /* later than alone: the extras share its detections */
+    struct trk_track held;
+    double gated_sum = -1;
+    memset(&held, 0, sizeof held);
+    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 4, &held, &gated_sum), -1);
+    assert_int_equal(held.status, TRK_TRACK_TENTATIVE);
+    assert_int_equal(held.stationary, 0); /* held by the check, not by the motion test */
+    const trk_real n = held.test.confirm.existence.count_gated, mu = held.test.confirm.existence.count_expected;
+    TRK_ASSERT_NEAR(n, gated_sum, 1e-9, TRK_TOL(1e-12, 1e-5));
+    assert_true(n > 3 * mu); /* the track expects about one detection a scan, and holds five */
+    const trk_real tail = trk_i_gate_count_tail(n, mu);
+    TRK_ASSERT_NEAR(tail, trk_chi2_cdf(2 * (int)trk_floor(n), 2 * mu), 0, TRK_TOL(1e-12, 1e-5));
+    assert_true(tail < TRK_REAL_C(0.01));
+    /* the tail's edges: below one detection nothing is too many */
+    TRK_ASSERT_NEAR(trk_i_gate_count_tail(TRK_REAL_C(0.9), TRK_REAL_C(0.5)), 1, 0, 0);
+    TRK_ASSERT_NEAR(trk_i_gate_count_tail(1, TRK_REAL_C(0.5)), 1 - trk_exp(-TRK_REAL_C(0.5)), 0, TRK_TOL(1e-14, 1e-6));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1195,6 +1315,7 @@ int main(void)
         cmocka_unit_test(test_visibility_methods),
         cmocka_unit_test(test_merge_duplicates),
         cmocka_unit_test(test_merge_keeps_more_probable),
+        cmocka_unit_test(test_gate_count_check),
         cmocka_unit_test(test_merge_many),
         cmocka_unit_test(test_init_exclusion_and_visibility_reject),
     };

@@ -73,6 +73,7 @@ static const struct layout_row params_rows[] = {
     ROW(P, confirm.u.amp.kmax, 'u', unsigned, 1, "", "updates", "1 .. TRK_CLUTTER_KMAX"),
     REAL(P, confirm.u.existence.p_confirm, 1, "", "[0.5, 1)"),
     REAL(P, confirm.u.existence.reject_odds_ratio, 1, "", "[0, 1)"),
+    REAL(P, confirm.u.existence.count_alpha, 1, "", "[0, 1), 0 = off"),
     ENUM(P, term.method, "TERM_KN, TERM_PAGE, TERM_SHIRYAEV, TERM_VISIBILITY, TERM_EXISTENCE"),
     ROW(P, term.u.kn.k, 'i', int, 1, "", "scans", "0 .. n - 1"),
     ROW(P, term.u.kn.n, 'i', int, 1, "", "scans", "1 .. TRK_KN_MAX_N"),

@@ -246,7 +246,8 @@ static const char *const KEYS[] = {
     "clutter_map.max_ratio", "max_pos_sigma_ratio",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
     "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
-    "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.mn.m", "confirm.mn.n",
+    "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.existence.count_alpha",
+    "confirm.mn.m", "confirm.mn.n",
     "confirm.mn.mode", "confirm.sprt.alpha", "confirm.sprt.beta", "confirm.sprt.pd", "confirm.sprt.model",
     "confirm.clutter_density.alpha", "confirm.clutter_density.kmax", "confirm.clutter_amplitude.alpha",
     "confirm.clutter_amplitude.kmax", "confirm.clutter_amplitude.a_min_db", "term",
@@ -599,6 +600,8 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         return get_real(v, R_PROB_OO, &c->existence_confirm.p_confirm, err, n);
     if (strcmp(key, "confirm.existence.reject_odds_ratio") == 0)
         return get_real(v, R_PROB_CO, &c->existence_confirm.reject_odds_ratio, err, n);
+    if (strcmp(key, "confirm.existence.count_alpha") == 0)
+        return get_real(v, R_PROB_CO, &c->existence_confirm.count_alpha, err, n);
     if (strcmp(key, "confirm.mn.m") == 0) {
         if (get_long(v, 1, TRK_MN_MAX_N, &l, err, n) != 0) return -1;
         c->mn.m = (int)l;
@@ -1050,6 +1053,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     fprintf(f, "confirm = %s\n", confirm_name(c->confirm));
     put_num(f, "confirm.existence.p_confirm", (double)c->existence_confirm.p_confirm);
     put_num(f, "confirm.existence.reject_odds_ratio", (double)c->existence_confirm.reject_odds_ratio);
+    put_num(f, "confirm.existence.count_alpha", (double)c->existence_confirm.count_alpha);
     fprintf(f, "confirm.mn.m = %d\n", c->mn.m);
     fprintf(f, "confirm.mn.n = %d\n", c->mn.n);
     fprintf(f, "confirm.mn.mode = %s\n", MODE_NAMES[c->mn.mode == TRK_MN_SLIDING]);
@@ -1190,12 +1194,17 @@ void tcfg_help(FILE *f)
             "  confirm = existence|mn|sprt|clutter_density|clutter_amplitude|visibility   confirmation test (existence)\n"
             "    confirm.existence.p_confirm, .reject_odds_ratio   confirm at existence >= p, reject when\n"
             "                                     its odds fell below ratio x the initial odds (0.999, 0.01)\n"
+            "    confirm.existence.count_alpha    gate-count check: not confirmed while the gates held more\n"
+            "                                     detections than lambda V_G + P_D P_G explain, P < alpha;\n"
+            "                                     [0,1), 0 = off (0.01)\n"
             "    confirm.mn.m, confirm.mn.n       M of N, 1 <= m <= n <= %d (3, 5)\n"
             "    confirm.mn.mode = fixed|sliding  (fixed)\n"
             "    confirm.sprt.alpha, .beta        Wald error probabilities, (0,1), sum < 1 (0.01, 0.1)\n"
             "    confirm.sprt.model = fixed_pd|hmm, confirm.sprt.pd   (fixed_pd, 0.9)\n"
             "    confirm.clutter_density.alpha, .kmax          (0.01, 25)\n"
-            "    confirm.clutter_amplitude.alpha, .kmax, .a_min_db   (0.01, 25, 10 dB)\n"
+            "    confirm.clutter_amplitude.alpha, .kmax, .a_min_db   (0.01, 25, 10 dB)\n",
+            TRK_MN_MAX_N);
+    fprintf(f,
             "  term = existence|kn|page|shiryaev|visibility  termination test (existence)\n"
             "    term.existence.p_terminate       end at existence < p (0.1)\n"
             "    term.kn.k, term.kn.n             K or fewer hits in the last N, 0 <= k < n (0, 5)\n"
@@ -1236,7 +1245,7 @@ void tcfg_help(FILE *f)
             "                                    about the heading, [0, pi] (0: all round) (0, 0, 0)\n"
             "Amplitude tables and q2 tables are read and checked at start-up; a bad one\n"
             "stops the program (exit status 2).\n",
-            TRK_MN_MAX_N, TRK_PD_PROFILE_MAX, TRK_PD_PROFILE_MAX);
+            TRK_PD_PROFILE_MAX, TRK_PD_PROFILE_MAX);
 #if TRK_WITH_IMM
     fprintf(f, "IMM tracks (this build: TRK_WITH_IMM = 1):\n"
                "  imm.turn_rate_dps = W             CV and coordinated turns at +-W deg/s (trk_tracker_imm_params),\n"

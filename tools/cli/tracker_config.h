@@ -10,7 +10,7 @@
  *   max_pos_sigma_ratio,
  *   visibility (0|1), visibility.{pv0,pcv0,delta_stay,delta_become,omega_c,p_con,p_term},
  *   confirm = existence | mn | sprt | clutter_density | clutter_amplitude | visibility,
- *     confirm.existence.{p_confirm,reject_odds_ratio},
+ *     confirm.existence.{p_confirm,reject_odds_ratio,count_alpha},
  *     confirm.mn.{m,n,mode}, confirm.sprt.{alpha,beta,model,pd},
  *     confirm.clutter_density.{alpha,kmax},
  *     confirm.clutter_amplitude.{alpha,kmax,a_min_db}
