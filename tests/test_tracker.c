@@ -1265,7 +1265,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
 
 /* The gate-count check (trk_existence_confirm_params count_alpha): without
  * the extra detections it changes nothing (the same scan of confirmation
- * as with the check off); with them the check off confirms the track at
+ * as with the check off); with them the check off confirms the track
  * within the run, and the check on holds it: at the scan its existence passed
  * p_confirm it is tentative, its count_gated is the closed form, and the
  * Poisson tail of its counts is below count_alpha (trk_i_gate_count_tail
