@@ -106,9 +106,10 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     look->detected = tr->n_gated_last > 0;
     look->sensor_id = scan->sensor_id;
     look->n_gated = (int)tr->n_gated_last;
-    look->pfa_gate = -trk_expm1(-out->lambda * out->gate_volume);
+    const trk_real lambda_vg = out->lambda * out->gate_volume;
+    look->pfa_gate = -trk_expm1(-lambda_vg);
+    look->n_expected = lambda_vg + pr->pd * pr->pda->params.gate_prob;
     look->beta0 = out->beta0;
-    look->pd_pg = pr->pd * pr->pda->params.gate_prob;
     look->has_nearest = 0;
     look->nearest = 0;
     look->rho_vg = 0;

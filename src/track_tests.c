@@ -40,6 +40,7 @@ trk_status trk_i_tests_init(const struct trk_tracker_params *p, union trk_confir
         if (!p->track_visibility) return TRK_E_ARG;
         if (!isfinite(x->p_confirm) || !isfinite(x->reject_odds_ratio) || !isfinite(x->count_alpha)) return TRK_E_NAN;
         st = trk_i_existence_confirm_ok(x) ? TRK_OK : TRK_E_RANGE;
+        c->existence.count_keep = 1 - 1 / p->clutter_map.time_constant_scans; /* tau checked with the map */
         break;
     }
     default: return TRK_E_ARG;
@@ -105,14 +106,12 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
 
 /* The gate-count check's sums with this look (trk/tracker.h count_alpha):
  * the detections gated and the count the track's model expects there,
- * lambda V_G (from the look's P_FA of the gate, 1 - e^-lambda V_G) and
- * P_D P_G of its own target, each forgotten at 1 - 1/tau per look. */
+ * each forgotten at 1 - 1/tau per look. */
 static void gate_count_look(const struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look)
 {
-    const trk_real keep = 1 - 1 / t->params.clutter_map.time_constant_scans;
+    const trk_real keep = t->confirm_model.existence.count_keep;
     tr->test.confirm.existence.count_gated = keep * tr->test.confirm.existence.count_gated + (trk_real)look->n_gated;
-    tr->test.confirm.existence.count_expected =
-        keep * tr->test.confirm.existence.count_expected - trk_log1p(-look->pfa_gate) + look->pd_pg;
+    tr->test.confirm.existence.count_expected = keep * tr->test.confirm.existence.count_expected + look->n_expected;
 }
 
 trk_real trk_i_gate_count_tail(trk_real gated, trk_real expected)

@@ -17,7 +17,7 @@ struct trk_look {
     unsigned sensor_id;
     int n_gated;
     trk_real pfa_gate;   /* P(clutter in the gate) = 1 - exp(-lambda V_G) */
-    trk_real pd_pg;      /* P_D P_G at the track: its target's expected detections in the gate */
+    trk_real n_expected; /* lambda V_G + P_D P_G: the clutter and target detections the gate should hold */
     trk_real beta0;
     /* clutter tests: nearest detection of the scan (has_nearest = 0: none) */
     int has_nearest;

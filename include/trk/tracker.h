@@ -485,6 +485,9 @@ union trk_term_state {
 union trk_confirm_model {
     struct trk_mn_model mn;  /**< TRK_CONFIRM_MN */
     struct trk_sprt_model sprt;  /**< TRK_CONFIRM_SPRT */
+    struct {
+        trk_real count_keep; /**< the gate-count check's weight per look, 1 - 1/tau */
+    } existence;  /**< TRK_CONFIRM_EXISTENCE */
 #if TRK_WITH_CLUTTER_TESTS
     struct trk_clutter_chi2_model chi2;  /**< TRK_CONFIRM_CLUTTER_CHI2 */
     struct trk_clutter_amp_model amp;  /**< TRK_CONFIRM_CLUTTER_AMP */
