@@ -716,9 +716,27 @@ static int write_csv(const struct sim_common *com, const char *suffix, const str
     return sim_csv_close(&f_out);
 }
 
-/* Every run's metrics, one row per (configuration, clutter, seed) in the
- * tables' order, for the analyst's own statistics (the bad seeds, paired
- * differences): capacity,config,clutter,family,seed, then the metrics. */
+/* Run (seed i, level l, configuration c)'s metric m: the runs are stored
+ * seed-major, as sim_run_units filled them. */
+static double run_metric(const struct run_result *res, int nl, int nc, long i, int l, int c, int m)
+{
+    return res[(i * nl + l) * nc + c].v[m];
+}
+
+/* The index in levels (as given) of the ls-th sorted level, -1 when it
+ * repeats the one before (a level given twice): the tables' rows. */
+static int sorted_level(const double *levels, const double *lv_sorted, int ls)
+{
+    if (ls > 0 && lv_sorted[ls] == lv_sorted[ls - 1]) return -1;
+    int l = 0;
+    while (levels[l] != lv_sorted[ls]) l++;
+    return l;
+}
+
+/* Every run's metrics, one row per (configuration, clutter, seed):
+ * configurations in --config order, levels as given, for the analyst's own
+ * statistics (the bad seeds, paired differences):
+ * capacity,config,clutter,family,seed, then the metrics. */
 static int write_runs_csv(const struct sim_common *com, const struct run_result *res, long seeds, const double *levels,
                           int nl, const int *kinds, int nc, const char *family, int sonar, char *path, size_t pathlen)
 {
@@ -734,7 +752,7 @@ static int write_runs_csv(const struct sim_common *com, const struct run_result 
                 fprintf(f, "%d,%s,%g,%s,%llu", TRK_MAX_TRACKS, cfg_name[kinds[c]], levels[l], family,
                         (unsigned long long)(com->seed + (uint64_t)i));
                 for (int m = 0; m < n_metric_cols(sonar); m++)
-                    fprintf(f, ",%.6g", res[(i * nl + l) * nc + c].v[m]);
+                    fprintf(f, ",%.6g", run_metric(res, nl, nc, i, l, c, m));
                 fprintf(f, "\n");
             }
     return sim_csv_close(&f_out);
@@ -749,7 +767,7 @@ static void paired_diff(const struct run_result *res, long seeds, int nl, int nc
 {
     size_t k = 0;
     for (long i = 0; i < seeds; i++) {
-        const double vc = res[(i * nl + l) * nc + c].v[m], vb = res[(i * nl + l) * nc + b].v[m];
+        const double vc = run_metric(res, nl, nc, i, l, c, m), vb = run_metric(res, nl, nc, i, l, b, m);
         if (isfinite(vc) && isfinite(vb)) x[k++] = vc - vb;
     }
     mc_mean_ci_t(x, k, 0.95, mean, lo, hi);
@@ -792,12 +810,11 @@ static void print_paired(const struct run_result *res, long seeds, const double 
     for (int c = 0; c < nc; c++) {
         if (c == b) continue;
         for (int ls = 0; ls < nl; ls++) {
-            if (ls > 0 && lv_sorted[ls] == lv_sorted[ls - 1]) continue;
-            int l = 0;
-            while (levels[l] != lv_sorted[ls]) l++;
+            const int l = sorted_level(levels, lv_sorted, ls);
+            if (l < 0) continue;
             size_t k = 0;
             for (long i = 0; i < seeds; i++) {
-                const double vc = res[(i * nl + l) * nc + c].v[M_GOSPA], vb = res[(i * nl + l) * nc + b].v[M_GOSPA];
+                const double vc = run_metric(res, nl, nc, i, l, c, M_GOSPA), vb = run_metric(res, nl, nc, i, l, b, M_GOSPA);
                 if (!isfinite(vc) || !isfinite(vb)) continue;
                 num[k] = vc;
                 den[k++] = vb;
@@ -1583,9 +1600,8 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
     int nr = 0;
     for (int c = 0; c < nc; c++)
         for (int ls = 0; ls < nl; ls++) {
-            int l = 0;
-            while (levels[l] != lv_sorted[ls]) l++;
-            if (ls > 0 && lv_sorted[ls] == lv_sorted[ls - 1]) continue; /* a level given twice */
+            const int l = sorted_level(levels, lv_sorted, ls);
+            if (l < 0) continue; /* a level given twice */
             struct mtt_row *r = &rows[nr++];
             r->capacity = TRK_MAX_TRACKS;
             snprintf(r->config, sizeof r->config, "%s", cfg_name[kinds[c]]);
@@ -1597,7 +1613,7 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
             for (int m = 0; m < M_N; m++) {
                 size_t k = 0;
                 for (long i = 0; i < seeds; i++) {
-                    const double v = res[(i * nl + l) * nc + c].v[m];
+                    const double v = run_metric(res, nl, nc, i, l, c, m);
                     if (isfinite(v)) x[k++] = v;
                 }
                 mc_mean_ci_t(x, k, 0.95, &r->mean[m], &r->lo[m], &r->hi[m]);
