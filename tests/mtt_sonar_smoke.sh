@@ -4,10 +4,11 @@
 # `trk-sim mtt --family sonar --scans 60 --seeds 3 --clutter-count 0,20,100` run with 1 and
 # 2 threads, one without the persistent scatterers, and their CSVs checked:
 #   - the header: the key columns, then <metric>_mean,_lo,_hi with the sonar family's
-#     own (patch_coverage, far_coverage, target_pd, persistent_per_scan and the false
+#     own (patch_coverage, far_coverage, far_missed_before_first, target_pd, persistent_per_scan and the false
 #     tracks split by where); a transit CSV has none of them (its columns as before)
 #   - exactly the rows {new, pda, cart, oracle} x {0, 20, 100}, family sonar, seeds 3,
-#     scans 60, amplitude 1 (Rayleigh, the P_D law's); per row and metric lo <= mean <= hi; fractions in [0, 1]
+#     scans 60, amplitude 1 (Rayleigh, the P_D law's); per row and metric lo <= mean <= hi; fractions in [0, 1]; beyond 5 km
+#     the share missed before a target's first track no more than the share missed
 #   - the scenario: 8 targets per run, (0, 8] present per scan; clutter per scan = the
 #     count asked for; detections seen by the tracker = 60 x (clutter + targets' +
 #     persistent returns'); the P_D seen (target detections per target-scan) the same in
@@ -54,7 +55,7 @@ done
 # check CSV PERSISTENT(1/0)
 check() {
     [ -f "$1" ] || fail "no CSV written ($1)"
-    awk -F, -v persist="$2" -v want_metrics="gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 coverage patch_coverage far_coverage parallel_both cross_both turn_coverage false_tracks_per_1000_scans false_tracks_patch_per_1000_scans false_tracks_outside_per_1000_scans false_tracks_persistent_per_1000_scans target_pd persistent_per_scan never_confirmed targets_per_run targets_present_per_scan clutter_per_scan rep_n_detections" '
+    awk -F, -v persist="$2" -v want_metrics="gospa_m gospa_loc_m2 gospa_missed_m2 gospa_false_m2 coverage patch_coverage far_coverage far_missed_before_first parallel_both cross_both turn_coverage false_tracks_per_1000_scans false_tracks_patch_per_1000_scans false_tracks_outside_per_1000_scans false_tracks_persistent_per_1000_scans target_pd persistent_per_scan never_confirmed targets_per_run targets_present_per_scan clutter_per_scan rep_n_detections" '
 function bad(msg) { print "mtt-sonar-smoke: FAILED: " msg; err = 1; exit 1 }
 function abs(x) { return x < 0 ? -x : x }
 NR == 1 {
@@ -82,8 +83,10 @@ NR == 1 {
         if (!($(i + 1) <= $i + 1e-9 * (1 + abs($i)) && $i <= $(i + 2) + 1e-9 * (1 + abs($i))))
             bad("row " key ": column " i " mean " $i " not in [" $(i + 1) ", " $(i + 2) "]")
     }
-    split("coverage patch_coverage far_coverage parallel_both cross_both turn_coverage target_pd", f01, " ")
+    split("coverage patch_coverage far_coverage far_missed_before_first parallel_both cross_both turn_coverage target_pd", f01, " ")
     for (k in f01) { v = $(col[f01[k] "_mean"]); if (v != "nan" && (v < 0 || v > 1)) bad(key ": " f01[k] " " v) }
+    fc = $(col["far_coverage_mean"]); fb = $(col["far_missed_before_first_mean"])
+    if (fc != "nan" && !(fb <= 1 - fc + 1e-9)) bad(key ": beyond 5 km missed before the first track " fb " > 1 - coverage " fc)
     if ($(col["targets_per_run_mean"]) != 8) bad(key ": " $(col["targets_per_run_mean"]) " targets per run, want 8")
     np = $(col["targets_present_per_scan_mean"])
     if (!(np > 0 && np <= 8)) bad(key ": targets present per scan " np)

@@ -159,7 +159,7 @@ enum {
     MTT_REPORT_COUNTERS(X)
 #undef X
     /* the sonar family's (columns of its rows only) */
-    M_COV_PATCH, M_COV_FAR, M_TGT_PD, M_PERSIST, M_FALSE_PATCH, M_FALSE_OUT, M_FALSE_PERSIST,
+    M_COV_PATCH, M_COV_FAR, M_FAR_BEFORE, M_TGT_PD, M_PERSIST, M_FALSE_PATCH, M_FALSE_OUT, M_FALSE_PERSIST,
     M_N
 };
 #define M_REP_FIRST M_REP_n_detections
@@ -183,7 +183,7 @@ static const char *const metric_name[M_N] = {
 #define X(f) "rep_" #f,
     MTT_REPORT_COUNTERS(X)
 #undef X
-    "patch_coverage", "far_coverage", "target_pd", "persistent_per_scan", "false_tracks_patch_per_1000_scans",
+    "patch_coverage", "far_coverage", "far_missed_before_first", "target_pd", "persistent_per_scan", "false_tracks_patch_per_1000_scans",
     "false_tracks_outside_per_1000_scans", "false_tracks_persistent_per_1000_scans",
 };
 
@@ -453,7 +453,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
     const int oracle = kind == CFG_ORACLE;
     const int sonar = sc->p.family == MTT_FAMILY_SONAR;
     struct sonar_false sf = {NULL, 0, 0};
-    long patch_n = 0, patch_hit = 0, far_n = 0, far_hit = 0, tgt_det = 0, persist_sum = 0;
+    long patch_n = 0, patch_hit = 0, far_n = 0, far_hit = 0, far_before = 0, tgt_det = 0, persist_sum = 0;
     struct pair_stats cross = {{-1, -1}, 0, 0, 0, 0}, par = {{-1, -1}, 0, 0, 0, 0};
     struct mtt_eval ev;
     struct man_stats turn, acc;
@@ -463,6 +463,12 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
     if (oracle ? mtt_oracle_init(&orc, sc->n_targets, tp->sensor[0].meas_cov_m2, tp->process_noise_q) != 0
                : trk_tracker_init(ws->tk, tp) != TRK_OK)
         return -1;
+    /* sonar: per target, whether it has had a confirmed track yet */
+    unsigned char *held_once = sonar ? calloc(sc->n_targets ? sc->n_targets : 1, 1) : NULL;
+    if (sonar && !held_once) {
+        if (oracle) mtt_oracle_free(&orc);
+        return -1;
+    }
     mtt_eval_init(&ev, c_m);
     const long ns = sc->p.n_scans;
     double cpu = 0, rep_sum[N_REP] = {0};
@@ -564,7 +570,9 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
                 if (hypot(truth[i].x_m - (double)pose.x_m, truth[i].y_m - (double)pose.y_m) > SONAR_FAR_M) {
                     far_n++;
                     far_hit += hit;
+                    far_before += !hit && !held_once[truth[i].id];
                 }
+                if (hit) held_once[truth[i].id] = 1;
             }
             for (size_t j = 0; j < ne && rc == 0; j++) {
                 struct sonar_track *t = sonar_track_of(&sf, ws->est[j].id);
@@ -662,6 +670,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
             }
             v[M_COV_PATCH] = patch_n ? (double)patch_hit / (double)patch_n : NAN;
             v[M_COV_FAR] = far_n ? (double)far_hit / (double)far_n : NAN;
+            v[M_FAR_BEFORE] = far_n ? (double)far_before / (double)far_n : NAN;
             v[M_TGT_PD] = present_sum ? (double)tgt_det / (double)present_sum : NAN;
             v[M_PERSIST] = (double)persist_sum / dn;
             v[M_FALSE_PATCH] = 1000.0 * (double)f_patch / dn;
@@ -670,6 +679,7 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
         }
     }
     free(sf.v);
+    free(held_once);
     mtt_eval_free(&ev);
     if (oracle) mtt_oracle_free(&orc);
     return rc;
@@ -929,7 +939,8 @@ static void print_tables(const struct mtt_row *rows, int n)
     };
     static const struct column sonar[] = {
         {"coverage", M_COV, 12, 3, 1, 1},           {"in patches", M_COV_PATCH, 12, 3, 1, 1},
-        {"beyond 5 km", M_COV_FAR, 12, 3, 1, 1},    {"pair2", M_PAR, 6, 2, 0, 1},
+        {"beyond 5 km", M_COV_FAR, 12, 3, 1, 1},    {"before 1st", M_FAR_BEFORE, 10, 3, 0, 1},
+        {"pair2", M_PAR, 6, 2, 0, 1},
         {"cross2", M_CROSS, 6, 2, 0, 1},            {"turn", M_TURN, 6, 2, 0, 1},
         {"falseT/1000sc", M_FALSE_TRK, 13, 1, 1, 1}, {"in patch", M_FALSE_PATCH, 8, 1, 0, 1},
         {"outside", M_FALSE_OUT, 8, 1, 0, 1},       {"on persist", M_FALSE_PERSIST, 10, 1, 0, 1},
@@ -960,7 +971,8 @@ static void print_tables(const struct mtt_row *rows, int n)
     print_table(rows, n, manoeuvre, N_COLS(manoeuvre) - (accel ? 0 : 4));
     if (any_sonar(rows, n)) {
         printf("-- sonar situations: coverage of all targets, in the reverberation patches, beyond %g km from the\n"
-               "   sonar, of the close pair (both held), the shallow crossing (both, its window), the turn; false\n"
+               "   sonar (and the share of those target-scans missed before the target's first confirmed track),\n"
+               "   of the close pair (both held), the shallow crossing (both, its window), the turn; false\n"
                "   confirmed tracks per 1000 scans: all, mostly in a patch, mostly outside (these two add up to\n"
                "   all), mostly within c of a persistent scatterer; P_D seen (target detections per target-scan),\n"
                "   persistent returns per scan\n",
