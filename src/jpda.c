@@ -34,6 +34,10 @@ static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_mi
 static void solve_two(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
 static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget);
 static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged);
+static void solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget,
+                          struct trk_jpda_report *r);
+static int cluster_solved(const struct cluster *c, const trk_real *p_miss);
+static void floor_weights(const struct cluster *c);
 
 /* ------------------------------------------------------------------ API */
 
@@ -43,7 +47,7 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
     if (!solver) return TRK_E_ARG;
     const trk_status st = check_pairs(pairs, p_pair, p_miss);
     if (st != TRK_OK) return st;
-    struct trk_jpda_report r = {0, 0, 0, 0, 0, 0, 1};
+    struct trk_jpda_report r = {0, 0, 0, 0, 0, 0, 1, 0};
     uint64_t budget = (uint64_t)TRK_JPDA_SCAN_WORK; /* the exact programmes' work this call */
     const size_t n_clusters = form_clusters(pairs, solver);
     for (size_t k = 0; k < n_clusters; k++) {
@@ -54,24 +58,71 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
         r.n_clusters++;
         if (c.nt > r.largest_tracks) r.largest_tracks = c.nt;
         if (c.nd > r.largest_dets) r.largest_dets = c.nd;
-        if (c.nt == 1) {
-            solve_lone(&c, p_pair, p_miss);
-            r.n_exact++;
-        } else if (c.nt == 2) {
-            solve_two(&c, p_pair, p_miss);
-            r.n_exact++;
-        } else if (solve_exact(&c, p_pair, p_miss, &budget)) {
-            r.n_exact++;
-        } else {
-            int conv = 0;
-            const int it = solve_lbp(&c, p_pair, p_miss, &conv);
-            r.n_approx++;
-            if (it > r.lbp_iterations) r.lbp_iterations = it;
-            if (!conv) r.lbp_converged = 0;
+        struct trk_jpda_report first = r;
+        solve_cluster(&c, p_pair, p_miss, &budget, &first);
+        if (cluster_solved(&c, p_miss)) {
+            r = first;
+        } else { /* every event underflowed (0 / 0): again, floored; counted once, as solved then */
+            floor_weights(&c);
+            solve_cluster(&c, p_pair, p_miss, &budget, &r);
+            r.n_floored++;
         }
     }
     if (rep) *rep = r;
     return TRK_OK;
+}
+
+/* One cluster by the cheapest exact method its size allows within the
+ * scan's budget, else by loopy belief propagation; counted in *r. */
+static void solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget,
+                          struct trk_jpda_report *r)
+{
+    if (c->nt == 1) {
+        solve_lone(c, p_pair, p_miss);
+        r->n_exact++;
+    } else if (c->nt == 2) {
+        solve_two(c, p_pair, p_miss);
+        r->n_exact++;
+    } else if (solve_exact(c, p_pair, p_miss, budget)) {
+        r->n_exact++;
+    } else {
+        int conv = 0;
+        const int it = solve_lbp(c, p_pair, p_miss, &conv);
+        r->n_approx++;
+        if (it > r->lbp_iterations) r->lbp_iterations = it;
+        if (!conv) r->lbp_converged = 0;
+    }
+}
+
+/* Did every track of the cluster get finite marginals? A track's
+ * normaliser is 0 (and its marginals 0 / 0) only when every joint event
+ * underflowed: the scaled weights (each track's divided by its largest,
+ * form_clusters) are then 0 wherever an event needs them, as when two
+ * tracks each have a weight near 1 on one shared detection and misses
+ * below e^-708 (double). */
+static int cluster_solved(const struct cluster *c, const trk_real *p_miss)
+{
+    for (size_t a = 0; a < c->nt; a++)
+        if (!(p_miss[c->tracks[a]] >= 0 && p_miss[c->tracks[a]] <= 1)) return 0;
+    return 1;
+}
+
+/* Raise each scaled weight of the cluster (its tracks' misses and pairs) to
+ * at least f = TRK_REAL_MIN^(1 / (n_t + 1)): an event multiplies n_t of
+ * them, so none is below TRK_REAL_MIN / f and every normaliser is
+ * positive. Weights that small against their track's largest weigh nothing
+ * where the arithmetic can hold the events; here they decide between events
+ * it cannot, and the marginals become approximate (trk_jpda_report
+ * n_floored). */
+static void floor_weights(const struct cluster *c)
+{
+    const trk_real f = trk_exp(trk_log(TRK_REAL_MIN) / (trk_real)(c->nt + 1));
+    for (size_t a = 0; a < c->nt; a++) {
+        const size_t t = c->tracks[a];
+        if (c->w->miss[t] < f) c->w->miss[t] = f;
+        for (size_t k = c->s->first[t]; k < c->s->first[t + 1]; k++)
+            if (c->s->w[k] < f) c->s->w[k] = f;
+    }
 }
 
 /* The dense scan as pairs (gated: ln w finite), solved, and scattered back. */

@@ -10,6 +10,8 @@
  *   - densities NaN, infinite, 0 or negative reject their detections
  *     (n_rejected_density), the rest of the scan is processed and the
  *     counts add up, also in a scan beyond capacity;
+ *   - a subnormal density on a detection two tracks share: the joint
+ *     cluster is solved (floored weights), no track ends as numerical;
  *   - nonparametric clutter or a sensor density of 0: the scan is refused
  *     (TRK_E_UNSUPPORTED), the table untouched. */
 #include "trk_test.h"
@@ -167,6 +169,55 @@ static void test_bad_densities_counted(void **state)
     }
 }
 
+/* A caller's density at the arithmetic's end (the smallest subnormal:
+ * accepted, > 0) on one detection that two tracks gate: its joint weight
+ * lies more than e^745 (double; e^104 float) above either track's miss,
+ * each track's scaled miss underflows to 0, every joint event of the
+ * cluster weighed 0 and
+ * the marginals were 0 / 0: both tracks ended as numerical. Now the
+ * cluster is solved with floored weights (counted in n_clusters_approx)
+ * and both tracks go on, one of them on the detection. */
+static void test_density_beyond_the_range(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    params_with(&p, 1e-6);
+    /* a precise sensor (sigma 1 m) that rarely misses: the shared pair's
+     * weight is the larger, the misses' the smaller */
+    p.sensor[0].meas_cov_m2[TRK_COV2_XX] = p.sensor[0].meas_cov_m2[TRK_COV2_YY] = 1;
+    p.sensor[0].pd = TRK_REAL_C(0.999);
+    p.gate_prob = TRK_REAL_C(0.9999);
+    p.visibility.delta_stay = TRK_REAL_C(0.9999);
+    p.merge_gate_d2 = 0; /* two tracks 4 m apart stay two */
+    TRK_ASSERT_OK(trk_tracker_init(&tk_a, &p));
+    struct trk_detection d[2];
+    memset(d, 0, sizeof d);
+    uint64_t rng = 5;
+    for (int k = 0; k < 12; k++) { /* two targets 4 m apart, 5 m/s */
+        for (int i = 0; i < 2; i++) {
+            d[i].x_m = (trk_real)(500.0 + 10.0 * k + 0.3 * trk_test_nrand(&rng));
+            d[i].y_m = (trk_real)(500.0 + 4.0 * i + 0.3 * trk_test_nrand(&rng));
+        }
+        struct trk_scan s;
+        trk_scan_init(&s, SEC(k), 0, 2, d);
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &s, NULL));
+    }
+    assert_int_equal(trk_tracker_live_count(&tk_a), 2);
+    d[0].x_m = (trk_real)(500.0 + 10.0 * 12);
+    d[0].y_m = (trk_real)502.0; /* between them, in both gates */
+    const trk_real lam[1] = {TRK_REAL_MIN * TRK_REAL_EPS}; /* the smallest subnormal */
+    struct trk_scan s;
+    trk_scan_init(&s, SEC(12), 0, 1, d);
+    s.clutter_density_per_m2 = lam;
+    struct trk_scan_report r;
+    TRK_ASSERT_OK(trk_tracker_process_scan(&tk_a, &s, &r));
+    assert_int_equal(r.n_kept, 1);
+    assert_int_equal(r.n_tracks_hit, 2);
+    assert_int_equal(r.n_numerical, 0);
+    assert_true(r.n_clusters_approx >= 1);
+    assert_int_equal(trk_tracker_live_count(&tk_a), 2);
+}
+
 /* where the caller's densities cannot stand in for lambda: refused whole */
 static void test_refused_where_unsupported(void **state)
 {
@@ -203,6 +254,7 @@ int main(void)
         cmocka_unit_test(test_uniform_density_is_the_configured_one),
         cmocka_unit_test(test_configured_density_no_longer_matters),
         cmocka_unit_test(test_bad_densities_counted),
+        cmocka_unit_test(test_density_beyond_the_range),
         cmocka_unit_test(test_refused_where_unsupported),
     };
     return trk_run_tests("caller_density", tests, NULL, NULL);

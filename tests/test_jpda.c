@@ -140,6 +140,53 @@ static void test_wide_dynamic_range(void **state)
     }
 }
 
+/* Events beyond the arithmetic: tracks whose misses lie e^-800 (double;
+ * e^-100 in float) below their one gated weight, every track on the same
+ * detection(s). Each track's scaled miss underflows to 0, every joint event
+ * then weighs 0 and the marginals were 0 / 0 (tracks ended as numerical in
+ * the track table). Now the cluster is solved again with floored weights
+ * (n_floored): finite marginals, each track's summing to 1, and for the
+ * symmetric cluster its exact value by symmetry. Two tracks (the closed
+ * form), four on two detections (the exact programme). */
+static void test_events_beyond_range(void **state)
+{
+    (void)state;
+    const double deep = TRK_TEST_IS_FLOAT ? -100 : -800;
+    for (int shape = 0; shape < 2; shape++) {
+        struct problem p;
+        p.nt = shape ? 4 : 2;
+        p.nd = shape ? 2 : 1;
+        for (size_t t = 0; t < p.nt; t++) {
+            p.lw0[t] = deep;
+            for (size_t j = 0; j < p.nd; j++) p.lw[t * p.nd + j] = 0;
+        }
+        trk_real pa[MAXT * MAXD], pm[MAXT];
+        struct trk_jpda_report rep;
+        run(&p, pa, pm, &rep);
+        assert_int_equal(rep.n_floored, 1);
+        assert_int_equal(rep.n_clusters, 1);
+        assert_int_equal(rep.n_exact + rep.n_approx, 1);
+        for (size_t t = 0; t < p.nt; t++) {
+            double row = pm[t];
+            assert_true(isfinite(pm[t]) && pm[t] >= 0);
+            for (size_t j = 0; j < p.nd; j++) {
+                assert_true(isfinite(pa[t * p.nd + j]) && pa[t * p.nd + j] >= 0);
+                row += pa[t * p.nd + j];
+                /* n_d of the n_t tracks take a detection, each of them alike */
+                TRK_ASSERT_NEAR(pa[t * p.nd + j], 1.0 / (double)p.nt, 1e-6, 0);
+            }
+            TRK_ASSERT_NEAR(row, 1, TRK_TOL(1e-12, 1e-5), 0);
+        }
+    }
+    /* within the range nothing is floored */
+    struct problem q;
+    random_problem(&q, 4, 5, 0.9, TRK_TEST_IS_FLOAT ? 60 : 600);
+    trk_real pa[MAXT * MAXD], pm[MAXT];
+    struct trk_jpda_report rep;
+    run(&q, pa, pm, &rep);
+    assert_int_equal(rep.n_floored, 0);
+}
+
 /* Two tracks (their closed form): random gates, weights over hundreds of
  * decades, and both tracks on one dominant shared detection with every
  * other weight and the misses far below it, where a form that subtracts
@@ -389,6 +436,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact_matches_enumeration),
         cmocka_unit_test(test_wide_dynamic_range),
+        cmocka_unit_test(test_events_beyond_range),
         cmocka_unit_test(test_two_tracks),
         cmocka_unit_test(test_single_track_is_pda),
         cmocka_unit_test(test_clusters),

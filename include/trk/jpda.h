@@ -118,6 +118,13 @@ struct trk_jpda_report {
     size_t largest_dets;    /**< gated detections of the largest cluster */
     int lbp_iterations;     /**< most iterations any LBP cluster took */
     int lbp_converged;      /**< 1 when every LBP cluster met its tolerance */
+    size_t n_floored;       /**< clusters whose every joint event underflowed the
+                               arithmetic (a track's weights spanning more than
+                               the real type's exponent range, e^-708 in double,
+                               e^-87 in float): solved again with each weight
+                               raised to at least TRK_REAL_MIN^(1 / (n_t + 1)), n_t
+                               its tracks, so that no event vanishes; approximate
+                               (counted in n_exact or n_approx as solved) */
 };
 
 /** Marginal association probabilities of every gated pair and track, from

@@ -888,7 +888,9 @@ struct trk_scan_report {
     /* joint association (TRK_ASSOC_JOINT) */
     uint32_t n_clusters;            /**< clusters of the joint problem (a track alone, with or
                                        without gated detections, is a cluster of one) */
-    uint32_t n_clusters_approx;     /**< ... solved by loopy belief propagation (jpda.h), not exactly */
+    uint32_t n_clusters_approx;     /**< ... solved approximately: by loopy belief propagation, or
+                                       with floored weights where every joint event underflowed
+                                       (jpda.h, trk_jpda_report n_approx and n_floored) */
     uint32_t largest_cluster;       /**< tracks in the largest cluster */
     uint32_t n_assoc_overflow;      /**< tracks left out of the joint problem and updated by their
                                        own PDA after the joint tracks: the scan's gated pairs
