@@ -28,8 +28,13 @@ SHARED_VERSION_DEF := -DTRK_VERSION_STRING='"$(TRK_VERSION)"'
 
 .PHONY: shared bench-python test-python-binding
 shared: $(SHARED_LIB)
-# `make` builds it beside the static archives
+# `make` builds it beside the static archives; not in a sanitizer build
+# (SAN=1): clang links no sanitizer runtime into a shared object (the link
+# with --no-undefined fails), and a sanitized library cannot be loaded by an
+# unsanitized Python anyway
+ifneq ($(SAN),1)
 all: shared
+endif
 
 $(BUILD)/pic/obj/src/%.o: src/%.c $(BUILD_CONFIG)
 	@mkdir -p $(@D)
