@@ -34,8 +34,8 @@ static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_mi
 static void solve_two(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
 static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget);
 static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged);
-static void solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget,
-                          struct trk_jpda_report *r);
+static int solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget, int *it,
+                         int *conv);
 static int cluster_solved(const struct cluster *c, const trk_real *p_miss);
 static void floor_weights(const struct cluster *c);
 
@@ -58,40 +58,38 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
         r.n_clusters++;
         if (c.nt > r.largest_tracks) r.largest_tracks = c.nt;
         if (c.nd > r.largest_dets) r.largest_dets = c.nd;
-        struct trk_jpda_report first = r;
-        solve_cluster(&c, p_pair, p_miss, &budget, &first);
-        if (cluster_solved(&c, p_miss)) {
-            r = first;
-        } else { /* every event underflowed (0 / 0): again, floored; counted once, as solved then */
+        int it = 0, conv = 1;
+        int approx = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
+        if (!cluster_solved(&c, p_miss)) { /* every event underflowed (0 / 0): again, floored */
             floor_weights(&c);
-            solve_cluster(&c, p_pair, p_miss, &budget, &r);
+            approx = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
             r.n_floored++;
         }
+        if (!approx) {
+            r.n_exact++;
+            continue;
+        }
+        r.n_approx++;
+        if (it > r.lbp_iterations) r.lbp_iterations = it;
+        if (!conv) r.lbp_converged = 0;
     }
     if (rep) *rep = r;
     return TRK_OK;
 }
 
 /* One cluster by the cheapest exact method its size allows within the
- * scan's budget, else by loopy belief propagation; counted in *r. */
-static void solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget,
-                          struct trk_jpda_report *r)
+ * scan's budget (0), else by loopy belief propagation (1; its iterations
+ * and convergence into *it, *conv). */
+static int solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget, int *it,
+                         int *conv)
 {
-    if (c->nt == 1) {
-        solve_lone(c, p_pair, p_miss);
-        r->n_exact++;
-    } else if (c->nt == 2) {
-        solve_two(c, p_pair, p_miss);
-        r->n_exact++;
-    } else if (solve_exact(c, p_pair, p_miss, budget)) {
-        r->n_exact++;
-    } else {
-        int conv = 0;
-        const int it = solve_lbp(c, p_pair, p_miss, &conv);
-        r->n_approx++;
-        if (it > r->lbp_iterations) r->lbp_iterations = it;
-        if (!conv) r->lbp_converged = 0;
+    if (c->nt == 1) solve_lone(c, p_pair, p_miss);
+    else if (c->nt == 2) solve_two(c, p_pair, p_miss);
+    else if (!solve_exact(c, p_pair, p_miss, budget)) {
+        *it = solve_lbp(c, p_pair, p_miss, conv);
+        return 1;
     }
+    return 0;
 }
 
 /* Did every track of the cluster get finite marginals? A track's
