@@ -218,7 +218,9 @@ static struct trk_polar_detection hostile_polar(void)
  * carried by every scan. cfg 0: the defaults with a Rayleigh amplitude
  * model and persistent returns in it; 1: positions only, the unbiased
  * conversion, no hold of still tracks, weak pairs started at once; 2:
- * the per-track PDA with amplitudes, the gate-count check at 0.5. */
+ * the per-track PDA with amplitudes, the gate-count check at 0.5; 3 (a
+ * build with TRK_WITH_IMM): the defaults with IMM tracks (turns at
+ * 3 deg/s). */
 static void polar_params(int cfg, struct trk_tracker_params *p)
 {
     trk_tracker_default_params(p);
@@ -255,6 +257,9 @@ static void polar_params(int cfg, struct trk_tracker_params *p)
         p->association = TRK_ASSOC_PDA;
         p->confirm.u.existence.count_alpha = TRK_REAL_C(0.5);
     }
+#if TRK_WITH_IMM
+    if (cfg == 3) TRK_ASSERT_OK(trk_tracker_imm_params(p, TRK_REAL_C(0.0524), TRK_REAL_C(0.9)));
+#endif
 }
 
 /* Random scans of a sonar on a platform that moves and turns: movers that
@@ -271,7 +276,7 @@ static void test_random_polar_scans(void **state)
     static struct trk_polar_detection det[N_POLAR_MAX];
     static trk_real lam[N_POLAR_MAX];
     const long n_scans = env_count("TRK_RANDOM_SCANS", 4000) / 2, seed = env_count("TRK_RANDOM_SEED", 0);
-    for (int cfg = 0; cfg < 3; cfg++) {
+    for (int cfg = 0; cfg < (TRK_WITH_IMM ? 4 : 3); cfg++) {
         struct trk_tracker_params p;
         polar_params(cfg, &p);
         TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
