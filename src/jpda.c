@@ -58,20 +58,20 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
         r.n_clusters++;
         if (c.nt > r.largest_tracks) r.largest_tracks = c.nt;
         if (c.nd > r.largest_dets) r.largest_dets = c.nd;
-        int it = 0, conv = 1;
-        int approx = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
+        int it = 0, conv = 1, floored = 0;
+        int lbp = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
         if (!cluster_solved(&c, p_miss)) { /* every event underflowed (0 / 0): again, floored */
             floor_weights(&c);
-            approx = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
+            lbp = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
+            floored = 1;
             r.n_floored++;
         }
-        if (!approx) {
-            r.n_exact++;
-            continue;
+        if (lbp) {
+            if (it > r.lbp_iterations) r.lbp_iterations = it;
+            if (!conv) r.lbp_converged = 0;
         }
-        r.n_approx++;
-        if (it > r.lbp_iterations) r.lbp_iterations = it;
-        if (!conv) r.lbp_converged = 0;
+        if (lbp || floored) r.n_approx++;
+        else r.n_exact++;
     }
     if (rep) *rep = r;
     return TRK_OK;
@@ -97,7 +97,7 @@ static int solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_
  * underflowed: the scaled weights (each track's divided by its largest,
  * form_clusters) are then 0 wherever an event needs them, as when two
  * tracks each have a weight near 1 on one shared detection and misses
- * below e^-708 (double). */
+ * below about e^-745 (double; e^-103 float: past the subnormals). */
 static int cluster_solved(const struct cluster *c, const trk_real *p_miss)
 {
     for (size_t a = 0; a < c->nt; a++)

@@ -102,7 +102,7 @@ static TRK_NOINLINE void joint_solve(struct trk_tracker *t, struct trk_scan_repo
     for (size_t k = 0; k < n_pairs; k++) t->ws.w[k] = trk_i_pda_weight(t->ws.u.joint.p_pair[k]); /* subnormal: 0 */
     for (size_t k = 0; k < n; k++) t->ws.miss[k] = t->ws.u.joint.p_miss[k];
     rep->n_clusters += (uint32_t)jr.n_clusters;
-    rep->n_clusters_approx += (uint32_t)(jr.n_approx + jr.n_floored);
+    rep->n_clusters_approx += (uint32_t)jr.n_approx;
     if (jr.largest_tracks > rep->largest_cluster) rep->largest_cluster = (uint32_t)jr.largest_tracks;
 }
 

@@ -171,7 +171,7 @@ static void test_bad_densities_counted(void **state)
 
 /* A caller's density at the arithmetic's end (the smallest subnormal:
  * accepted, > 0) on one detection that two tracks gate: its joint weight
- * lies more than e^745 (double; e^104 float) above either track's miss,
+ * lies more than e^745 (double; e^103 float) above either track's miss,
  * each track's scaled miss underflows to 0, every joint event of the
  * cluster weighed 0 and
  * the marginals were 0 / 0: both tracks ended as numerical. Now the

@@ -113,18 +113,18 @@ struct trk_jpda_scan {
 struct trk_jpda_report {
     size_t n_clusters;      /**< clusters with at least one track */
     size_t n_exact;         /**< of which solved exactly */
-    size_t n_approx;        /**< of which by loopy belief propagation */
+    size_t n_approx;        /**< of which approximately: by loopy belief propagation,
+                               or with floored weights (n_floored) */
     size_t largest_tracks;  /**< tracks of the largest cluster */
     size_t largest_dets;    /**< gated detections of the largest cluster */
     int lbp_iterations;     /**< most iterations any LBP cluster took */
     int lbp_converged;      /**< 1 when every LBP cluster met its tolerance */
     size_t n_floored;       /**< clusters whose every joint event underflowed the
                                arithmetic (a track's weights spanning more than
-                               the real type's exponent range, e^-708 in double,
-                               e^-87 in float): solved again with each weight
-                               raised to at least TRK_REAL_MIN^(1 / (n_t + 1)), n_t
-                               its tracks, so that no event vanishes; approximate
-                               (counted in n_exact or n_approx as solved) */
+                               its range, about e^745 in double, e^103 in float):
+                               solved again with each weight raised to at least
+                               TRK_REAL_MIN^(1 / (n_t + 1)), n_t its tracks, so
+                               that no event vanishes; approximate (in n_approx) */
 };
 
 /** Marginal association probabilities of every gated pair and track, from

@@ -890,7 +890,7 @@ struct trk_scan_report {
                                        without gated detections, is a cluster of one) */
     uint32_t n_clusters_approx;     /**< ... solved approximately: by loopy belief propagation, or
                                        with floored weights where every joint event underflowed
-                                       (jpda.h, trk_jpda_report n_approx and n_floored) */
+                                       (jpda.h, trk_jpda_report n_approx, of them n_floored) */
     uint32_t largest_cluster;       /**< tracks in the largest cluster */
     uint32_t n_assoc_overflow;      /**< tracks left out of the joint problem and updated by their
                                        own PDA after the joint tracks: the scan's gated pairs
