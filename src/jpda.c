@@ -34,10 +34,23 @@ static void solve_lone(const struct cluster *c, trk_real *p_pair, trk_real *p_mi
 static void solve_two(const struct cluster *c, trk_real *p_pair, trk_real *p_miss);
 static int solve_exact(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget);
 static int solve_lbp(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, int *converged);
-static int solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget, int *it,
-                         int *conv);
 static int cluster_solved(const struct cluster *c, const trk_real *p_miss);
 static void floor_weights(const struct cluster *c);
+
+/* One cluster by the cheapest exact method its size allows within the
+ * scan's budget (0), else by loopy belief propagation (1; its iterations
+ * and convergence into *it, *conv). */
+TRK_INLINE int solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget,
+                             int *it, int *conv)
+{
+    if (c->nt == 1) solve_lone(c, p_pair, p_miss);
+    else if (c->nt == 2) solve_two(c, p_pair, p_miss);
+    else if (!solve_exact(c, p_pair, p_miss, budget)) {
+        *it = solve_lbp(c, p_pair, p_miss, conv);
+        return 1;
+    }
+    return 0;
+}
 
 /* ------------------------------------------------------------------ API */
 
@@ -60,7 +73,8 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
         if (c.nd > r.largest_dets) r.largest_dets = c.nd;
         int it = 0, conv = 1, floored = 0;
         int lbp = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
-        if (!cluster_solved(&c, p_miss)) { /* every event underflowed (0 / 0): again, floored */
+        if (c.nt > 1 && !cluster_solved(&c, p_miss)) { /* every event underflowed (0 / 0): again, floored
+                                                          (a lone track's normaliser is >= 1) */
             floor_weights(&c);
             lbp = solve_cluster(&c, p_pair, p_miss, &budget, &it, &conv);
             floored = 1;
@@ -75,21 +89,6 @@ trk_status trk_jpda_solve(const struct trk_jpda_pairs *pairs, struct trk_jpda_so
     }
     if (rep) *rep = r;
     return TRK_OK;
-}
-
-/* One cluster by the cheapest exact method its size allows within the
- * scan's budget (0), else by loopy belief propagation (1; its iterations
- * and convergence into *it, *conv). */
-static int solve_cluster(const struct cluster *c, trk_real *p_pair, trk_real *p_miss, uint64_t *budget, int *it,
-                         int *conv)
-{
-    if (c->nt == 1) solve_lone(c, p_pair, p_miss);
-    else if (c->nt == 2) solve_two(c, p_pair, p_miss);
-    else if (!solve_exact(c, p_pair, p_miss, budget)) {
-        *it = solve_lbp(c, p_pair, p_miss, conv);
-        return 1;
-    }
-    return 0;
 }
 
 /* Did every track of the cluster get finite marginals? A track's
