@@ -100,15 +100,21 @@ STACK_LIMIT_FILTERS ?= 2176
 # underflowed was solved again with floored weights (+0.3 KB: the check of
 # its marginals and the floor; before, its tracks ended as numerical;
 # jpda.h trk_jpda_report n_floored).
-TEXT_LIMIT ?= 45824
-TEXT_LIMIT_JOINT ?= 52992
+# 44.75 KB and 51.75 KB until the clutter map pooled a window of cells
+# about a position, less its guard cells (+0.3 KB: the window's loop and
+# its parameters' defaults and checks; docs/tracker.md "Clutter map").
+TEXT_LIMIT ?= 46080
+TEXT_LIMIT_JOINT ?= 53248
 # RAM: 64 KB for the table, the workspace and a full scan at the default
 # capacities (64 tracks, 256 detections, 4 sensors) and the stack, plus each
 # sensor's clutter map as its own line: TRK_MAX_SENSORS x
-# (TRK_CLUTTER_MAP_CELLS + 1) float (4 x 257 x 4 B = 4112 B; a firmware
-# with one sensor, TRK_MAX_SENSORS=1, pays 1028 B, and TRK_CLUTTER_MAP_CELLS=0
-# none).
-RAM_LIMIT ?= 69648
+# (TRK_CLUTTER_MAP_CELLS + 1) float (4 x 513 x 4 B = 8208 B; a firmware
+# with one sensor, TRK_MAX_SENSORS=1, pays 2052 B, TRK_CLUTTER_MAP_CELLS=256
+# half, and TRK_CLUTTER_MAP_CELLS=0 none). 69648 until the map's default
+# went from 16 x 16 cells to 16 x 32 (docs/tracker.md "Clutter map": the
+# finer bearing cells with the guard cell keep positions-only false tracks
+# down).
+RAM_LIMIT ?= 73744
 SIZE_PROBE_FLAGS := -std=c99 -Wall -Wextra -Wpedantic -Werror -fdata-sections -Iinclude
 TARGET_cortex-m4f_ARCH := arm
 TARGET_cortex-m4f-O2_ARCH := arm

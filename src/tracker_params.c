@@ -35,10 +35,14 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.min_existence = TRK_REAL_C(0.003); /* docs/tuning.md "The least initial existence" */
     p->stationary_d2 = 25; /* motion past 5 sigma: a still object passes at e^-12.5 = 3.7e-6 (chi^2_2);
                               docs/tracker.md "Persistent returns" for the measured choice */
-    /* a clutter map for a sensor with a coverage: 16 x 16 cells, 20 scans'
-     * memory, 2 pseudo-counts (docs/tracker.md "Clutter map") */
+    /* a clutter map for a sensor with a coverage: 16 x 32 cells (16 x 16
+     * in a build of 256), 20 scans' memory, 2 pseudo-counts, a position's
+     * ratio from the eight cells around its own (docs/tracker.md "Clutter
+     * map" for the measured choice) */
     p->clutter_map.n_range = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
-    p->clutter_map.n_bearing = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
+    p->clutter_map.n_bearing = TRK_CLUTTER_MAP_CELLS >= 512 ? 32 : TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
+    p->clutter_map.window_cells = 1;
+    p->clutter_map.guard_cells = 1;
     p->clutter_map.time_constant_scans = 20;
     p->clutter_map.prior_count = 2;
     p->clutter_map.min_ratio = TRK_REAL_C(0.1);
@@ -174,6 +178,8 @@ static trk_status check_clutter_map(const struct trk_clutter_map_params *mp, con
         (st = check_real(mp->min_ratio, 0, 1, 1, "clutter_map.min_ratio", field)) != TRK_OK ||
         (st = check_real(mp->max_ratio, 1, 0, TRK_REAL_C(1e6), "clutter_map.max_ratio", field)) != TRK_OK)
         return st;
+    if (mp->window_cells > TRK_CLUTTER_MAP_WINDOW_MAX) return refuse(field, "clutter_map.window_cells", TRK_E_RANGE);
+    if (mp->guard_cells > mp->window_cells) return refuse(field, "clutter_map.guard_cells", TRK_E_RANGE);
     return TRK_OK;
 }
 

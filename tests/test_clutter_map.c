@@ -32,7 +32,8 @@ static struct trk_tracker tk, tk2;
 
 /* A polar sensor at the origin facing north, coverage 1-9 km +-60 deg,
  * lambda 1e-7 per m^2; a map of 4 x 4 cells (2 km x 30 deg), tau 10 scans,
- * a = 2; nothing is confirmed in fewer than 64 scans (M of N 64 / 64). */
+ * a = 2, each position's ratio from its own cell alone (no window);
+ * nothing is confirmed in fewer than 64 scans (M of N 64 / 64). */
 static void map_params(struct trk_tracker_params *p)
 {
     trk_test_polar_params(p, 1e-7);
@@ -46,6 +47,8 @@ static void map_params(struct trk_tracker_params *p)
     p->clutter_map.prior_count = 2;
     p->clutter_map.min_ratio = TRK_REAL_C(0.1);
     p->clutter_map.max_ratio = 100;
+    p->clutter_map.window_cells = 0;
+    p->clutter_map.guard_cells = 0;
     p->confirm.method = TRK_CONFIRM_MN;
     p->confirm.u.mn.m = 64;
     p->confirm.u.mn.n = 64;
@@ -76,6 +79,22 @@ static double lambda_at(const struct trk_tracker *t, double x, double y)
     return (double)l;
 }
 
+/* Each scan three detections in cell (row 1, column 2) and twelve in
+ * cell (0, 0), at fixed spots (tentative tracks, none confirmed). */
+static void run_busy_cells(struct trk_tracker *t, int K)
+{
+    struct trk_polar_detection d[15];
+    memset(d, 0, sizeof d);
+    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)((5 + 8 * i) * DEG);
+    for (int i = 3; i < 15; i++) d[i].range_m = (trk_real)(1200 + 100 * i), d[i].bearing_rad = (trk_real)(-55 * DEG);
+    for (int k = 0; k < K; k++) {
+        const struct trk_scan s = {SCAN_US(k), 0, 15, NULL, d, 0, {0, 0, 0}, NULL};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(t, &s, &rep));
+        assert_int_equal(rep.n_confirmed, 0);
+    }
+}
+
 /* Three detections in cell (row 1: 3-5 km, column 2: 0..30 deg) and
  * twelve in cell (row 0, column 0) every scan, at fixed spots (they start
  * tentative tracks, none confirmed). */
@@ -87,17 +106,8 @@ static void test_closed_form(void **state)
     p.clutter_map.max_ratio = 20;
     p.clutter_map.min_ratio = TRK_REAL_C(0.25);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    struct trk_polar_detection d[15];
-    memset(d, 0, sizeof d);
-    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)((5 + 8 * i) * DEG);
-    for (int i = 3; i < 15; i++) d[i].range_m = (trk_real)(1200 + 100 * i), d[i].bearing_rad = (trk_real)(-55 * DEG);
     const int K = 25;
-    for (int k = 0; k < K; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, 15, NULL, d, 0, {0, 0, 0}, NULL};
-        struct trk_scan_report rep;
-        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
-        assert_int_equal(rep.n_confirmed, 0);
-    }
+    run_busy_cells(&tk, K);
     const double tol = TRK_TOL(1e-12, 2e-5);
     /* the busy cell, at its centre and at a corner */
     const double want = 1e-7 * ratio_after(K, 3, 3000, 5000);
@@ -123,6 +133,67 @@ static void test_closed_form(void **state)
     trk_real l = 0;
     TRK_ASSERT_OK(trk_tracker_clutter_at(&tk, 0, &turned, (trk_real)polar_x(4000, 15), (trk_real)polar_y(4000, 15), &l));
     TRK_ASSERT_NEAR((double)l, 1e-7 * ratio_after(K, 0, 3000, 5000), 0, tol); /* column 3: empty */
+}
+
+/* The pooled ratio (sum N + a) / (sum e W + a) after K scans over training
+ * cells holding n detections per scan in all, with e_r[i] cells of row i
+ * (rows of 2 km from 1 km, 30 deg wide, lambda 1e-7). */
+static double pooled_ratio(int K, double n, const int cells_in_row[4])
+{
+    const double keep = 1 - 1.0 / 10;
+    double W = 0, e = 0;
+    for (int k = 0; k < K; k++) W = W * keep + 1;
+    for (int i = 0; i < 4; i++) {
+        const double ra = 1000 + 2000 * i, rb = ra + 2000;
+        e += cells_in_row[i] * 1e-7 * (30 * DEG) * (rb * rb - ra * ra) / 2;
+    }
+    return (n * W + 2) / (e * W + 2);
+}
+
+/* A window of one cell with a guard of one (the defaults): a position's
+ * ratio pools the eight cells around its own, cut at the map's edges, and
+ * its own cell's count is left out; a window without a guard pools the
+ * nine. */
+static void test_window_and_guard(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
+    p.clutter_map.max_ratio = 1000;
+    p.clutter_map.window_cells = 1;
+    p.clutter_map.guard_cells = 1;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    p.clutter_map.guard_cells = 0;
+    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    const int K = 25;
+    run_busy_cells(&tk, K);
+    run_busy_cells(&tk2, K);
+    const double tol = TRK_TOL(1e-12, 2e-5);
+    /* the busy cell (1, 2): its neighbours, rows 0-2 x columns 1-3, are
+     * empty; its own three per scan are guarded */
+    const int around_12[4] = {3, 2, 3, 0};
+    const double guarded = pooled_ratio(K, 0, around_12);
+    assert_true(guarded < 1); /* what the guard is about: a busy cell does not raise itself */
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * guarded, 0, tol);
+    const int block_12[4] = {3, 3, 3, 0};
+    TRK_ASSERT_NEAR(lambda_at(&tk2, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * pooled_ratio(K, 3, block_12), 0, tol);
+    /* cell (1, 1) sees both busy cells, (0, 0) and (1, 2) */
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, -15), polar_y(4000, -15)), 1e-7 * pooled_ratio(K, 15, around_12), 0,
+                    tol);
+    /* the corner cell (0, 3): its window cut to (0, 2), (1, 2), (1, 3) */
+    const int corner_03[4] = {1, 2, 0, 0};
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(2000, 45), polar_y(2000, 45)), 1e-7 * pooled_ratio(K, 3, corner_03), 0, tol);
+    /* the far row (3, 0): rows 2-3 x columns 0-1, all empty */
+    const int far_30[4] = {0, 0, 2, 1};
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(8000, -45), polar_y(8000, -45)), 1e-7 * pooled_ratio(K, 0, far_30), 0, tol);
+    /* a map of one cell with a guard of one: no training cell, a / a */
+    map_params(&p);
+    p.clutter_map.n_range = p.clutter_map.n_bearing = 1;
+    p.clutter_map.window_cells = p.clutter_map.guard_cells = 1;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    run_busy_cells(&tk, K);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), (double)TRK_REAL_C(1e-7), 0, tol);
 }
 
 /* With a 1/r clutter profile, a cell's expected count is lambda(r) r
@@ -297,6 +368,15 @@ static void test_params_and_refusals(void **state)
     p.clutter_map.max_ratio = TRK_REAL_C(0.5);
     TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
     assert_string_equal(field, "clutter_map.max_ratio");
+    map_params(&p);
+    p.clutter_map.window_cells = TRK_CLUTTER_MAP_WINDOW_MAX + 1;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "clutter_map.window_cells");
+    map_params(&p);
+    p.clutter_map.window_cells = 1;
+    p.clutter_map.guard_cells = 2;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+    assert_string_equal(field, "clutter_map.guard_cells");
     map_params(&p); /* no cells: no map, the rest unread */
     p.clutter_map.n_range = p.clutter_map.n_bearing = 0;
     p.clutter_map.prior_count = 0;
@@ -433,6 +513,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_closed_form),
+        cmocka_unit_test(test_window_and_guard),
         cmocka_unit_test(test_profile_integral),
         cmocka_unit_test(test_confirmed_not_counted),
         cmocka_unit_test(test_polar_equals_cartesian),

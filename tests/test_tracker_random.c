@@ -214,7 +214,7 @@ static struct trk_polar_detection hostile_polar(void)
 
 /* The sonar configurations of the random run: a polar sensor (sigmas
  * 7.5 m and 1.5 deg, 0.5-8 km, +-60 deg, a P_D profile falling with range,
- * a clutter profile, the 16 x 16 clutter map of the defaults), its pose
+ * a clutter profile, the 16 x 32 clutter map of the defaults), its pose
  * carried by every scan. cfg 0: the defaults with a Rayleigh amplitude
  * model and persistent returns in it; 1: positions only, the unbiased
  * conversion, no hold of still tracks, weak pairs started at once; 2:

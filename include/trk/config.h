@@ -94,11 +94,12 @@
 /** Cells of each sensor's clutter map (trk/tracker.h, struct
  * trk_clutter_map_params: range x bearing cells over the sensor's
  * coverage): the map's n_range x n_bearing is at most this. Each cell costs
- * one trk_real per sensor (the default 4 sensors x 256 cells: 4 KB in
- * float). 0 compiles the map out (its parameters must then ask for no
- * cells). At most 65535. */
+ * one trk_real per sensor (the default 4 sensors x 512 cells: 8 KB in
+ * float; the default map is 16 x 32 cells from 512, 16 x 16 from 256).
+ * 0 compiles the map out (its parameters must then ask for no cells). At
+ * most 65535. */
 #ifndef TRK_CLUTTER_MAP_CELLS
-#define TRK_CLUTTER_MAP_CELLS 256
+#define TRK_CLUTTER_MAP_CELLS 512
 #endif
 
 /** Largest state and measurement dimension of the general linear-Gaussian

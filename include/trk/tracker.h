@@ -618,6 +618,10 @@ enum trk_filter_kind {
  * wherever lambda enters (PDA and joint weights, existence, a new track's
  * initial existence). The map starts at rho = 1 (the configured density)
  * and is used before it is updated with the scan's own detections. */
+/** Largest trk_clutter_map_params.window_cells: a lookup reads at most
+ * (2 x 8 + 1)^2 = 289 cells. */
+#define TRK_CLUTTER_MAP_WINDOW_MAX 8
+
 struct trk_clutter_map_params {
     unsigned n_range;              /**< cells over the coverage's ranges; 0: no map */
     unsigned n_bearing;            /**< cells over its bearings (n_range x n_bearing
@@ -627,6 +631,13 @@ struct trk_clutter_map_params {
     trk_real prior_count;          /**< a, > 0: pseudo-counts at the configured density */
     trk_real min_ratio;            /**< rho's floor, (0, 1] */
     trk_real max_ratio;            /**< rho's ceiling, >= 1 */
+    unsigned window_cells;         /**< W: a position's ratio pools the cells within W rows
+                                      and W columns of its own (a CFAR's training cells, cut
+                                      at the map's edges); 0: its cell alone. <= 8 */
+    unsigned guard_cells;          /**< G <= W: of those, the cells within G - 1 rows and
+                                      G - 1 columns are left out (a CFAR's guard cells: 1
+                                      leaves the position's own cell out, against a slow
+                                      target's own detections); 0: none */
 };
 
 /** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */

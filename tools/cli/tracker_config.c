@@ -243,7 +243,7 @@ static const char *const KEYS[] = {
     "max_tentative_scans", "max_unseen_scans", "merge_gate_d2", "init_exclusion_d2", "stationary_d2", "association", "filter", "init.method",
     "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "init.min_existence", "clutter_map.n_range",
     "clutter_map.n_bearing", "clutter_map.time_constant_scans", "clutter_map.prior_count", "clutter_map.min_ratio",
-    "clutter_map.max_ratio", "max_pos_sigma_ratio",
+    "clutter_map.max_ratio", "clutter_map.window_cells", "clutter_map.guard_cells", "max_pos_sigma_ratio",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
     "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
     "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.existence.count_alpha",
@@ -570,6 +570,12 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "clutter_map.prior_count") == 0) return get_real(v, R_POS, &p->clutter_map.prior_count, err, n);
     if (strcmp(key, "clutter_map.min_ratio") == 0) return get_real(v, R_PROB_OC, &p->clutter_map.min_ratio, err, n);
     if (strcmp(key, "clutter_map.max_ratio") == 0) return get_real(v, R_POS, &p->clutter_map.max_ratio, err, n);
+    if (strcmp(key, "clutter_map.window_cells") == 0 || strcmp(key, "clutter_map.guard_cells") == 0) {
+        if (get_long(v, 0, TRK_CLUTTER_MAP_WINDOW_MAX, &l, err, n) != 0) return -1;
+        *(strcmp(key, "clutter_map.window_cells") == 0 ? &p->clutter_map.window_cells : &p->clutter_map.guard_cells) =
+            (unsigned)l;
+        return 0;
+    }
     if (strcmp(key, "max_pos_sigma_ratio") == 0) return get_real(v, R_NONNEG, &p->max_pos_sigma_ratio, err, n);
     if (strcmp(key, "max_coord_m") == 0) return get_real(v, R_COORD, &p->max_coord_m, err, n);
     /* visibility (IPDA existence) */
@@ -1040,6 +1046,8 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "clutter_map.prior_count", (double)p->clutter_map.prior_count);
     put_num(f, "clutter_map.min_ratio", (double)p->clutter_map.min_ratio);
     put_num(f, "clutter_map.max_ratio", (double)p->clutter_map.max_ratio);
+    fprintf(f, "clutter_map.window_cells = %u\n", p->clutter_map.window_cells);
+    fprintf(f, "clutter_map.guard_cells = %u\n", p->clutter_map.guard_cells);
     put_num(f, "max_pos_sigma_ratio", (double)p->max_pos_sigma_ratio);
     put_num(f, "max_coord_m", (double)p->max_coord_m);
     fprintf(f, "visibility = %d\n", p->track_visibility);
@@ -1176,10 +1184,14 @@ void tcfg_help(FILE *f)
             "    init.min_existence               the least initial existence of a new track; a weaker\n"
             "                                     pair waits for a third point, [0, 1), 0 = off (0.003)\n"
             "  clutter_map.n_range, .n_bearing   each sensor's clutter map: cells over its coverage\n"
-            "                                    (range x bearing; needs a maximum range), 0 = none (16, 16)\n"
+            "                                    (range x bearing; needs a maximum range), 0 = none (16, 32)\n"
             "    clutter_map.time_constant_scans  the counts' memory, >= 1 scan (20)\n"
             "    clutter_map.prior_count          pseudo-counts at the configured density, > 0 (2)\n"
             "    clutter_map.min_ratio, .max_ratio   bounds of a cell's ratio to it (0.1, 100)\n"
+            "    clutter_map.window_cells         a position's ratio from the cells within this many rows\n"
+            "                                     and columns of its own, 0-8, 0 = its cell alone (1)\n"
+            "    clutter_map.guard_cells          of those, leave out the cells within this many - 1\n"
+            "                                     (1: its own cell), 0-window_cells (1)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
             "                                    sensor's, 0 = off (20)\n"
             "  max_coord_m = M                   surveillance bound: a detection with |x| or |y| > M\n"

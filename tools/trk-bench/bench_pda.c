@@ -41,7 +41,7 @@
  *                     positions as Cartesian detections of one shared
  *                     covariance, same run, and their ratio
  *   scan_64x1024_map  the polar scans with a coverage (0.5-4.5 km, all
- *                     round) and the default clutter map (16 x 16 cells over
+ *                     round) and the default clutter map (16 x 32 cells over
  *                     it) against the same without a map, same run, and
  *                     their ratio
  *   candidates_full   ns per scan of the initiation stage at full scan capacity
@@ -458,7 +458,7 @@ TRK_BENCH(scan_64x1024_polar)
 }
 
 /* The clutter map's cost: the polar scans of 1024 detections with a
- * coverage, with the default map (16 x 16 cells over it) and without,
+ * coverage, with the default map (16 x 32 cells over it) and without,
  * alternating in the same run. */
 TRK_BENCH(scan_64x1024_map)
 {

@@ -1239,9 +1239,9 @@ static int clutter_map_dump(const struct sim_common *com, const struct mtt_scena
                  "set datafile separator ','\nset key top left\nset logscale xy\nset grid\n"
                  "set xlabel 'true clutter density (per km^2 per ping)'\n"
                  "set ylabel 'density the tracker uses (per km^2 per ping)'\n"
-                 "set title 'clutter map after %ld pings, seed %lu, 16 x 16 cells (first seed, config new)'\n"
+                 "set title 'clutter map after %ld pings, seed %lu, %u x %u cells (first seed, config new)'\n"
                  "plot x title 'truth' with lines lc rgb 'black'",
-                 ns, (unsigned long)sc->p.seed);
+                 ns, (unsigned long)sc->p.seed, mp ? mp->n_range : 0u, mp ? mp->n_bearing : 0u);
     for (int l = 0; l < nl; l++)
         sim_text_add(&body,
                      ", '%s' using ($1 == %ld && $7 > 0 ? $7 * 1e6 : 1/0):($9 * 1e6) title 'map, %ld per ping' "
