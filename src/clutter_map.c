@@ -5,11 +5,13 @@
  * its own frame; per cell an exponentially weighted count N_c of the
  * detections no confirmed track gated, and per sensor the weighted number
  * of scans W; a position's ratio to the configured density is the
- * Gamma-Poisson posterior mean (N + a) / (e W + a) over the training cells
- * around its cell (the cells within window_cells rows and columns, less the
- * guard cells within guard_cells - 1: a cell-averaging CFAR over the map,
- * survey ch. 5.2), N their counts and e their expected clutter count per
- * scan from the configured density (docs/tracker.md "Clutter map"). */
+ * Gamma-Poisson posterior mean (N + a) / (e W + a) over the window of cells
+ * within window_cells rows and columns of its own (a cell-averaging CFAR
+ * over the map, survey ch. 5.2), e their expected clutter count per scan
+ * from the configured density and N their counts, where the guard cells
+ * (within guard_cells - 1 rows and columns) count less one detection per
+ * scan: what a point target there may have added before its track was
+ * confirmed (docs/tracker.md "Clutter map"). */
 #include "clutter_map.h"
 
 int trk_i_map_kept(const struct trk_clutter_map_params *mp, const struct trk_sensor_params *sp)
@@ -79,20 +81,25 @@ trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real 
     const long n_r = (long)mp->n_range, n_b = (long)mp->n_bearing;
     const long w = (long)mp->window_cells, g = (long)mp->guard_cells;
     const long ir0 = c / n_b, ib0 = c % n_b;
-    trk_real n_sum = 0, e_sum = 0; /* the training cells' N and e */
+    trk_real n_train = 0, n_guard = 0, e_sum = 0; /* the window's counts and expected count */
     for (long ir = ir0 - w; ir <= ir0 + w; ir++) {
         if (ir < 0 || ir >= n_r) continue;
         const trk_real e = expected_count(v, ir);
         const int guard_row = dist(ir, ir0) < g;
         for (long ib = ib0 - w; ib <= ib0 + w; ib++) {
-            if (ib < 0 || ib >= n_b || (guard_row && dist(ib, ib0) < g)) continue;
-            n_sum += v->map_count[ir * n_b + ib];
+            if (ib < 0 || ib >= n_b) continue;
+            if (guard_row && dist(ib, ib0) < g)
+                n_guard += v->map_count[ir * n_b + ib];
+            else
+                n_train += v->map_count[ir * n_b + ib];
             e_sum += e;
         }
     }
-    /* no training cell (a map narrower than its guard): a / a, the
-     * configured density */
-    trk_real rho = (n_sum + mp->prior_count) / (e_sum * v->map_scans + mp->prior_count);
+    /* the guard's count less one detection per scan (W), not below 0: a
+     * slow target's own detections do not raise its density, a patch
+     * smaller than the guard still does */
+    if (g > 0) n_guard = n_guard > v->map_scans ? n_guard - v->map_scans : 0;
+    trk_real rho = (n_train + n_guard + mp->prior_count) / (e_sum * v->map_scans + mp->prior_count);
     /* the estimator's documented bounds (trk_clutter_map_params) */
     if (rho < mp->min_ratio) rho = mp->min_ratio;
     if (rho > mp->max_ratio) rho = mp->max_ratio;

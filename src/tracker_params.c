@@ -179,7 +179,7 @@ static trk_status check_clutter_map(const struct trk_clutter_map_params *mp, con
         (st = check_real(mp->max_ratio, 1, 0, TRK_REAL_C(1e6), "clutter_map.max_ratio", field)) != TRK_OK)
         return st;
     if (mp->window_cells > TRK_CLUTTER_MAP_WINDOW_MAX) return refuse(field, "clutter_map.window_cells", TRK_E_RANGE);
-    if (mp->guard_cells > mp->window_cells) return refuse(field, "clutter_map.guard_cells", TRK_E_RANGE);
+    if (mp->guard_cells > mp->window_cells + 1) return refuse(field, "clutter_map.guard_cells", TRK_E_RANGE);
     return TRK_OK;
 }
 

@@ -27,11 +27,11 @@
 #     do not change)
 #   - every column but the CPU time identical with 1 and 2 threads
 #   - the clutter map against the truth (PREFIX_clutter_map.csv, the first seed's `new`
-#     after the last scan): 256 cells per level; in the patches' cells the map's density
-#     over the truth (geometric mean) at least twice the configured profile's at 20 and
-#     100 per scan (measured: 0.31 and 0.39 against 0.11: the patches are smaller than a
-#     cell), outside them at 100 per scan nearer the truth than the profile (1.30 against
-#     1.55)
+#     after the last scan): 512 cells per level (the default 16 x 32); in the patches'
+#     cells the map's density over the truth (geometric mean) at least twice the
+#     configured profile's at 20 and 100 per scan (measured: 0.38 and 0.34 against 0.16:
+#     the patches are about a cell across), outside them at 100 per scan nearer the truth
+#     than the profile (1.21 against 1.56)
 #   - --config cfar (each detection's true clutter density passed): at clutter 0 (no
 #     densities) the same rows as new's, at 100 none rejected and the rows not new's
 #   - --config cart is refused (exit 2) outside the sonar family; the sonar table on stdout
@@ -148,7 +148,7 @@ NR == 1 { if ($7 != "true_per_m2" || $9 != "tracker_per_m2") bad("header " $0); 
 $7 > 0 { k = $1 "/" $6; n[k]++; m[k] += log($9 / $7); c[k] += log($8 / $7) }
 END {
     if (err) exit 1
-    if (rows[0] != 256 || rows[20] != 256 || rows[100] != 256) bad("cells per level " rows[0] " " rows[20] " " rows[100])
+    if (rows[0] != 512 || rows[20] != 512 || rows[100] != 512) bad("cells per level " rows[0] " " rows[20] " " rows[100])
     for (l = 20; l <= 100; l += 80) {
         k = l "/1"
         if (!(n[k] > 0)) bad("no cell in a patch at " l)

@@ -80,15 +80,17 @@ static double lambda_at(const struct trk_tracker *t, double x, double y)
 }
 
 /* Each scan three detections in cell (row 1, column 2) and twelve in
- * cell (0, 0), at fixed spots (tentative tracks, none confirmed). */
-static void run_busy_cells(struct trk_tracker *t, int K)
+ * cell (0, 0), at fixed spots, and with lone = 1 one in cell (3, 3), as a
+ * slow target's (tentative tracks, none confirmed). */
+static void run_busy_cells(struct trk_tracker *t, int K, int lone)
 {
-    struct trk_polar_detection d[15];
+    struct trk_polar_detection d[16];
     memset(d, 0, sizeof d);
     for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)((5 + 8 * i) * DEG);
     for (int i = 3; i < 15; i++) d[i].range_m = (trk_real)(1200 + 100 * i), d[i].bearing_rad = (trk_real)(-55 * DEG);
+    d[15].range_m = 8000, d[15].bearing_rad = (trk_real)(45 * DEG);
     for (int k = 0; k < K; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, 15, NULL, d, 0, {0, 0, 0}, NULL};
+        const struct trk_scan s = {SCAN_US(k), 0, (size_t)(15 + lone), NULL, d, 0, {0, 0, 0}, NULL};
         struct trk_scan_report rep;
         TRK_ASSERT_OK(trk_tracker_process_scan(t, &s, &rep));
         assert_int_equal(rep.n_confirmed, 0);
@@ -107,7 +109,7 @@ static void test_closed_form(void **state)
     p.clutter_map.min_ratio = TRK_REAL_C(0.25);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     const int K = 25;
-    run_busy_cells(&tk, K);
+    run_busy_cells(&tk, K, 0);
     const double tol = TRK_TOL(1e-12, 2e-5);
     /* the busy cell, at its centre and at a corner */
     const double want = 1e-7 * ratio_after(K, 3, 3000, 5000);
@@ -151,9 +153,9 @@ static double pooled_ratio(int K, double n, const int cells_in_row[4])
 }
 
 /* A window of one cell with a guard of one (the defaults): a position's
- * ratio pools the eight cells around its own, cut at the map's edges, and
- * its own cell's count is left out; a window without a guard pools the
- * nine. */
+ * ratio pools the nine cells of its window, cut at the map's edges, its
+ * own cell's count less one detection per scan; without the guard, the
+ * nine as they are. */
 static void test_window_and_guard(void **state)
 {
     (void)state;
@@ -167,33 +169,39 @@ static void test_window_and_guard(void **state)
     p.clutter_map.guard_cells = 0;
     TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
     const int K = 25;
-    run_busy_cells(&tk, K);
-    run_busy_cells(&tk2, K);
+    run_busy_cells(&tk, K, 1);
+    run_busy_cells(&tk2, K, 1);
     const double tol = TRK_TOL(1e-12, 2e-5);
-    /* the busy cell (1, 2): its neighbours, rows 0-2 x columns 1-3, are
-     * empty; its own three per scan are guarded */
-    const int around_12[4] = {3, 2, 3, 0};
-    const double guarded = pooled_ratio(K, 0, around_12);
-    assert_true(guarded < 1); /* what the guard is about: a busy cell does not raise itself */
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * guarded, 0, tol);
+    /* the lone detection's cell (3, 3): its window rows 2-3 x columns 2-3;
+     * the guard takes its one per scan away, as a target's */
+    const int lone_33[4] = {0, 0, 2, 2};
+    const double guarded = pooled_ratio(K, 0, lone_33), open = pooled_ratio(K, 1, lone_33);
+    assert_true(guarded < 0.2 && open > 0.3); /* what the guard is about */
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(8000, 45), polar_y(8000, 45)), 1e-7 * guarded, 0, tol);
+    TRK_ASSERT_NEAR(lambda_at(&tk2, polar_x(8000, 45), polar_y(8000, 45)), 1e-7 * open, 0, tol);
+    /* the busy cell (1, 2), window rows 0-2 x columns 1-3: its three per
+     * scan less one still raise it (clutter, not a point target) */
     const int block_12[4] = {3, 3, 3, 0};
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * pooled_ratio(K, 2, block_12), 0, tol);
     TRK_ASSERT_NEAR(lambda_at(&tk2, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * pooled_ratio(K, 3, block_12), 0, tol);
-    /* cell (1, 1) sees both busy cells, (0, 0) and (1, 2) */
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, -15), polar_y(4000, -15)), 1e-7 * pooled_ratio(K, 15, around_12), 0,
+    assert_true(pooled_ratio(K, 2, block_12) > 2 * pooled_ratio(K, 0, block_12)); /* not taken away */
+    /* cell (1, 1) sees both busy cells, (0, 0) and (1, 2); its own empty
+     * count stays 0 */
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, -15), polar_y(4000, -15)), 1e-7 * pooled_ratio(K, 15, block_12), 0,
                     tol);
-    /* the corner cell (0, 3): its window cut to (0, 2), (1, 2), (1, 3) */
-    const int corner_03[4] = {1, 2, 0, 0};
+    /* the corner cell (0, 3): its window cut to rows 0-1 x columns 2-3 */
+    const int corner_03[4] = {2, 2, 0, 0};
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(2000, 45), polar_y(2000, 45)), 1e-7 * pooled_ratio(K, 3, corner_03), 0, tol);
-    /* the far row (3, 0): rows 2-3 x columns 0-1, all empty */
-    const int far_30[4] = {0, 0, 2, 1};
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(8000, -45), polar_y(8000, -45)), 1e-7 * pooled_ratio(K, 0, far_30), 0, tol);
-    /* a map of one cell with a guard of one: no training cell, a / a */
+    /* a map of one cell: its window is the cell, all guard: 16 per scan
+     * less one over the whole coverage's expected count */
     map_params(&p);
     p.clutter_map.n_range = p.clutter_map.n_bearing = 1;
     p.clutter_map.window_cells = p.clutter_map.guard_cells = 1;
+    p.clutter_map.max_ratio = 1000;
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    run_busy_cells(&tk, K);
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), (double)TRK_REAL_C(1e-7), 0, tol);
+    run_busy_cells(&tk, K, 1);
+    const int all[4] = {4, 4, 4, 4};
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * pooled_ratio(K, 15, all), 0, tol);
 }
 
 /* With a 1/r clutter profile, a cell's expected count is lambda(r) r
@@ -374,7 +382,7 @@ static void test_params_and_refusals(void **state)
     assert_string_equal(field, "clutter_map.window_cells");
     map_params(&p);
     p.clutter_map.window_cells = 1;
-    p.clutter_map.guard_cells = 2;
+    p.clutter_map.guard_cells = 3;
     TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
     assert_string_equal(field, "clutter_map.guard_cells");
     map_params(&p); /* no cells: no map, the rest unread */

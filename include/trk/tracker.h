@@ -601,6 +601,10 @@ enum trk_filter_kind {
                                  process_noise_q > 0; docs/tracker.md "Track filters") */
 };
 
+/** Largest trk_clutter_map_params.window_cells: a lookup reads at most
+ * (2 x 8 + 1)^2 = 289 cells. */
+#define TRK_CLUTTER_MAP_WINDOW_MAX 8
+
 /** A clutter map per sensor (seed survey ch. 5.3; docs/tracker.md "Clutter
  * map"): the sensor's coverage (trk_coverage: range limits and sector about
  * the heading; a sensor without a maximum range has no map) cut into
@@ -609,19 +613,17 @@ enum trk_filter_kind {
  * gated (weighted by 1 / the kept share in a thinned scan) into an
  * exponentially weighted sum N_c, and the scans into W (both with memory
  * time_constant_scans); a cell's expected count per scan from the
- * configured density is e_c (its profile integrated over the cell). Its
- * ratio is the Gamma-Poisson posterior mean with prior_count pseudo-counts
- * at the configured density,
- *     rho_c = (N_c + a) / (e_c W + a),
+ * configured density is e_c (its profile integrated over the cell). A
+ * position's ratio pools the window of cells about its own (window_cells;
+ * the guard cells' count less one detection per scan, guard_cells): the
+ * Gamma-Poisson posterior mean with prior_count pseudo-counts at the
+ * configured density,
+ *     rho = (sum N_c + a) / (W sum e_c + a)   over the window,
  * bounded to [min_ratio, max_ratio], and the density the tracker uses at a
- * position is the configured one (profile) there times its cell's rho:
+ * position is the configured one (profile) there times its rho:
  * wherever lambda enters (PDA and joint weights, existence, a new track's
  * initial existence). The map starts at rho = 1 (the configured density)
  * and is used before it is updated with the scan's own detections. */
-/** Largest trk_clutter_map_params.window_cells: a lookup reads at most
- * (2 x 8 + 1)^2 = 289 cells. */
-#define TRK_CLUTTER_MAP_WINDOW_MAX 8
-
 struct trk_clutter_map_params {
     unsigned n_range;              /**< cells over the coverage's ranges; 0: no map */
     unsigned n_bearing;            /**< cells over its bearings (n_range x n_bearing
@@ -631,13 +633,15 @@ struct trk_clutter_map_params {
     trk_real prior_count;          /**< a, > 0: pseudo-counts at the configured density */
     trk_real min_ratio;            /**< rho's floor, (0, 1] */
     trk_real max_ratio;            /**< rho's ceiling, >= 1 */
-    unsigned window_cells;         /**< W: a position's ratio pools the cells within W rows
-                                      and W columns of its own (a CFAR's training cells, cut
-                                      at the map's edges); 0: its cell alone. <= 8 */
-    unsigned guard_cells;          /**< G <= W: of those, the cells within G - 1 rows and
-                                      G - 1 columns are left out (a CFAR's guard cells: 1
-                                      leaves the position's own cell out, against a slow
-                                      target's own detections); 0: none */
+    unsigned window_cells;         /**< a position's ratio pools the cells within this many
+                                      rows and columns of its own (a CFAR's training cells,
+                                      cut at the map's edges); 0: its cell alone;
+                                      <= TRK_CLUTTER_MAP_WINDOW_MAX */
+    unsigned guard_cells;          /**< <= window_cells + 1: of those, the cells within
+                                      guard_cells - 1 rows and columns (1: the position's
+                                      own cell) count less one detection per scan, not
+                                      below 0 (a CFAR's guard cells: what a point target
+                                      there added before its track was confirmed); 0: none */
 };
 
 /** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */

@@ -571,7 +571,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "clutter_map.min_ratio") == 0) return get_real(v, R_PROB_OC, &p->clutter_map.min_ratio, err, n);
     if (strcmp(key, "clutter_map.max_ratio") == 0) return get_real(v, R_POS, &p->clutter_map.max_ratio, err, n);
     if (strcmp(key, "clutter_map.window_cells") == 0 || strcmp(key, "clutter_map.guard_cells") == 0) {
-        if (get_long(v, 0, TRK_CLUTTER_MAP_WINDOW_MAX, &l, err, n) != 0) return -1;
+        if (get_long(v, 0, TRK_CLUTTER_MAP_WINDOW_MAX + 1, &l, err, n) != 0) return -1;
         *(strcmp(key, "clutter_map.window_cells") == 0 ? &p->clutter_map.window_cells : &p->clutter_map.guard_cells) =
             (unsigned)l;
         return 0;
@@ -1190,8 +1190,9 @@ void tcfg_help(FILE *f)
             "    clutter_map.min_ratio, .max_ratio   bounds of a cell's ratio to it (0.1, 100)\n"
             "    clutter_map.window_cells         a position's ratio from the cells within this many rows\n"
             "                                     and columns of its own, 0-8, 0 = its cell alone (1)\n"
-            "    clutter_map.guard_cells          of those, leave out the cells within this many - 1\n"
-            "                                     (1: its own cell), 0-window_cells (1)\n"
+            "    clutter_map.guard_cells          of those, the cells within this many - 1 (1: its own\n"
+            "                                     cell) count less one detection per scan, 0 = none,\n"
+            "                                     at most window_cells + 1 (1)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
             "                                    sensor's, 0 = off (20)\n"
             "  max_coord_m = M                   surveillance bound: a detection with |x| or |y| > M\n"
