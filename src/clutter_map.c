@@ -8,10 +8,11 @@
  * Gamma-Poisson posterior mean (N + a) / (e W + a) over the window of cells
  * within window_cells rows and columns of its own (a cell-averaging CFAR
  * over the map, survey ch. 5.2), e their expected clutter count per scan
- * from the configured density and N their counts, where the guard cells
- * (within guard_cells - 1 rows and columns) count less one detection per
- * scan: what a point target there may have added before its track was
- * confirmed (docs/tracker.md "Clutter map"). */
+ * from the configured density and N their counts (cut at the map's edges
+ * in range, and in bearing unless the map goes all round), where the guard
+ * cells (within guard_cells - 1 rows and columns) together count one
+ * detection per scan less: what a point target there may have added
+ * before its track was confirmed (docs/tracker.md "Clutter map"). */
 #include "clutter_map.h"
 
 int trk_i_map_kept(const struct trk_clutter_map_params *mp, const struct trk_sensor_params *sp)
@@ -81,14 +82,22 @@ trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real 
     const long n_r = (long)mp->n_range, n_b = (long)mp->n_bearing;
     const long w = (long)mp->window_cells, g = (long)mp->guard_cells;
     const long ir0 = c / n_b, ib0 = c % n_b;
+    /* an all-round map's window wraps in bearing, each column once: the
+     * column offsets db_lo .. db_hi, none farther than n_b / 2 */
+    const int wrap = !v->sector, wide = wrap && 2 * w >= n_b;
+    const long db_lo = wide ? -((n_b - 1) / 2) : -w, db_hi = wide ? n_b - 1 + db_lo : w;
     trk_real n_train = 0, n_guard = 0, e_sum = 0; /* the window's counts and expected count */
     for (long ir = ir0 - w; ir <= ir0 + w; ir++) {
         if (ir < 0 || ir >= n_r) continue;
         const trk_real e = expected_count(v, ir);
         const int guard_row = dist(ir, ir0) < g;
-        for (long ib = ib0 - w; ib <= ib0 + w; ib++) {
-            if (ib < 0 || ib >= n_b) continue;
-            if (guard_row && dist(ib, ib0) < g)
+        for (long db = db_lo; db <= db_hi; db++) {
+            long ib = ib0 + db;
+            if (wrap)
+                ib += ib < 0 ? n_b : ib >= n_b ? -n_b : 0;
+            else if (ib < 0 || ib >= n_b)
+                continue;
+            if (guard_row && dist(db, 0) < g)
                 n_guard += v->map_count[ir * n_b + ib];
             else
                 n_train += v->map_count[ir * n_b + ib];

@@ -1,7 +1,8 @@
 /* clutter_map.h (private) - each sensor's clutter map (trk/tracker.h,
  * struct trk_clutter_map_params): its cells over the sensor's coverage in
- * the view of one scan, a cell's ratio rho_c, the density it gives at a
- * position, and the scan's update of the counts. */
+ * the view of one scan, the ratio rho pooled over the window of cells about
+ * a position and the density it gives there, and the scan's update of the
+ * counts. */
 #ifndef TRK_CLUTTER_MAP_H
 #define TRK_CLUTTER_MAP_H
 
@@ -25,7 +26,7 @@ void trk_i_view_polar(const struct trk_i_view *v, trk_real x_m, trk_real y_m, tr
 long trk_i_map_cell(const struct trk_i_view *v, trk_real r_m, trk_real b_rad);
 
 /* The density at (x_m, y_m) with the view's map: the configured one times
- * its cell's rho_c (1 outside the map). */
+ * rho pooled over the window of cells about its cell (1 outside the map). */
 trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real y_m);
 
 /* One scan's forgetting: every count and the scans' sum times 1 - 1/tau,

@@ -37,8 +37,8 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
                               docs/tracker.md "Persistent returns" for the measured choice */
     /* a clutter map for a sensor with a coverage: 16 x 32 cells (16 x 16
      * in a build of 256), 20 scans' memory, 2 pseudo-counts, a position's
-     * ratio from the eight cells around its own (docs/tracker.md "Clutter
-     * map" for the measured choice) */
+     * ratio from the 3 x 3 cells about it, its own less one detection per
+     * scan (docs/tracker.md "Clutter map" for the measured choice) */
     p->clutter_map.n_range = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
     p->clutter_map.n_bearing = TRK_CLUTTER_MAP_CELLS >= 512 ? 32 : TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
     p->clutter_map.window_cells = 1;

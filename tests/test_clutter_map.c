@@ -138,7 +138,7 @@ static void test_closed_form(void **state)
 }
 
 /* The pooled ratio (sum N + a) / (sum e W + a) after K scans over training
- * cells holding n detections per scan in all, with e_r[i] cells of row i
+ * cells holding n detections per scan in all, with cells_in_row[i] cells of row i
  * (rows of 2 km from 1 km, 30 deg wide, lambda 1e-7). */
 static double pooled_ratio(int K, double n, const int cells_in_row[4])
 {
@@ -202,6 +202,27 @@ static void test_window_and_guard(void **state)
     run_busy_cells(&tk, K, 1);
     const int all[4] = {4, 4, 4, 4};
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * pooled_ratio(K, 15, all), 0, tol);
+    /* a map all round (no sector; 4 x 4 cells of 90 deg): the window wraps
+     * in bearing, so the column at +170 deg pools the one at -170 deg */
+    map_params(&p);
+    p.sensor[0].coverage.half_width_rad = 0;
+    p.clutter_map.window_cells = p.clutter_map.guard_cells = 1;
+    p.clutter_map.max_ratio = 1000;
+    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_polar_detection d[3];
+    memset(d, 0, sizeof d);
+    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)(-170 * DEG);
+    for (int k = 0; k < K; k++) {
+        const struct trk_scan s = {SCAN_US(k), 0, 3, NULL, d, 0, {0, 0, 0}, NULL};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
+    }
+    const int block_90[4] = {9, 9, 9, 0}; /* rows 0-2, three columns of 90 deg */
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 170), polar_y(4000, 170)), 1e-7 * pooled_ratio(K, 3, block_90), 0,
+                    tol);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, -100), polar_y(4000, -100)), 1e-7 * pooled_ratio(K, 2, block_90), 0,
+                    tol); /* its own column: three per scan less one */
 }
 
 /* With a 1/r clutter profile, a cell's expected count is lambda(r) r

@@ -635,13 +635,15 @@ struct trk_clutter_map_params {
     trk_real max_ratio;            /**< rho's ceiling, >= 1 */
     unsigned window_cells;         /**< a position's ratio pools the cells within this many
                                       rows and columns of its own (a CFAR's training cells,
-                                      cut at the map's edges); 0: its cell alone;
+                                      cut at the map's edges in range, and in bearing
+                                      unless the map goes all round); 0: its cell alone;
                                       <= TRK_CLUTTER_MAP_WINDOW_MAX */
     unsigned guard_cells;          /**< <= window_cells + 1: of those, the cells within
                                       guard_cells - 1 rows and columns (1: the position's
-                                      own cell) count less one detection per scan, not
-                                      below 0 (a CFAR's guard cells: what a point target
-                                      there added before its track was confirmed); 0: none */
+                                      own cell) together count one detection per scan
+                                      less, not below 0 (a CFAR's guard cells: what a point
+                                      target there added before its track was confirmed);
+                                      0: none */
 };
 
 /** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */
@@ -1261,8 +1263,9 @@ trk_real trk_sensor_clutter_at(const struct trk_sensor_params *sp, const struct 
 
 /** The clutter density tracker t uses at (x_m, y_m) in a scan of sensor
  * sensor_id from pose (NULL: the sensor's own pose): the configured one
- * (trk_sensor_clutter_at) times the ratio of its clutter map's cell there
- * (trk_clutter_map_params; outside the map, or without one, 1), into
+ * (trk_sensor_clutter_at) times its clutter map's ratio there, pooled over
+ * the window of cells about it (trk_clutter_map_params; outside the map,
+ * or without one, 1), into
  * *lambda_per_m2. TRK_E_ARG for NULL t or lambda_per_m2, TRK_E_SENSOR for
  * an unknown sensor, TRK_E_NAN for a non-finite position or pose. */
 trk_status trk_tracker_clutter_at(const struct trk_tracker *t, unsigned sensor_id, const struct trk_pose *pose,

@@ -571,9 +571,9 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
     if (strcmp(key, "clutter_map.min_ratio") == 0) return get_real(v, R_PROB_OC, &p->clutter_map.min_ratio, err, n);
     if (strcmp(key, "clutter_map.max_ratio") == 0) return get_real(v, R_POS, &p->clutter_map.max_ratio, err, n);
     if (strcmp(key, "clutter_map.window_cells") == 0 || strcmp(key, "clutter_map.guard_cells") == 0) {
-        if (get_long(v, 0, TRK_CLUTTER_MAP_WINDOW_MAX + 1, &l, err, n) != 0) return -1;
-        *(strcmp(key, "clutter_map.window_cells") == 0 ? &p->clutter_map.window_cells : &p->clutter_map.guard_cells) =
-            (unsigned)l;
+        const int window = strcmp(key, "clutter_map.window_cells") == 0;
+        if (get_long(v, 0, TRK_CLUTTER_MAP_WINDOW_MAX + (window ? 0 : 1), &l, err, n) != 0) return -1;
+        *(window ? &p->clutter_map.window_cells : &p->clutter_map.guard_cells) = (unsigned)l;
         return 0;
     }
     if (strcmp(key, "max_pos_sigma_ratio") == 0) return get_real(v, R_NONNEG, &p->max_pos_sigma_ratio, err, n);
@@ -1187,11 +1187,11 @@ void tcfg_help(FILE *f)
             "                                    (range x bearing; needs a maximum range), 0 = none (16, 32)\n"
             "    clutter_map.time_constant_scans  the counts' memory, >= 1 scan (20)\n"
             "    clutter_map.prior_count          pseudo-counts at the configured density, > 0 (2)\n"
-            "    clutter_map.min_ratio, .max_ratio   bounds of a cell's ratio to it (0.1, 100)\n"
+            "    clutter_map.min_ratio, .max_ratio   bounds of a position's ratio to it (0.1, 100)\n"
             "    clutter_map.window_cells         a position's ratio from the cells within this many rows\n"
             "                                     and columns of its own, 0-8, 0 = its cell alone (1)\n"
             "    clutter_map.guard_cells          of those, the cells within this many - 1 (1: its own\n"
-            "                                     cell) count less one detection per scan, 0 = none,\n"
+            "                                     cell) together count one detection per scan less, 0 = none,\n"
             "                                     at most window_cells + 1 (1)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
             "                                    sensor's, 0 = off (20)\n"
