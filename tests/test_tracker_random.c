@@ -217,7 +217,9 @@ static struct trk_polar_detection hostile_polar(void)
  * a clutter profile, the 16 x 32 clutter map of the defaults), its pose
  * carried by every scan. cfg 0: the defaults with a Rayleigh amplitude
  * model and persistent returns in it; 1: positions only, the unbiased
- * conversion, no hold of still tracks, weak pairs started at once; 2:
+ * conversion, no hold of still tracks, weak pairs started at once, the
+ * coverage all round with a map of 16 x 3 cells pooled over 5 x 5 (the
+ * window wraps in bearing and is wider than the map), guard 2; 2:
  * the per-track PDA with amplitudes, the gate-count check at 0.5; 3 (a
  * build with TRK_WITH_IMM): the defaults with IMM tracks (turns at
  * 3 deg/s). */
@@ -252,6 +254,12 @@ static void polar_params(int cfg, struct trk_tracker_params *p)
         s->conversion = TRK_POLAR_UNBIASED;
         p->stationary_d2 = 0;
         p->init.min_existence = 0;
+        s->coverage.half_width_rad = 0;
+        if (p->clutter_map.n_range > 0) { /* a build with the map */
+            p->clutter_map.n_bearing = 3;
+            p->clutter_map.window_cells = 2;
+            p->clutter_map.guard_cells = 2;
+        }
     }
     if (cfg == 2) {
         p->association = TRK_ASSOC_PDA;
