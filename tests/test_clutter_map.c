@@ -61,13 +61,19 @@ static void map_params(struct trk_tracker_params *p)
 static double polar_x(double r, double b_deg) { return r * sin(b_deg * DEG); }
 static double polar_y(double r, double b_deg) { return r * cos(b_deg * DEG); }
 
+/* W, the map's weighted number of scans after K scans (tau 10). */
+static double scans_weight(int K)
+{
+    double W = 0;
+    for (int k = 0; k < K; k++) W = W * (1 - 1.0 / 10) + 1;
+    return W;
+}
+
 /* The map's ratio after K scans of c detections per scan in a cell of
  * rows [ra, rb] (m), 30 deg wide, lambda 1e-7: (N + a) / (e W + a). */
 static double ratio_after(int K, double c, double ra, double rb)
 {
-    const double keep = 1 - 1.0 / 10;
-    double W = 0;
-    for (int k = 0; k < K; k++) W = W * keep + 1;
+    const double W = scans_weight(K);
     const double e = 1e-7 * (30 * DEG) * (rb * rb - ra * ra) / 2;
     return (c * W + 2) / (e * W + 2);
 }
@@ -77,6 +83,17 @@ static double lambda_at(const struct trk_tracker *t, double x, double y)
     trk_real l = 0;
     TRK_ASSERT_OK(trk_tracker_clutter_at(t, 0, NULL, (trk_real)x, (trk_real)y, &l));
     return (double)l;
+}
+
+/* K scans of the same n polar detections, none confirmed. */
+static void run_fixed_scans(struct trk_tracker *t, const struct trk_polar_detection *d, size_t n, int K)
+{
+    for (int k = 0; k < K; k++) {
+        const struct trk_scan s = {SCAN_US(k), 0, n, NULL, d, 0, {0, 0, 0}, NULL};
+        struct trk_scan_report rep;
+        TRK_ASSERT_OK(trk_tracker_process_scan(t, &s, &rep));
+        assert_int_equal(rep.n_confirmed, 0);
+    }
 }
 
 /* Each scan three detections in cell (row 1, column 2) and twelve in
@@ -89,12 +106,7 @@ static void run_busy_cells(struct trk_tracker *t, int K, int lone)
     for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)((5 + 8 * i) * DEG);
     for (int i = 3; i < 15; i++) d[i].range_m = (trk_real)(1200 + 100 * i), d[i].bearing_rad = (trk_real)(-55 * DEG);
     d[15].range_m = 8000, d[15].bearing_rad = (trk_real)(45 * DEG);
-    for (int k = 0; k < K; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, (size_t)(15 + lone), NULL, d, 0, {0, 0, 0}, NULL};
-        struct trk_scan_report rep;
-        TRK_ASSERT_OK(trk_tracker_process_scan(t, &s, &rep));
-        assert_int_equal(rep.n_confirmed, 0);
-    }
+    run_fixed_scans(t, d, (size_t)(15 + lone), K);
 }
 
 /* Three detections in cell (row 1: 3-5 km, column 2: 0..30 deg) and
@@ -142,9 +154,8 @@ static void test_closed_form(void **state)
  * (rows of 2 km from 1 km, 30 deg wide, lambda 1e-7). */
 static double pooled_ratio(int K, double n, const int cells_in_row[4])
 {
-    const double keep = 1 - 1.0 / 10;
-    double W = 0, e = 0;
-    for (int k = 0; k < K; k++) W = W * keep + 1;
+    const double W = scans_weight(K);
+    double e = 0;
     for (int i = 0; i < 4; i++) {
         const double ra = 1000 + 2000 * i, rb = ra + 2000;
         e += cells_in_row[i] * 1e-7 * (30 * DEG) * (rb * rb - ra * ra) / 2;
@@ -213,11 +224,7 @@ static void test_window_and_guard(void **state)
     struct trk_polar_detection d[3];
     memset(d, 0, sizeof d);
     for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)(-170 * DEG);
-    for (int k = 0; k < K; k++) {
-        const struct trk_scan s = {SCAN_US(k), 0, 3, NULL, d, 0, {0, 0, 0}, NULL};
-        struct trk_scan_report rep;
-        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, &rep));
-    }
+    run_fixed_scans(&tk, d, 3, K);
     const int block_90[4] = {9, 9, 9, 0}; /* rows 0-2, three columns of 90 deg */
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 170), polar_y(4000, 170)), 1e-7 * pooled_ratio(K, 3, block_90), 0,
                     tol);
@@ -252,9 +259,7 @@ static void test_profile_integral(void **state)
     const double ra = 5000, rb = 7000;
     const double I = (l0 - sl * 1000) * (rb * rb - ra * ra) / 2 + sl * (rb * rb * rb - ra * ra * ra) / 3;
     const double e = (30 * DEG) * I;
-    const double keep = 0.9;
-    double W = 0;
-    for (int k = 0; k < K; k++) W = W * keep + 1;
+    const double W = scans_weight(K);
     const double rho = (W + 2) / (e * W + 2);
     const double r = 6000, lam = l0 + sl * (r - 1000);
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(r, -15), polar_y(r, -15)), lam * rho, 0, TRK_TOL(1e-12, 2e-5));
