@@ -12,7 +12,10 @@
  * in range, and in bearing unless the map goes all round), where the guard
  * cells (within guard_cells - 1 rows and columns) together count one
  * detection per scan less: what a point target there may have added
- * before its track was confirmed (docs/tracker.md "Clutter map"). */
+ * before its track was confirmed; and where one of the window's four
+ * quadrants holds significantly more than that ratio predicts, the
+ * greatest such quadrant's ratio (a greatest-of CFAR at a clutter edge,
+ * edge_alpha; docs/tracker.md "Clutter map"). */
 #include "clutter_map.h"
 
 int trk_i_map_kept(const struct trk_clutter_map_params *mp, const struct trk_sensor_params *sp)
@@ -71,6 +74,35 @@ static trk_real expected_count(const struct trk_i_view *v, long ir)
 
 static long dist(long a, long b) { return a > b ? a - b : b - a; }
 
+/* Counts and expected count per scan over a set of the window's cells:
+ * those outside the guard (train) and in it (guard). */
+struct cells {
+    trk_real n_train, n_guard, e;
+};
+
+/* The set's ratio: the Gamma-Poisson posterior mean, its guard counting one
+ * detection per scan (W) less, not below 0 (a slow target's own detections
+ * do not raise its density; a patch smaller than the guard still does).
+ * *n_out: the counts it pooled. */
+static trk_real cells_ratio(const struct trk_i_view *v, const struct cells *c, trk_real *n_out)
+{
+    const struct trk_clutter_map_params *mp = v->map_params;
+    trk_real n = c->n_guard;
+    if (mp->guard_cells > 0) n = n > v->map_scans ? n - v->map_scans : 0;
+    n += c->n_train;
+    *n_out = n;
+    return (n + mp->prior_count) / (c->e * v->map_scans + mp->prior_count);
+}
+
+static void cells_add(struct cells *c, trk_real n, int guard, trk_real e)
+{
+    if (guard)
+        c->n_guard += n;
+    else
+        c->n_train += n;
+    c->e += e;
+}
+
 trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real y_m)
 {
     trk_real r, b;
@@ -86,10 +118,13 @@ trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real 
      * column offsets db_lo .. db_hi, none farther than n_b / 2 */
     const int wrap = !v->sector, wide = wrap && 2 * w >= n_b;
     const long db_lo = wide ? -((n_b - 1) / 2) : -w, db_hi = wide ? n_b - 1 + db_lo : w;
-    trk_real n_train = 0, n_guard = 0, e_sum = 0; /* the window's counts and expected count */
+    /* the window, and its four quadrants: rows on one side of the cell's
+     * (with it) times columns on one side of its column (with it) */
+    struct cells win = {0, 0, 0}, quad[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     for (long ir = ir0 - w; ir <= ir0 + w; ir++) {
         if (ir < 0 || ir >= n_r) continue;
         const trk_real e = expected_count(v, ir);
+        const long dr = ir - ir0;
         const int guard_row = dist(ir, ir0) < g;
         for (long db = db_lo; db <= db_hi; db++) {
             long ib = ib0 + db;
@@ -97,18 +132,29 @@ trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real 
                 ib += ib < 0 ? n_b : ib >= n_b ? -n_b : 0;
             else if (ib < 0 || ib >= n_b)
                 continue;
-            if (guard_row && dist(db, 0) < g)
-                n_guard += v->map_count[ir * n_b + ib];
-            else
-                n_train += v->map_count[ir * n_b + ib];
-            e_sum += e;
+            const trk_real n = v->map_count[ir * n_b + ib];
+            const int guard = guard_row && dist(db, 0) < g;
+            cells_add(&win, n, guard, e);
+            for (int q = 0; q < 4; q++)
+                if ((q & 1 ? dr >= 0 : dr <= 0) && (q & 2 ? db >= 0 : db <= 0)) cells_add(&quad[q], n, guard, e);
         }
     }
-    /* the guard's count less one detection per scan (W), not below 0: a
-     * slow target's own detections do not raise its density, a patch
-     * smaller than the guard still does */
-    if (g > 0) n_guard = n_guard > v->map_scans ? n_guard - v->map_scans : 0;
-    trk_real rho = (n_train + n_guard + mp->prior_count) / (e_sum * v->map_scans + mp->prior_count);
+    trk_real n_win;
+    const trk_real rho_win = cells_ratio(v, &win, &n_win);
+    trk_real rho = rho_win;
+    /* the edge rule: a quadrant whose count the window's ratio does not
+     * explain gives its own ratio (the greatest such): its count n_q above
+     * the mean mu_q = rho_win W e_q with a Poisson tail whose Chernoff
+     * bound, P(N >= n) <= exp(n - mu - n ln(n / mu)) for n > mu, is below
+     * edge_alpha / 4 (a test of that size or smaller, one logarithm) */
+    if (mp->edge_alpha > 0 && w > 0) {
+        const trk_real log_size = trk_log(mp->edge_alpha / 4);
+        for (int q = 0; q < 4; q++) {
+            trk_real n_q;
+            const trk_real rho_q = cells_ratio(v, &quad[q], &n_q), mu_q = rho_win * quad[q].e * v->map_scans;
+            if (rho_q > rho && n_q > mu_q && mu_q > 0 && n_q - mu_q - n_q * trk_log(n_q / mu_q) < log_size) rho = rho_q;
+        }
+    }
     /* the estimator's documented bounds (trk_clutter_map_params) */
     if (rho < mp->min_ratio) rho = mp->min_ratio;
     if (rho > mp->max_ratio) rho = mp->max_ratio;

@@ -43,6 +43,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->clutter_map.n_bearing = TRK_CLUTTER_MAP_CELLS >= 512 ? 32 : TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
     p->clutter_map.window_cells = 1;
     p->clutter_map.guard_cells = 1;
+    p->clutter_map.edge_alpha = TRK_REAL_C(0.2); /* docs/tracker.md "Clutter map" */
     p->clutter_map.time_constant_scans = 20;
     p->clutter_map.prior_count = 2;
     p->clutter_map.min_ratio = TRK_REAL_C(0.1);
@@ -180,6 +181,10 @@ static trk_status check_clutter_map(const struct trk_clutter_map_params *mp, con
         return st;
     if (mp->window_cells > TRK_CLUTTER_MAP_WINDOW_MAX) return refuse(field, "clutter_map.window_cells", TRK_E_RANGE);
     if (mp->guard_cells > mp->window_cells + 1) return refuse(field, "clutter_map.guard_cells", TRK_E_RANGE);
+    /* 0, or a normal number below 1 (a value punned through another type reads as subnormal) */
+    if (!isfinite(mp->edge_alpha)) return refuse(field, "clutter_map.edge_alpha", TRK_E_NAN);
+    if (!(mp->edge_alpha == 0 || (mp->edge_alpha >= TRK_REAL_MIN && mp->edge_alpha < 1)))
+        return refuse(field, "clutter_map.edge_alpha", TRK_E_RANGE);
     return TRK_OK;
 }
 

@@ -8,6 +8,12 @@
  *     density holds;
  *   - a cell's e integrates the clutter profile (a 1/r density: the
  *     two-point rule is exact);
+ *   - the edge rule: a quadrant of the window (with the position's cell)
+ *     whose count the window's ratio explains with a Poisson tail whose
+ *     Chernoff bound is below edge_alpha / 4 gives its own ratio, the
+ *     greatest such (the estimator computed here from the closed-form
+ *     counts; the bound checked against the exact tail), over a sector and
+ *     all round; edge_alpha 0 is the window's ratio;
  *   - the detections of a confirmed track's gate are not counted: from the
  *     scan after its confirmation its cell only forgets;
  *   - a polar scan and the same scan as Cartesian detections count alike;
@@ -32,7 +38,8 @@ static struct trk_tracker tk, tk2;
 
 /* A polar sensor at the origin facing north, coverage 1-9 km +-60 deg,
  * lambda 1e-7 per m^2; a map of 4 x 4 cells (2 km x 30 deg), tau 10 scans,
- * a = 2, each position's ratio from its own cell alone (no window);
+ * a = 2, each position's ratio from its own cell alone (no window, so no
+ * edge rule);
  * nothing is confirmed in fewer than 64 scans (M of N 64 / 64). */
 static void map_params(struct trk_tracker_params *p)
 {
@@ -49,6 +56,7 @@ static void map_params(struct trk_tracker_params *p)
     p->clutter_map.max_ratio = 100;
     p->clutter_map.window_cells = 0;
     p->clutter_map.guard_cells = 0;
+    p->clutter_map.edge_alpha = 0;
     p->confirm.method = TRK_CONFIRM_MN;
     p->confirm.u.mn.m = 64;
     p->confirm.u.mn.n = 64;
@@ -232,6 +240,125 @@ static void test_window_and_guard(void **state)
                     tol); /* its own column: three per scan less one */
 }
 
+/* P(N >= k) of a Poisson count of mean mu, by its terms (k >= 1). */
+static double poisson_tail(double k, double mu)
+{
+    double below = 0, term = exp(-mu);
+    for (int i = 0; i < (int)ceil(k); i++) {
+        below += term;
+        term *= mu / (i + 1);
+    }
+    return 1 - below;
+}
+
+/* The Chernoff bound on it, exp(n - mu - n ln(n / mu)) for n > mu. */
+static double chernoff(double n, double mu) { return exp(n - mu - n * log(n / mu)); }
+
+/* The estimator at cell (r0, b0) of a map of 4 rows (2 km from 1 km) and
+ * 4 columns of col_deg degrees (wrap: all round), lambda 1e-7, a = 2, a
+ * window and a guard of one cell, after K scans of c[r][b] detections per
+ * scan in each cell (N = c W): the window's ratio, or the greatest ratio
+ * of a quadrant whose count has a Poisson tail below alpha / 4 under the
+ * window's ratio (alpha 0: the window's). */
+static double edge_ratio(int K, const double c[4][4], int r0, int b0, double col_deg, int wrap, double alpha)
+{
+    const double W = scans_weight(K);
+    double n_tr[5] = {0}, n_gd[5] = {0}, e[5] = {0}; /* [4]: the window, [0..3] the quadrants */
+    for (int dr = -1; dr <= 1; dr++)
+        for (int db = -1; db <= 1; db++) {
+            const int r = r0 + dr;
+            int b = b0 + db;
+            if (wrap) b = (b + 4) % 4;
+            if (r < 0 || r > 3 || b < 0 || b > 3) continue;
+            const double ra = 1000 + 2000 * r, rb = ra + 2000;
+            const double e_c = 1e-7 * (col_deg * DEG) * (rb * rb - ra * ra) / 2, n = c[r][b] * W;
+            const int guard = dr == 0 && db == 0;
+            for (int q = 0; q < 5; q++) {
+                if (q < 4 && !((q & 1 ? dr >= 0 : dr <= 0) && (q & 2 ? db >= 0 : db <= 0))) continue;
+                *(guard ? &n_gd[q] : &n_tr[q]) += n;
+                e[q] += e_c;
+            }
+        }
+    double n_q[5], rho_q[5];
+    for (int q = 0; q < 5; q++) {
+        n_q[q] = n_tr[q] + (n_gd[q] > W ? n_gd[q] - W : 0);
+        rho_q[q] = (n_q[q] + 2) / (e[q] * W + 2);
+    }
+    double rho = rho_q[4];
+    for (int q = 0; q < 4 && alpha > 0; q++) {
+        const double mu = rho_q[4] * e[q] * W;
+        if (!(rho_q[q] > rho && n_q[q] > mu)) continue;
+        assert_true(poisson_tail(n_q[q], mu) <= chernoff(n_q[q], mu)); /* a bound */
+        if (chernoff(n_q[q], mu) < alpha / 4) rho = rho_q[q];
+    }
+    return rho;
+}
+
+/* The edge rule (edge_alpha 0.2, window and guard of one cell): where a
+ * quadrant of the window holds significantly more than the window's
+ * ratio predicts, the position takes the greatest such quadrant's ratio;
+ * with edge_alpha 0 the window's. The busy cells of run_busy_cells: three
+ * per scan in (1, 2), twelve in (0, 0), one in (3, 3). */
+static void test_edge_rule(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    map_params(&p);
+    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
+    p.clutter_map.max_ratio = 1000;
+    p.clutter_map.window_cells = 1;
+    p.clutter_map.guard_cells = 1;
+    p.clutter_map.edge_alpha = TRK_REAL_C(0.2);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    p.clutter_map.edge_alpha = 0;
+    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    const int K = 25;
+    run_busy_cells(&tk, K, 1);
+    run_busy_cells(&tk2, K, 1);
+    const double c[4][4] = {{12, 0, 0, 0}, {0, 0, 3, 0}, {0, 0, 0, 0}, {0, 0, 0, 1}};
+    const double tol = TRK_TOL(1e-12, 2e-5);
+    /* cell (1, 1), between the two busy cells: its quadrant of rows 0-1 x
+     * columns 0-1 holds the twelve per scan, far beyond what the window's
+     * ratio explains, and gives its ratio: over twice the window's */
+    const double win_11 = edge_ratio(K, c, 1, 1, 30, 0, 0), edge_11 = edge_ratio(K, c, 1, 1, 30, 0, 0.2);
+    const int quad_11[4] = {2, 2, 0, 0};
+    TRK_ASSERT_NEAR(edge_11, pooled_ratio(K, 12, quad_11), 0, 1e-12); /* the estimator here, by hand */
+    assert_true(edge_11 > 2 * win_11);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, -15), polar_y(4000, -15)), 1e-7 * edge_11, 0, tol);
+    TRK_ASSERT_NEAR(lambda_at(&tk2, polar_x(4000, -15), polar_y(4000, -15)), 1e-7 * win_11, 0, tol);
+    /* the busy cell (1, 2) itself: its two per scan (three less the guard's
+     * one) in each of its quadrants; the nearer rows' (smaller cells) is
+     * the greatest */
+    const double edge_12 = edge_ratio(K, c, 1, 2, 30, 0, 0.2);
+    assert_true(edge_12 > edge_ratio(K, c, 1, 2, 30, 0, 0));
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * edge_12, 0, tol);
+    /* the lone detection's cell (3, 3), a target's: the guard takes it, no
+     * quadrant stands out, the window's ratio; the same at the empty cell
+     * (2, 0) */
+    TRK_ASSERT_NEAR(edge_ratio(K, c, 3, 3, 30, 0, 0.2), edge_ratio(K, c, 3, 3, 30, 0, 0), 0, 0);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(8000, 45), polar_y(8000, 45)), 1e-7 * edge_ratio(K, c, 3, 3, 30, 0, 0), 0,
+                    tol);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(6000, -45), polar_y(6000, -45)), 1e-7 * edge_ratio(K, c, 2, 0, 30, 0, 0.2),
+                    0, tol);
+    /* all round (4 columns of 90 deg): three per scan at -170 deg; at +170
+     * deg the quadrant of columns +170 and (wrapping) -170 stands out */
+    map_params(&p);
+    p.sensor[0].coverage.half_width_rad = 0;
+    p.clutter_map.window_cells = p.clutter_map.guard_cells = 1;
+    p.clutter_map.max_ratio = 1000;
+    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
+    p.clutter_map.edge_alpha = TRK_REAL_C(0.2);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_polar_detection d[3];
+    memset(d, 0, sizeof d);
+    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)(-170 * DEG);
+    run_fixed_scans(&tk, d, 3, K);
+    const double c_round[4][4] = {{0, 0, 0, 0}, {3, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
+    const double edge_13 = edge_ratio(K, c_round, 1, 3, 90, 1, 0.2);
+    assert_true(edge_13 > edge_ratio(K, c_round, 1, 3, 90, 1, 0));
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 170), polar_y(4000, 170)), 1e-7 * edge_13, 0, tol);
+}
+
 /* With a 1/r clutter profile, a cell's expected count is lambda(r) r
  * integrated exactly: one detection per scan in a cell keeps lambda(r) x
  * ratio, ratio with e = c0 dtheta (rb - ra) for lambda = c0 / r. */
@@ -411,6 +538,17 @@ static void test_params_and_refusals(void **state)
     p.clutter_map.guard_cells = 3;
     TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
     assert_string_equal(field, "clutter_map.guard_cells");
+    const trk_real bad_alpha[] = {-TRK_REAL_C(0.1), 1, TRK_REAL_MIN / 4};
+    for (size_t i = 0; i < sizeof bad_alpha / sizeof bad_alpha[0]; i++) {
+        map_params(&p);
+        p.clutter_map.edge_alpha = bad_alpha[i];
+        TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
+        assert_string_equal(field, "clutter_map.edge_alpha");
+    }
+    map_params(&p);
+    p.clutter_map.edge_alpha = (trk_real)NAN;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_NAN);
+    assert_string_equal(field, "clutter_map.edge_alpha");
     map_params(&p); /* no cells: no map, the rest unread */
     p.clutter_map.n_range = p.clutter_map.n_bearing = 0;
     p.clutter_map.prior_count = 0;
@@ -548,6 +686,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_closed_form),
         cmocka_unit_test(test_window_and_guard),
+        cmocka_unit_test(test_edge_rule),
         cmocka_unit_test(test_profile_integral),
         cmocka_unit_test(test_confirmed_not_counted),
         cmocka_unit_test(test_polar_equals_cartesian),

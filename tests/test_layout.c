@@ -61,6 +61,7 @@ static void test_members_match_offsetof(void **state)
     CHECK("tracker_params", P, confirm.u.sprt.hmm, 's', 1);
     CHECK("tracker_params", P, confirm.u.existence.reject_odds_ratio, 'f', 1);
     CHECK("tracker_params", P, confirm.u.existence.count_alpha, 'f', 1);
+    CHECK("tracker_params", P, clutter_map.edge_alpha, 'f', 1);
     CHECK("tracker_params", P, term.u.shiryaev.h, 'f', 1);
     CHECK("tracker_params", P, init.max_gap_scans, 'u', 1);
     CHECK("tracker_params", P, association, 'i', 1);

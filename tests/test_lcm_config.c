@@ -110,6 +110,7 @@ static void test_defaults(void **state)
     assert_true(p->confirm.u.existence.p_confirm == d.confirm.u.existence.p_confirm);
     assert_true(p->confirm.u.existence.reject_odds_ratio == d.confirm.u.existence.reject_odds_ratio);
     assert_true(p->confirm.u.existence.count_alpha == d.confirm.u.existence.count_alpha);
+    assert_true(p->clutter_map.edge_alpha == d.clutter_map.edge_alpha);
     assert_int_equal(p->term.method, TRK_TERM_EXISTENCE);
     assert_true(p->term.u.existence.p_terminate == d.term.u.existence.p_terminate);
     assert_int_equal(p->init.method, d.init.method);

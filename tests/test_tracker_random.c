@@ -259,6 +259,7 @@ static void polar_params(int cfg, struct trk_tracker_params *p)
             p->clutter_map.n_bearing = 3;
             p->clutter_map.window_cells = 2;
             p->clutter_map.guard_cells = 2;
+            p->clutter_map.edge_alpha = TRK_REAL_C(0.5); /* quadrants of a wrapping window, often taken */
         }
     }
     if (cfg == 2) {

@@ -102,6 +102,7 @@ static const struct layout_row params_rows[] = {
     REAL(P, clutter_map.max_ratio, 1, "", ">= 1"),
     ROW(P, clutter_map.window_cells, 'u', unsigned, 1, "", "cells", "0 .. TRK_CLUTTER_MAP_WINDOW_MAX (8)"),
     ROW(P, clutter_map.guard_cells, 'u', unsigned, 1, "", "cells", "0 .. window_cells + 1"),
+    REAL(P, clutter_map.edge_alpha, 1, "", "0 (off) or [TRK_REAL_MIN, 1)"),
     REAL(P, max_pos_sigma_ratio, 1, "", ">= 0 (0: no bound)"),
     REAL(P, max_coord_m, 1, "m", "(0, 1e15]"),
     ENUM(P, association, "ASSOC_PDA, ASSOC_JOINT (TRK_WITH_JOINT)"),

@@ -243,7 +243,7 @@ static const char *const KEYS[] = {
     "max_tentative_scans", "max_unseen_scans", "merge_gate_d2", "init_exclusion_d2", "stationary_d2", "association", "filter", "init.method",
     "init.max_speed_mps", "init.max_gap_scans", "init.birth_density_per_m2", "init.min_existence", "clutter_map.n_range",
     "clutter_map.n_bearing", "clutter_map.time_constant_scans", "clutter_map.prior_count", "clutter_map.min_ratio",
-    "clutter_map.max_ratio", "clutter_map.window_cells", "clutter_map.guard_cells", "max_pos_sigma_ratio",
+    "clutter_map.max_ratio", "clutter_map.window_cells", "clutter_map.guard_cells", "clutter_map.edge_alpha", "max_pos_sigma_ratio",
     "max_coord_m", "visibility", "visibility.pv0", "visibility.pcv0", "visibility.delta_stay",
     "visibility.delta_become", "visibility.omega_c", "visibility.p_con", "visibility.p_term", "confirm",
     "confirm.existence.p_confirm", "confirm.existence.reject_odds_ratio", "confirm.existence.count_alpha",
@@ -576,6 +576,7 @@ int tcfg_set(void *ctx, const char *key, const char *v, char *err, size_t n)
         *(window ? &p->clutter_map.window_cells : &p->clutter_map.guard_cells) = (unsigned)l;
         return 0;
     }
+    if (strcmp(key, "clutter_map.edge_alpha") == 0) return get_real(v, R_PROB_CO, &p->clutter_map.edge_alpha, err, n);
     if (strcmp(key, "max_pos_sigma_ratio") == 0) return get_real(v, R_NONNEG, &p->max_pos_sigma_ratio, err, n);
     if (strcmp(key, "max_coord_m") == 0) return get_real(v, R_COORD, &p->max_coord_m, err, n);
     /* visibility (IPDA existence) */
@@ -1048,6 +1049,7 @@ void tcfg_write(FILE *f, const struct tcfg *c)
     put_num(f, "clutter_map.max_ratio", (double)p->clutter_map.max_ratio);
     fprintf(f, "clutter_map.window_cells = %u\n", p->clutter_map.window_cells);
     fprintf(f, "clutter_map.guard_cells = %u\n", p->clutter_map.guard_cells);
+    put_num(f, "clutter_map.edge_alpha", (double)p->clutter_map.edge_alpha);
     put_num(f, "max_pos_sigma_ratio", (double)p->max_pos_sigma_ratio);
     put_num(f, "max_coord_m", (double)p->max_coord_m);
     fprintf(f, "visibility = %d\n", p->track_visibility);
@@ -1193,6 +1195,10 @@ void tcfg_help(FILE *f)
             "    clutter_map.guard_cells          of those, the cells within this many - 1 (1: its own\n"
             "                                     cell) together count one detection per scan less, 0 = none,\n"
             "                                     at most window_cells + 1 (1)\n"
+            "    clutter_map.edge_alpha           a quadrant of the window (with the own cell) whose count\n"
+            "                                     the window's ratio explains with P < alpha / 4 (Chernoff)\n"
+            "                                     gives its own (greatest-of at a patch's edge), [0,1),\n"
+            "                                     0 = off (0.2)\n"
             "  max_pos_sigma_ratio = R           end a track whose position sigma exceeds R times the\n"
             "                                    sensor's, 0 = off (20)\n"
             "  max_coord_m = M                   surveillance bound: a detection with |x| or |y| > M\n"
