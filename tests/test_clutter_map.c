@@ -117,6 +117,29 @@ static void run_busy_cells(struct trk_tracker *t, int K, int lone)
     run_fixed_scans(t, d, (size_t)(15 + lone), K);
 }
 
+/* map_params with a window and a guard of one cell, the ratio's bounds
+ * wide (0.01, 1000), the edge rule at edge_alpha; all_round: a coverage
+ * without a sector (4 x 4 cells of 90 deg). */
+static void window_params(struct trk_tracker_params *p, trk_real edge_alpha, int all_round)
+{
+    map_params(p);
+    if (all_round) p->sensor[0].coverage.half_width_rad = 0;
+    p->clutter_map.min_ratio = TRK_REAL_C(0.01);
+    p->clutter_map.max_ratio = 1000;
+    p->clutter_map.window_cells = 1;
+    p->clutter_map.guard_cells = 1;
+    p->clutter_map.edge_alpha = edge_alpha;
+}
+
+/* K scans of three detections at -170 deg, 3.5-4.3 km (row 1). */
+static void run_at_minus_170(struct trk_tracker *t, int K)
+{
+    struct trk_polar_detection d[3];
+    memset(d, 0, sizeof d);
+    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)(-170 * DEG);
+    run_fixed_scans(t, d, 3, K);
+}
+
 /* Three detections in cell (row 1: 3-5 km, column 2: 0..30 deg) and
  * twelve in cell (row 0, column 0) every scan, at fixed spots (they start
  * tentative tracks, none confirmed). */
@@ -179,11 +202,7 @@ static void test_window_and_guard(void **state)
 {
     (void)state;
     struct trk_tracker_params p;
-    map_params(&p);
-    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
-    p.clutter_map.max_ratio = 1000;
-    p.clutter_map.window_cells = 1;
-    p.clutter_map.guard_cells = 1;
+    window_params(&p, 0, 0);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     p.clutter_map.guard_cells = 0;
     TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
@@ -213,26 +232,17 @@ static void test_window_and_guard(void **state)
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(2000, 45), polar_y(2000, 45)), 1e-7 * pooled_ratio(K, 3, corner_03), 0, tol);
     /* a map of one cell: its window is the cell, all guard: 16 per scan
      * less one over the whole coverage's expected count */
-    map_params(&p);
+    window_params(&p, 0, 0);
     p.clutter_map.n_range = p.clutter_map.n_bearing = 1;
-    p.clutter_map.window_cells = p.clutter_map.guard_cells = 1;
-    p.clutter_map.max_ratio = 1000;
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     run_busy_cells(&tk, K, 1);
     const int all[4] = {4, 4, 4, 4};
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * pooled_ratio(K, 15, all), 0, tol);
     /* a map all round (no sector; 4 x 4 cells of 90 deg): the window wraps
      * in bearing, so the column at +170 deg pools the one at -170 deg */
-    map_params(&p);
-    p.sensor[0].coverage.half_width_rad = 0;
-    p.clutter_map.window_cells = p.clutter_map.guard_cells = 1;
-    p.clutter_map.max_ratio = 1000;
-    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
+    window_params(&p, 0, 1);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    struct trk_polar_detection d[3];
-    memset(d, 0, sizeof d);
-    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)(-170 * DEG);
-    run_fixed_scans(&tk, d, 3, K);
+    run_at_minus_170(&tk, K);
     const int block_90[4] = {9, 9, 9, 0}; /* rows 0-2, three columns of 90 deg */
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 170), polar_y(4000, 170)), 1e-7 * pooled_ratio(K, 3, block_90), 0,
                     tol);
@@ -303,12 +313,7 @@ static void test_edge_rule(void **state)
 {
     (void)state;
     struct trk_tracker_params p;
-    map_params(&p);
-    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
-    p.clutter_map.max_ratio = 1000;
-    p.clutter_map.window_cells = 1;
-    p.clutter_map.guard_cells = 1;
-    p.clutter_map.edge_alpha = TRK_REAL_C(0.2);
+    window_params(&p, TRK_REAL_C(0.2), 0);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     p.clutter_map.edge_alpha = 0;
     TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
@@ -342,17 +347,9 @@ static void test_edge_rule(void **state)
                     0, tol);
     /* all round (4 columns of 90 deg): three per scan at -170 deg; at +170
      * deg the quadrant of columns +170 and (wrapping) -170 stands out */
-    map_params(&p);
-    p.sensor[0].coverage.half_width_rad = 0;
-    p.clutter_map.window_cells = p.clutter_map.guard_cells = 1;
-    p.clutter_map.max_ratio = 1000;
-    p.clutter_map.min_ratio = TRK_REAL_C(0.01);
-    p.clutter_map.edge_alpha = TRK_REAL_C(0.2);
+    window_params(&p, TRK_REAL_C(0.2), 1);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    struct trk_polar_detection d[3];
-    memset(d, 0, sizeof d);
-    for (int i = 0; i < 3; i++) d[i].range_m = (trk_real)(3500 + 400 * i), d[i].bearing_rad = (trk_real)(-170 * DEG);
-    run_fixed_scans(&tk, d, 3, K);
+    run_at_minus_170(&tk, K);
     const double c_round[4][4] = {{0, 0, 0, 0}, {3, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
     const double edge_13 = edge_ratio(K, c_round, 1, 3, 90, 1, 0.2);
     assert_true(edge_13 > edge_ratio(K, c_round, 1, 3, 90, 1, 0));
