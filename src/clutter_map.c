@@ -119,7 +119,9 @@ trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real 
     const int wrap = !v->sector, wide = wrap && 2 * w >= n_b;
     const long db_lo = wide ? -((n_b - 1) / 2) : -w, db_hi = wide ? n_b - 1 + db_lo : w;
     /* the window, and its four quadrants: rows on one side of the cell's
-     * (with it) times columns on one side of its column (with it) */
+     * (with it) times columns on one side of its column (with it); in a
+     * window all round of an even number of columns, the column opposite
+     * the cell's (db = n_b / 2) is on both sides */
     struct cells win = {0, 0, 0}, quad[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     for (long ir = ir0 - w; ir <= ir0 + w; ir++) {
         if (ir < 0 || ir >= n_r) continue;
@@ -135,8 +137,9 @@ trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real 
             const trk_real n = v->map_count[ir * n_b + ib];
             const int guard = guard_row && dist(db, 0) < g;
             cells_add(&win, n, guard, e);
+            const int left = db <= 0 || (wide && 2 * db == n_b);
             for (int q = 0; q < 4; q++)
-                if ((q & 1 ? dr >= 0 : dr <= 0) && (q & 2 ? db >= 0 : db <= 0)) cells_add(&quad[q], n, guard, e);
+                if ((q & 1 ? dr >= 0 : dr <= 0) && (q & 2 ? db >= 0 : left)) cells_add(&quad[q], n, guard, e);
         }
     }
     trk_real n_win;
@@ -146,9 +149,11 @@ trk_real trk_i_map_lambda_at(const struct trk_i_view *v, trk_real x_m, trk_real 
      * explain gives its own ratio (the greatest such): its count n_q above
      * the mean mu_q = rho_win W e_q with a Poisson tail whose Chernoff
      * bound, P(N >= n) <= exp(n - mu - n ln(n / mu)) for n > mu, is below
-     * edge_alpha / 4 (a test of that size or smaller, one logarithm) */
+     * edge_alpha / 4 (one logarithm for the size, ln 4 apart so that a
+     * small edge_alpha never makes a subnormal, and one per quadrant that
+     * could be taken) */
     if (mp->edge_alpha > 0 && w > 0) {
-        const trk_real log_size = trk_log(mp->edge_alpha / 4);
+        const trk_real log_size = trk_log(mp->edge_alpha) - TRK_REAL_C(1.3862943611198906);
         for (int q = 0; q < 4; q++) {
             trk_real n_q;
             const trk_real rho_q = cells_ratio(v, &quad[q], &n_q), mu_q = rho_win * quad[q].e * v->map_scans;

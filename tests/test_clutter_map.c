@@ -9,11 +9,12 @@
  *   - a cell's e integrates the clutter profile (a 1/r density: the
  *     two-point rule is exact);
  *   - the edge rule: a quadrant of the window (with the position's cell)
- *     whose count the window's ratio explains with a Poisson tail whose
- *     Chernoff bound is below edge_alpha / 4 gives its own ratio, the
+ *     whose count the window's ratio does not explain (the Chernoff bound
+ *     on its Poisson tail below edge_alpha / 4) gives its own ratio, the
  *     greatest such (the estimator computed here from the closed-form
- *     counts; the bound checked against the exact tail), over a sector and
- *     all round; edge_alpha 0 is the window's ratio;
+ *     counts; the bound checked against the exact tail), over a sector,
+ *     all round, and all round with a window wider than the map; the size
+ *     divided among the quadrants; edge_alpha 0 is the window's ratio;
  *   - the detections of a confirmed track's gate are not counted: from the
  *     scan after its confirmation its cell only forgets;
  *   - a polar scan and the same scan as Cartesian detections count alike;
@@ -266,25 +267,28 @@ static double chernoff(double n, double mu) { return exp(n - mu - n * log(n / mu
 
 /* The estimator at cell (r0, b0) of a map of 4 rows (2 km from 1 km) and
  * 4 columns of col_deg degrees (wrap: all round), lambda 1e-7, a = 2, a
- * window and a guard of one cell, after K scans of c[r][b] detections per
- * scan in each cell (N = c W): the window's ratio, or the greatest ratio
- * of a quadrant whose count has a Poisson tail below alpha / 4 under the
- * window's ratio (alpha 0: the window's). */
-static double edge_ratio(int K, const double c[4][4], int r0, int b0, double col_deg, int wrap, double alpha)
+ * window of w cells and a guard of one, after K scans of c[r][b]
+ * detections per scan in each cell (N = c W): the window's ratio, or the
+ * greatest ratio of a quadrant whose count's Poisson tail bound under the
+ * window's ratio is below alpha / 4 (alpha 0: the window's). All round
+ * with 2 w >= 4 the window holds each column once, offsets -1 .. 2, the
+ * opposite column (+2) on both sides. */
+static double edge_ratio(int K, const double c[4][4], int r0, int b0, double col_deg, int wrap, int w, double alpha)
 {
     const double W = scans_weight(K);
+    const int wide = wrap && 2 * w >= 4, db_lo = wide ? -1 : -w, db_hi = wide ? 2 : w;
     double n_tr[5] = {0}, n_gd[5] = {0}, e[5] = {0}; /* [4]: the window, [0..3] the quadrants */
-    for (int dr = -1; dr <= 1; dr++)
-        for (int db = -1; db <= 1; db++) {
+    for (int dr = -w; dr <= w; dr++)
+        for (int db = db_lo; db <= db_hi; db++) {
             const int r = r0 + dr;
             int b = b0 + db;
             if (wrap) b = (b + 4) % 4;
             if (r < 0 || r > 3 || b < 0 || b > 3) continue;
             const double ra = 1000 + 2000 * r, rb = ra + 2000;
             const double e_c = 1e-7 * (col_deg * DEG) * (rb * rb - ra * ra) / 2, n = c[r][b] * W;
-            const int guard = dr == 0 && db == 0;
+            const int guard = dr == 0 && db == 0, left = db <= 0 || (wide && db == 2);
             for (int q = 0; q < 5; q++) {
-                if (q < 4 && !((q & 1 ? dr >= 0 : dr <= 0) && (q & 2 ? db >= 0 : db <= 0))) continue;
+                if (q < 4 && !((q & 1 ? dr >= 0 : dr <= 0) && (q & 2 ? db >= 0 : left))) continue;
                 *(guard ? &n_gd[q] : &n_tr[q]) += n;
                 e[q] += e_c;
             }
@@ -325,7 +329,7 @@ static void test_edge_rule(void **state)
     /* cell (1, 1), between the two busy cells: its quadrant of rows 0-1 x
      * columns 0-1 holds the twelve per scan, far beyond what the window's
      * ratio explains, and gives its ratio: over twice the window's */
-    const double win_11 = edge_ratio(K, c, 1, 1, 30, 0, 0), edge_11 = edge_ratio(K, c, 1, 1, 30, 0, 0.2);
+    const double win_11 = edge_ratio(K, c, 1, 1, 30, 0, 1, 0), edge_11 = edge_ratio(K, c, 1, 1, 30, 0, 1, 0.2);
     const int quad_11[4] = {2, 2, 0, 0};
     TRK_ASSERT_NEAR(edge_11, pooled_ratio(K, 12, quad_11), 0, 1e-12); /* the estimator here, by hand */
     assert_true(edge_11 > 2 * win_11);
@@ -334,16 +338,26 @@ static void test_edge_rule(void **state)
     /* the busy cell (1, 2) itself: its two per scan (three less the guard's
      * one) in each of its quadrants; the nearer rows' (smaller cells) is
      * the greatest */
-    const double edge_12 = edge_ratio(K, c, 1, 2, 30, 0, 0.2);
-    assert_true(edge_12 > edge_ratio(K, c, 1, 2, 30, 0, 0));
+    const double edge_12 = edge_ratio(K, c, 1, 2, 30, 0, 1, 0.2);
+    assert_true(edge_12 > edge_ratio(K, c, 1, 2, 30, 0, 1, 0));
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * edge_12, 0, tol);
+    /* ... and at edge_alpha 1e-3 that quadrant's bound (e^-7.4) is above
+     * 1e-3 / 4 (e^-8.3), though below 1e-3: the window's ratio (the size
+     * is divided among the four quadrants) */
+    p.clutter_map.edge_alpha = TRK_REAL_C(1e-3);
+    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    run_busy_cells(&tk2, K, 1);
+    const double win_12 = edge_ratio(K, c, 1, 2, 30, 0, 1, 0);
+    TRK_ASSERT_NEAR(edge_ratio(K, c, 1, 2, 30, 0, 1, 1e-3), win_12, 0, 0);
+    assert_true(edge_ratio(K, c, 1, 2, 30, 0, 1, 4e-3) > win_12);
+    TRK_ASSERT_NEAR(lambda_at(&tk2, polar_x(4000, 15), polar_y(4000, 15)), 1e-7 * win_12, 0, tol);
     /* the lone detection's cell (3, 3), a target's: the guard takes it, no
      * quadrant stands out, the window's ratio; the same at the empty cell
      * (2, 0) */
-    TRK_ASSERT_NEAR(edge_ratio(K, c, 3, 3, 30, 0, 0.2), edge_ratio(K, c, 3, 3, 30, 0, 0), 0, 0);
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(8000, 45), polar_y(8000, 45)), 1e-7 * edge_ratio(K, c, 3, 3, 30, 0, 0), 0,
+    TRK_ASSERT_NEAR(edge_ratio(K, c, 3, 3, 30, 0, 1, 0.2), edge_ratio(K, c, 3, 3, 30, 0, 1, 0), 0, 0);
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(8000, 45), polar_y(8000, 45)), 1e-7 * edge_ratio(K, c, 3, 3, 30, 0, 1, 0), 0,
                     tol);
-    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(6000, -45), polar_y(6000, -45)), 1e-7 * edge_ratio(K, c, 2, 0, 30, 0, 0.2),
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(6000, -45), polar_y(6000, -45)), 1e-7 * edge_ratio(K, c, 2, 0, 30, 0, 1, 0.2),
                     0, tol);
     /* all round (4 columns of 90 deg): three per scan at -170 deg; at +170
      * deg the quadrant of columns +170 and (wrapping) -170 stands out */
@@ -351,9 +365,19 @@ static void test_edge_rule(void **state)
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     run_at_minus_170(&tk, K);
     const double c_round[4][4] = {{0, 0, 0, 0}, {3, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
-    const double edge_13 = edge_ratio(K, c_round, 1, 3, 90, 1, 0.2);
-    assert_true(edge_13 > edge_ratio(K, c_round, 1, 3, 90, 1, 0));
+    const double edge_13 = edge_ratio(K, c_round, 1, 3, 90, 1, 1, 0.2);
+    assert_true(edge_13 > edge_ratio(K, c_round, 1, 3, 90, 1, 1, 0));
     TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 170), polar_y(4000, 170)), 1e-7 * edge_13, 0, tol);
+    /* a window of two cells all round: each of the 4 columns once, the one
+     * opposite the position's on both sides; at +80 deg (column 2) the
+     * busy column 0 is that one, and rows 0-3 are all in */
+    window_params(&p, TRK_REAL_C(0.2), 1);
+    p.clutter_map.window_cells = 2;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    run_at_minus_170(&tk, K);
+    const double edge_wide = edge_ratio(K, c_round, 1, 2, 90, 1, 2, 0.2);
+    assert_true(edge_wide > edge_ratio(K, c_round, 1, 2, 90, 1, 2, 0));
+    TRK_ASSERT_NEAR(lambda_at(&tk, polar_x(4000, 80), polar_y(4000, 80)), 1e-7 * edge_wide, 0, tol);
 }
 
 /* With a 1/r clutter profile, a cell's expected count is lambda(r) r

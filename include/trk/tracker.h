@@ -619,8 +619,8 @@ enum trk_filter_kind {
  * Gamma-Poisson posterior mean with prior_count pseudo-counts at the
  * configured density,
  *     rho = (sum N_c + a) / (W sum e_c + a)   over the window;
- * where one of the window's four corner quadrants (window_cells + 1 rows
- * and columns, each with the position's own cell) holds significantly more
+ * where one of the window's four corner quadrants (up to window_cells + 1
+ * rows and columns, each with the position's own cell) holds significantly more
  * than the window's rho predicts (edge_alpha), the greatest such quadrant's
  * rho instead (a greatest-of CFAR at a clutter edge); the result is
  * bounded to [min_ratio, max_ratio], and the density the tracker uses at a
@@ -648,14 +648,15 @@ struct trk_clutter_map_params {
                                       less, not below 0 (a CFAR's guard cells: what a point
                                       target there added before its track was confirmed);
                                       0: none */
-    trk_real edge_alpha;           /**< [0, 1), 0 = off: a quadrant's rho is taken when
-                                      its count n (guard as above) exceeds its mean mu under
-                                      the window's rho with a Poisson tail whose Chernoff
-                                      bound exp(n - mu - n ln(n / mu)) is below
-                                      edge_alpha / 4 (so a homogeneous window is raised with
-                                      probability at most edge_alpha): a reverberation patch
-                                      or a scatterer beside the position is not averaged
-                                      away. Needs window_cells >= 1. Default 0.2 */
+    trk_real edge_alpha;           /**< 0 (off) or [TRK_REAL_MIN, 1): a quadrant's rho is
+                                      taken when its count n (guard as above) exceeds its
+                                      mean mu under the window's rho with a Poisson tail
+                                      whose Chernoff bound exp(n - mu - n ln(n / mu)) is
+                                      below edge_alpha / 4 (for a known mean, an even
+                                      window would be raised with probability at most
+                                      edge_alpha): a reverberation patch or a scatterer
+                                      beside the position is not averaged away. Needs
+                                      window_cells >= 1. Default 0.2 */
 };
 
 /** The tracker's parameters: fill with trk_tracker_default_params, then set the sonar's figures; checked by trk_tracker_check_params and trk_tracker_init (docs/parameters.md lists every field). */

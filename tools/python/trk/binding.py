@@ -413,7 +413,8 @@ class Tracker(object):
         """The clutter density (1/m^2) the tracker uses at (x_m, y_m) in a scan
         of sensor from pose (None: the sensor's own): the configured one
         times its clutter map's ratio there, pooled over the window of cells
-        about it (trk_tracker_clutter_at)."""
+        about it, or over a quadrant of it by the edge rule
+        (trk_tracker_clutter_at)."""
         pp = None
         if pose is not None:
             self._pose["x_m"], self._pose["y_m"], self._pose["heading_rad"] = pose
