@@ -181,6 +181,14 @@ static void test_closed_form(void **state)
     TRK_ASSERT_NEAR((double)l, 1e-7 * ratio_after(K, 0, 3000, 5000), 0, tol); /* column 3: empty */
 }
 
+/* A cell's expected count per scan: row `row` (2 km from 1 km), col_deg
+ * degrees wide, lambda 1e-7. */
+static double cell_e(int row, double col_deg)
+{
+    const double ra = 1000 + 2000 * row, rb = ra + 2000;
+    return 1e-7 * (col_deg * DEG) * (rb * rb - ra * ra) / 2;
+}
+
 /* The pooled ratio (sum N + a) / (sum e W + a) after K scans over training
  * cells holding n detections per scan in all, with cells_in_row[i] cells of row i
  * (rows of 2 km from 1 km, 30 deg wide, lambda 1e-7). */
@@ -188,10 +196,7 @@ static double pooled_ratio(int K, double n, const int cells_in_row[4])
 {
     const double W = scans_weight(K);
     double e = 0;
-    for (int i = 0; i < 4; i++) {
-        const double ra = 1000 + 2000 * i, rb = ra + 2000;
-        e += cells_in_row[i] * 1e-7 * (30 * DEG) * (rb * rb - ra * ra) / 2;
-    }
+    for (int i = 0; i < 4; i++) e += cells_in_row[i] * cell_e(i, 30);
     return (n * W + 2) / (e * W + 2);
 }
 
@@ -284,8 +289,7 @@ static double edge_ratio(int K, const double c[4][4], int r0, int b0, double col
             int b = b0 + db;
             if (wrap) b = (b + 4) % 4;
             if (r < 0 || r > 3 || b < 0 || b > 3) continue;
-            const double ra = 1000 + 2000 * r, rb = ra + 2000;
-            const double e_c = 1e-7 * (col_deg * DEG) * (rb * rb - ra * ra) / 2, n = c[r][b] * W;
+            const double e_c = cell_e(r, col_deg), n = c[r][b] * W;
             const int guard = dr == 0 && db == 0, left = db <= 0 || (wide && db == 2);
             for (int q = 0; q < 5; q++) {
                 if (q < 4 && !((q & 1 ? dr >= 0 : dr <= 0) && (q & 2 ? db >= 0 : left))) continue;
@@ -520,6 +524,14 @@ static void test_thinned_scan_counts_all(void **state)
     TRK_ASSERT_NEAR(total, (double)N, 0, TRK_TOL(1e-9, 1e-4));
 }
 
+/* The parameter check refuses p with status st, naming field name. */
+static void assert_refused(const struct trk_tracker_params *p, trk_status st, const char *name)
+{
+    const char *field = NULL;
+    TRK_ASSERT_STATUS(trk_tracker_check_params(p, &field), st);
+    assert_string_equal(field, name);
+}
+
 static void test_params_and_refusals(void **state)
 {
     (void)state;
@@ -528,48 +540,38 @@ static void test_params_and_refusals(void **state)
     map_params(&p);
     p.clutter_map.n_range = TRK_CLUTTER_MAP_CELLS + 1;
     p.clutter_map.n_bearing = 1;
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_CAPACITY);
-    assert_string_equal(field, "clutter_map.n_range");
+    assert_refused(&p, TRK_E_CAPACITY, "clutter_map.n_range");
     map_params(&p);
     p.clutter_map.n_bearing = 0;
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
-    assert_string_equal(field, "clutter_map.n_bearing");
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.n_bearing");
     map_params(&p);
     p.clutter_map.time_constant_scans = TRK_REAL_C(0.5);
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
-    assert_string_equal(field, "clutter_map.time_constant_scans");
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.time_constant_scans");
     map_params(&p);
     p.clutter_map.prior_count = 0;
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
-    assert_string_equal(field, "clutter_map.prior_count");
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.prior_count");
     map_params(&p);
     p.clutter_map.min_ratio = (trk_real)NAN;
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_NAN);
-    assert_string_equal(field, "clutter_map.min_ratio");
+    assert_refused(&p, TRK_E_NAN, "clutter_map.min_ratio");
     map_params(&p);
     p.clutter_map.max_ratio = TRK_REAL_C(0.5);
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
-    assert_string_equal(field, "clutter_map.max_ratio");
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.max_ratio");
     map_params(&p);
     p.clutter_map.window_cells = TRK_CLUTTER_MAP_WINDOW_MAX + 1;
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
-    assert_string_equal(field, "clutter_map.window_cells");
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.window_cells");
     map_params(&p);
     p.clutter_map.window_cells = 1;
     p.clutter_map.guard_cells = 3;
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
-    assert_string_equal(field, "clutter_map.guard_cells");
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.guard_cells");
     const trk_real bad_alpha[] = {-TRK_REAL_C(0.1), 1, TRK_REAL_MIN / 4};
     for (size_t i = 0; i < sizeof bad_alpha / sizeof bad_alpha[0]; i++) {
         map_params(&p);
         p.clutter_map.edge_alpha = bad_alpha[i];
-        TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_RANGE);
-        assert_string_equal(field, "clutter_map.edge_alpha");
+        assert_refused(&p, TRK_E_RANGE, "clutter_map.edge_alpha");
     }
     map_params(&p);
     p.clutter_map.edge_alpha = (trk_real)NAN;
-    TRK_ASSERT_STATUS(trk_tracker_check_params(&p, &field), TRK_E_NAN);
-    assert_string_equal(field, "clutter_map.edge_alpha");
+    assert_refused(&p, TRK_E_NAN, "clutter_map.edge_alpha");
     map_params(&p); /* no cells: no map, the rest unread */
     p.clutter_map.n_range = p.clutter_map.n_bearing = 0;
     p.clutter_map.prior_count = 0;
