@@ -54,9 +54,9 @@ STACK_LIMIT ?= 2048
 # The builds with an optional track filter (TRK_WITH_IMM, TRK_WITH_ALPHA_BETA)
 # had the default's 2 KB until each track's prediction carried its own R,
 # P_D, lambda and covariance bound (polar sensors and the profiles over
-# range): 2136 B with IMM and 2104 B with alpha-beta (with the clutter map), on the size build's
-# general own-covariance PDA path (its Joseph form per detection); the
-# default build stays at 2000 B.
+# range): 2168 B with IMM and 2136 B with alpha-beta (2026-12-07, with the
+# clutter map's edge rule), on the size build's general own-covariance PDA
+# path (its Joseph form per detection); the default build is at 2032 B.
 STACK_LIMIT_FILTERS ?= 2176
 # The image limits were 32 KB (no joint association) and 36 KB until scans
 # beyond capacity were thinned instead of refused (+3.4 KB in every image:

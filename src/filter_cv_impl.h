@@ -1,7 +1,7 @@
 /* filter_cv_impl.h (private) - the CV Kalman filter as a track filter
  * (track_filter_impl.h): prediction with the CV model of process_noise_q
- * (trk_i_cv2_predict, docs/conventions.md "Process noise"), gating of its one
- * Gaussian prediction (gate()), and the PDA update (pda_impl.h, the same code
+ * (trk_i_cv2_predict; docs/conventions.md "State and covariance layout"),
+ * gating of its one Gaussian prediction (gate()), and the PDA update (pda_impl.h, the same code
  * as trk_pda_update, inlined with the CV model's constant dimensions so its
  * small matrix loops unroll) with its own weights or with given ones (the
  * joint association's).

@@ -7,7 +7,8 @@
 
 void trk_tracker_default_params(struct trk_tracker_params *p)
 {
-    /* filled in place: a local copy would put ~1 KB on a firmware stack */
+    /* filled in place: a local copy would put 2.0 KB (float) or 3.6 KB (double) on a
+     * firmware stack */
     memset(p, 0, sizeof *p);
     p->n_sensors = 1;
     p->sensor[0].pd = TRK_REAL_C(0.9);
@@ -20,7 +21,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->clutter = TRK_CLUTTER_PARAMETRIC;
     p->init_speed_sigma_mps = 5;
     p->max_dt_s = 3600;
-    /* existence-based confirmation and termination (docs/tracker.md "Defaults") */
+    /* existence-based confirmation and termination (docs/tracker.md, bullet "Defaults") */
     p->confirm.method = TRK_CONFIRM_EXISTENCE;
     p->confirm.u.existence.p_confirm = TRK_REAL_C(0.999);
     p->confirm.u.existence.reject_odds_ratio = TRK_REAL_C(0.01);
@@ -50,7 +51,8 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->clutter_map.max_ratio = 100;
     p->max_pos_sigma_ratio = 20;
     p->max_coord_m = TRK_MAX_COORD_M_DEFAULT;
-    p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: docs/tracker.md "Association" */
+    p->association = TRK_WITH_JOINT ? TRK_ASSOC_JOINT : TRK_ASSOC_PDA; /* JIPDA: docs/tracker.md,
+                                                                              bullet "Association" */
     p->filter = TRK_FILTER_KALMAN;
     p->merge_gate_d2 = 4;
     p->init_exclusion_d2 = TRK_REAL_C(18.420680743952367); /* -2 ln 1e-4: 99.99 % of a target's
