@@ -65,9 +65,12 @@ test-lcm-spy: $(TEST_EXTRA_DEPS_test-lcm-spy)
 # --- install: the jar and the launcher (a note when no JDK or lcm.jar)
 .PHONY: install-java
 install: install-java
+# The sub-make has a line of its own: make runs a line that names $(MAKE)
+# even under -n, and `make -n install` must install nothing.
+JAVA_INSTALLABLE = command -v javac > /dev/null 2>&1 && command -v jar > /dev/null 2>&1 && [ -f $(LCM_JAVA_LIB) ]
 install-java:
-	@if command -v javac > /dev/null 2>&1 && command -v jar > /dev/null 2>&1 && [ -f $(LCM_JAVA_LIB) ]; then \
-	  $(MAKE) --no-print-directory $(LCM_JAR) && \
+	@if $(JAVA_INSTALLABLE); then $(MAKE) --no-print-directory $(LCM_JAR); fi
+	@if $(JAVA_INSTALLABLE); then \
 	  install -d $(DESTDIR)$(PREFIX)/share/java $(DESTDIR)$(PREFIX)/bin && \
 	  install -m 644 $(LCM_JAR) $(DESTDIR)$(PREFIX)/share/java/ && \
 	  install -m 755 tools/lcm/java/trk-lcm-spy $(DESTDIR)$(PREFIX)/bin/ && \
