@@ -97,10 +97,40 @@ static void clutter_look(const struct trk_tracker *t, const struct trk_innovatio
     }
 }
 
+/* The gate-count check's ring (trk/tracker.h count_alpha): how many of the
+ * gated set's detections lie in the outer half of the gate's area, gamma /
+ * 2 < d2 (with the prediction's S, or S_j for a detection with its own
+ * covariance; an IMM track's from its prediction pr). Clutter spreads over
+ * the gate, so half of it falls there; a target's own returns, however
+ * many (a split echo, multipath), sit about its prediction, and only
+ * sqrt(1 - P_G) - (1 - P_G) of each does. */
+static int gate_ring_count(const struct pred *pr, const struct trk_i_pda_set *set, trk_real gamma)
+{
+    const trk_real half = gamma / 2;
+    const struct trk_innovation *inn = pr->pp.inn;
+    int n = 0;
+    for (size_t i = 0; i < set->n; i++) {
+        const trk_real nu[NZ] = {set->z[NZ * i + ZX] - inn->z_pred[ZX], set->z[NZ * i + ZY] - inn->z_pred[ZY]};
+        trk_real s_own[NZ * NZ];
+        const trk_real *s = inn->s;
+        if (i >= set->n_shared) { /* S_j, SPD: the detection was gated with it */
+            trk_i_pda_own_s(&pr->pp, set->r_own + NZ * NZ * (i - set->n_shared), s_own);
+            s = s_own;
+        }
+        const trk_real sxx = s[S(ZX, ZX)], sxy = s[S(ZX, ZY)], syy = s[S(ZY, ZY)]; /* symmetric */
+        const trk_real d2 = (syy * nu[ZX] * nu[ZX] - 2 * sxy * nu[ZX] * nu[ZY] + sxx * nu[ZY] * nu[ZY]) /
+                            (sxx * syy - sxy * sxy);
+        n += d2 > half;
+    }
+    return n;
+}
+
 /* What this scan told the track's tests: the one place a look is built
- * (the M/N test's first look at initiation apart). */
+ * (the M/N test's first look at initiation apart). The gate-count ring only
+ * for a tentative track whose existence confirmation checks it. */
 static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
-                       const struct pred *pr, const struct trk_i_pda_out *out, struct trk_look *look)
+                       const struct pred *pr, const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
+                       struct trk_look *look)
 {
     look->seen = 1;
     look->detected = tr->n_gated_last > 0;
@@ -108,7 +138,14 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     look->n_gated = (int)tr->n_gated_last;
     const trk_real lambda_vg = out->lambda * out->gate_volume;
     look->pfa_gate = -trk_expm1(-lambda_vg);
-    look->n_expected = lambda_vg + pr->pd * pr->pda->params.gate_prob;
+    look->n_ring = 0;
+    look->n_ring_expected = 0;
+    if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
+        t->params.confirm.u.existence.count_alpha > 0) {
+        const trk_real miss = 1 - pr->pda->params.gate_prob; /* e^(-gamma/2) */
+        look->n_ring = gate_ring_count(pr, set, pr->pda->gamma);
+        look->n_ring_expected = lambda_vg / 2 + pr->pd * (trk_sqrt(miss) - miss);
+    }
     look->beta0 = out->beta0;
     look->has_nearest = 0;
     look->nearest = 0;
@@ -139,7 +176,7 @@ static int track_unseen(struct trk_tracker *t, struct trk_track *tr, const struc
         trk_visibility_update_posterior(&t->vis_model, &vis, trk_visibility_predict(&t->vis_model, &vis)) != TRK_OK)
         return -1;
     commit(t, tr, scan, &set, t->ws.cand, pr, &vis, out.beta0);
-    build_look(t, tr, scan, pr, &out, look);
+    build_look(t, tr, scan, pr, &set, &out, look);
     look->seen = 0;
     return over_covariance_bound(pr->bound_m2, tr->p);
 }

@@ -105,13 +105,13 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
 }
 
 /* The gate-count check's sums with this look (trk/tracker.h count_alpha):
- * the detections gated and the count the track's model expects there,
- * each forgotten at 1 - 1/tau per look. */
+ * the detections in the gate's ring and the count the track's model
+ * expects there, each forgotten at 1 - 1/tau per look. */
 static void gate_count_look(const struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look)
 {
     const trk_real keep = t->confirm_model.existence.count_keep;
-    tr->test.confirm.existence.count_gated = keep * tr->test.confirm.existence.count_gated + (trk_real)look->n_gated;
-    tr->test.confirm.existence.count_expected = keep * tr->test.confirm.existence.count_expected + look->n_expected;
+    tr->test.confirm.existence.count_gated = keep * tr->test.confirm.existence.count_gated + (trk_real)look->n_ring;
+    tr->test.confirm.existence.count_expected = keep * tr->test.confirm.existence.count_expected + look->n_ring_expected;
 }
 
 trk_real trk_i_gate_count_tail(trk_real gated, trk_real expected)

@@ -17,7 +17,11 @@ struct trk_look {
     unsigned sensor_id;
     int n_gated;
     trk_real pfa_gate;   /* P(clutter in the gate) = 1 - exp(-lambda V_G) */
-    trk_real n_expected; /* lambda V_G + P_D P_G: the clutter and target detections the gate should hold */
+    /* the gate-count check's ring, the outer half of the gate's area
+     * (gamma / 2 < d2 <= gamma): the detections there, and the count the
+     * track's model expects there, lambda V_G / 2 + P_D (sqrt(1 - P_G) - (1 - P_G)) */
+    int n_ring;
+    trk_real n_ring_expected;
     trk_real beta0;
     /* clutter tests: nearest detection of the scan (has_nearest = 0: none) */
     int has_nearest;

@@ -389,8 +389,9 @@ enum trk_confirm_method {
     TRK_CONFIRM_EXISTENCE = 5    /**< existence vis.pv (IPDA, with the initial value of
                                     trk_init_params): confirm at pv >= p_confirm, unless
                                     the gate-count check (count_alpha) finds more
-                                    detections in the track's recent gates than its
-                                    clutter density and its own target explain; reject
+                                    detections in the outer ring of the track's recent
+                                    gates than its clutter density and its own target
+                                    explain; reject
                                     when its odds fell below reject_odds_ratio times
                                     the track's initial odds (a Wald lower threshold on
                                     the likelihood ratio since initiation); needs
@@ -405,15 +406,19 @@ struct trk_existence_confirm_params {
     trk_real reject_odds_ratio;  /**< [0, 1), 0 = never reject */
     trk_real count_alpha;        /**< [0, 1), 0 = off: the gate-count check's size. A
                                     track whose existence reaches p_confirm is not
-                                    confirmed at that look while its gates held too many
-                                    detections: with n the detections gated and
-                                    mu = lambda V_G + P_D P_G expected (the clutter
-                                    density it was given and its own target), each
-                                    summed over its looks with the weight (1 - 1/tau)^age
-                                    (tau = clutter_map.time_constant_scans, the window
-                                    of the density it is given), the Poisson tail
-                                    P(N >= floor(n); mu) < count_alpha. The density is
-                                    then wrong at the track (a reverberation patch the
+                                    confirmed at that look while its gates' rings held
+                                    too many detections: with n the detections in the
+                                    outer half of the gate's area (gamma / 2 < d2 <=
+                                    gamma), where half the clutter falls but few of a
+                                    target's own returns, however many it gives (a
+                                    split echo), and mu = lambda V_G / 2 + P_D
+                                    (sqrt(1 - P_G) - (1 - P_G)) expected there (the
+                                    clutter density it was given and its own target),
+                                    each summed over its looks with the weight
+                                    (1 - 1/tau)^age (tau = clutter_map.time_constant_scans,
+                                    the window of the density it is given), the Poisson
+                                    tail P(N >= floor(n); mu) < count_alpha. The density
+                                    is then wrong at the track (a reverberation patch the
                                     map averages over a larger cell, a persistent return
                                     more often seen than a target there). Default 0.01 */
 };
@@ -466,8 +471,9 @@ union trk_confirm_state {
     struct {
         trk_real reject_below;   /**< TRK_CONFIRM_EXISTENCE: pv below this rejects (set at start) */
         trk_real count_gated;    /**< the gate-count check's weighted sums of the
-                                    detections gated, */
-        trk_real count_expected; /**< ... and of lambda V_G + P_D P_G (count_alpha) */
+                                    detections in the gate's ring, */
+        trk_real count_expected; /**< ... and of lambda V_G / 2 + P_D (sqrt(1 - P_G) -
+                                    (1 - P_G)) (count_alpha) */
     } existence;  /**< TRK_CONFIRM_EXISTENCE */
 #if TRK_WITH_CLUTTER_TESTS
     struct trk_clutter_chi2 chi2;  /**< TRK_CONFIRM_CLUTTER_CHI2 */
