@@ -177,8 +177,9 @@ static trk_status check_clutter_map(const struct trk_clutter_map_params *mp, con
         return refuse(field, "clutter_map.n_range", TRK_E_CAPACITY);
     if ((st = check_real(mp->time_constant_scans, 1, 0, TRK_REAL_C(1e6), "clutter_map.time_constant_scans", field)) !=
             TRK_OK ||
-        (st = check_real(mp->prior_count, 0, 1, TRK_REAL_C(1e6), "clutter_map.prior_count", field)) != TRK_OK ||
-        (st = check_real(mp->min_ratio, 0, 1, 1, "clutter_map.min_ratio", field)) != TRK_OK ||
+        (st = check_real(mp->prior_count, TRK_REAL_MIN, 0, TRK_REAL_C(1e6), "clutter_map.prior_count", field)) !=
+            TRK_OK ||
+        (st = check_real(mp->min_ratio, TRK_REAL_MIN, 0, 1, "clutter_map.min_ratio", field)) != TRK_OK ||
         (st = check_real(mp->max_ratio, 1, 0, TRK_REAL_C(1e6), "clutter_map.max_ratio", field)) != TRK_OK)
         return st;
     if (mp->window_cells > TRK_CLUTTER_MAP_WINDOW_MAX) return refuse(field, "clutter_map.window_cells", TRK_E_RANGE);
@@ -307,6 +308,13 @@ static trk_status check_view(const struct trk_tracker_params *p, const struct tr
             if (snr && !(pr->pd[k] > sp->amplitude.pfa && pr->pd[k] < 1)) return refuse(field, name[F_PROFILE], TRK_E_RANGE);
         }
     }
+    /* the density's bound is its profile's; with a map, the map's floor (the
+     * configured density times min_ratio) stays a normal number: a cell
+     * never goes blind, and no cell's expected count overflows */
+    if (sp->clutter_density_per_m2 > TRK_REAL_C(1e6)) return refuse(field, name[F_DENSITY], TRK_E_RANGE);
+    const int mapped = p->clutter_map.n_range > 0 && p->clutter_map.n_bearing > 0;
+    if (mapped && sp->clutter_density_per_m2 > 0 && !(sp->clutter_density_per_m2 * p->clutter_map.min_ratio >= TRK_REAL_MIN))
+        return refuse(field, "clutter_map.min_ratio", TRK_E_RANGE);
     const struct trk_clutter_profile *cp = &sp->clutter_profile;
     if (cp->n != 0) {
         if (cp->n < 2 || cp->n > TRK_PD_PROFILE_MAX) return refuse(field, name[F_CLUTTER_PROFILE], TRK_E_RANGE);
@@ -319,6 +327,8 @@ static trk_status check_view(const struct trk_tracker_params *p, const struct tr
                     TRK_OK ||
                 (st = check_real(cp->density_per_m2[k], 0, 1, TRK_REAL_C(1e6), name[F_CLUTTER_PROFILE], field)) != TRK_OK)
                 return st;
+            if (mapped && !(cp->density_per_m2[k] * p->clutter_map.min_ratio >= TRK_REAL_MIN))
+                return refuse(field, "clutter_map.min_ratio", TRK_E_RANGE);
         }
     }
     const struct trk_coverage *c = &sp->coverage;

@@ -551,8 +551,25 @@ static void test_params_and_refusals(void **state)
     p.clutter_map.prior_count = 0;
     assert_refused(&p, TRK_E_RANGE, "clutter_map.prior_count");
     map_params(&p);
+    p.clutter_map.prior_count = TRK_REAL_MIN / 4; /* subnormal */
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.prior_count");
+    map_params(&p);
     p.clutter_map.min_ratio = (trk_real)NAN;
     assert_refused(&p, TRK_E_NAN, "clutter_map.min_ratio");
+    map_params(&p);
+    p.clutter_map.min_ratio = TRK_REAL_MIN / 4;
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.min_ratio");
+    /* the map's floor, density x min_ratio, would underflow: the cell would read 0 */
+    map_params(&p);
+    p.clutter_map.min_ratio = TRK_REAL_C(1e-3);
+    p.sensor[0].clutter_density_per_m2 = TRK_REAL_MIN * 100;
+    assert_refused(&p, TRK_E_RANGE, "clutter_map.min_ratio");
+    p.clutter_map.min_ratio = TRK_REAL_C(0.1); /* 10 x the smallest normal: a floor that is normal */
+    TRK_ASSERT_OK(trk_tracker_check_params(&p, &field));
+    /* beyond a clutter profile's bound (a cell's expected count would overflow) */
+    map_params(&p);
+    p.sensor[0].clutter_density_per_m2 = TRK_REAL_C(2e6);
+    assert_refused(&p, TRK_E_RANGE, "sensor[0].clutter_density_per_m2");
     map_params(&p);
     p.clutter_map.max_ratio = TRK_REAL_C(0.5);
     assert_refused(&p, TRK_E_RANGE, "clutter_map.max_ratio");

@@ -331,7 +331,8 @@ struct trk_sensor_params {
                                          with an amplitude model its P_D is used */
     trk_real meas_cov_m2[3];          /**< default measurement covariance [xx, xy, yy], SPD */
     trk_real clutter_density_per_m2;  /**< lambda for parametric clutter (and the clutter
-                                         tests' rho), >= 0 */
+                                         tests' rho), in [0, 1e6] (a clutter profile's
+                                         bound) */
     /** Amplitude-aided association (PDAFAI, Brekke eqs 19-25): when
      * use_amplitude is 1 each detection's weight is multiplied by
      * l^a(amplitude) of this model (trk_amplitude_init_rayleigh or
@@ -640,8 +641,11 @@ struct trk_clutter_map_params {
                                       <= TRK_CLUTTER_MAP_CELLS) */
     trk_real time_constant_scans;  /**< the counts' memory tau, >= 1 scan: weight
                                       (1 - 1/tau)^k on the scan k scans ago */
-    trk_real prior_count;          /**< a, > 0: pseudo-counts at the configured density */
-    trk_real min_ratio;            /**< rho's floor, (0, 1] */
+    trk_real prior_count;          /**< a, a normal number in (0, 1e6]: pseudo-counts at
+                                      the configured density */
+    trk_real min_ratio;            /**< rho's floor, a normal number in (0, 1]; each
+                                      sensor's density (and its clutter profile's) times
+                                      it must be normal too, so a cell never reads 0 */
     trk_real max_ratio;            /**< rho's ceiling, >= 1 */
     unsigned window_cells;         /**< a position's ratio pools the cells within this many
                                       rows and columns of its own (a CFAR's training cells,
