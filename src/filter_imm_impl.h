@@ -96,7 +96,10 @@ static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr,
         st = trk_i_pda_check(NX, s->x[m], s->p[m]);
         if (st == TRK_OK) {
             trk_real *r = t->ws.imm.r[m];
-            const trk_real *r_m = sensor_r_at(t, scan, s->x[m][X], s->x[m][Y], r);
+            /* out of the sensor's sight, the sensor's own R (pred_finish) */
+            const trk_real *r_m = sensor_pd_at(t, scan, s->x[m][X], s->x[m][Y]) > 0
+                                      ? sensor_r_at(t, scan, s->x[m][X], s->x[m][Y], r)
+                                      : t->r[scan->sensor_id];
             if (r_m != r)
                 for (int i = 0; i < NZ * NZ; i++) r[i] = r_m[i];
             st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), r, s->x[m], s->p[m], t->ws.imm.pht[m],

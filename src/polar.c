@@ -42,6 +42,13 @@ void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real d
 {
     const trk_real vr = sp->sigma_range_m * sp->sigma_range_m, vb = sp->sigma_bearing_rad * sp->sigma_bearing_rad;
     const trk_real xx = dx_m * dx_m, yy = dy_m * dy_m, xy = dx_m * dy_m, rho2 = xx + yy;
+    if (!(vr / rho2 <= TRK_REAL_MAX)) { /* at the pose (the offset's square 0 or too small to
+                                           divide by): no bearing, and the range's variance in
+                                           every direction */
+        cov_m2[TRK_COV2_XX] = cov_m2[TRK_COV2_YY] = vr;
+        cov_m2[TRK_COV2_XY] = 0;
+        return;
+    }
     if (sp->conversion != TRK_POLAR_UNBIASED) {
         /* r^2 s^2 = dx^2, r^2 c^2 = dy^2 (s, c: sin, cos of the bearing):
          * C = [[vr s^2 + vb r^2 c^2, (vr - vb r^2) s c], [., vr c^2 + vb r^2 s^2]] */

@@ -54,12 +54,18 @@ static void pred_sensor(struct trk_tracker *t, const struct trk_scan *scan, stru
 static int pred_seen(const struct pred *pr) { return pr->pd > 0; }
 
 /* The prediction pr->x, pr->p checked, the sensor at it (pred_sensor), its
- * view for the PDA, and its innovation. */
+ * view for the PDA, and its innovation. A track the sensor cannot see is
+ * not gated, and its innovation only gives its update the form of one
+ * with nothing gated: there it is formed with the sensor's own R, since a
+ * polar R far outside the coverage (cross-range sigma r sigma_b against
+ * sigma_r) may be too ill-conditioned to factor, and a track that coasts
+ * out of sight must not end as a numerical failure. */
 static trk_status pred_finish(struct trk_tracker *t, const struct trk_scan *scan, struct pred *pr)
 {
     const trk_status st = trk_i_pda_check(NX, pr->x, pr->p);
     if (st != TRK_OK) return st;
     pred_sensor(t, scan, pr);
+    if (!pred_seen(pr)) pr->r = t->r[scan->sensor_id];
     const struct trk_i_pda_pred pp = {NX, NZ, trk_cv2_h, trk_i_cv2_sel(), pr->r, pr->x, pr->p, pr->pht, &pr->inn};
     pr->pp = pp;
     return trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), pr->r, pr->x, pr->p, pr->pht, &pr->inn);

@@ -275,6 +275,11 @@ static trk_status check_polar(const struct trk_sensor_params *sp, const char *co
     if ((st = check_real(sp->sigma_range_m, 0, 1, TRK_REAL_C(1e6), name[F_SIGMA_R], field)) != TRK_OK ||
         (st = check_real(sp->sigma_bearing_rad, 0, 1, TRK_REAL_C(0.5), name[F_SIGMA_B], field)) != TRK_OK)
         return st;
+    /* their squares are the variances: a sigma whose square underflows made
+     * every detection's covariance singular (a sensor blind without a word) */
+    if (!(sp->sigma_range_m * sp->sigma_range_m >= TRK_REAL_MIN)) return refuse(field, name[F_SIGMA_R], TRK_E_RANGE);
+    if (!(sp->sigma_bearing_rad * sp->sigma_bearing_rad >= TRK_REAL_MIN))
+        return refuse(field, name[F_SIGMA_B], TRK_E_RANGE);
     return TRK_OK;
 }
 

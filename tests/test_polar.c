@@ -76,6 +76,25 @@ static void test_refusals(void **state)
     pd.range_m = 100;
     sp.kind = TRK_SENSOR_CARTESIAN;
     TRK_ASSERT_STATUS(trk_polar_to_cartesian(&sp, &o, &pd, &d), TRK_E_ARG);
+    /* at the pose the bearing is lost: sr^2 I in either conversion, for an
+     * offset of 0 and for one whose square underflows (it was 0/0: NaN) */
+    polar_sensor(&sp, 7.5, 1.5 * DEG);
+    for (int conv = 0; conv < 2; conv++) {
+        sp.conversion = conv ? TRK_POLAR_UNBIASED : TRK_POLAR_FIRST_ORDER;
+        const trk_real tiny = trk_sqrt(TRK_REAL_MIN) / 4, offsets[][2] = {{0, 0}, {tiny, tiny}, {0, -tiny}};
+        for (size_t i = 0; i < 3; i++) {
+            trk_real c[3];
+            trk_polar_cov(&sp, offsets[i][0], offsets[i][1], c);
+            TRK_ASSERT_NEAR(c[TRK_COV2_XX], 56.25, 0, TRK_TOL(1e-15, 1e-6));
+            TRK_ASSERT_NEAR(c[TRK_COV2_XY], 0, 0, 0);
+            TRK_ASSERT_NEAR(c[TRK_COV2_YY], 56.25, 0, TRK_TOL(1e-15, 1e-6));
+        }
+    }
+    /* a range below the pose's resolution: converted onto the pose, finite */
+    const struct trk_pose far = {TRK_REAL_C(1e8), TRK_REAL_C(1e8), 0};
+    pd.range_m = TRK_REAL_C(1e-9);
+    TRK_ASSERT_OK(trk_polar_to_cartesian(&sp, &far, &pd, &d));
+    assert_true(isfinite(d.cov_m2[0]) && isfinite(d.cov_m2[1]) && isfinite(d.cov_m2[2]));
 }
 
 /* Monte Carlo of one true position (r0, b0) seen with sigma_r, sigma_b:
@@ -191,6 +210,13 @@ static void test_params(void **state)
     check_refused(&q, "sensor[0].sigma_bearing_rad", TRK_E_RANGE);
     q = p, q.sensor[0].sigma_range_m = 0;
     check_refused(&q, "sensor[0].sigma_range_m", TRK_E_RANGE);
+    /* a sigma whose square (the variance) underflows: every detection would be singular */
+    q = p, q.sensor[0].sigma_range_m = trk_sqrt(TRK_REAL_MIN) / 2;
+    check_refused(&q, "sensor[0].sigma_range_m", TRK_E_RANGE);
+    q = p, q.sensor[0].sigma_bearing_rad = trk_sqrt(TRK_REAL_MIN) / 2;
+    check_refused(&q, "sensor[0].sigma_bearing_rad", TRK_E_RANGE);
+    q = p, q.sensor[0].sigma_range_m = 2 * trk_sqrt(TRK_REAL_MIN);
+    TRK_ASSERT_OK(trk_tracker_check_params(&q, NULL));
     q = p, q.sensor[0].conversion = (enum trk_polar_conversion)2;
     check_refused(&q, "sensor[0].conversion", TRK_E_ARG);
     q = p, q.sensor[0].pose.x_m = (trk_real)INFINITY;

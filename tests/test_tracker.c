@@ -1384,6 +1384,44 @@ static void test_gate_count_split_echo(void **state)
     assert_true(sum_on <= sum_off + 20); /* at most a scan later on average */
 }
 
+/* A confirmed track that the sensor stops seeing because the platform
+ * went far away (pose 1e7 m off, inside max_coord_m) coasts: its
+ * prediction's polar R there (cross-range sigma 2.6e5 m against 7.5 m)
+ * cannot be factored in float, so an unseen track's innovation takes the
+ * sensor's own R; it once ended as a numerical failure. */
+static void test_unseen_far_coasts(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    trk_tracker_default_params(&p);
+    p.stationary_d2 = 0;
+    struct trk_sensor_params *s = &p.sensor[0];
+    s->kind = TRK_SENSOR_POLAR;
+    s->sigma_range_m = TRK_REAL_C(7.5);
+    s->sigma_bearing_rad = TRK_REAL_C(0.026);
+    s->clutter_density_per_m2 = TRK_REAL_C(1e-6);
+    s->coverage.max_range_m = 5000;
+    p.max_unseen_scans = 1000;
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const struct trk_pose near = {0, 0, 0}, far = {TRK_REAL_C(1e7), TRK_REAL_C(1e7), 0};
+    struct trk_scan scan;
+    struct trk_scan_report rep;
+    int k = 0;
+    for (; k < 10; k++) {
+        const struct trk_polar_detection d = {1000, TRK_REAL_C(0.1), 0, 0};
+        trk_scan_init_polar(&scan, SEC(2 * k), 0, 1, &d, &near);
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+    }
+    assert_int_equal(trk_test_count_confirmed(&tk), 1);
+    for (; k < 15; k++) {
+        trk_scan_init_polar(&scan, SEC(2 * k), 0, 0, NULL, &far);
+        TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
+        assert_int_equal(rep.n_numerical, 0);
+        check_invariants(&tk);
+    }
+    assert_int_equal(trk_test_count_confirmed(&tk), 1); /* coasting, unseen */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1406,6 +1444,7 @@ int main(void)
         cmocka_unit_test(test_merge_keeps_more_probable),
         cmocka_unit_test(test_gate_count_check),
         cmocka_unit_test(test_gate_count_split_echo),
+        cmocka_unit_test(test_unseen_far_coasts),
         cmocka_unit_test(test_merge_many),
         cmocka_unit_test(test_init_exclusion_and_visibility_reject),
     };

@@ -350,8 +350,10 @@ struct trk_sensor_params {
      * gate volume, its covariance bound) from the same at its predicted
      * position; meas_cov_m2 is then unused. */
     enum trk_sensor_kind kind;
-    trk_real sigma_range_m;             /**< polar: range noise (1 sigma), > 0 */
-    trk_real sigma_bearing_rad;         /**< polar: bearing noise (1 sigma), (0, 0.5] */
+    trk_real sigma_range_m;             /**< polar: range noise (1 sigma), (0, 1e6], its
+                                           square a normal number */
+    trk_real sigma_bearing_rad;         /**< polar: bearing noise (1 sigma), (0, 0.5], its
+                                           square a normal number */
     enum trk_polar_conversion conversion; /**< polar: first-order (default) or unbiased */
     struct trk_pose pose;               /**< the pose of a scan without its own (has_pose 0) */
     struct trk_pd_profile pd_profile;   /**< P_D over range from the pose (n = 0: pd everywhere);
@@ -1272,8 +1274,9 @@ TRK_NODISCARD trk_status trk_polar_to_cartesian(const struct trk_sensor_params *
  *                 (r sin b, r cos b) at the measured r, b)
  *   unbiased:     Mo et al. (1998) eq 7 at the measured r, b (see
  *                 docs/conventions.md "Polar detections")
- * At the pose itself (dx = dy = 0) the covariance is singular (refused as
- * not SPD where used). */
+ * At the pose itself (dx = dy = 0, or an offset whose square is too small
+ * to divide sr^2 by) the bearing is lost: the covariance is sr^2 I, the
+ * range's variance in every direction. */
 void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real dy_m, trk_real cov_m2[3]);
 
 /** The clutter density of sensor sp at (x_m, y_m) with the sensor at pose:
