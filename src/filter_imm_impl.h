@@ -96,14 +96,19 @@ static trk_status imm_predict(struct trk_tracker *t, const struct trk_track *tr,
         st = trk_i_pda_check(NX, s->x[m], s->p[m]);
         if (st == TRK_OK) {
             trk_real *r = t->ws.imm.r[m];
-            /* out of the sensor's sight, the sensor's own R (pred_finish) */
-            const trk_real *r_m = sensor_pd_at(t, scan, s->x[m][X], s->x[m][Y]) > 0
-                                      ? sensor_r_at(t, scan, s->x[m][X], s->x[m][Y], r)
-                                      : t->r[scan->sensor_id];
+            const trk_real *r_m = sensor_r_at(t, scan, s->x[m][X], s->x[m][Y], r);
             if (r_m != r)
                 for (int i = 0; i < NZ * NZ; i++) r[i] = r_m[i];
             st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), r, s->x[m], s->p[m], t->ws.imm.pht[m],
                                       &t->ws.imm.inn[m]);
+            if (st != TRK_OK && !(sensor_pd_at(t, scan, s->x[m][X], s->x[m][Y]) > 0)) {
+                /* out of the sensor's sight the conversion's R may not factor
+                 * (pred_finish): the model gates nothing there, so the
+                 * sensor's own R gives its innovation the form it needs */
+                for (int i = 0; i < NZ * NZ; i++) r[i] = t->r[scan->sensor_id][i];
+                st = trk_i_innovation_sel(NX, NZ, trk_cv2_h, trk_i_cv2_sel(), r, s->x[m], s->p[m],
+                                          t->ws.imm.pht[m], &t->ws.imm.inn[m]);
+            }
         }
     }
     if (st != TRK_OK) return st;

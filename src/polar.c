@@ -42,9 +42,11 @@ void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real d
 {
     const trk_real vr = sp->sigma_range_m * sp->sigma_range_m, vb = sp->sigma_bearing_rad * sp->sigma_bearing_rad;
     const trk_real xx = dx_m * dx_m, yy = dy_m * dy_m, xy = dx_m * dy_m, rho2 = xx + yy;
-    if (!(vr / rho2 <= TRK_REAL_MAX)) { /* at the pose (the offset's square 0 or too small to
-                                           divide by): no bearing, and the range's variance in
-                                           every direction */
+    if (vb * rho2 < TRK_COV2_MIN_REL_DET * vr) { /* at the pose, or so near it that the
+                                                   cross-range variance is lost to rounding
+                                                   against the range's: no bearing, and the
+                                                   range's variance in every direction (a NaN
+                                                   offset stays NaN) */
         cov_m2[TRK_COV2_XX] = cov_m2[TRK_COV2_YY] = vr;
         cov_m2[TRK_COV2_XY] = 0;
         return;

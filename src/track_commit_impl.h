@@ -100,7 +100,8 @@ static void clutter_look(const struct trk_tracker *t, const struct trk_innovatio
 /* The gate-count check's ring (trk/tracker.h count_alpha): how many of the
  * gated set's detections lie in the outer half of the gate's area, gamma /
  * 2 < d2 (with the prediction's S, or S_j for a detection with its own
- * covariance; an IMM track's from its prediction pr). Clutter spreads over
+ * covariance; an IMM track's from its combined prediction pr, and only
+ * inside that ellipse: the expected count is of its area). Clutter spreads over
  * the gate, so half of it falls there; a target's own returns, however
  * many (a split echo, multipath), sit about its prediction, and only
  * sqrt(1 - P_G) - (1 - P_G) of each does. */
@@ -120,7 +121,8 @@ static int gate_ring_count(const struct pred *pr, const struct trk_i_pda_set *se
         const trk_real sxx = s[S(ZX, ZX)], sxy = s[S(ZX, ZY)], syy = s[S(ZY, ZY)]; /* symmetric */
         const trk_real d2 = (syy * nu[ZX] * nu[ZX] - 2 * sxy * nu[ZX] * nu[ZY] + sxx * nu[ZY] * nu[ZY]) /
                             (sxx * syy - sxy * sxy);
-        n += d2 > half;
+        n += d2 > half && d2 <= gamma; /* an IMM track's union of gates reaches beyond
+                                          the combined ellipse, whose area V_G is */
     }
     return n;
 }

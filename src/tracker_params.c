@@ -317,7 +317,7 @@ static trk_status check_view(const struct trk_tracker_params *p, const struct tr
      * configured density times min_ratio) stays a normal number: a cell
      * never goes blind, and no cell's expected count overflows */
     if (sp->clutter_density_per_m2 > TRK_REAL_C(1e6)) return refuse(field, name[F_DENSITY], TRK_E_RANGE);
-    const int mapped = p->clutter_map.n_range > 0 && p->clutter_map.n_bearing > 0;
+    const int mapped = trk_i_map_kept(&p->clutter_map, sp);
     if (mapped && sp->clutter_density_per_m2 > 0 && !(sp->clutter_density_per_m2 * p->clutter_map.min_ratio >= TRK_REAL_MIN))
         return refuse(field, "clutter_map.min_ratio", TRK_E_RANGE);
     const struct trk_clutter_profile *cp = &sp->clutter_profile;

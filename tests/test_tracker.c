@@ -1196,9 +1196,11 @@ static void test_init_exclusion_and_visibility_reject(void **state)
 /* The gate-count check's ring of a track's look, recomputed from the
  * track before the scan (prev): its CV prediction over dt_s with process
  * noise q (white acceleration: Q = q [dt^3/3, dt^2/2; dt^2/2, dt] per axis),
- * S = H P H' + r I, and the detections with gamma / 2 < d2 <= gamma. */
+ * S = H P H' + r I, and the detections with gamma / 2 < d2 <= gamma; in
+ * *expected the count the model expects there, lambda V_G / 2 + P_D
+ * (e^(-gamma/4) - e^(-gamma/2)), V_G = pi gamma sqrt(det S). */
 static int ring_count(const struct trk_track *prev, const struct trk_detection *det, size_t n, double q, double dt_s,
-                      double r_m2, double gamma)
+                      double r_m2, double gamma, double lambda, double pd, double *expected)
 {
     const double *p = NULL;
     double pp[TRK_CV2_NX * TRK_CV2_NX];
@@ -1209,6 +1211,8 @@ static int ring_count(const struct trk_track *prev, const struct trk_detection *
     const double syy = p[P(Y, Y)] + 2 * dt * p[P(Y, VY)] + dt * dt * p[P(VY, VY)] + q_pp + r_m2;
     const double sxy = p[P(X, Y)] + dt * (p[P(X, VY)] + p[P(VX, Y)]) + dt * dt * p[P(VX, VY)];
     const double zx = (double)prev->x[X] + dt * (double)prev->x[VX], zy = (double)prev->x[Y] + dt * (double)prev->x[VY];
+    const double pi = 3.14159265358979323846;
+    *expected = lambda * pi * gamma * sqrt(sxx * syy - sxy * sxy) / 2 + pd * (exp(-gamma / 4) - exp(-gamma / 2));
     int ring = 0;
     for (size_t j = 0; j < n; j++) {
         const double ex = (double)det[j].x_m - zx, ey = (double)det[j].y_m - zy;
@@ -1226,8 +1230,10 @@ static int ring_count(const struct trk_track *prev, const struct trk_detection *
  * one nearest it) is confirmed, -1 if it is not within 30 scans; *first_pass
  * the track at the first scan its existence reached p_confirm, and
  * *gated_sum the closed form of its count_gated there, sum over its scans
- * of (1 - 1/tau)^age n_ring (ring_count). */
-static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *first_pass, double *gated_sum)
+ * of (1 - 1/tau)^age n_ring (ring_count), and *expected_sum that of its
+ * count_expected. */
+static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *first_pass, double *gated_sum,
+                          double *expected_sum)
 {
     struct trk_tracker_params p;
     trk_tracker_default_params(&p);
@@ -1241,6 +1247,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
     static uint32_t slot_id[TRK_MAX_TRACKS];
     static double slot_sum[TRK_MAX_TRACKS];
     static struct trk_track slot_prev[TRK_MAX_TRACKS]; /* each slot's track before the scan */
+    static double slot_mu[TRK_MAX_TRACKS];
     const double gamma = -2 * log(1 - (double)p.gate_prob); /* chi-square, 2 degrees of freedom */
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++) slot_id[i] = 0;
     int passed = 0;
@@ -1262,19 +1269,22 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
         check_invariants(&tk);
         const struct trk_track *best = NULL;
-        double best_d = 1e300, best_sum = 0;
+        double best_d = 1e300, best_sum = 0, best_mu = 0;
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             const struct trk_track *a = trk_tracker_track(&tk, i);
             if (!a || a->status == TRK_TRACK_TERMINATED) continue;
             /* each track's sum from the scan after its start (its first look) */
             if (a->id != slot_id[i]) {
                 slot_id[i] = a->id;
-                slot_sum[i] = 0;
+                slot_sum[i] = slot_mu[i] = 0;
             } else {
                 const double dt_s = (double)(a->time_us - slot_prev[i].time_us) * 1e-6;
-                slot_sum[i] = keep * slot_sum[i] +
-                              ring_count(&slot_prev[i], det, n, (double)p.process_noise_q, dt_s,
-                                         (double)p.sensor[0].meas_cov_m2[TRK_COV2_XX], gamma);
+                double mu_look;
+                slot_sum[i] = keep * slot_sum[i] + ring_count(&slot_prev[i], det, n, (double)p.process_noise_q, dt_s,
+                                                              (double)p.sensor[0].meas_cov_m2[TRK_COV2_XX], gamma,
+                                                              (double)p.sensor[0].clutter_density_per_m2,
+                                                              (double)p.sensor[0].pd, &mu_look);
+                slot_mu[i] = keep * slot_mu[i] + mu_look;
             }
             slot_prev[i] = *a;
             const double d = hypot((double)a->x[X] - tx, (double)a->x[Y]);
@@ -1282,6 +1292,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
                 best_d = d;
                 best = a;
                 best_sum = slot_sum[i];
+                best_mu = slot_mu[i];
             }
         }
         if (!best) continue;
@@ -1290,6 +1301,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
             passed = 1;
             if (first_pass) *first_pass = *best;
             if (gated_sum) *gated_sum = best_sum;
+            if (expected_sum) *expected_sum = best_mu;
         }
     }
     return -1;
@@ -1305,19 +1317,21 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
 static void test_gate_count_check(void **state)
 {
     (void)state;
-    const int clean_off = gate_count_run(0, 0, NULL, NULL), clean_on = gate_count_run(TRK_REAL_C(0.01), 0, NULL, NULL);
+    const int clean_off = gate_count_run(0, 0, NULL, NULL, NULL),
+              clean_on = gate_count_run(TRK_REAL_C(0.01), 0, NULL, NULL, NULL);
     assert_true(clean_off >= 1);
     assert_int_equal(clean_on, clean_off);
-    const int dense_off = gate_count_run(0, 8, NULL, NULL);
+    const int dense_off = gate_count_run(0, 8, NULL, NULL, NULL);
     assert_true(dense_off >= 1); /* later than alone: the extras share its detections */
     struct trk_track held;
-    double gated_sum = -1;
+    double gated_sum = -1, expected_sum = -1;
     memset(&held, 0, sizeof held);
-    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 8, &held, &gated_sum), -1);
+    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 8, &held, &gated_sum, &expected_sum), -1);
     assert_int_equal(held.status, TRK_TRACK_TENTATIVE);
     assert_int_equal(held.stationary, 0); /* held by the check, not by the motion test */
     const trk_real n = held.test.confirm.existence.count_gated, mu = held.test.confirm.existence.count_expected;
     TRK_ASSERT_NEAR(n, gated_sum, 1e-9, TRK_TOL(1e-12, 1e-5));
+    TRK_ASSERT_NEAR(mu, expected_sum, 0, TRK_TOL(1e-9, 1e-4)); /* the prediction's S recomputed in double */
     assert_true(n > 3 * mu); /* its ring should hold a tenth of its target's detections, and
                                 holds about half of four extras a scan */
     const trk_real tail = trk_i_gate_count_tail(n, mu);

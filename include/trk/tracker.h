@@ -1274,9 +1274,10 @@ TRK_NODISCARD trk_status trk_polar_to_cartesian(const struct trk_sensor_params *
  *                 (r sin b, r cos b) at the measured r, b)
  *   unbiased:     Mo et al. (1998) eq 7 at the measured r, b (see
  *                 docs/conventions.md "Polar detections")
- * At the pose itself (dx = dy = 0, or an offset whose square is too small
- * to divide sr^2 by) the bearing is lost: the covariance is sr^2 I, the
- * range's variance in every direction. */
+ * At the pose, or so near it that the cross-range variance sb^2 (dx^2 +
+ * dy^2) is below TRK_COV2_MIN_REL_DET sr^2 (lost to rounding against the
+ * range's), the bearing is lost: the covariance is sr^2 I, the range's
+ * variance in every direction. */
 void trk_polar_cov(const struct trk_sensor_params *sp, trk_real dx_m, trk_real dy_m, trk_real cov_m2[3]);
 
 /** The clutter density of sensor sp at (x_m, y_m) with the sensor at pose:

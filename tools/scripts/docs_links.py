@@ -22,7 +22,7 @@ import sys
 
 LINK = re.compile(r'(?<!!)\[(?:[^\[\]]|\[[^\]]*\])*\]\(([^()\s]+(?:\([^()]*\))?[^()\s]*)(?:\s+"[^"]*")?\)')
 IMAGE = re.compile(r'!\[[^\]]*\]\(([^()\s]+)\)')
-HEADING = re.compile(r'^(#{1,6})\s+(.*?)\s*#*\s*$')
+HEADING = re.compile(r'^(#{1,6})\s+(.*?)(?:\s+#+)?\s*$')
 ANCHOR = re.compile(r'<a\s+(?:name|id)="([^"]+)"|\sid="([^"]+)"')
 FENCE = re.compile(r'^\s*(```|~~~)')
 
@@ -80,7 +80,8 @@ def check(path, root):
             n += 1
             file_part, _, frag = target.partition('#')
             dest = os.path.normpath(os.path.join(os.path.dirname(path), file_part)) if file_part else path
-            if not os.path.realpath(dest).startswith(os.path.realpath(root)):
+            real_root = os.path.realpath(root)
+            if os.path.commonpath([os.path.realpath(dest), real_root]) != real_root:
                 bad.append('%s:%d: %s: outside the repository' % (path, num, target))
             elif not os.path.exists(dest):
                 bad.append('%s:%d: %s: no such file' % (path, num, target))
@@ -96,6 +97,9 @@ def main():
     a = ap.parse_args()
     bad, total = [], 0
     for f in a.files:
+        if not os.path.isfile(f):  # listed by git, gone from the tree
+            bad.append('%s: no such file' % f)
+            continue
         b, n = check(f, a.root)
         bad += b
         total += n
