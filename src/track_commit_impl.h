@@ -142,6 +142,7 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     look->pfa_gate = -trk_expm1(-lambda_vg);
     look->n_ring = 0;
     look->n_ring_expected = 0;
+    look->n_expected_all = lambda_vg + TRK_TARGET_RETURNS_MAX * pr->pd * pr->pda->params.gate_prob;
     if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
         t->params.confirm.u.existence.count_alpha > 0) {
         const trk_real miss = 1 - pr->pda->params.gate_prob; /* e^(-gamma/2) */

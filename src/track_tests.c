@@ -97,6 +97,7 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
         const trk_real r = t->params.confirm.u.existence.reject_odds_ratio, e0 = tr->existence0;
         c->existence.reject_below = r > 0 && e0 < 1 ? r * e0 / (1 - e0 + r * e0) : 0;
         c->existence.count_gated = c->existence.count_expected = 0;
+        c->existence.count_gated_all = c->existence.count_expected_all = 0;
         tr->confirm_stat = tr->vis.pv;
         break;
     }
@@ -112,6 +113,10 @@ static void gate_count_look(const struct trk_tracker *t, struct trk_track *tr, c
     const trk_real keep = t->confirm_model.existence.count_keep;
     tr->test.confirm.existence.count_gated = keep * tr->test.confirm.existence.count_gated + (trk_real)look->n_ring;
     tr->test.confirm.existence.count_expected = keep * tr->test.confirm.existence.count_expected + look->n_ring_expected;
+    tr->test.confirm.existence.count_gated_all =
+        keep * tr->test.confirm.existence.count_gated_all + (trk_real)look->n_gated;
+    tr->test.confirm.existence.count_expected_all =
+        keep * tr->test.confirm.existence.count_expected_all + look->n_expected_all;
 }
 
 trk_real trk_i_gate_count_tail(trk_real gated, trk_real expected)
@@ -134,8 +139,10 @@ static enum trk_decision existence_confirm(const struct trk_existence_confirm_pa
 {
     if (tr->vis.pv >= x->p_confirm) {
         const trk_real alpha = x->count_alpha;
-        if (alpha > 0 && trk_i_gate_count_tail(tr->test.confirm.existence.count_gated,
-                                               tr->test.confirm.existence.count_expected) < alpha)
+        if (alpha > 0 && (trk_i_gate_count_tail(tr->test.confirm.existence.count_gated,
+                                                tr->test.confirm.existence.count_expected) < alpha ||
+                          trk_i_gate_count_tail(tr->test.confirm.existence.count_gated_all,
+                                                tr->test.confirm.existence.count_expected_all) < alpha))
             return TRK_DECISION_CONTINUE;
         return TRK_DECISION_CONFIRM;
     }

@@ -22,6 +22,8 @@ struct trk_look {
      * track's model expects there, lambda V_G / 2 + P_D (sqrt(1 - P_G) - (1 - P_G)) */
     int n_ring;
     trk_real n_ring_expected;
+    trk_real n_expected_all; /* lambda V_G + TRK_TARGET_RETURNS_MAX P_D P_G: the whole gate's,
+                                for a target of that many highlights */
     trk_real beta0;
     /* clutter tests: nearest detection of the scan (has_nearest = 0: none) */
     int has_nearest;

@@ -1230,10 +1230,10 @@ static int ring_count(const struct trk_track *prev, const struct trk_detection *
  * one nearest it) is confirmed, -1 if it is not within 30 scans; *first_pass
  * the track at the first scan its existence reached p_confirm, and
  * *gated_sum the closed form of its count_gated there, sum over its scans
- * of (1 - 1/tau)^age n_ring (ring_count), and *expected_sum that of its
- * count_expected. */
+ * of (1 - 1/tau)^age n_ring (ring_count), *expected_sum that of its
+ * count_expected, and *all_sum that of n_gated (count_gated_all). */
 static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *first_pass, double *gated_sum,
-                          double *expected_sum)
+                          double *expected_sum, double *all_sum)
 {
     struct trk_tracker_params p;
     trk_tracker_default_params(&p);
@@ -1247,7 +1247,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
     static uint32_t slot_id[TRK_MAX_TRACKS];
     static double slot_sum[TRK_MAX_TRACKS];
     static struct trk_track slot_prev[TRK_MAX_TRACKS]; /* each slot's track before the scan */
-    static double slot_mu[TRK_MAX_TRACKS];
+    static double slot_mu[TRK_MAX_TRACKS], slot_all[TRK_MAX_TRACKS];
     const double gamma = -2 * log(1 - (double)p.gate_prob); /* chi-square, 2 degrees of freedom */
     for (size_t i = 0; i < TRK_MAX_TRACKS; i++) slot_id[i] = 0;
     int passed = 0;
@@ -1269,14 +1269,14 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
         TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &scan, &rep));
         check_invariants(&tk);
         const struct trk_track *best = NULL;
-        double best_d = 1e300, best_sum = 0, best_mu = 0;
+        double best_d = 1e300, best_sum = 0, best_mu = 0, best_all = 0;
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             const struct trk_track *a = trk_tracker_track(&tk, i);
             if (!a || a->status == TRK_TRACK_TERMINATED) continue;
             /* each track's sum from the scan after its start (its first look) */
             if (a->id != slot_id[i]) {
                 slot_id[i] = a->id;
-                slot_sum[i] = slot_mu[i] = 0;
+                slot_sum[i] = slot_mu[i] = slot_all[i] = 0;
             } else {
                 const double dt_s = (double)(a->time_us - slot_prev[i].time_us) * 1e-6;
                 double mu_look;
@@ -1285,6 +1285,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
                                                               (double)p.sensor[0].clutter_density_per_m2,
                                                               (double)p.sensor[0].pd, &mu_look);
                 slot_mu[i] = keep * slot_mu[i] + mu_look;
+                slot_all[i] = keep * slot_all[i] + (double)a->n_gated_last;
             }
             slot_prev[i] = *a;
             const double d = hypot((double)a->x[X] - tx, (double)a->x[Y]);
@@ -1293,6 +1294,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
                 best = a;
                 best_sum = slot_sum[i];
                 best_mu = slot_mu[i];
+                best_all = slot_all[i];
             }
         }
         if (!best) continue;
@@ -1302,6 +1304,7 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
             if (first_pass) *first_pass = *best;
             if (gated_sum) *gated_sum = best_sum;
             if (expected_sum) *expected_sum = best_mu;
+            if (all_sum) *all_sum = best_all;
         }
     }
     return -1;
@@ -1317,21 +1320,22 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
 static void test_gate_count_check(void **state)
 {
     (void)state;
-    const int clean_off = gate_count_run(0, 0, NULL, NULL, NULL),
-              clean_on = gate_count_run(TRK_REAL_C(0.01), 0, NULL, NULL, NULL);
+    const int clean_off = gate_count_run(0, 0, NULL, NULL, NULL, NULL),
+              clean_on = gate_count_run(TRK_REAL_C(0.01), 0, NULL, NULL, NULL, NULL);
     assert_true(clean_off >= 1);
     assert_int_equal(clean_on, clean_off);
-    const int dense_off = gate_count_run(0, 8, NULL, NULL, NULL);
+    const int dense_off = gate_count_run(0, 8, NULL, NULL, NULL, NULL);
     assert_true(dense_off >= 1); /* later than alone: the extras share its detections */
     struct trk_track held;
-    double gated_sum = -1, expected_sum = -1;
+    double gated_sum = -1, expected_sum = -1, all_sum = -1;
     memset(&held, 0, sizeof held);
-    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 8, &held, &gated_sum, &expected_sum), -1);
+    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 8, &held, &gated_sum, &expected_sum, &all_sum), -1);
     assert_int_equal(held.status, TRK_TRACK_TENTATIVE);
     assert_int_equal(held.stationary, 0); /* held by the check, not by the motion test */
     const trk_real n = held.test.confirm.existence.count_gated, mu = held.test.confirm.existence.count_expected;
     TRK_ASSERT_NEAR(n, gated_sum, 1e-9, TRK_TOL(1e-12, 1e-5));
     TRK_ASSERT_NEAR(mu, expected_sum, 0, TRK_TOL(1e-9, 1e-4)); /* the prediction's S recomputed in double */
+    TRK_ASSERT_NEAR(held.test.confirm.existence.count_gated_all, all_sum, 1e-9, TRK_TOL(1e-12, 1e-5));
     assert_true(n > 3 * mu); /* its ring should hold a tenth of its target's detections, and
                                 holds about half of four extras a scan */
     const trk_real tail = trk_i_gate_count_tail(n, mu);

@@ -401,6 +401,11 @@ enum trk_confirm_method {
                                     track_visibility */
 };
 
+/** The most detections one target gives a scan that the gate-count check
+ * (trk_existence_confirm_params count_alpha) allows over its whole gate: a
+ * sonar target's echo may split into highlights (bow, sail, stern). */
+#define TRK_TARGET_RETURNS_MAX 3
+
 /** The existence methods' probabilities must be normal numbers: a value
  * written through another member of the method union (e.g. confirm.u.mn.m = 4
  * while the method is existence) reads as a subnormal and is refused. */
@@ -420,7 +425,10 @@ struct trk_existence_confirm_params {
                                     each summed over its looks with the weight
                                     (1 - 1/tau)^age (tau = clutter_map.time_constant_scans,
                                     the window of the density it is given), the Poisson
-                                    tail P(N >= floor(n); mu) < count_alpha. The density
+                                    tail P(N >= floor(n); mu) < count_alpha; or the same
+                                    test over the whole gate with mu = lambda V_G +
+                                    TRK_TARGET_RETURNS_MAX P_D P_G (a spot denser than a
+                                    target's highlights, inside the ring). The density
                                     is then wrong at the track (a reverberation patch the
                                     map averages over a larger cell, a persistent return
                                     more often seen than a target there). Default 0.01 */
@@ -476,7 +484,10 @@ union trk_confirm_state {
         trk_real count_gated;    /**< the gate-count check's weighted sums of the
                                     detections in the gate's ring, */
         trk_real count_expected; /**< ... and of lambda V_G / 2 + P_D (sqrt(1 - P_G) -
-                                    (1 - P_G)) (count_alpha) */
+                                    (1 - P_G)) (count_alpha); */
+        trk_real count_gated_all;    /**< of the detections in the whole gate, */
+        trk_real count_expected_all; /**< ... and of lambda V_G + TRK_TARGET_RETURNS_MAX
+                                        P_D P_G */
     } existence;  /**< TRK_CONFIRM_EXISTENCE */
 #if TRK_WITH_CLUTTER_TESTS
     struct trk_clutter_chi2 chi2;  /**< TRK_CONFIRM_CLUTTER_CHI2 */
