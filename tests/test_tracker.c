@@ -1224,7 +1224,8 @@ static int ring_count(const struct trk_track *prev, const struct trk_detection *
 
 /* One run of the gate-count check's scenario: a target moving at 10 m/s
  * along x, detected where it is at every scan (1 s apart), and with extras
- * other detections each scan scattered within 20 m of it (a clutter density
+ * other detections each scan scattered within spread_m of it in x and y
+ * (20 m: about its gate; a clutter density
  * far above the configured 1e-6 per m2, as in a reverberation patch that a
  * clutter map averages away). The scan at which the target's track (the
  * one nearest it) is confirmed, -1 if it is not within 30 scans; *first_pass
@@ -1232,8 +1233,8 @@ static int ring_count(const struct trk_track *prev, const struct trk_detection *
  * *gated_sum the closed form of its count_gated there, sum over its scans
  * of (1 - 1/tau)^age n_ring (ring_count), *expected_sum that of its
  * count_expected, and *all_sum that of n_gated (count_gated_all). */
-static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *first_pass, double *gated_sum,
-                          double *expected_sum, double *all_sum)
+static int gate_count_run(trk_real count_alpha, int extras, double spread_m, struct trk_track *first_pass,
+                          double *gated_sum, double *expected_sum, double *all_sum)
 {
     struct trk_tracker_params p;
     trk_tracker_default_params(&p);
@@ -1260,8 +1261,8 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
         det[n].has_cov = det[n].has_amplitude = 0;
         n++;
         for (int e = 0; e < extras && n < TRK_MAX_DETECTIONS; e++, n++) {
-            det[n].x_m = (trk_real)(tx - 20 + 40 * urand());
-            det[n].y_m = (trk_real)(-20 + 40 * urand());
+            det[n].x_m = (trk_real)(tx - spread_m + 2 * spread_m * urand());
+            det[n].y_m = (trk_real)(-spread_m + 2 * spread_m * urand());
             det[n].has_cov = det[n].has_amplitude = 0;
         }
         struct trk_scan scan = {SEC(k), 0, n, det, NULL, 0, {0, 0, 0}, NULL};
@@ -1320,16 +1321,16 @@ static int gate_count_run(trk_real count_alpha, int extras, struct trk_track *fi
 static void test_gate_count_check(void **state)
 {
     (void)state;
-    const int clean_off = gate_count_run(0, 0, NULL, NULL, NULL, NULL),
-              clean_on = gate_count_run(TRK_REAL_C(0.01), 0, NULL, NULL, NULL, NULL);
+    const int clean_off = gate_count_run(0, 0, 20, NULL, NULL, NULL, NULL),
+              clean_on = gate_count_run(TRK_REAL_C(0.01), 0, 20, NULL, NULL, NULL, NULL);
     assert_true(clean_off >= 1);
     assert_int_equal(clean_on, clean_off);
-    const int dense_off = gate_count_run(0, 8, NULL, NULL, NULL, NULL);
+    const int dense_off = gate_count_run(0, 8, 20, NULL, NULL, NULL, NULL);
     assert_true(dense_off >= 1); /* later than alone: the extras share its detections */
     struct trk_track held;
     double gated_sum = -1, expected_sum = -1, all_sum = -1;
     memset(&held, 0, sizeof held);
-    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 8, &held, &gated_sum, &expected_sum, &all_sum), -1);
+    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 8, 20, &held, &gated_sum, &expected_sum, &all_sum), -1);
     assert_int_equal(held.status, TRK_TRACK_TENTATIVE);
     assert_int_equal(held.stationary, 0); /* held by the check, not by the motion test */
     const trk_real n = held.test.confirm.existence.count_gated, mu = held.test.confirm.existence.count_expected;
@@ -1337,10 +1338,21 @@ static void test_gate_count_check(void **state)
     TRK_ASSERT_NEAR(mu, expected_sum, 0, TRK_TOL(1e-9, 1e-4)); /* the prediction's S recomputed in double */
     TRK_ASSERT_NEAR(held.test.confirm.existence.count_gated_all, all_sum, 1e-9, TRK_TOL(1e-12, 1e-5));
     assert_true(n > 3 * mu); /* its ring should hold a tenth of its target's detections, and
-                                holds about half of four extras a scan */
+                                holds about half of eight extras a scan */
     const trk_real tail = trk_i_gate_count_tail(n, mu);
     TRK_ASSERT_NEAR(tail, trk_chi2_cdf(2 * (int)trk_floor(n), 2 * mu), 0, TRK_TOL(1e-12, 1e-5));
     assert_true(tail < TRK_REAL_C(0.01));
+    /* a spot denser than a target's highlights inside the ring's hole (eight
+     * extras within 2 m, where d2 < gamma / 2): the ring holds nothing of it,
+     * the whole gate against TRK_TARGET_RETURNS_MAX highlights holds the track */
+    assert_true(gate_count_run(0, 8, 2, NULL, NULL, NULL, NULL) >= 1);
+    memset(&held, 0, sizeof held);
+    assert_int_equal(gate_count_run(TRK_REAL_C(0.01), 8, 2, &held, &gated_sum, &expected_sum, &all_sum), -1);
+    TRK_ASSERT_NEAR(held.test.confirm.existence.count_gated_all, all_sum, 1e-9, TRK_TOL(1e-12, 1e-5));
+    assert_true(trk_i_gate_count_tail(held.test.confirm.existence.count_gated, held.test.confirm.existence.count_expected) >=
+                TRK_REAL_C(0.01)); /* not the ring's doing */
+    assert_true(trk_i_gate_count_tail(held.test.confirm.existence.count_gated_all,
+                                      held.test.confirm.existence.count_expected_all) < TRK_REAL_C(0.01));
     /* the tail's edges: below one detection nothing is too many */
     TRK_ASSERT_NEAR(trk_i_gate_count_tail(TRK_REAL_C(0.9), TRK_REAL_C(0.5)), 1, 0, 0);
     TRK_ASSERT_NEAR(trk_i_gate_count_tail(1, TRK_REAL_C(0.5)), 1 - trk_exp(-TRK_REAL_C(0.5)), 0, TRK_TOL(1e-14, 1e-6));
