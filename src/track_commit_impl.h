@@ -99,11 +99,12 @@ static void clutter_look(const struct trk_tracker *t, const struct trk_innovatio
 
 /* The gate-count check's ring (trk/tracker.h count_alpha): how many of the
  * gated set's detections lie in the outer half of the gate's area, gamma /
- * 2 < d2 (with the prediction's S, or S_j for a detection with its own
- * covariance; an IMM track's from its combined prediction pr, and only
- * inside that ellipse: the expected count is of its area). Clutter spreads over
- * the gate, so half of it falls there; a target's own returns, however
- * many (a split echo, multipath), sit about its prediction, and only
+ * 2 < d2, d2 formed as gating forms it (the prediction's S, or S_j for a
+ * detection with its own covariance, through their Cholesky factors; an
+ * IMM track's from its combined prediction pr, and only inside that
+ * ellipse: the expected count is of its area). Clutter spreads over the
+ * gate, so half of it falls there; a target's own returns, however many (a
+ * split echo, multipath), sit about its prediction, and only
  * sqrt(1 - P_G) - (1 - P_G) of each does. */
 static int gate_ring_count(const struct pred *pr, const struct trk_i_pda_set *set, trk_real gamma)
 {
@@ -112,15 +113,14 @@ static int gate_ring_count(const struct pred *pr, const struct trk_i_pda_set *se
     int n = 0;
     for (size_t i = 0; i < set->n; i++) {
         const trk_real nu[NZ] = {set->z[NZ * i + ZX] - inn->z_pred[ZX], set->z[NZ * i + ZY] - inn->z_pred[ZY]};
-        trk_real s_own[NZ * NZ];
-        const trk_real *s = inn->s;
-        if (i >= set->n_shared) { /* S_j, SPD: the detection was gated with it */
-            trk_i_pda_own_s(&pr->pp, set->r_own + NZ * NZ * (i - set->n_shared), s_own);
-            s = s_own;
+        trk_real d2 = (trk_real)INFINITY;
+        if (i < set->n_shared) {
+            d2 = trk_i_mahalanobis2(NZ, inn->s_chol_inv, nu);
+        } else { /* S_j: SPD, the detection was gated with it */
+            trk_real s[NZ * NZ], l_inv[NZ * NZ], log_det;
+            trk_i_pda_own_s(&pr->pp, set->r_own + NZ * NZ * (i - set->n_shared), s);
+            if (trk_i_pda_factor(NZ, s, l_inv, &log_det) == TRK_OK) d2 = trk_i_mahalanobis2(NZ, l_inv, nu);
         }
-        const trk_real sxx = s[S(ZX, ZX)], sxy = s[S(ZX, ZY)], syy = s[S(ZY, ZY)]; /* symmetric */
-        const trk_real d2 = (syy * nu[ZX] * nu[ZX] - 2 * sxy * nu[ZX] * nu[ZY] + sxx * nu[ZY] * nu[ZY]) /
-                            (sxx * syy - sxy * sxy);
         n += d2 > half && d2 <= gamma; /* an IMM track's union of gates reaches beyond
                                           the combined ellipse, whose area V_G is */
     }
@@ -141,13 +141,13 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     const trk_real lambda_vg = out->lambda * out->gate_volume;
     look->pfa_gate = -trk_expm1(-lambda_vg);
     look->n_ring = 0;
-    look->n_ring_expected = 0;
-    look->n_expected_all = lambda_vg + TRK_TARGET_RETURNS_MAX * pr->pd * pr->pda->params.gate_prob;
+    look->n_ring_expected = look->n_expected_all = 0;
     if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
         t->params.confirm.u.existence.count_alpha > 0) {
         const trk_real miss = 1 - pr->pda->params.gate_prob; /* e^(-gamma/2) */
         look->n_ring = gate_ring_count(pr, set, pr->pda->gamma);
         look->n_ring_expected = lambda_vg / 2 + pr->pd * (trk_sqrt(miss) - miss);
+        look->n_expected_all = lambda_vg + TRK_TARGET_RETURNS_MAX * pr->pd * pr->pda->params.gate_prob;
     }
     look->beta0 = out->beta0;
     look->has_nearest = 0;
