@@ -121,6 +121,16 @@ static void run_busy_cells(struct trk_tracker *t, int K, int lone)
 /* map_params with a window and a guard of one cell, the ratio's bounds
  * wide (0.01, 1000), the edge rule at edge_alpha; all_round: a coverage
  * without a sector (4 x 4 cells of 90 deg). */
+/* tk on parameters p and tk2 on q, each through K scans of the busy cells
+ * (with the lone one): the same detections, one setting apart. */
+static void busy_pair(const struct trk_tracker_params *p, const struct trk_tracker_params *q, int K)
+{
+    TRK_ASSERT_OK(trk_tracker_init(&tk, p));
+    TRK_ASSERT_OK(trk_tracker_init(&tk2, q));
+    run_busy_cells(&tk, K, 1);
+    run_busy_cells(&tk2, K, 1);
+}
+
 static void window_params(struct trk_tracker_params *p, trk_real edge_alpha, int all_round)
 {
     map_params(p);
@@ -207,14 +217,12 @@ static double pooled_ratio(int K, double n, const int cells_in_row[4])
 static void test_window_and_guard(void **state)
 {
     (void)state;
-    struct trk_tracker_params p;
+    struct trk_tracker_params p, q;
     window_params(&p, 0, 0);
-    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    p.clutter_map.guard_cells = 0;
-    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    q = p;
+    q.clutter_map.guard_cells = 0;
     const int K = 25;
-    run_busy_cells(&tk, K, 1);
-    run_busy_cells(&tk2, K, 1);
+    busy_pair(&p, &q, K);
     const double tol = TRK_TOL(1e-12, 2e-5);
     /* the lone detection's cell (3, 3): its window rows 2-3 x columns 2-3;
      * the guard takes its one per scan away, as a target's */
@@ -320,14 +328,12 @@ static double edge_ratio(int K, const double c[4][4], int r0, int b0, double col
 static void test_edge_rule(void **state)
 {
     (void)state;
-    struct trk_tracker_params p;
+    struct trk_tracker_params p, q;
     window_params(&p, TRK_REAL_C(0.2), 0);
-    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
-    p.clutter_map.edge_alpha = 0;
-    TRK_ASSERT_OK(trk_tracker_init(&tk2, &p));
+    q = p;
+    q.clutter_map.edge_alpha = 0;
     const int K = 25;
-    run_busy_cells(&tk, K, 1);
-    run_busy_cells(&tk2, K, 1);
+    busy_pair(&p, &q, K);
     const double c[4][4] = {{12, 0, 0, 0}, {0, 0, 3, 0}, {0, 0, 0, 0}, {0, 0, 0, 1}};
     const double tol = TRK_TOL(1e-12, 2e-5);
     /* cell (1, 1), between the two busy cells: its quadrant of rows 0-1 x
