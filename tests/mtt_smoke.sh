@@ -27,6 +27,8 @@
 #     RMSE >= 0; without --accel the accel_* columns are nan; --config imm in a build
 #     without IMM tracks is refused (exit 2) with a message naming make mtt-imm
 #   - every column but the CPU time identical with 1 and 2 threads
+#   - --config known (only the targets' detections): per seed at 50 per scan new's
+#     detections less known's are the clutter's (30 x 50), at clutter 0 the same rows as new's
 #   - trk-sim mtt-compare merges the transit and the fixed CSV (16 rows: the family is
 #     part of the key) and refuses two CSVs of the same family and capacity
 set -u
@@ -208,6 +210,31 @@ grep -q '^-- paired against oracle on the same seeds' "$d/out1.txt" || fail "no 
 "$sim" mtt --scans 30 --seeds 2 --clutter-count 0 --config new,old --paired-base nope --quiet --no-plot \
     --out "$d/pb" >"$d/outpb.txt" 2>&1 && fail "--paired-base nope accepted"
 grep -q 'not one of --config' "$d/outpb.txt" || { cat "$d/outpb.txt"; fail "--paired-base: no clear refusal"; }
+# known: the scans reduced to the targets' detections
+"$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --config new,known --threads 1 --quiet --no-plot \
+    --out "$d/k" >"$d/outk.txt" 2>&1 || { cat "$d/outk.txt"; fail "trk-sim mtt --config new,known exited with $?"; }
+awk -F, '
+function bad(msg) { print "mtt-smoke: FAILED: known: " msg; err = 1; exit 1 }
+NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+{
+    det[$2 "/" $3 "/" $5] = $(col["rep_n_detections"])
+    r = ""
+    for (i = 6; i <= NF; i++) if (i != col["cpu_us_per_scan"]) r = r "," $i
+    row[$2 "/" $3 "/" $5] = r
+}
+END {
+    if (err) exit 1
+    n = 0
+    for (k in det) {
+        split(k, f, "/")
+        if (f[1] != "known") continue
+        n++
+        o = "new/" f[2] "/" f[3]
+        if (f[2] == 50 && det[o] - det[k] != 30 * 50) bad("seed " f[3] ": new saw " det[o] ", known " det[k])
+        if (f[2] == 0 && row[o] != row[k]) bad("seed " f[3] ": at clutter 0 known differs from new")
+    }
+    if (n != 4) bad(n " runs")
+}' "$d/k_runs.csv" || exit 1
 # mtt-compare: the family is part of the key
 "$sim" mtt-compare "$d/m1.csv" "$d/f1.csv" --no-plot --out "$d/c" >"$d/outc.txt" 2>&1 ||
     { cat "$d/outc.txt"; fail "trk-sim mtt-compare of a transit and a fixed CSV exited with $?"; }
@@ -220,4 +247,4 @@ grep -q 'appears twice' "$d/outc2.txt" || { cat "$d/outc2.txt"; fail "mtt-compar
 echo "mtt-smoke: trk-sim mtt: 8 rows (new, pda, old, oracle x clutter 0, 50) checked per family (transit, fixed)" \
     "and with the manoeuvres (turn, acceleration); the oracle blind to clutter and, without the turn, GOSPA <= new's;" \
     "transit identical with 1 and 2 threads; the per-run CSV and the paired table agree with the means;" \
-    "mtt-compare keys rows by family"
+    "known sees its targets alone; mtt-compare keys rows by family"

@@ -34,6 +34,11 @@
 #     than the profile (1.21 against 1.56)
 #   - --config cfar (each detection's true clutter density passed): at clutter 0 (no
 #     densities) the same rows as new's, at 100 none rejected and the rows not new's
+#   - --config known (only the targets' detections): every run's detections are exactly
+#     its targets' (detections = P_D seen x targets present per scan x scans), no false
+#     track on a persistent return, fewer detections than new's at 100 per scan; without
+#     the persistent scatterers at clutter 0 (new's scans then hold only the targets'
+#     detections too) the same rows as new's
 #   - --config cart is refused (exit 2) outside the sonar family; the sonar table on stdout
 set -u
 sim=$1
@@ -182,6 +187,36 @@ END {
     if (row["cfar/100"] == row["new/100"]) bad("at 100 per scan the densities changed nothing")
     if (rej["cfar/100"] + 0 != 0) bad(rej["cfar/100"] " densities rejected")
 }' || exit 1
+# known: the scans reduced to the targets' detections
+"$sim" mtt --family sonar --scans 60 --seeds 3 --clutter-count 0,100 --seed 3 --config new,known --threads 1 \
+    --quiet --no-plot --out "$d/k1" >"$d/outk.txt" 2>&1 || { cat "$d/outk.txt"; fail "trk-sim mtt --config new,known exited with $?"; }
+awk -F, '
+function bad(msg) { print "mtt-sonar-smoke: FAILED: known: " msg; err = 1; exit 1 }
+NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+{
+    key = $2 "/" $3
+    det[key] += $(col["rep_n_detections"])
+    if ($2 != "known") next
+    runs++
+    want = $(col["target_pd"]) * $(col["targets_present_per_scan"]) * 60
+    if ((want - $(col["rep_n_detections"])) ^ 2 > 0.25) bad("seed " $5 " at " $3 ": " $(col["rep_n_detections"]) " detections, its targets gave " want)
+    if ($(col["false_tracks_persistent_per_1000_scans"]) != 0) bad("seed " $5 " at " $3 ": a false track on a persistent return")
+}
+END {
+    if (err) exit 1
+    if (runs != 6) bad(runs " runs")
+    if (!(det["new/100"] > det["known/100"])) bad("new saw " det["new/100"] " detections at 100, known " det["known/100"])
+}' "$d/k1_runs.csv" || exit 1
+"$sim" mtt --family sonar --scans 60 --seeds 3 --clutter-count 0 --seed 3 --config new,known --threads 1 \
+    --no-persistent --quiet --no-plot --out "$d/k2" >"$d/outk2.txt" 2>&1 ||
+    { cat "$d/outk2.txt"; fail "trk-sim mtt --config new,known --no-persistent exited with $?"; }
+strip "$d/k2.csv" | awk -F, '
+function bad(msg) { print "mtt-sonar-smoke: FAILED: known: " msg; exit 1 }
+NR > 1 { r = $0; sub(/^[^,]*,[^,]*,/, "", r); row[$2] = r }
+END {
+    if (!("new" in row) || !("known" in row)) bad("rows missing at clutter 0")
+    if (row["new"] != row["known"]) bad("without clutter and persistent returns known differs from new")
+}' || exit 1
 if "$sim" mtt --config cart --scans 20 --seeds 1 --no-plot --quiet --out "$d/c1" >"$d/outc.txt" 2>&1; then
     fail "--config cart ran in the transit family"
 else
@@ -189,5 +224,5 @@ else
 fi
 echo "mtt-sonar-smoke: trk-sim mtt --family sonar: 12 rows (new, pda, cart, oracle x clutter 0, 20, 100) checked" \
     "with and without persistent scatterers; the oracle blind to clutter, coverage > 0.85; false tracks add up;" \
-    "the clutter map nearer the truth than the profile; cfar's densities used;" \
+    "the clutter map nearer the truth than the profile; cfar's densities used; known sees its targets alone;" \
     "identical with 1 and 2 threads"

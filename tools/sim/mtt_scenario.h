@@ -353,7 +353,8 @@ struct mtt_scen_params {
  * present >= 25 scans, gaps of 1-10 scans, no acceleration (accel_s 60). */
 void mtt_scen_defaults(struct mtt_scen_params *p);
 /* The sonar family's defaults: mtt_scen_defaults, then family sonar, 150
- * scans of 8 s, speeds 3-10 m/s, the pair 100 m apart, no amplitudes, the
+ * scans of 8 s, speeds 3-10 m/s, the pair 100 m apart, Rayleigh amplitudes
+ * (the P_D law's: SNR over range), the
  * platform at 3 m/s, the sector 0.5-8 km +-60 deg, sigmas 7.5 m and 1.5 deg,
  * the persistent scatterers on. */
 void mtt_scen_sonar_defaults(struct mtt_scen_params *p);

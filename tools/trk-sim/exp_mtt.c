@@ -39,13 +39,25 @@
  *        density in the scan (trk_scan.clutter_density_per_m2,
  *        mtt_scen_clutter_density): what a CFAR that knew its background
  *        would pass
+ *   known  new given only the targets' detections (the scan without its
+ *        clutter and persistent returns: the association known), each
+ *        still weighed against the clutter it would be among: in the
+ *        sonar family with its true clutter density (as cfar) and no
+ *        persistent-return description (the scans hold none); elsewhere
+ *        the configured density. Between the oracle and new: what trk's
+ *        own start, confirmation and filter allow with the association
+ *        solved, so that new's gap to the oracle splits into the price of
+ *        the association (new against known) and that of trk's evidence
+ *        rule (known against the oracle, which reports every target from
+ *        its second detection and weighs no clutter at all)
  * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
  * of the scenario with use_amplitude, q = 1e-3; then every --set).
  *
  * The sonar family (--family sonar, mtt_scenario.h): a polar sensor on a
  * platform moving north at 3 m/s, its sector 0.5-8 km +-60 deg, a ping
  * every 8 s, 150 scans, P_D over range, clutter in patches and the near
- * field, persistent scatterers (--no-persistent), no amplitudes; GOSPA c
+ * field, persistent scatterers (--no-persistent), Rayleigh amplitudes of the P_D
+ * law's SNR over range (--no-amplitude: none); GOSPA c
  * 200 m. The trackers (new, pda, old) get each scan as a user of a polar
  * sensor gives it: scan.polar, has_pose, pose (detections NULL), the
  * sensor of kind TRK_SENSOR_POLAR with its sigmas, P_D profile and
@@ -376,6 +388,23 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
     return 0;
 }
 
+/* known's scan: *scan reduced to the targets' detections (origin >= 0), in
+ * their order, with their positions (ws->det, or ws->polar for a polar
+ * scan) and their clutter densities when the scan carries them. */
+static void keep_targets(struct run_ws *ws, struct trk_scan *scan)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < scan->n_detections; i++) {
+        if (ws->origin[i] < 0) continue;
+        ws->det[m] = ws->det[i];
+        if (scan->polar) ws->polar[m] = ws->polar[i];
+        if (scan->clutter_density_per_m2) ws->lambda[m] = ws->lambda[i];
+        ws->origin[m] = ws->origin[i];
+        m++;
+    }
+    scan->n_detections = m;
+}
+
 /* The sonar family's scan k for configuration kind (CFG_*) into *scan
  * (mtt_scenario.h): the oracle gets the detections converted by the
  * scenario (trk_polar_to_cartesian, each with its covariance); cart the
@@ -385,7 +414,8 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
  * detection's true clutter density (mtt_scen_clutter_density: what a
  * CFAR that knew its background would pass; where the truth has none, a
  * return beyond the clutter's sector, the density of tp's sensor there;
- * none at clutter 0). 0, or -1. */
+ * none at clutter 0); known the same, then only the targets' detections
+ * (keep_targets). 0, or -1. */
 static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int kind,
                           const struct trk_tracker_params *tp, struct run_ws *ws, struct trk_scan *scan,
                           struct mtt_scan_info *info)
@@ -407,7 +437,7 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
     scan->detections = NULL;
     scan->has_pose = 1;
     scan->pose = pose;
-    if (kind == CFG_CFAR && clutter > 0) {
+    if ((kind == CFG_CFAR || kind == CFG_KNOWN) && clutter > 0) {
         for (size_t i = 0; i < scan->n_detections; i++) { /* at det[i], polar[i] converted by the library */
             const trk_real x = ws->det[i].x_m, y = ws->det[i].y_m;
             const double truth = mtt_scen_clutter_density(sc, k, clutter, (double)x, (double)y);
@@ -416,6 +446,7 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
         }
         scan->clutter_density_per_m2 = ws->lambda;
     }
+    if (kind == CFG_KNOWN) keep_targets(ws, scan);
     return 0;
 }
 
@@ -480,8 +511,10 @@ static int run_one(const struct mtt_scenario *sc, long clutter, int over, int ki
         struct trk_scan scan;
         struct mtt_scan_info info;
         const size_t max = over == OVER_CAP ? TRK_MAX_DETECTIONS : TRK_MAX_SCAN_DETECTIONS;
-        if (!sonar) mtt_scen_scan(sc, k, clutter, ws->det, max, ws->origin, &scan, &info);
-        else if (sonar_scan_for(sc, k, clutter, max, kind, tp, ws, &scan, &info) != 0) {
+        if (!sonar) {
+            mtt_scen_scan(sc, k, clutter, ws->det, max, ws->origin, &scan, &info);
+            if (kind == CFG_KNOWN) keep_targets(ws, &scan);
+        } else if (sonar_scan_for(sc, k, clutter, max, kind, tp, ws, &scan, &info) != 0) {
             rc = -1;
             break;
         }
@@ -1105,7 +1138,7 @@ static int take_configs(const char *s, int *kinds, int *n, char *err, size_t err
         for (int i = 0; i < N_CFG_KINDS; i++)
             if (strlen(cfg_name[i]) == len && strncmp(s, cfg_name[i], len) == 0) k = i;
         if (k < 0 || *n >= N_CFG_KINDS) {
-            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle, cart, cfar (each once)",
+            snprintf(err, errlen, "--config: '%.*s' is not one of new, pda, old, imm, oracle, cart, cfar, known (each once)",
                      (int)len, s);
             return -1;
         }
@@ -1312,7 +1345,11 @@ SIM_EXPERIMENT(mtt, "mtt", "multi-target evaluation (GOSPA, track maintenance) o
                        "get sonar scans as polar scans with the platform's pose;\n"
                        "cfar (sonar only): new with each detection's true clutter\n"
                        "density passed (trk_scan.clutter_density_per_m2: a CFAR\n"
-                       "that knew its background)"),
+                       "that knew its background); known: new given only the\n"
+                       "targets' detections (association known), each weighed\n"
+                       "against its clutter density (sonar: the true one, as cfar;\n"
+                       "no persistent-return description): trk's start and\n"
+                       "confirmation without the association's price"),
         SIM_OPT_STRING("--paired-base", &paired_base, "CFG", NULL,
                        "the configuration the others are paired against, seed by\n"
                        "seed (the table \"paired against\"; default: oracle when it\n"

@@ -8,7 +8,7 @@
 #include "mtt_params.h"
 #include "trk/amplitude.h"
 
-const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm", "oracle", "cart", "cfar"};
+const char *const cfg_name[N_CFG_KINDS] = {"new", "pda", "old", "imm", "oracle", "cart", "cfar", "known"};
 
 #if TRK_WITH_IMM
 /* p->imm: CV at p->process_noise_q (--q) and turns at +-rate_dps with
@@ -51,9 +51,10 @@ int mtt_build_params(int kind, const struct mtt_scenario *sc, double lambda, dou
         struct trk_clutter_profile *cp = &p.sensor[0].clutter_profile;
         if (kind == CFG_CART || !(lambda * sc->area_m2 > 0.5)) memset(cp, 0, sizeof *cp);
         for (unsigned k = 0; k < cp->n; k++) cp->density_per_m2[k] *= (trk_real)(lambda * sc->area_m2);
-        /* its persistent returns in the amplitudes (not cart's): their share
-         * of what is not a target's (at clutter 0: of one clutter point) and P_D */
-        if (kind != CFG_CART && sc->p.amplitude && sc->p.persistent) {
+        /* its persistent returns in the amplitudes (not cart's, nor known's,
+         * whose scans hold none): their share of what is not a target's (at
+         * clutter 0: of one clutter point) and P_D */
+        if (kind != CFG_CART && kind != CFG_KNOWN && sc->p.amplitude && sc->p.persistent) {
             const double n_p = MTT_SONAR_PERSIST * MTT_SONAR_PERSIST_PD, n_c = lambda * sc->area_m2;
             p.sensor[0].persistent_share = (trk_real)(n_p / (n_p + (n_c > 1 ? n_c : 1)));
             p.sensor[0].persistent_pd = (trk_real)MTT_SONAR_PERSIST_PD;

@@ -16,8 +16,11 @@
 /* The configurations: new (trk_tracker_default_params), pda (the same with
  * per-track PDA), old (the defaults before two-point initiation), imm (new
  * with IMM tracks), oracle (no tracker: its R and q), cart (the sonar
- * family's new the old way: the caller converts). cfg_name[kind]. */
-enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, CFG_ORACLE, CFG_CART, CFG_CFAR, N_CFG_KINDS };
+ * family's new the old way: the caller converts), cfar (new given each
+ * detection's true clutter density), known (new given only the targets'
+ * detections: no persistent-return description, the scans having none).
+ * cfg_name[kind]. */
+enum { CFG_NEW, CFG_PDA, CFG_OLD, CFG_IMM, CFG_ORACLE, CFG_CART, CFG_CFAR, CFG_KNOWN, N_CFG_KINDS };
 extern const char *const cfg_name[N_CFG_KINDS];
 
 struct mtt_settings {
