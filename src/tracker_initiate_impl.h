@@ -140,6 +140,44 @@ static trk_real logistic(trk_real lo)
     return lo >= 0 ? 1 / (1 + trk_exp(-lo)) : trk_exp(lo) / (1 + trk_exp(lo));
 }
 
+/* ln(beta l^a / lambda) of a point of sensor s at (x, y) with amplitude
+ * ratio ln l^a = log_lr: the odds, over clutter, that it is a new target
+ * (trk_init_params: a single point's start), lambda there as the scan's
+ * sensor sees it (a candidate of another sensor: that sensor's lambda). */
+static trk_real point_log_odds(const struct trk_tracker *t, const struct trk_scan *scan, unsigned s, trk_real x,
+                               trk_real y, trk_real log_lr)
+{
+    return t->init_log_odds[s].first + log_lr - (s == scan->sensor_id ? sensor_log_lambda_ratio(t, scan, x, y) : 0);
+}
+
+/* A start's ln O from log_a, the ln odds of its n points being one new
+ * target over their all being clutter (pair_log_odds,
+ * three_point_log_odds), against every other way the points arise: all
+ * clutter, or one of them a new target on its own and the rest clutter
+ * (its point_log_odds, in point[]): ln O = log_a - ln(1 + sum_i e^point_i)
+ * (trk_init_params). Why: a strong echo alone is a target's (at 13 dB a
+ * target detection's l^a is e^17 on average), so a pair of it and any
+ * clutter point in its velocity gate started at existence near 1 with the
+ * clutter point's velocity, took the target's next detection and was
+ * confirmed on it before it drifted off. Unchanged where log_a is not
+ * finite: lambda = 0 makes it and every point's odds infinite (no clutter:
+ * psi0 = 1 as before). */
+static trk_real start_log_odds(trk_real log_a, const trk_real *point, size_t n)
+{
+    if (!(trk_fabs(log_a) < (trk_real)INFINITY)) return log_a;
+    trk_real m = 0, sum = 1; /* ln(1 + sum e^p_i) = m + ln(sum e^(p_i - m)), p_0 = 0, running max m */
+    for (size_t i = 0; i < n; i++) {
+        const trk_real d = point[i] - m;
+        if (d > 0) {
+            sum = sum * trk_exp(-d) + 1;
+            m = point[i];
+        } else {
+            sum += trk_exp(d);
+        }
+    }
+    return log_a - m - trk_log(sum);
+}
+
 
 /* The ranking of replacement: existence, or n_hits / n_scans without it. */
 static trk_real quality(const struct trk_tracker *t, const struct trk_track *tr)
@@ -260,8 +298,8 @@ static int start_single(struct trk_tracker *t, struct slots *sl, const struct tr
                         const trk_real *r_j, struct trk_scan_report *rep)
 {
     if (!slot_possible(t, sl, rep)) return 0;
-    const trk_real psi0 = initial_existence(t, t->init_log_odds[scan->sensor_id].first + t->ws.log_lr[j] -
-                                                   sensor_log_lambda_ratio(t, scan, t->ws.x[j], t->ws.y[j]));
+    const trk_real psi0 =
+        initial_existence(t, point_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j], t->ws.log_lr[j]));
     struct trk_track *tr = take_slot(t, sl, new_quality(t, psi0), rep);
     if (!tr) return 0;
     const trk_real vv = t->params.init_speed_sigma_mps * t->params.init_speed_sigma_mps;
@@ -476,29 +514,29 @@ static trk_status speed_prior(const struct trk_tracker *t, trk_real *x, trk_real
     return st == TRK_OK ? trk_i_spd(NX, p) : st; /* as the two points' P: SPD or no track */
 }
 
-/* ln O of a pair: its first point candidate c (of run; its ln(beta l^a /
- * lambda), lambda at c as second_log_odds takes it), its second point's
+/* ln of a pair's odds of being one new target over two clutter points: its
+ * first point candidate c (of run; point_log_odds), its second point's
  * ln(P_D l^a / lambda) in second, and the ln density of the displacement
- * between them in log_disp (pair_log_disp; trk_init_params). */
+ * between them in log_disp (pair_log_disp; trk_init_params). The start's
+ * odds weigh the other ways too (start_log_odds). */
 static trk_real pair_log_odds(const struct trk_tracker *t, const struct trk_scan *scan,
                               const struct trk_i_cand_run *run, const struct trk_candidate *c, trk_real second,
                               trk_real log_disp)
 {
-    const trk_real first = t->init_log_odds[run->sensor_id].first -
-                           (run->sensor_id == scan->sensor_id ? sensor_log_lambda_ratio(t, scan, c->x_m, c->y_m) : 0);
-    return first + c->log_lr + second + log_disp;
+    return point_log_odds(t, scan, run->sensor_id, c->x_m, c->y_m, c->log_lr) + second + log_disp;
 }
 
-/* The three-point ln O (trk_init_params) of workspace detection j (R_j
- * r_j) continuing the refused pair (p, c) that candidate c of run k ended,
- * dt after c: the pair's ln O plus the hit's ln(P_D l^a N(z_j; z^, S) /
- * lambda), z^ = z_c + a (z_c - z_p), a = dt / dt_pc, S = R_j + (1 + a)^2
- * R_c + a^2 R_p + q dt^3 / 3 I (the pair's two-point track predicted by
- * dt: P_pp + 2 dt P_pv + dt^2 P_vv + Q_pp); -inf when there is no such
+/* The three points' ln odds over clutter (trk_init_params) of workspace
+ * detection j (R_j r_j) continuing the refused pair (p, c) that candidate
+ * c of run k ended, dt after c: the pair's plus the hit's ln(P_D l^a
+ * N(z_j; z^, S) / lambda), z^ = z_c + a (z_c - z_p), a = dt / dt_pc, S =
+ * R_j + (1 + a)^2 R_c + a^2 R_p + q dt^3 / 3 I (the pair's two-point
+ * track predicted by dt: P_pp + 2 dt P_pv + dt^2 P_vv + Q_pp), and the
+ * first point's point_log_odds in *point_p; -inf when there is no such
  * pair or j is outside that track's gate (d2 > gamma). */
 static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_scan *scan, size_t k,
                                      const struct trk_candidate *c, const trk_real *r_c, size_t j,
-                                     const trk_real *r_j, trk_real dt)
+                                     const trk_real *r_j, trk_real dt, trk_real *point_p)
 {
     const struct trk_i_cand_run *run_p = NULL;
     const struct trk_candidate *cp = refused_first(t, k, c, &run_p);
@@ -518,6 +556,7 @@ static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_sca
     const trk_real log_n = log_normal2(s, ex, ey, &d2);
     if (log_n == -TRK_REAL_MAX || !(d2 <= t->pda[scan->sensor_id].gamma)) return -TRK_REAL_MAX;
     const trk_real hit = second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j] + log_n;
+    *point_p = point_log_odds(t, scan, run_p->sensor_id, cp->x_m, cp->y_m, cp->log_lr);
     return pair_log_odds(t, scan, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr,
                          pair_log_disp(t, cp, r_p, c->x_m, c->y_m, r_c, dt_pc)) +
            hit;
@@ -558,12 +597,17 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
     trk_real r_c[NZ * NZ], x[NX], p[NX * NX];
     candidate_r(c, r_c);
     /* ln O = ln(beta l_c / lambda_c) + ln(P_D l_j / lambda_j) + ln N(z_j - z_c;
-     * 0, R_c + R_j + s_v^2 dt^2 I), or the three points' when c ended a
-     * refused pair that j continues */
-    const trk_real log_odds =
-        pair_log_odds(t, scan, run, c, second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j],
-                      pair_log_disp(t, c, r_c, t->ws.x[j], t->ws.y[j], r_j, dt));
-    const trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt);
+     * 0, R_c + R_j + s_v^2 dt^2 I) - ln(1 + O_c + O_j), or the three
+     * points' when c ended a refused pair that j continues (- ln(1 + O_p +
+     * O_c + O_j)): start_log_odds */
+    trk_real point[3] = {point_log_odds(t, scan, run->sensor_id, c->x_m, c->y_m, c->log_lr),
+                         point_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j], t->ws.log_lr[j]), 0};
+    const trk_real log_odds = start_log_odds(point[0] + /* pair_log_odds, its first point's term at hand */
+                                                 second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) +
+                                                 t->ws.log_lr[j] + pair_log_disp(t, c, r_c, t->ws.x[j], t->ws.y[j], r_j, dt),
+                                             point, 2);
+    trk_real log_odds3 = three_point_log_odds(t, scan, run_k, c, r_c, j, r_j, dt, &point[2]);
+    if (log_odds3 > -TRK_REAL_MAX) log_odds3 = start_log_odds(log_odds3, point, 3);
     const trk_real psi0 = initial_existence(t, log_odds3 > -TRK_REAL_MAX ? log_odds3 : log_odds);
     if (psi0 < t->params.init.min_existence && !third_point(t, run_k, c, log_odds3)) { /* a weak pair (NaN
                                                                   never is): j waits for a third point */

@@ -94,10 +94,11 @@ static void test_two_point_start(void **state)
     assert_true(trk_fabs(tr->p[P(X, Y)]) < 1e-12 && trk_fabs(tr->p[P(X, VY)]) < 1e-12 &&
                 trk_fabs(tr->p[P(VX, VY)]) < 1e-12);
     /* the displacement (40, 20) m under the velocity prior and the two
-     * points' noise: N(dz; 0, (2 R + s^2 dt^2) I) */
+     * points' noise: N(dz; 0, (2 R + s^2 dt^2) I); against all clutter or
+     * either point a new target alone (beta / lambda each, no amplitudes) */
     const double var = 50 + s2 * SCAN_S * SCAN_S;
     const double dens = exp(-0.5 * (40.0 * 40.0 + 20.0 * 20.0) / var) / (2 * 3.14159265358979323846 * var);
-    const double odds = beta / lambda * pd / lambda * dens;
+    const double odds = beta / lambda * pd / lambda * dens / (1 + 2 * beta / lambda);
     TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
     TRK_ASSERT_NEAR(tr->vis.pv, tr->existence0, 0, 0);
     assert_int_equal(tr->n_hits, 2);
@@ -107,8 +108,9 @@ static void test_two_point_start(void **state)
  * point waits as a candidate that remembers the first, and the third
  * detection on the line starts the track with the three points' odds: the
  * pair's times P_D N(z3; z^, S) / lambda, z^ = 2 z2 - z1 (equal gaps),
- * S = R + 4 R + R + q dt^3 / 3 I. Three points start however weak; a pair
- * above the threshold starts at once. */
+ * S = R + 4 R + R + q dt^3 / 3 I, over 1 + 3 beta / lambda (all clutter, or
+ * one of the three a new target alone). Three points start however weak; a
+ * pair above the threshold starts at once. */
 static void test_min_existence(void **state)
 {
     (void)state;
@@ -139,7 +141,7 @@ static void test_min_existence(void **state)
         const double dens2 = exp(-0.5 * (40.0 * 40.0 + 20.0 * 20.0) / var2) / (2 * pi * var2);
         const double var3 = 6 * 25 + (double)p.process_noise_q * SCAN_S * SCAN_S * SCAN_S / 3;
         const double dens3 = exp(-0.5 * (1.0 + 1.0) / var3) / (2 * pi * var3);
-        const double odds = beta / lambda * pd / lambda * dens2 * pd * dens3 / lambda;
+        const double odds = beta / lambda * pd / lambda * dens2 * pd * dens3 / lambda / (1 + 3 * beta / lambda);
         TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
         assert_true(tr->existence0 < p.init.min_existence);
     }
@@ -220,12 +222,64 @@ static void test_pair_by_displacement_density(void **state)
     const double dens_a = exp(-0.5 * 60 * 60 / var_a) / (2 * pi * var_a);
     const double dens_b = exp(-0.5 * 80 * 80 / var_b) / (2 * pi * var_b);
     assert_true(dens_b > dens_a);
-    const double odds = beta / lambda * pd / lambda * dens_b;
+    const double odds = beta / lambda * pd / lambda * dens_b / (1 + 2 * beta / lambda);
     TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-5 : 1e-12);
     /* its velocity points from B: (z - z_B) / dt = 20 m/s east, shrunk by
      * the prior (per axis, P_vv = (1e4 + 1) / dt^2 against s^2) */
     const double pvv = (1e4 + 1) / (SCAN_S * SCAN_S);
     TRK_ASSERT_NEAR(tr->x[VX], 80 / SCAN_S * s2 / (pvv + s2), 0, TRK_REAL_IS_FLOAT ? 1e-4 : 1e-10);
+}
+
+/* A pair's odds weigh every way its points arise: one new target (A), all
+ * clutter (1), or either point a new target on its own with the other
+ * clutter (its single-point odds beta l^a / lambda): O = A / (1 + O_c +
+ * O_j). A weak echo at the threshold (a clutter point's) followed by a
+ * strong one (a target's at 13 dB) is the strong echo's target far likelier
+ * than a target that moved from the weak point: the pair starts at the
+ * closed form, below 1/2, where A alone would give it above 0.99 (such a
+ * pair then took the target's next detection and was confirmed on it with
+ * the clutter point's velocity). Two strong echoes on one line start near 1. */
+static void test_pair_against_a_strong_point(void **state)
+{
+    (void)state;
+    const double lambda = 1e-5, beta = 1e-9, pi = 3.14159265358979323846;
+    struct trk_tracker_params p;
+    sonar_params(&p, lambda);
+    p.sensor[0].use_amplitude = 1;
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, 13, TRK_REAL_C(1e-2)));
+    const struct trk_amplitude *m = &p.sensor[0].amplitude;
+    const trk_real thr = trk_amplitude_threshold(m), a_weak = thr * TRK_REAL_C(1.01), a_strong = thr * TRK_REAL_C(2.5);
+    trk_real l_weak, l_strong;
+    TRK_ASSERT_OK(trk_amplitude_log_lr(m, a_weak, &l_weak));
+    TRK_ASSERT_OK(trk_amplitude_log_lr(m, a_strong, &l_strong));
+    const double pd = (double)trk_amplitude_pd(m), s2 = p.init_speed_sigma_mps * p.init_speed_sigma_mps;
+    const double var = 50 + s2 * SCAN_S * SCAN_S;
+    const double dens = exp(-0.5 * (40.0 * 40.0 + 20.0 * 20.0) / var) / (2 * pi * var);
+    for (int strong_first = 0; strong_first <= 1; strong_first++) {
+        TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+        struct trk_scan_report rep;
+        struct trk_detection d = det_at(100, 200);
+        d.has_amplitude = 1;
+        d.amplitude = strong_first ? a_strong : a_weak;
+        TRK_ASSERT_OK(run_scan(0, &d, 1, &rep));
+        d = det_at(140, 220);
+        d.has_amplitude = 1;
+        d.amplitude = a_strong;
+        TRK_ASSERT_OK(run_scan(1, &d, 1, &rep));
+        assert_int_equal(rep.n_started, 1);
+        const struct trk_track *tr = only_live_track();
+        assert_non_null(tr);
+        const double l_c = strong_first ? (double)l_strong : (double)l_weak, l_j = (double)l_strong;
+        const double o_c = beta / lambda * exp(l_c), o_j = beta / lambda * exp(l_j);
+        const double a = o_c * pd * exp(l_j) / lambda * dens, odds = a / (1 + o_c + o_j);
+        TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-4 : 1e-10);
+        if (strong_first) {
+            assert_true(tr->existence0 > 0.999);
+        } else {
+            assert_true(a / (1 + a) > 0.99);
+            assert_true(tr->existence0 < 0.5);
+        }
+    }
 }
 
 /* The velocity gate: |dz| <= v_max dt + sqrt(gamma lambda_max(R1 + R2)),
@@ -778,6 +832,7 @@ int main(void)
         cmocka_unit_test(test_min_existence),
         cmocka_unit_test(test_min_existence_crowded_store),
         cmocka_unit_test(test_pair_by_displacement_density),
+        cmocka_unit_test(test_pair_against_a_strong_point),
         cmocka_unit_test(test_velocity_gate_and_lifetime),
         cmocka_unit_test(test_candidate_store),
         cmocka_unit_test(test_existence_rejects_clutter_pair),

@@ -573,7 +573,17 @@ enum trk_init_method {
  *                 the fresh clutter pairs that would otherwise hold the few
  *                 free slots (they all start at the same pair odds, and
  *                 replacement needs a strictly lower existence);
- *   psi0 = O / (1 + O); lambda = 0 gives psi0 = 1.
+ *   the start:    O_start = O / (1 + sum_i beta l^a(z_i) / lambda_i), the
+ *                 two or three points' O over every other way they
+ *                 arise: all clutter (1), or one of them a new target on
+ *                 its own and the rest clutter (its single-point odds).
+ *                 A strong echo alone is a target's (at 13 dB a target
+ *                 detection's l^a is e^17 on average): without the sum a
+ *                 pair of it and any clutter point in its velocity gate
+ *                 started at existence near 1 with the clutter point's
+ *                 velocity. Where no point is strong the sum is ~beta /
+ *                 lambda per point and changes nothing;
+ *   psi0 = O_start / (1 + O_start); lambda = 0 gives psi0 = 1.
  * A pair whose psi0 is below min_existence starts no track: its second
  * point waits as a candidate for a third, so that the many weak pairs of
  * dense clutter do not each hold a slot and share the targets' detections,

@@ -27,7 +27,7 @@ int mtt_build_params(int kind, const struct mtt_scenario *sc, double lambda, dou
 {
     struct trk_tracker_params p;
     if (kind == CFG_OLD) mtt_old_defaults(&p);
-    else trk_tracker_default_params(&p); /* new, pda, imm, cart, cfar; oracle: its sensor R and q */
+    else trk_tracker_default_params(&p); /* new, pda, imm, cart, cfar, known; oracle: its sensor R and q */
     if (kind == CFG_PDA) p.association = TRK_ASSOC_PDA;
 #if !TRK_WITH_IMM
     (void)im;
