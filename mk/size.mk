@@ -117,8 +117,8 @@ STACK_LIMIT_FILTERS ?= 2176
 # the checks of sigmas whose squares underflow, of the clutter map's floor
 # and of the density's bound; docs/tracker.md "The gate-count check",
 # "Polar sensors, P_D over range, coverage").
-# 46 KB and 53.25 KB until a start's odds weighed every way its points
-# arise (+0.2 KB in both images: each point's single-point odds and their
+# 46 KB and 53.25 KB until a start's odds weighed each of its points
+# alone (+0.2 KB in both images: each point's single-point odds and their
 # log-sum; docs/tracker.md "Initial existence").
 TEXT_LIMIT ?= 47360
 TEXT_LIMIT_JOINT ?= 54784

@@ -152,10 +152,11 @@ static trk_real point_log_odds(const struct trk_tracker *t, const struct trk_sca
 
 /* A start's ln O from log_a, the ln odds of its n points being one new
  * target over their all being clutter (pair_log_odds,
- * three_point_log_odds), against every other way the points arise: all
- * clutter, or one of them a new target on its own and the rest clutter
- * (its point_log_odds, in point[]): ln O = log_a - ln(1 + sum_i e^point_i)
- * (trk_init_params). Why: a strong echo alone is a target's (at 13 dB a
+ * three_point_log_odds), against all clutter or any one of them a new
+ * target on its own and the rest clutter (its point_log_odds, in point[]):
+ * ln O = log_a - ln(1 + sum_i e^point_i) (trk_init_params; two targets at
+ * once, beta^2, are left out, and so are a triple's pairs without its
+ * third point). Why: a strong echo alone is a target's (at 13 dB a
  * target detection's l^a is e^17 on average), so a pair of it and any
  * clutter point in its velocity gate started at existence near 1 with the
  * clutter point's velocity, took the target's next detection and was

@@ -35,8 +35,9 @@
 #   - --config cfar (each detection's true clutter density passed): at clutter 0 (no
 #     densities) the same rows as new's, at 100 none rejected and the rows not new's
 #   - --config known (only the targets' detections): every run's detections are exactly
-#     its targets' (detections = P_D seen x targets present per scan x scans), no false
-#     track on a persistent return, fewer detections than new's at 100 per scan; without
+#     its targets' (detections = P_D seen x targets present per scan x scans) and all of
+#     them (its P_D seen is new's, seed by seed), no false track on a persistent return,
+#     fewer detections than new's at 100 per scan; without
 #     the persistent scatterers at clutter 0 (new's scans then hold only the targets'
 #     detections too) the same rows as new's
 #   - --config cart is refused (exit 2) outside the sonar family; the sonar table on stdout
@@ -196,6 +197,7 @@ NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
 {
     key = $2 "/" $3
     det[key] += $(col["rep_n_detections"])
+    pd[$2 "/" $3 "/" $5] = $(col["target_pd"])
     if ($2 != "known") next
     runs++
     want = $(col["target_pd"]) * $(col["targets_present_per_scan"]) * 60
@@ -205,6 +207,10 @@ NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
 END {
     if (err) exit 1
     if (runs != 6) bad(runs " runs")
+    for (k in pd) {
+        split(k, f, "/")
+        if (f[1] == "known" && pd[k] != pd["new/" f[2] "/" f[3]]) bad("seed " f[3] " at " f[2] ": P_D seen " pd[k] ", new saw " pd["new/" f[2] "/" f[3]])
+    }
     if (!(det["new/100"] > det["known/100"])) bad("new saw " det["new/100"] " detections at 100, known " det["known/100"])
 }' "$d/k1_runs.csv" || exit 1
 "$sim" mtt --family sonar --scans 60 --seeds 3 --clutter-count 0 --seed 3 --config new,known --threads 1 \

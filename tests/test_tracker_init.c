@@ -282,6 +282,56 @@ static void test_pair_against_a_strong_point(void **state)
     }
 }
 
+/* Three points, each echo of its own strength (a weak first, a strong
+ * second, a middling third): the pair of the first two waits
+ * (min_existence: the strong second point alone explains most of it), and
+ * the third starts the track at the three points' odds over all clutter or
+ * any one of them alone, each with its own single-point odds: O = O_p (P_D
+ * l_c / lambda) N_2 (P_D l_j / lambda) N_3 / (1 + O_p + O_c + O_j), N_2
+ * and N_3 as in test_min_existence. */
+static void test_three_points_against_each_alone(void **state)
+{
+    (void)state;
+    const double lambda = 1e-5, beta = 1e-9, pi = 3.14159265358979323846;
+    struct trk_tracker_params p;
+    sonar_params(&p, lambda);
+    p.init.min_existence = TRK_REAL_C(0.99);
+    p.sensor[0].use_amplitude = 1;
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&p.sensor[0].amplitude, 1, 13, TRK_REAL_C(1e-2)));
+    const struct trk_amplitude *m = &p.sensor[0].amplitude;
+    const trk_real thr = trk_amplitude_threshold(m);
+    const trk_real amp[3] = {thr * TRK_REAL_C(1.05), thr * TRK_REAL_C(2.2), thr * TRK_REAL_C(1.6)};
+    const double x[3] = {100, 140, 181}, y[3] = {200, 220, 239}; /* (180, 240) predicted: 1 m and -1 m off */
+    double l[3];
+    for (int k = 0; k < 3; k++) {
+        trk_real lr;
+        TRK_ASSERT_OK(trk_amplitude_log_lr(m, amp[k], &lr));
+        l[k] = (double)lr;
+    }
+    assert_true(l[1] > l[2] && l[2] > l[0]); /* three different strengths */
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    struct trk_scan_report rep;
+    for (int k = 0; k < 3; k++) {
+        struct trk_detection d = det_at(x[k], y[k]);
+        d.has_amplitude = 1;
+        d.amplitude = amp[k];
+        TRK_ASSERT_OK(run_scan(k, &d, 1, &rep));
+        if (k == 1) assert_int_equal(rep.n_init_deferred, 1);
+    }
+    assert_int_equal(rep.n_started, 1);
+    const struct trk_track *tr = only_live_track();
+    assert_non_null(tr);
+    const double pd = (double)trk_amplitude_pd(m), s2 = p.init_speed_sigma_mps * p.init_speed_sigma_mps;
+    const double var2 = 50 + s2 * SCAN_S * SCAN_S, var3 = 6 * 25 + (double)p.process_noise_q * SCAN_S * SCAN_S * SCAN_S / 3;
+    const double dens2 = exp(-0.5 * (40.0 * 40.0 + 20.0 * 20.0) / var2) / (2 * pi * var2);
+    const double dens3 = exp(-0.5 * (1.0 + 1.0) / var3) / (2 * pi * var3);
+    double o[3];
+    for (int k = 0; k < 3; k++) o[k] = beta / lambda * exp(l[k]);
+    const double a = o[0] * pd * exp(l[1]) / lambda * dens2 * pd * exp(l[2]) / lambda * dens3;
+    const double odds = a / (1 + o[0] + o[1] + o[2]);
+    TRK_ASSERT_NEAR(tr->existence0, odds / (1 + odds), 0, TRK_REAL_IS_FLOAT ? 1e-4 : 1e-10);
+}
+
 /* The velocity gate: |dz| <= v_max dt + sqrt(gamma lambda_max(R1 + R2)),
  * gamma = -2 ln(1 - P_G) = 9.21 for P_G 0.99: 60 + 21.46 = 81.46 m. A
  * candidate lives max_gap_scans scans (1 here, then 2). */
@@ -833,6 +883,7 @@ int main(void)
         cmocka_unit_test(test_min_existence_crowded_store),
         cmocka_unit_test(test_pair_by_displacement_density),
         cmocka_unit_test(test_pair_against_a_strong_point),
+        cmocka_unit_test(test_three_points_against_each_alone),
         cmocka_unit_test(test_velocity_gate_and_lifetime),
         cmocka_unit_test(test_candidate_store),
         cmocka_unit_test(test_existence_rejects_clutter_pair),

@@ -574,15 +574,21 @@ enum trk_init_method {
  *                 free slots (they all start at the same pair odds, and
  *                 replacement needs a strictly lower existence);
  *   the start:    O_start = O / (1 + sum_i beta l^a(z_i) / lambda_i), the
- *                 two or three points' O over every other way they
- *                 arise: all clutter (1), or one of them a new target on
- *                 its own and the rest clutter (its single-point odds).
+ *                 two or three points' O over all clutter (1) or any one
+ *                 of them a new target on its own and the rest clutter
+ *                 (its single-point odds; two new targets at once, and a
+ *                 triple's pairs without its third point, are left out).
  *                 A strong echo alone is a target's (at 13 dB a target
  *                 detection's l^a is e^17 on average): without the sum a
  *                 pair of it and any clutter point in its velocity gate
  *                 started at existence near 1 with the clutter point's
- *                 velocity. Where no point is strong the sum is ~beta /
- *                 lambda per point and changes nothing;
+ *                 velocity. Each term is beta l^a / lambda_i: small
+ *                 wherever the clutter density is far above the birth
+ *                 density and no echo is strong. A detection's partner is
+ *                 still chosen by ln l^a(z_c) + ln N (above), the pair's
+ *                 own score, not by O_start, which saturates in l^a(z_c):
+ *                 a strong candidate may take a detection whose start then
+ *                 waits for a third point;
  *   psi0 = O_start / (1 + O_start); lambda = 0 gives psi0 = 1.
  * A pair whose psi0 is below min_existence starts no track: its second
  * point waits as a candidate for a third, so that the many weak pairs of

@@ -49,7 +49,9 @@
  *        solved, so that new's gap to the oracle splits into the price of
  *        the association (new against known) and that of trk's evidence
  *        rule (known against the oracle, which reports every target from
- *        its second detection and weighs no clutter at all)
+ *        its second detection and weighs no clutter at all). Its clutter
+ *        and persistent returns per scan are the scenario's (what it was
+ *        spared); --over-capacity refuse never refuses its small scans
  * (sensor: pd, R = sigma^2 I, clutter density N / area, the Rayleigh model
  * of the scenario with use_amplitude, q = 1e-3; then every --set).
  *
