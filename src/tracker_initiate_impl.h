@@ -151,7 +151,7 @@ static trk_real point_log_odds(const struct trk_tracker *t, const struct trk_sca
 }
 
 /* A start's ln O from log_a, the ln odds of its n points being one new
- * target over their all being clutter (pair_log_odds,
+ * target over their all being clutter (start_pair,
  * three_point_log_odds), against all clutter or any one of them a new
  * target on its own and the rest clutter (its point_log_odds, in point[]):
  * ln O = log_a - ln(1 + sum_i e^point_i) (trk_init_params; two targets at
@@ -351,7 +351,7 @@ static TRK_NOINLINE trk_real log_normal2(const trk_real *s, trk_real ex, trk_rea
  *   ln N((x, y) - z_c; 0, R_c + R + s_v^2 dt^2 I).
  * The one model of a target's second point: it ranks a detection's
  * candidates (best_candidate) and gives the pair's existence
- * (pair_log_odds). The velocity gate (max_speed_mps) truncates it; the mass
+ * (start_pair). The velocity gate (max_speed_mps) truncates it; the mass
  * it cuts off (a speed beyond v_max, 1.1 % at the defaults' 3 s_v) is not
  * renormalised. -TRK_REAL_MAX when the sum is not positive definite. */
 static trk_real pair_log_disp(const struct trk_tracker *t, const struct trk_candidate *c, const trk_real *r_c,
@@ -515,18 +515,6 @@ static trk_status speed_prior(const struct trk_tracker *t, trk_real *x, trk_real
     return st == TRK_OK ? trk_i_spd(NX, p) : st; /* as the two points' P: SPD or no track */
 }
 
-/* ln of a pair's odds of being one new target over two clutter points: its
- * first point candidate c (of run; point_log_odds), its second point's
- * ln(P_D l^a / lambda) in second, and the ln density of the displacement
- * between them in log_disp (pair_log_disp; trk_init_params). The start's
- * odds weigh the other ways too (start_log_odds). */
-static trk_real pair_log_odds(const struct trk_tracker *t, const struct trk_scan *scan,
-                              const struct trk_i_cand_run *run, const struct trk_candidate *c, trk_real second,
-                              trk_real log_disp)
-{
-    return point_log_odds(t, scan, run->sensor_id, c->x_m, c->y_m, c->log_lr) + second + log_disp;
-}
-
 /* The three points' ln odds over clutter (trk_init_params) of workspace
  * detection j (R_j r_j) continuing the refused pair (p, c) that candidate
  * c of run k ended, dt after c: the pair's plus the hit's ln(P_D l^a
@@ -558,9 +546,9 @@ static trk_real three_point_log_odds(struct trk_tracker *t, const struct trk_sca
     if (log_n == -TRK_REAL_MAX || !(d2 <= t->pda[scan->sensor_id].gamma)) return -TRK_REAL_MAX;
     const trk_real hit = second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) + t->ws.log_lr[j] + log_n;
     *point_p = point_log_odds(t, scan, run_p->sensor_id, cp->x_m, cp->y_m, cp->log_lr);
-    return pair_log_odds(t, scan, run_p, cp, second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr,
-                         pair_log_disp(t, cp, r_p, c->x_m, c->y_m, r_c, dt_pc)) +
-           hit;
+    /* the pair (p, c)'s ln odds over clutter (as start_pair's), then the hit */
+    return *point_p + (second_log_odds(t, scan, run_c->sensor_id, c->x_m, c->y_m) + c->log_lr) +
+           pair_log_disp(t, cp, r_p, c->x_m, c->y_m, r_c, dt_pc) + hit;
 }
 
 /* Is workspace detection j, with candidate c of run k, the third point of
@@ -603,7 +591,7 @@ static int start_pair(struct trk_tracker *t, struct slots *sl, const struct trk_
      * O_c + O_j)): start_log_odds */
     trk_real point[3] = {point_log_odds(t, scan, run->sensor_id, c->x_m, c->y_m, c->log_lr),
                          point_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j], t->ws.log_lr[j]), 0};
-    const trk_real log_odds = start_log_odds(point[0] + /* pair_log_odds, its first point's term at hand */
+    const trk_real log_odds = start_log_odds(point[0] + /* the pair's ln odds over clutter */
                                                  second_log_odds(t, scan, scan->sensor_id, t->ws.x[j], t->ws.y[j]) +
                                                  t->ws.log_lr[j] + pair_log_disp(t, c, r_c, t->ws.x[j], t->ws.y[j], r_j, dt),
                                              point, 2);

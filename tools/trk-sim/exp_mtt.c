@@ -391,8 +391,8 @@ static int oracle_scan(struct mtt_oracle *orc, const struct mtt_scenario *sc, lo
 }
 
 /* known's scan: *scan reduced to the targets' detections (origin >= 0), in
- * their order, with their positions (ws->det, or ws->polar for a polar
- * scan) and their clutter densities when the scan carries them. */
+ * their order, with their positions (ws->det, and ws->polar for a polar
+ * scan), before any clutter density is given to them. */
 static void keep_targets(struct run_ws *ws, struct trk_scan *scan)
 {
     size_t m = 0;
@@ -400,7 +400,6 @@ static void keep_targets(struct run_ws *ws, struct trk_scan *scan)
         if (ws->origin[i] < 0) continue;
         ws->det[m] = ws->det[i];
         if (scan->polar) ws->polar[m] = ws->polar[i];
-        if (scan->clutter_density_per_m2) ws->lambda[m] = ws->lambda[i];
         ws->origin[m] = ws->origin[i];
         m++;
     }
@@ -416,7 +415,7 @@ static void keep_targets(struct run_ws *ws, struct trk_scan *scan)
  * detection's true clutter density (mtt_scen_clutter_density: what a
  * CFAR that knew its background would pass; where the truth has none, a
  * return beyond the clutter's sector, the density of tp's sensor there;
- * none at clutter 0); known the same, then only the targets' detections
+ * none at clutter 0); known the same for the targets' detections alone
  * (keep_targets). 0, or -1. */
 static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, size_t max, int kind,
                           const struct trk_tracker_params *tp, struct run_ws *ws, struct trk_scan *scan,
@@ -439,6 +438,7 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
     scan->detections = NULL;
     scan->has_pose = 1;
     scan->pose = pose;
+    if (kind == CFG_KNOWN) keep_targets(ws, scan); /* its densities for the detections it keeps */
     if ((kind == CFG_CFAR || kind == CFG_KNOWN) && clutter > 0) {
         for (size_t i = 0; i < scan->n_detections; i++) { /* at det[i], polar[i] converted by the library */
             const trk_real x = ws->det[i].x_m, y = ws->det[i].y_m;
@@ -448,7 +448,6 @@ static int sonar_scan_for(const struct mtt_scenario *sc, long k, long clutter, s
         }
         scan->clutter_density_per_m2 = ws->lambda;
     }
-    if (kind == CFG_KNOWN) keep_targets(ws, scan);
     return 0;
 }
 
