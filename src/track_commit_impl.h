@@ -127,12 +127,54 @@ static int gate_ring_count(const struct pred *pr, const struct trk_i_pda_set *se
     return n;
 }
 
+/* ln L_t / L_s of the look of a track predicted at pr, gated set set
+ * (workspace indices cand, weights given existence: set w normalised to
+ * 1 - beta0): its target (P_D pd at the track; with a Rayleigh amplitude
+ * model, Swerling I of the SNR that P_D gives at the threshold) against a
+ * persistent scatterer there (P_D P_s = persistent_pd, its SNR). Either
+ * source sits at the prediction and the rest of the gate is clutter alike,
+ * so the position likelihoods and the clutter cancel, and
+ *   L_s / L_t = beta_0 (1 - P_s P_G) / (1 - P_D P_G) + sum_i beta_i f_s(a_i) / f_t(a_i),
+ *   f_x(a) = P_x p_x(a | above the threshold) = (2a / (P u_x)) e^(-a^2 / (P u_x)),
+ * 1/u_x = ln P_x / ln pfa (Brekke eq 19's u = 1 + SNR; P the clutter's
+ * power): f_s / f_t = (u_t / u_s) e^((a^2 / P)(1/u_t - 1/u_s)); a detection
+ * without an amplitude: P_s / P_D. A detection of weight 0 (another
+ * track's, or an echo the mixture's l^a rules out as a target's) adds
+ * nothing, as it adds nothing to the existence. The ratio may overflow
+ * (underflow) the real type: -inf (+inf), certain, which the sum over the
+ * looks bounds (existence_look, track_tests.c). 0 (no evidence) on a
+ * thinned scan, whose raised threshold this does not model, and where P_D
+ * is not in (pfa, 1). */
+static trk_real persist_log_lr(const struct trk_tracker *t, const struct trk_scan *scan, const struct pred *pr,
+                               const struct trk_i_pda_set *set, const uint16_t *cand, trk_real beta0)
+{
+    const struct trk_sensor_params *sp = t->ws.view.sp;
+    const struct trk_amplitude *m = &sp->amplitude;
+    const trk_real ln_pfa = -m->t2 / m->clutter_power, pd = pr->pd, ps = sp->persistent_pd;
+    const trk_real pg = pr->pda->params.gate_prob;
+    if (t->ws.pd_power != 1 || t->ws.pd_scale != 1 || !(trk_log(pd) > ln_pfa && pd < 1)) return 0;
+    const trk_real iu_t = trk_log(pd) / ln_pfa, iu_s = trk_log(ps) / ln_pfa, d = iu_t - iu_s;
+    trk_real w_sum = 0;
+    for (size_t i = 0; i < set->n; i++) w_sum += set->w[i];
+    trk_real ratio = beta0 * (1 - ps * pg) / (1 - pd * pg);
+    for (size_t i = 0; i < set->n && w_sum > 0; i++) {
+        const trk_real b = set->w[i] / w_sum * (1 - beta0); /* beta_i given existence */
+        if (!(b > 0)) continue; /* (0 inf) */
+        const size_t j = t->ws.src[cand[i]];
+        const int has = scan->polar ? scan->polar[j].has_amplitude : scan->detections[j].has_amplitude;
+        const trk_real a = scan->polar ? scan->polar[j].amplitude : scan->detections[j].amplitude;
+        /* (d = 0: one SNR, f_s = f_t at any amplitude; a^2 may be +inf) */
+        ratio += b * (has ? iu_s / iu_t * (d != 0 ? trk_exp(a * a / m->clutter_power * d) : 1) : ps / pd);
+    }
+    return -trk_log(ratio);
+}
+
 /* What this scan told the track's tests: the one place a look is built
  * (the M/N test's first look at initiation apart). The gate-count ring only
  * for a tentative track whose existence confirmation checks it. */
 static void build_look(const struct trk_tracker *t, const struct trk_track *tr, const struct trk_scan *scan,
-                       const struct pred *pr, const struct trk_i_pda_set *set, const struct trk_i_pda_out *out,
-                       struct trk_look *look)
+                       const struct pred *pr, const struct trk_i_pda_set *set, const uint16_t *cand,
+                       const struct trk_i_pda_out *out, struct trk_look *look)
 {
     look->seen = 1;
     look->detected = tr->n_gated_last > 0;
@@ -150,6 +192,10 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
         look->n_expected_all = lambda_vg + TRK_TARGET_RETURNS_MAX * pr->pd * pr->pda->params.gate_prob;
     }
     look->beta0 = out->beta0;
+    look->persist_llr = 0;
+    if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
+        t->ws.view.sp->persistent_share > 0) /* (with a Rayleigh model: checked at init) */
+        look->persist_llr = persist_log_lr(t, scan, pr, set, cand, out->beta0);
     look->has_nearest = 0;
     look->nearest = 0;
     look->rho_vg = 0;
@@ -179,7 +225,7 @@ static int track_unseen(struct trk_tracker *t, struct trk_track *tr, const struc
         trk_visibility_update_posterior(&t->vis_model, &vis, trk_visibility_predict(&t->vis_model, &vis)) != TRK_OK)
         return -1;
     commit(t, tr, scan, &set, t->ws.cand, pr, &vis, out.beta0);
-    build_look(t, tr, scan, pr, &set, &out, look);
+    build_look(t, tr, scan, pr, &set, t->ws.cand, &out, look);
     look->seen = 0;
     return over_covariance_bound(pr->bound_m2, tr->p);
 }

@@ -98,6 +98,7 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
         c->existence.reject_below = r > 0 && e0 < 1 ? r * e0 / (1 - e0 + r * e0) : 0;
         c->existence.count_gated = c->existence.count_expected = 0;
         c->existence.count_gated_all = c->existence.count_expected_all = 0;
+        c->existence.persist_llr = 0;
         tr->confirm_stat = tr->vis.pv;
         break;
     }
@@ -105,10 +106,17 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
     }
 }
 
-/* The gate-count check's sums with this look (trk/tracker.h count_alpha):
- * the detections in the gate's ring and the count the track's model
- * expects there, each forgotten at 1 - 1/tau per look. */
-static void gate_count_look(const struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look)
+/* The existence test's sums with this look: the gate-count check's
+ * (trk/tracker.h count_alpha), the detections in the gate's ring and the
+ * count the track's model expects there, each forgotten at 1 - 1/tau per
+ * look; and the evidence of a target against a persistent scatterer, ln
+ * L_t / L_s summed over the track's looks and kept within +-h/2 (h =
+ * stationary_d2): it moves the motion test's bar h - 2 S between 0 and 2h
+ * (standing_still, track_life_impl.h), and a bound lets a held scatterer
+ * that starts to move, or a target that a few strong echoes made look like
+ * one, show it within a few looks rather than after as many as it has
+ * had (the survey's counter capped at M, ch. 5.3). */
+static void existence_look(const struct trk_tracker *t, struct trk_track *tr, const struct trk_look *look)
 {
     const trk_real keep = t->confirm_model.existence.count_keep;
     tr->test.confirm.existence.count_gated = keep * tr->test.confirm.existence.count_gated + (trk_real)look->n_ring;
@@ -117,6 +125,8 @@ static void gate_count_look(const struct trk_tracker *t, struct trk_track *tr, c
         keep * tr->test.confirm.existence.count_gated_all + (trk_real)look->n_gated;
     tr->test.confirm.existence.count_expected_all =
         keep * tr->test.confirm.existence.count_expected_all + look->n_expected_all;
+    const trk_real half = t->params.stationary_d2 / 2, s = tr->test.confirm.existence.persist_llr + look->persist_llr;
+    tr->test.confirm.existence.persist_llr = s > half ? half : s < -half ? -half : s;
 }
 
 trk_real trk_i_gate_count_tail(trk_real gated, trk_real expected)
@@ -190,7 +200,7 @@ enum trk_decision trk_i_confirm_decide(const struct trk_tracker *t, struct trk_t
         tr->confirm_stat = tr->vis.pcv;
         break;
     case TRK_CONFIRM_EXISTENCE:
-        if (look->seen) gate_count_look(t, tr, look);
+        if (look->seen) existence_look(t, tr, look);
         d = existence_confirm(&t->params.confirm.u.existence, tr);
         tr->confirm_stat = tr->vis.pv;
         break;

@@ -25,6 +25,10 @@ struct trk_look {
     trk_real n_expected_all; /* lambda V_G + TRK_TARGET_RETURNS_MAX P_D P_G: the whole gate's,
                                 for a target of that many highlights */
     trk_real beta0;
+    /* ln of the look's likelihood ratio, the track's target against a
+     * persistent scatterer there (track_commit_impl.h persist_log_lr; 0:
+     * no persistent-return description, or not a tentative track) */
+    trk_real persist_llr;
     /* clutter tests: nearest detection of the scan (has_nearest = 0: none) */
     int has_nearest;
     size_t nearest;             /* its workspace index */

@@ -150,7 +150,7 @@ static TRK_NOINLINE int track_update_joint(struct trk_tracker *t, struct trk_tra
     if (t->params.track_visibility && trk_visibility_update_posterior(&t->vis_model, &vis, psi_post) != TRK_OK)
         return -1;
     commit(t, tr, scan, &set, t->ws.cand + t->ws.pair_first[k], &pr, &vis, out.beta0);
-    build_look(t, tr, scan, &pr, &set, &out, look);
+    build_look(t, tr, scan, &pr, &set, t->ws.cand + t->ws.pair_first[k], &out, look);
     return over_covariance_bound(pr.bound_m2, tr->p);
 }
 

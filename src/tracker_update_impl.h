@@ -32,7 +32,7 @@ static TRK_NOINLINE int track_update(struct trk_tracker *t, struct trk_track *tr
     struct trk_visibility vis = tr->vis;
     if (t->params.track_visibility && update_visibility(t, pr.pda, &set, &out, &vis) != TRK_OK) return -1;
     commit(t, tr, scan, &set, t->ws.cand, &pr, &vis, out.beta0);
-    build_look(t, tr, scan, &pr, &set, &out, look);
+    build_look(t, tr, scan, &pr, &set, t->ws.cand, &out, look);
     return over_covariance_bound(pr.bound_m2, tr->p);
 }
 

@@ -488,6 +488,11 @@ union trk_confirm_state {
         trk_real count_gated_all;    /**< of the detections in the whole gate, */
         trk_real count_expected_all; /**< ... and of lambda V_G + TRK_TARGET_RETURNS_MAX
                                         P_D P_G */
+        trk_real persist_llr;    /**< with a persistent-return description
+                                    (trk_sensor_params persistent_share): the sum over
+                                    the looks of ln L_target / L_scatterer, within
+                                    +-stationary_d2 / 2 (docs/tracker.md "Persistent
+                                    returns") */
     } existence;  /**< TRK_CONFIRM_EXISTENCE */
 #if TRK_WITH_CLUTTER_TESTS
     struct trk_clutter_chi2 chi2;  /**< TRK_CONFIRM_CLUTTER_CHI2 */
@@ -769,6 +774,17 @@ struct trk_tracker_params {
                                                          then held still by its returns; a
                                                          target that stops is not reported
                                                          while it stands, as a new one).
+                                                         With a persistent-return description
+                                                         (persistent_share) a tentative track
+                                                         under the existence test is held
+                                                         while v' P_v^-1 v < this - 2 S, S
+                                                         the ln likelihood ratio of its
+                                                         echoes as a target's against a
+                                                         scatterer's, summed over its looks
+                                                         within +-this / 2
+                                                         (test.confirm.existence.persist_llr;
+                                                         docs/tracker.md "Echoes weighed
+                                                         against a scatterer's").
                                                          Default 25: motion beyond 5 sigma
                                                          (a still object passes at 3.7e-6,
                                                          chi^2 2 dof; measured against
