@@ -131,20 +131,22 @@ static int gate_ring_count(const struct pred *pr, const struct trk_i_pda_set *se
  * (workspace indices cand, weights given existence: set w normalised to
  * 1 - beta0): its target (P_D pd at the track; with a Rayleigh amplitude
  * model, Swerling I of the SNR that P_D gives at the threshold) against a
- * persistent scatterer there (P_D P_s = persistent_pd, its SNR). Either
+ * persistent scatterer there (P_s = persistent_pd, and its SNR). Either
  * source sits at the prediction and the rest of the gate is clutter alike,
  * so the position likelihoods and the clutter cancel, and
  *   L_s / L_t = beta_0 (1 - P_s P_G) / (1 - P_D P_G) + sum_i beta_i f_s(a_i) / f_t(a_i),
  *   f_x(a) = P_x p_x(a | above the threshold) = (2a / (P u_x)) e^(-a^2 / (P u_x)),
  * 1/u_x = ln P_x / ln pfa (Brekke eq 19's u = 1 + SNR; P the clutter's
  * power): f_s / f_t = (u_t / u_s) e^((a^2 / P)(1/u_t - 1/u_s)); a detection
- * without an amplitude: P_s / P_D. A detection of weight 0 (another
- * track's, or an echo the mixture's l^a rules out as a target's) adds
- * nothing, as it adds nothing to the existence. The ratio may overflow
- * (underflow) the real type: -inf (+inf), certain, which the sum over the
- * looks bounds (existence_look, track_tests.c). 0 (no evidence) on a
- * thinned scan, whose raised threshold this does not model, and where P_D
- * is not in (pfa, 1). */
+ * without an amplitude: P_s / P_D. A gated detection of weight 0 (another
+ * track's, or an echo so strong that its target weight underflowed) says
+ * nothing of beta_i f_s / f_t, which may be large: where f_s / f_t > 1 the
+ * look gives no evidence (0), rather than that of a miss; where it is at
+ * most 1 its term is left out, a bound. The ratio may overflow (underflow)
+ * the real type: -inf (+inf), certain, which the sum over the looks bounds
+ * (existence_look, track_tests.c). 0 (no evidence) on a thinned scan,
+ * whose raised threshold this does not model, and where P_D is not in
+ * (pfa, 1). */
 static trk_real persist_log_lr(const struct trk_tracker *t, const struct trk_scan *scan, const struct pred *pr,
                                const struct trk_i_pda_set *set, const uint16_t *cand, trk_real beta0)
 {
@@ -157,14 +159,18 @@ static trk_real persist_log_lr(const struct trk_tracker *t, const struct trk_sca
     trk_real w_sum = 0;
     for (size_t i = 0; i < set->n; i++) w_sum += set->w[i];
     trk_real ratio = beta0 * (1 - ps * pg) / (1 - pd * pg);
-    for (size_t i = 0; i < set->n && w_sum > 0; i++) {
-        const trk_real b = set->w[i] / w_sum * (1 - beta0); /* beta_i given existence */
-        if (!(b > 0)) continue; /* (0 inf) */
+    for (size_t i = 0; i < set->n; i++) {
+        const trk_real b = w_sum > 0 ? set->w[i] / w_sum * (1 - beta0) : 0; /* beta_i given existence */
         const size_t j = t->ws.src[cand[i]];
         const int has = scan->polar ? scan->polar[j].has_amplitude : scan->detections[j].has_amplitude;
         const trk_real a = scan->polar ? scan->polar[j].amplitude : scan->detections[j].amplitude;
-        /* (d = 0: one SNR, f_s = f_t at any amplitude; a^2 may be +inf) */
-        ratio += b * (has ? iu_s / iu_t * (d != 0 ? trk_exp(a * a / m->clutter_power * d) : 1) : ps / pd);
+        /* f_s / f_t (d = 0: one SNR, 1 at any amplitude; a^2 may be +inf) */
+        const trk_real rho = has ? iu_s / iu_t * (d != 0 ? trk_exp(a * a / m->clutter_power * d) : 1) : ps / pd;
+        if (b > 0) {
+            ratio += b * rho;
+        } else if (rho > 1) {
+            return 0; /* its weight lost to the arithmetic or to another track: b rho unknown */
+        }
     }
     return -trk_log(ratio);
 }

@@ -27,14 +27,17 @@ static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_s
  * ln L_t / L_s over its looks, within +-h/2: existence_look), the two
  * kinds of evidence add as log odds: v' P_v^-1 v / 2 is the motion's ln
  * likelihood ratio at most (its Gaussian's peak against its value at v =
- * 0), so the track is held while v' P_v^-1 v / 2 + S < h / 2, that is
- * below the bar h - 2S in [0, 2h]. A track whose echoes are a scatterer's
- * must move the more clearly; one whose echoes are a target's need not. */
+ * 0), so while S < 0 the track is held while v' P_v^-1 v / 2 + S < h / 2,
+ * that is below the bar h - 2S in (h, 2h]. A track whose echoes are a
+ * scatterer's must move the more clearly. One whose echoes are a target's
+ * keeps the bar h: an object that stands still is never reported, however
+ * it echoes (a weak rock is not told from a target by its echoes). */
 static int standing_still(const struct trk_tracker *t, const struct trk_track *tr)
 {
     trk_real h = t->params.stationary_d2;
     if (!(h > 0)) return 0;
-    if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE)
+    if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
+        tr->test.confirm.existence.persist_llr < 0)
         h -= 2 * tr->test.confirm.existence.persist_llr;
     const trk_real a = tr->p[P(VX, VX)], b = tr->p[P(VX, VY)], c = tr->p[P(VY, VY)];
     const trk_real vx = tr->x[VX], vy = tr->x[VY], det = a * c - b * b;

@@ -283,18 +283,20 @@ static void test_held_tracks_explain_persistent_returns(void **state)
 
 /* ---- the evidence of a target against a persistent scatterer */
 
-/* A Rayleigh sensor (P 1, pfa 1e-2) whose targets have SNR 10 dB (P_D
- * 0.658) and whose scatterers are detected at P_s 0.95: the tracker's
- * weighing of one echo, -ln f_s(a) / f_t(a), and of a miss, -ln r0. */
+/* A Rayleigh sensor (clutter power 4, pfa 1e-2) whose targets have SNR 10
+ * dB (P_D 0.658) and whose scatterers are detected at P_s 0.95: the
+ * tracker's weighing of one echo, ln f_t(a) / f_s(a), and of a miss. */
+#define EV_POWER 4.0
 #define EV_SNR_DB 10
 #define EV_PFA 1e-2
 #define EV_PS 0.95
 
-static void evidence_params(struct trk_tracker_params *p)
+static void evidence_params(struct trk_tracker_params *p, enum trk_assoc_method assoc)
 {
     params(p);
+    p->association = assoc;
     p->sensor[0].use_amplitude = 1;
-    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&p->sensor[0].amplitude, 1, EV_SNR_DB, (trk_real)EV_PFA));
+    TRK_ASSERT_OK(trk_amplitude_init_rayleigh(&p->sensor[0].amplitude, (trk_real)EV_POWER, EV_SNR_DB, (trk_real)EV_PFA));
     p->sensor[0].persistent_share = TRK_REAL_C(0.05);
     p->sensor[0].persistent_pd = (trk_real)EV_PS;
 }
@@ -302,11 +304,18 @@ static void evidence_params(struct trk_tracker_params *p)
 /* 1/u of a source detected at P_D pd: ln pd / ln pfa. */
 static double inv_u(double pd) { return log(pd) / log(EV_PFA); }
 
-/* ln f_t(a) / f_s(a) of an echo of amplitude a (clutter power 1) */
+/* The amplitude whose power is the mean of a source's above the threshold
+ * t^2: t^2 + P u. */
+static double mean_echo(const struct trk_tracker_params *p, double pd)
+{
+    return sqrt((double)p->sensor[0].amplitude.t2 + EV_POWER / inv_u(pd));
+}
+
+/* ln f_t(a) / f_s(a) of an echo of amplitude a */
 static double echo_llr(double pd, double a)
 {
     const double it = inv_u(pd), is = inv_u(EV_PS);
-    return log(it / is) - a * a * (it - is);
+    return log(it / is) - a * a / EV_POWER * (it - is);
 }
 
 /* The look's ln L_t / L_s with one gated echo of weight 1 - beta0 (a < 0:
@@ -331,21 +340,27 @@ static void echo_at(int k, double x, double y, double amp, struct trk_scan_repor
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, rep));
 }
 
+/* The held flag's closed form: v' P_v^-1 v below stationary_d2 - 2 min(S, 0). */
+static int held_by_bar(const struct trk_track *tr, double h)
+{
+    const double s = (double)tr->test.confirm.existence.persist_llr;
+    return velocity_d2(tr) < h - 2 * fmin(s, 0);
+}
+
 /* A still object's held track weighs every look after its start: the
  * running sum of the closed form above (its weight beta0 the track's
  * beta0_last), a miss included, kept within +-stationary_d2 / 2; the held
- * flag is v' P_v^-1 v < stationary_d2 - 2 S whenever its existence is past
- * p_confirm. A scatterer's strong echoes drive S to the bound, a target's
- * weak ones and misses up; an echo the target model rules out is a miss. */
-static void test_persistent_evidence_closed_form(void **state)
+ * flag is its closed form whenever the existence is past p_confirm. A
+ * scatterer's strong echoes drive S to the lower bound; an echo so strong
+ * that its weight as the target's underflows to 0 leaves the look without
+ * evidence (not a miss's). Joint association and per-track PDA. */
+static void evidence_closed_form(enum trk_assoc_method assoc)
 {
-    (void)state;
     struct trk_tracker_params p;
-    evidence_params(&p);
+    evidence_params(&p, assoc);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     const double pd = (double)p.sensor[0].amplitude.pd, pg = (double)p.gate_prob, h = (double)p.stationary_d2;
-    const double t2 = (double)p.sensor[0].amplitude.t2;
-    const double weak = sqrt(t2 + 1 / inv_u(pd)), strong = sqrt(t2 + 1 / inv_u(EV_PS)); /* the mean a^2 above the threshold */
+    const double weak = mean_echo(&p, pd), strong = mean_echo(&p, EV_PS);
     /* two echoes start the pair; then weak, a miss, weak, then strong ones */
     const double amp[] = {weak, weak, weak, -1, weak, strong, strong, strong, strong, strong, strong, strong, strong,
                           strong, strong, strong, strong};
@@ -366,45 +381,94 @@ static void test_persistent_evidence_closed_form(void **state)
         TRK_ASSERT_NEAR((double)tr->test.confirm.existence.persist_llr, want, 1e-9, 1e-4);
         if (k == 4) assert_true(want > 0); /* a target's weak echoes and a miss */
         if (tr->vis.pv >= p.confirm.u.existence.p_confirm) {
-            assert_int_equal(tr->stationary, velocity_d2(tr) < h - 2 * want);
+            assert_int_equal(tr->stationary, held_by_bar(tr, h));
             flagged += tr->stationary;
         }
     }
     assert_true(bounded >= 2);
     assert_true(flagged >= 8);
     assert_true(echo_llr(pd, weak) > 0 && echo_llr(pd, strong) < 0);
-    /* an echo 300 dB above the clutter: the mixture's l^a rules it out as
-     * the target's (its weight underflows to 0), so the existence and this
-     * sum take the look as a miss, as for any echo the association gives
-     * the track with probability 0 */
+    /* back up from the bound on weak echoes; then one 300 dB above the
+     * clutter, whose weight as the target's is 0 (beta0 1): no evidence */
     struct trk_scan_report rep;
-    echo_at(n, 1000, 2000, 1e15, &rep);
+    const struct trk_track *tr = NULL;
+    for (int k = n; k < n + 3; k++) {
+        echo_at(k, 1000, 2000, weak, &rep);
+        tr = only_track();
+        want += look_llr(pd, pg, (double)tr->beta0_last, weak);
+    }
+    TRK_ASSERT_NEAR((double)tr->test.confirm.existence.persist_llr, want, 1e-9, 1e-4);
+    assert_true(want > -h / 2);
+    echo_at(n + 3, 1000, 2000, 1e15, &rep);
     assert_int_equal(rep.n_rejected_amplitude, 0);
-    const struct trk_track *tr = only_track();
+    tr = only_track();
     assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
     assert_true(tr->beta0_last == 1);
-    TRK_ASSERT_NEAR((double)tr->test.confirm.existence.persist_llr, want + look_llr(pd, pg, 1, -1), 1e-9, 1e-4);
+    TRK_ASSERT_NEAR((double)tr->test.confirm.existence.persist_llr, want, 1e-9, 1e-4);
+}
+
+static void test_persistent_evidence_closed_form(void **state)
+{
+    (void)state;
+    evidence_closed_form(TRK_ASSOC_JOINT);
+    evidence_closed_form(TRK_ASSOC_PDA);
+}
+
+/* A still object echoing as a target does (its weak echoes detected every
+ * scan, 40 scans): S climbs to its upper bound, the bar stays
+ * stationary_d2, and it is never confirmed: what stands still is not
+ * reported, however it echoes. */
+static void test_still_target_echoes_still_held(void **state)
+{
+    (void)state;
+    struct trk_tracker_params p;
+    evidence_params(&p, TRK_ASSOC_JOINT);
+    TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const double weak = mean_echo(&p, (double)p.sensor[0].amplitude.pd), h = (double)p.stationary_d2;
+    uint64_t rng = 3;
+    int at_bound = 0;
+    for (int k = 0; k < 40; k++) {
+        struct trk_scan_report rep;
+        echo_at(k, 1000 + 5 * trk_test_nrand(&rng), 2000 + 5 * trk_test_nrand(&rng), weak, &rep);
+        assert_int_equal(rep.n_confirmed, 0);
+        if (k < 1) continue;
+        const struct trk_track *tr = only_track();
+        assert_int_equal(tr->status, TRK_TRACK_TENTATIVE);
+        const double s = (double)tr->test.confirm.existence.persist_llr;
+        assert_true(s <= h / 2);
+        at_bound += s == h / 2;
+        if (tr->vis.pv >= p.confirm.u.existence.p_confirm) assert_int_equal(tr->stationary, held_by_bar(tr, h));
+    }
+    assert_true(at_bound >= 10);
 }
 
 /* A slow mover (1 m/s, sigma 5 m, 4 s scans), the same positions twice:
  * with a target's weak echoes it is confirmed as soon as its velocity is
- * resolved past the bar (lowered by their evidence), with a scatterer's
- * strong echoes it is held until it has shown the motion a bar of up to 2
- * stationary_d2 asks (at 0.8 m/s, where q keeps v' P_v^-1 v below that,
- * never in 120 scans). */
+ * resolved past stationary_d2; with a scatterer's strong echoes the bar
+ * rises (up to 2 stationary_d2), it is held at looks whose motion passes
+ * stationary_d2 (the flag its closed form at every look), and is confirmed
+ * once it has shown the motion the bar asks (at 0.8 m/s, where q keeps
+ * v' P_v^-1 v below that, never in 120 scans). */
 #define SLOW_MPS 1.0
 
-static int slow_mover_confirmed_at(double amp)
+static int slow_mover_confirmed_at(double amp, int *held_past_h)
 {
     struct trk_tracker_params p;
-    evidence_params(&p);
+    evidence_params(&p, TRK_ASSOC_JOINT);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
+    const double h = (double)p.stationary_d2;
     uint64_t rng = 7;
+    *held_past_h = 0;
     for (int k = 0; k < 120; k++) {
         struct trk_scan_report rep;
         const double x = 1000 + SLOW_MPS * DT_S * k + 5 * trk_test_nrand(&rng), y = 2000 + 5 * trk_test_nrand(&rng);
         echo_at(k, x, y, amp, &rep);
         if (rep.n_confirmed == 1) return k;
+        if (k < 1) continue;
+        const struct trk_track *tr = only_track();
+        if (tr->vis.pv < p.confirm.u.existence.p_confirm) continue;
+        assert_int_equal(tr->stationary, held_by_bar(tr, h));
+        *held_past_h += tr->stationary && velocity_d2(tr) >= h;
     }
     return -1;
 }
@@ -413,13 +477,16 @@ static void test_scatterer_echoes_raise_the_motion_bar(void **state)
 {
     (void)state;
     struct trk_tracker_params p;
-    evidence_params(&p);
-    const double t2 = (double)p.sensor[0].amplitude.t2, pd = (double)p.sensor[0].amplitude.pd;
-    const int target = slow_mover_confirmed_at(sqrt(t2 + 1 / inv_u(pd)));
-    const int scatterer = slow_mover_confirmed_at(sqrt(t2 + 1 / inv_u(EV_PS)));
-    print_message("slow mover confirmed at scan %d with a target's echoes, %d with a scatterer's\n", target, scatterer);
+    evidence_params(&p, TRK_ASSOC_JOINT);
+    int past_t, past_s;
+    const int target = slow_mover_confirmed_at(mean_echo(&p, (double)p.sensor[0].amplitude.pd), &past_t);
+    const int scatterer = slow_mover_confirmed_at(mean_echo(&p, EV_PS), &past_s);
+    print_message("slow mover confirmed at scan %d with a target's echoes, %d with a scatterer's (held past the "
+                  "bar of 25 at %d looks)\n", target, scatterer, past_s);
     assert_true(target > 2);
+    assert_int_equal(past_t, 0);
     assert_true(scatterer > target + 10);
+    assert_true(past_s >= 5);
 }
 
 static void test_param_check(void **state)
@@ -446,6 +513,7 @@ int main(void)
         cmocka_unit_test(test_hold_off_confirms_the_return),
         cmocka_unit_test(test_held_tracks_explain_persistent_returns),
         cmocka_unit_test(test_persistent_evidence_closed_form),
+        cmocka_unit_test(test_still_target_echoes_still_held),
         cmocka_unit_test(test_scatterer_echoes_raise_the_motion_bar),
         cmocka_unit_test(test_param_check),
     };

@@ -1,7 +1,8 @@
 /* test_tracker_random.c - the track table under long random and hostile
  * input: after every scan of a long random
  * run every live track's covariance is symmetric and positive definite (its
- * Cholesky succeeds) and finite, ids are unique, the live count and the
+ * Cholesky succeeds) and finite, a tentative track's evidence against a
+ * scatterer is within its bound, ids are unique, the live count and the
  * report agree; near-singular, overflowing and tiny covariances, squared
  * parameters that overflow or underflow, and time differences that would
  * overflow are refused or end the track as numerical. Runs in double and
@@ -38,6 +39,11 @@ static unsigned check_table(const struct trk_scan_report *rep)
             for (int c = 0; c < 4; c++) assert_true(a->p[r * 4 + c] == a->p[c * 4 + r]);
         TRK_ASSERT_OK(trk_mat_check_spd(4, a->p, 0));
         assert_true(a->vis.pv >= 0 && a->vis.pv <= 1);
+        if (a->status == TRK_TRACK_TENTATIVE && tk.params.confirm.method == TRK_CONFIRM_EXISTENCE) {
+            /* the echoes' evidence against a scatterer: finite, within +-stationary_d2 / 2 */
+            const trk_real s = a->test.confirm.existence.persist_llr, half = tk.params.stationary_d2 / 2;
+            assert_true(s >= -half && s <= half);
+        }
 #if TRK_WITH_IMM
         double mu_sum = 0;
         for (int m = 0; m < tk.params.imm.n_models; m++) {

@@ -491,8 +491,8 @@ union trk_confirm_state {
         trk_real persist_llr;    /**< with a persistent-return description
                                     (trk_sensor_params persistent_share): the sum over
                                     the looks of ln L_target / L_scatterer, within
-                                    +-stationary_d2 / 2 (docs/tracker.md "Persistent
-                                    returns") */
+                                    +-stationary_d2 / 2 (docs/tracker.md "Echoes
+                                    weighed against a scatterer's") */
     } existence;  /**< TRK_CONFIRM_EXISTENCE */
 #if TRK_WITH_CLUTTER_TESTS
     struct trk_clutter_chi2 chi2;  /**< TRK_CONFIRM_CLUTTER_CHI2 */
@@ -777,11 +777,11 @@ struct trk_tracker_params {
                                                          With a persistent-return description
                                                          (persistent_share) a tentative track
                                                          under the existence test is held
-                                                         while v' P_v^-1 v < this - 2 S, S
-                                                         the ln likelihood ratio of its
-                                                         echoes as a target's against a
-                                                         scatterer's, summed over its looks
-                                                         within +-this / 2
+                                                         while v' P_v^-1 v < this - 2
+                                                         min(S, 0), S the ln likelihood
+                                                         ratio of its echoes as a target's
+                                                         against a scatterer's, summed over
+                                                         its looks within +-this / 2
                                                          (test.confirm.existence.persist_llr;
                                                          docs/tracker.md "Echoes weighed
                                                          against a scatterer's").
