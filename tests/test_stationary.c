@@ -18,6 +18,13 @@
  *   - with persistent returns in the amplitudes, each scan's mixture takes
  *     the sensor's share less the returns the held tracks explain (closed
  *     form from the table before the scan; per-track PDA: the sensor's);
+ *   - with amplitudes and the persistent-return description, a tentative
+ *     track's echoes weighed as its target's against a scatterer's: the sum
+ *     over its looks against the closed form (joint association and
+ *     per-track PDA, its bounds, an echo whose weight underflows), a still
+ *     object echoing as a target never confirmed, and a slow mover held past
+ *     stationary_d2 by a scatterer's echoes, the flag its closed form
+ *     stationary_d2 - 2 min(S, 0) at every look;
  *   - the parameter check. */
 #include "trk_test.h"
 #include "trk/tracker.h"
