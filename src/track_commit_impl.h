@@ -152,18 +152,16 @@ static trk_real persist_log_lr(const struct trk_tracker *t, const struct trk_sca
 {
     const struct trk_sensor_params *sp = t->ws.view.sp;
     const struct trk_amplitude *m = &sp->amplitude;
-    const trk_real ln_pfa = -m->t2 / m->clutter_power, pd = pr->pd, ps = sp->persistent_pd;
-    const trk_real pg = pr->pda->params.gate_prob;
-    if (t->ws.pd_power != 1 || t->ws.pd_scale != 1 || !(trk_log(pd) > ln_pfa && pd < 1)) return 0;
-    const trk_real iu_t = trk_log(pd) / ln_pfa, iu_s = trk_log(ps) / ln_pfa, d = iu_t - iu_s;
+    const trk_real pd = pr->pd, ps = sp->persistent_pd, pg = pr->pda->params.gate_prob;
+    const trk_real iu_t = trk_log(pd) * (-m->clutter_power / m->t2), iu_s = t->ws.persistent_inv_u, d = iu_t - iu_s;
+    if (t->ws.pd_power != 1 || t->ws.pd_scale != 1 || !(iu_t > 0 && iu_t < 1)) return 0; /* P_D in (pfa, 1) */
     trk_real w_sum = 0;
     for (size_t i = 0; i < set->n; i++) w_sum += set->w[i];
     trk_real ratio = beta0 * (1 - ps * pg) / (1 - pd * pg);
     for (size_t i = 0; i < set->n; i++) {
         const trk_real b = w_sum > 0 ? set->w[i] / w_sum * (1 - beta0) : 0; /* beta_i given existence */
-        const size_t j = t->ws.src[cand[i]];
-        const int has = scan->polar ? scan->polar[j].has_amplitude : scan->detections[j].has_amplitude;
-        const trk_real a = scan->polar ? scan->polar[j].amplitude : scan->detections[j].amplitude;
+        trk_real a;
+        const int has = scan_amplitude(scan, t->ws.src[cand[i]], &a);
         /* f_s / f_t (d = 0: one SNR, 1 at any amplitude; a^2 may be +inf) */
         const trk_real rho = has ? iu_s / iu_t * (d != 0 ? trk_exp(a * a / m->clutter_power * d) : 1) : ps / pd;
         if (b > 0) {
@@ -200,7 +198,7 @@ static void build_look(const struct trk_tracker *t, const struct trk_track *tr, 
     look->beta0 = out->beta0;
     look->persist_llr = 0;
     if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
-        t->ws.view.sp->persistent_share > 0) /* (with a Rayleigh model: checked at init) */
+        t->ws.persistent_inv_u > 0) /* a persistent-return description (with a Rayleigh model) */
         look->persist_llr = persist_log_lr(t, scan, pr, set, cand, out->beta0);
     look->has_nearest = 0;
     look->nearest = 0;

@@ -107,7 +107,8 @@ static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan 
 /* The scan's sensor from its pose (the scan's, or the sensor's fixed
  * one), with its clutter map as it stands before the scan: the view every
  * stage asks for R, P_D and lambda at a position; and the share of
- * persistent returns no held track explains (the amplitude mixture's). */
+ * persistent returns no held track explains (the amplitude mixture's)
+ * with their 1/u_s. */
 static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
 {
     const struct trk_sensor_params *sp = &t->params.sensor[scan->sensor_id];
@@ -123,6 +124,7 @@ static void see_from(struct trk_tracker *t, const struct trk_scan *scan)
 #else
     t->ws.persistent_share = sp->persistent_share;
 #endif
+    t->ws.persistent_inv_u = sp->persistent_share > 0 ? persistent_inv_u(sp) : 0;
 }
 
 /* The share of a scan's clutter that a thinning without the amplitude

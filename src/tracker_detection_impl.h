@@ -36,7 +36,7 @@ static struct amp_use amp_use_of(const struct trk_tracker *t, const struct trk_s
         au.ln_eta = trk_log(au.eta);
         au.ln_1m_eta = trk_log1p(-au.eta);
         au.inv_ln_pfa = -sp->amplitude.clutter_power / sp->amplitude.t2; /* ln pfa = -t^2/P (eq 6) */
-        au.inv_us = trk_log(au.pd_s) * au.inv_ln_pfa;
+        au.inv_us = persistent_inv_u(sp);
         au.ln_inv_us = trk_log(au.inv_us);
     }
     return au;

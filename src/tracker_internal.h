@@ -92,6 +92,26 @@ struct pred {
 #endif
 };
 
+/* 1/u_s of sensor sp's persistent returns: ln persistent_pd / ln pfa, ln
+ * pfa = -t^2/P (Brekke eqs 6, 8; persistent_share > 0 only with a Rayleigh
+ * model: checked at init). */
+TRK_INLINE trk_real persistent_inv_u(const struct trk_sensor_params *sp)
+{
+    return trk_log(sp->persistent_pd) * (-sp->amplitude.clutter_power / sp->amplitude.t2);
+}
+
+/* Scan detection i's amplitude into *a (its caller's, polar or Cartesian):
+ * whether it has one. */
+TRK_INLINE int scan_amplitude(const struct trk_scan *scan, size_t i, trk_real *a)
+{
+    if (scan->polar) {
+        *a = scan->polar[i].amplitude;
+        return scan->polar[i].has_amplitude;
+    }
+    *a = scan->detections[i].amplitude;
+    return scan->detections[i].has_amplitude;
+}
+
 /* ---- The scan's sensor at a position (the view ws.view, set once per
  * scan: sensor_view.h) */
 

@@ -295,7 +295,7 @@ static TRK_NOINLINE void thin_shift(struct trk_tracker *t, const struct trk_scan
         for (size_t j = 0; j < t->ws.n_valid; j++) {
             const size_t i = t->ws.src[j];
             struct trk_detection d = {t->ws.x[j], t->ws.y[j], {0, 0, 0}, 0, 0, 0};
-            d.amplitude = scan->polar ? scan->polar[i].amplitude : scan->detections[i].amplitude;
+            (void)scan_amplitude(scan, i, &d.amplitude);
             const trk_real pd = amp_pd(&au, &d);
             trk_real to, from;
             if (amp_mixture_log_lr(&au, pd, x_to, d.amplitude, &to) == TRK_OK &&

@@ -1221,6 +1221,9 @@ struct trk_tracker {
                 uint16_t pair[2 * TRK_MAX_TRACKS];
             } merge;
         } u;
+        trk_real persistent_inv_u;                             /**< the scan's scatterers' 1/u_s =
+                                                                  ln persistent_pd / ln pfa (0: no
+                                                                  persistent returns) */
     } ws;
 };
 
