@@ -37,7 +37,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->stationary_d2 = 25; /* motion past 5 sigma: a still object passes at e^-12.5 = 3.7e-6 (chi^2_2);
                               docs/tracker.md "Persistent returns" for the measured choice */
     /* a clutter map for a sensor with a coverage: 16 x 32 cells (16 x 16
-     * in a build of 256), 20 scans' memory, 2 pseudo-counts, a position's
+     * in a build of 256), 10 scans' memory, 2 pseudo-counts, a position's
      * ratio from the 3 x 3 cells about it, its own less one detection per
      * scan (docs/tracker.md "Clutter map" for the measured choice) */
     p->clutter_map.n_range = TRK_CLUTTER_MAP_CELLS >= 256 ? 16 : 0;
@@ -45,7 +45,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->clutter_map.window_cells = 1;
     p->clutter_map.guard_cells = 1;
     p->clutter_map.edge_alpha = TRK_REAL_C(0.2); /* docs/tracker.md "Clutter map" */
-    p->clutter_map.time_constant_scans = 20;
+    p->clutter_map.time_constant_scans = 10;
     p->clutter_map.prior_count = 2;
     p->clutter_map.min_ratio = TRK_REAL_C(0.1);
     p->clutter_map.max_ratio = 100;
@@ -61,7 +61,7 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->track_visibility = 1;
     p->visibility.pv0 = TRK_REAL_C(0.5);
     p->visibility.pcv0 = TRK_REAL_C(0.5);
-    p->visibility.delta_stay = TRK_REAL_C(0.99);
+    p->visibility.delta_stay = TRK_REAL_C(0.997); /* a mean life of 333 scans: docs/tuning.md "Target survival per scan" */
     p->visibility.delta_become = 0;
     p->visibility.omega_c = TRK_REAL_C(0.75);
     p->visibility.p_con = TRK_REAL_C(0.9);

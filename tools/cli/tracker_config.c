@@ -1187,7 +1187,7 @@ void tcfg_help(FILE *f)
             "                                     pair waits for a third point, [0, 1), 0 = off (0.003)\n"
             "  clutter_map.n_range, .n_bearing   each sensor's clutter map: cells over its coverage\n"
             "                                    (range x bearing; needs a maximum range), 0 = none (16, 32)\n"
-            "    clutter_map.time_constant_scans  the counts' memory, >= 1 scan (20)\n"
+            "    clutter_map.time_constant_scans  the counts' memory, >= 1 scan (10)\n"
             "    clutter_map.prior_count          pseudo-counts at the configured density, > 0 (2)\n"
             "    clutter_map.min_ratio, .max_ratio   bounds of a position's ratio to it (0.1, 100)\n"
             "    clutter_map.window_cells         a position's ratio from the cells within this many rows\n"
@@ -1205,7 +1205,7 @@ void tcfg_help(FILE *f)
             "                                    is counted and skipped, (0,1e15] (1e8)\n"
             "  visibility = 0|1                  track each track's visibility / existence (1)\n"
             "    visibility.pv0, .pcv0            at initiation (0.5, 0.5)\n"
-            "    visibility.delta_stay, .delta_become   Markov visibility model (0.99, 0)\n"
+            "    visibility.delta_stay, .delta_become   Markov visibility model (0.997, 0)\n"
             "    visibility.omega_c               confidence smoothing, [0,1) (0.75)\n"
             "    visibility.p_con, .p_term        confirm at pcv >= p_con, end at pcv < p_term (0.9, 0.1)\n"
             , TRK_MAX_SENSORS);
