@@ -50,7 +50,7 @@ MTT_IMM_RATES ?= 1 2 3
 MTT_IMM_ACCEL ?= 0.1
 MTT_IMM_ACCEL_S ?= 60
 
-.PHONY: mtt mtt-smoke mtt-sonar-smoke mtt-imm tuning
+.PHONY: mtt mtt-smoke mtt-sonar-smoke mtt-sonar-goals mtt-imm tuning
 # `make tuning`: one setting at a time (assumed P_D and clutter density, P_G,
 # the existence thresholds, clutter beyond capacity) against GOSPA, false
 # tracks and time to confirm (tools/scripts/tuning_sweep.sh; docs/tuning.md)
@@ -77,6 +77,12 @@ TEST_EXTRA += mtt-sonar-smoke
 TEST_EXTRA_DEPS_mtt-sonar-smoke := $(BUILD)/bin/trk-sim
 mtt-sonar-smoke: $(TEST_EXTRA_DEPS_mtt-sonar-smoke)
 	@sh tests/mtt_sonar_smoke.sh $(BUILD)/bin/trk-sim
+
+# the sonar family's goals at the defaults (120 seeds, about 10 s on 2 cores)
+TEST_EXTRA += mtt-sonar-goals
+TEST_EXTRA_DEPS_mtt-sonar-goals := $(BUILD)/bin/trk-sim
+mtt-sonar-goals: $(TEST_EXTRA_DEPS_mtt-sonar-goals)
+	@sh tests/mtt_sonar_goals.sh $(BUILD)/bin/trk-sim
 
 mtt-imm:
 	+@$(MAKE) --no-print-directory BUILD=$(MTT_IMM_BUILD) CONFIG_DEFS='$(MTT_IMM_DEFS)' $(MTT_IMM_BUILD)/bin/trk-sim
