@@ -22,6 +22,9 @@
 #   make mtt-smoke  the `make test` step: a short run, its CSV checked (tests/mtt_smoke.sh)
 #   make mtt-sonar-smoke  the `make test` step for --family sonar: a short run, its CSV
 #                   checked (tests/mtt_sonar_smoke.sh)
+#   make mtt-sonar-goals  the `make test` step of the sonar family's goals at the defaults:
+#                   120 seeds at 20 and 100 per ping against the oracle
+#                   (tests/mtt_sonar_goals.sh)
 #   make mtt-imm    manoeuvring targets, CV-only (new) against IMM (imm).
 #                   Builds trk-sim in $(MTT_IMM_BUILD) (CONFIG_DEFS=$(MTT_IMM_DEFS): IMM tracks),
 #                   then `trk-sim mtt --config new,imm $(MTT_IMM_ARGS)` (10 seeds, the default

@@ -18,7 +18,7 @@ fail() {
     echo "demo-sonar-check: FAILED: $*"
     exit 1
 }
-"$sim" demo --no-plot --out "$d/demo" >"$d/out.txt" 2>&1 || { cat "$d/out.txt"; fail "trk-sim demo exited $?"; }
+"$sim" demo --no-plot --out "$d/demo" >"$d/out.txt" 2>&1 || { rc=$?; cat "$d/out.txt"; fail "trk-sim demo exited $rc"; }
 s="$d/demo/summary.csv"
 [ -f "$s" ] || fail "no summary.csv"
 v() { awk -F, -v k="$1" '$1 == k { print $2; f = 1 } END { if (!f) print "missing" }' "$s"; }

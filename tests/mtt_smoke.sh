@@ -41,15 +41,15 @@ fail() {
 }
 for t in 1 2; do
     "$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads $t --quiet --no-plot \
-        --out "$d/m$t" >"$d/out$t.txt" 2>&1 || { cat "$d/out$t.txt"; fail "trk-sim mtt exited with $?"; }
+        --out "$d/m$t" >"$d/out$t.txt" 2>&1 || { rc=$?; cat "$d/out$t.txt"; fail "trk-sim mtt exited with $rc"; }
 done
 "$sim" mtt --family fixed --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads 1 --quiet --no-plot \
-    --out "$d/f1" >"$d/outf.txt" 2>&1 || { cat "$d/outf.txt"; fail "trk-sim mtt --family fixed exited with $?"; }
+    --out "$d/f1" >"$d/outf.txt" 2>&1 || { rc=$?; cat "$d/outf.txt"; fail "trk-sim mtt --family fixed exited with $rc"; }
 "$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads 1 --quiet --no-plot --turn-rate 1 \
     --turn-deg 120 --accel 0.1 --accel-s 60 --out "$d/a1" >"$d/outa.txt" 2>&1 ||
-    { cat "$d/outa.txt"; fail "trk-sim mtt --accel exited with $?"; }
+    { rc=$?; cat "$d/outa.txt"; fail "trk-sim mtt --accel exited with $rc"; }
 "$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --threads 1 --quiet --no-plot --turn-rate 0.01 \
-    --turn-deg 1 --out "$d/s1" >"$d/outs.txt" 2>&1 || { cat "$d/outs.txt"; fail "trk-sim mtt (no turn) exited with $?"; }
+    --turn-deg 1 --out "$d/s1" >"$d/outs.txt" 2>&1 || { rc=$?; cat "$d/outs.txt"; fail "trk-sim mtt (no turn) exited with $rc"; }
 # check CSV FAMILY [ACCEL [BOUND]] (BOUND 1: the oracle's GOSPA at most new's at the lowest clutter)
 check() {
     [ -f "$1" ] || fail "no CSV written ($1)"
@@ -212,7 +212,7 @@ grep -q '^-- paired against oracle on the same seeds' "$d/out1.txt" || fail "no 
 grep -q 'not one of --config' "$d/outpb.txt" || { cat "$d/outpb.txt"; fail "--paired-base: no clear refusal"; }
 # known: the scans reduced to the targets' detections
 "$sim" mtt --scans 30 --seeds 2 --clutter-count 0,50 --seed 3 --config new,known --threads 1 --quiet --no-plot \
-    --out "$d/k" >"$d/outk.txt" 2>&1 || { cat "$d/outk.txt"; fail "trk-sim mtt --config new,known exited with $?"; }
+    --out "$d/k" >"$d/outk.txt" 2>&1 || { rc=$?; cat "$d/outk.txt"; fail "trk-sim mtt --config new,known exited with $rc"; }
 awk -F, '
 function bad(msg) { print "mtt-smoke: FAILED: known: " msg; err = 1; exit 1 }
 NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
@@ -237,7 +237,7 @@ END {
 }' "$d/k_runs.csv" || exit 1
 # mtt-compare: the family is part of the key
 "$sim" mtt-compare "$d/m1.csv" "$d/f1.csv" --no-plot --out "$d/c" >"$d/outc.txt" 2>&1 ||
-    { cat "$d/outc.txt"; fail "trk-sim mtt-compare of a transit and a fixed CSV exited with $?"; }
+    { rc=$?; cat "$d/outc.txt"; fail "trk-sim mtt-compare of a transit and a fixed CSV exited with $rc"; }
 [ "$(awk -F, 'NR > 1' "$d/c.csv" | wc -l)" -eq 16 ] || fail "mtt-compare: not 16 rows merged"
 [ "$(awk -F, 'NR > 1 && $7 == "fixed"' "$d/c.csv" | wc -l)" -eq 8 ] || fail "mtt-compare: not 8 fixed rows"
 if "$sim" mtt-compare "$d/m1.csv" "$d/m2.csv" --no-plot --out "$d/c2" >"$d/outc2.txt" 2>&1; then
