@@ -107,9 +107,13 @@ trk_status trk_amplitude_log_lr_at_pd(const struct trk_amplitude *m, trk_real pd
     if (m->tabulated || m->model != TRK_AMP_RAYLEIGH) return TRK_E_UNSUPPORTED;
     if (!isfinite(a) || !isfinite(pd)) return TRK_E_NAN;
     if (!(pd > m->pfa && pd < 1)) return TRK_E_RANGE;
-    /* 1/u = ln P_D / ln pfa (eq 8: 1 + SNR = u), ln pfa = -t^2/P (eq 6) */
-    const trk_real inv_u = trk_log(pd) * (-m->clutter_power / m->t2);
+    const trk_real inv_u = trk_i_amplitude_inv_u(m, pd);
     return trk_i_amplitude_log_lr_inv_u(m, inv_u, trk_log(inv_u), a, log_lr);
+}
+
+trk_real trk_i_amplitude_inv_u(const struct trk_amplitude *m, trk_real p)
+{
+    return trk_log(p) * (-m->clutter_power / m->t2); /* 1/u = ln p / ln pfa (eq 8), ln pfa = -t^2/P (eq 6) */
 }
 
 /* Normalised u^2 = a^2/P of a tabulated inverse-survival curve at x >= 0. */

@@ -17,6 +17,12 @@
 #define TRK_I_AMP_BUILT 0x616d706cu /* "ampl" */
 
 struct trk_amplitude;
+/* 1/u = ln p / ln pfa of a Swerling I target that a closed-form Rayleigh
+ * model m detects at probability p (Brekke eq 8: u = 1 + SNR; ln pfa =
+ * -t^2/P, eq 6): the one form behind trk_amplitude_log_lr_at_pd, the
+ * tracker's persistent returns and its echoes weighed against theirs. m
+ * and p are not checked: p in (pfa, 1) gives 1/u in (0, 1). */
+trk_real trk_i_amplitude_inv_u(const struct trk_amplitude *m, trk_real p);
 /* The Rayleigh ln l^a of a target with 1 + SNR = u (Brekke eq 19), from
  * inv_u = 1/u = ln P_D / ln pfa and its log: (1 - inv_u)(a^2 - t^2)/P +
  * ln inv_u. The one closed form behind trk_amplitude_log_lr_at_pd, for a

@@ -153,7 +153,7 @@ static trk_real persist_log_lr(const struct trk_tracker *t, const struct trk_sca
     const struct trk_sensor_params *sp = t->ws.view.sp;
     const struct trk_amplitude *m = &sp->amplitude;
     const trk_real pd = pr->pd, ps = sp->persistent_pd, pg = pr->pda->params.gate_prob;
-    const trk_real iu_t = trk_log(pd) * (-m->clutter_power / m->t2), iu_s = t->ws.persistent_inv_u, d = iu_t - iu_s;
+    const trk_real iu_t = trk_i_amplitude_inv_u(m, pd), iu_s = t->ws.persistent_inv_u, d = iu_t - iu_s;
     if (t->ws.pd_power != 1 || t->ws.pd_scale != 1 || !(iu_t > 0 && iu_t < 1)) return 0; /* P_D in (pfa, 1) */
     trk_real w_sum = 0;
     for (size_t i = 0; i < set->n; i++) w_sum += set->w[i];

@@ -92,12 +92,11 @@ struct pred {
 #endif
 };
 
-/* 1/u_s of sensor sp's persistent returns: ln persistent_pd / ln pfa, ln
- * pfa = -t^2/P (Brekke eqs 6, 8; persistent_share > 0 only with a Rayleigh
- * model: checked at init). */
+/* 1/u_s of sensor sp's persistent returns: ln persistent_pd / ln pfa
+ * (persistent_share > 0 only with a Rayleigh model: checked at init). */
 TRK_INLINE trk_real persistent_inv_u(const struct trk_sensor_params *sp)
 {
-    return trk_log(sp->persistent_pd) * (-sp->amplitude.clutter_power / sp->amplitude.t2);
+    return trk_i_amplitude_inv_u(&sp->amplitude, sp->persistent_pd);
 }
 
 /* Scan detection i's amplitude into *a (its caller's, polar or Cartesian):
