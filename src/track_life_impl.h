@@ -27,22 +27,41 @@ static void end_track(struct trk_track *tr, enum trk_track_end why, struct trk_s
  * ln L_t / L_s over its looks, within +-h/2: existence_look), the two
  * kinds of evidence add as log odds: v' P_v^-1 v / 2 is the motion's ln
  * likelihood ratio at most (its Gaussian's peak against its value at v =
- * 0), so while S < 0 the track is held while v' P_v^-1 v / 2 + S < h / 2,
- * that is below the bar h - 2S in (h, 2h]. A track whose echoes are a
- * scatterer's must move the more clearly. One whose echoes are a target's
- * keeps the bar h: an object that stands still is never reported, however
- * it echoes (a weak rock is not told from a target by its echoes). */
+ * 0), so the track is held while v' P_v^-1 v / 2 + S < h / 2, that is
+ * below the bar h - 2S. A track whose echoes are a scatterer's must move
+ * the more clearly (S < 0: a bar up to 2h). Echoes that are a target's
+ * lower the bar by at most h/5 (S capped at h/10: 20 at the default 25),
+ * so that an object that stands still is reported at e^(-2h/5) per look at
+ * most (4.5e-5), however it echoes: a weak rock is not told from a target
+ * by its echoes alone. */
 static int standing_still(const struct trk_tracker *t, const struct trk_track *tr)
 {
     trk_real h = t->params.stationary_d2;
     if (!(h > 0)) return 0;
-    if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
-        tr->test.confirm.existence.persist_llr < 0)
-        h -= 2 * tr->test.confirm.existence.persist_llr;
+    if (tr->status == TRK_TRACK_TENTATIVE && t->params.confirm.method == TRK_CONFIRM_EXISTENCE) {
+        const trk_real s = tr->test.confirm.existence.persist_llr, s_max = h / 10;
+        h -= 2 * (s < s_max ? s : s_max);
+    }
     const trk_real a = tr->p[P(VX, VX)], b = tr->p[P(VX, VY)], c = tr->p[P(VY, VY)];
     const trk_real vx = tr->x[VX], vy = tr->x[VY], det = a * c - b * b;
     if (!(a > 0 && det > 0)) return 0;
     return c * vx * vx - 2 * b * vx * vy + a * vy * vy < h * det; /* v' P_v^-1 v < h */
+}
+
+/* Tentative track tr, whose test confirms it on this look and which does
+ * not stand still: is it confirmed now? Yes, but for echoes a scatterer's
+ * (S < -TRK_SCATTERER_ECHO_LLR): then only once it has moved on
+ * TRK_STILL_LOOKS looks in a row, each with its test confirming (counted in
+ * n_still_in_row, which any other look sets to 0: step_tests). A track
+ * drawn onto a scatterer from clutter or a target's point has the pull for
+ * velocity: it passes the motion test once, then coasts off the scatterer
+ * and its existence falls. */
+static int moved_enough(const struct trk_tracker *t, struct trk_track *tr)
+{
+    if (!(t->params.confirm.method == TRK_CONFIRM_EXISTENCE &&
+          tr->test.confirm.existence.persist_llr < -TRK_SCATTERER_ECHO_LLR))
+        return 1;
+    return ++tr->n_still_in_row >= TRK_STILL_LOOKS;
 }
 
 /* The share of the scan's detections that are not targets' taken for
@@ -111,10 +130,13 @@ static void step_tests(struct trk_tracker *t, struct trk_track *tr, const struct
 {
     if (tr->status == TRK_TRACK_TENTATIVE) {
         const int d = trk_i_confirm_step(t, tr, look);
-        tr->stationary = (uint8_t)(d > 0 && standing_still(t, tr));
+        const int moving = d > 0 && !standing_still(t, tr);
+        const int confirm = moving && moved_enough(t, tr);
+        if (!moving || confirm) tr->n_still_in_row = 0;
+        tr->stationary = (uint8_t)(d > 0 && !confirm);
         if (tr->stationary) {
             rep->n_stationary++;
-        } else if (d > 0) {
+        } else if (confirm) {
             tr->status = TRK_TRACK_CONFIRMED;
             trk_i_term_start(t, tr);
             rep->n_confirmed++;

@@ -351,7 +351,21 @@ static void echo_at(int k, double x, double y, double amp, struct trk_scan_repor
 static int held_by_bar(const struct trk_track *tr, double h)
 {
     const double s = (double)tr->test.confirm.existence.persist_llr;
-    return velocity_d2(tr) < h - 2 * fmin(s, 0);
+    return velocity_d2(tr) < h - 2 * fmin(s, h / 10);
+}
+
+/* The held flag of a tentative track whose existence test confirms it on
+ * this look: held by the bar, or moving with echoes a scatterer's (S <
+ * -TRK_SCATTERER_ECHO_LLR) on fewer than TRK_STILL_LOOKS looks in a row
+ * (*moved: that count, kept by the caller, 0 after any other look). */
+static int held_closed_form(const struct trk_track *tr, double h, int *moved)
+{
+    if (held_by_bar(tr, h)) {
+        *moved = 0;
+        return 1;
+    }
+    if (!((double)tr->test.confirm.existence.persist_llr < -TRK_SCATTERER_ECHO_LLR)) return 0;
+    return ++*moved < TRK_STILL_LOOKS;
 }
 
 /* A still object's held track weighs every look after its start: the
@@ -447,6 +461,7 @@ static void test_still_target_echoes_still_held(void **state)
         if (tr->vis.pv >= p.confirm.u.existence.p_confirm) assert_int_equal(tr->stationary, held_by_bar(tr, h));
     }
     assert_true(at_bound >= 10);
+    /* the bar it was held under: h - 2 (h / 10), lowered by a fifth at most */
 }
 
 /* A slow mover (1 m/s, sigma 5 m, 4 s scans), the same positions twice:
@@ -458,14 +473,15 @@ static void test_still_target_echoes_still_held(void **state)
  * v' P_v^-1 v below that, never in 120 scans). */
 #define SLOW_MPS 1.0
 
-static int slow_mover_confirmed_at(double amp, int *held_past_h)
+static int slow_mover_confirmed_at(double amp, int *held_past_h, int *waited)
 {
     struct trk_tracker_params p;
     evidence_params(&p, TRK_ASSOC_JOINT);
     TRK_ASSERT_OK(trk_tracker_init(&tk, &p));
     const double h = (double)p.stationary_d2;
     uint64_t rng = 7;
-    *held_past_h = 0;
+    int moved = 0;
+    *held_past_h = *waited = 0;
     for (int k = 0; k < 120; k++) {
         struct trk_scan_report rep;
         const double x = 1000 + SLOW_MPS * DT_S * k + 5 * trk_test_nrand(&rng), y = 2000 + 5 * trk_test_nrand(&rng);
@@ -473,9 +489,14 @@ static int slow_mover_confirmed_at(double amp, int *held_past_h)
         if (rep.n_confirmed == 1) return k;
         if (k < 1) continue;
         const struct trk_track *tr = only_track();
-        if (tr->vis.pv < p.confirm.u.existence.p_confirm) continue;
-        assert_int_equal(tr->stationary, held_by_bar(tr, h));
+        if (tr->vis.pv < p.confirm.u.existence.p_confirm) {
+            moved = 0;
+            continue;
+        }
+        assert_int_equal(tr->stationary, held_closed_form(tr, h, &moved));
+        assert_int_equal(tr->n_still_in_row, moved);
         *held_past_h += tr->stationary && velocity_d2(tr) >= h;
+        *waited += tr->stationary && !held_by_bar(tr, h);
     }
     return -1;
 }
@@ -485,15 +506,18 @@ static void test_scatterer_echoes_raise_the_motion_bar(void **state)
     (void)state;
     struct trk_tracker_params p;
     evidence_params(&p, TRK_ASSOC_JOINT);
-    int past_t, past_s;
-    const int target = slow_mover_confirmed_at(mean_echo(&p, (double)p.sensor[0].amplitude.pd), &past_t);
-    const int scatterer = slow_mover_confirmed_at(mean_echo(&p, EV_PS), &past_s);
+    int past_t, past_s, waited_t, waited_s;
+    const int target = slow_mover_confirmed_at(mean_echo(&p, (double)p.sensor[0].amplitude.pd), &past_t, &waited_t);
+    const int scatterer = slow_mover_confirmed_at(mean_echo(&p, EV_PS), &past_s, &waited_s);
     print_message("slow mover confirmed at scan %d with a target's echoes, %d with a scatterer's (held past the "
-                  "bar of 25 at %d looks)\n", target, scatterer, past_s);
+                  "bar of 25 at %d looks, %d of them past its own bar: moved on fewer than %d looks in a row)\n",
+                  target, scatterer, past_s, waited_s, TRK_STILL_LOOKS);
     assert_true(target > 2);
     assert_int_equal(past_t, 0);
+    assert_int_equal(waited_t, 0);
     assert_true(scatterer > target + 10);
     assert_true(past_s >= 5);
+    assert_int_equal(waited_s, TRK_STILL_LOOKS - 1); /* then confirmed at the look after */
 }
 
 static void test_param_check(void **state)

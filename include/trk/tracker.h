@@ -231,6 +231,16 @@ struct trk_pose {
  * from zero is not taken for a persistent return. */
 #define TRK_STILL_LOOKS 3
 
+/** ln L_target / L_scatterer (a tentative track's echo evidence, struct
+ * trk_track test.confirm.existence.persist_llr) below minus this: echoes a
+ * scatterer's by more than e^2 (7.4) to 1. Such a track whose motion test
+ * passes is confirmed only after it has passed on TRK_STILL_LOOKS looks in a
+ * row, each with its existence test confirming: a track drawn onto a
+ * scatterer (its velocity the pull of its first points, not the scatterer's)
+ * passes once and then loses the scatterer (docs/tracker.md "Echoes weighed
+ * against a scatterer's"). */
+#define TRK_SCATTERER_ECHO_LLR 2
+
 /** One scan of one sensor. The detections are read, never written. */
 struct trk_scan {
     int64_t time_us;                        /**< scan time (microseconds, any epoch);
@@ -778,12 +788,18 @@ struct trk_tracker_params {
                                                          (persistent_share) a tentative track
                                                          under the existence test is held
                                                          while v' P_v^-1 v < this - 2
-                                                         min(S, 0), S the ln likelihood
-                                                         ratio of its echoes as a target's
-                                                         against a scatterer's, summed over
-                                                         its looks within +-this / 2
-                                                         (test.confirm.existence.persist_llr;
-                                                         docs/tracker.md "Echoes weighed
+                                                         min(S, this / 10), S the ln
+                                                         likelihood ratio of its echoes as
+                                                         a target's against a scatterer's,
+                                                         summed over its looks within
+                                                         +-this / 2
+                                                         (test.confirm.existence.persist_llr),
+                                                         and one whose echoes are a
+                                                         scatterer's (S <
+                                                         -TRK_SCATTERER_ECHO_LLR) is held
+                                                         until it has moved on
+                                                         TRK_STILL_LOOKS looks in a row
+                                                         (docs/tracker.md "Echoes weighed
                                                          against a scatterer's").
                                                          Default 25: motion beyond 5 sigma
                                                          (a still object passes at 3.7e-6,
@@ -891,10 +907,18 @@ struct trk_track {
     uint8_t end_reason;               /**< enum trk_track_end */
     uint8_t stationary;               /**< 1: a tentative track held because its
                                          velocity is consistent with standing still
-                                         (trk_tracker_params.stationary_d2) */
+                                         (trk_tracker_params.stationary_d2), or
+                                         because it has not yet moved on
+                                         TRK_STILL_LOOKS looks in a row with echoes
+                                         a scatterer's (TRK_SCATTERER_ECHO_LLR) */
     uint8_t n_still_in_row;           /**< a confirmed track: consecutive looks whose
                                          velocity was consistent with standing still;
-                                         at TRK_STILL_LOOKS it goes back to held */
+                                         at TRK_STILL_LOOKS it goes back to held. A
+                                         tentative track whose echoes are a
+                                         scatterer's (TRK_SCATTERER_ECHO_LLR):
+                                         consecutive looks it moved with its test
+                                         confirming; it is confirmed at the
+                                         TRK_STILL_LOOKS-th */
     int64_t time_us;                  /**< time of x and P */
     trk_real x[TRK_CV2_NX];           /**< [x, vx, y, vy] */
     trk_real p[TRK_CV2_NX * TRK_CV2_NX];  /**< covariance of x (4 x 4, row-major; TRK_CV2_P) */
@@ -955,8 +979,8 @@ struct trk_scan_report {
     uint32_t n_tracks_hit;          /**< ... with at least one detection gated */
     uint32_t n_started;             /**< new tentative tracks */
     uint32_t n_confirmed;           /**< tentative -> confirmed */
-    uint32_t n_stationary;          /**< tentative tracks held as standing still
-                                       (trk_tracker_params.stationary_d2) */
+    uint32_t n_stationary;          /**< tentative tracks held (struct trk_track
+                                       stationary; trk_tracker_params.stationary_d2) */
     uint32_t n_terminated;          /**< tracks ended this scan (any reason) */
     uint32_t n_init_refused_full;   /**< initiations refused: table full (single point: each
                                        detection that could not start; two points: each pair
