@@ -111,8 +111,8 @@ void trk_i_confirm_start(const struct trk_tracker *t, struct trk_track *tr)
  * count the track's model expects there, each forgotten at 1 - 1/tau per
  * look; and the evidence of a target against a persistent scatterer, ln
  * L_t / L_s summed over the track's looks and kept within +-h/2 (h =
- * stationary_d2): it raises the motion test's bar to h - 2 min(S, 0), at
- * most 2h (standing_still, track_life_impl.h), and a bound lets a held scatterer
+ * stationary_d2): it moves the motion test's bar to h - 2 min(S, h/10), in
+ * [4h/5, 2h] (standing_still, track_life_impl.h), and a bound lets a held scatterer
  * that starts to move, or a target that a few strong echoes made look like
  * one, show it within a few looks rather than after as many as it has
  * had (the survey's counter capped at M, ch. 5.3). */
