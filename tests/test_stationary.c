@@ -436,9 +436,9 @@ static void test_persistent_evidence_closed_form(void **state)
 }
 
 /* A still object echoing as a target does (its weak echoes detected every
- * scan, 40 scans): S climbs to its upper bound, the bar stays
- * stationary_d2, and it is never confirmed: what stands still is not
- * reported, however it echoes. */
+ * scan, 40 scans): S climbs to its upper bound, the bar falls by a fifth at
+ * most (to 4 stationary_d2 / 5), and it is never confirmed: what stands
+ * still is not reported, however it echoes. */
 static void test_still_target_echoes_still_held(void **state)
 {
     (void)state;
@@ -461,16 +461,17 @@ static void test_still_target_echoes_still_held(void **state)
         if (tr->vis.pv >= p.confirm.u.existence.p_confirm) assert_int_equal(tr->stationary, held_by_bar(tr, h));
     }
     assert_true(at_bound >= 10);
-    /* the bar it was held under: h - 2 (h / 10), lowered by a fifth at most */
 }
 
 /* A slow mover (1 m/s, sigma 5 m, 4 s scans), the same positions twice:
  * with a target's weak echoes it is confirmed as soon as its velocity is
- * resolved past stationary_d2; with a scatterer's strong echoes the bar
- * rises (up to 2 stationary_d2), it is held at looks whose motion passes
- * stationary_d2 (the flag its closed form at every look), and is confirmed
- * once it has shown the motion the bar asks (at 0.8 m/s, where q keeps
- * v' P_v^-1 v below that, never in 120 scans). */
+ * resolved past its bar (stationary_d2, lowered by a fifth at most); with a
+ * scatterer's strong echoes the bar rises (up to 2 stationary_d2), it is
+ * held at looks whose motion passes stationary_d2, and once its motion
+ * passes its own bar it waits TRK_STILL_LOOKS - 1 looks more (S below
+ * -TRK_SCATTERER_ECHO_LLR), then is confirmed (the flag and the count their
+ * closed form at every look; at 0.8 m/s, where q keeps v' P_v^-1 v below
+ * the bar, never in 120 scans). */
 #define SLOW_MPS 1.0
 
 static int slow_mover_confirmed_at(double amp, int *held_past_h, int *waited)
