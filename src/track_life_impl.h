@@ -105,7 +105,8 @@ static trk_real unexplained_persistent_share(const struct trk_tracker *t, const 
  * persistent return with a clutter point's velocity, was confirmed, and
  * was then held still by the scatterer's returns (the survey's stationary
  * point tracks, ch. 5.3). It is confirmed again, under its id, once it
- * moves. 1 when it went back. */
+ * moves (and, with echoes a scatterer's, has moved on TRK_STILL_LOOKS looks
+ * in a row: moved_enough). 1 when it went back. */
 static int hold_if_still(struct trk_tracker *t, struct trk_track *tr, struct trk_scan_report *rep)
 {
     if (!standing_still(t, tr)) {

@@ -145,15 +145,25 @@ static void free_terminated(struct trk_tracker *t)
         }
 }
 
+/* The live tracks not yet updated in this scan (ws.done), each by its own
+ * PDA: confirmed ones first, then tentative ones. */
+static void update_left(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
+{
+    for (int confirmed = 1; confirmed >= 0; confirmed--) {
+        const uint8_t want = confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE;
+        for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
+            if (!t->ws.done[i] && t->track[i].status == want) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
+    }
+}
+
 /* Per-track PDA: confirmed tracks first, since a tentative track may not
  * use the detections in a confirmed track's gate (it would become its
- * duplicate). */
+ * duplicate); each track once (ws.done: a confirmed track that went back
+ * to held is tentative for the second pass). */
 static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
-        if (t->track[i].status == TRK_TRACK_CONFIRMED) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
-        if (t->track[i].status == TRK_TRACK_TENTATIVE) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) t->ws.done[i] = 0;
+    update_left(t, scan, rep);
 }
 
 #if TRK_WITH_JOINT
@@ -166,11 +176,7 @@ static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, str
     joint_gate(t, scan, rep);
     joint_solve(t, rep);
     for (size_t k = 0; k < t->ws.n_joint; k++) update_track(t, &t->track[t->ws.joint_slot[k]], scan, k, rep);
-    for (int confirmed = 1; confirmed >= 0; confirmed--) {
-        const uint8_t want = confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE;
-        for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
-            if (!t->ws.in_joint[i] && t->track[i].status == want) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
-    }
+    update_left(t, scan, rep);
 }
 #endif
 
@@ -181,6 +187,7 @@ static void update_track(struct trk_tracker *t, struct trk_track *tr, const stru
                          struct trk_scan_report *rep)
 {
     struct trk_look look;
+    t->ws.done[tr - t->track] = 1;
     rep->n_tracks_updated++;
 #if TRK_WITH_JOINT
     const int failed = joint_k == JOINT_NONE ? track_update(t, tr, scan, &look)

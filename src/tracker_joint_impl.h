@@ -65,7 +65,7 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
         t->ws.miss[k] = 0;
     }
     t->ws.joint_slot[k] = (uint16_t)(tr - t->track);
-    t->ws.in_joint[tr - t->track] = 1;
+    t->ws.done[tr - t->track] = 1;
     t->ws.pair_first[k + 1] = (uint16_t)(off + set.n);
     t->ws.n_joint = k + 1;
     return 0;
@@ -76,7 +76,7 @@ static TRK_NOINLINE void joint_gate(struct trk_tracker *t, const struct trk_scan
 {
     t->ws.n_joint = 0;
     t->ws.pair_first[0] = 0;
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) t->ws.in_joint[i] = 0;
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) t->ws.done[i] = 0;
     for (int confirmed = 1; confirmed >= 0; confirmed--)
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             struct trk_track *tr = &t->track[i];
@@ -95,7 +95,7 @@ static TRK_NOINLINE void joint_solve(struct trk_tracker *t, struct trk_scan_repo
     struct trk_jpda_report jr;
     if (trk_jpda_solve(&pairs, &t->ws.u.joint.solver, t->ws.u.joint.p_pair, t->ws.u.joint.p_miss, &jr) != TRK_OK) {
         rep->n_assoc_overflow += (uint32_t)n;
-        for (size_t k = 0; k < n; k++) t->ws.in_joint[t->ws.joint_slot[k]] = 0;
+        for (size_t k = 0; k < n; k++) t->ws.done[t->ws.joint_slot[k]] = 0;
         t->ws.n_joint = 0;
         return;
     }

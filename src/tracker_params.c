@@ -34,7 +34,8 @@ void trk_tracker_default_params(struct trk_tracker_params *p)
     p->init.max_gap_scans = 2; /* a target missed once still pairs */
     p->init.birth_density_per_m2 = TRK_REAL_C(1e-9);
     p->init.min_existence = TRK_REAL_C(0.003); /* docs/tuning.md "The least initial existence" */
-    p->stationary_d2 = 25; /* motion past 5 sigma: a still object passes at e^-12.5 = 3.7e-6 (chi^2_2);
+    p->stationary_d2 = 25; /* motion past 5 sigma: a still object passes at e^-12.5 = 3.7e-6 (chi^2_2),
+                              at e^-10 = 4.5e-5 when its echoes are a target's (the bar lowered to 20);
                               docs/tracker.md "Persistent returns" for the measured choice */
     /* a clutter map for a sensor with a coverage: 16 x 32 cells (16 x 16
      * in a build of 256), 10 scans' memory, 2 pseudo-counts, a position's

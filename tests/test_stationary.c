@@ -24,7 +24,10 @@
  *     per-track PDA, its bounds, an echo whose weight underflows), a still
  *     object echoing as a target never confirmed, and a slow mover held past
  *     stationary_d2 by a scatterer's echoes, the flag its closed form
- *     stationary_d2 - 2 min(S, 0) at every look;
+ *     stationary_d2 - 2 min(S, stationary_d2 / 10) at every look, with the
+ *     wait of a track whose echoes are a scatterer's (TRK_SCATTERER_ECHO_LLR);
+ *   - every live track updated once a scan, also a confirmed one that goes
+ *     back to held (per-track PDA and joint association);
  *   - the parameter check. */
 #include "trk_test.h"
 #include "trk/tracker.h"
@@ -53,6 +56,15 @@ static double velocity_d2(const struct trk_track *tr)
     const double c = (double)tr->p[TRK_CV2_P(TRK_CV2_VY, TRK_CV2_VY)];
     const double vx = (double)tr->x[TRK_CV2_VX], vy = (double)tr->x[TRK_CV2_VY];
     return (c * vx * vx - 2 * b * vx * vy + a * vy * vy) / (a * c - b * b);
+}
+
+/* The held flag's closed form: v' P_v^-1 v below the bar h - 2 min(S, h/10)
+ * (h = stationary_d2, S the track's echo evidence: 0 without amplitudes or
+ * a persistent-return description). */
+static int held_by_bar(const struct trk_track *tr, double h)
+{
+    const double s = (double)tr->test.confirm.existence.persist_llr;
+    return velocity_d2(tr) < h - 2 * fmin(s, h / 10);
 }
 
 /* One scan of the object at (x, y) with noise (every scan). */
@@ -132,11 +144,11 @@ static void test_persistent_return_held_then_handed_over(void **state)
  * flagged stationary, counted in n_stationary), under its id, at that look
  * and not before; it speeds up to 2 m/s north: the same track is confirmed
  * again. */
-static void test_confirmed_track_that_stops_is_held(void **state)
+static void confirmed_track_that_stops_is_held(enum trk_assoc_method assoc)
 {
-    (void)state;
     struct trk_tracker_params p;
     params(&p);
+    p.association = assoc;
     p.process_noise_q = TRK_REAL_C(0.05);
     /* chi^2_2 at 0.99, below the default's 25: with this q the velocity's
      * sigma stays large, and at 25 the track would be held at 2.2 m/s and
@@ -155,6 +167,9 @@ static void test_confirmed_track_that_stops_is_held(void **state)
         scan_at(k, x, y, &rng, &rep);
         if (k < 2) continue;
         const struct trk_track *tr = only_track();
+        /* once a scan, also at the look it goes back to held (tentative after
+         * the confirmed tracks' updates: not updated again with the tentative) */
+        assert_int_equal(rep.n_tracks_updated, 1);
         if (k == 19) {
             assert_int_equal(tr->status, TRK_TRACK_CONFIRMED);
             id = tr->id;
@@ -181,9 +196,19 @@ static void test_confirmed_track_that_stops_is_held(void **state)
             again_at = k;
         }
     }
-    print_message("held at scan %d, confirmed again at %d\n", held_at, again_at);
+    print_message("%s: held at scan %d, confirmed again at %d\n", assoc == TRK_ASSOC_JOINT ? "joint" : "pda", held_at,
+                  again_at);
     assert_true(held_at > 30 && held_at < 50);
     assert_true(again_at > 62 && again_at < 85);
+}
+
+static void test_confirmed_track_that_stops_is_held(void **state)
+{
+    (void)state;
+    confirmed_track_that_stops_is_held(TRK_ASSOC_PDA);
+#if TRK_WITH_JOINT
+    confirmed_track_that_stops_is_held(TRK_ASSOC_JOINT);
+#endif
 }
 
 /* The scan at which the mover is confirmed (-1: never in 20 scans). */
@@ -255,9 +280,8 @@ static int persistent_scans(enum trk_assoc_method assoc)
         double held = 0;
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             const struct trk_track *tr = trk_tracker_track(&tk, i);
-            if (tr && tr->status == TRK_TRACK_TENTATIVE && /* the bar its echoes' evidence set */
-                velocity_d2(tr) < (double)p.stationary_d2 - 2 * (double)tr->test.confirm.existence.persist_llr)
-                held += (double)tr->vis.pv * p_s;
+            if (tr && tr->status == TRK_TRACK_TENTATIVE && held_by_bar(tr, (double)p.stationary_d2))
+                held += (double)tr->vis.pv * p_s; /* standing still under the bar its echoes set */
         }
         struct trk_detection d[10];
         memset(d, 0, sizeof d);
@@ -347,12 +371,6 @@ static void echo_at(int k, double x, double y, double amp, struct trk_scan_repor
     TRK_ASSERT_OK(trk_tracker_process_scan(&tk, &s, rep));
 }
 
-/* The held flag's closed form: v' P_v^-1 v below stationary_d2 - 2 min(S, 0). */
-static int held_by_bar(const struct trk_track *tr, double h)
-{
-    const double s = (double)tr->test.confirm.existence.persist_llr;
-    return velocity_d2(tr) < h - 2 * fmin(s, h / 10);
-}
 
 /* The held flag of a tentative track whose existence test confirms it on
  * this look: held by the bar, or moving with echoes a scatterer's (S <
@@ -474,7 +492,7 @@ static void test_still_target_echoes_still_held(void **state)
  * the bar, never in 120 scans). */
 #define SLOW_MPS 1.0
 
-static int slow_mover_confirmed_at(double amp, int *held_past_h, int *waited)
+static int slow_mover_confirmed_at(double amp, int *held_past_h, int *waited, int *waited_before, double *d2_confirmed)
 {
     struct trk_tracker_params p;
     evidence_params(&p, TRK_ASSOC_JOINT);
@@ -487,7 +505,11 @@ static int slow_mover_confirmed_at(double amp, int *held_past_h, int *waited)
         struct trk_scan_report rep;
         const double x = 1000 + SLOW_MPS * DT_S * k + 5 * trk_test_nrand(&rng), y = 2000 + 5 * trk_test_nrand(&rng);
         echo_at(k, x, y, amp, &rep);
-        if (rep.n_confirmed == 1) return k;
+        if (rep.n_confirmed == 1) { /* the looks in a row it waited, and its motion now */
+            *waited_before = moved;
+            *d2_confirmed = velocity_d2(only_track());
+            return k;
+        }
         if (k < 1) continue;
         const struct trk_track *tr = only_track();
         if (tr->vis.pv < p.confirm.u.existence.p_confirm) {
@@ -507,9 +529,11 @@ static void test_scatterer_echoes_raise_the_motion_bar(void **state)
     (void)state;
     struct trk_tracker_params p;
     evidence_params(&p, TRK_ASSOC_JOINT);
-    int past_t, past_s, waited_t, waited_s;
-    const int target = slow_mover_confirmed_at(mean_echo(&p, (double)p.sensor[0].amplitude.pd), &past_t, &waited_t);
-    const int scatterer = slow_mover_confirmed_at(mean_echo(&p, EV_PS), &past_s, &waited_s);
+    int past_t, past_s, waited_t, waited_s, before_t, before_s;
+    double d2_t, d2_s;
+    const int target =
+        slow_mover_confirmed_at(mean_echo(&p, (double)p.sensor[0].amplitude.pd), &past_t, &waited_t, &before_t, &d2_t);
+    const int scatterer = slow_mover_confirmed_at(mean_echo(&p, EV_PS), &past_s, &waited_s, &before_s, &d2_s);
     print_message("slow mover confirmed at scan %d with a target's echoes, %d with a scatterer's (held past the "
                   "bar of 25 at %d looks, %d of them past its own bar: moved on fewer than %d looks in a row)\n",
                   target, scatterer, past_s, waited_s, TRK_STILL_LOOKS);
@@ -518,7 +542,14 @@ static void test_scatterer_echoes_raise_the_motion_bar(void **state)
     assert_int_equal(waited_t, 0);
     assert_true(scatterer > target + 10);
     assert_true(past_s >= 5);
-    assert_int_equal(waited_s, TRK_STILL_LOOKS - 1); /* then confirmed at the look after */
+    assert_int_equal(waited_s, TRK_STILL_LOOKS - 1);
+    assert_int_equal(before_s, TRK_STILL_LOOKS - 1); /* those looks in a row, then confirmed */
+    assert_int_equal(before_t, 0);
+    /* the target's echoes lowered its bar by a fifth: confirmed at a motion
+     * below stationary_d2, above 4/5 of it */
+    const double h = (double)p.stationary_d2;
+    print_message("v' P_v^-1 v at confirmation: %.2f (target's echoes), %.2f (scatterer's)\n", d2_t, d2_s);
+    assert_true(d2_t >= 0.8 * h && d2_t < h);
 }
 
 static void test_param_check(void **state)

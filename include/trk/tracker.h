@@ -228,7 +228,9 @@ struct trk_pose {
 /** Looks in a row that a confirmed track's velocity must be consistent with
  * standing still (trk_tracker_params.stationary_d2) before it goes back to
  * held: a few, so that a moving target whose velocity is one scan's noise
- * from zero is not taken for a persistent return. */
+ * from zero is not taken for a persistent return. Also the looks in a row a
+ * tentative track whose echoes are a scatterer's must move before it is
+ * confirmed (TRK_SCATTERER_ECHO_LLR). */
 #define TRK_STILL_LOOKS 3
 
 /** ln L_target / L_scatterer (a tentative track's echo evidence, struct
@@ -238,7 +240,8 @@ struct trk_pose {
  * row, each with its existence test confirming: a track drawn onto a
  * scatterer (its velocity the pull of its first points, not the scatterer's)
  * passes once and then loses the scatterer (docs/tracker.md "Echoes weighed
- * against a scatterer's"). */
+ * against a scatterer's"). S is kept within +-stationary_d2 / 2, so with
+ * stationary_d2 <= 4 no track waits. */
 #define TRK_SCATTERER_ECHO_LLR 2
 
 /** One scan of one sensor. The detections are read, never written. */
@@ -803,7 +806,9 @@ struct trk_tracker_params {
                                                          against a scatterer's").
                                                          Default 25: motion beyond 5 sigma
                                                          (a still object passes at 3.7e-6,
-                                                         chi^2 2 dof; measured against
+                                                         chi^2 2 dof; at 4.5e-5 at most when
+                                                         its echoes are a target's, the bar
+                                                         20; measured against
                                                          9.21, chi^2 at 0.99, which reports
                                                          a slow target under a large q
                                                          sooner at more false tracks on
@@ -1188,9 +1193,12 @@ struct trk_tracker {
         uint16_t pair_first[TRK_MAX_TRACKS + 1];               /**< its pairs [pair_first[k],
                                                                   pair_first[k + 1]) */
         trk_real miss[TRK_MAX_TRACKS];                         /**< ln w_k0, then P(k <- none) */
-        uint8_t in_joint[TRK_MAX_TRACKS];                      /**< per slot: a joint track */
         size_t n_joint;
 #endif
+        uint8_t done[TRK_MAX_TRACKS];                          /**< per slot: updated in this
+                                                                  scan, or (joint association)
+                                                                  a joint track, from its
+                                                                  gating on */
         trk_real amp_db[2 * TRK_MAX_DETECTIONS];               /**< amplitudes (dB) of the
                                                                   detections that have one,
                                                                   twice over: the others of

@@ -259,7 +259,7 @@ static const struct layout_row track_rows[] = {
     ROW(T, id, 'u', uint32_t, 1, "", "", "> 0"),
     ROW(T, status, 'u', uint8_t, 1, "", "", "TRACK_FREE, TRACK_TENTATIVE, TRACK_CONFIRMED, TRACK_TERMINATED"),
     ROW(T, end_reason, 'u', uint8_t, 1, "", "", "END_*"),
-    ROW(T, stationary, 'u', uint8_t, 1, "", "", "1: tentative, held standing still"),
+    ROW(T, stationary, 'u', uint8_t, 1, "", "", "1: tentative, held (standing still, or waiting with a scatterer's echoes)"),
     ROW(T, time_us, 'i', int64_t, 1, "", "us", ""),
     REAL(T, x, TRK_CV2_NX, "m, m/s", "[x, vx, y, vy]"),
     REAL(T, p, TRK_CV2_NX * TRK_CV2_NX, "m^2, m^2/s, m^2/s^2", "4 x 4 row-major"),

@@ -289,7 +289,8 @@ class Tracker(object):
     """struct trk_tracker: one call per scan. process_scan returns
     (report, tracks): the scan report (dict of its counts) and the live
     tracks in slot order as a numpy structured array (TRACK_DTYPE: id,
-    status, end_reason, stationary (1: held tentative, standing still), time_us, state [x, vx, y, vy] (m, m/s), covariance
+    status, end_reason, stationary (1: held tentative: standing still, or
+    waiting with a scatterer's echoes), time_us, state [x, vx, y, vy] (m, m/s), covariance
     4 x 4, existence vis.pv, confidence vis.pcv, n_scans, n_hits; a copy of
     the track slots, laid out as struct trk_track:
     numpy.lib.recfunctions.repack_fields packs it). process_polar_scan takes
