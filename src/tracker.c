@@ -22,10 +22,7 @@ static trk_status check_scan(const struct trk_tracker *t, const struct trk_scan 
 static void see_from(struct trk_tracker *t, const struct trk_scan *scan);
 static void free_terminated(struct trk_tracker *t);
 static trk_real clutter_kept_share(const struct trk_tracker *t, const struct trk_scan_report *rep);
-static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
-#if TRK_WITH_JOINT
-static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
-#endif
+static void update_tracks(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep);
 static void update_track(struct trk_tracker *t, struct trk_track *tr, const struct trk_scan *scan, size_t joint_k,
                          struct trk_scan_report *rep);
 
@@ -54,11 +51,7 @@ trk_status trk_tracker_process_scan(struct trk_tracker *t, const struct trk_scan
     load_detections(t, scan, &th, &rep);
     struct thin_saved saved = {0}; /* written by thin_apply when it returns TRK_OK */
     const int model = th.in_gates && thin_apply(t, scan, &th, &saved) == TRK_OK;
-#if TRK_WITH_JOINT
-    if (t->params.association == TRK_ASSOC_JOINT) update_joint(t, scan, &rep);
-    else
-#endif
-        update_each(t, scan, &rep);
+    update_tracks(t, scan, &rep);
     const trk_real kept_share = model ? t->ws.lambda_scale : clutter_kept_share(t, &rep);
     if (model) thin_restore(t, scan, &saved);
     if (t->params.merge_gate_d2 > 0) merge_duplicates(t, &rep);
@@ -145,40 +138,31 @@ static void free_terminated(struct trk_tracker *t)
         }
 }
 
-/* The live tracks not yet updated in this scan (ws.done), each by its own
- * PDA: confirmed ones first, then tentative ones. */
-static void update_left(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
+/* Every live track, once (ws.done). With joint association the joint
+ * tracks first (tracker_joint_impl.h: gate every live track, solve the
+ * clusters, update each joint track in the order it was gated); then each
+ * track not yet updated by its own PDA (with joint association the tracks
+ * left out of the joint problem, whose gated sets take the pair store from
+ * its start), confirmed ones first, since a tentative track may not use the
+ * detections in a confirmed track's gate (it would become its duplicate). A
+ * confirmed track that goes back to held in the first pass is tentative in
+ * the second, and done. */
+static void update_tracks(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
+    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) t->ws.done[i] = 0;
+#if TRK_WITH_JOINT
+    if (t->params.association == TRK_ASSOC_JOINT) {
+        joint_gate(t, scan, rep);
+        joint_solve(t, rep);
+        for (size_t k = 0; k < t->ws.n_joint; k++) update_track(t, &t->track[t->ws.joint_slot[k]], scan, k, rep);
+    }
+#endif
     for (int confirmed = 1; confirmed >= 0; confirmed--) {
         const uint8_t want = confirmed ? TRK_TRACK_CONFIRMED : TRK_TRACK_TENTATIVE;
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++)
             if (!t->ws.done[i] && t->track[i].status == want) update_track(t, &t->track[i], scan, JOINT_NONE, rep);
     }
 }
-
-/* Per-track PDA: confirmed tracks first, since a tentative track may not
- * use the detections in a confirmed track's gate (it would become its
- * duplicate); each track once (ws.done: a confirmed track that went back
- * to held is tentative for the second pass). */
-static void update_each(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
-{
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) t->ws.done[i] = 0;
-    update_left(t, scan, rep);
-}
-
-#if TRK_WITH_JOINT
-/* Joint association (tracker_joint_impl.h): gate every live track, solve
- * the clusters, update each joint track in the order it was gated; then the
- * tracks left out of the joint problem, each by its own PDA (confirmed ones
- * first), whose gated sets take the pair store from its start. */
-static void update_joint(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
-{
-    joint_gate(t, scan, rep);
-    joint_solve(t, rep);
-    for (size_t k = 0; k < t->ws.n_joint; k++) update_track(t, &t->track[t->ws.joint_slot[k]], scan, k, rep);
-    update_left(t, scan, rep);
-}
-#endif
 
 /* One live track: update (predict, gate, PDA; or, as joint track joint_k,
  * the joint association's update), the covariance bound, count the look,

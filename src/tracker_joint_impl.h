@@ -75,8 +75,7 @@ static int joint_gate_track(struct trk_tracker *t, struct trk_track *tr, const s
 static TRK_NOINLINE void joint_gate(struct trk_tracker *t, const struct trk_scan *scan, struct trk_scan_report *rep)
 {
     t->ws.n_joint = 0;
-    t->ws.pair_first[0] = 0;
-    for (size_t i = 0; i < TRK_MAX_TRACKS; i++) t->ws.done[i] = 0;
+    t->ws.pair_first[0] = 0; /* (ws.done: cleared by the scan's update stage) */
     for (int confirmed = 1; confirmed >= 0; confirmed--)
         for (size_t i = 0; i < TRK_MAX_TRACKS; i++) {
             struct trk_track *tr = &t->track[i];
